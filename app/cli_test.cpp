@@ -1,0 +1,163 @@
+// The prism executable as users meet it: exit codes, one-line errors, outputs.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace {
+
+struct Result {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Runs `prism ARGS` through the shell (ARGS quoted by the caller) with an optional environment
+// prefix; a crash (signal) shows up as exitCode -1.
+Result run(const std::string& args, const std::string& env = "") {
+  // One file per test: ctest runs tests of this binary in parallel processes.
+  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::filesystem::path errFile = std::filesystem::path(::testing::TempDir()) /
+                                  (std::string("prism_stderr_") + test->name() + ".txt");
+  std::string command = env + " " + PRISM_EXECUTABLE + " " + args + " 2>" + errFile.string();
+  Result r;
+  FILE* pipe = popen(command.c_str(), "r");
+  char buffer[4096];
+  while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) r.out.append(buffer, n);
+  int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = slurp(errFile);
+  return r;
+}
+
+// A user error: non-zero exit (not a crash), nothing on stdout, exactly one line on stderr
+// that contains `needle`.
+void expectOneLineError(const std::string& args, const std::string& needle, const std::string& env = "") {
+  Result r = run(args, env);
+  EXPECT_GT(r.exitCode, 0) << args;
+  EXPECT_EQ(r.out, "") << args;
+  ASSERT_FALSE(r.err.empty()) << args;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "more than one line: " << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+}
+
+std::filesystem::path writeTemp(const std::string& name, const std::string& text) {
+  std::filesystem::path p = std::filesystem::path(::testing::TempDir()) / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+TEST(Cli, HelpExitsZero) {
+  Result r = run("--help");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_NE(r.out.find("colour"), std::string::npos);
+  EXPECT_EQ(run("colour xyz --help").exitCode, 0);
+}
+
+TEST(Cli, ParseErrorsAreOneLine) {
+  expectOneLineError("", "subcommand");
+  expectOneLineError("colour frobnicate", "frobnicate");
+  expectOneLineError("colour delta-e --lab 1,2,3 --lab 4,x,6", "--lab");
+}
+
+TEST(Cli, UnknownNamesAreOneLineErrors) {
+  expectOneLineError("colour xyz --illuminant D66", "unknown illuminant 'D66'");
+  expectOneLineError("colour xyz --observer cie1932", "unknown observer 'cie1932'");
+  expectOneLineError("colour convert --from srgb --to adobe 0.5,0.5,0.5", "unknown colour space 'adobe'");
+  expectOneLineError("colour delta-e --lab 50,0,0 --lab 50,1,1 --formula 1976", "'1976'");
+  expectOneLineError("colour list lamps", "'lamps'");
+}
+
+TEST(Cli, WavelengthSettingsAreChecked) {
+  expectOneLineError("colour xyz --wavelengths 6", "multiple of 4");
+  expectOneLineError("colour xyz --wavelengths 16 --range 300,830", "360–830");
+  expectOneLineError("colour xyz --wavelengths 16 --strategy random", "'random'");
+}
+
+TEST(Cli, BadDataFilesAreOneLineErrorsWithTheirPlace) {
+  auto bad = writeTemp("bad_reflectance.csv", "wavelength_nm,value\n400,0.5\n410,0.5,3\n");
+  expectOneLineError("colour xyz --reflectance " + bad.string(), bad.string() + ":3:");
+  auto text = writeTemp("text_reflectance.csv", "wavelength_nm,value\n400,0.5\n410,high\n");
+  expectOneLineError("colour xyz --reflectance " + text.string(), text.string() + ":3:2:");
+  expectOneLineError("colour xyz --reflectance /nonexistent/r.csv", "/nonexistent/r.csv: cannot open file");
+  expectOneLineError("colour xyz --illuminant D65", "data file not found", "PRISM_DATA_DIR=/nonexistent");
+}
+
+TEST(Cli, DaylightOutOfRange) { expectOneLineError("colour cct 1000", "4000–25000 K"); }
+
+TEST(Cli, DeltaEPrintsTheValue) {
+  Result r = run("colour delta-e --lab 50,2.6772,-79.7751 --lab 50,0,-82.7485");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_EQ(r.out, "2.0425\n");  // Sharma et al. 2005, pair 1
+}
+
+TEST(Cli, XyzJsonOfD65WhiteAndSampledEstimate) {
+  Result r = run("colour xyz --illuminant D65 --wavelengths 400 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["xy"][0].get<double>(), 0.3127, 1e-4);
+  EXPECT_NEAR(j["xyz"][1].get<double>(), 1.0, 1e-12);
+  EXPECT_LT(j["sampled"]["deltaE2000"].get<double>(), 0.01);
+}
+
+TEST(Cli, XyzOfAnRgbAlbedoRoundTripsUnderItsOwnWhite) {
+  Result r = run("colour xyz --illuminant D65 --rgb 0.2,0.5,0.3 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  // sRGB (0.2, 0.5, 0.3) → XYZ by the IEC matrix: Y = 0.2126·0.2 + 0.7152·0.5 + 0.0722·0.3.
+  EXPECT_NEAR(j["xyz"][1].get<double>(), 0.2126 * 0.2 + 0.7152 * 0.5 + 0.0722 * 0.3, 2e-4);
+}
+
+TEST(Cli, ConvertSrgbToRec2020) {
+  Result r = run("colour convert --from srgb --to rec2020 --linear 1,0,0 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["value"][0].get<double>(), 0.6274, 1e-4);  // BT.2087-0
+  EXPECT_TRUE(j["inGamut"].get<bool>());
+  Result back = run("colour convert --from rec2020 --to srgb --linear 0,1,0 --json");
+  EXPECT_FALSE(nlohmann::json::parse(back.out)["inGamut"].get<bool>());
+}
+
+TEST(Cli, CctWritesACsvSpectrumAtomically) {
+  std::filesystem::path out = std::filesystem::path(::testing::TempDir()) / "cct" / "d65.csv";
+  Result r = run("colour cct 6504 --step 5 -o " + out.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::string csv = slurp(out);
+  EXPECT_EQ(csv.rfind("wavelength_nm,value\n360,", 0), 0u);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 95);
+}
+
+TEST(Cli, CameraMatrixAndLists) {
+  Result r = run("colour camera-matrix --camera nikon_d850 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_LT(nlohmann::json::parse(r.out)["meanDeltaE2000"].get<double>(), 3.0);
+  expectOneLineError("colour camera-matrix --camera cie1931", "not a camera");
+  EXPECT_EQ(nlohmann::json::parse(run("colour list cameras --json").out).size(), 20u);
+}
+
+TEST(Cli, DemoWritesTheChart) {
+  std::filesystem::path out = std::filesystem::path(::testing::TempDir()) / "demo" / "chart.png";
+  std::filesystem::remove(out);
+  Result r = run("demo -o " + out.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_regular_file(out));
+  EXPECT_NE(r.out.find("dark skin"), std::string::npos);
+}
+
+TEST(Cli, BenchmarksRun) {
+  Result r = run("bench --benchmark_filter=spectrumToXyzSampled/4$ --benchmark_min_time=0.001");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("spectrumToXyzSampled/4"), std::string::npos);
+}
+
+}  // namespace

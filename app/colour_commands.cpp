@@ -1,0 +1,216 @@
+#include "app/colour_commands.h"
+
+#include <fmt/core.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "spectral/atomic_file.h"
+#include "spectral/camera_matrix.h"
+#include "spectral/colour_difference.h"
+#include "spectral/colour_space.h"
+#include "spectral/csv.h"
+#include "spectral/error.h"
+#include "spectral/illuminant.h"
+#include "spectral/observer.h"
+#include "spectral/sampling.h"
+#include "spectral/sigmoid_fit.h"
+
+namespace prism::app {
+namespace {
+
+using nlohmann::json;
+
+json toJson(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json toJson(const Eigen::Matrix3d& m) {
+  json rows = json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back(json::array({m(r, 0), m(r, 1), m(r, 2)}));
+  return rows;
+}
+
+void requireThree(const std::vector<double>& v, const std::string& what) {
+  if (v.size() != 3)
+    throw Error(what + ": expected three comma-separated numbers, got " + std::to_string(v.size()));
+  for (double x : v)
+    if (!std::isfinite(x)) throw Error(what + ": values must be finite");
+}
+
+}  // namespace
+
+void colourXyz(const XyzOptions& o) {
+  Spectrum light = illuminant(o.illuminant);
+  const Observer& obs = observer(o.observer);
+  if (!o.reflectanceFile.empty() && !o.rgb.empty())
+    throw Error("colour xyz: give --reflectance or --rgb, not both");
+  json out = {{"illuminant", o.illuminant}, {"observer", o.observer}};
+  Spectrum reflectance = Spectrum::constant(1.0);
+  if (!o.reflectanceFile.empty()) {
+    reflectance = readSpectrumCsv(o.reflectanceFile, Extrapolation::Clamp).toDense();
+    out["reflectance"] = o.reflectanceFile;
+  } else if (!o.rgb.empty()) {
+    requireThree(o.rgb, "--rgb");
+    const RgbColourSpace& gamut = colourSpace(o.gamut);
+    Eigen::Vector3d rgb(o.rgb[0], o.rgb[1], o.rgb[2]);
+    if (o.encoded) rgb = gamut.decode(rgb);
+    SigmoidFitter fitter(gamut, gamutWhiteIlluminant(gamut), observer("cie1931"));
+    SigmoidFit fit = fitter.fit(rgb);
+    reflectance = sigmoidSpectrum(fit.coeffs);
+    out["rgb"] = {{"gamut", o.gamut}, {"linear", toJson(Eigen::Vector3d(rgb.cwiseMax(0.0).cwiseMin(1.0)))}};
+    out["upsampling"] = {{"model", "jakob-hanika-2019"},
+                         {"coefficients", {fit.coeffs.x, fit.coeffs.y, fit.coeffs.z}},
+                         {"fitDeltaE76", fit.deltaE76}};
+  }
+  Eigen::Vector3d value = reflectanceTristimulus(obs, reflectance, light);
+  Eigen::Vector3d white = whiteTristimulus(obs, light);
+  const char* key = obs.isCamera ? "cameraRgb" : "xyz";
+  out[key] = toJson(value);
+  out["whiteY"] = 1.0;
+  if (!obs.isCamera) {
+    Chromaticity xy = xyzToXy(value);
+    out["xy"] = {xy.x, xy.y};
+    out["lab"] = toJson(xyzToLab(value, white));
+  }
+  if (o.sample) {
+    if (o.rangeNm.size() != 2) throw Error("--range: expected MIN,MAX in nm");
+    SamplingSettings settings{o.wavelengthCount, o.rangeNm[0], o.rangeNm[1],
+                              samplingStrategyFromName(o.strategy)};
+    std::vector<SampledWavelengths> batches = sampleWavelengths(settings, o.seed, obs);
+    std::vector<IntegrationMatrix> matrices = integrationMatrices(batches, obs);
+    Eigen::Vector3d sampled = Eigen::Vector3d::Zero();
+    for (std::size_t b = 0; b < batches.size(); ++b) {
+      Eigen::Vector4d radiance;
+      for (std::size_t j = 0; j < 4; ++j)
+        radiance[static_cast<Eigen::Index>(j)] =
+            reflectance.at(batches[b].lambdaNm[j]) * light.at(batches[b].lambdaNm[j]);
+      sampled += matrices[b] * radiance;
+    }
+    sampled /= (light * obs.curves[1]).integral();
+    json s = {{"count", o.wavelengthCount}, {"strategy", o.strategy},
+              {"rangeNm", {o.rangeNm[0], o.rangeNm[1]}}, {"value", toJson(sampled)}};
+    if (!obs.isCamera) s["deltaE2000"] = deltaE(xyzToLab(sampled, white), xyzToLab(value, white));
+    out["sampled"] = s;
+  }
+  if (o.json) {
+    fmt::print("{}\n", out.dump(2));
+    return;
+  }
+  fmt::print("{} {:.6f} {:.6f} {:.6f}   (perfect white: Y = 1 under {})\n",
+             obs.isCamera ? "camera RGB" : "XYZ", value.x(), value.y(), value.z(), o.illuminant);
+  if (!obs.isCamera) {
+    fmt::print("xy  {:.6f} {:.6f}\n", out["xy"][0].get<double>(), out["xy"][1].get<double>());
+    fmt::print("Lab {:.4f} {:.4f} {:.4f}\n", out["lab"][0].get<double>(), out["lab"][1].get<double>(),
+               out["lab"][2].get<double>());
+  }
+  if (out.contains("sampled")) {
+    fmt::print("sampled ({} wavelengths, {}): {:.6f} {:.6f} {:.6f}", o.wavelengthCount, o.strategy,
+               out["sampled"]["value"][0].get<double>(), out["sampled"]["value"][1].get<double>(),
+               out["sampled"]["value"][2].get<double>());
+    if (out["sampled"].contains("deltaE2000"))
+      fmt::print("   ΔE00 vs 1 nm: {:.4f}", out["sampled"]["deltaE2000"].get<double>());
+    fmt::print("\n");
+  }
+  if (out.contains("upsampling")) {
+    const json& c = out["upsampling"]["coefficients"];
+    fmt::print("sigmoid coefficients {:.6g} {:.6g} {:.6g} (fit ΔE76 {:.2g})\n", c[0].get<double>(),
+               c[1].get<double>(), c[2].get<double>(), out["upsampling"]["fitDeltaE76"].get<double>());
+  }
+}
+
+void colourDeltaE(const DeltaEOptions& o) {
+  if (o.labs.size() != 2) throw Error("colour delta-e: give --lab exactly twice");
+  requireThree(o.labs[0], "--lab");
+  requireThree(o.labs[1], "--lab");
+  DeltaEFormula formula = deltaEFormulaFromName(o.formula);
+  Eigen::Vector3d a(o.labs[0][0], o.labs[0][1], o.labs[0][2]);
+  Eigen::Vector3d b(o.labs[1][0], o.labs[1][1], o.labs[1][2]);
+  double d = deltaE(a, b, formula);
+  if (o.json)
+    fmt::print("{}\n", json{{"formula", o.formula}, {"deltaE", d}}.dump(2));
+  else
+    fmt::print("{:.4f}\n", d);
+}
+
+void colourCct(const CctOptions& o) {
+  if (o.stepNm < 1 || o.stepNm > 10) throw Error("--step must be within 1–10 nm");
+  Spectrum s = daylight(o.cctK);
+  std::ostringstream csv;
+  csv << "wavelength_nm,value\n";
+  for (int l = kLambdaMinNm; l <= kLambdaMaxNm; l += o.stepNm)
+    csv << l << ',' << fmt::format("{:.6g}", s.at(l)) << '\n';
+  if (o.output.empty())
+    fmt::print("{}", csv.str());
+  else
+    writeFileAtomically(o.output, csv.str());
+}
+
+void colourConvert(const ConvertOptions& o) {
+  requireThree(o.values, "colour convert");
+  Eigen::Vector3d in(o.values[0], o.values[1], o.values[2]);
+  Adaptation adaptation = adaptationFromName(o.adaptation);
+  const RgbColourSpace* from = o.from == "xyz" ? nullptr : &colourSpace(o.from);
+  const RgbColourSpace* to = o.to == "xyz" ? nullptr : &colourSpace(o.to);
+  // XYZ carries no white: adaptation happens only between two RGB spaces' whites.
+  Eigen::Matrix3d m = Eigen::Matrix3d::Identity();
+  if (from && to) m = rgbToRgb(*from, *to, adaptation);
+  else if (from) m = from->rgbToXyz;
+  else if (to) m = to->xyzToRgb;
+  Eigen::Vector3d linear = m * (from && !o.linear ? from->decode(in) : in);
+  Eigen::Vector3d value = to && !o.linear ? to->encode(linear) : linear;
+  bool inGamut = !to || ((linear.array() >= -1e-9).all() && (linear.array() <= 1.0 + 1e-9).all());
+  if (o.json) {
+    fmt::print("{}\n", json{{"from", o.from}, {"to", o.to}, {"linear", toJson(linear)},
+                            {"value", toJson(value)}, {"inGamut", inGamut}}
+                           .dump(2));
+    return;
+  }
+  fmt::print("{:.6f} {:.6f} {:.6f}{}\n", value.x(), value.y(), value.z(),
+             inGamut ? "" : "   (out of gamut; linear " + fmt::format("{:.6f} {:.6f} {:.6f}", linear.x(), linear.y(), linear.z()) + ")");
+}
+
+void colourCameraMatrix(const CameraMatrixOptions& o) {
+  const Observer& camera = observer(o.camera);
+  if (!camera.isCamera) throw Error("colour camera-matrix: '" + o.camera + "' is not a camera");
+  CameraMatrixFit fit = fitCameraToXyz(camera, illuminant(o.illuminant), observer("cie1931"));
+  if (o.json) {
+    fmt::print("{}\n", json{{"camera", o.camera}, {"illuminant", o.illuminant},
+                            {"cameraToXyz", toJson(fit.cameraToXyz)},
+                            {"meanDeltaE2000", fit.meanDeltaE2000}, {"maxDeltaE2000", fit.maxDeltaE2000}}
+                           .dump(2));
+    return;
+  }
+  for (int r = 0; r < 3; ++r)
+    fmt::print("{:10.6f} {:10.6f} {:10.6f}\n", fit.cameraToXyz(r, 0), fit.cameraToXyz(r, 1),
+               fit.cameraToXyz(r, 2));
+  fmt::print("ColorChecker under {}: mean ΔE00 {:.3f}, max {:.3f}\n", o.illuminant,
+             fit.meanDeltaE2000, fit.maxDeltaE2000);
+}
+
+void colourList(const std::string& what, bool jsonOut) {
+  json out = json::array();
+  if (what == "illuminants") {
+    for (const IlluminantInfo& i : listIlluminants())
+      out.push_back({{"name", i.name}, {"normalisation", i.normalisation}});
+  } else if (what == "observers") {
+    for (const std::string& n : listObservers()) out.push_back(n);
+  } else if (what == "cameras") {
+    for (const std::string& n : listCameras()) out.push_back(n);
+  } else if (what == "spaces") {
+    for (const std::string& n : listColourSpaces()) out.push_back(n);
+  } else {
+    throw Error("colour list: unknown list '" + what + "' (illuminants, observers, cameras, spaces)");
+  }
+  if (jsonOut) {
+    fmt::print("{}\n", out.dump(2));
+    return;
+  }
+  for (const json& item : out)
+    if (item.is_object())
+      fmt::print("{:<34} {}\n", item["name"].get<std::string>(), item["normalisation"].get<std::string>());
+    else
+      fmt::print("{}\n", item.get<std::string>());
+}
+
+}  // namespace prism::app

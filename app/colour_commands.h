@@ -1,0 +1,63 @@
+// `prism colour …`: colorimetry for people (text) and scripts (--json). Each command writes its
+// result to stdout and throws prism::Error on bad input.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace prism::app {
+
+struct XyzOptions {
+  std::string illuminant = "D65";
+  std::string observer = "cie1931";
+  std::string reflectanceFile;        // a spectral CSV, or
+  std::vector<double> rgb;            // an RGB albedo in `gamut` (linear unless `encoded`)
+  std::string gamut = "srgb";
+  bool encoded = false;
+  // When `sample` is set, also estimate the value from sampled wavelengths (as a renderer would)
+  // and report its CIEDE2000 distance to the 1 nm integral.
+  bool sample = false;
+  int wavelengthCount = 16;
+  std::vector<double> rangeNm{360.0, 830.0};
+  std::string strategy = "uniform";
+  unsigned seed = 0;
+  bool json = false;
+};
+void colourXyz(const XyzOptions& options);
+
+struct DeltaEOptions {
+  std::vector<std::vector<double>> labs;  // exactly two
+  std::string formula = "2000";
+  bool json = false;
+};
+void colourDeltaE(const DeltaEOptions& options);
+
+struct CctOptions {
+  double cctK = 6504.0;
+  int stepNm = 1;
+  std::string output;  // file, or stdout when empty
+};
+void colourCct(const CctOptions& options);
+
+struct ConvertOptions {
+  std::string from = "srgb";
+  std::string to = "srgb";
+  std::vector<double> values;
+  std::string adaptation = "bradford";
+  bool linear = false;
+  bool json = false;
+};
+void colourConvert(const ConvertOptions& options);
+
+struct CameraMatrixOptions {
+  std::string camera;
+  std::string illuminant = "D65";
+  bool json = false;
+};
+void colourCameraMatrix(const CameraMatrixOptions& options);
+
+// what: illuminants | observers | cameras | spaces
+void colourList(const std::string& what, bool json);
+
+}  // namespace prism::app

@@ -1,0 +1,158 @@
+// The prism command line: one subcommand per job. This is the only translation unit that
+// includes CLI11 (its headers cost ~15 s per file on 2 cores); commands live in their own files.
+#include <CLI/CLI.hpp>
+#include <benchmark/benchmark.h>
+#include <fmt/core.h>
+
+#include <charconv>
+#include <cmath>
+
+#include "app/colour_checker_demo.h"
+#include "app/colour_commands.h"
+#include "spectral/error.h"
+
+namespace {
+
+// "a,b,c" → three finite numbers; Error naming the option otherwise.
+std::vector<double> parseNumbers(const std::string& text, const std::string& option) {
+  std::vector<double> values;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t comma = text.find(',', start);
+    std::string_view field(text.data() + start, (comma == std::string::npos ? text.size() : comma) - start);
+    double v = 0.0;
+    auto result = std::from_chars(field.data(), field.data() + field.size(), v);
+    if (field.empty() || result.ec != std::errc() || result.ptr != field.data() + field.size() || !std::isfinite(v))
+      throw prism::Error(option + ": '" + text + "' is not a comma-separated list of numbers");
+    values.push_back(v);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return values;
+}
+
+int runBenchmarks(std::vector<std::string> args) {
+  std::vector<char*> argv{const_cast<char*>("prism bench")};
+  for (std::string& a : args) argv.push_back(a.data());
+  int argc = static_cast<int>(argv.size());
+  benchmark::Initialize(&argc, argv.data());
+  if (benchmark::ReportUnrecognizedArguments(argc, argv.data())) return 2;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace prism::app;
+  CLI::App app{"Prism: real-time spectral rendering. Run `prism COMMAND --help` for a command."};
+  app.require_subcommand(1);
+
+  DemoOptions demo;
+  auto* demoCmd = app.add_subcommand("demo", "Prism's main job: the ColorChecker under D65, A, F2, F11 as a PNG chart");
+  demoCmd->add_option("-o,--output", demo.output, "PNG to write")->capture_default_str();
+  demoCmd->add_option("--adaptation", demo.adaptation, "white balance to D65: bradford, cat02, von-kries, none")
+      ->capture_default_str();
+  demoCmd->add_flag("--json", demo.json, "print the patch values as JSON");
+
+  auto* colour = app.add_subcommand("colour", "Colorimetry: XYZ of spectra, colour differences, conversions");
+  colour->require_subcommand(1);
+
+  XyzOptions xyz;
+  std::string rgbText;
+  auto* xyzCmd = colour->add_subcommand("xyz", "XYZ (or camera RGB) of a reflectance or RGB albedo under an illuminant");
+  xyzCmd->add_option("--illuminant", xyz.illuminant, "illuminant name (see `colour list illuminants`)")->capture_default_str();
+  xyzCmd->add_option("--observer", xyz.observer, "cie1931, cie1964 or a camera")->capture_default_str();
+  auto* reflOpt = xyzCmd->add_option("--reflectance", xyz.reflectanceFile, "spectral CSV: wavelength_nm,value");
+  xyzCmd->add_option("--rgb", rgbText, "r,g,b albedo, upsampled with a Jakob–Hanika fit")->excludes(reflOpt);
+  xyzCmd->add_option("--gamut", xyz.gamut, "colour space of --rgb")->capture_default_str();
+  xyzCmd->add_flag("--encoded", xyz.encoded, "--rgb is transfer-encoded (e.g. 8-bit sRGB / 255), not linear");
+  std::string rangeText;
+  auto* wavelengthsOpt = xyzCmd->add_option("--wavelengths", xyz.wavelengthCount,
+                     "also estimate from N sampled wavelengths (a multiple of 4, 4–1000)");
+  xyzCmd->add_option("--range", rangeText, "MIN,MAX nm of the sampled wavelengths (within 360–830)");
+  xyzCmd->add_option("--strategy", xyz.strategy, "uniform, stratified or importance")->capture_default_str();
+  xyzCmd->add_option("--seed", xyz.seed, "seed of stratified and importance sampling");
+  xyzCmd->add_flag("--json", xyz.json, "JSON output");
+
+  DeltaEOptions de;
+  std::vector<std::string> labTexts;
+  auto* deCmd = colour->add_subcommand("delta-e", "colour difference of two CIELAB colours");
+  deCmd->add_option("--lab", labTexts, "L,a,b (give twice)")->required();
+  deCmd->add_option("--formula", de.formula, "2000, 94 or 76")->capture_default_str();
+  deCmd->add_flag("--json", de.json, "JSON output");
+
+  CctOptions cct;
+  auto* cctCmd = colour->add_subcommand("cct", "CIE daylight SPD at a correlated colour temperature, as CSV");
+  cctCmd->add_option("kelvin", cct.cctK, "4000–25000 K")->required();
+  cctCmd->add_option("--step", cct.stepNm, "wavelength step in nm (1–10)")->capture_default_str();
+  cctCmd->add_option("-o,--output", cct.output, "CSV file to write (default: stdout)");
+
+  ConvertOptions conv;
+  std::string convText;
+  auto* convCmd = colour->add_subcommand("convert", "convert a colour between RGB spaces (or xyz)");
+  convCmd->add_option("--from", conv.from, "srgb, display-p3, rec2020, acescg, aces2065-1, xyz")->required();
+  convCmd->add_option("--to", conv.to, "same choices as --from")->required();
+  convCmd->add_option("values", convText, "r,g,b (encoded unless --linear) or X,Y,Z")->required();
+  convCmd->add_option("--adaptation", conv.adaptation, "bradford, cat02, von-kries")->capture_default_str();
+  convCmd->add_flag("--linear", conv.linear, "values are linear, not transfer-encoded");
+  convCmd->add_flag("--json", conv.json, "JSON output");
+
+  CameraMatrixOptions cam;
+  auto* camCmd = colour->add_subcommand("camera-matrix", "least-squares camera RGB → XYZ matrix on the ColorChecker");
+  camCmd->add_option("--camera", cam.camera, "camera name (see `colour list cameras`)")->required();
+  camCmd->add_option("--illuminant", cam.illuminant, "illuminant of the fit")->capture_default_str();
+  camCmd->add_flag("--json", cam.json, "JSON output");
+
+  std::string listWhat;
+  bool listJson = false;
+  auto* listCmd = colour->add_subcommand("list", "list known names");
+  listCmd->add_option("what", listWhat, "illuminants, observers, cameras or spaces")->required();
+  listCmd->add_flag("--json", listJson, "JSON output");
+
+  auto* bench = app.add_subcommand("bench", "run Prism's benchmarks (Google Benchmark flags pass through)");
+  bench->allow_extras();
+
+  try {
+    app.parse(argc, argv);
+    if (*demoCmd) runDemo(demo);
+    if (*xyzCmd) {
+      if (!rgbText.empty()) xyz.rgb = parseNumbers(rgbText, "--rgb");
+      if (!rangeText.empty()) xyz.rangeNm = parseNumbers(rangeText, "--range");
+      xyz.sample = wavelengthsOpt->count() > 0 || !rangeText.empty();
+      colourXyz(xyz);
+    }
+    if (*deCmd) {
+      for (const std::string& t : labTexts) de.labs.push_back(parseNumbers(t, "--lab"));
+      colourDeltaE(de);
+    }
+    if (*cctCmd) colourCct(cct);
+    if (*convCmd) {
+      conv.values = parseNumbers(convText, "colour convert");
+      colourConvert(conv);
+    }
+    if (*camCmd) colourCameraMatrix(cam);
+    if (*listCmd) colourList(listWhat, listJson);
+    if (*bench) return runBenchmarks(bench->remaining());
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 reports a missing subcommand before a word it did not expect: name that word.
+    std::vector<std::string> rest = app.remaining(true);
+    if (dynamic_cast<const CLI::RequiredError*>(&e) && !rest.empty())
+      fmt::print(stderr, "prism: error: unknown command or argument '{}' (see prism --help)\n", rest.front());
+    else
+      fmt::print(stderr, "prism: error: {}\n", e.what());
+    return 2;
+  } catch (const prism::Error& e) {
+    fmt::print(stderr, "prism: error: {}\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "prism: internal error: {}\n", e.what());
+    return 70;
+  }
+  return 0;
+}

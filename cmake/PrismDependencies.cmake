@@ -1,0 +1,22 @@
+# Every dependency comes from a Debian package (scripts/install-deps.sh installs them).
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(glm REQUIRED)
+find_package(fmt REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(benchmark REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+
+# libcsv (RFC 4180 tokenizer) ships neither a CMake config nor a pkg-config file.
+find_path(CSV_INCLUDE_DIR csv.h REQUIRED)
+find_library(CSV_LIBRARY csv REQUIRED)
+add_library(prism_libcsv INTERFACE IMPORTED)
+target_include_directories(prism_libcsv INTERFACE ${CSV_INCLUDE_DIR})
+target_link_libraries(prism_libcsv INTERFACE ${CSV_LIBRARY})
+
+if(PRISM_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+  include(GoogleTest)
+  find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
+endif()

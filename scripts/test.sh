@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The README's second command (and CI's only step): install what is missing, then build and run
+# every test twice, in Release and under AddressSanitizer + UndefinedBehaviorSanitizer.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+
+werror=OFF
+[ -n "${CI:-}" ] && werror=ON
+
+for preset in release asan; do
+  echo "== $preset: configure, build, test"
+  cmake --preset "$preset" -DPRISM_WERROR=$werror >/dev/null
+  cmake --build --preset "$preset"
+  ctest --preset "$preset"
+done

@@ -1,0 +1,28 @@
+// The sigmoid-polynomial reflectance model of Jakob & Hanika 2019, "A Low-Dimensional Function
+// Space for Efficient Spectral Upsampling", Eq. 3–4: f(λ) = S(c0·λ² + c1·λ + c2) with
+// S(x) = ½ + x / (2·√(1 + x²)). The coefficients act on λ in nanometres. S maps ℝ onto (0, 1),
+// so every such spectrum is a valid reflectance; x = ±∞ (from overflowing coefficients) is
+// taken to its limit instead of the NaN that ∞/∞ would give.
+
+PRISM_INLINE float sigmoid(float x) {
+  if (isinf(x)) return x > 0.0f ? 1.0f : 0.0f;
+  return 0.5f + x / (2.0f * sqrt(1.0f + x * x));
+}
+
+// Evaluated in Horner form, (c0·λ + c1)·λ + c2, as Jakob & Hanika's reference code does.
+PRISM_INLINE float sigmoidSpectrum(IN(vec3) coeffs, float lambdaNm) {
+  return sigmoid((coeffs.x * lambdaNm + coeffs.y) * lambdaNm + coeffs.z);
+}
+
+// One batch of four wavelengths, the unit every spectral pass works in.
+PRISM_INLINE vec4 sigmoidSpectrum4(IN(vec3) coeffs, IN(vec4) lambdaNm) {
+  return vec4(sigmoidSpectrum(coeffs, lambdaNm.x), sigmoidSpectrum(coeffs, lambdaNm.y),
+              sigmoidSpectrum(coeffs, lambdaNm.z), sigmoidSpectrum(coeffs, lambdaNm.w));
+}
+
+// dS/dx = 1 / (2·(1 + x²)^(3/2)), for optimisers that fit the coefficients.
+PRISM_INLINE float sigmoidDerivative(float x) {
+  if (isinf(x)) return 0.0f;
+  float s = 1.0f + x * x;
+  return 0.5f / (s * sqrt(s));
+}

@@ -1,0 +1,34 @@
+#include "spectral/atomic_file.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "spectral/error.h"
+
+namespace prism {
+
+void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
+  std::error_code ec;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
+  if (ec) throw Error(path.string() + ": cannot create folder: " + ec.message());
+  std::filesystem::path temp = path;
+  temp += ".tmp" + std::to_string(::getpid());
+  std::FILE* f = std::fopen(temp.c_str(), "wb");
+  if (!f) throw Error(path.string() + ": cannot write: " + std::strerror(errno));
+  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  ok = (std::fflush(f) == 0) && ok;
+  ok = (::fsync(::fileno(f)) == 0) && ok;
+  ok = (std::fclose(f) == 0) && ok;
+  if (ok) std::filesystem::rename(temp, path, ec);
+  if (!ok || ec) {
+    std::string why = ec ? ec.message() : std::strerror(errno);
+    std::filesystem::remove(temp, ec);
+    throw Error(path.string() + ": cannot write: " + why);
+  }
+}
+
+}  // namespace prism

@@ -1,0 +1,36 @@
+#include "spectral/camera_matrix.h"
+
+#include <Eigen/QR>
+#include <algorithm>
+
+#include "spectral/colour_checker.h"
+#include "spectral/colour_difference.h"
+
+namespace prism {
+
+CameraMatrixFit fitCameraToXyz(const Observer& camera, const Spectrum& illuminant,
+                               const Observer& target) {
+  const auto& patches = colourChecker();
+  const auto n = static_cast<Eigen::Index>(patches.size());
+  Eigen::MatrixX3d cameraRgb(n, 3), xyz(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Spectrum& r = patches[static_cast<std::size_t>(i)].reflectance;
+    cameraRgb.row(i) = reflectanceTristimulus(camera, r, illuminant).transpose();
+    xyz.row(i) = reflectanceTristimulus(target, r, illuminant).transpose();
+  }
+  // min ‖cameraRgb·Mᵀ − xyz‖²: one least-squares problem per XYZ channel.
+  CameraMatrixFit fit;
+  fit.cameraToXyz = cameraRgb.colPivHouseholderQr().solve(xyz).transpose();
+  Eigen::Vector3d white = whiteTristimulus(target, illuminant);
+  double sum = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    Eigen::Vector3d fitted = fit.cameraToXyz * cameraRgb.row(i).transpose();
+    double d = deltaE(xyzToLab(fitted, white), xyzToLab(xyz.row(i).transpose(), white));
+    sum += d;
+    fit.maxDeltaE2000 = std::max(fit.maxDeltaE2000, d);
+  }
+  fit.meanDeltaE2000 = sum / static_cast<double>(n);
+  return fit;
+}
+
+}  // namespace prism

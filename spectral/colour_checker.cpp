@@ -1,0 +1,40 @@
+#include "spectral/colour_checker.h"
+
+#include <cmath>
+
+#include "spectral/csv.h"
+#include "spectral/data_files.h"
+#include "spectral/error.h"
+
+namespace prism {
+namespace {
+
+std::vector<ColourCheckerPatch> load() {
+  SpectraTable spectra = SpectraTable::read(dataFile("colorchecker24.csv"));
+  CsvTable layout = CsvTable::read(dataFile("colorchecker24_patches.csv"));
+  int nameCol = layout.column("name");
+  int rowCol = layout.column("row");
+  int columnCol = layout.column("column");
+  std::vector<ColourCheckerPatch> patches;
+  for (const CsvRow& row : layout.rows()) {
+    const std::string& name = row.fields[static_cast<std::size_t>(nameCol)];
+    if (!spectra.contains(name))
+      throw Error(layout.path() + ":" + std::to_string(row.line) + ": patch '" + name +
+                  "' has no column in colorchecker24.csv");
+    patches.push_back({name, static_cast<int>(std::lround(layout.number(row, rowCol))),
+                       static_cast<int>(std::lround(layout.number(row, columnCol))),
+                       spectra.spectrum(name, Extrapolation::Clamp).toDense()});
+  }
+  if (patches.size() != 24) throw Error(layout.path() + ": expected 24 patches, found " +
+                                        std::to_string(patches.size()));
+  return patches;
+}
+
+}  // namespace
+
+const std::vector<ColourCheckerPatch>& colourChecker() {
+  static const std::vector<ColourCheckerPatch> patches = load();
+  return patches;
+}
+
+}  // namespace prism

@@ -1,0 +1,45 @@
+#include "spectral/colour_difference.h"
+
+#include <gtest/gtest.h>
+
+#include "spectral/csv.h"
+#include "spectral/data_files.h"
+#include "spectral/error.h"
+
+namespace prism {
+namespace {
+
+TEST(Ciede2000, AgreesWithSharmaWuDalalTestData) {
+  CsvTable t = CsvTable::read(dataFile("ciede2000_sharma.csv"));
+  ASSERT_EQ(t.rows().size(), 34u);
+  for (const CsvRow& row : t.rows()) {
+    Eigen::Vector3d lab1(t.number(row, 1), t.number(row, 2), t.number(row, 3));
+    Eigen::Vector3d lab2(t.number(row, 4), t.number(row, 5), t.number(row, 6));
+    double expected = t.number(row, 7);
+    EXPECT_NEAR(deltaE(lab1, lab2, DeltaEFormula::Ciede2000), expected, 1e-4) << "pair " << row.fields[0];
+    EXPECT_NEAR(deltaE(lab2, lab1, DeltaEFormula::Ciede2000), expected, 1e-4) << "pair " << row.fields[0];
+  }
+}
+
+TEST(DeltaE, Cie76And94OnAKnownPair) {
+  // Worked by hand: ΔE*ab = √(405.107² + 199.832²); ΔE*94 with graphic-arts weights.
+  Eigen::Vector3d a(100.0, 21.57210357, 272.2281935), b(100.0, 426.67945353, 72.39590835);
+  EXPECT_NEAR(deltaE(a, b, DeltaEFormula::Cie76), 451.7133019, 1e-3);
+  EXPECT_NEAR(deltaE(a, b, DeltaEFormula::Cie94), 83.7792255, 1e-3);
+  EXPECT_EQ(deltaE(a, a, DeltaEFormula::Cie94), 0.0);
+}
+
+TEST(Cielab, WhiteIsL100AndRoundTrips) {
+  Eigen::Vector3d white(0.95047, 1.0, 1.08883);
+  EXPECT_TRUE(xyzToLab(white, white).isApprox(Eigen::Vector3d(100.0, 0.0, 0.0), 1e-6));
+  for (Eigen::Vector3d xyz : {Eigen::Vector3d(0.2, 0.3, 0.1), Eigen::Vector3d(0.001, 0.002, 0.004)})
+    EXPECT_TRUE(labToXyz(xyzToLab(xyz, white), white).isApprox(xyz, 1e-5)) << xyz.transpose();
+}
+
+TEST(DeltaE, FormulaNames) {
+  EXPECT_EQ(deltaEFormulaFromName("94"), DeltaEFormula::Cie94);
+  EXPECT_THROW(deltaEFormulaFromName("1976"), Error);
+}
+
+}  // namespace
+}  // namespace prism

@@ -1,0 +1,44 @@
+// Observers: three spectral sensitivities that turn a spectrum into a tristimulus value. The CIE
+// standard observers give XYZ; a camera gives its own raw RGB (each camera's curves on their
+// source's scale, see data/SOURCES.md).
+//
+// Names: "cie1931" (2°, 1931), "cie1964" (10°, 1964), and every camera in data/cameras.csv by its
+// name there (e.g. "nikon_d850", "Nikon 5100 (NPL)"). Camera curves are zero outside their
+// measured band (Extrapolation::Zero).
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "spectral/spectrum.h"
+
+namespace prism {
+
+struct Observer {
+  std::string name;
+  bool isCamera = false;
+  std::array<Spectrum, 3> curves;  // x̄ ȳ z̄, or camera r g b
+
+  // ∫ s(λ)·curve(λ) dλ for the three curves (trapezoid at 1 nm, spectrum unit × nm).
+  Eigen::Vector3d integrate(const Spectrum& s) const;
+  // The three curves at one wavelength (linear between 1 nm nodes).
+  Eigen::Vector3d at(double lambdaNm) const;
+};
+
+// Error naming the observer when unknown.
+const Observer& observer(std::string_view name);
+std::vector<std::string> listObservers();
+std::vector<std::string> listCameras();
+
+// The colour of a spectrum under an illuminant, normalised so that a perfect white reflector
+// has Y (or camera G) = 1: ∫ R·S·c̄ / ∫ S·ȳ.
+Eigen::Vector3d reflectanceTristimulus(const Observer& obs, const Spectrum& reflectance,
+                                       const Spectrum& illuminant);
+// The same observer's white: reflectanceTristimulus of a constant 1.
+Eigen::Vector3d whiteTristimulus(const Observer& obs, const Spectrum& illuminant);
+
+}  // namespace prism

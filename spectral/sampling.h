@@ -1,0 +1,55 @@
+// Wavelength sampling: which wavelengths a spectral pass evaluates, with their pdfs, in batches
+// of four (one vec4 on the GPU), and the integration matrices that turn each batch of radiance
+// samples into XYZ or camera RGB.
+//
+// Every strategy is an estimator of ∫ L(λ)·c̄(λ) dλ over [λmin, λmax]:
+//   Σ_i L(λ_i)·c̄(λ_i) / (n·pdf(λ_i)),
+// so one weight rule, w_i = 1 / (n·pdf_i), serves them all:
+//   Uniform     λ_i at the midpoints of n equal strata, pdf = 1/(λmax − λmin): the midpoint
+//               Riemann sum, deterministic.
+//   Stratified  one uniform jitter per stratum (seeded per pixel and frame, shaders/shared/
+//               random.glsl): unbiased, converging to the integral under accumulation.
+//   Importance  stratified in the CDF of the observer's summed response x̄+ȳ+z̄ (piecewise
+//               constant per 1 nm bin, floored at 1e-3 of its mean so no wavelength has pdf 0).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "spectral/observer.h"
+
+namespace prism {
+
+struct SampledWavelengths {
+  std::array<double, 4> lambdaNm{};
+  std::array<double, 4> pdf{};  // per nm
+};
+
+enum class SamplingStrategy { Uniform, Stratified, Importance };
+SamplingStrategy samplingStrategyFromName(std::string_view name);  // uniform|stratified|importance
+
+struct SamplingSettings {
+  int count = 16;  // a multiple of 4, 4–1000
+  double minNm = kLambdaMinNm;
+  double maxNm = kLambdaMaxNm;
+  SamplingStrategy strategy = SamplingStrategy::Uniform;
+};
+
+// Error naming the setting when count or range is invalid.
+void validate(const SamplingSettings& settings);
+
+// The batches for one pixel and frame (seed unused by Uniform). `importance` is the observer
+// whose response Importance follows.
+std::vector<SampledWavelengths> sampleWavelengths(const SamplingSettings& settings,
+                                                  std::uint32_t seed, const Observer& importance);
+
+using IntegrationMatrix = Eigen::Matrix<double, 3, 4>;
+// M[c][j] = curve_c(λ_j) / (n·pdf_j): tristimulus += M · (L(λ_0..3)).
+std::vector<IntegrationMatrix> integrationMatrices(const std::vector<SampledWavelengths>& batches,
+                                                   const Observer& obs);
+
+}  // namespace prism

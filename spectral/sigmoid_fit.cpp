@@ -1,0 +1,124 @@
+#include "spectral/sigmoid_fit.h"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+#include "shared_cpp.h"
+#include "spectral/illuminant.h"
+
+namespace prism::shared {
+#include "cielab.glsl"
+#include "sigmoid.glsl"
+}
+
+namespace prism {
+namespace {
+
+constexpr double kSpanNm = kLambdaMaxNm - kLambdaMinNm;
+
+glm::vec3 toVec3(const Eigen::Vector3d& v) {
+  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
+}
+
+Eigen::Vector3d lab(const Eigen::Vector3d& xyz, const Eigen::Vector3d& white) {
+  glm::vec3 l = shared::xyzToLab(toVec3(xyz), toVec3(white));
+  return {l.x, l.y, l.z};
+}
+
+// ∂(L*, a*, b*)/∂(X, Y, Z).
+Eigen::Matrix3d labJacobian(const Eigen::Vector3d& xyz, const Eigen::Vector3d& white) {
+  Eigen::Vector3d d;
+  for (int c = 0; c < 3; ++c)
+    d[c] = shared::labFDerivative(static_cast<float>(xyz[c] / white[c])) / white[c];
+  Eigen::Matrix3d j;
+  j << 0.0, 116.0 * d[1], 0.0,
+       500.0 * d[0], -500.0 * d[1], 0.0,
+       0.0, 200.0 * d[1], -200.0 * d[2];
+  return j;
+}
+
+}  // namespace
+
+Spectrum gamutWhiteIlluminant(const RgbColourSpace& gamut) {
+  if (gamut.name == "acescg" || gamut.name == "aces2065-1") return daylight(6000.0);
+  return illuminant("D65");
+}
+
+SigmoidFitter::SigmoidFitter(const RgbColourSpace& gamut, const Spectrum& illuminant,
+                             const Observer& obs)
+    : mGamut(gamut) {
+  double norm = (illuminant * obs.curves[1]).integral();
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    double trapezoid = (i == 0 || i == kSpectrumSamples - 1) ? 0.5 : 1.0;
+    mT.push_back(i / kSpanNm);
+    Eigen::Vector3d w(obs.curves[0][i], obs.curves[1][i], obs.curves[2][i]);
+    mWeights.push_back(w * (trapezoid * illuminant[i] / norm));
+  }
+  mWhiteXyz = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& w : mWeights) mWhiteXyz += w;
+}
+
+SigmoidFit SigmoidFitter::fit(const Eigen::Vector3d& linearRgb, const Eigen::Vector3d& seed) const {
+  Eigen::Vector3d rgb = linearRgb.cwiseMax(0.0).cwiseMin(1.0);
+  Eigen::Vector3d targetLab = lab(mGamut.rgbToXyz * rgb, mWhiteXyz);
+
+  // Residual r = Lab(a) − target and its Jacobian ∂r/∂a.
+  auto evaluate = [&](const Eigen::Vector3d& a, Eigen::Matrix3d* jacobian) {
+    Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d dXyz = Eigen::Matrix3d::Zero();
+    for (std::size_t i = 0; i < mT.size(); ++i) {
+      double t = mT[i];
+      auto x = static_cast<float>((a[0] * t + a[1]) * t + a[2]);
+      xyz += mWeights[i] * static_cast<double>(shared::sigmoid(x));
+      if (jacobian) {
+        double ds = shared::sigmoidDerivative(x);
+        dXyz.col(0) += mWeights[i] * (ds * t * t);
+        dXyz.col(1) += mWeights[i] * (ds * t);
+        dXyz.col(2) += mWeights[i] * ds;
+      }
+    }
+    if (jacobian) *jacobian = labJacobian(xyz, mWhiteXyz) * dXyz;
+    return Eigen::Vector3d(lab(xyz, mWhiteXyz) - targetLab);
+  };
+
+  SigmoidFit result;
+  Eigen::Vector3d a = seed;
+  Eigen::Matrix3d j;
+  Eigen::Vector3d r = evaluate(a, &j);
+  double lambda = 1e-3;
+  constexpr int kMaxIterations = 200;
+  for (result.iterations = 0; result.iterations < kMaxIterations && r.norm() > 1e-5;
+       ++result.iterations) {
+    Eigen::Matrix3d jtj = j.transpose() * j;
+    Eigen::Vector3d g = j.transpose() * r;
+    bool improved = false;
+    while (!improved && lambda < 1e12) {
+      Eigen::Matrix3d damped = jtj;
+      damped.diagonal() += lambda * (jtj.diagonal().array() + 1e-12).matrix();
+      Eigen::Vector3d step = damped.partialPivLu().solve(-g);
+      Eigen::Vector3d candidate = a + step;
+      Eigen::Matrix3d jc;
+      Eigen::Vector3d rc = evaluate(candidate, &jc);
+      if (rc.allFinite() && rc.norm() < r.norm()) {
+        a = candidate, r = rc, j = jc;
+        lambda = std::max(lambda / 3.0, 1e-9);
+        improved = true;
+      } else {
+        lambda *= 4.0;
+      }
+    }
+    if (!improved) break;
+  }
+
+  // x = a0·t² + a1·t + a2 with t = (λ − 360)/470, expanded in λ.
+  double s = 1.0 / kSpanNm, o = kLambdaMinNm;
+  result.coeffs = glm::vec3(static_cast<float>(a[0] * s * s),
+                            static_cast<float>(a[1] * s - 2.0 * a[0] * o * s * s),
+                            static_cast<float>(a[0] * o * o * s * s - a[1] * o * s + a[2]));
+  result.normalised = a;
+  result.deltaE76 = r.norm();
+  return result;
+}
+
+}  // namespace prism

@@ -1,0 +1,46 @@
+// Fitting Jakob–Hanika sigmoid-polynomial coefficients to one RGB albedo.
+//
+// The target is the RGB colour's XYZ in its gamut, seen as CIELAB relative to the gamut's white
+// (D65; CIE D60 for the ACES spaces). The model spectrum is seen as a reflectance lit by that
+// white illuminant through CIE 1931. Levenberg–Marquardt with an analytic Jacobian minimises the
+// CIE76 distance between the two, as in Jakob & Hanika 2019 §4. Coefficients are solved on
+// t = (λ − 360 nm)/470 nm for conditioning and returned for λ in nm (sigmoid.glsl's form).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+#include <glm/vec3.hpp>
+
+#include "spectral/colour_space.h"
+#include "spectral/observer.h"
+
+namespace prism {
+
+struct SigmoidFit {
+  glm::vec3 coeffs{0.0f};        // c0, c1, c2 for λ in nm
+  Eigen::Vector3d normalised{};  // the same on t ∈ [0, 1], a seed for a neighbouring fit
+  double deltaE76 = 0.0;         // residual CIE76 distance to the target
+  int iterations = 0;
+};
+
+// The illuminant an RGB space's white stands for: D65, or CIE daylight at 6000 K for ACES.
+Spectrum gamutWhiteIlluminant(const RgbColourSpace& gamut);
+
+class SigmoidFitter {
+ public:
+  SigmoidFitter(const RgbColourSpace& gamut, const Spectrum& illuminant, const Observer& obs);
+
+  // linearRgb is an albedo: each channel clamped to [0, 1] first.
+  SigmoidFit fit(const Eigen::Vector3d& linearRgb,
+                 const Eigen::Vector3d& seed = Eigen::Vector3d::Zero()) const;
+
+ private:
+  const RgbColourSpace& mGamut;
+  std::vector<double> mT;                        // normalised wavelength per 1 nm node
+  std::vector<Eigen::Vector3d> mWeights;         // node weight · illuminant · observer / ∫Sȳ
+  Eigen::Vector3d mWhiteXyz;                     // the lit perfect reflector
+};
+
+}  // namespace prism

@@ -1,0 +1,107 @@
+#include "spectral/spectrum.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "shared_cpp.h"
+#include "spectral/error.h"
+
+namespace prism::shared {
+#include "sigmoid.glsl"
+}
+
+namespace prism {
+
+Spectrum Spectrum::constant(double value) {
+  Spectrum s;
+  for (int i = 0; i < kSpectrumSamples; ++i) s[i] = value;
+  return s;
+}
+
+Spectrum Spectrum::fromFunction(const std::function<double(double)>& f) {
+  Spectrum s;
+  for (int i = 0; i < kSpectrumSamples; ++i) s[i] = f(kLambdaMinNm + i);
+  return s;
+}
+
+double Spectrum::at(double lambdaNm) const {
+  if (!(lambdaNm >= kLambdaMinNm && lambdaNm <= kLambdaMaxNm)) return 0.0;
+  double x = lambdaNm - kLambdaMinNm;
+  int i = std::min(static_cast<int>(x), kSpectrumSamples - 2);
+  double t = x - i;
+  return (*this)[i] * (1.0 - t) + (*this)[i + 1] * t;
+}
+
+double Spectrum::integral() const {
+  double sum = 0.5 * (mValues.front() + mValues.back());
+  for (int i = 1; i < kSpectrumSamples - 1; ++i) sum += (*this)[i];
+  return sum;  // × 1 nm
+}
+
+double Spectrum::maxValue() const { return *std::max_element(mValues.begin(), mValues.end()); }
+
+Spectrum& Spectrum::operator*=(const Spectrum& other) {
+  for (int i = 0; i < kSpectrumSamples; ++i) (*this)[i] *= other[i];
+  return *this;
+}
+
+Spectrum& Spectrum::operator*=(double factor) {
+  for (double& v : mValues) v *= factor;
+  return *this;
+}
+
+Spectrum& Spectrum::operator+=(const Spectrum& other) {
+  for (int i = 0; i < kSpectrumSamples; ++i) (*this)[i] += other[i];
+  return *this;
+}
+
+TabulatedSpectrum::TabulatedSpectrum(std::vector<double> lambdasNm, std::vector<double> values,
+                                     Extrapolation extrapolation)
+    : mLambdasNm(std::move(lambdasNm)), mValues(std::move(values)), mExtrapolation(extrapolation) {
+  PRISM_CHECK(mLambdasNm.size() == mValues.size());
+  PRISM_CHECK(mLambdasNm.size() >= 2);
+  PRISM_CHECK(std::adjacent_find(mLambdasNm.begin(), mLambdasNm.end(),
+                                 [](double a, double b) { return !(a < b); }) == mLambdasNm.end());
+}
+
+double TabulatedSpectrum::at(double lambdaNm) const {
+  if (lambdaNm < mLambdasNm.front())
+    return mExtrapolation == Extrapolation::Clamp ? mValues.front() : 0.0;
+  if (lambdaNm > mLambdasNm.back())
+    return mExtrapolation == Extrapolation::Clamp ? mValues.back() : 0.0;
+  auto upper = std::upper_bound(mLambdasNm.begin(), mLambdasNm.end(), lambdaNm);
+  if (upper == mLambdasNm.end()) return mValues.back();
+  std::size_t hi = static_cast<std::size_t>(upper - mLambdasNm.begin());
+  std::size_t lo = hi - 1;
+  double t = (lambdaNm - mLambdasNm[lo]) / (mLambdasNm[hi] - mLambdasNm[lo]);
+  return mValues[lo] * (1.0 - t) + mValues[hi] * t;
+}
+
+Spectrum TabulatedSpectrum::toDense() const {
+  return Spectrum::fromFunction([this](double lambdaNm) { return at(lambdaNm); });
+}
+
+double planckRadianceWPerSrM2Nm(double lambdaNm, double temperatureK) {
+  constexpr double h = 6.62607015e-34;  // J·s
+  constexpr double c = 299792458.0;     // m/s
+  constexpr double kB = 1.380649e-23;   // J/K
+  double lambdaM = lambdaNm * 1e-9;
+  double perMetre = 2.0 * h * c * c / (std::pow(lambdaM, 5) * std::expm1(h * c / (lambdaM * kB * temperatureK)));
+  return perMetre * 1e-9;
+}
+
+Spectrum blackbody(double temperatureK) {
+  if (!(temperatureK > 0.0 && std::isfinite(temperatureK)))
+    throw Error("blackbody: temperature must be a positive number of kelvin, got " +
+                std::to_string(temperatureK));
+  return Spectrum::fromFunction(
+      [temperatureK](double lambdaNm) { return planckRadianceWPerSrM2Nm(lambdaNm, temperatureK); });
+}
+
+Spectrum sigmoidSpectrum(const glm::vec3& coeffs) {
+  return Spectrum::fromFunction([&coeffs](double lambdaNm) {
+    return static_cast<double>(shared::sigmoidSpectrum(coeffs, static_cast<float>(lambdaNm)));
+  });
+}
+
+}  // namespace prism

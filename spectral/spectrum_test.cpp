@@ -1,0 +1,91 @@
+#include "spectral/spectrum.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "spectral/error.h"
+
+namespace prism {
+namespace {
+
+TEST(Spectrum, ConstantIntegratesToTheDomainWidth) {
+  EXPECT_DOUBLE_EQ(Spectrum::constant(2.0).integral(), 2.0 * (kLambdaMaxNm - kLambdaMinNm));
+}
+
+TEST(Spectrum, TrapezoidIsExactForLinearFunctions) {
+  Spectrum s = Spectrum::fromFunction([](double l) { return 3.0 * l - 1000.0; });
+  double exact = 1.5 * (830.0 * 830.0 - 360.0 * 360.0) - 1000.0 * 470.0;
+  EXPECT_NEAR(s.integral(), exact, 1e-6 * std::abs(exact));
+}
+
+TEST(Spectrum, AtInterpolatesLinearlyAndIsZeroOutside) {
+  Spectrum s = Spectrum::fromFunction([](double l) { return l; });
+  EXPECT_DOUBLE_EQ(s.at(500.25), 500.25);
+  EXPECT_DOUBLE_EQ(s.at(830.0), 830.0);
+  EXPECT_EQ(s.at(359.9), 0.0);
+  EXPECT_EQ(s.at(830.1), 0.0);
+  EXPECT_EQ(s.at(std::nan("")), 0.0);
+}
+
+TEST(TabulatedSpectrum, ResamplesLinearlyAtEachNode) {
+  TabulatedSpectrum t({400.0, 410.0}, {1.0, 2.0}, Extrapolation::Zero);
+  Spectrum d = t.toDense();
+  EXPECT_DOUBLE_EQ(d[400 - kLambdaMinNm], 1.0);
+  EXPECT_DOUBLE_EQ(d[403 - kLambdaMinNm], 1.3);
+  EXPECT_DOUBLE_EQ(d[410 - kLambdaMinNm], 2.0);
+}
+
+TEST(TabulatedSpectrum, ExtrapolationRuleIsExplicit) {
+  TabulatedSpectrum zero({400.0, 700.0}, {0.2, 0.8}, Extrapolation::Zero);
+  TabulatedSpectrum clamp({400.0, 700.0}, {0.2, 0.8}, Extrapolation::Clamp);
+  EXPECT_EQ(zero.at(390.0), 0.0);
+  EXPECT_EQ(zero.at(710.0), 0.0);
+  EXPECT_EQ(clamp.at(390.0), 0.2);
+  EXPECT_EQ(clamp.at(710.0), 0.8);
+}
+
+TEST(Blackbody, PeakFollowsWiensDisplacementLaw) {
+  // Wien's constant b = 2.897771955e-3 m·K (CODATA 2018): λ_max = b / T.
+  for (double t : {5000.0, 6500.0}) {
+    Spectrum s = blackbody(t);
+    int peak = 0;
+    for (int i = 1; i < kSpectrumSamples; ++i)
+      if (s[i] > s[peak]) peak = i;
+    EXPECT_NEAR(kLambdaMinNm + peak, 2.897771955e6 / t, 0.5) << t << " K";
+  }
+}
+
+TEST(Blackbody, MatchesPlanckAtAKnownPoint) {
+  // 5000 K at 500 nm: c1L/λ⁵/(exp(c2/(λT)) − 1) with the CODATA radiation constants
+  // c1L = 2hc² = 1.191042972e-16 W·m²·sr⁻¹ and c2 = 1.438776877e-2 m·K.
+  double lambda = 500e-9;
+  double expected = 1.191042972e-16 / std::pow(lambda, 5) / std::expm1(1.438776877e-2 / (lambda * 5000.0)) * 1e-9;
+  EXPECT_NEAR(planckRadianceWPerSrM2Nm(500.0, 5000.0), expected, 1e-8 * expected);
+}
+
+TEST(Blackbody, RejectsNonPositiveTemperature) {
+  EXPECT_THROW(blackbody(0.0), Error);
+  EXPECT_THROW(blackbody(-5.0), Error);
+}
+
+TEST(SigmoidSpectrum, ZeroCoefficientsGiveHalfEverywhere) {
+  Spectrum s = sigmoidSpectrum(glm::vec3(0.0f));
+  EXPECT_FLOAT_EQ(static_cast<float>(s.maxValue()), 0.5f);
+  EXPECT_FLOAT_EQ(static_cast<float>(s.at(361.0)), 0.5f);
+}
+
+TEST(SigmoidSpectrum, StaysWithinZeroOneAndFiniteForExtremeCoefficients) {
+  for (glm::vec3 c : {glm::vec3(1e30f, 0, 0), glm::vec3(-1e30f, 0, 0), glm::vec3(0, 0, INFINITY),
+                      glm::vec3(0.01f, -9.0f, 2000.0f)}) {
+    Spectrum s = sigmoidSpectrum(c);
+    for (double v : s.values()) {
+      EXPECT_TRUE(std::isfinite(v));
+      EXPECT_GE(v, 0.0);
+      EXPECT_LE(v, 1.0);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace prism

@@ -40,7 +40,8 @@ TEST(ColourCheckerDemo, WhiteBalanceKeepsNeutralsUnderEveryIlluminant) {
 TEST(ColourCheckerDemo, DarkSkinMatchesBabelColorsSrgb) {
   // BabelColor's published sRGB of its average chart: dark skin (115, 82, 68); our D65-lit
   // value may differ by a few levels (BabelColor renders under D50 and adapts).
-  const int* v = renderColourChecker("D65", "bradford")[0].srgb8;
+  std::vector<ChartPatch> patches = renderColourChecker("D65", "bradford");
+  const int* v = patches[0].srgb8;
   EXPECT_NEAR(v[0], 115, 4);
   EXPECT_NEAR(v[1], 82, 4);
   EXPECT_NEAR(v[2], 68, 4);

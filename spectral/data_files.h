@@ -1,5 +1,9 @@
-// Where Prism finds its data/ folder at run time: $PRISM_DATA_DIR if set, else the source tree
-// it was built from, else the installed share/prism/data. Never anything outside these.
+// Where Prism finds its data/ folder at run time, first match wins:
+//   1. $PRISM_DATA_DIR;
+//   2. ../share/prism/data beside the running executable (an installed, relocatable prism);
+//   3. the source tree this library was built from (developers' builds);
+//   4. the data folder of the install prefix configured at build time.
+// Never anything outside these.
 #pragma once
 
 #include <filesystem>

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The GLSL half of "one formula, two compilers": every shaders/shared/*.glsl must compile as
+# GLSL 4.50 after prelude.glsl (the C++ half is compiled by the build itself). A deliberately
+# broken file must fail, so that this test can fail.
+# Usage: glsl_compile_test.sh GLSLANG_VALIDATOR SHARED_DIR SCRATCH_DIR
+set -euo pipefail
+validator=$1 shared=$2 scratch=$3
+mkdir -p "$scratch"
+
+compile() {  # compile FILE: wraps FILE in a compute shader and validates it
+  local wrapper=$scratch/$(basename "$1").comp
+  {
+    echo '#version 450'
+    echo '#extension GL_GOOGLE_include_directive : require'
+    echo '#include "prelude.glsl"'
+    echo "#include \"$1\""
+    echo 'layout(local_size_x = 1) in;'
+    echo 'void main() {}'
+  } >"$wrapper"
+  # -G (OpenGL SPIR-V target): glslang resolves #include only when generating SPIR-V.
+  "$validator" -G -I"$shared" -I"$scratch" "$wrapper" -o "$wrapper.spv"
+}
+
+status=0
+for file in "$shared"/*.glsl; do
+  name=$(basename "$file")
+  [ "$name" = prelude.glsl ] && continue
+  if compile "$name" >"$scratch/$name.log" 2>&1; then
+    echo "ok    $name"
+  else
+    echo "FAIL  $name"; cat "$scratch/$name.log"; status=1
+  fi
+done
+
+echo 'PRISM_INLINE float broken(float x) { return x * vec2(1.0f); }' >"$scratch/broken_control.glsl"
+if compile broken_control.glsl >/dev/null 2>&1; then
+  echo "FAIL  the negative control compiled: the validator checks nothing"; status=1
+fi
+exit $status

@@ -57,7 +57,7 @@ void colourXyz(const XyzOptions& o) {
     if (o.encoded) rgb = gamut.decode(rgb);
     SigmoidFitter fitter(gamut, gamutWhiteIlluminant(gamut), observer("cie1931"));
     SigmoidFit fit = fitter.fit(rgb);
-    reflectance = sigmoidSpectrum(fit.coeffs);
+    reflectance = upsampledReflectanceSpectrum(fit.coeffs);
     out["rgb"] = {{"gamut", o.gamut}, {"linear", toJson(Eigen::Vector3d(rgb.cwiseMax(0.0).cwiseMin(1.0)))}};
     out["upsampling"] = {{"model", "jakob-hanika-2019"},
                          {"coefficients", {fit.coeffs.x, fit.coeffs.y, fit.coeffs.z}},

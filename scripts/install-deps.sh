@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build pkg-config g++ ccache
-  libcli11-dev nlohmann-json3-dev libfmt-dev libeigen3-dev libglm-dev libcsv-dev libstb-dev
+  libcli11-dev nlohmann-json3-dev libfmt-dev libeigen3-dev libglm-dev libcsv-dev libstb-dev zlib1g-dev
   libgtest-dev libbenchmark-dev glslang-tools
 )
 

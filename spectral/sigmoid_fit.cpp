@@ -51,7 +51,9 @@ SigmoidFitter::SigmoidFitter(const RgbColourSpace& gamut, const Spectrum& illumi
   double norm = (illuminant * obs.curves[1]).integral();
   for (int i = 0; i < kSpectrumSamples; ++i) {
     double trapezoid = (i == 0 || i == kSpectrumSamples - 1) ? 0.5 : 1.0;
-    mT.push_back(i / kSpanNm);
+    double lambdaNm = std::clamp<double>(kLambdaMinNm + i, shared::kReflectanceMinNm,
+                                         shared::kReflectanceMaxNm);
+    mT.push_back((lambdaNm - kLambdaMinNm) / kSpanNm);
     Eigen::Vector3d w(obs.curves[0][i], obs.curves[1][i], obs.curves[2][i]);
     mWeights.push_back(w * (trapezoid * illuminant[i] / norm));
   }

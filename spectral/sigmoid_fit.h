@@ -1,8 +1,9 @@
 // Fitting Jakob–Hanika sigmoid-polynomial coefficients to one RGB albedo.
 //
 // The target is the RGB colour's XYZ in its gamut, seen as CIELAB relative to the gamut's white
-// (D65; CIE D60 for the ACES spaces). The model spectrum is seen as a reflectance lit by that
-// white illuminant through CIE 1931. Levenberg–Marquardt with an analytic Jacobian minimises the
+// (D65; CIE D60 for the ACES spaces). The model is Prism's upsampled reflectance (sigmoid.glsl:
+// the sigmoid polynomial on [380, 730] nm, flat beyond), seen lit by that white illuminant
+// through CIE 1931. Levenberg–Marquardt with an analytic Jacobian minimises the
 // CIE76 distance between the two, as in Jakob & Hanika 2019 §4. Coefficients are solved on
 // t = (λ − 360 nm)/470 nm for conditioning and returned for λ in nm (sigmoid.glsl's form).
 #pragma once
@@ -37,8 +38,8 @@ class SigmoidFitter {
                  const Eigen::Vector3d& seed = Eigen::Vector3d::Zero()) const;
 
  private:
-  const RgbColourSpace& mGamut;
-  std::vector<double> mT;                        // normalised wavelength per 1 nm node
+  RgbColourSpace mGamut;
+  std::vector<double> mT;                        // normalised, clamped wavelength per 1 nm node
   std::vector<Eigen::Vector3d> mWeights;         // node weight · illuminant · observer / ∫Sȳ
   Eigen::Vector3d mWhiteXyz;                     // the lit perfect reflector
 };

@@ -12,7 +12,7 @@ namespace {
 Eigen::Vector3d fittedLab(const SigmoidFit& fit, const RgbColourSpace& gamut) {
   Spectrum white = gamutWhiteIlluminant(gamut);
   const Observer& cie = observer("cie1931");
-  Eigen::Vector3d xyz = reflectanceTristimulus(cie, sigmoidSpectrum(fit.coeffs), white);
+  Eigen::Vector3d xyz = reflectanceTristimulus(cie, upsampledReflectanceSpectrum(fit.coeffs), white);
   return xyzToLab(xyz, whiteTristimulus(cie, white));
 }
 
@@ -33,7 +33,7 @@ TEST(SigmoidFit, ReproducesInGamutSrgbAlbedos) {
 TEST(SigmoidFit, GreyIsFlat) {
   const RgbColourSpace& srgb = colourSpace("srgb");
   SigmoidFitter fitter(srgb, gamutWhiteIlluminant(srgb), observer("cie1931"));
-  Spectrum s = sigmoidSpectrum(fitter.fit(Eigen::Vector3d::Constant(0.3)).coeffs);
+  Spectrum s = upsampledReflectanceSpectrum(fitter.fit(Eigen::Vector3d::Constant(0.3)).coeffs);
   for (int l = 400; l <= 700; l += 50) EXPECT_NEAR(s.at(l), 0.3, 2e-3) << l;
 }
 

@@ -105,3 +105,13 @@ Spectrum sigmoidSpectrum(const glm::vec3& coeffs) {
 }
 
 }  // namespace prism
+
+namespace prism {
+
+Spectrum upsampledReflectanceSpectrum(const glm::vec3& coeffs) {
+  return Spectrum::fromFunction([&coeffs](double lambdaNm) {
+    return static_cast<double>(shared::upsampledReflectance(coeffs, static_cast<float>(lambdaNm)));
+  });
+}
+
+}  // namespace prism

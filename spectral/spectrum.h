@@ -79,7 +79,9 @@ class TabulatedSpectrum {
 double planckRadianceWPerSrM2Nm(double lambdaNm, double temperatureK);
 Spectrum blackbody(double temperatureK);
 
-// Jakob–Hanika sigmoid-polynomial reflectance (shaders/shared/sigmoid.glsl) on the dense grid.
+// Jakob–Hanika sigmoid-polynomial reflectance (shaders/shared/sigmoid.glsl) on the dense grid:
+// the raw model, and Prism's upsampled reflectance (flat outside [380, 730] nm).
 Spectrum sigmoidSpectrum(const glm::vec3& coeffs);
+Spectrum upsampledReflectanceSpectrum(const glm::vec3& coeffs);
 
 }  // namespace prism

@@ -20,6 +20,23 @@ PRISM_INLINE vec4 sigmoidSpectrum4(IN(vec3) coeffs, IN(vec4) lambdaNm) {
               sigmoidSpectrum(coeffs, lambdaNm.z), sigmoidSpectrum(coeffs, lambdaNm.w));
 }
 
+// Prism's upsampled reflectance: the sigmoid polynomial on [380, 730] nm, held at its end values
+// outside. CIE 1931's x̄+ȳ+z̄ is below 0.6 % of its peak beyond that band, so colour hardly
+// constrains the polynomial there, and for saturated dark colours it climbs back towards 1 past
+// ~730 nm (and below 380 nm): spurious infrared and ultraviolet reflectance that a camera, an
+// incandescent lamp or an underwater path would see. The table optimiser fits this same
+// clamped model, so the colours stay exact and the tails stay flat.
+const float kReflectanceMinNm = 380.0f;
+const float kReflectanceMaxNm = 730.0f;
+
+PRISM_INLINE float upsampledReflectance(IN(vec3) coeffs, float lambdaNm) {
+  return sigmoidSpectrum(coeffs, clamp(lambdaNm, kReflectanceMinNm, kReflectanceMaxNm));
+}
+
+PRISM_INLINE vec4 upsampledReflectance4(IN(vec3) coeffs, IN(vec4) lambdaNm) {
+  return sigmoidSpectrum4(coeffs, clamp(lambdaNm, vec4(kReflectanceMinNm), vec4(kReflectanceMaxNm)));
+}
+
 // dS/dx = 1 / (2·(1 + x²)^(3/2)), for optimisers that fit the coefficients.
 PRISM_INLINE float sigmoidDerivative(float x) {
   if (isinf(x)) return 0.0f;

@@ -1,0 +1,15 @@
+// Shares independent work items out to threads, in the order of an atomic counter. Each item
+// must write only its own outputs, so results do not depend on the thread count.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+namespace prism {
+
+// threads = 0: all hardware threads. progress, if set, is called serialised after each item
+// with (items done, items in all).
+void parallelFor(std::size_t count, unsigned threads, const std::function<void(std::size_t item)>& body,
+                 const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+
+}  // namespace prism

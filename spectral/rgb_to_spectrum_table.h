@@ -1,0 +1,69 @@
+// A precomputed Jakob–Hanika table: RGB (in one gamut) → sigmoid coefficients, looked up by
+// the formulas of shaders/shared/upsampling.glsl, saved in Prism's own binary format.
+//
+// File format (little-endian, version 1):
+//   offset  size          field
+//   0       8             magic "PRISMLUT"
+//   8       4  u32        version (1)
+//   12      4  u32        resolution n (2–256)
+//   16      16 char[16]   gamut name, zero-padded (e.g. "srgb")
+//   32      4  u32        node layout: 1 = brightness smoothstep(smoothstep(k/(n−1))),
+//                         ratios smoothstep(i/(n−1)) (shaders/shared/upsampling.glsl)
+//   36      4  u32        reserved, 0
+//   40      4n f32[n]     brightness node values
+//   ...     36n³ f32[]    coefficients [block 0–2][z][y][x][c0 c1 c2], λ in nm
+//   end−4   4  u32        CRC-32 (zlib) of every byte before it
+// The loader checks each field and the size before reading, then the checksum, and names the
+// file and the field that is wrong.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace prism {
+
+class RgbToSpectrumTable {
+ public:
+  RgbToSpectrumTable(std::string gamut, int resolution);
+
+  const std::string& gamut() const { return mGamut; }
+  int resolution() const { return mResolution; }
+  // Brightness of node k, from the shared formula.
+  float brightnessNode(int k) const;
+  glm::vec3 coefficients(int block, int zi, int yi, int xi) const;
+  void setCoefficients(int block, int zi, int yi, int xi, const glm::vec3& c);
+  // The node's colour: rgb[block] = z, rgb[block+1] = x·z, rgb[block+2] = y·z.
+  glm::vec3 nodeRgb(int block, int zi, int yi, int xi) const;
+  std::span<const float> data() const { return mData; }
+
+  // Albedo lookups (channels clamped to [0, 1], NaN read as 0): the manual eight-corner blend
+  // (the reference), and a CPU model of the single hardware-filtered fetch with exact weights.
+  glm::vec3 lookup(const glm::vec3& rgb) const;
+  glm::vec3 lookupFiltered(const glm::vec3& rgb) const;
+
+  void save(const std::filesystem::path& path) const;
+  static RgbToSpectrumTable load(const std::filesystem::path& path);
+
+ private:
+  std::size_t index(int block, int zi, int yi, int xi) const;
+
+  std::string mGamut;
+  int mResolution;
+  std::vector<float> mData;
+};
+
+// An unbounded RGB (emission, or any value above 1): spectrum = scale · reflectance(coeffs),
+// with scale = 2·max(r, g, b) and coefficients of rgb / scale, whose largest channel is ½
+// (pbrt-v4's RGBUnboundedSpectrum: ½ keeps the fit away from the unreachable pure white).
+// Black, negative, NaN and infinite channels are read as 0; never NaN or Inf out.
+struct UnboundedUpsampling {
+  glm::vec3 coeffs{0.0f};
+  float scale = 0.0f;
+};
+UnboundedUpsampling lookupUnbounded(const RgbToSpectrumTable& table, const glm::vec3& rgb);
+
+}  // namespace prism

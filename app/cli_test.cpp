@@ -154,6 +154,31 @@ TEST(Cli, DemoWritesTheChart) {
   EXPECT_NE(r.out.find("dark skin"), std::string::npos);
 }
 
+TEST(Cli, LutAndUpsampleCheckTheirInput) {
+  expectOneLineError("lut --gamut adobe -o x.prismlut", "unknown colour space 'adobe'");
+  expectOneLineError("lut --res 1 -o x.prismlut", "resolution must be within 2–256");
+  expectOneLineError("upsample --rgb 0.5,0.5", "--rgb");
+  expectOneLineError("upsample --rgb 0.5,0.5,0.5 --wavelengths 300:830:5", "--wavelengths");
+  expectOneLineError("upsample --rgb 0.5,0.5,0.5 --intent emission", "'emission'");
+}
+
+TEST(Cli, LutWritesATableAndUpsampleBuildsItsCache) {
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "cli_lut";
+  std::filesystem::remove_all(dir);
+  Result lut = run("lut --gamut srgb --res 6 -o " + (dir / "t.prismlut").string() + " --json");
+  ASSERT_EQ(lut.exitCode, 0) << lut.err;
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "t.prismlut"));
+  EXPECT_NE(lut.err.find("100%"), std::string::npos) << "a progress bar on stderr";
+
+  Result up = run("upsample --rgb 0.5,0.5,0.5 --res 6 --wavelengths 400:700:100 --json",
+                  "PRISM_CACHE_DIR=" + (dir / "cache").string());
+  ASSERT_EQ(up.exitCode, 0) << up.err;
+  nlohmann::json j = nlohmann::json::parse(up.out);
+  ASSERT_EQ(j["spectrum"].size(), 4u);
+  for (const auto& sample : j["spectrum"]) EXPECT_NEAR(sample[1].get<double>(), 0.5, 0.01);
+  EXPECT_FALSE(std::filesystem::is_empty(dir / "cache"));
+}
+
 TEST(Cli, BenchmarksRun) {
   Result r = run("bench --benchmark_filter=spectrumToXyzSampled/4$ --benchmark_min_time=0.001");
   EXPECT_EQ(r.exitCode, 0) << r.err;

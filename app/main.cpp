@@ -9,21 +9,22 @@
 
 #include "app/colour_checker_demo.h"
 #include "app/colour_commands.h"
+#include "app/upsampling_commands.h"
 #include "spectral/error.h"
 
 namespace {
 
-// "a,b,c" → three finite numbers; Error naming the option otherwise.
-std::vector<double> parseNumbers(const std::string& text, const std::string& option) {
+// "a,b,c" (or another separator) → finite numbers; Error naming the option otherwise.
+std::vector<double> parseNumbers(const std::string& text, const std::string& option, char separator = ',') {
   std::vector<double> values;
   std::size_t start = 0;
   while (start <= text.size()) {
-    std::size_t comma = text.find(',', start);
+    std::size_t comma = text.find(separator, start);
     std::string_view field(text.data() + start, (comma == std::string::npos ? text.size() : comma) - start);
     double v = 0.0;
     auto result = std::from_chars(field.data(), field.data() + field.size(), v);
     if (field.empty() || result.ec != std::errc() || result.ptr != field.data() + field.size() || !std::isfinite(v))
-      throw prism::Error(option + ": '" + text + "' is not a comma-separated list of numbers");
+      throw prism::Error(option + ": '" + text + "' is not a '" + separator + "'-separated list of numbers");
     values.push_back(v);
     if (comma == std::string::npos) break;
     start = comma + 1;
@@ -111,6 +112,26 @@ int main(int argc, char** argv) {
   listCmd->add_option("what", listWhat, "illuminants, observers, cameras or spaces")->required();
   listCmd->add_flag("--json", listJson, "JSON output");
 
+  LutOptions lut;
+  auto* lutCmd = app.add_subcommand("lut", "build a Jakob–Hanika upsampling table with Prism's optimiser");
+  lutCmd->add_option("--gamut", lut.gamut, "srgb, display-p3, rec2020, acescg, aces2065-1")->capture_default_str();
+  lutCmd->add_option("--res", lut.resolution, "nodes per axis (2–256)")->capture_default_str();
+  lutCmd->add_option("-o,--output", lut.output, "table file to write")->required();
+  lutCmd->add_option("--threads", lut.threads, "worker threads (0: all)");
+  lutCmd->add_flag("--report", lut.report, "measure node and round-trip CIEDE2000 after building");
+  lutCmd->add_flag("--json", lut.json, "JSON output");
+
+  UpsampleOptions up;
+  std::string upRgb, upWavelengths;
+  auto* upCmd = app.add_subcommand("upsample", "RGB → sigmoid coefficients and spectrum through the cached table");
+  upCmd->add_option("--rgb", upRgb, "r,g,b, linear")->required();
+  upCmd->add_option("--gamut", up.gamut, "colour space of --rgb")->capture_default_str();
+  upCmd->add_option("--res", up.resolution, "table resolution")->capture_default_str();
+  upCmd->add_option("--wavelengths", upWavelengths, "MIN:MAX:STEP in nm (default 360:830:5)");
+  upCmd->add_option("--intent", up.intent, "albedo (clamped to [0, 1]) or unbounded (scaled by 2·max)")->capture_default_str();
+  upCmd->add_option("--path", up.path, "manual or filtered lookup")->capture_default_str();
+  upCmd->add_flag("--json", up.json, "JSON output");
+
   auto* bench = app.add_subcommand("bench", "run Prism's benchmarks (Google Benchmark flags pass through)");
   bench->allow_extras();
 
@@ -134,6 +155,12 @@ int main(int argc, char** argv) {
     }
     if (*camCmd) colourCameraMatrix(cam);
     if (*listCmd) colourList(listWhat, listJson);
+    if (*lutCmd) runLut(lut);
+    if (*upCmd) {
+      up.rgb = parseNumbers(upRgb, "--rgb");
+      if (!upWavelengths.empty()) up.wavelengths = parseNumbers(upWavelengths, "--wavelengths", ':');
+      runUpsample(up);
+    }
     if (*bench) return runBenchmarks(bench->remaining());
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

@@ -1,0 +1,22 @@
+// A progress bar on stderr for long work (table optimisation, precomputation, references):
+// redrawn in place at most once per percent, finished with a newline and the elapsed time.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <string>
+
+namespace prism::app {
+
+class ProgressBar {
+ public:
+  explicit ProgressBar(std::string label);
+  void update(std::size_t done, std::size_t total);
+
+ private:
+  std::string mLabel;
+  int mLastPercent = -1;
+  std::chrono::steady_clock::time_point mStart;
+};
+
+}  // namespace prism::app

@@ -1,0 +1,104 @@
+#include "app/upsampling_commands.h"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "app/progress_bar.h"
+#include "spectral/colour_space.h"
+#include "spectral/error.h"
+#include "spectral/rgb_to_spectrum_cache.h"
+#include "spectral/rgb_to_spectrum_optimiser.h"
+#include "spectral/rgb_to_spectrum_quality.h"
+#include "spectral/spectrum.h"
+
+namespace prism::app {
+namespace {
+
+using nlohmann::json;
+
+json errorJson(const UpsamplingError& e) {
+  return {{"count", e.count},
+          {"rmsDeltaE2000", e.rmsDeltaE2000},
+          {"maxDeltaE2000", e.maxDeltaE2000},
+          {"fractionWithinDeltaE1", e.fractionWithin1},
+          {"worstRgb", {e.worstRgb.x, e.worstRgb.y, e.worstRgb.z}},
+          {"reflectanceRange", {e.minReflectance, e.maxReflectance}}};
+}
+
+void printError(const char* what, const UpsamplingError& e) {
+  fmt::print("{:<28} n={:<8} RMS ΔE00 {:.5f}  max {:.4f}  ≤1: {:.4f}%  reflectance [{:.3g}, {:.6f}]  worst rgb ({:.4f}, {:.4f}, {:.4f})\n",
+             what, e.count, e.rmsDeltaE2000, e.maxDeltaE2000, 100.0 * e.fractionWithin1,
+             e.minReflectance, e.maxReflectance, e.worstRgb.x, e.worstRgb.y, e.worstRgb.z);
+}
+
+}  // namespace
+
+void runLut(const LutOptions& o) {
+  colourSpace(o.gamut);  // unknown names fail before any work
+  if (o.output.empty()) throw Error("lut: give the output file with -o");
+  ProgressBar bar("lut " + o.gamut + " " + std::to_string(o.resolution) + "³");
+  auto start = std::chrono::steady_clock::now();
+  RgbToSpectrumTable table = buildRgbToSpectrumTable(
+      {o.gamut, o.resolution, o.threads, [&](std::size_t done, std::size_t total) { bar.update(done, total); }});
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  table.save(o.output);
+  json out = {{"gamut", o.gamut}, {"resolution", o.resolution}, {"file", o.output}, {"buildSeconds", seconds}};
+  if (o.report) {
+    out["nodes"] = errorJson(nodeError(table, o.threads));
+    out["roundTripManual"] = errorJson(roundTripError(table, LookupPath::Manual, 100000, 1, o.threads));
+    out["roundTripFiltered"] = errorJson(roundTripError(table, LookupPath::Filtered, 100000, 1, o.threads));
+  }
+  if (o.json) {
+    fmt::print("{}\n", out.dump(2));
+    return;
+  }
+  fmt::print("{}: {} table, {}³ × 3 blocks, built in {:.1f} s\n", o.output, o.gamut, o.resolution, seconds);
+  if (o.report) {
+    printError("nodes (no interpolation)", nodeError(table, o.threads));
+    printError("round trip, manual", roundTripError(table, LookupPath::Manual, 100000, 1, o.threads));
+    printError("round trip, filtered", roundTripError(table, LookupPath::Filtered, 100000, 1, o.threads));
+  }
+}
+
+void runUpsample(const UpsampleOptions& o) {
+  if (o.rgb.size() != 3) throw Error("--rgb: expected three comma-separated numbers");
+  if (o.wavelengths.size() != 3 || !(o.wavelengths[2] > 0.0) || !(o.wavelengths[0] <= o.wavelengths[1]) ||
+      o.wavelengths[0] < kLambdaMinNm || o.wavelengths[1] > kLambdaMaxNm)
+    throw Error("--wavelengths: expected MIN:MAX:STEP in nm within 360–830 with MIN ≤ MAX and STEP > 0");
+  if (o.intent != "albedo" && o.intent != "unbounded")
+    throw Error("--intent: unknown intent '" + o.intent + "' (albedo, unbounded)");
+  if (o.path != "manual" && o.path != "filtered")
+    throw Error("--path: unknown lookup path '" + o.path + "' (manual, filtered)");
+  colourSpace(o.gamut);
+  ProgressBar bar("building the " + o.gamut + " upsampling table (first use, cached)");
+  RgbToSpectrumTable table = cachedRgbToSpectrumTable(
+      o.gamut, o.resolution, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
+  glm::vec3 rgb(static_cast<float>(o.rgb[0]), static_cast<float>(o.rgb[1]), static_cast<float>(o.rgb[2]));
+  glm::vec3 coeffs;
+  float scale = 1.0f;
+  if (o.intent == "unbounded") {
+    UnboundedUpsampling u = lookupUnbounded(table, rgb);
+    coeffs = u.coeffs, scale = u.scale;
+  } else {
+    coeffs = o.path == "manual" ? table.lookup(rgb) : table.lookupFiltered(rgb);
+  }
+  Spectrum reflectance = upsampledReflectanceSpectrum(coeffs);
+  json spectrum = json::array();
+  for (double l = o.wavelengths[0]; l <= o.wavelengths[1] + 1e-9; l += o.wavelengths[2])
+    spectrum.push_back({l, scale * reflectance.at(l)});
+  if (o.json) {
+    fmt::print("{}\n", json{{"rgb", o.rgb}, {"gamut", o.gamut}, {"intent", o.intent}, {"path", o.path},
+                            {"coefficients", {coeffs.x, coeffs.y, coeffs.z}}, {"scale", scale},
+                            {"spectrum", spectrum}}
+                           .dump(2));
+    return;
+  }
+  fmt::print("coefficients {:.8g} {:.8g} {:.8g}  scale {:.6g}\nwavelength_nm,value\n", coeffs.x,
+             coeffs.y, coeffs.z, scale);
+  for (const json& row : spectrum) fmt::print("{},{:.6f}\n", row[0].get<double>(), row[1].get<double>());
+}
+
+}  // namespace prism::app

@@ -1,0 +1,31 @@
+// `prism lut` (build an upsampling table) and `prism upsample` (one colour → coefficients and
+// spectrum), for people (text) and scripts (--json).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace prism::app {
+
+struct LutOptions {
+  std::string gamut = "srgb";
+  int resolution = 64;
+  std::string output;
+  unsigned threads = 0;
+  bool report = false;  // node and round-trip quality after building
+  bool json = false;
+};
+void runLut(const LutOptions& options);
+
+struct UpsampleOptions {
+  std::vector<double> rgb;
+  std::string gamut = "srgb";
+  int resolution = 64;
+  std::vector<double> wavelengths{360.0, 830.0, 5.0};  // min, max, step in nm
+  std::string intent = "albedo";                       // albedo | unbounded
+  std::string path = "manual";                         // manual | filtered
+  bool json = false;
+};
+void runUpsample(const UpsampleOptions& options);
+
+}  // namespace prism::app

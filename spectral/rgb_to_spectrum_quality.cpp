@@ -107,7 +107,9 @@ UpsamplingError lookupError(const RgbToSpectrumTable& table, LookupPath path,
   const Colourimeter meter(colourSpace(table.gamut()));
   std::vector<Sample> results(rgbs.size());
   parallelFor(rgbs.size(), threads, [&](std::size_t i) {
-    glm::vec3 coeffs = path == LookupPath::Manual ? table.lookup(rgbs[i]) : table.lookupFiltered(rgbs[i]);
+    glm::vec3 coeffs = path == LookupPath::Manual     ? table.lookup(rgbs[i])
+                       : path == LookupPath::Filtered ? table.lookupFiltered(rgbs[i])
+                                                      : table.lookupFiltered(rgbs[i], 8);
     results[i] = meter.measure(rgbs[i], coeffs);
   });
   return summarise(results, std::vector<glm::vec3>(rgbs.begin(), rgbs.end()));

@@ -26,7 +26,8 @@ struct UpsamplingError {
 // Every node of the table, coefficients as stored (no interpolation).
 UpsamplingError nodeError(const RgbToSpectrumTable& table, unsigned threads = 0);
 
-enum class LookupPath { Manual, Filtered };
+// Filtered8Bit: the filtered path with the 8-bit blend weights of common GPUs.
+enum class LookupPath { Manual, Filtered, Filtered8Bit };
 // Given albedos in the table's gamut through a run-time lookup path.
 UpsamplingError lookupError(const RgbToSpectrumTable& table, LookupPath path,
                             std::span<const glm::vec3> rgbs, unsigned threads = 0);

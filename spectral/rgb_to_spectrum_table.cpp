@@ -100,14 +100,18 @@ glm::vec3 RgbToSpectrumTable::lookup(const glm::vec3& rgb) const {
                               at(1, 0, 1), at(0, 1, 1), at(1, 1, 1), c.weight);
 }
 
-glm::vec3 RgbToSpectrumTable::lookupFiltered(const glm::vec3& rgb) const {
-  // What GL_LINEAR on a res × res × 3res texture does at the shared texture coordinate, with
-  // exact (not 8-bit) weights: texel = coord·size − ½, blend floor and floor + 1.
+glm::vec3 RgbToSpectrumTable::lookupFiltered(const glm::vec3& rgb, int weightBits) const {
+  // What GL_LINEAR on a res × res × 3res texture does at the shared texture coordinate:
+  // texel = coord·size − ½, blend floor and floor + 1.
   glm::vec3 uvw = shared::lutFilteredCoordinate(shared::lutPosition(rgb), mResolution);
   float n = static_cast<float>(mResolution);
   glm::vec3 texel(uvw.x * n - 0.5f, uvw.y * n - 0.5f, uvw.z * 3.0f * n - 0.5f);
   glm::ivec3 lo(glm::floor(texel));
   glm::vec3 w = texel - glm::vec3(lo);
+  if (weightBits > 0) {
+    float steps = std::ldexp(1.0f, weightBits);
+    w = glm::floor(w * steps + 0.5f) / steps;
+  }
   auto at = [&](int dx, int dy, int dz) {
     int x = std::clamp(lo.x + dx, 0, mResolution - 1);
     int y = std::clamp(lo.y + dy, 0, mResolution - 1);

@@ -41,9 +41,10 @@ class RgbToSpectrumTable {
   std::span<const float> data() const { return mData; }
 
   // Albedo lookups (channels clamped to [0, 1], NaN read as 0): the manual eight-corner blend
-  // (the reference), and a CPU model of the single hardware-filtered fetch with exact weights.
+  // (the reference), and a CPU model of the single hardware-filtered fetch, with exact weights
+  // or with weights rounded to weightBits fractional bits as GPUs do (8 on NVIDIA and AMD).
   glm::vec3 lookup(const glm::vec3& rgb) const;
-  glm::vec3 lookupFiltered(const glm::vec3& rgb) const;
+  glm::vec3 lookupFiltered(const glm::vec3& rgb, int weightBits = 0) const;
 
   void save(const std::filesystem::path& path) const;
   static RgbToSpectrumTable load(const std::filesystem::path& path);

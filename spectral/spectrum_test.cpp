@@ -69,6 +69,13 @@ TEST(Blackbody, RejectsNonPositiveTemperature) {
   EXPECT_THROW(blackbody(-5.0), Error);
 }
 
+TEST(SigmoidSpectrum, HugeArgumentsReachTheLimitsNotAHalf) {
+  // x·x overflows past ~1.8e19; S must still be ≈ 1 or ≈ 0 there, not ½.
+  EXPECT_EQ(sigmoidSpectrum(glm::vec3(0, 0, 3e19f)).at(500.0), 1.0);
+  EXPECT_EQ(sigmoidSpectrum(glm::vec3(0, 0, -3e19f)).at(500.0), 0.0);
+  EXPECT_NEAR(sigmoidSpectrum(glm::vec3(0, 0, 5e8f)).at(500.0), 1.0, 1e-7);
+}
+
 TEST(SigmoidSpectrum, ZeroCoefficientsGiveHalfEverywhere) {
   Spectrum s = sigmoidSpectrum(glm::vec3(0.0f));
   EXPECT_FLOAT_EQ(static_cast<float>(s.maxValue()), 0.5f);
@@ -77,7 +84,7 @@ TEST(SigmoidSpectrum, ZeroCoefficientsGiveHalfEverywhere) {
 
 TEST(SigmoidSpectrum, StaysWithinZeroOneAndFiniteForExtremeCoefficients) {
   for (glm::vec3 c : {glm::vec3(1e30f, 0, 0), glm::vec3(-1e30f, 0, 0), glm::vec3(0, 0, INFINITY),
-                      glm::vec3(0.01f, -9.0f, 2000.0f)}) {
+                      glm::vec3(0.01f, -9.0f, 2000.0f), glm::vec3(0, 0, 3e19f), glm::vec3(0, 0, -3e19f)}) {
     Spectrum s = sigmoidSpectrum(c);
     for (double v : s.values()) {
       EXPECT_TRUE(std::isfinite(v));

@@ -1,11 +1,11 @@
 // The sigmoid-polynomial reflectance model of Jakob & Hanika 2019, "A Low-Dimensional Function
 // Space for Efficient Spectral Upsampling", Eq. 3–4: f(λ) = S(c0·λ² + c1·λ + c2) with
 // S(x) = ½ + x / (2·√(1 + x²)). The coefficients act on λ in nanometres. S maps ℝ onto (0, 1),
-// so every such spectrum is a valid reflectance; x = ±∞ (from overflowing coefficients) is
-// taken to its limit instead of the NaN that ∞/∞ would give.
+// so every such spectrum is a valid reflectance. Beyond |x| = 1e9 (S within 3e-19 of its
+// limit) S is taken to 0 or 1: past ~1.8e19 x·x overflows, which gave ½ (or the NaN of ∞/∞).
 
 PRISM_INLINE float sigmoid(float x) {
-  if (isinf(x)) return x > 0.0f ? 1.0f : 0.0f;
+  if (abs(x) > 1e9f) return x > 0.0f ? 1.0f : 0.0f;
   return 0.5f + x / (2.0f * sqrt(1.0f + x * x));
 }
 

@@ -8,6 +8,8 @@ find_package(CLI11 REQUIRED)
 find_package(benchmark REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+# libepoxy loads OpenGL and EGL for prism::gpu (no CMake config of its own).
+pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
 
 # libcsv (RFC 4180 tokenizer) ships neither a CMake config nor a pkg-config file.
 find_path(CSV_INCLUDE_DIR csv.h REQUIRED)

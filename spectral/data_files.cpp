@@ -6,18 +6,35 @@
 #include "spectral/error.h"
 
 namespace prism {
+namespace {
 
-std::filesystem::path dataDirectory() {
-  if (const char* env = std::getenv("PRISM_DATA_DIR"); env && *env) return env;
+// One lookup order for every run-time folder: the variable, beside the executable, the source
+// tree, the install prefix. shaders/ sits beside data/ both in the source tree and under
+// share/prism, so its two build-time locations are derived from data/'s.
+std::filesystem::path findDirectory(const char* variable, const char* name,
+                                    const std::filesystem::path& source,
+                                    const std::filesystem::path& installed) {
+  if (const char* env = std::getenv(variable); env && *env) return env;
   std::error_code ec;
   std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) {
-    std::filesystem::path beside = exe.parent_path().parent_path() / "share" / "prism" / "data";
+    std::filesystem::path beside = exe.parent_path().parent_path() / "share" / "prism" / name;
     if (std::filesystem::is_directory(beside, ec)) return beside;
   }
-  std::filesystem::path source = PRISM_SOURCE_DATA_DIR;
   if (std::filesystem::is_directory(source)) return source;
-  return PRISM_INSTALL_DATA_DIR;
+  return installed;
+}
+
+}  // namespace
+
+std::filesystem::path dataDirectory() {
+  return findDirectory("PRISM_DATA_DIR", "data", PRISM_SOURCE_DATA_DIR, PRISM_INSTALL_DATA_DIR);
+}
+
+std::filesystem::path shaderDirectory() {
+  return findDirectory("PRISM_SHADER_DIR", "shaders",
+                       std::filesystem::path(PRISM_SOURCE_DATA_DIR).parent_path() / "shaders",
+                       std::filesystem::path(PRISM_INSTALL_DATA_DIR).parent_path() / "shaders");
 }
 
 std::filesystem::path dataFile(std::string_view name) {

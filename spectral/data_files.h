@@ -3,7 +3,9 @@
 //   2. ../share/prism/data beside the running executable (an installed, relocatable prism);
 //   3. the source tree this library was built from (developers' builds);
 //   4. the data folder of the install prefix configured at build time.
-// Never anything outside these.
+// Never anything outside these. shaderDirectory() finds the installed GLSL (shaders/, holding
+// shared/) the same way: $PRISM_SHADER_DIR, ../share/prism/shaders beside the executable, the
+// source tree's shaders/, the install prefix's share/prism/shaders.
 #pragma once
 
 #include <filesystem>
@@ -14,5 +16,8 @@ namespace prism {
 std::filesystem::path dataDirectory();
 // Path of a file in data/; Error naming the file and the folder searched when it is missing.
 std::filesystem::path dataFile(std::string_view name);
+
+// The folder holding shared/ (the dual-compiled headers) and, later, the GPU passes' shaders.
+std::filesystem::path shaderDirectory();
 
 }  // namespace prism

@@ -1,19 +1,25 @@
 #!/usr/bin/env bash
-# Installs the build into a scratch prefix, builds tests/consumer against it with
-# find_package(Prism), runs it on the installed data, and checks that the installed prism
-# binary reads the data installed beside it.
+# Installs the build into a scratch prefix and uses it the way other projects would:
+# tests/consumer_spectral links only prism::spectral (no GL needed) and runs on the installed
+# data; tests/consumer_gpu links prism::gpu and runs an installed shared shader on llvmpipe.
+# Then checks that the installed prism binary reads the data installed beside it.
 # Usage: install_consumer_test.sh SOURCE_DIR BUILD_DIR SCRATCH_DIR
 set -euo pipefail
 source_dir=$1 build_dir=$2 scratch=$3
 rm -rf "$scratch"
 prefix=$scratch/prefix
 cmake --install "$build_dir" --prefix "$prefix" >/dev/null
-cmake -S "$source_dir/tests/consumer" -B "$scratch/build" -G Ninja \
-      -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$scratch/build" >/dev/null
-output=$(PRISM_DATA_DIR="$prefix/share/prism/data" "$scratch/build/consumer")
+for consumer in spectral gpu; do
+  cmake -S "$source_dir/tests/consumer_$consumer" -B "$scratch/build_$consumer" -G Ninja \
+        -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$scratch/build_$consumer" >/dev/null
+done
+output=$(PRISM_DATA_DIR="$prefix/share/prism/data" "$scratch/build_spectral/consumer")
 echo "$output"
 [ "$output" = "D65 xy 0.3127 0.3290" ]
+output=$("$scratch/build_gpu/gpu_consumer")
+echo "$output"
+[ "$output" = "pcgHash(0) = 129708002" ]
 
 # The installed binary must use its own data: remove one file there and watch it say so.
 rm "$prefix/share/prism/data/illuminants_F.csv"

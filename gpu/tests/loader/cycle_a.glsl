@@ -1,0 +1,2 @@
+// Loader fixture: half of an include cycle.
+#include "cycle_b.glsl"

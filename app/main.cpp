@@ -10,6 +10,7 @@
 #include "app/colour_checker_demo.h"
 #include "app/colour_commands.h"
 #include "app/upsampling_commands.h"
+#include "gpu/error.h"
 #include "spectral/error.h"
 
 namespace {
@@ -175,6 +176,9 @@ int main(int argc, char** argv) {
       fmt::print(stderr, "prism: error: {}\n", e.what());
     return 2;
   } catch (const prism::Error& e) {
+    fmt::print(stderr, "prism: error: {}\n", e.what());
+    return 1;
+  } catch (const prism::gpu::GpuError& e) {
     fmt::print(stderr, "prism: error: {}\n", e.what());
     return 1;
   } catch (const std::exception& e) {

@@ -11,9 +11,9 @@
 // [block][z][y][x] → (c0, c1, c2).
 //
 // Two run-time paths, both from this file:
-// - manual (the reference): the z interval comes analytically from the inverse of the scale
-//   (no search), corrected by one comparison with the exact node values, and the eight
-//   corners are blended with weights linear in x, y and z;
+// - manual (the reference): each interval comes analytically from the inverse of its node
+//   mapping (no search), corrected by one comparison with the exact node values, and the
+//   eight corners are blended with weights linear in x, y and z;
 // - filtered: ratios and brightness are mapped into texel space through the inverse node
 //   mappings, so the GPU's trilinear filter does the whole blend in one 3D fetch. It
 //   interpolates linearly in node space rather than in x, y, z: a different (equally smooth)
@@ -70,14 +70,19 @@ PRISM_INLINE LutCell lutCell(IN(LutPosition) p, int res) {
   float last = float(res - 1);
   LutCell cell;
   cell.block = p.block;
-  float fx = lutNodeOfRatio(p.x) * last;
-  float fy = lutNodeOfRatio(p.y) * last;
-  cell.xi = min(int(fx), res - 2);
-  cell.yi = min(int(fy), res - 2);
+  // Analytic indices (no search) can land one off at a node, and asin/sin differ between
+  // drivers; the node values themselves, plain polynomials, decide.
+  int xi = clamp(int(lutNodeOfRatio(p.x) * last), 0, res - 2);
+  if (xi > 0 && p.x < lutRatioOfNode(float(xi) / last)) xi -= 1;
+  if (xi < res - 2 && p.x >= lutRatioOfNode(float(xi + 1) / last)) xi += 1;
+  int yi = clamp(int(lutNodeOfRatio(p.y) * last), 0, res - 2);
+  if (yi > 0 && p.y < lutRatioOfNode(float(yi) / last)) yi -= 1;
+  if (yi < res - 2 && p.y >= lutRatioOfNode(float(yi + 1) / last)) yi += 1;
   int zi = clamp(int(lutNodeOfScale(p.z) * last), 0, res - 2);
-  // The analytic index can land one off at a node; the node values decide.
   if (zi > 0 && p.z < lutScaleOfNode(float(zi) / last)) zi -= 1;
   if (zi < res - 2 && p.z >= lutScaleOfNode(float(zi + 1) / last)) zi += 1;
+  cell.xi = xi;
+  cell.yi = yi;
   cell.zi = zi;
   float z0 = lutScaleOfNode(float(zi) / last);
   float z1 = lutScaleOfNode(float(zi + 1) / last);

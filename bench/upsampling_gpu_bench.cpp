@@ -1,0 +1,74 @@
+// GPU cost per pixel of the two upsampling lookups (shaders/common_upsampling.glsl) on the
+// 64³ sRGB table: 1920×1080 lookups per dispatch, timed with GL_TIME_ELAPSED queries on a GPU
+// and with the wall clock around a finished dispatch on llvmpipe (whose timer queries do not
+// measure its worker threads' execution).
+// A fixed count of dispatches keeps a slow software rasteriser bounded. Skipped with a message
+// where no OpenGL 4.5 context can be made.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <memory>
+
+#include "gpu/buffer.h"
+#include "gpu/compute.h"
+#include "gpu/error.h"
+#include "gpu/headless_context.h"
+#include "gpu/program.h"
+#include "render/upsampling_texture.h"
+#include "spectral/data_files.h"
+#include "spectral/rgb_to_spectrum_cache.h"
+
+namespace prism {
+namespace {
+
+constexpr GLuint kPixels = 1920 * 1080;
+
+template <bool kFiltered>
+void upsamplingGpuLookup(benchmark::State& state) {
+  std::unique_ptr<gpu::HeadlessContext> context;
+  try {
+    context = std::make_unique<gpu::HeadlessContext>();
+  } catch (const gpu::GpuError& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  RgbToSpectrumTable table = cachedRgbToSpectrumTable("srgb", 64);
+  gpu::Texture3D texture = render::uploadUpsamplingTable(table);
+  gpu::ProgramDesc desc;
+  desc.compute = shaderDirectory() / "bench" / "upsampling_cost.comp";
+  desc.includeDirs = {shaderDirectory() / "shared", shaderDirectory()};
+  if (kFiltered) desc.defines = {{"UPSAMPLING_FILTERED", ""}};
+  gpu::Program program(desc);
+  gpu::Buffer sink(gpu::BufferDesc{kPixels * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT, "sink"});
+  sink.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  texture.bind(0);
+  program.use();
+  program.setUniform("resolution", GLint{64});
+  program.setUniform("count", kPixels);
+  gpu::runCompute1D(program, kPixels);  // warm-up: llvmpipe compiles at first dispatch
+  glFinish();
+  const bool software = context->renderer().find("llvmpipe") != std::string::npos;
+  GLuint query = 0;
+  glCreateQueries(GL_TIME_ELAPSED, 1, &query);
+  for (auto _ : state) {
+    auto start = std::chrono::steady_clock::now();
+    glBeginQuery(GL_TIME_ELAPSED, query);
+    gpu::runCompute1D(program, kPixels);
+    glEndQuery(GL_TIME_ELAPSED);
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+    glFinish();
+    double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    state.SetIterationTime(software ? wall : static_cast<double>(ns) * 1e-9);
+  }
+  glDeleteQueries(1, &query);
+  state.SetItemsProcessed(state.iterations() * kPixels);
+  state.SetLabel(context->renderer());
+}
+void upsamplingGpuManual(benchmark::State& state) { upsamplingGpuLookup<false>(state); }
+void upsamplingGpuFiltered(benchmark::State& state) { upsamplingGpuLookup<true>(state); }
+BENCHMARK(upsamplingGpuManual)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(20);
+BENCHMARK(upsamplingGpuFiltered)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(20);
+
+}  // namespace
+}  // namespace prism

@@ -75,13 +75,16 @@ TEST(UpsamplingTexture, GpuLookupsMatchTheCpu) {
   }
   std::printf("%s: manual |ΔR| %.3g, filtered vs exact weights %.3g (8-bit weight model: %.3g)\n",
               context.renderer().c_str(), manualWorst, filteredWorst, model8BitWorst);
-  // Same shared arithmetic, same texels, indices decided by the same polynomial node values.
-  // What remains is GLSL's licence on division (2.5 ULP, GLSL 4.50 §4.7.1) in the ratios
-  // rgb/max and the weights, which the coefficients' steep gradient near saturated colours
-  // turns into up to ~3e-5 of reflectance on llvmpipe (the target was 1e-5).
-  EXPECT_LE(manualWorst, 5e-5f);
-  // The hardware filter may round its weights; it must be no coarser than the 8-bit weights for
-  // which the quality tests showed the bounds hold.
+  // Same shared arithmetic written out operation by operation (no smoothstep or mix built-ins,
+  // which Mesa and GLM expand differently), same texels, indices decided by the same node
+  // values: llvmpipe, which rounds every operation correctly, agrees with the CPU bit for bit
+  // (measured 0). The bound is the target, leaving room for GLSL's licence on division
+  // (2.5 ULP, GLSL 4.50 §4.7.1) on other drivers.
+  EXPECT_LE(manualWorst, 1e-5f);
+  // The hardware filter rounds its weights. llvmpipe measured 4.4e-3 against 3.2e-3 for the CPU
+  // model that rounds weights to the nearest 1/256, i.e. a little coarser (truncation instead of
+  // rounding would explain it); the bound allows 1.5× that model. The quality tests show that
+  // 8-bit rounding keeps the sRGB round trip at max 0.066 ΔE00 against the bound of 0.2.
   EXPECT_LE(filteredWorst, 1.5f * model8BitWorst + 1e-6f);
 }
 

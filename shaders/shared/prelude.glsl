@@ -3,3 +3,4 @@
 #define IN(T) in T
 #define OUT(T) out T
 #define INOUT(T) inout T
+#define PRISM_PRECISE precise

@@ -8,6 +8,8 @@
 // listed here, no swizzles, no texture functions, and these macros:
 //   PRISM_INLINE  before every function (C++ needs `inline`, GLSL has no such keyword)
 //   IN(T) / OUT(T) / INOUT(T)  parameter qualifiers
+//   PRISM_PRECISE  GLSL's `precise` (no fusing or reassociation) where CPU and GPU must agree
+//                  bit for bit; the C++ build neither fuses nor reassociates anyway
 #pragma once
 
 #include <cstdint>
@@ -18,6 +20,7 @@
 #define IN(T) const T&
 #define OUT(T) T&
 #define INOUT(T) T&
+#define PRISM_PRECISE
 
 namespace prism::shared {
 using uint = std::uint32_t;

@@ -20,9 +20,29 @@
 //   interpolant between the same nodes.
 // Inputs are albedos: NaN is read as 0 and channels are clamped to [0, 1] first.
 
-PRISM_INLINE float lutScaleOfNode(float t) {
-  return smoothstep(0.0f, 1.0f, smoothstep(0.0f, 1.0f, t));
+// The manual path's node values, weights and blend are written out operation by operation, not
+// with the built-ins smoothstep and mix, whose expansions differ: Mesa evaluates smoothstep as
+// t·(t·(3 − 2t)) and mix as a + t·(b − a), GLM as (t·t)·(3 − 2t) and a·(1 − t) + b·t. Node values
+// then differed by up to 3 ULP, which the z weight, a difference of nodes crowded near 0 and 1,
+// amplified to 8e-6; and near saturated colours c2 reaches ±150 and cancels against c0·λ² + c1·λ,
+// so one ULP of a coefficient (1.5e-5) is ~7e-6 of reflectance. Each alone made llvmpipe differ
+// from the CPU by 3e-5 of reflectance; written out, the two agree bit for bit. In GLSL they are
+// also `precise`, so that no driver fuses them into FMAs or reassociates them (the CPU build
+// does neither).
+// smoothstep(0, 1, t) as GLM evaluates it: t²·(3 − 2t).
+PRISM_INLINE float lutSmoothstep(float t) {
+  float c = clamp(t, 0.0f, 1.0f);
+  PRISM_PRECISE float r = c * c * (3.0f - 2.0f * c);
+  return r;
 }
+
+// mix(a, b, t) as GLM evaluates it: a·(1 − t) + b·t (exact at t = 0 and t = 1).
+PRISM_INLINE vec3 lutMix(IN(vec3) a, IN(vec3) b, float t) {
+  PRISM_PRECISE vec3 r = a * (1.0f - t) + b * t;
+  return r;
+}
+
+PRISM_INLINE float lutScaleOfNode(float t) { return lutSmoothstep(lutSmoothstep(t)); }
 
 // Inverse of y = 3x² − 2x³ on [0, 1]: x = ½ − sin(asin(1 − 2y)/3).
 PRISM_INLINE float smoothstepInverse(float y) {
@@ -32,7 +52,7 @@ PRISM_INLINE float smoothstepInverse(float y) {
 PRISM_INLINE float lutNodeOfScale(float z) { return smoothstepInverse(smoothstepInverse(z)); }
 
 // Ratio axes: node i at smoothstep(i/(res−1)).
-PRISM_INLINE float lutRatioOfNode(float t) { return smoothstep(0.0f, 1.0f, t); }
+PRISM_INLINE float lutRatioOfNode(float t) { return lutSmoothstep(t); }
 PRISM_INLINE float lutNodeOfRatio(float x) { return smoothstepInverse(x); }
 
 struct LutPosition {
@@ -91,8 +111,10 @@ PRISM_INLINE LutCell lutCell(IN(LutPosition) p, int res) {
   float x1 = lutRatioOfNode(float(cell.xi + 1) / last);
   float y0 = lutRatioOfNode(float(cell.yi) / last);
   float y1 = lutRatioOfNode(float(cell.yi + 1) / last);
-  cell.weight = vec3(clamp((p.x - x0) / (x1 - x0), 0.0f, 1.0f), clamp((p.y - y0) / (y1 - y0), 0.0f, 1.0f),
-                     clamp((p.z - z0) / (z1 - z0), 0.0f, 1.0f));
+  PRISM_PRECISE float wx = (p.x - x0) / (x1 - x0);
+  PRISM_PRECISE float wy = (p.y - y0) / (y1 - y0);
+  PRISM_PRECISE float wz = (p.z - z0) / (z1 - z0);
+  cell.weight = vec3(clamp(wx, 0.0f, 1.0f), clamp(wy, 0.0f, 1.0f), clamp(wz, 0.0f, 1.0f));
   return cell;
 }
 
@@ -100,11 +122,11 @@ PRISM_INLINE LutCell lutCell(IN(LutPosition) p, int res) {
 PRISM_INLINE vec3 lutTrilinear(IN(vec3) c000, IN(vec3) c100, IN(vec3) c010, IN(vec3) c110,
                                IN(vec3) c001, IN(vec3) c101, IN(vec3) c011, IN(vec3) c111,
                                IN(vec3) w) {
-  vec3 c00 = mix(c000, c100, w.x);
-  vec3 c10 = mix(c010, c110, w.x);
-  vec3 c01 = mix(c001, c101, w.x);
-  vec3 c11 = mix(c011, c111, w.x);
-  return mix(mix(c00, c10, w.y), mix(c01, c11, w.y), w.z);
+  vec3 c00 = lutMix(c000, c100, w.x);
+  vec3 c10 = lutMix(c010, c110, w.x);
+  vec3 c01 = lutMix(c001, c101, w.x);
+  vec3 c11 = lutMix(c011, c111, w.x);
+  return lutMix(lutMix(c00, c10, w.y), lutMix(c01, c11, w.y), w.z);
 }
 
 // The filtered path's normalised texture coordinate in a res × res × 3·res texture holding

@@ -160,6 +160,17 @@ TEST(Cli, LutAndUpsampleCheckTheirInput) {
   expectOneLineError("upsample --rgb 0.5,0.5", "--rgb");
   expectOneLineError("upsample --rgb 0.5,0.5,0.5 --wavelengths 300:830:5", "--wavelengths");
   expectOneLineError("upsample --rgb 0.5,0.5,0.5 --intent emission", "'emission'");
+  expectOneLineError("upsample --rgb 0.5,0.5,0.5 --method smits", "'smits'");
+}
+
+TEST(Cli, UpsampleBoxMethodGivesTheThreeBands) {
+  Result r = run("upsample --rgb 0.8,0.5,0.2 --method box --wavelengths 450:600:75 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["spectrum"].size(), 3u);
+  EXPECT_FLOAT_EQ(j["spectrum"][0][1].get<float>(), 0.2f);
+  EXPECT_FLOAT_EQ(j["spectrum"][1][1].get<float>(), 0.5f);
+  EXPECT_FLOAT_EQ(j["spectrum"][2][1].get<float>(), 0.8f);
 }
 
 TEST(Cli, LutWritesATableAndUpsampleBuildsItsCache) {

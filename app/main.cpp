@@ -131,6 +131,8 @@ int main(int argc, char** argv) {
   upCmd->add_option("--wavelengths", upWavelengths, "MIN:MAX:STEP in nm (default 360:830:5)");
   upCmd->add_option("--intent", up.intent, "albedo (clamped to [0, 1]) or unbounded (scaled by 2·max)")->capture_default_str();
   upCmd->add_option("--path", up.path, "manual or filtered lookup")->capture_default_str();
+  upCmd->add_option("--method", up.method, "jakob-hanika, or box (the thesis's naive blue/green/red bands)")
+      ->capture_default_str();
   upCmd->add_flag("--json", up.json, "JSON output");
 
   auto* bench = app.add_subcommand("bench", "run Prism's benchmarks (Google Benchmark flags pass through)");

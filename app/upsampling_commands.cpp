@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -37,15 +38,15 @@ void printError(const char* what, const UpsamplingError& e) {
 }  // namespace
 
 void runLut(const LutOptions& o) {
-  colourSpace(o.gamut);  // unknown names fail before any work
+  const std::string gamut = colourSpace(o.gamut).name;  // unknown names fail before any work
   if (o.output.empty()) throw Error("lut: give the output file with -o");
-  ProgressBar bar("lut " + o.gamut + " " + std::to_string(o.resolution) + "³");
+  ProgressBar bar("lut " + gamut + " " + std::to_string(o.resolution) + "³");
   auto start = std::chrono::steady_clock::now();
   RgbToSpectrumTable table = buildRgbToSpectrumTable(
-      {o.gamut, o.resolution, o.threads, [&](std::size_t done, std::size_t total) { bar.update(done, total); }});
+      {gamut, o.resolution, o.threads, [&](std::size_t done, std::size_t total) { bar.update(done, total); }});
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   table.save(o.output);
-  json out = {{"gamut", o.gamut}, {"resolution", o.resolution}, {"file", o.output}, {"buildSeconds", seconds}};
+  json out = {{"gamut", gamut}, {"resolution", o.resolution}, {"file", o.output}, {"buildSeconds", seconds}};
   if (o.report) {
     out["nodes"] = errorJson(nodeError(table, o.threads));
     out["roundTripManual"] = errorJson(roundTripError(table, LookupPath::Manual, 100000, 1, o.threads));
@@ -55,7 +56,7 @@ void runLut(const LutOptions& o) {
     fmt::print("{}\n", out.dump(2));
     return;
   }
-  fmt::print("{}: {} table, {}³ × 3 blocks, built in {:.1f} s\n", o.output, o.gamut, o.resolution, seconds);
+  fmt::print("{}: {} table, {}³ × 3 blocks, built in {:.1f} s\n", o.output, gamut, o.resolution, seconds);
   if (o.report) {
     printError("nodes (no interpolation)", nodeError(table, o.threads));
     printError("round trip, manual", roundTripError(table, LookupPath::Manual, 100000, 1, o.threads));
@@ -72,25 +73,36 @@ void runUpsample(const UpsampleOptions& o) {
     throw Error("--intent: unknown intent '" + o.intent + "' (albedo, unbounded)");
   if (o.path != "manual" && o.path != "filtered")
     throw Error("--path: unknown lookup path '" + o.path + "' (manual, filtered)");
-  colourSpace(o.gamut);
-  ProgressBar bar("building the " + o.gamut + " upsampling table (first use, cached)");
-  RgbToSpectrumTable table = cachedRgbToSpectrumTable(
-      o.gamut, o.resolution, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
+  if (o.method != "jakob-hanika" && o.method != "box")
+    throw Error("--method: unknown method '" + o.method + "' (jakob-hanika, box)");
+  const std::string gamut = colourSpace(o.gamut).name;
   glm::vec3 rgb(static_cast<float>(o.rgb[0]), static_cast<float>(o.rgb[1]), static_cast<float>(o.rgb[2]));
-  glm::vec3 coeffs;
+  glm::vec3 coeffs(0.0f);
   float scale = 1.0f;
-  if (o.intent == "unbounded") {
-    UnboundedUpsampling u = lookupUnbounded(table, rgb);
-    coeffs = u.coeffs, scale = u.scale;
+  Spectrum reflectance;
+  if (o.method == "box") {
+    if (o.intent == "unbounded") {
+      scale = std::max({rgb.x, rgb.y, rgb.z, 0.0f});
+      rgb = scale > 0.0f ? rgb / scale : glm::vec3(0.0f);
+    }
+    reflectance = boxReflectanceSpectrum(rgb);
   } else {
-    coeffs = o.path == "manual" ? table.lookup(rgb) : table.lookupFiltered(rgb);
+    ProgressBar bar("building the " + gamut + " upsampling table (first use, cached)");
+    RgbToSpectrumTable table = cachedRgbToSpectrumTable(
+        gamut, o.resolution, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
+    if (o.intent == "unbounded") {
+      UnboundedUpsampling u = lookupUnbounded(table, rgb);
+      coeffs = u.coeffs, scale = u.scale;
+    } else {
+      coeffs = o.path == "manual" ? table.lookup(rgb) : table.lookupFiltered(rgb);
+    }
+    reflectance = upsampledReflectanceSpectrum(coeffs);
   }
-  Spectrum reflectance = upsampledReflectanceSpectrum(coeffs);
   json spectrum = json::array();
   for (double l = o.wavelengths[0]; l <= o.wavelengths[1] + 1e-9; l += o.wavelengths[2])
     spectrum.push_back({l, scale * reflectance.at(l)});
   if (o.json) {
-    fmt::print("{}\n", json{{"rgb", o.rgb}, {"gamut", o.gamut}, {"intent", o.intent}, {"path", o.path},
+    fmt::print("{}\n", json{{"rgb", o.rgb}, {"gamut", gamut}, {"method", o.method}, {"intent", o.intent}, {"path", o.path},
                             {"coefficients", {coeffs.x, coeffs.y, coeffs.z}}, {"scale", scale},
                             {"spectrum", spectrum}}
                            .dump(2));

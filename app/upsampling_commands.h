@@ -24,6 +24,7 @@ struct UpsampleOptions {
   std::vector<double> wavelengths{360.0, 830.0, 5.0};  // min, max, step in nm
   std::string intent = "albedo";                       // albedo | unbounded
   std::string path = "manual";                         // manual | filtered
+  std::string method = "jakob-hanika";                 // jakob-hanika | box (naive)
   bool json = false;
 };
 void runUpsample(const UpsampleOptions& options);

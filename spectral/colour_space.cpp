@@ -104,10 +104,11 @@ Eigen::Vector3d RgbColourSpace::decode(const Eigen::Vector3d& encoded) const {
 }
 
 const RgbColourSpace& colourSpace(std::string_view name) {
+  if (name == "p3") name = "display-p3";
   for (const RgbColourSpace& s : spaces())
     if (s.name == name) return s;
   throw Error("unknown colour space '" + std::string(name) +
-              "' (known: srgb, display-p3, rec2020, acescg, aces2065-1)");
+              "' (known: srgb, display-p3 or p3, rec2020, acescg, aces2065-1)");
 }
 
 std::vector<std::string> listColourSpaces() {

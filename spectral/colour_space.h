@@ -42,7 +42,7 @@ struct RgbColourSpace {
   Eigen::Vector3d decode(const Eigen::Vector3d& encoded) const;
 };
 
-// Error naming the space when unknown.
+// Error naming the space when unknown; "p3" is accepted for "display-p3".
 const RgbColourSpace& colourSpace(std::string_view name);
 std::vector<std::string> listColourSpaces();
 

@@ -104,6 +104,8 @@ TEST(ColourSpace, ConversionBetweenSpacesAdaptsTheWhite) {
   EXPECT_NEAR(same(0, 2), 0.0433, 1e-4);
 }
 
+TEST(ColourSpace, P3IsDisplayP3) { EXPECT_EQ(&colourSpace("p3"), &colourSpace("display-p3")); }
+
 TEST(ColourSpace, UnknownNamesAreErrors) {
   EXPECT_THROW(colourSpace("adobe-rgb"), Error);
   EXPECT_THROW(adaptationFromName("cat16"), Error);

@@ -7,6 +7,7 @@
 #include "spectral/error.h"
 
 namespace prism::shared {
+#include "box_upsampling.glsl"
 #include "sigmoid.glsl"
 }
 
@@ -111,6 +112,14 @@ namespace prism {
 Spectrum upsampledReflectanceSpectrum(const glm::vec3& coeffs) {
   return Spectrum::fromFunction([&coeffs](double lambdaNm) {
     return static_cast<double>(shared::upsampledReflectance(coeffs, static_cast<float>(lambdaNm)));
+  });
+}
+
+Spectrum boxReflectanceSpectrum(const glm::vec3& rgb) {
+  glm::vec3 albedo;
+  for (int c = 0; c < 3; ++c) albedo[c] = std::isnan(rgb[c]) ? 0.0f : std::clamp(rgb[c], 0.0f, 1.0f);
+  return Spectrum::fromFunction([&albedo](double lambdaNm) {
+    return static_cast<double>(shared::boxReflectance(albedo, static_cast<float>(lambdaNm)));
   });
 }
 

@@ -83,5 +83,8 @@ Spectrum blackbody(double temperatureK);
 // the raw model, and Prism's upsampled reflectance (flat outside [380, 730] nm).
 Spectrum sigmoidSpectrum(const glm::vec3& coeffs);
 Spectrum upsampledReflectanceSpectrum(const glm::vec3& coeffs);
+// The thesis's naive box upsampling (shaders/shared/box_upsampling.glsl) of an albedo, each
+// channel clamped to [0, 1] (NaN read as 0).
+Spectrum boxReflectanceSpectrum(const glm::vec3& rgb);
 
 }  // namespace prism

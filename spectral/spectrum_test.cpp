@@ -69,6 +69,18 @@ TEST(Blackbody, RejectsNonPositiveTemperature) {
   EXPECT_THROW(blackbody(-5.0), Error);
 }
 
+TEST(BoxReflectance, BlueGreenRedBandsWithTheThesisThresholds) {
+  Spectrum s = boxReflectanceSpectrum(glm::vec3(0.8f, 0.5f, 0.2f));
+  EXPECT_FLOAT_EQ(static_cast<float>(s.at(494.0)), 0.2f);
+  EXPECT_FLOAT_EQ(static_cast<float>(s.at(495.0)), 0.5f);
+  EXPECT_FLOAT_EQ(static_cast<float>(s.at(569.0)), 0.5f);
+  EXPECT_FLOAT_EQ(static_cast<float>(s.at(570.0)), 0.8f);
+  Spectrum clamped = boxReflectanceSpectrum(glm::vec3(2.0f, NAN, -1.0f));
+  EXPECT_EQ(clamped.at(700.0), 1.0);
+  EXPECT_EQ(clamped.at(520.0), 0.0);
+  EXPECT_EQ(clamped.at(400.0), 0.0);
+}
+
 TEST(SigmoidSpectrum, HugeArgumentsReachTheLimitsNotAHalf) {
   // x·x overflows past ~1.8e19; S must still be ≈ 1 or ≈ 0 there, not ½.
   EXPECT_EQ(sigmoidSpectrum(glm::vec3(0, 0, 3e19f)).at(500.0), 1.0);

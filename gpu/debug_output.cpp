@@ -85,14 +85,15 @@ DebugSink DebugOutput::setSink(DebugSink sink) {
 
 void GLAPIENTRY DebugOutput::callback(GLenum source, GLenum type, GLuint id, GLenum severity,
                                       GLsizei length, const GLchar* message, const void* self) {
-  DebugMessage m{
-      classify(type, severity),
-      source,
-      type,
-      severity,
-      id,
-      length >= 0 ? std::string(message, static_cast<std::size_t>(length)) : std::string(message)};
-  static_cast<const DebugOutput*>(self)->mSink(m);
+  // Called from inside the driver's C code: nothing may unwind through it.
+  try {
+    DebugMessage m{classify(type, severity), source, type, severity, id,
+                   length >= 0 ? std::string(message, static_cast<std::size_t>(length))
+                               : std::string(message)};
+    static_cast<const DebugOutput*>(self)->mSink(m);
+  } catch (...) {
+    std::fputs("prism: a KHR_debug sink threw; message dropped\n", stderr);
+  }
 }
 
 }  // namespace prism::gpu

@@ -93,6 +93,8 @@ void ParityReport::compare(float gpu, float cpu, const std::string& input, doubl
                         ? static_cast<double>(ulps) / static_cast<double>(mTolerance.ulps)
                         : std::numeric_limits<double>::infinity();
   double used = std::min(usedAbsolute, usedUlps);
+  // A NaN share (e.g. from a NaN bound) must fail, not slip past every comparison.
+  if (std::isnan(used)) used = std::numeric_limits<double>::infinity();
   if (used > mMaxUsed || mWorstInput.empty()) {
     std::ostringstream s;
     s.precision(9);

@@ -204,8 +204,14 @@ HeadlessContext::HeadlessContext(const ContextDesc& desc) : mEgl(std::make_uniqu
 }
 
 HeadlessContext::~HeadlessContext() {
-  makeCurrent();  // the debug callback belongs to this context, which may not be current
-  mDebug.reset();
+  // The debug callback belongs to this context, which may not be current. A destructor must not
+  // throw: when the context cannot be made current (lost, or current on another thread), the
+  // callback is left to die with the context.
+  eglBindAPI(EGL_OPENGL_API);
+  if (eglMakeCurrent(mEgl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, mEgl->context))
+    mDebug.reset();
+  else
+    static_cast<void>(mDebug.release());
 }
 
 void HeadlessContext::makeCurrent() {

@@ -20,13 +20,15 @@ std::size_t channels(GLenum format) {
 }  // namespace
 
 Texture3D::Texture3D(const Texture3DDesc& desc) {
+  if (desc.width <= 0 || desc.height <= 0 || desc.depth <= 0)
+    throw std::invalid_argument("Texture3D: dimensions must be positive");
   std::size_t expected = static_cast<std::size_t>(desc.width) * static_cast<std::size_t>(desc.height) *
                          static_cast<std::size_t>(desc.depth) * channels(desc.format);
   if (desc.texels.size() != expected)
     throw std::invalid_argument("Texture3D: texel count does not match the size");
   glCreateTextures(GL_TEXTURE_3D, 1, &mId);
   glTextureStorage3D(mId, 1, desc.internalFormat, desc.width, desc.height, desc.depth);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);  // texels come from client memory
   glTextureSubImage3D(mId, 0, 0, 0, 0, desc.width, desc.height, desc.depth, desc.format, GL_FLOAT,
                       desc.texels.data());
   glTextureParameteri(mId, GL_TEXTURE_MIN_FILTER, GL_LINEAR);

@@ -101,4 +101,17 @@ Eigen::Vector3d whiteTristimulus(const Observer& obs, const Spectrum& illuminant
   return reflectanceTristimulus(obs, Spectrum::constant(1.0), illuminant);
 }
 
+std::vector<Eigen::Vector3d> reflectanceWeights(const Observer& obs, const Spectrum& illuminant) {
+  // The integral of each 1 nm node i through Spectrum::integral's trapezoid rule is the
+  // integrand's value there times 1 nm, halved at both ends.
+  double norm = (illuminant * obs.curves[1]).integral();
+  std::vector<Eigen::Vector3d> weights;
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    double trapezoid = (i == 0 || i == kSpectrumSamples - 1) ? 0.5 : 1.0;
+    weights.push_back(Eigen::Vector3d(obs.curves[0][i], obs.curves[1][i], obs.curves[2][i]) *
+                      (trapezoid * illuminant[i] / norm));
+  }
+  return weights;
+}
+
 }  // namespace prism

@@ -41,4 +41,8 @@ Eigen::Vector3d reflectanceTristimulus(const Observer& obs, const Spectrum& refl
 // The same observer's white: reflectanceTristimulus of a constant 1.
 Eigen::Vector3d whiteTristimulus(const Observer& obs, const Spectrum& illuminant);
 
+// reflectanceTristimulus as weights per 1 nm node: Σ_i w[i]·R[i] equals it for any reflectance
+// R, so optimisers can evaluate colours without building a Spectrum; Σ_i w[i] is the white.
+std::vector<Eigen::Vector3d> reflectanceWeights(const Observer& obs, const Spectrum& illuminant);
+
 }  // namespace prism

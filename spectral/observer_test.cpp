@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "spectral/error.h"
 
 namespace prism {
@@ -41,6 +43,16 @@ TEST(Observer, CameraOutsideItsMeasuredBandIsZero) {
 }
 
 TEST(Observer, UnknownNameIsAnError) { EXPECT_THROW(observer("cie1932"), Error); }
+
+TEST(Observer, ReflectanceWeightsReproduceTheTristimulus) {
+  const Observer& cie = observer("cie1931");
+  Spectrum light = Spectrum::fromFunction([](double l) { return 50.0 + 0.1 * l; });
+  Spectrum r = Spectrum::fromFunction([](double l) { return 0.5 + 0.4 * std::sin(l / 40.0); });
+  std::vector<Eigen::Vector3d> w = reflectanceWeights(cie, light);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int i = 0; i < kSpectrumSamples; ++i) sum += w[static_cast<std::size_t>(i)] * r[i];
+  EXPECT_TRUE(sum.isApprox(reflectanceTristimulus(cie, r, light), 1e-12));
+}
 
 TEST(Observer, PerfectWhiteHasYOne) {
   Spectrum d65 = Spectrum::constant(1.0);

@@ -28,17 +28,10 @@ struct Sample {
 
 class Colourimeter {
  public:
-  explicit Colourimeter(const RgbColourSpace& gamut) : mGamut(gamut) {
-    const Observer& cie = observer("cie1931");
-    Spectrum light = gamutWhiteIlluminant(gamut);
-    double norm = (light * cie.curves[1]).integral();
+  explicit Colourimeter(const RgbColourSpace& gamut)
+      : mGamut(gamut), mWeights(reflectanceWeights(observer("cie1931"), gamutWhiteIlluminant(gamut))) {
     mWhite = Eigen::Vector3d::Zero();
-    for (int i = 0; i < kSpectrumSamples; ++i) {
-      double trapezoid = (i == 0 || i == kSpectrumSamples - 1) ? 0.5 : 1.0;
-      mWeights.push_back(Eigen::Vector3d(cie.curves[0][i], cie.curves[1][i], cie.curves[2][i]) *
-                         (trapezoid * light[i] / norm));
-      mWhite += mWeights.back();
-    }
+    for (const Eigen::Vector3d& w : mWeights) mWhite += w;
   }
 
   Sample measure(const glm::vec3& targetRgb, const glm::vec3& coeffs) const {

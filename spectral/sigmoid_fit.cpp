@@ -47,15 +47,11 @@ Spectrum gamutWhiteIlluminant(const RgbColourSpace& gamut) {
 
 SigmoidFitter::SigmoidFitter(const RgbColourSpace& gamut, const Spectrum& illuminant,
                              const Observer& obs)
-    : mGamut(gamut) {
-  double norm = (illuminant * obs.curves[1]).integral();
+    : mGamut(gamut), mWeights(reflectanceWeights(obs, illuminant)) {
   for (int i = 0; i < kSpectrumSamples; ++i) {
-    double trapezoid = (i == 0 || i == kSpectrumSamples - 1) ? 0.5 : 1.0;
     double lambdaNm = std::clamp<double>(kLambdaMinNm + i, shared::kReflectanceMinNm,
                                          shared::kReflectanceMaxNm);
     mT.push_back((lambdaNm - kLambdaMinNm) / kSpanNm);
-    Eigen::Vector3d w(obs.curves[0][i], obs.curves[1][i], obs.curves[2][i]);
-    mWeights.push_back(w * (trapezoid * illuminant[i] / norm));
   }
   mWhiteXyz = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& w : mWeights) mWhiteXyz += w;

@@ -8,8 +8,15 @@ find_package(CLI11 REQUIRED)
 find_package(benchmark REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+# OpenEXR 3 for prism::imaging (Debian: libopenexr-dev).
+find_package(OpenEXR 3 REQUIRED CONFIG)
+# tinygltf reads glTF 2.0 for prism::render's scene loader. Debian's libtinygltf-dev ships it as
+# a shared library (built with stb_image and nlohmann json): target TinyGLTF::TinyGLTF.
+find_package(TinyGLTF 2.7 REQUIRED CONFIG)
 # libepoxy loads OpenGL and EGL for prism::gpu (no CMake config of its own).
 pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
+# GLFW opens the viewer's window and its GL context (prism_gpu_window only): target glfw.
+find_package(glfw3 3.3 REQUIRED)
 
 # libcsv (RFC 4180 tokenizer) ships neither a CMake config nor a pkg-config file.
 find_path(CSV_INCLUDE_DIR csv.h REQUIRED)

@@ -3,11 +3,14 @@
 #include <stdexcept>
 #include <utility>
 
+#include "gpu/object_counter.h"
+
 namespace prism::gpu {
 
 Buffer::Buffer(const BufferDesc& desc) : mSizeBytes(desc.sizeBytes) {
   if (desc.sizeBytes == 0) throw std::invalid_argument("prism::gpu::Buffer: size 0");
   glCreateBuffers(1, &mId);
+  countGlObjects(GlObjectKind::Buffer, 1);
   glNamedBufferStorage(mId, static_cast<GLsizeiptr>(desc.sizeBytes), desc.data, desc.storageFlags);
   if (!desc.label.empty())
     glObjectLabel(GL_BUFFER, mId, static_cast<GLsizei>(desc.label.size()), desc.label.data());
@@ -19,8 +22,13 @@ Buffer::Buffer(const BufferDesc& desc) : mSizeBytes(desc.sizeBytes) {
   }
 }
 
-Buffer::~Buffer() {
-  if (mId) glDeleteBuffers(1, &mId);
+Buffer::~Buffer() { release(); }
+
+void Buffer::release() {
+  if (!mId) return;
+  glDeleteBuffers(1, &mId);
+  countGlObjects(GlObjectKind::Buffer, -1);
+  mId = 0;
 }
 
 Buffer::Buffer(Buffer&& other) noexcept
@@ -28,7 +36,7 @@ Buffer::Buffer(Buffer&& other) noexcept
 
 Buffer& Buffer::operator=(Buffer&& other) noexcept {
   if (this != &other) {
-    if (mId) glDeleteBuffers(1, &mId);
+    release();
     mId = std::exchange(other.mId, 0);
     mSizeBytes = std::exchange(other.mSizeBytes, 0);
   }

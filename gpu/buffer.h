@@ -57,6 +57,7 @@ class Buffer {
   void bindBase(GLenum target, GLuint index) const;
 
  private:
+  void release();  // deletes the name, if any
   void checkRange(std::size_t offsetBytes, std::size_t sizeBytes) const;
   std::size_t elementCount(std::size_t elementBytes) const;
 

@@ -23,7 +23,9 @@ namespace prism::gpu {
   X(UniformNotFound, "a uniform name is not an active uniform of the program")                  \
   X(GlDebugError, "KHR_debug: an API error or undefined behaviour reported by the driver")      \
   X(GlDebugWarning, "KHR_debug: a deprecated, non-portable or slow use reported by the driver") \
-  X(GlDebugInfo, "KHR_debug: a notification from the driver or the application")
+  X(GlDebugInfo, "KHR_debug: a notification from the driver or the application")                \
+  X(FramebufferIncomplete, "the attachments do not make a complete framebuffer")                \
+  X(NoOpenGl45, "no window with an OpenGL 4.5 core context could be created through GLFW")
 
 enum class Diagnostic {
 #define PRISM_GPU_DIAGNOSTIC_ENUM(name, meaning) name,

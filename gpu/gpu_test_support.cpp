@@ -18,6 +18,10 @@ std::filesystem::path kernelPath(std::string_view name) {
   return testDirectory() / "kernels" / name;
 }
 
+std::filesystem::path drawShaderPath(std::string_view name) {
+  return testDirectory() / "draw" / name;
+}
+
 std::vector<std::filesystem::path> sharedIncludeDirs() { return {shaderDirectory() / "shared"}; }
 
 Program parityKernel(std::string_view name, std::vector<ShaderDefine> defines) {
@@ -26,6 +30,16 @@ Program parityKernel(std::string_view name, std::vector<ShaderDefine> defines) {
   desc.includeDirs = sharedIncludeDirs();
   desc.defines = std::move(defines);
   desc.label = std::string(name);
+  return Program(desc);
+}
+
+Program drawProgram(std::string_view vertex, std::string_view fragment,
+                    std::vector<ShaderDefine> defines) {
+  ProgramDesc desc;
+  desc.vertex = drawShaderPath(vertex);
+  desc.fragment = drawShaderPath(fragment);
+  desc.defines = std::move(defines);
+  desc.label = std::string(vertex) + " + " + std::string(fragment);
   return Program(desc);
 }
 

@@ -21,12 +21,16 @@
 
 namespace prism::gpu::testing {
 
-std::filesystem::path testDirectory();                    // gpu/tests in the source tree
-std::filesystem::path kernelPath(std::string_view name);  // gpu/tests/kernels/NAME
-std::vector<std::filesystem::path> sharedIncludeDirs();   // {shaderDirectory()/"shared"}
+std::filesystem::path testDirectory();                        // gpu/tests in the source tree
+std::filesystem::path kernelPath(std::string_view name);      // gpu/tests/kernels/NAME
+std::filesystem::path drawShaderPath(std::string_view name);  // gpu/tests/draw/NAME
+std::vector<std::filesystem::path> sharedIncludeDirs();       // {shaderDirectory()/"shared"}
 
 // A compute program from gpu/tests/kernels/NAME, #including shaders/shared through the loader.
 Program parityKernel(std::string_view name, std::vector<ShaderDefine> defines = {});
+// A draw program from gpu/tests/draw/VERTEX and gpu/tests/draw/FRAGMENT.
+Program drawProgram(std::string_view vertex, std::string_view fragment,
+                    std::vector<ShaderDefine> defines = {});
 
 // A context for every test (each test is its own process under ctest). No context is a
 // failure, not a skip: CI has Mesa's llvmpipe. Any GlDebugError message fails the test unless

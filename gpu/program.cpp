@@ -1,8 +1,11 @@
 #include "gpu/program.h"
 
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <utility>
 
 #include "gpu/error.h"
+#include "gpu/object_counter.h"
 
 namespace prism::gpu {
 namespace {
@@ -95,10 +98,16 @@ Program::Program(const ProgramDesc& desc) {
                    files + ": error: link failed" + (first.empty() ? "" : ": " + first), log);
   }
   mLog += log;
+  countGlObjects(GlObjectKind::Program, 1);
 }
 
-Program::~Program() {
-  if (mId) glDeleteProgram(mId);
+Program::~Program() { release(); }
+
+void Program::release() {
+  if (!mId) return;
+  glDeleteProgram(mId);
+  countGlObjects(GlObjectKind::Program, -1);
+  mId = 0;
 }
 
 Program::Program(Program&& other) noexcept
@@ -106,7 +115,7 @@ Program::Program(Program&& other) noexcept
 
 Program& Program::operator=(Program&& other) noexcept {
   if (this != &other) {
-    if (mId) glDeleteProgram(mId);
+    release();
     mId = std::exchange(other.mId, 0);
     mLog = std::move(other.mLog);
   }
@@ -122,6 +131,10 @@ GLint Program::uniformLocation(std::string_view name) const {
   return location;
 }
 
+bool Program::hasUniform(std::string_view name) const {
+  return glGetUniformLocation(mId, std::string(name).c_str()) >= 0;
+}
+
 void Program::setUniform(std::string_view name, GLuint value) const {
   glProgramUniform1ui(mId, uniformLocation(name), value);
 }
@@ -132,6 +145,30 @@ void Program::setUniform(std::string_view name, GLint value) const {
 
 void Program::setUniform(std::string_view name, GLfloat value) const {
   glProgramUniform1f(mId, uniformLocation(name), value);
+}
+
+void Program::setUniform(std::string_view name, const glm::vec2& value) const {
+  glProgramUniform2fv(mId, uniformLocation(name), 1, glm::value_ptr(value));
+}
+
+void Program::setUniform(std::string_view name, const glm::vec3& value) const {
+  glProgramUniform3fv(mId, uniformLocation(name), 1, glm::value_ptr(value));
+}
+
+void Program::setUniform(std::string_view name, const glm::vec4& value) const {
+  glProgramUniform4fv(mId, uniformLocation(name), 1, glm::value_ptr(value));
+}
+
+void Program::setUniform(std::string_view name, const glm::ivec2& value) const {
+  glProgramUniform2iv(mId, uniformLocation(name), 1, glm::value_ptr(value));
+}
+
+void Program::setUniform(std::string_view name, const glm::mat3& value) const {
+  glProgramUniformMatrix3fv(mId, uniformLocation(name), 1, GL_FALSE, glm::value_ptr(value));
+}
+
+void Program::setUniform(std::string_view name, const glm::mat4& value) const {
+  glProgramUniformMatrix4fv(mId, uniformLocation(name), 1, GL_FALSE, glm::value_ptr(value));
 }
 
 std::array<GLuint, 3> Program::workGroupSize() const {

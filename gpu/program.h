@@ -9,6 +9,7 @@
 
 #include <array>
 #include <filesystem>
+#include <glm/fwd.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,14 +46,25 @@ class Program {
   // Throws GpuError(UniformNotFound) for a name that is not an active uniform (misspelt, or
   // optimised away because unused), instead of GL's silent location -1.
   GLint uniformLocation(std::string_view name) const;
+  // Whether `name` is an active uniform: for uniforms that a variant (a #define) may drop.
+  bool hasUniform(std::string_view name) const;
+  // glProgramUniform*, no glUseProgram needed. Matrices are column-major, as glm stores them.
   void setUniform(std::string_view name, GLuint value) const;
   void setUniform(std::string_view name, GLint value) const;
   void setUniform(std::string_view name, GLfloat value) const;
+  void setUniform(std::string_view name, const glm::vec2& value) const;
+  void setUniform(std::string_view name, const glm::vec3& value) const;
+  void setUniform(std::string_view name, const glm::vec4& value) const;
+  void setUniform(std::string_view name, const glm::ivec2& value) const;
+  void setUniform(std::string_view name, const glm::mat3& value) const;
+  void setUniform(std::string_view name, const glm::mat4& value) const;
 
   // local_size_x/y/z of a compute program.
   std::array<GLuint, 3> workGroupSize() const;
 
  private:
+  void release();  // deletes the program, if any
+
   GLuint mId = 0;
   std::string mLog;
 };

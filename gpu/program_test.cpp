@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
@@ -125,6 +126,37 @@ TEST_F(GpuTest, DrawProgramLinksAndUniformsAreCheckedByName) {
   Program moved(std::move(program));
   EXPECT_EQ(program.id(), 0u);  // NOLINT(bugprone-use-after-move)
   EXPECT_TRUE(glIsProgram(moved.id()));
+}
+
+TEST_F(GpuTest, VectorAndMatrixUniformsArriveColumnMajor) {
+  Program program = testing::parityKernel("uniforms.comp");
+  EXPECT_FALSE(program.hasUniform("uOptional"));
+  EXPECT_TRUE(program.hasUniform("uM4"));
+  glm::mat3 m3;
+  glm::mat4 m4;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) {
+      if (c < 3 && r < 3) m3[c][r] = static_cast<float>(10 * c + r);
+      m4[c][r] = static_cast<float>(100 + 10 * c + r);
+    }
+  program.setUniform("uV2", glm::vec2(1.0f, 2.0f));
+  program.setUniform("uV3", glm::vec3(3.0f, 4.0f, 5.0f));
+  program.setUniform("uV4", glm::vec4(6.0f, 7.0f, 8.0f, 9.0f));
+  program.setUniform("uI2", glm::ivec2(-10, 11));
+  program.setUniform("uM3", m3);
+  program.setUniform("uM4", m4);
+  Buffer out({36 * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT, "uniforms"});
+  out.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  runCompute(program, {1, 1, 1});
+  std::vector<float> expected{1, 2, 3, 4, 5, 6, 7, 8, 9, -10, 11};
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) expected.push_back(static_cast<float>(10 * c + r));
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) expected.push_back(static_cast<float>(100 + 10 * c + r));
+  EXPECT_EQ(out.read<float>(), expected);
+
+  Program optional = testing::parityKernel("uniforms.comp", {{"WITH_OPTIONAL", ""}});
+  EXPECT_TRUE(optional.hasUniform("uOptional"));
 }
 
 TEST_F(GpuTest, RunComputeRejectsEmptyAndOversizedDispatches) {

@@ -1,0 +1,172 @@
+#include "imaging/exr_file.h"
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfChromaticities.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
+#include <OpenEXR/ImfStdIO.h>
+#include <OpenEXR/ImfStringAttribute.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "spectral/atomic_file.h"
+#include "spectral/error.h"
+
+namespace prism::imaging {
+namespace {
+
+constexpr const char* kColourAttribute = "prism:colour";
+// The largest finite half (IEEE 754 binary16).
+constexpr float kHalfMax = 65504.0f;
+
+// OpenEXR's convention for CIE XYZ in an RGB file (OpenEXR, "Technical Introduction", §
+// "Chromaticities"): primaries at the corners of the xy triangle, equal-energy white.
+Imf::Chromaticities xyzChromaticities() {
+  return Imf::Chromaticities({1.0f, 0.0f}, {0.0f, 1.0f}, {0.0f, 0.0f}, {1.0f / 3.0f, 1.0f / 3.0f});
+}
+
+bool near(const Imath::V2f& a, const Imath::V2f& b) {
+  // Chromaticities are stored as float; 1e-4 allows for files that wrote 4-digit values.
+  return std::abs(a.x - b.x) < 1e-4f && std::abs(a.y - b.y) < 1e-4f;
+}
+
+bool sameChromaticities(const Imf::Chromaticities& a, const Imf::Chromaticities& b) {
+  return near(a.red, b.red) && near(a.green, b.green) && near(a.blue, b.blue) && near(a.white, b.white);
+}
+
+std::string oneLine(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text;
+}
+
+std::vector<std::string> channelNamesToWrite(const FloatImage& image, const ExrWriteOptions& options) {
+  if (image.channels == 1) return {"Y"};
+  bool xyz = options.names == ExrChannelNames::Xyz ||
+             (options.names == ExrChannelNames::FromColour && options.colour == ColourMeaning::Xyz);
+  std::vector<std::string> names =
+      xyz ? std::vector<std::string>{"X", "Y", "Z"} : std::vector<std::string>{"R", "G", "B"};
+  if (image.channels == 4) names.push_back("A");
+  return names;
+}
+
+}  // namespace
+
+void writeExr(const std::filesystem::path& path, const FloatImage& image, const ExrWriteOptions& options) {
+  PRISM_CHECK(image.channels == 1 || image.channels == 3 || image.channels == 4);
+  PRISM_CHECK(image.pixels.size() == image.pixelCount() * static_cast<std::size_t>(image.channels));
+  if (image.width <= 0 || image.height <= 0)
+    throw Error(path.string() + ": cannot write an empty image (" + std::to_string(image.width) + " × " +
+                std::to_string(image.height) + ") as EXR");
+  bool half = options.precision == ExrPrecision::Half;
+  if (half) {
+    auto outside = std::find_if(image.pixels.begin(), image.pixels.end(),
+                                [](float v) { return std::isfinite(v) && std::abs(v) > kHalfMax; });
+    if (outside != image.pixels.end())
+      throw Error(path.string() + ": value " + std::to_string(*outside) +
+                  " is beyond half precision's 65504; write as float or scale the image");
+  }
+
+  Imf::Header header(image.width, image.height);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  Imf::PixelType fileType = half ? Imf::HALF : Imf::FLOAT;
+  std::vector<std::string> names = channelNamesToWrite(image, options);
+  for (const std::string& name : names) header.channels().insert(name, Imf::Channel(fileType));
+  if (image.channels != 1) {
+    header.insert(kColourAttribute, Imf::StringAttribute(std::string(colourMeaningName(options.colour))));
+    // Imf::Chromaticities() is Rec. 709 primaries with D65, i.e. linear sRGB.
+    if (options.colour == ColourMeaning::LinearSrgb) Imf::addChromaticities(header, Imf::Chromaticities());
+    if (options.colour == ColourMeaning::Xyz) Imf::addChromaticities(header, xyzChromaticities());
+  }
+
+  // OutputFile does not convert pixel types (InputFile does), so half gets its own copy,
+  // rounded to nearest by Imath::half.
+  std::vector<Imath::half> halves;
+  if (half) halves.assign(image.pixels.begin(), image.pixels.end());
+  const std::size_t sampleSize = half ? sizeof(Imath::half) : sizeof(float);
+  const std::size_t xStride = sampleSize * static_cast<std::size_t>(image.channels);
+  const std::size_t yStride = xStride * static_cast<std::size_t>(image.width);
+  Imf::FrameBuffer frame;
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    const void* first = half ? static_cast<const void*>(halves.data() + c) : image.pixels.data() + c;
+    frame.insert(names[c], Imf::Slice::Make(fileType, first, header.dataWindow(), xStride, yStride));
+  }
+  Imf::StdOSStream stream;
+  try {
+    // The file's destructor writes the line offset table, so it must end before str().
+    Imf::OutputFile file(stream, header);
+    file.setFrameBuffer(frame);
+    file.writePixels(image.height);
+  } catch (const std::exception& e) {
+    throw Error(path.string() + ": cannot encode EXR: " + oneLine(e.what()));
+  }
+  writeFileAtomically(path, stream.str());
+}
+
+ExrImage readExr(const std::filesystem::path& path) {
+  try {
+    Imf::InputFile file(path.c_str());
+    const Imf::Header& header = file.header();
+    const Imf::ChannelList& channels = header.channels();
+    auto has = [&](const char* name) { return channels.findChannel(name) != nullptr; };
+
+    std::vector<std::string> names;
+    if (has("R") && has("G") && has("B")) {
+      names = {"R", "G", "B"};
+    } else if (has("X") && has("Y") && has("Z")) {
+      names = {"X", "Y", "Z"};
+    } else if (has("Y") && !has("RY") && !has("BY")) {
+      names = {"Y"};
+    } else {
+      std::string found;
+      for (auto it = channels.begin(); it != channels.end(); ++it)
+        found += (found.empty() ? "" : ", ") + std::string(it.name());
+      throw Error(path.string() + ": no R, G, B or X, Y, Z or lone Y channels (it has: " +
+                  (found.empty() ? "none" : found) + ")");
+    }
+    if (names.size() == 3 && has("A")) names.push_back("A");
+
+    const Imath::Box2i dataWindow = header.dataWindow();
+    const int width = dataWindow.max.x - dataWindow.min.x + 1;
+    const int height = dataWindow.max.y - dataWindow.min.y + 1;
+    ExrImage out;
+    out.image = FloatImage(width, height, static_cast<int>(names.size()));
+    const std::size_t xStride = sizeof(float) * names.size();
+    const std::size_t yStride = xStride * static_cast<std::size_t>(width);
+    Imf::FrameBuffer frame;
+    for (std::size_t c = 0; c < names.size(); ++c)
+      frame.insert(names[c],
+                   Imf::Slice::Make(Imf::FLOAT, out.image.pixels.data() + c, dataWindow, xStride, yStride));
+    file.setFrameBuffer(frame);
+    file.readPixels(dataWindow.min.y, dataWindow.max.y);
+
+    if (const auto* colour = header.findTypedAttribute<Imf::StringAttribute>(kColourAttribute)) {
+      try {
+        out.colour = colourMeaningFromName(colour->value());
+      } catch (const Error& e) {
+        throw Error(path.string() + ": " + kColourAttribute + ": " + e.what());
+      }
+    } else if (Imf::hasChromaticities(header)) {
+      const Imf::Chromaticities& c = Imf::chromaticities(header);
+      out.colour = sameChromaticities(c, Imf::Chromaticities()) ? ColourMeaning::LinearSrgb
+                   : sameChromaticities(c, xyzChromaticities()) ? ColourMeaning::Xyz
+                                                                : ColourMeaning::OtherRgb;
+    } else {
+      out.colour = names[0] == "X" ? ColourMeaning::Xyz : ColourMeaning::LinearSrgb;
+    }
+    return out;
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error(path.string() + ": cannot read EXR: " + oneLine(e.what()));
+  }
+}
+
+}  // namespace prism::imaging

@@ -1,0 +1,48 @@
+// OpenEXR files for linear images: renders, references and ΔE maps. Each file records what its
+// channels mean in the string attribute "prism:colour" (float_image.h), and also in the standard
+// "chromaticities" attribute where that can say it (linear sRGB; XYZ as OpenEXR's convention of
+// primaries (1,0), (0,1), (0,0) and white (1/3, 1/3)), so other tools read the colours right.
+#pragma once
+
+#include <filesystem>
+
+#include "imaging/float_image.h"
+
+namespace prism::imaging {
+
+enum class ExrPrecision {
+  Float,  // 32-bit: exact, any range
+  Half,   // 16-bit: relative precision 2⁻¹¹, |values| ≤ 65504 (larger is an Error, not an ∞)
+};
+
+enum class ExrChannelNames {
+  FromColour,  // X, Y, Z for ColourMeaning::Xyz, R, G, B otherwise
+  Rgb,         // R, G, B (+ A)
+  Xyz,         // X, Y, Z (+ A)
+};
+
+struct ExrWriteOptions {
+  ColourMeaning colour = ColourMeaning::LinearSrgb;
+  ExrPrecision precision = ExrPrecision::Float;
+  ExrChannelNames names = ExrChannelNames::FromColour;  // a 1-channel image is always "Y"
+};
+
+// ZIP-compressed scan lines, written to memory and then to `path` atomically: a reader never
+// sees half a file, and a failure leaves nothing behind (spectral/atomic_file.h). Creates
+// missing folders. Error naming the path when it fails.
+void writeExr(const std::filesystem::path& path, const FloatImage& image,
+              const ExrWriteOptions& options = {});
+
+struct ExrImage {
+  FloatImage image;
+  ColourMeaning colour = ColourMeaning::LinearSrgb;
+};
+
+// Reads R, G, B (+ A), else X, Y, Z (+ A), else Y alone as one channel, in any pixel type, as
+// float. The meaning is "prism:colour" when present, else told by the chromaticities (Rec. 709
+// with D65 → linear-srgb; the XYZ convention → xyz; anything else → other-rgb), else xyz for X,
+// Y, Z channels, else linear-srgb (OpenEXR's default for files without chromaticities).
+// Error naming the file, on one line, when it cannot.
+ExrImage readExr(const std::filesystem::path& path);
+
+}  // namespace prism::imaging

@@ -1,0 +1,155 @@
+#include "imaging/exr_file.h"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "spectral/error.h"
+
+namespace prism::imaging {
+namespace {
+
+// Each test writes in its own folder, per process so that builds testing side by side (release
+// and asan) do not share it, and removed afterwards.
+class Exr : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    mRoot = std::filesystem::path(::testing::TempDir()) / ("prism_exr_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(mRoot);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    if (std::filesystem::exists(mRoot / "failed" / "locked", ec))
+      std::filesystem::permissions(mRoot / "failed" / "locked", std::filesystem::perms::owner_all, ec);
+    std::filesystem::remove_all(mRoot, ec);
+  }
+  std::filesystem::path freshDir(const std::string& name) const {
+    std::filesystem::create_directories(mRoot / name);
+    return mRoot / name;
+  }
+
+  std::filesystem::path mRoot;
+};
+
+std::vector<std::string> listing(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// Values over many octaves, both signs, distinct per pixel and channel.
+FloatImage ramp(int width, int height, int channels) {
+  FloatImage image(width, height, channels);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    double t = static_cast<double>(i) / static_cast<double>(image.pixels.size());
+    image.pixels[i] =
+        static_cast<float>((i % 7 == 3 ? -1.0 : 1.0) * std::exp2(-10.0 + 20.0 * t) * (1.0 + 0.37 * t));
+  }
+  return image;
+}
+
+TEST_F(Exr, FloatRoundTripIsExact) {
+  std::filesystem::path p = freshDir("float") / "xyz.exr";
+  FloatImage image = ramp(7, 5, 3);
+  writeExr(p, image, {.colour = ColourMeaning::Xyz});
+  ExrImage back = readExr(p);
+  EXPECT_EQ(back.colour, ColourMeaning::Xyz);
+  ASSERT_EQ(back.image.width, 7);
+  ASSERT_EQ(back.image.height, 5);
+  ASSERT_EQ(back.image.channels, 3);
+  EXPECT_EQ(back.image.pixels, image.pixels);
+  EXPECT_EQ(back.image.at(6, 4, 2), image.at(6, 4, 2));  // row 0 stays at the top
+}
+
+TEST_F(Exr, HalfRoundTripIsWithinHalfPrecision) {
+  std::filesystem::path p = freshDir("half") / "rgba.exr";
+  FloatImage image = ramp(9, 4, 4);
+  writeExr(p, image, {.colour = ColourMeaning::LinearSrgb, .precision = ExrPrecision::Half});
+  ExrImage back = readExr(p);
+  EXPECT_EQ(back.colour, ColourMeaning::LinearSrgb);
+  ASSERT_EQ(back.image.channels, 4);
+  ASSERT_EQ(back.image.pixels.size(), image.pixels.size());
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    // Round to nearest with an 11-bit significand: relative error at most 2⁻¹¹ (all values here
+    // are normal halves, ≥ 2⁻¹⁰ > 2⁻¹⁴).
+    float v = image.pixels[i];
+    EXPECT_NEAR(back.image.pixels[i], v, std::abs(v) * std::exp2(-11.0f)) << "sample " << i;
+  }
+}
+
+TEST_F(Exr, ChannelNamesAndMeaningsRoundTrip) {
+  std::filesystem::path dir = freshDir("meanings");
+  FloatImage image = ramp(3, 2, 3);
+  for (ColourMeaning colour : {ColourMeaning::LinearSrgb, ColourMeaning::Xyz, ColourMeaning::CameraRgb}) {
+    std::filesystem::path p = dir / (std::string(colourMeaningName(colour)) + ".exr");
+    writeExr(p, image, {.colour = colour, .names = ExrChannelNames::Rgb});
+    EXPECT_EQ(readExr(p).colour, colour) << colourMeaningName(colour);
+  }
+  FloatImage map = ramp(4, 4, 1);
+  writeExr(dir / "map.exr", map);
+  ExrImage back = readExr(dir / "map.exr");
+  EXPECT_EQ(back.image.channels, 1);
+  EXPECT_EQ(back.image.pixels, map.pixels);
+}
+
+TEST_F(Exr, AtomicWriteLeavesOnlyTheFile) {
+  std::filesystem::path dir = freshDir("atomic");
+  writeExr(dir / "a.exr", ramp(2, 2, 3));
+  writeExr(dir / "a.exr", ramp(3, 3, 3));  // replaces it
+  EXPECT_EQ(listing(dir), std::vector<std::string>{"a.exr"});
+  EXPECT_EQ(readExr(dir / "a.exr").image.width, 3);
+}
+
+TEST_F(Exr, FailedWritesLeaveNothingBehind) {
+  std::filesystem::path dir = freshDir("failed");
+  // The target is a folder: the temporary file is written, the rename fails, and it must go.
+  std::filesystem::create_directories(dir / "taken.exr" / "inside");
+  try {
+    writeExr(dir / "taken.exr", ramp(2, 2, 3));
+    FAIL() << "expected an Error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("taken.exr"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(listing(dir), std::vector<std::string>{"taken.exr"});
+
+  // Half overflow is refused before any file is made.
+  FloatImage big(1, 1, 3, 1e6f);
+  EXPECT_THROW(writeExr(dir / "big.exr", big, {.precision = ExrPrecision::Half}), Error);
+  EXPECT_EQ(listing(dir), std::vector<std::string>{"taken.exr"});
+
+  EXPECT_THROW(writeExr("/proc/prism_cannot_write.exr", ramp(1, 1, 3)), Error);
+
+  // Permissions mean nothing to root, so only an unprivileged run can test a read-only folder.
+  if (::geteuid() != 0) {
+    std::filesystem::path locked = dir / "locked";
+    std::filesystem::create_directories(locked);
+    ::chmod(locked.c_str(), 0555);
+    EXPECT_THROW(writeExr(locked / "x.exr", ramp(1, 1, 3)), Error);
+    EXPECT_TRUE(listing(locked).empty());
+    ::chmod(locked.c_str(), 0755);
+  }
+}
+
+TEST_F(Exr, ReadErrorsNameTheFileOnOneLine) {
+  std::filesystem::path dir = freshDir("errors");
+  for (std::filesystem::path p : {dir / "missing.exr", dir / "text.exr"}) {
+    if (p.filename() == "text.exr") std::ofstream(p) << "not an EXR\n";
+    try {
+      readExr(p);
+      FAIL() << "expected an Error for " << p;
+    } catch (const Error& e) {
+      std::string message = e.what();
+      EXPECT_EQ(message.rfind(p.string() + ": ", 0), 0u) << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace prism::imaging

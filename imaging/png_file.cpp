@@ -1,0 +1,118 @@
+#include "imaging/png_file.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+
+#include "spectral/atomic_file.h"
+#include "spectral/error.h"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wconversion"
+#pragma GCC diagnostic ignored "-Wsign-conversion"
+#pragma GCC diagnostic ignored "-Wshadow"
+#include <stb/stb_easy_font.h>
+#pragma GCC diagnostic pop
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+namespace prism::imaging {
+
+PngImage::PngImage(int width, int height, Rgb8 background)
+    : mWidth(width),
+      mHeight(height),
+      mRgba(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
+  PRISM_CHECK(width >= 0 && height >= 0);
+  fillRect(0, 0, width, height, background);
+}
+
+Rgb8 PngImage::pixel(int x, int y) const {
+  std::size_t i = index(x, y);
+  return {mRgba[i], mRgba[i + 1], mRgba[i + 2]};
+}
+
+void PngImage::setPixel(int x, int y, Rgb8 colour, std::uint8_t alpha) {
+  std::size_t i = index(x, y);
+  mRgba[i] = colour.r;
+  mRgba[i + 1] = colour.g;
+  mRgba[i + 2] = colour.b;
+  mRgba[i + 3] = alpha;
+}
+
+void PngImage::fillRect(int x, int y, int w, int h, Rgb8 colour) {
+  int x0 = std::max(x, 0), y0 = std::max(y, 0);
+  int x1 = std::min(x + w, mWidth), y1 = std::min(y + h, mHeight);
+  for (int py = y0; py < y1; ++py)
+    for (int px = x0; px < x1; ++px) setPixel(px, py, colour);
+}
+
+void PngImage::drawText(int x, int y, std::string_view text, Rgb8 colour, int scale) {
+  // stb_easy_font emits axis-aligned quads (4 vertices of x, y, z, rgba) in font pixels.
+  struct Vertex {
+    float x, y, z;
+    unsigned char rgba[4];
+  };
+  std::string copy(text);
+  std::vector<Vertex> quads(copy.size() * 80);
+  int count = stb_easy_font_print(0.0f, 0.0f, copy.data(), nullptr, quads.data(),
+                                  static_cast<int>(quads.size() * sizeof(Vertex)));
+  for (int q = 0; q < count; ++q) {
+    const Vertex* v = &quads[static_cast<std::size_t>(q) * 4];
+    int qx = static_cast<int>(v[0].x), qy = static_cast<int>(v[0].y);
+    int qw = static_cast<int>(v[2].x) - qx, qh = static_cast<int>(v[2].y) - qy;
+    fillRect(x + qx * scale, y + qy * scale, qw * scale, qh * scale, colour);
+  }
+}
+
+int textWidth(std::string_view text, int scale) {
+  std::string copy(text);
+  return stb_easy_font_width(copy.data()) * scale;
+}
+
+void PngImage::write(const std::filesystem::path& path) const {
+  bool opaque = true;
+  for (std::size_t i = 3; i < mRgba.size() && opaque; i += 4) opaque = mRgba[i] == 255;
+  std::vector<std::uint8_t> rgb;
+  const std::uint8_t* data = mRgba.data();
+  int components = 4;
+  if (opaque) {
+    rgb.reserve(mRgba.size() / 4 * 3);
+    for (std::size_t i = 0; i < mRgba.size(); i += 4) rgb.insert(rgb.end(), &mRgba[i], &mRgba[i + 3]);
+    data = rgb.data();
+    components = 3;
+  }
+  std::string bytes;
+  auto append = [](void* context, void* chunk, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(chunk),
+                                               static_cast<std::size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &bytes, mWidth, mHeight, components, data, mWidth * components))
+    throw Error(path.string() + ": PNG encoding failed");
+  writeFileAtomically(path, bytes);
+}
+
+PngImage readPng8(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path.string() + ": cannot open: " + std::strerror(errno));
+  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw Error(path.string() + ": cannot read: " + std::strerror(errno));
+  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw Error(path.string() + ": too large for stb_image (over 2 GiB)");
+  int width = 0, height = 0, fileChannels = 0;
+  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                                          static_cast<int>(bytes.size()), &width, &height, &fileChannels, 4);
+  if (!pixels) throw Error(path.string() + ": not a readable image: " + stbi_failure_reason());
+  PngImage image;
+  image.mWidth = width;
+  image.mHeight = height;
+  image.mRgba.assign(pixels, pixels + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+  stbi_image_free(pixels);
+  return image;
+}
+
+}  // namespace prism::imaging

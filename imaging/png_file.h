@@ -1,0 +1,59 @@
+// 8-bit sRGB-encoded images as PNG files: reading (stb_image), writing atomically
+// (stb_image_write), and simple drawing for charts, legends and galleries (rectangles, and
+// ASCII text in the stb_easy_font face). The stb implementations come compiled in Debian's
+// libstb, so no file here defines STB_*_IMPLEMENTATION.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string_view>
+#include <vector>
+
+namespace prism::imaging {
+
+struct Rgb8 {
+  std::uint8_t r = 0, g = 0, b = 0;
+  friend bool operator==(Rgb8, Rgb8) = default;
+};
+
+// RGBA, 4 bytes a pixel, row 0 at the top; alpha is straight (not premultiplied).
+class PngImage {
+ public:
+  PngImage() = default;  // 0 × 0
+  // Opaque, filled with `background`.
+  PngImage(int width, int height, Rgb8 background);
+
+  int width() const { return mWidth; }
+  int height() const { return mHeight; }
+  Rgb8 pixel(int x, int y) const;
+  std::uint8_t alpha(int x, int y) const { return mRgba[index(x, y) + 3]; }
+  void setPixel(int x, int y, Rgb8 colour, std::uint8_t alpha = 255);
+  // Fills [x, x+w) × [y, y+h), clipped to the image, opaque.
+  void fillRect(int x, int y, int w, int h, Rgb8 colour);
+  // ASCII text in the stb_easy_font face, each font pixel drawn as scale × scale; (x, y) is the
+  // top left of the first character.
+  void drawText(int x, int y, std::string_view text, Rgb8 colour, int scale);
+  // RGB when every pixel is opaque, RGBA otherwise. Error naming the path when it fails; a
+  // failed write leaves no file behind (spectral/atomic_file.h).
+  void write(const std::filesystem::path& path) const;
+
+  const std::vector<std::uint8_t>& rgba() const { return mRgba; }
+
+ private:
+  friend PngImage readPng8(const std::filesystem::path& path);
+  std::size_t index(int x, int y) const {
+    return (static_cast<std::size_t>(y) * static_cast<std::size_t>(mWidth) + static_cast<std::size_t>(x)) * 4;
+  }
+
+  int mWidth = 0, mHeight = 0;
+  std::vector<std::uint8_t> mRgba;
+};
+
+// Width in pixels of `text` drawn by PngImage::drawText at `scale` (its widest line).
+int textWidth(std::string_view text, int scale);
+
+// Any image stb_image reads (PNG of any bit depth, also JPEG, BMP, TGA), as 8-bit RGBA; grey
+// and RGB files come back opaque. Error naming the file when it is missing or not an image.
+PngImage readPng8(const std::filesystem::path& path);
+
+}  // namespace prism::imaging

@@ -1,0 +1,122 @@
+#include "render/gltf_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "spectral/error.h"
+
+namespace prism::render {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kFixtures = PRISM_SCENE_TEST_DIR;
+
+// Float positions through a few matrix products: a few ulps of the coordinates (≈ 10).
+constexpr float kTolerance = 1e-5f;
+
+void expectNear(const glm::vec3& a, const glm::vec3& b, float tolerance = kTolerance) {
+  EXPECT_NEAR(a.x, b.x, tolerance);
+  EXPECT_NEAR(a.y, b.y, tolerance);
+  EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+// quad.gltf: node "parent" translates by (1, 2, 3); its child rotates 90° about +y and scales
+// by 2; the mesh is a unit quad in the xy plane facing +z (uv (0, 0) at its top-left).
+TEST(GltfLoader, NodeTransformsApplyToPositionsNormalsAndTangents) {
+  Scene scene;
+  appendGltf(kFixtures / "quad.gltf", kFixtures, {}, scene);
+  ASSERT_EQ(scene.meshes.size(), 2u);
+  const Mesh& quad = scene.meshes[0];
+  ASSERT_EQ(quad.vertices.size(), 4u);
+  EXPECT_EQ(quad.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
+  // (0.5, −0.5, 0) ·2 → (1, −1, 0), R_y(90°) → (0, −1, −1), + (1, 2, 3) → (1, 1, 2).
+  expectNear(quad.vertices[1].position, {1.0f, 1.0f, 2.0f});
+  expectNear(quad.vertices[3].position, {1.0f, 3.0f, 4.0f});
+  for (const Vertex& v : quad.vertices) {
+    expectNear(v.normal, {1.0f, 0.0f, 0.0f});  // +z turned by R_y(90°)
+    // Computed tangents: along +u, which runs along +x in the model, −z in the world; the
+    // bitangent cross(n, t)·w along −v (image up), +y in the model and the world.
+    expectNear(glm::vec3(v.tangent), {0.0f, 0.0f, -1.0f});
+    EXPECT_EQ(v.tangent.w, 1.0f);
+  }
+  EXPECT_EQ(quad.vertices[3].uv, glm::vec2(0.0f, 0.0f));
+}
+
+TEST(GltfLoader, PlacementAppliesAfterTheNodeTransforms) {
+  Scene scene;
+  GltfPlacement placement;
+  placement.transform = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 10.0f)), glm::vec3(-1.0f, 1.0f, 1.0f));
+  appendGltf(kFixtures / "quad.gltf", kFixtures, placement, scene);
+  const Mesh& quad = scene.meshes[0];
+  expectNear(quad.vertices[1].position, {-1.0f, 1.0f, 12.0f});
+  // A mirror: the winding is reversed so that the faces still look toward the normal.
+  EXPECT_EQ(quad.indices, (std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2}));
+  expectNear(quad.vertices[0].normal, {-1.0f, 0.0f, 0.0f});
+  EXPECT_EQ(quad.vertices[0].tangent.w, -1.0f);
+  const Vertex &a = quad.vertices[0], &b = quad.vertices[2], &c = quad.vertices[1];
+  EXPECT_GT(glm::dot(glm::cross(b.position - a.position, c.position - a.position), a.normal), 0.0f);
+}
+
+TEST(GltfLoader, MissingNormalsAreFlatAndMissingMaterialIsTheDefault) {
+  Scene scene;
+  appendGltf(kFixtures / "quad.gltf", kFixtures, {}, scene);
+  const Mesh& tri = scene.meshes[1];  // POSITION only, unsigned-byte indices, no material
+  ASSERT_EQ(tri.vertices.size(), 3u);
+  for (const Vertex& v : tri.vertices) expectNear(v.normal, {1.0f, 0.0f, 0.0f});
+  ASSERT_EQ(scene.materials.size(), 2u);
+  EXPECT_EQ(tri.material, 1);
+  EXPECT_EQ(scene.materials[1].name, "quad.gltf/default");
+  EXPECT_EQ(scene.materials[1].metallic, 1.0f);
+  EXPECT_EQ(scene.materials[1].roughness, 1.0f);
+}
+
+TEST(GltfLoader, MaterialFactorsAndTextures) {
+  Scene scene;
+  scene.textures.resize(1);  // indices are offset past what the scene already holds
+  appendGltf(kFixtures / "quad.gltf", kFixtures, {}, scene);
+  const Material& m = scene.materials[0];
+  EXPECT_EQ(m.name, "quad.gltf/tiles");
+  EXPECT_EQ(m.baseColour, glm::vec3(0.5f, 0.25f, 1.0f));
+  EXPECT_EQ(m.metallic, 0.25f);
+  EXPECT_EQ(m.roughness, 0.75f);
+  EXPECT_EQ(m.baseColourTexture, 1);
+  EXPECT_EQ(m.normalTexture, 2);  // the same image, linear
+  EXPECT_EQ(m.metallicRoughnessTexture, -1);
+  ASSERT_EQ(scene.textures.size(), 3u);
+  const Image& image = scene.textures[1];
+  EXPECT_TRUE(image.srgb);
+  EXPECT_FALSE(scene.textures[2].srgb);
+  ASSERT_EQ(image.width, 2);
+  ASSERT_EQ(image.height, 2);
+  // checker.png: red, green / blue, white, row 0 at the top.
+  EXPECT_EQ(image.rgba, (std::vector<std::uint8_t>{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255}));
+}
+
+TEST(GltfLoader, BinaryGltfWithMatrixNode) {
+  Scene scene;
+  scene.materials.resize(3);
+  appendGltf(kFixtures / "triangle.glb", kFixtures, {glm::mat4(1.0f), 2}, scene);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  EXPECT_EQ(scene.meshes[0].material, 2);
+  EXPECT_EQ(scene.materials.size(), 3u);  // overridden: none added
+  ASSERT_EQ(scene.meshes[0].vertices.size(), 3u);
+  expectNear(scene.meshes[0].vertices[1].position, {6.0f, 0.0f, 0.0f});  // matrix translates by 5 in x
+  expectNear(scene.meshes[0].vertices[1].normal, {0.0f, 0.0f, 1.0f});
+}
+
+TEST(GltfLoader, DecodeImageRefusesWhatIsNotPngOrJpeg) {
+  std::vector<std::uint8_t> gif = {'G', 'I', 'F', '8', '9', 'a'};
+  try {
+    decodeImage(gif, true, "x.gif");
+    ADD_FAILURE() << "no Error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "not a PNG or JPEG image (only PNG and JPEG are supported)");
+  }
+}
+
+}  // namespace
+}  // namespace prism::render

@@ -1,0 +1,116 @@
+// A scene as the renderer and the reference consume it: a camera, lights with spectral power
+// distributions and physical intensities, materials, triangle meshes in world space and the
+// textures they sample. Plain CPU data, no OpenGL: loaded and validated by scene_loader.h,
+// uploaded by the renderer, traced by the reference.
+//
+// Units. Every light's SPD is normalised photometrically, 683 lm/W · ∫ S(λ) ȳ(λ) dλ = 1, so
+// `intensity` carries the physical amount: illuminance in lux for a directional light (on a
+// surface facing it), luminous intensity in candela for point and spot lights. Rendered XYZ is
+// then absolute: Y is luminance in cd/m², and the camera's exposure (EV100) maps it to display.
+// Colours are linear RGB in the scene's colour space (sRGB primaries unless stated).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "spectral/spectrum.h"
+
+namespace prism::render {
+
+struct Camera {
+  glm::vec3 position{0.0f, 1.0f, 5.0f};
+  glm::vec3 target{0.0f, 1.0f, 0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float verticalFovDeg = 45.0f;
+  float nearPlane = 0.05f;
+  float farPlane = 200.0f;
+  float ev100 = 0.0f;  // exposure value at ISO 100: display white = 1.2 · 2^ev100 cd/m²
+};
+
+enum class LightType { Directional, Point, Spot };
+
+struct Light {
+  LightType type = LightType::Directional;
+  glm::vec3 position{0.0f};                     // point, spot
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};       // directional, spot: the way the light travels (unit)
+  float innerConeDeg = 30.0f;                   // spot: full intensity inside this half-angle
+  float outerConeDeg = 40.0f;                   // spot: zero outside this half-angle
+  Spectrum spd;                                 // photometrically normalised (see above)
+  std::string spdLabel;                         // what the file said, e.g. "D65", "blackbody:2700"
+  float intensity = 1.0f;                       // lux (directional) or candela (point, spot)
+  bool castsShadows = true;                     // directional and spot only
+};
+
+// Spectral complex index of refraction of a conductor, relative to air.
+struct ConductorIor {
+  std::string name;  // e.g. "Au"
+  Spectrum n;
+  Spectrum k;
+};
+
+struct Material {
+  std::string name;
+  glm::vec3 baseColour{0.8f};  // linear RGB albedo in [0, 1] (multiplies the texture)
+  float metallic = 0.0f;       // [0, 1]: F0 = mix(0.04, base colour, metallic) (UE4)
+  float roughness = 0.5f;      // perceptual roughness in [0, 1]: α = roughness²
+  bool lambertian = false;     // diffuse lobe only (albedo/π): the thesis's test spheres
+  // Optional measured spectral reflectance: replaces the upsampled base colour in spectral
+  // modes (its RGB under the colour space's white is used in RGB mode).
+  std::optional<Spectrum> reflectance;
+  // Optional conductor: specular-only, Fresnel from n and k per wavelength. Never upsampled.
+  std::optional<ConductorIor> conductor;
+  int baseColourTexture = -1;         // index into Scene::textures, sRGB-encoded
+  int metallicRoughnessTexture = -1;  // glTF: metallic in B, roughness in G, linear
+  int normalTexture = -1;             // tangent-space normal map, linear
+};
+
+// An 8-bit RGBA image as decoded from a file (row 0 at the top). `srgb` says whether the RGB
+// channels are sRGB-encoded colour (decoded with the sRGB transfer function when sampled).
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;
+  bool srgb = false;
+  std::string source;  // file it came from, for messages
+};
+
+struct Vertex {
+  glm::vec3 position{0.0f};
+  glm::vec3 normal{0.0f, 1.0f, 0.0f};
+  glm::vec2 uv{0.0f};
+  glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // xyz tangent, w handedness (glTF convention)
+};
+
+// Triangles in world space (transforms are applied at load time).
+struct Mesh {
+  std::string name;
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;  // three per triangle
+  int material = 0;                    // index into Scene::materials
+};
+
+struct Scene {
+  std::filesystem::path file;      // the scene file it was loaded from
+  std::string colourSpace = "srgb";  // of every RGB value in the scene (spectral/colour_space.h)
+  Camera camera;
+  std::vector<Light> lights;
+  std::vector<Material> materials;
+  std::vector<Mesh> meshes;
+  std::vector<Image> textures;
+  glm::vec3 background{0.0f};  // linear RGB radiance-like colour where no geometry is, as a light colour
+  float backgroundLuminance = 0.0f;  // cd/m² of a white background
+};
+
+// Axis-aligned bounds of all mesh vertices (min, max); both zero for an empty scene.
+struct Bounds {
+  glm::vec3 min{0.0f};
+  glm::vec3 max{0.0f};
+};
+Bounds sceneBounds(const Scene& scene);
+
+}  // namespace prism::render

@@ -1,0 +1,439 @@
+#include "render/scene_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "render/conductors.h"
+#include "render/gltf_loader.h"
+#include "render/procedural_mesh.h"
+#include "render/scene_schema.h"
+#include "spectral/colour_space.h"
+#include "spectral/csv.h"
+#include "spectral/error.h"
+#include "spectral/illuminant.h"
+#include "spectral/observer.h"
+#include "spectral/sigmoid_fit.h"
+
+namespace prism::render {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using schema::Node;
+using schema::Range;
+
+// The maximum luminous efficacy of radiation, lm/W, as the photometric normalisation uses it
+// (CIE 1931 ȳ peaks at 555 nm; the SI's 683 lm/W is defined at 540 THz ≈ 555.016 nm, and the
+// difference, 683.002 at the ȳ peak, is below the tabulation's precision).
+constexpr double kKm = 683.0;
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+// A user's two-column spectrum (header, wavelength_nm and value), each value in
+// [0, maxValue], with the place of the first that is not: "FILE:LINE:2: …".
+TabulatedSpectrum readUserSpectrum(const fs::path& path, double maxValue, Extrapolation extrapolation) {
+  CsvTable csv = CsvTable::read(path);
+  if (csv.header().size() != 2)
+    throw Error(csv.path() + ":1: a spectrum file has two columns (wavelength in nm, value), found " +
+                std::to_string(csv.header().size()));
+  std::vector<double> lambdas, values;
+  std::vector<int> lines;
+  for (const CsvRow& row : csv.rows()) {
+    lambdas.push_back(csv.number(row, 0));
+    double v = csv.number(row, 1);
+    if (v < 0.0 || v > maxValue)
+      throw Error(csv.path() + ":" + std::to_string(row.line) + ":2: value " + row.fields[1] +
+                  (std::isfinite(maxValue) ? " is outside [0, " + schema::describe(maxValue) + "]"
+                                           : " is negative"));
+    values.push_back(v);
+    lines.push_back(row.line);
+  }
+  checkIncreasingWavelengths(csv.path(), lambdas, lines);
+  return TabulatedSpectrum(std::move(lambdas), std::move(values), extrapolation);
+}
+
+// pbrt-v4's RGBIlluminantSpectrum (src/pbrt/util/spectrum.h; Jakob & Hanika 2019 §5): the
+// colour's reflectance at half its largest channel, lit by the colour space's white; only the
+// chromaticity matters here, the photometric normalisation sets the level.
+Spectrum rgbLightSpectrum(const glm::vec3& rgb, const RgbColourSpace& space) {
+  float m = std::max({rgb.r, rgb.g, rgb.b});
+  Eigen::Vector3d albedo(rgb.r / (2.0 * m), rgb.g / (2.0 * m), rgb.b / (2.0 * m));
+  Spectrum white = gamutWhiteIlluminant(space);
+  SigmoidFitter fitter(space, white, observer("cie1931"));
+  return white * upsampledReflectanceSpectrum(fitter.fit(albedo).coeffs);
+}
+
+class SceneParser {
+ public:
+  SceneParser(const fs::path& file, const schema::Document& document)
+      : mFolder(file.parent_path().empty() ? fs::path(".") : file.parent_path()), mDocument(document) {
+    mScene.file = file;
+  }
+
+  Scene parse(const json& root) {
+    Node top(root, "", mDocument);
+    top.expectObject({"$schema", "description", "colour_space", "camera", "lights", "materials",
+                      "objects", "background"});
+    for (const char* key : {"$schema", "description"})
+      if (auto n = top.optionalChild(key); n && !n->json().is_string())
+        n->fail("expected a string, got " + schema::describe(n->json()));
+    if (auto n = top.optionalChild("colour_space")) {
+      try {
+        mScene.colourSpace = colourSpace(n->string()).name;
+      } catch (const Error& e) {
+        n->fail(e.what());
+      }
+    }
+    mScene.camera = camera(top.child("camera"));
+    if (auto materials = top.optionalChild("materials")) {
+      for (const std::string& name : materials->keys()) {
+        mMaterialIndex[name] = static_cast<int>(mScene.materials.size());
+        mScene.materials.push_back(material(materials->child(name), name));
+      }
+    }
+    if (auto lights = top.optionalChild("lights"))
+      for (std::size_t i = 0; i < lights->arraySize(); ++i) mScene.lights.push_back(light(lights->element(i)));
+    Node objects = top.child("objects");
+    for (std::size_t i = 0; i < objects.arraySize(); ++i) object(objects.element(i));
+    if (auto bg = top.optionalChild("background")) {
+      bg->expectObject({"colour", "luminance"});
+      mScene.background = bg->vec3("colour", glm::vec3(1.0f), Range::atLeast(0.0));
+      mScene.backgroundLuminance = bg->child("luminance").numberF(Range::atLeast(0.0));
+    }
+    return std::move(mScene);
+  }
+
+ private:
+  // A file named by a string node: inside the scene's folder, existing.
+  fs::path file(const Node& node) const {
+    std::string relative = node.string();
+    try {
+      return schema::confinedFile(mFolder, mFolder, relative);
+    } catch (const Error& e) {
+      node.fail(e.what());
+    }
+  }
+
+  Camera camera(const Node& n) const {
+    n.expectObject({"position", "target", "up", "fov_deg", "near", "far", "ev100"});
+    Camera c;
+    c.position = n.vec3("position", c.position);
+    c.target = n.vec3("target", c.target);
+    c.up = n.vec3("up", c.up);
+    c.verticalFovDeg = n.numberF("fov_deg", c.verticalFovDeg, Range::open(0.0, 180.0));
+    c.nearPlane = n.numberF("near", c.nearPlane, Range::above(0.0));
+    c.farPlane = n.numberF("far", c.farPlane, Range::above(c.nearPlane));
+    if (!n.has("far") && !(c.farPlane > c.nearPlane))
+      n.child("near").fail("expected a number < far (" + schema::describe(c.farPlane) + ")");
+    c.ev100 = n.numberF("ev100", c.ev100);
+    glm::vec3 view = c.target - c.position;
+    if (!(glm::length(view) > 0.0f)) (n.has("target") ? n.child("target") : n).fail("target equals position");
+    if (!(glm::length(glm::cross(view, c.up)) > 1e-6f * glm::length(view) * glm::length(c.up)))
+      (n.has("up") ? n.child("up") : n).fail("up must be non-zero and not parallel to target − position");
+    return c;
+  }
+
+  // A light's spectrum, normalised photometrically; `label` says what the file said.
+  Spectrum spd(const Node& n, std::string& label) const {
+    Spectrum s;
+    if (n.json().is_string()) {
+      label = n.string();
+      try {
+        s = illuminant(label);
+      } catch (const Error& e) {
+        n.fail(e.what());
+      }
+    } else {
+      n.expectObject({"csv", "rgb"});
+      if (n.json().size() != 1) n.fail("expected exactly one of the keys csv, rgb");
+      if (auto csv = n.optionalChild("csv")) {
+        fs::path path = file(*csv);
+        label = "csv:" + csv->string();
+        try {
+          // Emitters: zero outside the measured band (spectral/spectrum.h).
+          s = readUserSpectrum(path, std::numeric_limits<double>::infinity(), Extrapolation::Zero).toDense();
+        } catch (const Error& e) {
+          csv->fail(e.what());
+        }
+      } else {
+        Node rgbNode = n.child("rgb");
+        glm::vec3 rgb = rgbNode.vec3(Range::atLeast(0.0));
+        if (!(std::max({rgb.r, rgb.g, rgb.b}) > 0.0f)) rgbNode.fail("expected a colour that is not black");
+        label = "rgb:" + schema::describe(rgbNode.json());
+        s = rgbLightSpectrum(rgb, colourSpace(mScene.colourSpace));
+      }
+    }
+    for (int i = 0; i < kSpectrumSamples; ++i)
+      if (!(s[i] >= 0.0) || !std::isfinite(s[i])) n.fail("the spectrum has negative or non-finite values");
+    double luminous = luminousIntegral(s);
+    if (!(luminous > 0.0) || !std::isfinite(luminous))
+      n.fail("the spectrum has no luminous power (683 lm/W · ∫ S ȳ dλ = 0 over 360–830 nm)");
+    return s * (1.0 / luminous);
+  }
+
+  Light light(const Node& n) const {
+    if (!n.json().is_object()) n.fail("expected an object, got " + schema::describe(n.json()));
+    Node typeNode = n.child("type");
+    std::string type = typeNode.string();
+    Light l;
+    if (type == "directional") {
+      n.expectObject({"type", "direction", "spd", "intensity", "shadows"});
+      l.type = LightType::Directional;
+    } else if (type == "point") {
+      n.expectObject({"type", "position", "spd", "intensity", "shadows"});
+      l.type = LightType::Point;
+    } else if (type == "spot") {
+      n.expectObject({"type", "position", "direction", "inner_cone_deg", "outer_cone_deg", "spd",
+                      "intensity", "shadows"});
+      l.type = LightType::Spot;
+    } else {
+      typeNode.fail("unknown light type '" + type + "' (directional, point, spot)");
+    }
+    if (l.type != LightType::Directional) l.position = n.child("position").vec3();
+    if (l.type != LightType::Point) {
+      Node d = n.child("direction");
+      glm::vec3 direction = d.vec3();
+      if (!(glm::length(direction) > 0.0f)) d.fail("expected a non-zero direction");
+      l.direction = glm::normalize(direction);
+    }
+    if (l.type == LightType::Spot) {
+      l.innerConeDeg = n.numberF("inner_cone_deg", l.innerConeDeg, Range::open(0.0, 90.0));
+      l.outerConeDeg = n.numberF("outer_cone_deg", l.outerConeDeg, Range::open(0.0, 90.0));
+      if (l.innerConeDeg > l.outerConeDeg)
+        (n.has("inner_cone_deg") ? n.child("inner_cone_deg") : n)
+            .fail("inner_cone_deg (" + schema::describe(l.innerConeDeg) + ") exceeds outer_cone_deg (" +
+                  schema::describe(l.outerConeDeg) + ")");
+    }
+    l.spd = spd(n.child("spd"), l.spdLabel);
+    l.intensity = n.child("intensity").numberF(Range::above(0.0));
+    l.castsShadows = n.boolean("shadows", true);
+    return l;
+  }
+
+  int texture(const Node& n, bool srgb) {
+    fs::path path = file(n);
+    std::error_code ec;
+    std::string key = fs::weakly_canonical(path, ec).string() + (srgb ? "#srgb" : "#linear");
+    if (auto it = mTextureIndex.find(key); it != mTextureIndex.end()) return it->second;
+    Image image;
+    std::vector<unsigned char> bytes;
+    try {
+      bytes = schema::readBinaryFile(path);
+    } catch (const Error& e) {
+      n.fail(e.what());
+    }
+    try {
+      image = decodeImage(bytes, srgb, path.string());
+    } catch (const Error& e) {
+      n.fail(path.string() + ": " + e.what());
+    }
+    mScene.textures.push_back(std::move(image));
+    int index = static_cast<int>(mScene.textures.size()) - 1;
+    mTextureIndex[key] = index;
+    return index;
+  }
+
+  Material material(const Node& n, const std::string& name) {
+    n.expectObject({"base_colour", "base_colour_srgb", "metallic", "roughness", "lambertian",
+                    "reflectance", "conductor", "base_colour_texture", "metallic_roughness_texture", "normal_texture"});
+    Material m;
+    m.name = name;
+    if (n.has("base_colour") && n.has("base_colour_srgb"))
+      n.child("base_colour_srgb").fail("give base_colour or base_colour_srgb, not both");
+    if (auto c = n.optionalChild("base_colour")) m.baseColour = c->vec3(Range::closed(0.0, 1.0));
+    if (auto c = n.optionalChild("base_colour_srgb")) {
+      // IEC 61966-2-1 decoding (spectral/colour_space.h, the one implementation), then from
+      // sRGB primaries to the scene's (Bradford-adapted where the whites differ).
+      glm::vec3 encoded = c->vec3(Range::closed(0.0, 1.0));
+      const RgbColourSpace& srgb = colourSpace("srgb");
+      Eigen::Vector3d linear = srgb.decode(Eigen::Vector3d(encoded.r, encoded.g, encoded.b));
+      linear = rgbToRgb(srgb, colourSpace(mScene.colourSpace)) * linear;
+      for (int i = 0; i < 3; ++i) m.baseColour[i] = static_cast<float>(std::clamp(linear[i], 0.0, 1.0));
+    }
+    m.metallic = n.numberF("metallic", m.metallic, Range::closed(0.0, 1.0));
+    m.roughness = n.numberF("roughness", m.roughness, Range::closed(0.0, 1.0));
+    m.lambertian = n.boolean("lambertian", false);
+    if (auto r = n.optionalChild("reflectance")) {
+      r->expectObject({"csv"});
+      Node csv = r->child("csv");
+      fs::path path = file(csv);
+      try {
+        // Reflectances: the last measured value is the best estimate of the next.
+        m.reflectance = readUserSpectrum(path, 1.0, Extrapolation::Clamp).toDense();
+      } catch (const Error& e) {
+        csv.fail(e.what());
+      }
+    }
+    if (auto c = n.optionalChild("conductor")) {
+      try {
+        m.conductor = conductorIor(c->string());
+      } catch (const Error& e) {
+        c->fail(e.what());
+      }
+    }
+    if (auto t = n.optionalChild("base_colour_texture")) m.baseColourTexture = texture(*t, true);
+    if (auto t = n.optionalChild("metallic_roughness_texture")) m.metallicRoughnessTexture = texture(*t, false);
+    if (auto t = n.optionalChild("normal_texture")) m.normalTexture = texture(*t, false);
+    return m;
+  }
+
+  int materialReference(const Node& n) const {
+    std::string name = n.string();
+    auto it = mMaterialIndex.find(name);
+    if (it == mMaterialIndex.end()) {
+      std::vector<std::string> names;
+      for (const auto& [known, index] : mMaterialIndex) names.push_back(known);
+      n.fail("unknown material '" + name + "' (materials: " + (names.empty() ? "none" : joined(names)) + ")");
+    }
+    return it->second;
+  }
+
+  glm::mat4 transform(const Node& n) const {
+    n.expectObject({"translation", "rotation_deg", "scale"});
+    glm::vec3 scale(1.0f);
+    if (auto s = n.optionalChild("scale")) {
+      scale = s->json().is_number() ? glm::vec3(s->numberF()) : s->vec3();
+      if (scale.x == 0.0f || scale.y == 0.0f || scale.z == 0.0f) s->fail("a scale must not be zero");
+    }
+    return trsMatrix(n.vec3("translation", glm::vec3(0.0f)), n.vec3("rotation_deg", glm::vec3(0.0f)), scale);
+  }
+
+  void object(const Node& o) {
+    if (!o.json().is_object()) o.fail("expected an object, got " + schema::describe(o.json()));
+    std::vector<std::string> kinds;
+    for (const char* k : {"sphere", "plane", "box", "gltf"})
+      if (o.has(k)) kinds.push_back(k);
+    if (kinds.size() != 1)
+      o.fail(kinds.empty() ? "expected one of the keys sphere, plane, box, gltf"
+                           : "expected only one of the keys sphere, plane, box, gltf, got " + joined(kinds));
+    const std::string& kind = kinds[0];
+    std::string name = o.has("name") ? o.child("name").string() : o.pointer();
+
+    if (kind == "gltf") {
+      o.expectObject({"gltf", "transform", "material", "name"});
+      Node g = o.child("gltf");
+      fs::path path = file(g);
+      GltfPlacement placement;
+      if (auto t = o.optionalChild("transform")) placement.transform = transform(*t);
+      if (auto m = o.optionalChild("material")) placement.materialOverride = materialReference(*m);
+      try {
+        appendGltf(path, mFolder, placement, mScene);
+      } catch (const Error& e) {
+        g.fail(e.what());
+      }
+      return;
+    }
+
+    o.expectObject({kind, "material", "name"});
+    Node shape = o.child(kind);
+    Mesh mesh;
+    if (kind == "sphere") {
+      shape.expectObject({"centre", "radius", "segments"});
+      mesh = makeSphere(shape.child("centre").vec3(), shape.child("radius").numberF(Range::above(0.0)),
+                        shape.has("segments") ? shape.child("segments").integer(Range::closed(3, 4096)) : 64);
+    } else if (kind == "plane") {
+      shape.expectObject({"centre", "normal", "size"});
+      Node normal = shape.child("normal");
+      glm::vec3 nv = normal.vec3();
+      if (!(glm::length(nv) > 0.0f)) normal.fail("expected a non-zero normal");
+      mesh = makePlane(shape.child("centre").vec3(), nv, shape.child("size").vec2(Range::above(0.0)));
+    } else {
+      shape.expectObject({"centre", "size", "rotation_deg"});
+      mesh = makeBox(shape.child("centre").vec3(), shape.child("size").vec3(Range::above(0.0)),
+                     shape.vec3("rotation_deg", glm::vec3(0.0f)));
+    }
+    mesh.name = name;
+    mesh.material = materialReference(o.child("material"));
+    mScene.meshes.push_back(std::move(mesh));
+  }
+
+  fs::path mFolder;
+  const schema::Document& mDocument;
+  Scene mScene;
+  std::map<std::string, int> mMaterialIndex;
+  std::map<std::string, int> mTextureIndex;
+};
+
+// Applies one "PATH=VALUE" override to the parsed document (scene_loader.h).
+void applyOverride(json& root, const std::string& set, schema::Document& document) {
+  auto failAt = [&](const std::string& pointer, const std::string& what) {
+    throw Error(document.name + ": " + (pointer.empty() ? "/" : pointer) + ": --set " + set + ": " + what);
+  };
+  std::size_t eq = set.find('=');
+  if (eq == std::string::npos || eq == 0) failAt("", "expected PATH=VALUE, e.g. camera.ev100=2");
+  std::string path = set.substr(0, eq), text = set.substr(eq + 1);
+  json value = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (value.is_discarded()) value = text;
+
+  std::vector<std::string> segments;
+  for (std::size_t start = 0;;) {
+    std::size_t dot = path.find('.', start);
+    segments.push_back(path.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
+    if (segments.back().empty()) failAt("", "empty step in the path '" + path + "'");
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+
+  json* at = &root;
+  std::string pointer;
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    const std::string& step = segments[s];
+    bool last = s + 1 == segments.size();
+    if (at->is_object()) {
+      std::string child = pointer + "/" + schema::pointerToken(step);
+      if (!at->contains(step)) {
+        if (!last) {
+          std::vector<std::string> keys;
+          for (const auto& item : at->items()) keys.push_back(item.key());
+          failAt(child, "no such key (here: " + (keys.empty() ? std::string("none") : joined(keys)) + ")");
+        }
+        (*at)[step] = value;
+        document.addedByOverride.insert(child);
+        return;
+      }
+      at = &(*at)[step];
+      pointer = child;
+    } else if (at->is_array()) {
+      bool digits = std::all_of(step.begin(), step.end(), [](char c) { return c >= '0' && c <= '9'; });
+      if (!digits || step.size() > 9 || std::stoul(step) >= at->size())
+        failAt(pointer + "/" + step, "no element " + step + " (the array has " + std::to_string(at->size()) + ")");
+      at = &(*at)[std::stoul(step)];
+      pointer += "/" + step;
+    } else {
+      failAt(pointer, "cannot look up '" + step + "' in " + schema::describe(*at));
+    }
+  }
+  *at = value;
+}
+
+}  // namespace
+
+double luminousIntegral(const Spectrum& spd) {
+  return kKm * observer("cie1931").integrate(spd)[1];
+}
+
+Scene loadScene(const fs::path& file) { return loadScene(file, {}); }
+
+Scene loadScene(const fs::path& file, const std::vector<std::string>& sets) {
+  schema::Document document{file.string(), {}};
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) throw Error(document.name + ": scene file not found");
+  std::vector<unsigned char> bytes = schema::readBinaryFile(file);
+  json root = schema::parseJson(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+                                document.name);
+  for (const std::string& set : sets) applyOverride(root, set, document);
+  return SceneParser(file, document).parse(root);
+}
+
+}  // namespace prism::render

@@ -1,0 +1,35 @@
+// Reading a scene file (JSON, documented in docs/scene-format.md) into a Scene.
+//
+// Everything a file names is checked before it is used, and every failure is one prism::Error
+// line, "<scene file>: <JSON pointer>: <what>", for example
+//   scenes/x.json: /lights/0/intensity: expected a number > 0, got "bright"
+// (malformed JSON: "<scene file>:<line>:<column>: malformed JSON: <what>"). Errors inside a
+// file the scene names follow the pointer, e.g. "… /objects/2/gltf: model.gltf: /meshes/0/…".
+// Files the scene names (spectra, textures, glTF models and their buffers and images) must be
+// relative paths without ".." that stay inside the scene file's folder, symbolic links resolved.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "render/scene.h"
+#include "spectral/spectrum.h"
+
+namespace prism::render {
+
+Scene loadScene(const std::filesystem::path& file);
+
+// With overrides, as the CLI's `--set PATH=VALUE`, applied in order to the parsed JSON before
+// it is checked: PATH is dot-separated object keys and array indices ("camera.ev100",
+// "lights.0.intensity", "materials.red.roughness"); VALUE is parsed as JSON, and taken as a
+// string when it is not JSON ("lights.0.spd=blackbody:2700"). Every step but the last must
+// exist; the last may add a key to an object (checked like any other key). Error
+// "<scene file>: <pointer>: --set <PATH=VALUE>: <what>" for a path that leads nowhere.
+Scene loadScene(const std::filesystem::path& file, const std::vector<std::string>& sets);
+
+// 683 lm/W · ∫ S(λ) ȳ(λ) dλ over 360–830 nm (CIE 1931 ȳ, trapezoid at 1 nm): the luminous
+// quantity of one unit of S. Every light's SPD is divided by it on load, so that it is 1.
+double luminousIntegral(const Spectrum& spd);
+
+}  // namespace prism::render

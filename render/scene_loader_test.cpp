@@ -1,0 +1,419 @@
+#include "render/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "spectral/colour_space.h"
+#include "spectral/error.h"
+#include "spectral/observer.h"
+
+namespace prism::render {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kFixtures = PRISM_SCENE_TEST_DIR;
+
+// The message of the Error that f throws; fails the test when none is thrown.
+template <typename F>
+std::string errorOf(F f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no prism::Error thrown";
+  return {};
+}
+
+::testing::AssertionResult startsWith(const std::string& text, const std::string& prefix) {
+  if (text.rfind(prefix, 0) == 0) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "\n  message: " << text << "\n  expected to start with: " << prefix;
+}
+
+::testing::AssertionResult contains(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "\n  message: " << text << "\n  expected to contain: " << part;
+}
+
+// A scene folder of its own per test, with files written into it.
+class SceneFolder : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    mDir = fs::path(::testing::TempDir()) / "prism_scene_test" / info->name() / "scene";
+    fs::remove_all(mDir.parent_path());
+    fs::create_directories(mDir);
+  }
+  fs::path write(const std::string& name, const std::string& text) {
+    fs::path p = mDir / name;
+    fs::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+  }
+  void copyFixture(const std::string& name) { fs::copy_file(kFixtures / name, mDir / name); }
+  // A minimal valid scene with `materials`, `lights` and `objects` spliced in.
+  fs::path scene(const std::string& materials, const std::string& lights, const std::string& objects) {
+    return write("scene.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]},
+  "materials": {)" + materials + R"(},
+  "lights": [)" + lights + R"(],
+  "objects": [)" + objects + "]}\n");
+  }
+  fs::path sceneWithLight(const std::string& light) { return scene(R"("m": {})", light, ""); }
+  fs::path sceneWithMaterial(const std::string& material) {
+    return scene(R"("m": )" + material, "", R"({"sphere": {"centre": [0, 0, 0], "radius": 1}, "material": "m"})");
+  }
+  fs::path mDir;
+};
+
+TEST(SceneLoader, ValidSceneLoadsWithExpectedCountsAndValues) {
+  Scene s = loadScene(kFixtures / "basic.json");
+  EXPECT_EQ(s.file, kFixtures / "basic.json");
+  EXPECT_EQ(s.colourSpace, "srgb");
+  EXPECT_EQ(s.camera.position, glm::vec3(0.0f, 1.5f, 6.0f));
+  EXPECT_EQ(s.camera.target, glm::vec3(0.0f, 0.5f, 0.0f));
+  EXPECT_FLOAT_EQ(s.camera.verticalFovDeg, 40.0f);
+  EXPECT_FLOAT_EQ(s.camera.nearPlane, 0.1f);
+  EXPECT_FLOAT_EQ(s.camera.farPlane, 100.0f);
+  EXPECT_FLOAT_EQ(s.camera.ev100, 12.0f);
+
+  ASSERT_EQ(s.lights.size(), 5u);
+  EXPECT_EQ(s.lights[0].type, LightType::Directional);
+  EXPECT_EQ(s.lights[0].direction, glm::vec3(0.0f, -1.0f, 0.0f));  // normalised on load
+  EXPECT_FLOAT_EQ(s.lights[0].intensity, 10000.0f);
+  EXPECT_TRUE(s.lights[0].castsShadows);
+  EXPECT_EQ(s.lights[0].spdLabel, "D65");
+  EXPECT_EQ(s.lights[1].type, LightType::Point);
+  EXPECT_EQ(s.lights[1].position, glm::vec3(1.0f, 3.0f, 1.0f));
+  EXPECT_FALSE(s.lights[1].castsShadows);
+  EXPECT_EQ(s.lights[1].spdLabel, "blackbody:2700");
+  EXPECT_EQ(s.lights[2].type, LightType::Spot);
+  EXPECT_FLOAT_EQ(s.lights[2].innerConeDeg, 20.0f);
+  EXPECT_FLOAT_EQ(s.lights[2].outerConeDeg, 30.0f);
+  EXPECT_NEAR(glm::length(s.lights[2].direction), 1.0f, 1e-6f);
+  EXPECT_EQ(s.lights[2].spdLabel, "csv:lamp.csv");
+  EXPECT_EQ(s.lights[3].spdLabel, "led:450:20");
+  EXPECT_EQ(s.lights[4].spdLabel, "rgb:[1.0,0.5,0.25]");
+
+  // Five scene materials (sorted by name), then quad.gltf's "tiles" and triangle.glb has none
+  // of its own (it is overridden), but quad.gltf's second primitive takes the glTF default.
+  ASSERT_EQ(s.materials.size(), 7u);
+  EXPECT_EQ(s.materials[0].name, "gold");
+  ASSERT_TRUE(s.materials[0].conductor.has_value());
+  EXPECT_EQ(s.materials[0].conductor->name, "Au");
+  EXPECT_EQ(s.materials[1].name, "grey_srgb");
+  EXPECT_EQ(s.materials[2].name, "paint");
+  ASSERT_TRUE(s.materials[2].reflectance.has_value());
+  EXPECT_DOUBLE_EQ(s.materials[2].reflectance->at(600.0), 0.6);
+  EXPECT_DOUBLE_EQ(s.materials[2].reflectance->at(380.0), 0.05);  // clamped below 400 nm
+  EXPECT_EQ(s.materials[3].name, "red");
+  EXPECT_EQ(s.materials[3].baseColour, glm::vec3(0.8f, 0.1f, 0.1f));
+  EXPECT_FLOAT_EQ(s.materials[3].roughness, 0.4f);
+  EXPECT_FLOAT_EQ(s.materials[3].metallic, 0.0f);
+  EXPECT_EQ(s.materials[4].name, "tiled");
+  EXPECT_EQ(s.materials[5].name, "quad.gltf/tiles");
+  EXPECT_EQ(s.materials[6].name, "quad.gltf/default");
+
+  // sphere, plane, box, quad.gltf's two primitives, triangle.glb.
+  ASSERT_EQ(s.meshes.size(), 6u);
+  EXPECT_EQ(s.meshes[0].name, "ball");
+  EXPECT_EQ(s.meshes[0].material, 3);
+  EXPECT_EQ(s.meshes[1].name, "/objects/1");
+  EXPECT_EQ(s.meshes[1].material, 1);
+  EXPECT_EQ(s.meshes[2].material, 0);
+  EXPECT_EQ(s.meshes[3].material, 5);
+  EXPECT_EQ(s.meshes[4].material, 6);
+  EXPECT_EQ(s.meshes[5].material, 2);  // the object's material override
+  EXPECT_EQ(s.meshes[2].vertices.size(), 24u);
+  EXPECT_EQ(s.meshes[2].indices.size(), 36u);
+
+  // checker.png twice from the scene (sRGB and linear: not decoded twice per use), and
+  // quad.gltf's image twice (base colour sRGB, normal map linear).
+  ASSERT_EQ(s.textures.size(), 4u);
+  EXPECT_EQ(s.materials[4].baseColourTexture, 0);
+  EXPECT_EQ(s.materials[4].normalTexture, 1);
+  EXPECT_TRUE(s.textures[0].srgb);
+  EXPECT_FALSE(s.textures[1].srgb);
+  EXPECT_EQ(s.textures[0].width, 2);
+  EXPECT_EQ(s.textures[0].rgba.size(), 16u);
+
+  EXPECT_EQ(s.background, glm::vec3(0.5f, 0.7f, 1.0f));
+  EXPECT_FLOAT_EQ(s.backgroundLuminance, 2000.0f);
+
+  Bounds b = sceneBounds(s);
+  EXPECT_FLOAT_EQ(b.min.x, -5.0f);  // the plane
+  EXPECT_FLOAT_EQ(b.max.z, 14.0f);  // quad.gltf's (−0.5, 0.5, 0) → (1, 3, 4), moved 10 along z
+}
+
+TEST(SceneLoader, SrgbBaseColourIsDecodedExactly) {
+  Scene s = loadScene(kFixtures / "basic.json");
+  // IEC 61966-2-1: ((0.5 + 0.055) / 1.055)^2.4 = 0.214041.
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.materials[1].baseColour[c], 0.214041f, 1e-5f);
+}
+
+TEST(SceneLoader, EveryLightIsPhotometricallyNormalised) {
+  Scene s = loadScene(kFixtures / "basic.json");
+  const Observer& cie = observer("cie1931");
+  for (const Light& l : s.lights) {
+    // 683 lm/W · ∫ S ȳ dλ = 1: only rounding of the 471-term trapezoid sum remains.
+    EXPECT_NEAR(683.0 * cie.integrate(l.spd)[1], 1.0, 1e-6) << l.spdLabel;
+    EXPECT_NEAR(luminousIntegral(l.spd), 1.0, 1e-6) << l.spdLabel;
+  }
+}
+
+TEST(SceneLoader, RgbLightHasTheColoursChromaticity) {
+  Scene s = loadScene(kFixtures / "basic.json");
+  const Light& l = s.lights[4];
+  Eigen::Vector3d xyz = observer("cie1931").integrate(l.spd);
+  Eigen::Vector3d rgb = colourSpace("srgb").xyzToRgb * xyz;
+  // The sigmoid fit of (1, 0.5, 0.25)/2 is within a fraction of a ΔE76: 2 % of each ratio.
+  EXPECT_NEAR(rgb[1] / rgb[0], 0.5, 0.01);
+  EXPECT_NEAR(rgb[2] / rgb[0], 0.25, 0.005);
+}
+
+TEST(SceneLoader, OverridesApplyBeforeValidation) {
+  Scene s = loadScene(kFixtures / "basic.json",
+                      {"camera.ev100=2", "lights.0.intensity=5", "materials.red.roughness=0.3",
+                       "lights.1.spd=blackbody:3000", "materials.red.metallic=1",
+                       "camera.position=[0, 2, 8]"});
+  EXPECT_EQ(s.camera.position, glm::vec3(0.0f, 2.0f, 8.0f));
+  EXPECT_FLOAT_EQ(s.camera.ev100, 2.0f);
+  EXPECT_FLOAT_EQ(s.lights[0].intensity, 5.0f);
+  EXPECT_FLOAT_EQ(s.materials[3].roughness, 0.3f);
+  EXPECT_FLOAT_EQ(s.materials[3].metallic, 1.0f);  // a key the file did not have
+  EXPECT_EQ(s.lights[1].spdLabel, "blackbody:3000");
+}
+
+TEST(SceneLoader, OverrideOfAnUnknownPathFails) {
+  fs::path f = kFixtures / "basic.json";
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"lights.9.intensity=5"}); }),
+            f.string() + ": /lights/9: --set lights.9.intensity=5: no element 9 (the array has 5)");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"materials.blue.roughness=0.3"}); }),
+            f.string() + ": /materials/blue: --set materials.blue.roughness=0.3: no such key "
+                         "(here: gold, grey_srgb, paint, red, tiled)");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"camera.evv100=2"}); }), f.string() + ": /camera/evv100: unknown key (set on the command line) (allowed: "));
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"camera.ev100.x=2"}); }),
+            f.string() + ": /camera/ev100: --set camera.ev100.x=2: cannot look up 'x' in 12");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"camera"}); }),
+            f.string() + ": /: --set camera: expected PATH=VALUE, e.g. camera.ev100=2");
+  // A value that is valid JSON but the wrong type is caught by validation.
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"lights.0.intensity=bright"}); }),
+            f.string() + ": /lights/0/intensity: expected a number > 0, got \"bright\"");
+}
+
+TEST_F(SceneFolder, MalformedJsonReportsLineAndColumn) {
+  fs::path f = write("scene.json", "{\n  \"camera\": {,\n}\n");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f); }), f.string() + ":2:14: malformed JSON: syntax error"));
+  fs::path g = write("truncated.json", "{\"camera\": {}");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(g); }), g.string() + ":1:14: malformed JSON: "));
+}
+
+TEST_F(SceneFolder, DuplicateKeysAreErrors) {
+  fs::path f = sceneWithMaterial(R"({"roughness": 0.2, "roughness": 0.9})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }), f.string() + ": /materials/m/roughness: duplicate key");
+}
+
+TEST_F(SceneFolder, UnknownKeyListsTheAllowedOnes) {
+  fs::path f = sceneWithMaterial(R"({"base_color": [1, 0, 0]})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /materials/m/base_color: unknown key (allowed: base_colour, base_colour_srgb, "
+                         "metallic, roughness, lambertian, reflectance, conductor, base_colour_texture, "
+                         "metallic_roughness_texture, normal_texture)");
+}
+
+TEST_F(SceneFolder, WrongTypesAndRangesNameThePlace) {
+  fs::path f = sceneWithLight(R"({"type": "point", "position": [0, 1, 0], "spd": "D65", "intensity": "bright"})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /lights/0/intensity: expected a number > 0, got \"bright\"");
+  f = sceneWithLight(R"({"type": "point", "position": [0, 1], "spd": "D65", "intensity": 1})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /lights/0/position: expected an array of 3 numbers, got [0,1]");
+  f = sceneWithLight(R"({"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0], "inner_cone_deg": 50,
+                         "outer_cone_deg": 40, "spd": "D65", "intensity": 1})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /lights/0/inner_cone_deg: inner_cone_deg (50.0) exceeds outer_cone_deg (40.0)");
+  f = sceneWithLight(R"({"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0], "outer_cone_deg": 90,
+                         "spd": "D65", "intensity": 1})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /lights/0/outer_cone_deg: expected a number in (0, 90), got 90");
+  f = sceneWithLight(R"({"type": "directional", "direction": [0, 0, 0], "spd": "D65", "intensity": 1})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }), f.string() + ": /lights/0/direction: expected a non-zero direction");
+  f = sceneWithLight(R"({"type": "area", "spd": "D65", "intensity": 1})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /lights/0/type: unknown light type 'area' (directional, point, spot)");
+  f = sceneWithLight(R"({"type": "point", "position": [0, 1, 0], "spd": "D66", "intensity": 1})");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f); }),
+              f.string() + ": /lights/0/spd: unknown illuminant 'D66'"));
+  f = sceneWithLight(R"({"type": "point", "position": [0, 1, 0], "intensity": 1})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }), f.string() + ": /lights/0: missing required key 'spd'");
+  f = sceneWithMaterial(R"({"roughness": 1.5})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /materials/m/roughness: expected a number in [0, 1], got 1.5");
+  f = sceneWithMaterial(R"({"metallic": true})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /materials/m/metallic: expected a number in [0, 1], got true");
+}
+
+TEST_F(SceneFolder, ObjectsMustNameAKnownMaterialAndOneShape) {
+  fs::path f = scene(R"("a": {}, "b": {})", "", R"({"sphere": {"centre": [0, 0, 0], "radius": 1}, "material": "c"})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }), f.string() + ": /objects/0/material: unknown material 'c' (materials: a, b)");
+  f = scene(R"("a": {})", "", R"({"sphere": {"centre": [0, 0, 0], "radius": 1}, "box": {}, "material": "a"})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /objects/0: expected only one of the keys sphere, plane, box, gltf, got sphere, box");
+  f = scene(R"("a": {})", "", R"({"sphere": {"centre": [0, 0, 0], "radius": 0}, "material": "a"})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }), f.string() + ": /objects/0/sphere/radius: expected a number > 0, got 0");
+}
+
+TEST_F(SceneFolder, MissingTextureNamesTheResolvedPath) {
+  fs::path f = sceneWithMaterial(R"({"base_colour_texture": "textures/missing.png"})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /materials/m/base_colour_texture: file not found: " + (mDir / "textures/missing.png").string());
+}
+
+TEST_F(SceneFolder, HdrAndExrTexturesAreRefused) {
+  write("sky.exr", std::string("\x76\x2f\x31\x01", 4) + "rest of an OpenEXR file");
+  fs::path f = sceneWithMaterial(R"({"base_colour_texture": "sky.exr"})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /materials/m/base_colour_texture: " + (mDir / "sky.exr").string() +
+                ": OpenEXR images are not supported (only PNG and JPEG)");
+  write("sky.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n");
+  f = sceneWithMaterial(R"({"normal_texture": "sky.hdr"})");
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), "sky.hdr: Radiance HDR images are not supported"));
+}
+
+TEST_F(SceneFolder, FilesMustStayInsideTheSceneFolder) {
+  write("../outside.png", "x");
+  fs::path f = sceneWithMaterial(R"({"base_colour_texture": "../outside.png"})");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f); }),
+              f.string() + ": /materials/m/base_colour_texture: '..' is not allowed in '../outside.png'"));
+  f = sceneWithMaterial(R"({"base_colour_texture": "/etc/hostname"})");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f); }),
+              f.string() + ": /materials/m/base_colour_texture: absolute path '/etc/hostname' is not allowed"));
+  fs::create_directory_symlink(mDir.parent_path(), mDir / "escape");
+  f = sceneWithMaterial(R"({"base_colour_texture": "escape/outside.png"})");
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), ": /materials/m/base_colour_texture: 'escape/outside.png' resolves to "));
+}
+
+TEST_F(SceneFolder, UnknownConductorListsTheKnownOnes) {
+  fs::path f = sceneWithMaterial(R"({"conductor": "Pt"})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /materials/m/conductor: unknown conductor 'Pt' (known: Ag, Al, Au, Cu, CuZn, MgO, TiO2)");
+}
+
+TEST_F(SceneFolder, SpdCsvWithBadDataNamesFileLineAndColumn) {
+  fs::path csv = write("lamp.csv", "wavelength_nm,value\n400,1\n500,abc\n");
+  fs::path f = sceneWithLight(R"({"type": "point", "position": [0, 1, 0], "spd": {"csv": "lamp.csv"}, "intensity": 1})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /lights/0/spd/csv: " + csv.string() + ":3:2: expected a number in column 'value', found 'abc'");
+  write("lamp.csv", "wavelength_nm,value\n400,1\n500,-1\n");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }), f.string() + ": /lights/0/spd/csv: " + csv.string() + ":3:2: value -1 is negative");
+  write("lamp.csv", "wavelength_nm,value\n850,1\n900,2\n");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /lights/0/spd: the spectrum has no luminous power (683 lm/W · ∫ S ȳ dλ = 0 over 360–830 nm)");
+  fs::path paint = write("paint.csv", "wavelength_nm,reflectance\n400,0.5\n500,1.5\n");
+  f = sceneWithMaterial(R"({"reflectance": {"csv": "paint.csv"}})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /materials/m/reflectance/csv: " + paint.string() + ":3:2: value 1.5 is outside [0, 1.0]");
+}
+
+TEST_F(SceneFolder, GltfUrisMustStayInsideTheSceneFolder) {
+  write("../outside.bin", std::string(12, '\0'));
+  std::string gltf = R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 12, "uri": "URI"}]})";
+  auto withUri = [&](const std::string& uri) {
+    std::string text = gltf;
+    text.replace(text.find("URI"), 3, uri);
+    write("models/m.gltf", text);
+    return scene(R"("a": {})", "", R"({"gltf": "models/m.gltf"})");
+  };
+  fs::path model = mDir / "models/m.gltf";
+  fs::path f = withUri("../outside.bin");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f); }),
+              f.string() + ": /objects/0/gltf: " + model.string() +
+                         ": /buffers/0/uri: '..' is not allowed in '../outside.bin'"));
+  f = withUri("/etc/hostname");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f); }),
+              f.string() + ": /objects/0/gltf: " + model.string() +
+                         ": /buffers/0/uri: absolute path '/etc/hostname' is not allowed"));
+  f = withUri("file:///etc/hostname");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /objects/0/gltf: " + model.string() +
+                ": /buffers/0/uri: 'file:///etc/hostname': only relative paths and data: URIs are allowed");
+  f = withUri("%2E%2E/outside.bin");  // percent-encoded ".."
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), ": /buffers/0/uri: '..' is not allowed"));
+  f = withUri("missing.bin");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /objects/0/gltf: " + model.string() +
+                ": /buffers/0/uri: file not found: " + (mDir / "models/missing.bin").string());
+}
+
+TEST_F(SceneFolder, GltfImagesMustStayInsideAndBePngOrJpeg) {
+  write("../outside.png", "x");
+  write("models/m.gltf", R"({"asset": {"version": "2.0"}, "images": [{"uri": "../../outside.png"}]})");
+  fs::path f = scene(R"("a": {})", "", R"({"gltf": "models/m.gltf"})");
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), "m.gltf: /images/0/uri: '..' is not allowed"));
+  write("models/sky.exr", std::string("\x76\x2f\x31\x01", 4) + "OpenEXR");
+  write("models/m.gltf", R"({"asset": {"version": "2.0"}, "images": [{"uri": "sky.exr"}]})");
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), "m.gltf: /images/0: OpenEXR images are not supported (only PNG and JPEG)"));
+}
+
+TEST_F(SceneFolder, GltfFactorsOutOfRangeNameThePlaceInTheGltf) {
+  std::string text;
+  {
+    std::ifstream in(kFixtures / "quad.gltf");
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  auto withMetallic = [&](const std::string& value) {
+    std::string t = text;
+    std::string key = "\"metallicFactor\": 0.25";
+    t.replace(t.find(key), key.size(), "\"metallicFactor\": " + value);
+    write("m.gltf", t);
+    return scene(R"("a": {})", "", R"({"gltf": "m.gltf"})");
+  };
+  fs::path f = withMetallic("2");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /objects/0/gltf: " + (mDir / "m.gltf").string() +
+                ": /materials/0/pbrMetallicRoughness/metallicFactor: expected a number in [0, 1], got 2.0");
+  // JSON has no infinity; a number too large for a double is an error of the file itself.
+  f = withMetallic("1e999");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f); }),
+                         f.string() + ": /objects/0/gltf: " + (mDir / "m.gltf").string() + ":15:" ));
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), ": malformed JSON: number overflow parsing '1e999'"));
+}
+
+TEST_F(SceneFolder, GltfPrimitivesMustBeTriangles) {
+  std::string text;
+  {
+    std::ifstream in(kFixtures / "quad.gltf");
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  std::string key = "\"indices\": 3, ";
+  text.replace(text.find(key), key.size(), key + "\"mode\": 1, ");
+  write("m.gltf", text);
+  fs::path f = scene(R"("a": {})", "", R"({"gltf": "m.gltf"})");
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), "m.gltf: /meshes/0/primitives/0/mode: only triangles (mode 4) are supported, got 1"));
+}
+
+// The example scenes in scenes/ are what users start from: each must load.
+TEST(SceneLoader, ExampleScenesLoad) {
+  fs::path dir = PRISM_EXAMPLE_SCENE_DIR;
+  if (!fs::exists(dir)) GTEST_SKIP() << dir << " does not exist";
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.path().extension() != ".json") continue;
+    ++count;
+    try {
+      Scene s = loadScene(entry.path());
+      EXPECT_FALSE(s.meshes.empty()) << entry.path();
+    } catch (const Error& e) {
+      ADD_FAILURE() << e.what();
+    }
+  }
+  EXPECT_GT(count, 0);
+}
+
+}  // namespace
+}  // namespace prism::render

@@ -145,10 +145,10 @@ TEST(Cli, CameraMatrixAndLists) {
   EXPECT_EQ(nlohmann::json::parse(run("colour list cameras --json").out).size(), 20u);
 }
 
-TEST(Cli, DemoWritesTheChart) {
+TEST(Cli, ChartWritesTheColourChecker) {
   std::filesystem::path out = std::filesystem::path(::testing::TempDir()) / "demo" / "chart.png";
   std::filesystem::remove(out);
-  Result r = run("demo -o " + out.string());
+  Result r = run("chart -o " + out.string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(std::filesystem::is_regular_file(out));
   EXPECT_NE(r.out.find("dark skin"), std::string::npos);
@@ -197,3 +197,49 @@ TEST(Cli, BenchmarksRun) {
 }
 
 }  // namespace
+
+TEST(Cli, RenderChecksItsInputBeforeRendering) {
+  const std::string scenes = PRISM_SCENES_DIR;
+  expectOneLineError("render " + scenes + "/missing.json -o x.png", "missing.json");
+  expectOneLineError("render " + scenes + "/spheres_d65.json -o x.jpg", "x.jpg: the output must be a .png or an .exr");
+  expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --mode rainbow", "unknown mode \"rainbow\"");
+  expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --wavelengths 6", "multiple of 4");
+  expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --set lights.7.intensity=1", "/lights/7");
+  std::filesystem::path bad = writeTemp("malformed_scene.json", "{\"camera\": {,}}");
+  expectOneLineError("render " + bad.string() + " -o x.png", "malformed_scene.json:1:");
+  std::filesystem::path unknown = writeTemp("unknown_key_scene.json", "{\"camera\": {}, \"objects\": [], \"lihgts\": []}");
+  expectOneLineError("render " + unknown.string() + " -o x.png", "/lihgts: unknown key");
+}
+
+// One test for everything that needs the 64³ upsampling table (built once per build folder,
+// PRISM_CACHE_DIR), rendering small images.
+TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
+  const std::string scenes = PRISM_SCENES_DIR;
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "render_cli";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  Result png = run("render " + scenes + "/spheres_d65.json -o " + (dir / "s.png").string() +
+                   " --width 64 --height 36 --strategy rotated --frames 3");
+  ASSERT_EQ(png.exitCode, 0) << png.err;
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "s.png"));
+  Result exr = run("render " + scenes + "/conductors_d65.json -o " + (dir / "c.exr").string() +
+                   " --width 64 --height 36 --mode reference");
+  ASSERT_EQ(exr.exitCode, 0) << exr.err;
+  EXPECT_GT(std::filesystem::file_size(dir / "c.exr"), 1000u);
+
+  Result bench = run("bench " + scenes + "/spheres_d65.json --width 64 --height 36 --frames 4 --warmup 1 "
+                     "--wavelengths 4,8,16 --json --plot " + (dir / "plot.svg").string());
+  ASSERT_EQ(bench.exitCode, 0) << bench.err;
+  nlohmann::json j = nlohmann::json::parse(bench.out);
+  EXPECT_EQ(j["spectral"].size(), 3u);
+  EXPECT_GT(j["rgb"]["frame"].get<double>(), 0.0);
+  EXPECT_TRUE(j["fit"].contains("slope_ms_per_wavelength"));
+  EXPECT_NE(slurp(dir / "plot.svg").find("<svg"), std::string::npos);
+
+  Result demo = run("demo -o " + (dir / "gallery").string() + " --width 64 --height 36 --frames 2");
+  ASSERT_EQ(demo.exitCode, 0) << demo.err;
+  std::string index = slurp(dir / "gallery" / "index.html");
+  EXPECT_NE(index.find("spheres_d65_spectral.png"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / "textured_gltf_rgb.png"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / "colorchecker.png"));
+}

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "app/png_image.h"
+#include "imaging/png_file.h"
 #include "spectral/colour_checker.h"
 #include "spectral/colour_space.h"
 #include "spectral/illuminant.h"
@@ -42,9 +42,8 @@ std::vector<ChartPatch> renderColourChecker(const std::string& illuminantName,
   return patches;
 }
 
-void runDemo(const DemoOptions& options) {
-  PngImage chart(2 * kPanelWidth + 3 * kMargin, 2 * kPanelHeight + 3 * kMargin, {40, 40, 40});
-  nlohmann::json json = nlohmann::json::object();
+std::vector<std::vector<ChartPatch>> writeColourCheckerChart(const DemoOptions& options) {
+  imaging::PngImage chart(2 * kPanelWidth + 3 * kMargin, 2 * kPanelHeight + 3 * kMargin, {40, 40, 40});
   std::vector<std::vector<ChartPatch>> all;
   for (int panel = 0; panel < 4; ++panel) {
     const char* name = kIlluminants[panel];
@@ -61,16 +60,25 @@ void runDemo(const DemoOptions& options) {
       chart.fillRect(x, y, kPatch, kPatch,
                      {static_cast<std::uint8_t>(v[0]), static_cast<std::uint8_t>(v[1]),
                       static_cast<std::uint8_t>(v[2])});
-      json[name].push_back({{"patch", patches[i].name},
-                            {"srgb8", {v[0], v[1], v[2]}},
-                            {"linearSrgb", {patches[i].linearSrgb.x(), patches[i].linearSrgb.y(),
-                                            patches[i].linearSrgb.z()}}});
     }
     all.push_back(std::move(patches));
   }
   chart.write(options.output);
+  return all;
+}
 
+void runDemo(const DemoOptions& options) {
+  std::vector<std::vector<ChartPatch>> all = writeColourCheckerChart(options);
   if (options.json) {
+    nlohmann::json json = nlohmann::json::object();
+    for (std::size_t panel = 0; panel < all.size(); ++panel) {
+      for (const ChartPatch& p : all[panel]) {
+        json[kIlluminants[panel]].push_back(
+            {{"patch", p.name},
+             {"srgb8", {p.srgb8[0], p.srgb8[1], p.srgb8[2]}},
+             {"linearSrgb", {p.linearSrgb.x(), p.linearSrgb.y(), p.linearSrgb.z()}}});
+      }
+    }
     fmt::print("{}\n", nlohmann::json{{"chart", options.output.string()},
                                       {"adaptation", options.adaptation},
                                       {"patches", json}}

@@ -1,7 +1,7 @@
-// `prism demo`, Prism's main job for now: the 24 ColorChecker patches under D65, A, F2 and F11,
-// each lit spectrally (reflectance × SPD through CIE 1931), white-balanced to D65 with a
-// chromatic adaptation transform as a camera would be, then encoded as 8-bit sRGB. Writes the
-// chart as a PNG and prints every patch's sRGB values.
+// `prism chart` (and a panel of `prism demo`'s gallery): the 24 ColorChecker patches under D65,
+// A, F2 and F11, each lit spectrally (reflectance × SPD through CIE 1931), white-balanced to D65
+// with a chromatic adaptation transform as a camera would be, then encoded as 8-bit sRGB.
+// Writes the chart as a PNG and prints every patch's sRGB values.
 #pragma once
 
 #include <filesystem>
@@ -27,6 +27,9 @@ struct DemoOptions {
   std::string adaptation = "bradford";
   bool json = false;
 };
+// Writes the chart; the patches of the four panels, in kIlluminants order.
+std::vector<std::vector<ChartPatch>> writeColourCheckerChart(const DemoOptions& options);
+// Writes the chart and prints the patches (text or JSON).
 void runDemo(const DemoOptions& options);
 
 }  // namespace prism::app

@@ -9,6 +9,9 @@
 
 #include "app/colour_checker_demo.h"
 #include "app/colour_commands.h"
+#include "app/gallery.h"
+#include "app/render_commands.h"
+#include "app/scene_bench.h"
 #include "app/upsampling_commands.h"
 #include "gpu/error.h"
 #include "spectral/error.h"
@@ -51,12 +54,25 @@ int main(int argc, char** argv) {
   CLI::App app{"Prism: real-time spectral rendering. Run `prism COMMAND --help` for a command."};
   app.require_subcommand(1);
 
-  DemoOptions demo;
-  auto* demoCmd = app.add_subcommand("demo", "Prism's main job: the ColorChecker under D65, A, F2, F11 as a PNG chart");
-  demoCmd->add_option("-o,--output", demo.output, "PNG to write")->capture_default_str();
-  demoCmd->add_option("--adaptation", demo.adaptation, "white balance to D65: bradford, cat02, von-kries, none")
+  GalleryOptions gallery;
+  auto* demoCmd = app.add_subcommand(
+      "demo", "Prism's main job: every example scene in RGB and spectral mode side by side, and the "
+              "ColorChecker chart, in a folder with an index.html");
+  demoCmd->add_option("-o,--output", gallery.output, "folder to write")->capture_default_str();
+  demoCmd->add_option("--scenes", gallery.scenes, "folder of scene files (default: the example scenes)");
+  demoCmd->add_option("--width", gallery.width, "image width")->capture_default_str();
+  demoCmd->add_option("--height", gallery.height, "image height")->capture_default_str();
+  demoCmd->add_option("--wavelengths", gallery.wavelengths, "wavelengths per frame of the spectral images")
       ->capture_default_str();
-  demoCmd->add_flag("--json", demo.json, "print the patch values as JSON");
+  demoCmd->add_option("--frames", gallery.frames, "frames accumulated for the spectral images (rotated wavelength grids)")
+      ->capture_default_str();
+
+  DemoOptions demo;
+  auto* chartCmd = app.add_subcommand("chart", "the ColorChecker under D65, A, F2, F11 as a PNG chart");
+  chartCmd->add_option("-o,--output", demo.output, "PNG to write")->capture_default_str();
+  chartCmd->add_option("--adaptation", demo.adaptation, "white balance to D65: bradford, cat02, von-kries, none")
+      ->capture_default_str();
+  chartCmd->add_flag("--json", demo.json, "print the patch values as JSON");
 
   auto* colour = app.add_subcommand("colour", "Colorimetry: XYZ of spectra, colour differences, conversions");
   colour->require_subcommand(1);
@@ -74,7 +90,7 @@ int main(int argc, char** argv) {
   auto* wavelengthsOpt = xyzCmd->add_option("--wavelengths", xyz.wavelengthCount,
                      "also estimate from N sampled wavelengths (a multiple of 4, 4–1000)");
   xyzCmd->add_option("--range", rangeText, "MIN,MAX nm of the sampled wavelengths (within 360–830)");
-  xyzCmd->add_option("--strategy", xyz.strategy, "uniform, stratified or importance")->capture_default_str();
+  xyzCmd->add_option("--strategy", xyz.strategy, "uniform, stratified, rotated or importance")->capture_default_str();
   xyzCmd->add_option("--seed", xyz.seed, "seed of stratified and importance sampling");
   xyzCmd->add_flag("--json", xyz.json, "JSON output");
 
@@ -135,12 +151,58 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   upCmd->add_flag("--json", up.json, "JSON output");
 
-  auto* bench = app.add_subcommand("bench", "run Prism's benchmarks (Google Benchmark flags pass through)");
+  RenderOptions render;
+  std::string renderRange, renderEv;
+  auto* renderCmd = app.add_subcommand("render", "render a scene headlessly to a PNG (display) or an EXR (linear XYZ)");
+  renderCmd->add_option("scene", render.scene, "scene file (JSON, see docs/scene-format.md)")->required();
+  renderCmd->add_option("-o,--output", render.output, "OUT.png or OUT.exr")->required();
+  renderCmd->add_option("--frames", render.frames, "frames accumulated (stochastic strategies converge)")
+      ->capture_default_str();
+  renderCmd->add_option("--set", render.sets, "override a scene value: json.path=value (repeatable)");
+  auto addRenderSettings = [](CLI::App* cmd, RenderSettingsOptions& o, std::string& range, std::string& ev,
+                              std::string* wavelengthList) {
+    cmd->add_option("--width", o.width, "image width")->capture_default_str();
+    cmd->add_option("--height", o.height, "image height")->capture_default_str();
+    if (wavelengthList) {
+      cmd->add_option("--wavelengths", *wavelengthList,
+                      "wavelength counts, comma-separated (default 4,8,16,32,64,128,256)");
+    } else {
+      cmd->add_option("--wavelengths", o.wavelengths, "wavelengths per pixel (a multiple of 4, 4–1000)")
+          ->capture_default_str();
+    }
+    cmd->add_option("--range", range, "MIN,MAX nm of the sampled wavelengths (within 360–830)");
+    cmd->add_option("--strategy", o.strategy, "uniform, stratified, rotated or importance")->capture_default_str();
+    cmd->add_option("--mode", o.mode, "rgb, naive, jakob-hanika or reference")->capture_default_str();
+    cmd->add_option("--observer", o.observer, "cie1931, cie1964 or a camera")->capture_default_str();
+    cmd->add_option("--camera", o.camera, "a camera as the observer (raw camera RGB, fitted matrix for display)");
+    cmd->add_option("--lookup", o.lookup, "upsampling table lookup: filtered or manual")->capture_default_str();
+    cmd->add_option("--tonemap", o.toneMap, "none, reinhard or aces")->capture_default_str();
+    cmd->add_option("--display", o.display, "srgb, display-p3 or rec2020")->capture_default_str();
+    cmd->add_option("--white-balance", o.whiteBalance, "adapt this illuminant's white to the display white, or none")
+        ->capture_default_str();
+    cmd->add_option("--adaptation", o.adaptation, "bradford, cat02 or von-kries")->capture_default_str();
+    cmd->add_option("--ev", ev, "exposure EV100 (default: the scene camera's)");
+    cmd->add_option("--shadow-map-size", o.shadowMapSize, "texels per side")->capture_default_str();
+  };
+  addRenderSettings(renderCmd, render.settings, renderRange, renderEv, nullptr);
+
+  SceneBenchOptions sceneBench;
+  std::string benchWavelengths, benchRange, benchEv;
+  auto* bench = app.add_subcommand(
+      "bench", "GPU frame times of a scene (prism bench SCENE.json), or, without a scene, Prism's "
+               "micro-benchmarks (Google Benchmark flags pass through)");
   bench->allow_extras();
+  bench->add_option("scene", sceneBench.scene, "scene file: time its passes in RGB and spectral modes");
+  addRenderSettings(bench, sceneBench.settings, benchRange, benchEv, &benchWavelengths);
+  bench->add_option("--frames", sceneBench.frames, "timed frames per configuration")->capture_default_str();
+  bench->add_option("--warmup", sceneBench.warmup, "untimed frames first")->capture_default_str();
+  bench->add_option("--plot", sceneBench.plot, "SVG plot of frame time against the wavelength count");
+  bench->add_flag("--json", sceneBench.json, "JSON output");
 
   try {
     app.parse(argc, argv);
-    if (*demoCmd) runDemo(demo);
+    if (*demoCmd) runGallery(gallery);
+    if (*chartCmd) runDemo(demo);
     if (*xyzCmd) {
       if (!rgbText.empty()) xyz.rgb = parseNumbers(rgbText, "--rgb");
       if (!rangeText.empty()) xyz.rangeNm = parseNumbers(rangeText, "--range");
@@ -164,7 +226,27 @@ int main(int argc, char** argv) {
       if (!upWavelengths.empty()) up.wavelengths = parseNumbers(upWavelengths, "--wavelengths", ':');
       runUpsample(up);
     }
-    if (*bench) return runBenchmarks(bench->remaining());
+    auto parseEv = [](const std::string& text) -> std::optional<float> {
+      if (text.empty()) return std::nullopt;
+      return static_cast<float>(parseNumbers(text, "--ev").at(0));
+    };
+    if (*renderCmd) {
+      if (!renderRange.empty()) render.settings.range = parseNumbers(renderRange, "--range");
+      render.settings.ev100 = parseEv(renderEv);
+      runRender(render);
+    }
+    if (*bench && !sceneBench.scene.empty()) {
+      if (!bench->remaining().empty()) throw prism::Error("bench: unexpected '" + bench->remaining().front() + "'");
+      if (!benchRange.empty()) sceneBench.settings.range = parseNumbers(benchRange, "--range");
+      sceneBench.settings.ev100 = parseEv(benchEv);
+      if (!benchWavelengths.empty()) {
+        sceneBench.wavelengths.clear();
+        for (double n : parseNumbers(benchWavelengths, "--wavelengths")) sceneBench.wavelengths.push_back(static_cast<int>(n));
+      }
+      runSceneBench(sceneBench);
+    } else if (*bench) {
+      return runBenchmarks(bench->remaining());
+    }
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {

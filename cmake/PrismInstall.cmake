@@ -15,3 +15,4 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/PrismConfig.cmake
               ${CMAKE_CURRENT_BINARY_DIR}/PrismConfigVersion.cmake
         DESTINATION ${PRISM_CMAKE_DIR})
 install(DIRECTORY data/ DESTINATION ${CMAKE_INSTALL_DATADIR}/prism/data)
+install(DIRECTORY scenes/ DESTINATION ${CMAKE_INSTALL_DATADIR}/prism/scenes)

@@ -37,6 +37,12 @@ std::filesystem::path shaderDirectory() {
                        std::filesystem::path(PRISM_INSTALL_DATA_DIR).parent_path() / "shaders");
 }
 
+std::filesystem::path exampleSceneDirectory() {
+  return findDirectory("PRISM_SCENE_DIR", "scenes",
+                       std::filesystem::path(PRISM_SOURCE_DATA_DIR).parent_path() / "scenes",
+                       std::filesystem::path(PRISM_INSTALL_DATA_DIR).parent_path() / "scenes");
+}
+
 std::filesystem::path dataFile(std::string_view name) {
   std::filesystem::path dir = dataDirectory();
   std::filesystem::path path = dir / name;

@@ -5,7 +5,8 @@
 //   4. the data folder of the install prefix configured at build time.
 // Never anything outside these. shaderDirectory() finds the installed GLSL (shaders/, holding
 // shared/) the same way: $PRISM_SHADER_DIR, ../share/prism/shaders beside the executable, the
-// source tree's shaders/, the install prefix's share/prism/shaders.
+// source tree's shaders/, the install prefix's share/prism/shaders. exampleSceneDirectory()
+// finds the example scenes (scenes/) likewise, with $PRISM_SCENE_DIR.
 #pragma once
 
 #include <filesystem>
@@ -19,5 +20,8 @@ std::filesystem::path dataFile(std::string_view name);
 
 // The folder holding shared/ (the dual-compiled headers) and, later, the GPU passes' shaders.
 std::filesystem::path shaderDirectory();
+
+// The example scenes (scenes/*.json and their models), which `prism demo` renders.
+std::filesystem::path exampleSceneDirectory();
 
 }  // namespace prism

@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # The GLSL half of "one formula, two compilers": every shaders/shared/*.glsl must compile as
 # GLSL 4.50 after prelude.glsl (the C++ half is compiled by the build itself). A deliberately
-# broken file must fail, so that this test can fail.
+# broken file must fail, so that this test can fail. A file that builds on others names them on
+# a "// Requires: a.glsl b.glsl" line; they are included first (from shared/, or, for stand-ins
+# of accessors a file expects its includer to define, from tests/glsl_stubs/).
 # Usage: glsl_compile_test.sh GLSLANG_VALIDATOR SHARED_DIR SCRATCH_DIR
 set -euo pipefail
 validator=$1 shared=$2 scratch=$3
 mkdir -p "$scratch"
+stubs=$(cd "$(dirname "$0")" && pwd)/glsl_stubs
 
 compile() {  # compile FILE: wraps FILE in a compute shader and validates it
   local wrapper=$scratch/$(basename "$1").comp
@@ -13,12 +16,16 @@ compile() {  # compile FILE: wraps FILE in a compute shader and validates it
     echo '#version 450'
     echo '#extension GL_GOOGLE_include_directive : require'
     echo '#include "prelude.glsl"'
+    local dep
+    for dep in $(sed -n 's|^// Requires: ||p' "$shared/$1" 2>/dev/null); do
+      echo "#include \"$dep\""
+    done
     echo "#include \"$1\""
     echo 'layout(local_size_x = 1) in;'
     echo 'void main() {}'
   } >"$wrapper"
   # -G (OpenGL SPIR-V target): glslang resolves #include only when generating SPIR-V.
-  "$validator" -G -I"$shared" -I"$scratch" "$wrapper" -o "$wrapper.spv"
+  "$validator" -G -I"$shared" -I"$stubs" -I"$scratch" "$wrapper" -o "$wrapper.spv"
 }
 
 status=0

@@ -1,0 +1,103 @@
+#include "app/render_commands.h"
+
+#include <fmt/format.h>
+
+#include "app/progress_bar.h"
+#include "gpu/headless_context.h"
+#include "imaging/exr_file.h"
+#include "imaging/png_file.h"
+#include "render/display_transform.h"
+#include "render/renderer.h"
+#include "render/scene_loader.h"
+#include "spectral/error.h"
+#include "spectral/observer.h"
+#include "spectral/rgb_to_spectrum_cache.h"
+
+namespace prism::app {
+namespace {
+
+// The Jakob–Hanika table of a scene's colour space, built (with a progress bar) on first use.
+RgbToSpectrumTable upsamplingTable(const std::string& colourSpace) {
+  ProgressBar bar("upsampling table for " + colourSpace);
+  return cachedRgbToSpectrumTable(colourSpace, 64,
+                                  [&](std::size_t done, std::size_t total) { bar.update(done, total); });
+}
+
+}  // namespace
+
+render::FrameSettings frameSettings(const RenderSettingsOptions& o) {
+  render::FrameSettings s;
+  s.width = o.width;
+  s.height = o.height;
+  s.mode = render::renderModeFromName(o.mode);
+  s.sampling.count = o.wavelengths;
+  if (!o.range.empty()) {
+    if (o.range.size() != 2) throw Error("--range: expected MIN,MAX in nm");
+    s.sampling.minNm = o.range[0];
+    s.sampling.maxNm = o.range[1];
+  }
+  s.sampling.strategy = samplingStrategyFromName(o.strategy);
+  s.observer = o.camera.empty() ? o.observer : o.camera;
+  if (!o.camera.empty() && !observer(o.camera).isCamera) {
+    throw Error(fmt::format("--camera: \"{}\" is not a camera (see `prism colour list cameras`)", o.camera));
+  }
+  if (o.lookup == "manual") s.lookup = render::UpsamplingLookup::Manual;
+  else if (o.lookup == "filtered") s.lookup = render::UpsamplingLookup::Filtered;
+  else throw Error(fmt::format("--lookup: unknown \"{}\" (manual, filtered)", o.lookup));
+  s.toneMap = render::toneMapFromName(o.toneMap);
+  s.display = o.display;
+  s.whiteBalance = o.whiteBalance;
+  s.adaptation = adaptationFromName(o.adaptation);
+  s.ev100 = o.ev100;
+  s.shadowMapSize = o.shadowMapSize;
+  render::validate(s);
+  return s;
+}
+
+void renderToFile(const render::Scene& scene, const render::FrameSettings& settings, int frames,
+                  const std::filesystem::path& output, bool progress) {
+  std::string extension = output.extension().string();
+  if (extension != ".png" && extension != ".exr") {
+    throw Error(fmt::format("{}: the output must be a .png or an .exr file", output.string()));
+  }
+  if (frames < 1) throw Error("--frames: must be at least 1");
+  RgbToSpectrumTable table = upsamplingTable(scene.colourSpace);
+  gpu::HeadlessContext context;
+  render::Renderer renderer(scene, table, settings);
+  std::optional<ProgressBar> bar;
+  if (progress && frames > 1) bar.emplace("rendering " + output.filename().string());
+  for (int f = 0; f < frames; ++f) {
+    renderer.renderFrame();
+    if (bar) bar->update(static_cast<std::size_t>(f + 1), static_cast<std::size_t>(frames));
+  }
+  if (extension == ".png") {
+    std::vector<std::uint8_t> rgba = renderer.readDisplayRgba8();
+    imaging::PngImage image(settings.width, settings.height, {});
+    for (int y = 0; y < settings.height; ++y) {
+      for (int x = 0; x < settings.width; ++x) {
+        std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(settings.width) +
+                         static_cast<std::size_t>(x)) * 4;
+        image.setPixel(x, y, {rgba[i], rgba[i + 1], rgba[i + 2]});
+      }
+    }
+    image.write(output);
+    return;
+  }
+  imaging::FloatImage image(settings.width, settings.height, 3);
+  image.pixels = renderer.readMeanTristimulus();
+  bool camera = settings.mode != render::RenderMode::Rgb && observer(settings.observer).isCamera;
+  imaging::writeExr(output, image,
+                    {camera ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,
+                     imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour});
+}
+
+void runRender(const RenderOptions& options) {
+  render::Scene scene = render::loadScene(options.scene, options.sets);
+  render::FrameSettings settings = frameSettings(options.settings);
+  renderToFile(scene, settings, options.frames, options.output, true);
+  fmt::print("wrote {} ({}x{}, {} mode, {} frame{})\n", options.output.string(), settings.width,
+             settings.height, render::renderModeName(settings.mode), options.frames,
+             options.frames == 1 ? "" : "s");
+}
+
+}  // namespace prism::app

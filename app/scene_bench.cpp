@@ -1,0 +1,239 @@
+#include "app/scene_bench.h"
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "app/progress_bar.h"
+#include "gpu/headless_context.h"
+#include "gpu/timer_query.h"
+#include "render/renderer.h"
+#include "render/scene_loader.h"
+#include "spectral/atomic_file.h"
+#include "spectral/error.h"
+#include "spectral/rgb_to_spectrum_cache.h"
+
+namespace prism::app {
+namespace {
+
+struct ConfigResult {
+  std::string label;  // "rgb" or the wavelength count
+  int wavelengths = 0;  // 0 for RGB
+  std::map<std::string, double> medianMs;  // per pass and "frame"
+};
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+ConfigResult measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, int frames,
+                     ProgressBar& bar, std::size_t& done, std::size_t total) {
+  std::map<std::string, std::vector<double>> samples;
+  auto collect = [&](const gpu::GpuTimings& timings) {
+    for (const auto& [name, ms] : timings) samples[name].push_back(ms);
+  };
+  bool open = false;
+  renderer.setPassHook([&](std::string_view pass) {
+    if (open) timer.endScope();
+    open = !pass.empty();
+    if (open) timer.beginScope(pass);
+  });
+  for (int f = 0; f < warmup + frames; ++f) {
+    timer.beginFrame();
+    if (f >= warmup + 3) collect(timer.latest());  // results arrive frames in flight later
+    renderer.renderFrame();
+    timer.endFrame();
+    bar.update(++done, total);
+  }
+  collect(timer.resolve());
+  renderer.setPassHook({});
+  ConfigResult result;
+  for (auto& [name, values] : samples) result.medianMs[name] = median(values);
+  return result;
+}
+
+// Least squares t = a·n + b.
+std::pair<double, double> linearFit(const std::vector<double>& n, const std::vector<double>& t) {
+  double mn = 0, mt = 0;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    mn += n[i];
+    mt += t[i];
+  }
+  mn /= static_cast<double>(n.size());
+  mt /= static_cast<double>(n.size());
+  double sxy = 0, sxx = 0;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    sxy += (n[i] - mn) * (t[i] - mt);
+    sxx += (n[i] - mn) * (n[i] - mn);
+  }
+  double a = sxx > 0 ? sxy / sxx : 0.0;
+  return {a, mt - a * mn};
+}
+
+std::string svgPlot(const std::vector<ConfigResult>& spectral, double rgbMs, double a, double b,
+                    const std::string& title) {
+  const double w = 640, h = 400, left = 70, right = 20, top = 40, bottom = 50;
+  double maxN = 0, maxT = rgbMs;
+  for (const ConfigResult& r : spectral) {
+    maxN = std::max(maxN, static_cast<double>(r.wavelengths));
+    maxT = std::max(maxT, r.medianMs.at("frame"));
+  }
+  maxT *= 1.1;
+  auto x = [&](double n) { return left + n / maxN * (w - left - right); };
+  auto y = [&](double t) { return h - bottom - t / maxT * (h - top - bottom); };
+  std::ostringstream s;
+  s << fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" "
+                   "font-family=\"sans-serif\" font-size=\"12\">\n", w, h);
+  s << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  s << fmt::format("<text x=\"{}\" y=\"22\" font-size=\"14\">{}</text>\n", left, title);
+  s << fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"black\"/>\n", left,
+                   h - bottom, w - right);
+  s << fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{0}\" y2=\"{2}\" stroke=\"black\"/>\n", left,
+                   h - bottom, top);
+  for (int i = 0; i <= 4; ++i) {
+    double t = maxT * i / 4, n = maxN * i / 4;
+    s << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{:.3g}</text>\n", left - 6,
+                     y(t) + 4, t);
+    s << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{:.0f}</text>\n", x(n),
+                     h - bottom + 18, n);
+  }
+  s << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">wavelengths n</text>\n",
+                   (left + w - right) / 2, h - 8);
+  s << fmt::format("<text x=\"16\" y=\"{}\" transform=\"rotate(-90 16 {})\" "
+                   "text-anchor=\"middle\">frame time (ms)</text>\n", (top + h - bottom) / 2,
+                   (top + h - bottom) / 2);
+  s << fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#c33\" "
+                   "stroke-dasharray=\"6 4\"/>\n", x(0), y(rgbMs), x(maxN), y(rgbMs));
+  s << fmt::format("<text x=\"{}\" y=\"{}\" fill=\"#c33\" text-anchor=\"end\">RGB {:.3g} ms</text>\n",
+                   w - right, y(rgbMs) - 6, rgbMs);
+  s << fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#36c\"/>\n", x(0), y(b),
+                   x(maxN), y(a * maxN + b));
+  for (const ConfigResult& r : spectral) {
+    s << fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"4\" fill=\"#36c\"/>\n",
+                     x(r.wavelengths), y(r.medianMs.at("frame")));
+  }
+  s << fmt::format("<text x=\"{}\" y=\"{}\" fill=\"#36c\">t(n) = {:.4g} ms·n + {:.4g} ms</text>\n",
+                   left + 10, top + 14, a, b);
+  s << "</svg>\n";
+  return s.str();
+}
+
+}  // namespace
+
+void runSceneBench(const SceneBenchOptions& options) {
+  if (options.wavelengths.empty()) throw Error("--wavelengths: give at least one count");
+  if (options.frames < 1 || options.warmup < 0) throw Error("--frames must be ≥ 1, --warmup ≥ 0");
+  render::Scene scene = render::loadScene(options.scene);
+  RenderSettingsOptions base = options.settings;
+  base.mode = "rgb";
+  render::FrameSettings settings = frameSettings(base);
+  for (int n : options.wavelengths) {
+    render::FrameSettings check = settings;
+    check.sampling.count = n;
+    render::validate(check);
+  }
+  RgbToSpectrumTable table = cachedRgbToSpectrumTable(scene.colourSpace, 64);
+  gpu::HeadlessContext context;
+  std::string device = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  render::Renderer renderer(scene, table, settings);
+  gpu::GpuTimer timer;
+
+  std::size_t done = 0;
+  std::size_t total = (options.wavelengths.size() + 1) *
+                      static_cast<std::size_t>(options.warmup + options.frames);
+  ProgressBar bar("benchmark " + options.scene.filename().string());
+  ConfigResult rgb = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
+  rgb.label = "rgb";
+  std::vector<ConfigResult> spectral;
+  for (int n : options.wavelengths) {
+    render::FrameSettings s = settings;
+    s.mode = render::RenderMode::JakobHanika;
+    s.sampling.count = n;
+    renderer.setSettings(s);
+    ConfigResult r = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
+    r.label = std::to_string(n);
+    r.wavelengths = n;
+    spectral.push_back(std::move(r));
+  }
+
+  std::vector<double> ns, ts;
+  for (const ConfigResult& r : spectral) {
+    ns.push_back(r.wavelengths);
+    ts.push_back(r.medianMs.at("frame"));
+  }
+  auto [a, b] = linearFit(ns, ts);
+  double rgbFrame = rgb.medianMs.at("frame");
+  // GPU memory the spectral modes add over RGB: the upsampling table texture (RGB32F) and the
+  // per-frame spectra buffers; render targets and meshes are the same in both modes.
+  std::size_t res = static_cast<std::size_t>(table.resolution());
+  double tableMb = static_cast<double>(res * res * res * 3 * 3 * sizeof(float)) / (1024.0 * 1024.0);
+  std::size_t maxN = static_cast<std::size_t>(*std::max_element(options.wavelengths.begin(),
+                                                                options.wavelengths.end()));
+  std::size_t batches = maxN / 4;
+  double buffersMb = static_cast<double>(batches * (sizeof(shared::GpuBatch) +
+                                                    (scene.lights.size() + 1) * 16 +
+                                                    scene.materials.size() * 32)) /
+                     (1024.0 * 1024.0);
+
+  if (!options.plot.empty()) {
+    writeFileAtomically(options.plot,
+                        svgPlot(spectral, rgbFrame, a, b,
+                                fmt::format("{} at {}x{} on {}", options.scene.filename().string(),
+                                            settings.width, settings.height, device)));
+  }
+  if (options.json) {
+    nlohmann::json j;
+    j["scene"] = options.scene.string();
+    j["device"] = device;
+    j["width"] = settings.width;
+    j["height"] = settings.height;
+    j["frames"] = options.frames;
+    j["rgb"] = rgb.medianMs;
+    for (const ConfigResult& r : spectral) {
+      nlohmann::json c;
+      c["wavelengths"] = r.wavelengths;
+      c["median_ms"] = r.medianMs;
+      c["ratio_to_rgb"] = r.medianMs.at("frame") / rgbFrame;
+      j["spectral"].push_back(c);
+    }
+    j["fit"] = {{"slope_ms_per_wavelength", a}, {"intercept_ms", b},
+                {"slope_fraction_of_rgb_frame", a / rgbFrame}};
+    j["extra_gpu_memory_mb"] = {{"upsampling_table", tableMb}, {"frame_buffers", buffersMb}};
+    fmt::print("{}\n", j.dump(2));
+    return;
+  }
+  fmt::print("{} at {}x{} on {}; median of {} frames after {} warm-up, GPU timer queries\n",
+             options.scene.string(), settings.width, settings.height, device, options.frames,
+             options.warmup);
+  std::vector<std::string> passes;
+  for (const auto& [name, ms] : rgb.medianMs) {
+    if (name != "frame") passes.push_back(name);
+  }
+  std::string header = fmt::format("{:>8} {:>10}", "mode", "frame ms");
+  for (const std::string& p : passes) header += fmt::format(" {:>10}", p);
+  header += fmt::format(" {:>9}", "× RGB");
+  fmt::print("{}\n", header);
+  auto row = [&](const ConfigResult& r) {
+    std::string line = fmt::format("{:>8} {:>10.3f}", r.label, r.medianMs.at("frame"));
+    for (const std::string& p : passes) {
+      auto it = r.medianMs.find(p);
+      line += fmt::format(" {:>10.3f}", it == r.medianMs.end() ? 0.0 : it->second);
+    }
+    line += fmt::format(" {:>9.3f}", r.medianMs.at("frame") / rgbFrame);
+    fmt::print("{}\n", line);
+  };
+  row(rgb);
+  for (const ConfigResult& r : spectral) row(r);
+  fmt::print("fit: t(n) = {:.4f} ms·n + {:.3f} ms; slope = {:.2f} % of the RGB frame per wavelength\n",
+             a, b, 100.0 * a / rgbFrame);
+  fmt::print("GPU memory added by spectral modes: {:.2f} MB (upsampling table {:.2f} MB, "
+             "frame buffers at n = {} {:.3f} MB)\n", tableMb + buffersMb, tableMb, maxN, buffersMb);
+}
+
+}  // namespace prism::app

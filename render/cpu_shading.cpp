@@ -1,0 +1,68 @@
+#include "render/cpu_shading.h"
+
+#include <utility>
+
+namespace prism::shared {
+
+// pixel_shading.glsl compiled inside a class whose members are its accessors.
+class CpuShadingKernel {
+ public:
+  CpuShadingKernel(const render::FrameData& frame, const RgbToSpectrumTable& table,
+                   std::vector<std::vector<float>> shadowLayers)
+      : mFrame(frame), mTable(table), mShadowLayers(std::move(shadowLayers)) {}
+
+  vec3 shade(const render::GBufferTexel& texel, vec2 uv, const render::CameraTransform& camera) {
+    if (texel.materialId == 0) return shadeBackground(mFrame.constants);
+    SurfaceSample s;
+    s.position = worldFromDepth(camera.inverseViewProjection, uv, texel.depth);
+    s.normal = normalize(vec3(texel.normalRoughness));
+    s.albedo = vec3(texel.albedoMetallic);
+    s.metallic = texel.albedoMetallic.w;
+    s.roughness = texel.normalRoughness.w;
+    s.material = static_cast<int>(texel.materialId) - 1;
+    return shadeSurface(mFrame.constants, s, camera.position);
+  }
+
+ private:
+  static std::size_t index(int i) { return static_cast<std::size_t>(i); }
+  GpuBatch frameBatch(int b) const { return mFrame.batches[index(b)]; }
+  GpuLight frameLight(int l) const { return mFrame.lights[index(l)]; }
+  GpuMaterial frameMaterial(int id) const { return mFrame.materials[index(id)]; }
+  vec4 frameLightSpectrum(int l, int b) const {
+    return mFrame.lightSpectra[index(l * mFrame.constants.batchCount + b)];
+  }
+  vec4 frameMaterialSpectrum(int s, int b, int j) const {
+    return mFrame.materialSpectra[index((s * mFrame.constants.batchCount + b) * 2 + j)];
+  }
+  float shadowDepthAt(int layer, int x, int y) const {
+    return mShadowLayers[index(layer)][index(y * mFrame.constants.shadowMapSize + x)];
+  }
+  vec3 upsamplingCoefficients(vec3 rgb) const { return mTable.lookup(rgb); }
+
+#include "pixel_shading.glsl"
+
+  const render::FrameData& mFrame;
+  const RgbToSpectrumTable& mTable;
+  std::vector<std::vector<float>> mShadowLayers;
+};
+
+}  // namespace prism::shared
+
+namespace prism::render {
+
+struct CpuShading::Kernel : shared::CpuShadingKernel {
+  using CpuShadingKernel::CpuShadingKernel;
+};
+
+CpuShading::CpuShading(const FrameData& frame, const RgbToSpectrumTable& table,
+                       std::vector<std::vector<float>> shadowLayers)
+    : mKernel(std::make_unique<Kernel>(frame, table, std::move(shadowLayers))) {}
+
+CpuShading::~CpuShading() = default;
+
+glm::vec3 CpuShading::shade(const GBufferTexel& texel, const glm::vec2& uv,
+                            const CameraTransform& camera) const {
+  return mKernel->shade(texel, uv, camera);
+}
+
+}  // namespace prism::render

@@ -1,0 +1,45 @@
+// The CPU twin of the lighting pass: shaders/shared/pixel_shading.glsl compiled as C++, with
+// accessors over the same FrameData the GPU reads, the CPU upsampling lookup and shadow maps
+// read back from the GPU. Tests hold the GPU's lighting pass to it pixel by pixel.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/camera_transform.h"
+#include "render/frame_data.h"
+#include "spectral/rgb_to_spectrum_table.h"
+
+namespace prism::render {
+
+// One G-buffer texel as the lighting pass reads it.
+struct GBufferTexel {
+  glm::vec4 albedoMetallic{0.0f};
+  glm::vec4 normalRoughness{0.0f};
+  std::uint32_t materialId = 0;  // material index + 1; 0 where no geometry is
+  float depth = 1.0f;
+};
+
+class CpuShading {
+ public:
+  // shadowLayers: each layer's depths, size × size, row 0 at the bottom (GL order). The table
+  // is looked up with the manual (reference) path.
+  CpuShading(const FrameData& frame, const RgbToSpectrumTable& table,
+             std::vector<std::vector<float>> shadowLayers);
+  ~CpuShading();
+  CpuShading(const CpuShading&) = delete;
+  CpuShading& operator=(const CpuShading&) = delete;
+
+  // Tristimulus of the pixel whose centre is at uv ∈ [0, 1]² (GL window convention).
+  glm::vec3 shade(const GBufferTexel& texel, const glm::vec2& uv,
+                  const CameraTransform& camera) const;
+
+ private:
+  struct Kernel;
+  std::unique_ptr<Kernel> mKernel;
+};
+
+}  // namespace prism::render

@@ -1,0 +1,188 @@
+// Closed-form checks of the lighting pass's maths through its CPU twin (shaders/shared/
+// pixel_shading.glsl compiled as C++): a white Lambertian surface under a directional light of
+// E lux has luminance E/π in every mode, conductors follow their normal-incidence Fresnel, and
+// the display transform keeps colours finite and inside the gamut.
+#include "render/cpu_shading.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "render/display_transform.h"
+#include "render/scene_loader.h"
+#include "spectral/illuminant.h"
+#include "spectral/rgb_to_spectrum_cache.h"
+#include "spectral/rgb_to_spectrum_optimiser.h"
+
+namespace prism::render {
+namespace {
+
+const RgbToSpectrumTable& table() {
+  // Resolution does not matter to these checks; 16 keeps the optimisation short.
+  static const RgbToSpectrumTable t = cachedRgbToSpectrumTable("srgb", 64);
+  return t;
+}
+
+Scene oneLightScene(const std::string& spd, float lux) {
+  Scene scene;
+  scene.file = "test.json";
+  Light light;
+  light.type = LightType::Directional;
+  light.direction = {0.0f, -1.0f, 0.0f};
+  light.spd = illuminant(spd) * (1.0 / luminousIntegral(illuminant(spd)));
+  light.intensity = lux;
+  light.castsShadows = false;
+  scene.lights.push_back(light);
+  Material white;
+  white.baseColour = glm::vec3(1.0f);
+  white.lambertian = true;
+  scene.materials.push_back(white);
+  return scene;
+}
+
+// A texel of material 0 at the origin facing up, seen from straight above.
+struct UpFacing {
+  GBufferTexel texel;
+  CameraTransform camera;
+  UpFacing(const glm::vec3& albedo, float metallic, float roughness) {
+    texel.albedoMetallic = glm::vec4(albedo, metallic);
+    texel.normalRoughness = glm::vec4(0.0f, 1.0f, 0.0f, roughness);
+    texel.materialId = 1;
+    Camera c;
+    c.position = {0.0f, 2.0f, 0.0f};
+    c.target = {0.0f, 0.0f, 0.0f};
+    c.up = {0.0f, 0.0f, -1.0f};
+    camera = cameraTransform(c, 64, 64);
+    // The depth of the origin at the image centre.
+    glm::vec4 clip = camera.viewProjection * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    texel.depth = clip.z / clip.w * 0.5f + 0.5f;
+  }
+};
+
+glm::vec3 shadeOnce(const Scene& scene, const FrameSettings& settings, const UpFacing& p) {
+  FrameData frame = buildFrameData(scene, settings, table(), {}, 0);
+  CpuShading shading(frame, table(), {});
+  return shading.shade(p.texel, glm::vec2(0.5f), p.camera);
+}
+
+TEST(CpuShading, WhiteLambertianUnderDaylightHasLuminanceEOverPi) {
+  Scene scene = oneLightScene("D65", 1000.0f);
+  UpFacing p(glm::vec3(1.0f), 0.0f, 1.0f);
+  const double expected = 1000.0 / 3.14159265358979;
+  for (RenderMode mode : {RenderMode::Rgb, RenderMode::Naive, RenderMode::JakobHanika,
+                          RenderMode::Reference}) {
+    FrameSettings settings;
+    settings.mode = mode;
+    settings.sampling.count = 64;
+    glm::vec3 xyz = shadeOnce(scene, settings, p);
+    // RGB: exact by construction. Spectral: the upsampled white is 1 within the table's fit,
+    // 64 midpoint samples of ∫ D65·ȳ are within 0.5 %, the reference's 472 within 0.1 %.
+    double tolerance = mode == RenderMode::Rgb ? 1e-5 : mode == RenderMode::Reference ? 2e-3 : 1e-2;
+    EXPECT_NEAR(xyz.y / expected, 1.0, tolerance) << renderModeName(mode);
+  }
+}
+
+TEST(CpuShading, UnderTheColourSpacesWhiteSpectralLightingReproducesRgb) {
+  // The upsampling table is fitted so that each albedo's spectrum, lit by the colour space's
+  // white (D65 for sRGB), has that albedo's colour: a Lambertian surface under a D65 light must
+  // then look the same in RGB mode and in the reference.
+  Scene scene = oneLightScene("D65", 1000.0f);
+  for (glm::vec3 albedo : {glm::vec3(0.5f, 0.2f, 0.1f), glm::vec3(0.1f, 0.6f, 0.3f),
+                           glm::vec3(0.2f, 0.3f, 0.8f)}) {
+    UpFacing p(albedo, 0.0f, 1.0f);
+    FrameSettings rgb;
+    rgb.mode = RenderMode::Rgb;
+    FrameSettings reference;
+    reference.mode = RenderMode::Reference;
+    glm::vec3 a = shadeOnce(scene, rgb, p);
+    glm::vec3 b = shadeOnce(scene, reference, p);
+    EXPECT_NEAR(b.x / a.x, 1.0, 5e-3);
+    EXPECT_NEAR(b.y / a.y, 1.0, 5e-3);
+    EXPECT_NEAR(b.z / a.z, 1.0, 5e-3);
+  }
+}
+
+TEST(CpuShading, NaiveUpsamplingOfGreyIsFlat) {
+  // Box upsampling of a grey is that grey at every wavelength: Y = grey · E/π.
+  Scene scene = oneLightScene("A", 500.0f);
+  UpFacing p(glm::vec3(0.25f), 0.0f, 1.0f);
+  FrameSettings settings;
+  settings.mode = RenderMode::Naive;
+  settings.sampling.count = 400;
+  EXPECT_NEAR(shadeOnce(scene, settings, p).y, 0.25 * 500.0 / 3.14159265358979, 0.02);
+}
+
+TEST(CpuShading, ConductorAtNormalIncidenceReflectsItsFresnelReflectance) {
+  // A mirror-like conductor lit and seen along its normal: the BRDF's D·G/(4·n·l·n·v) at
+  // roughness r is known, so the ratio of a conductor to a metallic white (a measured
+  // reflectance of exactly 1 as F0, so Schlick's F = 1) is the Fresnel reflectance
+  // ((n−1)² + k²)/((n+1)² + k²), here for constant n, k.
+  Scene scene = oneLightScene("D65", 1000.0f);
+  scene.materials[0].lambertian = false;
+  scene.materials[0].reflectance = Spectrum::constant(1.0);
+  Material conductor;
+  conductor.roughness = 0.3f;
+  conductor.conductor = ConductorIor{"test", Spectrum::constant(0.5), Spectrum::constant(2.5)};
+  scene.materials.push_back(conductor);
+  UpFacing white(glm::vec3(1.0f), 1.0f, 0.3f);
+  UpFacing metal(glm::vec3(1.0f), 1.0f, 0.3f);
+  metal.texel.materialId = 2;
+  FrameSettings settings;
+  settings.sampling.count = 16;
+  double ratio = shadeOnce(scene, settings, metal).y / shadeOnce(scene, settings, white).y;
+  double expected = ((0.5 - 1) * (0.5 - 1) + 2.5 * 2.5) / ((0.5 + 1) * (0.5 + 1) + 2.5 * 2.5);
+  EXPECT_NEAR(ratio, expected, 1e-4);
+}
+
+TEST(CpuShading, BackfacingLightGivesNothing) {
+  Scene scene = oneLightScene("D65", 1000.0f);
+  scene.lights[0].direction = {0.0f, 1.0f, 0.0f};  // travelling up, from below the surface
+  UpFacing p(glm::vec3(0.8f), 0.0f, 0.5f);
+  FrameSettings settings;
+  glm::vec3 xyz = shadeOnce(scene, settings, p);
+  EXPECT_EQ(xyz, glm::vec3(0.0f));
+}
+
+TEST(DisplayTransform, OutOfGamutColoursAreCompressedNotClippedToNaN) {
+  const glm::vec3 weights(0.2126f, 0.7152f, 0.0722f);
+  for (glm::vec3 rgb : {glm::vec3(-0.2f, 0.5f, 0.1f), glm::vec3(1.5f, -0.3f, -0.1f),
+                        glm::vec3(-1.0f, -1.0f, -1.0f), glm::vec3(0.0f)}) {
+    glm::vec3 out = shared::compressToGamut(rgb, weights);
+    EXPECT_GE(std::min({out.x, out.y, out.z}), -1e-6f);
+    EXPECT_FALSE(std::isnan(out.x) || std::isnan(out.y) || std::isnan(out.z));
+    float y = glm::dot(rgb, weights);
+    if (y > 0.0f) {
+      EXPECT_NEAR(glm::dot(out, weights), y, 1e-6f);
+    }
+  }
+  glm::vec3 inside(0.2f, 0.3f, 0.4f);
+  EXPECT_EQ(shared::compressToGamut(inside, weights), inside);
+}
+
+TEST(DisplayTransform, ExposureMapsTheSaturationLuminanceToWhite) {
+  FrameSettings settings;
+  settings.ev100 = 10.0f;
+  DisplayTransform t = displayTransform(settings, 0.0f);
+  // D65 white of luminance 1.2·2^10 cd/m² → display RGB (1, 1, 1).
+  glm::vec3 d65(0.95047f, 1.0f, 1.08883f);
+  glm::vec3 rgb = t.toDisplay * (d65 * 1.2f * 1024.0f);
+  EXPECT_NEAR(rgb.x, 1.0f, 2e-3f);
+  EXPECT_NEAR(rgb.y, 1.0f, 2e-3f);
+  EXPECT_NEAR(rgb.z, 1.0f, 2e-3f);
+}
+
+TEST(DisplayTransform, WhiteBalanceMakesTheIlluminantNeutral) {
+  FrameSettings settings;
+  settings.ev100 = 0.0f;
+  settings.whiteBalance = "A";
+  DisplayTransform t = displayTransform(settings, 0.0f);
+  Eigen::Vector3d a = observer("cie1931").integrate(illuminant("A"));
+  glm::vec3 xyz(static_cast<float>(a.x() / a.y()), 1.0f, static_cast<float>(a.z() / a.y()));
+  glm::vec3 rgb = t.toDisplay * xyz;
+  EXPECT_NEAR(rgb.x / rgb.y, 1.0f, 1e-3f);
+  EXPECT_NEAR(rgb.z / rgb.y, 1.0f, 1e-3f);
+}
+
+}  // namespace
+}  // namespace prism::render

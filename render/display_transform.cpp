@@ -1,0 +1,51 @@
+#include "render/display_transform.h"
+
+#include "render/shared_shading.h"
+#include "spectral/camera_matrix.h"
+#include "spectral/colour_space.h"
+#include "spectral/illuminant.h"
+#include "spectral/observer.h"
+
+namespace prism::render {
+namespace {
+
+glm::mat3 toGlm(const Eigen::Matrix3d& m) {
+  glm::mat3 g;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) g[c][r] = static_cast<float>(m(r, c));  // GLM is column-major
+  }
+  return g;
+}
+
+Eigen::Matrix3d tristimulusToXyzD(const FrameSettings& settings) {
+  const Observer& obs = observer(settings.observer);
+  if (settings.mode == RenderMode::Rgb || !obs.isCamera) return Eigen::Matrix3d::Identity();
+  return fitCameraToXyz(obs, illuminant("D65"), observer("cie1931")).cameraToXyz;
+}
+
+}  // namespace
+
+glm::mat3 tristimulusToXyz(const FrameSettings& settings) {
+  return toGlm(tristimulusToXyzD(settings));
+}
+
+DisplayTransform displayTransform(const FrameSettings& settings, float sceneEv100) {
+  const RgbColourSpace& display = colourSpace(settings.display);
+  Eigen::Matrix3d m = tristimulusToXyzD(settings);
+  if (settings.whiteBalance != "none") {
+    const Observer& cie = observer("cie1931");
+    Eigen::Vector3d source = cie.integrate(illuminant(settings.whiteBalance));
+    source /= source.y();
+    m = chromaticAdaptation(settings.adaptation, source, display.whiteXyz()) * m;
+  }
+  float exposure = shared::exposureScale(settings.ev100.value_or(sceneEv100));
+  DisplayTransform t;
+  t.toDisplay = toGlm(display.xyzToRgb * m) * exposure;
+  t.luminanceWeights = glm::vec3(static_cast<float>(display.rgbToXyz(1, 0)),
+                                 static_cast<float>(display.rgbToXyz(1, 1)),
+                                 static_cast<float>(display.rgbToXyz(1, 2)));
+  t.transfer = display.transfer == Transfer::Bt2020 ? 1 : 0;
+  return t;
+}
+
+}  // namespace prism::render

@@ -1,0 +1,23 @@
+// The post pass's colour maths that is per frame rather than per pixel: one 3×3 from the
+// lighting pass's tristimulus to linear display RGB, folding in exposure, the camera matrix (for
+// a camera observer), white balance and the display's primaries.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "render/frame_settings.h"
+
+namespace prism::render {
+
+struct DisplayTransform {
+  glm::mat3 toDisplay{1.0f};        // tristimulus → linear display RGB, exposure included
+  glm::vec3 luminanceWeights{0.0f};  // the display's Y row: luminance of a linear RGB
+  int transfer = 0;                  // 0 sRGB curve (sRGB, Display P3), 1 BT.2020
+};
+
+DisplayTransform displayTransform(const FrameSettings& settings, float sceneEv100);
+
+// The tristimulus → XYZ part alone (identity for CIE observers), for linear outputs.
+glm::mat3 tristimulusToXyz(const FrameSettings& settings);
+
+}  // namespace prism::render

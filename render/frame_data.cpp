@@ -1,0 +1,185 @@
+#include "render/frame_data.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "spectral/colour_space.h"
+#include "spectral/error.h"
+#include "spectral/illuminant.h"
+#include "spectral/observer.h"
+#include "spectral/sampling.h"
+
+namespace prism::render {
+namespace {
+
+constexpr double kLumensPerWatt = 683.0;
+
+glm::vec4 toVec4(const Eigen::Vector3d& v) {
+  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()), 0.0f};
+}
+
+// Linear RGB (scene colour space) of a reflectance under D65, clamped to [0, 1].
+glm::vec4 reflectanceRgb(const Spectrum& reflectance, const RgbColourSpace& space) {
+  static const Spectrum d65 = illuminant("D65");
+  Eigen::Vector3d xyz = reflectanceTristimulus(observer("cie1931"), reflectance, d65);
+  Eigen::Vector3d rgb = (space.xyzToRgb * xyz).cwiseMax(0.0).cwiseMin(1.0);
+  return toVec4(rgb);
+}
+
+// Reflectance of a conductor at normal incidence: ((n − 1)² + k²) / ((n + 1)² + k²).
+Spectrum normalIncidenceReflectance(const ConductorIor& ior) {
+  Spectrum r;
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    double n = ior.n[i], k = ior.k[i];
+    r[i] = ((n - 1) * (n - 1) + k * k) / ((n + 1) * (n + 1) + k * k);
+  }
+  return r;
+}
+
+glm::vec4 at4(const Spectrum& s, const glm::vec4& lambdaNm, float scale = 1.0f) {
+  glm::vec4 v;
+  for (int j = 0; j < 4; ++j) v[j] = static_cast<float>(s.at(lambdaNm[j])) * scale;
+  return v;
+}
+
+void addBatches(FrameData& frame, const FrameSettings& settings, const Scene& scene,
+                std::uint32_t frameIndex) {
+  if (settings.mode == RenderMode::Rgb) {
+    const Eigen::Matrix3d& m = colourSpace(scene.colourSpace).rgbToXyz;
+    shared::GpuBatch batch{};
+    batch.toX = toVec4(m.row(0).transpose());
+    batch.toY = toVec4(m.row(1).transpose());
+    batch.toZ = toVec4(m.row(2).transpose());
+    frame.batches.push_back(batch);
+    return;
+  }
+  const Observer& obs = observer(settings.observer);
+  double scale = kLumensPerWatt;
+  if (obs.isCamera) {
+    // The camera's green of D65 equals D65's Y (cd/m² scale); cameraToXyz does the rest.
+    static const Spectrum d65 = illuminant("D65");
+    scale *= observer("cie1931").integrate(d65).y() / obs.integrate(d65).y();
+  }
+  SamplingSettings sampling = effectiveSampling(settings);
+  std::vector<SampledWavelengths> sampled =
+      sampleWavelengths(sampling, frameIndex, obs.isCamera ? observer("cie1931") : obs);
+  std::vector<IntegrationMatrix> matrices = integrationMatrices(sampled, obs);
+  for (std::size_t b = 0; b < sampled.size(); ++b) {
+    shared::GpuBatch batch{};
+    for (int j = 0; j < 4; ++j) {
+      batch.lambdaNm[j] = static_cast<float>(sampled[b].lambdaNm[static_cast<std::size_t>(j)]);
+      batch.toX[j] = static_cast<float>(matrices[b](0, j) * scale);
+      batch.toY[j] = static_cast<float>(matrices[b](1, j) * scale);
+      batch.toZ[j] = static_cast<float>(matrices[b](2, j) * scale);
+    }
+    frame.batches.push_back(batch);
+  }
+}
+
+}  // namespace
+
+FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
+                         const RgbToSpectrumTable& table, const std::vector<ShadowView>& shadows,
+                         std::uint32_t frameIndex) {
+  if (scene.lights.size() > static_cast<std::size_t>(shared::kMaxLights)) {
+    throw Error(fmt::format("{}: {} lights; the renderer handles at most {}",
+                            scene.file.string(), scene.lights.size(), shared::kMaxLights));
+  }
+  const RgbColourSpace& space = colourSpace(scene.colourSpace);
+  const bool rgbMode = settings.mode == RenderMode::Rgb;
+  FrameData frame;
+  addBatches(frame, settings, scene, frameIndex);
+  const int batchCount = static_cast<int>(frame.batches.size());
+
+  frame.constants.mode = rgbMode                                   ? shared::kModeRgb
+                         : settings.mode == RenderMode::Naive      ? shared::kModeNaive
+                                                                   : shared::kModeJakobHanika;
+  frame.constants.batchCount = batchCount;
+  frame.constants.lightCount = static_cast<int>(scene.lights.size());
+  frame.constants.shadowMapSize = settings.shadowMapSize;
+
+  // Lights and their spectra.
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    shared::GpuLight g{};
+    int type = light.type == LightType::Directional ? shared::kLightDirectional
+               : light.type == LightType::Point     ? shared::kLightPoint
+                                                    : shared::kLightSpot;
+    glm::vec3 direction = glm::normalize(light.direction);
+    g.positionType = glm::vec4(light.position, static_cast<float>(type));
+    g.directionIntensity = glm::vec4(direction, light.intensity);
+    g.cone = glm::vec4(std::cos(glm::radians(light.innerConeDeg)),
+                       std::cos(glm::radians(light.outerConeDeg)), 0.0f, 0.0f);
+    g.shadow = glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f);
+    g.shadowFromWorld = glm::mat4(1.0f);
+    for (const ShadowView& view : shadows) {
+      if (view.lightIndex != static_cast<int>(i)) continue;
+      g.shadow = glm::vec4(static_cast<float>(view.layer), view.normalOffsetM, view.depthBias, 0.0f);
+      g.shadowFromWorld = view.viewProjection;
+    }
+    frame.lights.push_back(g);
+    if (rgbMode) {
+      Eigen::Vector3d xyz = kLumensPerWatt * observer("cie1931").integrate(light.spd);
+      frame.lightSpectra.push_back(toVec4(space.xyzToRgb * xyz));
+    } else {
+      for (const shared::GpuBatch& batch : frame.batches) {
+        frame.lightSpectra.push_back(at4(light.spd, batch.lambdaNm));
+      }
+    }
+  }
+
+  // Background radiance, a light colour of the given luminance.
+  float luminance = scene.backgroundLuminance;
+  if (rgbMode) {
+    frame.lightSpectra.push_back(glm::vec4(scene.background * luminance, 0.0f));
+  } else {
+    static const Spectrum d65 = [] {
+      Spectrum s = illuminant("D65");
+      return s * (1.0 / (kLumensPerWatt * observer("cie1931").integrate(s).y()));
+    }();
+    UnboundedUpsampling up = lookupUnbounded(table, scene.background);
+    for (const shared::GpuBatch& batch : frame.batches) {
+      glm::vec4 v;
+      for (int j = 0; j < 4; ++j) {
+        double r = shared::upsampledReflectance(up.coeffs, batch.lambdaNm[j]) * up.scale;
+        v[j] = static_cast<float>(d65.at(batch.lambdaNm[j]) * r) * luminance;
+      }
+      frame.lightSpectra.push_back(v);
+    }
+  }
+
+  // Materials and their spectra.
+  int spectraCount = 0;
+  for (const Material& m : scene.materials) {
+    shared::GpuMaterial g{};
+    g.baseColourMetallic = glm::vec4(m.baseColour, m.metallic);
+    int kind = m.conductor     ? shared::kMaterialConductor
+               : m.reflectance ? shared::kMaterialMeasured
+                               : shared::kMaterialBaseColour;
+    g.roughnessKind = glm::vec4(m.roughness, static_cast<float>(kind), 0.0f, m.lambertian ? 1.0f : 0.0f);
+    if (kind != shared::kMaterialBaseColour) {
+      g.roughnessKind.z = static_cast<float>(spectraCount++);
+      for (const shared::GpuBatch& batch : frame.batches) {
+        if (rgbMode) {
+          const Spectrum& r = m.conductor ? normalIncidenceReflectance(*m.conductor) : *m.reflectance;
+          frame.materialSpectra.push_back(reflectanceRgb(r, space));
+          frame.materialSpectra.push_back(glm::vec4(0.0f));
+        } else if (m.conductor) {
+          frame.materialSpectra.push_back(at4(m.conductor->n, batch.lambdaNm));
+          frame.materialSpectra.push_back(at4(m.conductor->k, batch.lambdaNm));
+        } else {
+          frame.materialSpectra.push_back(at4(*m.reflectance, batch.lambdaNm));
+          frame.materialSpectra.push_back(glm::vec4(0.0f));
+        }
+      }
+    }
+    frame.materials.push_back(g);
+  }
+  if (frame.materials.empty()) frame.materials.push_back(shared::GpuMaterial{});
+  if (frame.materialSpectra.empty()) frame.materialSpectra.push_back(glm::vec4(0.0f));
+  return frame;
+}
+
+}  // namespace prism::render

@@ -1,0 +1,47 @@
+// The lighting pass's per-frame inputs, built on the CPU: the wavelength batches and their
+// integration matrices, the lights, the material table and every spectrum evaluated at this
+// frame's wavelengths (see shaders/shared/frame_layout.glsl for the layout). The GPU uploads it
+// as it is; the CPU twin (cpu_shading.h) reads the same arrays.
+//
+// Conversions per mode, one place:
+// - Lights: SPD (normalised photometrically) at each wavelength; in RGB mode the SPD's own
+//   linear RGB in the scene's colour space (Y = 1), the colour an RGB engine would be given.
+// - Materials: measured reflectance at each wavelength (RGB mode: its colour under D65);
+//   conductors n and k at each wavelength, never upsampled (RGB mode: F0 = the normal-incidence
+//   reflectance's colour under D65, rendered with Schlick).
+// - Background: a light colour (RGB mode: rgb × luminance; spectral: the D65 white times the
+//   unbounded upsampling of the colour, so a white background is D65, not a flat spectrum).
+// - Integration: the observer's curves over n·pdf, times 683 lm/W, so tristimulus is absolute
+//   (Y in cd/m²). A camera observer is scaled so that its green of D65 equals D65's Y; the post
+//   pass maps camera RGB to XYZ with the fitted camera matrix. RGB mode integrates with the
+//   colour space's RGB → XYZ rows.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/frame_settings.h"
+#include "render/scene.h"
+#include "render/shadow_views.h"
+#include "render/shared_shading.h"
+#include "spectral/rgb_to_spectrum_table.h"
+
+namespace prism::render {
+
+struct FrameData {
+  shared::FrameConstants constants{};
+  std::vector<shared::GpuBatch> batches;
+  std::vector<shared::GpuLight> lights;
+  std::vector<shared::GpuMaterial> materials;  // one per scene material, in scene order
+  std::vector<glm::vec4> lightSpectra;         // (lightCount + 1) × batchCount
+  std::vector<glm::vec4> materialSpectra;      // spectra × batchCount × 2 (at least one entry)
+};
+
+// frameIndex seeds stochastic wavelength strategies (a new set every frame).
+FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
+                         const RgbToSpectrumTable& table, const std::vector<ShadowView>& shadows,
+                         std::uint32_t frameIndex);
+
+}  // namespace prism::render

@@ -1,0 +1,54 @@
+// Everything about how a frame is rendered that is not the scene: resolution, mode, wavelength
+// sampling, observer, display transform. All of it can change between frames without a restart
+// (the renderer rebuilds only what a change needs).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "spectral/colour_space.h"
+#include "spectral/sampling.h"
+
+namespace prism::render {
+
+// rgb: three channels as "wavelengths" (the common practice); naive: box upsampling at
+// 495/570 nm; jakob-hanika: sigmoid upsampling with `sampling`; reference: Jakob–Hanika with
+// kReferenceWavelengths uniform wavelengths over 360–830 nm, whatever `sampling` says.
+enum class RenderMode { Rgb, Naive, JakobHanika, Reference };
+RenderMode renderModeFromName(std::string_view name);  // rgb|naive|jakob-hanika|reference
+std::string_view renderModeName(RenderMode mode);
+
+inline constexpr int kReferenceWavelengths = 472;  // ≈ 1 nm steps over 360–830 nm
+
+enum class ToneMap { None, Reinhard, Aces };
+ToneMap toneMapFromName(std::string_view name);  // none|reinhard|aces
+
+// Where the Jakob–Hanika coefficients come from: the manual eight-fetch blend (bit-identical to
+// the CPU) or one hardware-filtered fetch (faster, an equally smooth interpolant).
+enum class UpsamplingLookup { Manual, Filtered };
+
+struct FrameSettings {
+  int width = 1280;
+  int height = 720;
+  RenderMode mode = RenderMode::JakobHanika;
+  SamplingSettings sampling;          // spectral modes other than reference
+  std::string observer = "cie1931";   // or a camera from data/cameras.csv: raw camera RGB
+  UpsamplingLookup lookup = UpsamplingLookup::Filtered;
+  int shadowMapSize = 2048;
+  // Display transform.
+  std::optional<float> ev100;            // overrides the scene camera's exposure
+  std::string whiteBalance = "none";     // an illuminant name (e.g. "A") adapted to the display white
+  Adaptation adaptation = Adaptation::Bradford;
+  ToneMap toneMap = ToneMap::Aces;
+  std::string display = "srgb";          // srgb | display-p3 | rec2020 (transfer included)
+  bool dither = true;                    // before 8-bit quantisation
+};
+
+// Error naming the setting for sizes, counts and names out of range.
+void validate(const FrameSettings& settings);
+
+// The wavelength sampling the mode actually uses.
+SamplingSettings effectiveSampling(const FrameSettings& settings);
+
+}  // namespace prism::render

@@ -1,0 +1,58 @@
+#include "render/shadow_views.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace prism::render {
+namespace {
+
+// An up vector not parallel to the view direction.
+glm::vec3 upFor(const glm::vec3& direction) {
+  return std::abs(direction.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+}  // namespace
+
+std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize) {
+  Bounds bounds = sceneBounds(scene);
+  glm::vec3 centre = 0.5f * (bounds.min + bounds.max);
+  float radius = std::max(0.5f * glm::length(bounds.max - bounds.min), 1e-3f);
+  float size = static_cast<float>(mapSize);
+
+  std::vector<ShadowView> views;
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    if (!light.castsShadows || light.type == LightType::Point) continue;
+    ShadowView view;
+    view.lightIndex = static_cast<int>(i);
+    view.layer = static_cast<int>(views.size());
+    glm::vec3 direction = glm::normalize(light.direction);
+    if (light.type == LightType::Directional) {
+      glm::vec3 eye = centre - direction * (2.0f * radius);
+      glm::mat4 lightView = glm::lookAt(eye, centre, upFor(direction));
+      glm::mat4 projection = glm::ortho(-radius, radius, -radius, radius, radius, 3.0f * radius);
+      view.viewProjection = projection * lightView;
+      float texelM = 2.0f * radius / size;
+      view.normalOffsetM = 1.5f * texelM;
+      view.depthBias = 1.0f / size;  // one texel's width of depth: the range is 2·radius deep
+    } else {
+      float distance = glm::length(centre - light.position);
+      float nearPlane = std::max(0.05f, distance - radius);
+      float farPlane = std::max(nearPlane * 2.0f, distance + radius);
+      glm::mat4 lightView =
+          glm::lookAt(light.position, light.position + direction, upFor(direction));
+      float fov = 2.0f * glm::radians(std::min(light.outerConeDeg + 2.0f, 89.0f));
+      glm::mat4 projection = glm::perspective(fov, 1.0f, nearPlane, farPlane);
+      view.viewProjection = projection * lightView;
+      float texelM = 2.0f * distance * std::tan(0.5f * fov) / size;
+      view.normalOffsetM = 1.5f * texelM;
+      view.depthBias = 5e-5f;
+    }
+    views.push_back(view);
+  }
+  return views;
+}
+
+}  // namespace prism::render

@@ -1,0 +1,78 @@
+#version 450
+// Spectral lighting pass: shaders/shared/pixel_shading.glsl for every pixel, over the G-buffer,
+// with this frame's data in shader storage buffers (layout: shared/frame_layout.glsl). Writes
+// tristimulus with alpha 1 into an accumulation target blended additively, so that after N
+// frames rgb / a is the mean of N frames (temporal accumulation of stochastic wavelengths).
+#include "shared/prelude.glsl"
+#include "shared/sigmoid.glsl"
+#include "shared/box_upsampling.glsl"
+#include "shared/upsampling.glsl"
+#include "shared/brdf.glsl"
+#include "shared/lights.glsl"
+#include "shared/shadow_filter.glsl"
+#include "shared/frame_layout.glsl"
+#include "common_upsampling.glsl"
+
+layout(std430, binding = 0) readonly buffer Batches { GpuBatch batches[]; };
+layout(std430, binding = 1) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, binding = 3) readonly buffer LightSpectra { vec4 lightSpectra[]; };
+layout(std430, binding = 4) readonly buffer MaterialSpectra { vec4 materialSpectra[]; };
+
+layout(binding = 0) uniform sampler2D gAlbedoMetallic;
+layout(binding = 1) uniform sampler2D gNormalRoughness;
+layout(binding = 2) uniform usampler2D gMaterialId;
+layout(binding = 3) uniform sampler2D gDepth;
+layout(binding = 4) uniform sampler2DArray uShadowMaps;
+layout(binding = 5) uniform sampler3D uUpsamplingTable;
+
+uniform int uMode;
+uniform int uBatchCount;
+uniform int uLightCount;
+uniform int uShadowMapSize;
+uniform int uUpsamplingResolution;
+uniform int uFilteredLookup;
+uniform mat4 uInverseViewProjection;
+uniform vec3 uCameraPosition;
+uniform vec2 uViewportSize;
+
+layout(location = 0) out vec4 oTristimulus;
+
+GpuBatch frameBatch(int b) { return batches[b]; }
+GpuLight frameLight(int l) { return lights[l]; }
+GpuMaterial frameMaterial(int id) { return materials[id]; }
+vec4 frameLightSpectrum(int l, int b) { return lightSpectra[l * uBatchCount + b]; }
+vec4 frameMaterialSpectrum(int s, int b, int j) {
+  return materialSpectra[(s * uBatchCount + b) * 2 + j];
+}
+float shadowDepthAt(int layer, int x, int y) {
+  return texelFetch(uShadowMaps, ivec3(x, y, layer), 0).r;
+}
+vec3 upsamplingCoefficients(vec3 rgb) {
+  return uFilteredLookup != 0
+             ? upsamplingCoefficientsFiltered(uUpsamplingTable, uUpsamplingResolution, rgb)
+             : upsamplingCoefficientsManual(uUpsamplingTable, uUpsamplingResolution, rgb);
+}
+
+#include "shared/pixel_shading.glsl"
+
+void main() {
+  FrameConstants fc = FrameConstants(uMode, uBatchCount, uLightCount, uShadowMapSize);
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  uint id = texelFetch(gMaterialId, p, 0).r;
+  if (id == 0u) {
+    oTristimulus = vec4(shadeBackground(fc), 1.0);
+    return;
+  }
+  vec4 am = texelFetch(gAlbedoMetallic, p, 0);
+  vec4 nr = texelFetch(gNormalRoughness, p, 0);
+  SurfaceSample s;
+  s.position = worldFromDepth(uInverseViewProjection, (vec2(p) + 0.5) / uViewportSize,
+                              texelFetch(gDepth, p, 0).r);
+  s.normal = normalize(nr.xyz);
+  s.albedo = am.rgb;
+  s.metallic = am.a;
+  s.roughness = nr.a;
+  s.material = int(id) - 1;
+  oTristimulus = vec4(shadeSurface(fc, s, uCameraPosition), 1.0);
+}

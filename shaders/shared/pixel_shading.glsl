@@ -1,0 +1,127 @@
+// The lighting pass for one pixel: a G-buffer sample in, tristimulus (XYZ, or camera RGB) out.
+// This is the whole per-pixel computation of the spectral rasteriser, written once; the GPU runs
+// it in shaders/lighting.frag and the CPU twin (render/cpu_shading.h) in tests.
+//
+// Data comes through accessors that each side defines before including this file:
+//   GpuBatch frameBatch(int b);           GpuLight frameLight(int l);
+//   GpuMaterial frameMaterial(int id);    vec4 frameLightSpectrum(int l, int b);
+//   vec4 frameMaterialSpectrum(int s, int b, int j);
+//   float shadowDepthAt(int layer, int x, int y);    (x, y already clamped to the map)
+//   vec3 upsamplingCoefficients(vec3 rgb);           (Jakob–Hanika table lookup)
+//
+// Loop order: per light, the wavelength-independent terms (incidence, shadow, D·G) once; then
+// per batch the albedo spectrum once and every light's contribution, accumulated straight into
+// tristimulus through the batch's integration matrix (integration is linear, so the order of
+// lights and batches does not matter).
+// Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl pixel_shading_accessors.glsl
+
+// m·(p, 1), summed column by column in this order on both sides: a built-in mat4 × vec4 is
+// free to sum in another order (and to fuse), and shadow-map weights amplify the difference.
+PRISM_INLINE vec4 transformPoint(IN(mat4) m, IN(vec3) p) {
+  PRISM_PRECISE vec4 r = m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3];
+  return r;
+}
+
+// A depth-buffer value at texture coordinate uv → world position, through the inverse view-projection.
+PRISM_INLINE vec3 worldFromDepth(IN(mat4) inverseViewProjection, IN(vec2) uv, float depth) {
+  PRISM_PRECISE vec3 ndc = vec3(uv.x * 2.0f - 1.0f, uv.y * 2.0f - 1.0f, depth * 2.0f - 1.0f);
+  vec4 p = transformPoint(inverseViewProjection, ndc);
+  return vec3(p.x, p.y, p.z) / p.w;
+}
+
+// Fraction of the PCF footprint that sees the light (1 for lights without a shadow map).
+PRISM_INLINE float shadowVisibility(IN(GpuLight) light, IN(vec3) position, IN(vec3) normal,
+                                    int size) {
+  int layer = int(light.shadow.x);
+  if (layer < 0) return 1.0f;
+  PRISM_PRECISE vec3 offsetPosition = position + normal * light.shadow.y;
+  vec4 clip = transformPoint(light.shadowFromWorld, offsetPosition);
+  ShadowFootprint f = shadowFootprint(clip, size);
+  if (!f.inside) return 1.0f;
+  float visible = 0.0f;
+  for (int j = 0; j < 4; ++j) {
+    int y = clamp(f.y0 + j, 0, size - 1);
+    float wy = shadowTapWeight(j, f.frac.y);
+    for (int i = 0; i < 4; ++i) {
+      int x = clamp(f.x0 + i, 0, size - 1);
+      visible += wy * shadowTapWeight(i, f.frac.x) *
+                 shadowTest(shadowDepthAt(layer, x, y), f.depth, light.shadow.z);
+    }
+  }
+  return visible;
+}
+
+PRISM_INLINE vec3 integrateBatch(IN(GpuBatch) batch, IN(vec4) radiance) {
+  return vec3(dot(batch.toX, radiance), dot(batch.toY, radiance), dot(batch.toZ, radiance));
+}
+
+// Tristimulus of the background (pixels where no geometry is).
+PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc) {
+  vec3 tristimulus = vec3(0.0f);
+  for (int b = 0; b < fc.batchCount; ++b) {
+    tristimulus += integrateBatch(frameBatch(b), frameLightSpectrum(fc.lightCount, b));
+  }
+  return tristimulus;
+}
+
+PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
+                               IN(vec3) cameraPosition) {
+  PRISM_PRECISE vec3 v = normalize(cameraPosition - s.position);
+  GpuMaterial material = frameMaterial(s.material);
+  int kind = int(material.roughnessKind.y + 0.5f);
+  int spectra = int(material.roughnessKind.z + 0.5f);
+  bool lambertian = material.roughnessKind.w > 0.5f;
+
+  MicrofacetTerms terms[kMaxLights];
+  float irradiance[kMaxLights];
+  for (int l = 0; l < fc.lightCount; ++l) {
+    GpuLight light = frameLight(l);
+    LightIncidence li = lightIncidence(
+        int(light.positionType.w + 0.5f),
+        vec3(light.positionType.x, light.positionType.y, light.positionType.z),
+        vec3(light.directionIntensity.x, light.directionIntensity.y, light.directionIntensity.z),
+        light.directionIntensity.w, light.cone.x, light.cone.y, s.position);
+    terms[l] = microfacetTerms(s.normal, v, li.toLight, s.roughness);
+    if (lambertian) terms[l].specular = 0.0f;
+    irradiance[l] = terms[l].cosLight > 0.0f
+                        ? li.irradiance * shadowVisibility(light, s.position, s.normal,
+                                                           fc.shadowMapSize)
+                        : 0.0f;
+  }
+
+  vec3 coefficients = vec3(0.0f);
+  if (fc.mode == kModeJakobHanika && kind == kMaterialBaseColour) {
+    coefficients = upsamplingCoefficients(s.albedo);  // once per pixel, not per wavelength
+  }
+
+  vec3 tristimulus = vec3(0.0f);
+  for (int b = 0; b < fc.batchCount; ++b) {
+    GpuBatch batch = frameBatch(b);
+    vec4 albedo;
+    if (kind != kMaterialBaseColour) {
+      albedo = frameMaterialSpectrum(spectra, b, 0);
+    } else if (fc.mode == kModeRgb) {
+      albedo = vec4(s.albedo.x, s.albedo.y, s.albedo.z, 0.0f);
+    } else if (fc.mode == kModeNaive) {
+      albedo = boxReflectance4(s.albedo, batch.lambdaNm);
+    } else {
+      albedo = upsampledReflectance4(coefficients, batch.lambdaNm);
+    }
+    vec4 conductorK = kind == kMaterialConductor ? frameMaterialSpectrum(spectra, b, 1)
+                                                 : vec4(0.0f);
+    vec4 radiance = vec4(0.0f);
+    for (int l = 0; l < fc.lightCount; ++l) {
+      vec4 reflection;
+      if (kind != kMaterialConductor) {
+        reflection = metallicRoughnessReflection(terms[l], albedo, s.metallic);
+      } else if (fc.mode == kModeRgb) {
+        reflection = metallicRoughnessReflection(terms[l], albedo, 1.0f);
+      } else {
+        reflection = conductorReflection(terms[l], albedo, conductorK);
+      }
+      radiance += reflection * frameLightSpectrum(l, b) * irradiance[l];
+    }
+    tristimulus += integrateBatch(batch, radiance);
+  }
+  return tristimulus;
+}

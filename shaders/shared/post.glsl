@@ -1,0 +1,46 @@
+// Display transform of the post pass, after exposure and the XYZ → display-RGB matrix (which
+// includes white balance): out-of-gamut compression, then a tone map. The encode to the
+// display's transfer function is transfer.glsl's.
+
+const int kToneMapNone = 0;      // clip to [0, 1]
+const int kToneMapReinhard = 1;  // x / (1 + x) on luminance, hue and saturation kept
+const int kToneMapAces = 2;      // Narkowicz 2015's fit of the ACES RRT + ODT, per channel
+
+// Exposure at ISO 100 (Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", §5.1): a scene
+// luminance of 1.2·2^EV100 cd/m² maps to display white 1.
+PRISM_INLINE float exposureScale(float ev100) { return 1.0f / (1.2f * exp2(ev100)); }
+
+// Colours a spectrum puts outside the display gamut have negative components. Rule: mix the
+// colour towards the grey of the same luminance Y (weights = the display's Y row) just far
+// enough that the smallest component is 0. Luminance and hue angle are kept, saturation is
+// lost; never NaN (a black or grey colour is returned unchanged).
+PRISM_INLINE vec3 compressToGamut(IN(vec3) rgb, IN(vec3) luminanceWeights) {
+  float y = max(dot(rgb, luminanceWeights), 0.0f);
+  float lowest = min(rgb.x, min(rgb.y, rgb.z));
+  if (lowest >= 0.0f) return rgb;
+  if (y <= 0.0f) return vec3(0.0f);
+  float t = y / (y - lowest);  // mix(grey, rgb, t) has its lowest component at 0
+  return vec3(y) + (rgb - vec3(y)) * t;
+}
+
+PRISM_INLINE vec3 toneMapReinhard(IN(vec3) rgb, IN(vec3) luminanceWeights) {
+  float y = dot(rgb, luminanceWeights);
+  if (y <= 0.0f) return vec3(0.0f);
+  return rgb * (1.0f / (1.0f + y));
+}
+
+PRISM_INLINE float acesFilmic(float x) {
+  return clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
+}
+
+PRISM_INLINE vec3 toneMap(int op, IN(vec3) rgb, IN(vec3) luminanceWeights) {
+  if (op == kToneMapReinhard) {
+    return clamp(toneMapReinhard(rgb, luminanceWeights), vec3(0.0f), vec3(1.0f));
+  }
+  if (op == kToneMapAces) return vec3(acesFilmic(rgb.x), acesFilmic(rgb.y), acesFilmic(rgb.z));
+  return clamp(rgb, vec3(0.0f), vec3(1.0f));
+}
+
+// Triangular-distributed dither of ±1 LSB at 8 bits from two uniform numbers, added before
+// quantisation so smooth gradients do not band.
+PRISM_INLINE float ditherOffset(float u1, float u2) { return (u1 + u2 - 1.0f) / 255.0f; }

@@ -1,0 +1,41 @@
+// Percentage-closer filtering of a shadow map (Reeves et al. 1987): the fraction of a 3×3 grid
+// of bilinear depth comparisons that sees the light, i.e. a tent-shaped footprint over 4×4
+// texels. Shared code only computes where to look and how to weigh; each side fetches the
+// stored depths (texelFetch on the GPU, an array on the CPU).
+
+struct ShadowFootprint {
+  int x0;      // texel column of the footprint's first column
+  int y0;      // texel row of the footprint's first row
+  vec2 frac;   // position inside the central texel, for the bilinear weights
+  float depth; // the receiver's depth in the light's [0, 1] depth range
+  bool inside; // false outside the light's frustum: lit
+};
+
+// lightClip: the point in the light's clip space (after the shadow matrix, before the divide).
+PRISM_INLINE ShadowFootprint shadowFootprint(IN(vec4) lightClip, int size) {
+  ShadowFootprint f;
+  PRISM_PRECISE vec3 ndc = vec3(lightClip.x, lightClip.y, lightClip.z) / lightClip.w;
+  PRISM_PRECISE vec3 uvz = ndc * 0.5f + vec3(0.5f);
+  f.inside = lightClip.w > 0.0f && uvz.x >= 0.0f && uvz.x <= 1.0f && uvz.y >= 0.0f &&
+             uvz.y <= 1.0f && uvz.z <= 1.0f;
+  PRISM_PRECISE vec2 texel = vec2(uvz.x, uvz.y) * float(size) - vec2(0.5f);
+  vec2 base = floor(texel);
+  f.frac = texel - base;
+  f.x0 = int(base.x) - 1;
+  f.y0 = int(base.y) - 1;
+  f.depth = uvz.z;
+  return f;
+}
+
+// Weight of footprint column (or row) i ∈ 0..3: the three bilinear taps at offsets −1, 0, +1
+// cover weights (1 − f, 1, 1, f) / 3.
+PRISM_INLINE float shadowTapWeight(int i, float frac) {
+  if (i == 0) return (1.0f - frac) / 3.0f;
+  if (i == 3) return frac / 3.0f;
+  return 1.0f / 3.0f;
+}
+
+// 1 when the receiver (with its bias) is no farther from the light than the stored occluder.
+PRISM_INLINE float shadowTest(float storedDepth, float receiverDepth, float bias) {
+  return receiverDepth - bias <= storedDepth ? 1.0f : 0.0f;
+}

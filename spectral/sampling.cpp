@@ -61,9 +61,10 @@ struct ResponsePdf {
 SamplingStrategy samplingStrategyFromName(std::string_view name) {
   if (name == "uniform") return SamplingStrategy::Uniform;
   if (name == "stratified") return SamplingStrategy::Stratified;
+  if (name == "rotated") return SamplingStrategy::Rotated;
   if (name == "importance") return SamplingStrategy::Importance;
   throw Error("unknown sampling strategy '" + std::string(name) +
-              "' (known: uniform, stratified, importance)");
+              "' (known: uniform, stratified, rotated, importance)");
 }
 
 void validate(const SamplingSettings& s) {
@@ -91,10 +92,12 @@ std::vector<SampledWavelengths> sampleWavelengths(const SamplingSettings& s, std
     }
     return batches;
   }
+  constexpr double kGoldenRatioConjugate = 0.6180339887498949;
+  const double rotation = std::fmod(0.5 + static_cast<double>(seed) * kGoldenRatioConjugate, 1.0);
   for (int i = 0; i < n; ++i) {
-    double offset = s.strategy == SamplingStrategy::Uniform
-                        ? 0.5
-                        : static_cast<double>(shared::randomFloat(seed, static_cast<std::uint32_t>(i)));
+    double offset = s.strategy == SamplingStrategy::Uniform   ? 0.5
+                    : s.strategy == SamplingStrategy::Rotated ? rotation
+                    : static_cast<double>(shared::randomFloat(seed, static_cast<std::uint32_t>(i)));
     batches[static_cast<std::size_t>(i / 4)].lambdaNm[static_cast<std::size_t>(i % 4)] =
         s.minNm + (i + offset) * width / n;
     batches[static_cast<std::size_t>(i / 4)].pdf[static_cast<std::size_t>(i % 4)] = 1.0 / width;

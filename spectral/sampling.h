@@ -9,6 +9,11 @@
 //               Riemann sum, deterministic.
 //   Stratified  one uniform jitter per stratum (seeded per pixel and frame, shaders/shared/
 //               random.glsl): unbiased, converging to the integral under accumulation.
+//   Rotated     the uniform grid shifted by one offset per frame, the golden-ratio sequence
+//               frac(½ + seed·0.618…): each frame has the midpoint rule's small error, and
+//               frames accumulated fill the gaps evenly, so the mean converges to the integral
+//               about as 1/frames (independent jitter converges as 1/√frames). Seed 0 is
+//               Uniform. For renderers accumulating frames while nothing moves.
 //   Importance  stratified in the CDF of the observer's summed response x̄+ȳ+z̄ (piecewise
 //               constant per 1 nm bin, floored at 1e-3 of its mean so no wavelength has pdf 0).
 #pragma once
@@ -29,8 +34,8 @@ struct SampledWavelengths {
   std::array<double, 4> pdf{};  // per nm
 };
 
-enum class SamplingStrategy { Uniform, Stratified, Importance };
-SamplingStrategy samplingStrategyFromName(std::string_view name);  // uniform|stratified|importance
+enum class SamplingStrategy { Uniform, Stratified, Rotated, Importance };
+SamplingStrategy samplingStrategyFromName(std::string_view name);  // uniform|stratified|rotated|importance
 
 struct SamplingSettings {
   int count = 16;  // a multiple of 4, 4–1000

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -395,6 +397,26 @@ TEST_F(SceneFolder, GltfPrimitivesMustBeTriangles) {
   write("m.gltf", text);
   fs::path f = scene(R"("a": {})", "", R"({"gltf": "m.gltf"})");
   EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), "m.gltf: /meshes/0/primitives/0/mode: only triangles (mode 4) are supported, got 1"));
+}
+
+TEST_F(SceneFolder, NonFiniteVertexDataIsAnErrorNotANaNPixel) {
+  // glTF buffers are raw floats and may hold NaN: refused at load, naming the accessor element,
+  // so that no NaN normal or position ever reaches the G-buffer.
+  const float positions[9] = {0, 0, 0, 1, std::numeric_limits<float>::quiet_NaN(), 0, 0, 1, 0};
+  {
+    std::ofstream bin(mDir / "nan.bin", std::ios::binary);
+    bin.write(reinterpret_cast<const char*>(positions), sizeof positions);
+  }
+  write("nan.gltf", R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+    "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+    "buffers": [{"uri": "nan.bin", "byteLength": 36}],
+    "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                   "min": [0, 0, 0], "max": [1, 1, 0]}]})");
+  fs::path f = scene(R"("a": {})", "", R"({"gltf": "nan.gltf"})");
+  std::string error = errorOf([&] { loadScene(f); });
+  EXPECT_TRUE(contains(error, "nan.gltf: ")) << error;
+  EXPECT_TRUE(contains(error, "element 1 is not finite")) << error;
 }
 
 // The example scenes in scenes/ are what users start from: each must load.

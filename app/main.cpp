@@ -183,6 +183,7 @@ int main(int argc, char** argv) {
     cmd->add_option("--adaptation", o.adaptation, "bradford, cat02 or von-kries")->capture_default_str();
     cmd->add_option("--ev", ev, "exposure EV100 (default: the scene camera's)");
     cmd->add_option("--shadow-map-size", o.shadowMapSize, "texels per side")->capture_default_str();
+    cmd->add_flag("--gizmos", o.gizmos, "draw point and spot lights as glowing markers (forward pass)");
   };
   addRenderSettings(renderCmd, render.settings, renderRange, renderEv, nullptr);
 

@@ -50,6 +50,7 @@ render::FrameSettings frameSettings(const RenderSettingsOptions& o) {
   s.adaptation = adaptationFromName(o.adaptation);
   s.ev100 = o.ev100;
   s.shadowMapSize = o.shadowMapSize;
+  s.lightGizmos = o.gizmos;
   render::validate(s);
   return s;
 }

@@ -29,6 +29,7 @@ struct RenderSettingsOptions {
   std::string adaptation = "bradford";
   std::optional<float> ev100;
   int shadowMapSize = 2048;
+  bool gizmos = false;  // light gizmos in the forward pass
 };
 render::FrameSettings frameSettings(const RenderSettingsOptions& options);
 

@@ -36,6 +36,7 @@ struct FrameSettings {
   std::string observer = "cie1931";   // or a camera from data/cameras.csv: raw camera RGB
   UpsamplingLookup lookup = UpsamplingLookup::Filtered;
   int shadowMapSize = 2048;
+  bool lightGizmos = false;  // forward pass: an emissive marker at each point and spot light
   // Display transform.
   std::optional<float> ev100;            // overrides the scene camera's exposure
   std::string whiteBalance = "none";     // an illuminant name (e.g. "A") adapted to the display white

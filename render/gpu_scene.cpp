@@ -5,29 +5,31 @@
 
 namespace prism::render {
 
+GpuMesh uploadMesh(const Mesh& mesh) {
+  GpuMesh g;
+  g.material = mesh.material;
+  g.vertices = gpu::Buffer::fromSpan(std::span<const Vertex>(mesh.vertices), mesh.name + " vertices", 0);
+  g.indices = gpu::Buffer::fromSpan(std::span<const std::uint32_t>(mesh.indices), mesh.name + " indices", 0);
+  gpu::VertexArrayDesc desc;
+  desc.attributes = {
+      {0, 3, GL_FLOAT, false, false, static_cast<GLuint>(offsetof(Vertex, position))},
+      {1, 3, GL_FLOAT, false, false, static_cast<GLuint>(offsetof(Vertex, normal))},
+      {2, 2, GL_FLOAT, false, false, static_cast<GLuint>(offsetof(Vertex, uv))},
+      {3, 4, GL_FLOAT, false, false, static_cast<GLuint>(offsetof(Vertex, tangent))},
+  };
+  desc.vertices = &g.vertices;
+  desc.strideBytes = sizeof(Vertex);
+  desc.indices = &g.indices;
+  desc.label = mesh.name;
+  g.vertexArray = gpu::VertexArray(desc);
+  return g;
+}
+
 GpuScene::GpuScene(const Scene& scene) {
   mMeshes.reserve(scene.meshes.size());
   for (const Mesh& mesh : scene.meshes) {
     if (mesh.indices.empty()) continue;  // nothing to draw, and GL has no empty buffers
-    GpuMesh g;
-    g.material = mesh.material;
-    g.vertices = gpu::Buffer::fromSpan(std::span<const Vertex>(mesh.vertices), mesh.name + " vertices",
-                                       0);
-    g.indices = gpu::Buffer::fromSpan(std::span<const std::uint32_t>(mesh.indices),
-                                      mesh.name + " indices", 0);
-    gpu::VertexArrayDesc desc;
-    desc.attributes = {
-        {0, 3, GL_FLOAT, false, false, static_cast<GLuint>(offsetof(Vertex, position))},
-        {1, 3, GL_FLOAT, false, false, static_cast<GLuint>(offsetof(Vertex, normal))},
-        {2, 2, GL_FLOAT, false, false, static_cast<GLuint>(offsetof(Vertex, uv))},
-        {3, 4, GL_FLOAT, false, false, static_cast<GLuint>(offsetof(Vertex, tangent))},
-    };
-    desc.vertices = &g.vertices;
-    desc.strideBytes = sizeof(Vertex);
-    desc.indices = &g.indices;
-    desc.label = mesh.name;
-    g.vertexArray = gpu::VertexArray(desc);
-    mMeshes.push_back(std::move(g));
+    mMeshes.push_back(uploadMesh(mesh));
   }
   mTextures.reserve(scene.textures.size());
   for (const Image& image : scene.textures) {

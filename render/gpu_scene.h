@@ -19,6 +19,9 @@ struct GpuMesh {
   int material = 0;
 };
 
+// One mesh on the GPU (its vertex array reads its own two buffers).
+GpuMesh uploadMesh(const Mesh& mesh);
+
 class GpuScene {
  public:
   explicit GpuScene(const Scene& scene);  // an OpenGL 4.5 context must be current

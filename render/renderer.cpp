@@ -1,9 +1,14 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "render/display_transform.h"
+#include "render/procedural_mesh.h"
+#include "spectral/observer.h"
 #include "render/upsampling_texture.h"
 #include "spectral/data_files.h"
 
@@ -64,8 +69,10 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
       mShadowProgram(passProgram("shadow.vert", "shadow.frag", "shadow pass")),
       mGBufferProgram(passProgram("gbuffer.vert", "gbuffer.frag", "g-buffer pass")),
       mLightingProgram(passProgram("fullscreen.vert", "lighting.frag", "lighting pass")),
+      mForwardProgram(passProgram("forward.vert", "forward.frag", "forward pass")),
       mPostProgram(passProgram("fullscreen.vert", "post.frag", "post pass")),
-      mFullScreen(gpu::VertexArray::attributeless("full-screen triangle")) {
+      mFullScreen(gpu::VertexArray::attributeless("full-screen triangle")),
+      mGizmo(uploadMesh(makeSphere(glm::vec3(0.0f), 1.0f, 16))) {
   validate(mSettings);
   createShadowMaps();
   createTargets();
@@ -113,6 +120,7 @@ void Renderer::createTargets() {
   mMaterialId = target(w, h, GL_R32UI, "g-buffer material id");
   mDepth = target(w, h, GL_DEPTH_COMPONENT32F, "g-buffer depth");
   mAccumulation = target(w, h, GL_RGBA32F, "tristimulus accumulation");
+  mForwardDepth = target(w, h, GL_DEPTH_COMPONENT32F, "forward depth (copied)");
   mDisplay = target(w, h, GL_RGBA8, "display");
   gpu::FramebufferDesc g;
   g.colour = {{&mAlbedoMetallic, 0}, {&mNormalRoughness, 0}, {&mMaterialId, 0}};
@@ -123,6 +131,11 @@ void Renderer::createTargets() {
   a.colour = {{&mAccumulation, 0}};
   a.label = "accumulation";
   mAccumulationTarget = gpu::Framebuffer(a);
+  gpu::FramebufferDesc f;
+  f.colour = {{&mAccumulation, 0}};
+  f.depth.texture = &mForwardDepth;
+  f.label = "forward";
+  mForwardTarget = gpu::Framebuffer(f);
   gpu::FramebufferDesc d;
   d.colour = {{&mDisplay, 0}};
   d.label = "display";
@@ -145,6 +158,10 @@ void Renderer::renderFrame() {
   gbufferPass();
   hook("lighting");
   lightingPass();
+  if (mSettings.lightGizmos) {
+    hook("forward");
+    forwardPass();
+  }
   hook("post");
   postPass();
   hook("");
@@ -242,6 +259,42 @@ void Renderer::lightingPass() {
   mFullScreen.draw(3);
   glDisable(GL_BLEND);
   ++mAccumulated;
+}
+
+// Each point and spot light as a small sphere glowing in its own colour at twice the exposure's
+// white, added over the lit image where nothing in the G-buffer is in front of it.
+void Renderer::forwardPass() {
+  if (mScene.lights.empty()) return;
+  mGBuffer.blitDepthTo(mForwardTarget);
+  mForwardTarget.bind();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_CULL_FACE);  // additive: each pixel of the closed sphere once, its front
+  glCullFace(GL_BACK);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  Bounds bounds = sceneBounds(mScene);
+  float radius = std::max(0.01f * glm::length(bounds.max - bounds.min), 1e-3f);
+  float white = 1.2f * std::exp2(mSettings.ev100.value_or(mCamera.ev100));
+  glm::mat3 toXyz = tristimulusToXyz(mSettings);
+  glm::mat3 fromXyz = glm::inverse(toXyz);
+  const Observer& cie = observer("cie1931");
+  mForwardProgram.use();
+  mForwardProgram.setUniform("uViewProjection", mCameraTransform.viewProjection);
+  for (const Light& light : mScene.lights) {
+    if (light.type == LightType::Directional) continue;
+    Eigen::Vector3d xyz = cie.integrate(light.spd);
+    glm::vec3 colour(static_cast<float>(xyz.x() / xyz.y()), 1.0f, static_cast<float>(xyz.z() / xyz.y()));
+    glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), light.position), glm::vec3(radius));
+    mForwardProgram.setUniform("uModel", model);
+    // In the lighting pass's tristimulus space (XYZ, or camera RGB for a camera observer).
+    mForwardProgram.setUniform("uTristimulus", fromXyz * (colour * (2.0f * white)));
+    mGizmo.vertexArray.draw();
+  }
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
 }
 
 void Renderer::postPass() {

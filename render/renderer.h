@@ -1,6 +1,7 @@
 // The deferred spectral rasteriser: for each frame, shadow maps for the lights that cast them,
-// the G-buffer, the spectral lighting pass (accumulating into a tristimulus target) and the
-// post pass to an 8-bit display image. Settings change between frames without a restart;
+// the G-buffer, the spectral lighting pass (accumulating into a tristimulus target), a forward
+// pass over the G-buffer's copied depth (light gizmos) and the post pass to an 8-bit display
+// image. Settings change between frames without a restart;
 // accumulation restarts whenever they (or the camera) change.
 //
 // The per-frame CPU work is small (wavelengths, integration matrices and spectra at them:
@@ -40,7 +41,7 @@ class Renderer {
   void resetAccumulation() { mAccumulated = 0; }
 
   // Pass boundaries for timing (e.g. gpu timer scopes): called with "shadow", "gbuffer",
-  // "lighting", "post" before each pass and with "" after the last.
+  // "lighting", "forward", "post" before each pass and with "" after the last.
   using PassHook = std::function<void(std::string_view pass)>;
   void setPassHook(PassHook hook) { mPassHook = std::move(hook); }
 
@@ -70,6 +71,7 @@ class Renderer {
   void shadowPass();
   void gbufferPass();
   void lightingPass();
+  void forwardPass();
   void postPass();
   void uploadFrameData();
 
@@ -86,13 +88,14 @@ class Renderer {
   std::uint32_t mFrameIndex = 0;
   PassHook mPassHook;
 
-  gpu::Program mShadowProgram, mGBufferProgram, mLightingProgram, mPostProgram;
+  gpu::Program mShadowProgram, mGBufferProgram, mLightingProgram, mForwardProgram, mPostProgram;
   gpu::VertexArray mFullScreen;
+  GpuMesh mGizmo;  // a unit sphere
   gpu::Texture2DArray mShadowMaps;
   std::vector<gpu::Framebuffer> mShadowFramebuffers;
   gpu::Texture2D mAlbedoMetallic, mNormalRoughness, mMaterialId, mDepth;
-  gpu::Texture2D mAccumulation, mDisplay;
-  gpu::Framebuffer mGBuffer, mAccumulationTarget, mDisplayTarget;
+  gpu::Texture2D mAccumulation, mForwardDepth, mDisplay;
+  gpu::Framebuffer mGBuffer, mAccumulationTarget, mForwardTarget, mDisplayTarget;
   gpu::Buffer mBatches, mLights, mMaterials, mLightSpectra, mMaterialSpectra;
 };
 

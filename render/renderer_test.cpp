@@ -206,6 +206,42 @@ TEST(Renderer, StratifiedAccumulationConvergesToTheReference) {
   EXPECT_LT(many, one / 4.0);
 }
 
+TEST(Renderer, ForwardPassAddsLightGizmosWhereTheGBufferDoesNotHideThem) {
+  gpu::HeadlessContext context;
+  Scene scene = loadScene(kScenes / "textured_gltf.json");
+  scene.lights[0].position = {0.0f, 0.8f, 0.8f};  // the spot light, moved into view
+  FrameSettings settings = smallFrame(RenderMode::JakobHanika);
+  Renderer renderer(scene, table(), settings);
+  renderer.renderFrame();
+  std::vector<float> without = renderer.readMeanTristimulus();
+  settings.lightGizmos = true;
+  renderer.setSettings(settings);
+  renderer.renderFrame();
+  std::vector<float> with = renderer.readMeanTristimulus();
+  // The spot light's position on screen (rows top first, as read back).
+  glm::vec4 clip = renderer.cameraTransform().viewProjection * glm::vec4(scene.lights[0].position, 1.0f);
+  ASSERT_GT(clip.w, 0.0f);
+  int x = static_cast<int>((clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(settings.width));
+  int y = static_cast<int>((0.5f - clip.y / clip.w * 0.5f) * static_cast<float>(settings.height));
+  ASSERT_TRUE(x >= 0 && x < settings.width && y >= 0 && y < settings.height);
+  std::size_t at = static_cast<std::size_t>(y * settings.width + x) * 3 + 1;
+  float white = 1.2f * std::exp2(scene.camera.ev100);
+  EXPECT_NEAR(with[at] - without[at], 2.0f * white, 0.01f * white);  // Y of the marker
+  // Far from any light nothing changed, and the frame count did not move.
+  EXPECT_EQ(with[1], without[1]);
+  EXPECT_EQ(renderer.accumulatedFrames(), 1);
+
+  // Under the floor, the G-buffer's copied depth hides it entirely.
+  scene.lights[0].position = {0.0f, -0.3f, 0.0f};
+  Renderer hidden(scene, table(), settings);
+  hidden.renderFrame();
+  std::vector<float> withHidden = hidden.readMeanTristimulus();
+  settings.lightGizmos = false;
+  hidden.setSettings(settings);
+  hidden.renderFrame();
+  EXPECT_EQ(withHidden, hidden.readMeanTristimulus());
+}
+
 TEST(Renderer, SettingsChangeWithoutRestartAndRestartAccumulation) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kScenes / "spheres_d65.json");

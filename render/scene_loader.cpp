@@ -40,29 +40,6 @@ std::string joined(const std::vector<std::string>& items) {
   return out;
 }
 
-// A user's two-column spectrum (header, wavelength_nm and value), each value in
-// [0, maxValue], with the place of the first that is not: "FILE:LINE:2: …".
-TabulatedSpectrum readUserSpectrum(const fs::path& path, double maxValue, Extrapolation extrapolation) {
-  CsvTable csv = CsvTable::read(path);
-  if (csv.header().size() != 2)
-    throw Error(csv.path() + ":1: a spectrum file has two columns (wavelength in nm, value), found " +
-                std::to_string(csv.header().size()));
-  std::vector<double> lambdas, values;
-  std::vector<int> lines;
-  for (const CsvRow& row : csv.rows()) {
-    lambdas.push_back(csv.number(row, 0));
-    double v = csv.number(row, 1);
-    if (v < 0.0 || v > maxValue)
-      throw Error(csv.path() + ":" + std::to_string(row.line) + ":2: value " + row.fields[1] +
-                  (std::isfinite(maxValue) ? " is outside [0, " + schema::describe(maxValue) + "]"
-                                           : " is negative"));
-    values.push_back(v);
-    lines.push_back(row.line);
-  }
-  checkIncreasingWavelengths(csv.path(), lambdas, lines);
-  return TabulatedSpectrum(std::move(lambdas), std::move(values), extrapolation);
-}
-
 // pbrt-v4's RGBIlluminantSpectrum (src/pbrt/util/spectrum.h; Jakob & Hanika 2019 §5): the
 // colour's reflectance at half its largest channel, lit by the colour space's white; only the
 // chromaticity matters here, the photometric normalisation sets the level.
@@ -162,7 +139,7 @@ class SceneParser {
         label = "csv:" + csv->string();
         try {
           // Emitters: zero outside the measured band (spectral/spectrum.h).
-          s = readUserSpectrum(path, std::numeric_limits<double>::infinity(), Extrapolation::Zero).toDense();
+          s = readSpectrumCsv(path, Extrapolation::Zero, 0.0).toDense();
         } catch (const Error& e) {
           csv->fail(e.what());
         }
@@ -270,7 +247,7 @@ class SceneParser {
       fs::path path = file(csv);
       try {
         // Reflectances: the last measured value is the best estimate of the next.
-        m.reflectance = readUserSpectrum(path, 1.0, Extrapolation::Clamp).toDense();
+        m.reflectance = readSpectrumCsv(path, Extrapolation::Clamp, 0.0, 1.0).toDense();
       } catch (const Error& e) {
         csv.fail(e.what());
       }

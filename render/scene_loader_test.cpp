@@ -319,7 +319,7 @@ TEST_F(SceneFolder, SpdCsvWithBadDataNamesFileLineAndColumn) {
   fs::path paint = write("paint.csv", "wavelength_nm,reflectance\n400,0.5\n500,1.5\n");
   f = sceneWithMaterial(R"({"reflectance": {"csv": "paint.csv"}})");
   EXPECT_EQ(errorOf([&] { loadScene(f); }),
-            f.string() + ": /materials/m/reflectance/csv: " + paint.string() + ":3:2: value 1.5 is outside [0, 1.0]");
+            f.string() + ": /materials/m/reflectance/csv: " + paint.string() + ":3:2: value 1.5 is outside [0, 1]");
 }
 
 TEST_F(SceneFolder, GltfUrisMustStayInsideTheSceneFolder) {

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include "spectral/error.h"
 
@@ -137,7 +138,8 @@ TabulatedSpectrum SpectraTable::spectrum(std::string_view name, Extrapolation ex
                            extrapolation);
 }
 
-TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path, Extrapolation extrapolation) {
+TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path, Extrapolation extrapolation,
+                                  double minValue, double maxValue) {
   CsvTable csv = CsvTable::read(path);
   if (csv.header().size() != 2)
     throw Error(csv.path() + ":1: a spectrum file has two columns (wavelength in nm, value), found " +
@@ -146,7 +148,15 @@ TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path, Extrapolati
   std::vector<int> lines;
   for (const CsvRow& row : csv.rows()) {
     lambdas.push_back(csv.number(row, 0));
-    values.push_back(csv.number(row, 1));
+    double v = csv.number(row, 1);
+    if (v < minValue || v > maxValue) {
+      std::ostringstream bounds;
+      bounds << "[" << minValue << ", " << maxValue << "]";
+      throw Error(csv.path() + ":" + std::to_string(row.line) + ":2: value " + row.fields[1] +
+                  (minValue == 0.0 && std::isinf(maxValue) ? " is negative"
+                                                           : " is outside " + bounds.str()));
+    }
+    values.push_back(v);
     lines.push_back(row.line);
   }
   checkIncreasingWavelengths(csv.path(), lambdas, lines);

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <filesystem>
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
@@ -65,7 +66,11 @@ class SpectraTable {
 void checkIncreasingWavelengths(const std::string& path, std::span<const double> lambdasNm,
                                 std::span<const int> lines);
 
-// A user spectrum file (header + wavelength_nm,value).
-TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path, Extrapolation extrapolation);
+// A user spectrum file (header + wavelength_nm,value). A value outside [minValue, maxValue] is
+// an Error at its place: "PATH:LINE:2: value V is outside [0, 1]" (or "is negative" for a
+// bound of 0 below and none above).
+TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path, Extrapolation extrapolation,
+                                  double minValue = -std::numeric_limits<double>::infinity(),
+                                  double maxValue = std::numeric_limits<double>::infinity());
 
 }  // namespace prism

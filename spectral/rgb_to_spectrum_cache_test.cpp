@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdlib>
 #include <fstream>
+#include <string>
 
 namespace prism {
 namespace {
@@ -11,11 +14,17 @@ namespace {
 class CacheTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    mDir = std::filesystem::path(::testing::TempDir()) / "prism_cache_test";
+    // One folder per test and process: ctest runs these tests in parallel processes.
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    mDir = std::filesystem::path(::testing::TempDir()) /
+           ("prism_cache_test_" + std::string(test->name()) + "_" + std::to_string(getpid()));
     std::filesystem::remove_all(mDir);
     setenv("PRISM_CACHE_DIR", mDir.c_str(), 1);
   }
-  void TearDown() override { unsetenv("PRISM_CACHE_DIR"); }
+  void TearDown() override {
+    unsetenv("PRISM_CACHE_DIR");
+    std::filesystem::remove_all(mDir);
+  }
   std::filesystem::path mDir;
 };
 

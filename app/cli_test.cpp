@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "imaging/exr_file.h"
+
 namespace {
 
 struct Result {
@@ -226,6 +228,18 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
                    " --width 64 --height 36 --mode reference");
   ASSERT_EQ(exr.exitCode, 0) << exr.err;
   EXPECT_GT(std::filesystem::file_size(dir / "c.exr"), 1000u);
+  EXPECT_EQ(prism::imaging::readExr(dir / "c.exr").colour, prism::imaging::ColourMeaning::Xyz);
+  // A camera as the observer: raw camera RGB in the EXR; the PNG through the fitted matrix,
+  // white-balanced, tone-mapped and encoded for another display.
+  Result camera = run("render " + scenes + "/spheres_led.json -o " + (dir / "cam.exr").string() +
+                      " --width 64 --height 36 --camera nikon_d850");
+  ASSERT_EQ(camera.exitCode, 0) << camera.err;
+  EXPECT_EQ(prism::imaging::readExr(dir / "cam.exr").colour, prism::imaging::ColourMeaning::CameraRgb);
+  Result display = run("render " + scenes + "/spheres_led.json -o " + (dir / "wb.png").string() +
+                       " --width 64 --height 36 --camera nikon_d850 --white-balance led-globe-a19"
+                       " --tonemap reinhard --display rec2020");
+  ASSERT_EQ(display.exitCode, 0) << display.err;
+  expectOneLineError("render " + scenes + "/spheres_led.json -o x.png --camera cie1964", "not a camera");
 
   Result bench = run("bench " + scenes + "/spheres_d65.json --width 64 --height 36 --frames 4 --warmup 1 "
                      "--wavelengths 4,8,16 --json --plot " + (dir / "plot.svg").string());

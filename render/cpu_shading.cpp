@@ -41,7 +41,7 @@ class CpuShadingKernel {
 
 #include "pixel_shading.glsl"
 
-  const render::FrameData& mFrame;
+  render::FrameData mFrame;
   const RgbToSpectrumTable& mTable;
   std::vector<std::vector<float>> mShadowLayers;
 };

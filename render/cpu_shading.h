@@ -26,7 +26,7 @@ struct GBufferTexel {
 class CpuShading {
  public:
   // shadowLayers: each layer's depths, size × size, row 0 at the bottom (GL order). The table
-  // is looked up with the manual (reference) path.
+  // is looked up with the manual (reference) path and must outlive this; the frame is copied.
   CpuShading(const FrameData& frame, const RgbToSpectrumTable& table,
              std::vector<std::vector<float>> shadowLayers);
   ~CpuShading();

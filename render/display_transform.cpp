@@ -25,13 +25,10 @@ Eigen::Matrix3d tristimulusToXyzD(const FrameSettings& settings) {
 
 }  // namespace
 
-glm::mat3 tristimulusToXyz(const FrameSettings& settings) {
-  return toGlm(tristimulusToXyzD(settings));
-}
-
 DisplayTransform displayTransform(const FrameSettings& settings, float sceneEv100) {
   const RgbColourSpace& display = colourSpace(settings.display);
-  Eigen::Matrix3d m = tristimulusToXyzD(settings);
+  Eigen::Matrix3d cameraToXyz = tristimulusToXyzD(settings);
+  Eigen::Matrix3d m = cameraToXyz;
   if (settings.whiteBalance != "none") {
     const Observer& cie = observer("cie1931");
     Eigen::Vector3d source = cie.integrate(illuminant(settings.whiteBalance));
@@ -45,6 +42,7 @@ DisplayTransform displayTransform(const FrameSettings& settings, float sceneEv10
                                  static_cast<float>(display.rgbToXyz(1, 1)),
                                  static_cast<float>(display.rgbToXyz(1, 2)));
   t.transfer = display.transfer == Transfer::Bt2020 ? 1 : 0;
+  t.toXyz = toGlm(cameraToXyz);
   return t;
 }
 

@@ -13,11 +13,9 @@ struct DisplayTransform {
   glm::mat3 toDisplay{1.0f};        // tristimulus → linear display RGB, exposure included
   glm::vec3 luminanceWeights{0.0f};  // the display's Y row: luminance of a linear RGB
   int transfer = 0;                  // 0 sRGB curve (sRGB, Display P3), 1 BT.2020
+  glm::mat3 toXyz{1.0f};             // tristimulus → XYZ alone (the camera matrix, or identity)
 };
 
 DisplayTransform displayTransform(const FrameSettings& settings, float sceneEv100);
-
-// The tristimulus → XYZ part alone (identity for CIE observers), for linear outputs.
-glm::mat3 tristimulusToXyz(const FrameSettings& settings);
 
 }  // namespace prism::render

@@ -10,6 +10,7 @@
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/sampling.h"
+#include "spectral/sigmoid_fit.h"
 
 namespace prism::render {
 namespace {
@@ -20,10 +21,11 @@ glm::vec4 toVec4(const Eigen::Vector3d& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()), 0.0f};
 }
 
-// Linear RGB (scene colour space) of a reflectance under D65, clamped to [0, 1].
+// Linear RGB (scene colour space) of a reflectance under the colour space's white (the light the
+// upsampling table is fitted under), clamped to [0, 1].
 glm::vec4 reflectanceRgb(const Spectrum& reflectance, const RgbColourSpace& space) {
-  static const Spectrum d65 = illuminant("D65");
-  Eigen::Vector3d xyz = reflectanceTristimulus(observer("cie1931"), reflectance, d65);
+  Eigen::Vector3d xyz =
+      reflectanceTristimulus(observer("cie1931"), reflectance, gamutWhiteIlluminant(space));
   Eigen::Vector3d rgb = (space.xyzToRgb * xyz).cwiseMax(0.0).cwiseMin(1.0);
   return toVec4(rgb);
 }
@@ -64,7 +66,7 @@ void addBatches(FrameData& frame, const FrameSettings& settings, const Scene& sc
   }
   SamplingSettings sampling = effectiveSampling(settings);
   std::vector<SampledWavelengths> sampled =
-      sampleWavelengths(sampling, frameIndex, obs.isCamera ? observer("cie1931") : obs);
+      sampleWavelengths(sampling, frameIndex, obs);
   std::vector<IntegrationMatrix> matrices = integrationMatrices(sampled, obs);
   for (std::size_t b = 0; b < sampled.size(); ++b) {
     shared::GpuBatch batch{};
@@ -135,16 +137,14 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
   if (rgbMode) {
     frame.lightSpectra.push_back(glm::vec4(scene.background * luminance, 0.0f));
   } else {
-    static const Spectrum d65 = [] {
-      Spectrum s = illuminant("D65");
-      return s * (1.0 / (kLumensPerWatt * observer("cie1931").integrate(s).y()));
-    }();
+    Spectrum white = gamutWhiteIlluminant(space);
+    white *= 1.0 / (kLumensPerWatt * observer("cie1931").integrate(white).y());
     UnboundedUpsampling up = lookupUnbounded(table, scene.background);
     for (const shared::GpuBatch& batch : frame.batches) {
       glm::vec4 v;
       for (int j = 0; j < 4; ++j) {
         double r = shared::upsampledReflectance(up.coeffs, batch.lambdaNm[j]) * up.scale;
-        v[j] = static_cast<float>(d65.at(batch.lambdaNm[j]) * r) * luminance;
+        v[j] = static_cast<float>(white.at(batch.lambdaNm[j]) * r) * luminance;
       }
       frame.lightSpectra.push_back(v);
     }

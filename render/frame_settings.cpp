@@ -1,8 +1,11 @@
 #include "render/frame_settings.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "spectral/error.h"
+#include "spectral/illuminant.h"
 #include "spectral/observer.h"
 
 namespace prism::render {
@@ -42,6 +45,10 @@ void validate(const FrameSettings& settings) {
   observer(settings.observer);
   if (settings.shadowMapSize < 16 || settings.shadowMapSize > 8192) {
     throw Error(fmt::format("shadow map size {} must be within 16..8192", settings.shadowMapSize));
+  }
+  if (settings.whiteBalance != "none") illuminant(settings.whiteBalance);  // Error when unknown
+  if (settings.ev100 && !std::isfinite(*settings.ev100)) {
+    throw Error("exposure (EV100) must be a finite number");
   }
   if (settings.display != "srgb" && settings.display != "display-p3" &&
       settings.display != "p3" && settings.display != "rec2020") {

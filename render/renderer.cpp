@@ -2,15 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <span>
 
+#include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/display_transform.h"
 #include "render/procedural_mesh.h"
-#include "spectral/observer.h"
 #include "render/upsampling_texture.h"
+#include "spectral/colour_space.h"
 #include "spectral/data_files.h"
+#include "spectral/error.h"
+#include "spectral/observer.h"
 
 namespace prism::render {
 namespace {
@@ -64,6 +67,7 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
       mTable(table),
       mSettings(settings),
       mCamera(scene.camera),
+      mBounds(sceneBounds(scene)),
       mGpuScene(scene),
       mUpsamplingTable(uploadUpsamplingTable(table)),
       mShadowProgram(passProgram("shadow.vert", "shadow.frag", "shadow pass")),
@@ -74,73 +78,99 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
       mFullScreen(gpu::VertexArray::attributeless("full-screen triangle")),
       mGizmo(uploadMesh(makeSphere(glm::vec3(0.0f), 1.0f, 16))) {
   validate(mSettings);
-  createShadowMaps();
-  createTargets();
+  if (table.gamut() != colourSpace(scene.colourSpace).name) {
+    throw Error(fmt::format("{}: the upsampling table is for {}, the scene is in {}",
+                            scene.file.string(), table.gamut(), scene.colourSpace));
+  }
+  if (scene.lights.size() > static_cast<std::size_t>(shared::kMaxLights)) {
+    throw Error(fmt::format("{}: {} lights; the renderer handles at most {}", scene.file.string(),
+                            scene.lights.size(), shared::kMaxLights));
+  }
+  mDisplayTransform = displayTransform(mSettings, mCamera.ev100);
+  mShadows = makeShadows(mScene, mSettings.shadowMapSize);
+  mTargets = makeTargets(mSettings.width, mSettings.height);
 }
 
 void Renderer::setSettings(const FrameSettings& settings) {
   validate(settings);
+  DisplayTransform display = displayTransform(settings, mCamera.ev100);
   bool resized = settings.width != mSettings.width || settings.height != mSettings.height;
-  bool shadowsChanged = settings.shadowMapSize != mSettings.shadowMapSize;
+  std::optional<Shadows> shadows;
+  if (settings.shadowMapSize != mSettings.shadowMapSize) {
+    shadows = makeShadows(mScene, settings.shadowMapSize);
+  }
+  std::optional<Targets> targets;
+  if (resized) targets = makeTargets(settings.width, settings.height);
+  // Nothing below throws.
+  bool lightingChanged = resized || shadows || settings.mode != mSettings.mode ||
+                         settings.sampling.count != mSettings.sampling.count ||
+                         settings.sampling.minNm != mSettings.sampling.minNm ||
+                         settings.sampling.maxNm != mSettings.sampling.maxNm ||
+                         settings.sampling.strategy != mSettings.sampling.strategy ||
+                         settings.observer != mSettings.observer ||
+                         settings.lookup != mSettings.lookup ||
+                         settings.lightGizmos != mSettings.lightGizmos;
+  if (shadows) mShadows = std::move(*shadows);
+  if (targets) mTargets = std::move(*targets);
   mSettings = settings;
-  if (shadowsChanged) createShadowMaps();
-  if (resized) createTargets();
-  mAccumulated = 0;
+  mDisplayTransform = display;
+  if (lightingChanged) mAccumulated = 0;
 }
 
 void Renderer::setCamera(const Camera& camera) {
+  mDisplayTransform = displayTransform(mSettings, camera.ev100);
   mCamera = camera;
   mAccumulated = 0;
 }
 
-void Renderer::createShadowMaps() {
-  mShadowViews = planShadowViews(mScene, mSettings.shadowMapSize);
+Renderer::Shadows Renderer::makeShadows(const Scene& scene, int mapSize) {
+  Shadows s;
+  s.views = planShadowViews(scene, mapSize);
   gpu::Texture2DArrayDesc desc;
-  desc.width = desc.height = mSettings.shadowMapSize;
-  desc.layers = std::max<GLsizei>(1, static_cast<GLsizei>(mShadowViews.size()));
+  desc.width = desc.height = mapSize;
+  desc.layers = std::max<GLsizei>(1, static_cast<GLsizei>(s.views.size()));
   desc.internalFormat = GL_DEPTH_COMPONENT32F;
   desc.sampling = {GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE};
   desc.label = "shadow maps";
-  mShadowMaps = gpu::Texture2DArray(desc);
-  mShadowFramebuffers.clear();
-  for (const ShadowView& view : mShadowViews) {
+  s.maps = gpu::Texture2DArray(desc);
+  for (const ShadowView& view : s.views) {
     gpu::FramebufferDesc fb;
-    fb.depth.array = &mShadowMaps;
+    fb.depth.array = &s.maps;
     fb.depth.layer = view.layer;
     fb.label = "shadow map";
-    mShadowFramebuffers.emplace_back(fb);
+    s.framebuffers.emplace_back(fb);
   }
-  mAccumulated = 0;
+  return s;
 }
 
-void Renderer::createTargets() {
-  int w = mSettings.width, h = mSettings.height;
-  mAlbedoMetallic = target(w, h, GL_RGBA16F, "g-buffer albedo, metallic");
-  mNormalRoughness = target(w, h, GL_RGBA16F, "g-buffer normal, roughness");
-  mMaterialId = target(w, h, GL_R32UI, "g-buffer material id");
-  mDepth = target(w, h, GL_DEPTH_COMPONENT32F, "g-buffer depth");
-  mAccumulation = target(w, h, GL_RGBA32F, "tristimulus accumulation");
-  mForwardDepth = target(w, h, GL_DEPTH_COMPONENT32F, "forward depth (copied)");
-  mDisplay = target(w, h, GL_RGBA8, "display");
+Renderer::Targets Renderer::makeTargets(int w, int h) {
+  Targets t;
+  t.albedoMetallic = target(w, h, GL_RGBA16F, "g-buffer albedo, metallic");
+  t.normalRoughness = target(w, h, GL_RGBA16F, "g-buffer normal, roughness");
+  t.materialId = target(w, h, GL_R32UI, "g-buffer material id");
+  t.depth = target(w, h, GL_DEPTH_COMPONENT32F, "g-buffer depth");
+  t.accumulation = target(w, h, GL_RGBA32F, "tristimulus accumulation");
+  t.forwardDepth = target(w, h, GL_DEPTH_COMPONENT32F, "forward depth (copied)");
+  t.display = target(w, h, GL_RGBA8, "display");
   gpu::FramebufferDesc g;
-  g.colour = {{&mAlbedoMetallic, 0}, {&mNormalRoughness, 0}, {&mMaterialId, 0}};
-  g.depth.texture = &mDepth;
+  g.colour = {{&t.albedoMetallic, 0}, {&t.normalRoughness, 0}, {&t.materialId, 0}};
+  g.depth.texture = &t.depth;
   g.label = "g-buffer";
-  mGBuffer = gpu::Framebuffer(g);
+  t.gbuffer = gpu::Framebuffer(g);
   gpu::FramebufferDesc a;
-  a.colour = {{&mAccumulation, 0}};
+  a.colour = {{&t.accumulation, 0}};
   a.label = "accumulation";
-  mAccumulationTarget = gpu::Framebuffer(a);
+  t.accumulationTarget = gpu::Framebuffer(a);
   gpu::FramebufferDesc f;
-  f.colour = {{&mAccumulation, 0}};
-  f.depth.texture = &mForwardDepth;
+  f.colour = {{&t.accumulation, 0}};
+  f.depth.texture = &t.forwardDepth;
   f.label = "forward";
-  mForwardTarget = gpu::Framebuffer(f);
+  t.forwardTarget = gpu::Framebuffer(f);
   gpu::FramebufferDesc d;
-  d.colour = {{&mDisplay, 0}};
+  d.colour = {{&t.display, 0}};
   d.label = "display";
-  mDisplayTarget = gpu::Framebuffer(d);
-  mAccumulated = 0;
+  t.displayTarget = gpu::Framebuffer(d);
+  return t;
 }
 
 void Renderer::hook(std::string_view pass) const {
@@ -150,7 +180,7 @@ void Renderer::hook(std::string_view pass) const {
 void Renderer::renderFrame() {
   mCameraTransform = render::cameraTransform(mCamera, mSettings.width, mSettings.height);
   // A new set of wavelengths every frame (only stochastic strategies differ between frames).
-  mFrame = buildFrameData(mScene, mSettings, mTable, mShadowViews, mFrameIndex++);
+  mFrame = buildFrameData(mScene, mSettings, mTable, mShadows.views, mFrameIndex++);
   uploadFrameData();
   hook("shadow");
   shadowPass();
@@ -176,31 +206,40 @@ void Renderer::uploadFrameData() {
   upload(mMaterialSpectra, mFrame.materialSpectra, "frame material spectra");
 }
 
-void Renderer::shadowPass() {
+namespace {
+
+// Write masks are set here rather than assumed: clears and depth writes obey them, and a host
+// (a viewer's UI) may have left them off.
+void setOpaqueState() {
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);  // both faces: thin and open meshes must still cast
+  glDisable(GL_CULL_FACE);  // both faces: thin and open meshes must still cast and show
+}
+
+}  // namespace
+
+void Renderer::shadowPass() {
+  setOpaqueState();
   mShadowProgram.use();
-  for (std::size_t i = 0; i < mShadowViews.size(); ++i) {
-    const gpu::Framebuffer& fb = mShadowFramebuffers[i];
+  for (std::size_t i = 0; i < mShadows.views.size(); ++i) {
+    const gpu::Framebuffer& fb = mShadows.framebuffers[i];
     fb.bind();
     fb.clearDepth(1.0f);
-    mShadowProgram.setUniform("uLightViewProjection", mShadowViews[i].viewProjection);
+    mShadowProgram.setUniform("uLightViewProjection", mShadows.views[i].viewProjection);
     for (const GpuMesh& mesh : mGpuScene.meshes()) mesh.vertexArray.draw();
   }
 }
 
 void Renderer::gbufferPass() {
-  mGBuffer.bind();
-  mGBuffer.clearColour(0, glm::vec4(0.0f));
-  mGBuffer.clearColour(1, glm::vec4(0.0f));
-  mGBuffer.clearColourUint(2, {0, 0, 0, 0});
-  mGBuffer.clearDepth(1.0f);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);
+  setOpaqueState();
+  mTargets.gbuffer.bind();
+  mTargets.gbuffer.clearColour(0, glm::vec4(0.0f));
+  mTargets.gbuffer.clearColour(1, glm::vec4(0.0f));
+  mTargets.gbuffer.clearColourUint(2, {0, 0, 0, 0});
+  mTargets.gbuffer.clearDepth(1.0f);
   mGBufferProgram.use();
   mGBufferProgram.setUniform("uViewProjection", mCameraTransform.viewProjection);
   for (const GpuMesh& mesh : mGpuScene.meshes()) {
@@ -228,8 +267,8 @@ void Renderer::gbufferPass() {
 }
 
 void Renderer::lightingPass() {
-  mAccumulationTarget.bind();
-  if (mAccumulated == 0) mAccumulationTarget.clearColour(0, glm::vec4(0.0f));
+  mTargets.accumulationTarget.bind();
+  if (mAccumulated == 0) mTargets.accumulationTarget.clearColour(0, glm::vec4(0.0f));
   glDisable(GL_DEPTH_TEST);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
@@ -238,11 +277,11 @@ void Renderer::lightingPass() {
   mMaterials.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
   mLightSpectra.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   mMaterialSpectra.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
-  mAlbedoMetallic.bind(0);
-  mNormalRoughness.bind(1);
-  mMaterialId.bind(2);
-  mDepth.bind(3);
-  mShadowMaps.bind(4);
+  mTargets.albedoMetallic.bind(0);
+  mTargets.normalRoughness.bind(1);
+  mTargets.materialId.bind(2);
+  mTargets.depth.bind(3);
+  mShadows.maps.bind(4);
   mUpsamplingTable.bind(5);
   const gpu::Program& p = mLightingProgram;
   p.use();
@@ -265,8 +304,8 @@ void Renderer::lightingPass() {
 // white, added over the lit image where nothing in the G-buffer is in front of it.
 void Renderer::forwardPass() {
   if (mScene.lights.empty()) return;
-  mGBuffer.blitDepthTo(mForwardTarget);
-  mForwardTarget.bind();
+  mTargets.gbuffer.blitDepthTo(mTargets.forwardTarget);
+  mTargets.forwardTarget.bind();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_FALSE);
@@ -274,17 +313,18 @@ void Renderer::forwardPass() {
   glCullFace(GL_BACK);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
-  Bounds bounds = sceneBounds(mScene);
-  float radius = std::max(0.01f * glm::length(bounds.max - bounds.min), 1e-3f);
+  float radius = std::max(0.01f * glm::length(mBounds.max - mBounds.min), 1e-3f);
   float white = 1.2f * std::exp2(mSettings.ev100.value_or(mCamera.ev100));
-  glm::mat3 toXyz = tristimulusToXyz(mSettings);
-  glm::mat3 fromXyz = glm::inverse(toXyz);
-  const Observer& cie = observer("cie1931");
+  glm::mat3 fromXyz = glm::inverse(mDisplayTransform.toXyz);
+  // The colour as the lighting pass's observer sees it (CIE 1931 behind a camera's matrix).
+  const Observer& seen = mSettings.mode == RenderMode::Rgb || observer(mSettings.observer).isCamera
+                             ? observer("cie1931")
+                             : observer(mSettings.observer);
   mForwardProgram.use();
   mForwardProgram.setUniform("uViewProjection", mCameraTransform.viewProjection);
   for (const Light& light : mScene.lights) {
     if (light.type == LightType::Directional) continue;
-    Eigen::Vector3d xyz = cie.integrate(light.spd);
+    Eigen::Vector3d xyz = seen.integrate(light.spd);
     glm::vec3 colour(static_cast<float>(xyz.x() / xyz.y()), 1.0f, static_cast<float>(xyz.z() / xyz.y()));
     glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), light.position), glm::vec3(radius));
     mForwardProgram.setUniform("uModel", model);
@@ -298,14 +338,17 @@ void Renderer::forwardPass() {
 }
 
 void Renderer::postPass() {
-  DisplayTransform t = displayTransform(mSettings, mCamera.ev100);
-  mDisplayTarget.bind();
+  const DisplayTransform& t = mDisplayTransform;
+  mTargets.displayTarget.bind();
   glDisable(GL_DEPTH_TEST);
-  mAccumulation.bind(0);
+  mTargets.accumulation.bind(0);
   const gpu::Program& p = mPostProgram;
   p.use();
   p.setUniform("uToDisplay", t.toDisplay);
   p.setUniform("uLuminanceWeights", t.luminanceWeights);
+  static_assert(static_cast<int>(ToneMap::None) == shared::kToneMapNone &&
+                static_cast<int>(ToneMap::Reinhard) == shared::kToneMapReinhard &&
+                static_cast<int>(ToneMap::Aces) == shared::kToneMapAces);
   p.setUniform("uToneMap", static_cast<GLint>(mSettings.toneMap));
   p.setUniform("uTransfer", t.transfer);
   p.setUniform("uDither", mSettings.dither ? 1 : 0);
@@ -318,14 +361,14 @@ std::vector<std::uint8_t> Renderer::readDisplayRgba8() const {
   GLint alignment = 4;
   glGetIntegerv(GL_PACK_ALIGNMENT, &alignment);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(mDisplay.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(pixels.size()),
+  glGetTextureImage(mTargets.display.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(pixels.size()),
                     pixels.data());
   glPixelStorei(GL_PACK_ALIGNMENT, alignment);
   return flipRows(pixels, mSettings.width, mSettings.height, 4);
 }
 
 std::vector<float> Renderer::readMeanTristimulus() const {
-  std::vector<float> rgba = gpu::readTexture2DFloat(mAccumulation, 4);
+  std::vector<float> rgba = gpu::readTexture2DFloat(mTargets.accumulation, 4);
   std::vector<float> rgb(rgba.size() / 4 * 3);
   for (std::size_t i = 0; i < rgba.size() / 4; ++i) {
     float a = rgba[i * 4 + 3];

@@ -19,6 +19,7 @@
 #include "gpu/texture.h"
 #include "gpu/vertex_array.h"
 #include "render/camera_transform.h"
+#include "render/display_transform.h"
 #include "render/frame_data.h"
 #include "render/frame_settings.h"
 #include "render/gpu_scene.h"
@@ -33,8 +34,12 @@ class Renderer {
   // An OpenGL 4.5 context must be current for the renderer's whole life. The table is the
   // Jakob–Hanika table of the scene's colour space; both must outlive the renderer.
   Renderer(const Scene& scene, const RgbToSpectrumTable& table, const FrameSettings& settings);
+  Renderer(Scene&&, const RgbToSpectrumTable&, const FrameSettings&) = delete;  // held by reference
+  Renderer(const Scene&, RgbToSpectrumTable&&, const FrameSettings&) = delete;
 
   const FrameSettings& settings() const { return mSettings; }
+  // Validated first; on any failure the renderer is left as it was. Accumulation restarts
+  // unless only the display transform changed (exposure, tone map, white balance, display).
   void setSettings(const FrameSettings& settings);
   void setCamera(const Camera& camera);  // restarts accumulation
   const Camera& camera() const { return mCamera; }
@@ -56,17 +61,29 @@ class Renderer {
   // What the last frame used, for the CPU twin and tests.
   const FrameData& frameData() const { return mFrame; }
   const CameraTransform& cameraTransform() const { return mCameraTransform; }
-  const std::vector<ShadowView>& shadowViews() const { return mShadowViews; }
-  const gpu::Texture2D& albedoMetallic() const { return mAlbedoMetallic; }
-  const gpu::Texture2D& normalRoughness() const { return mNormalRoughness; }
-  const gpu::Texture2D& materialId() const { return mMaterialId; }
-  const gpu::Texture2D& depth() const { return mDepth; }
-  const gpu::Texture2DArray& shadowMaps() const { return mShadowMaps; }
-  const gpu::Texture2D& accumulation() const { return mAccumulation; }
+  const std::vector<ShadowView>& shadowViews() const { return mShadows.views; }
+  const gpu::Texture2D& albedoMetallic() const { return mTargets.albedoMetallic; }
+  const gpu::Texture2D& normalRoughness() const { return mTargets.normalRoughness; }
+  const gpu::Texture2D& materialId() const { return mTargets.materialId; }
+  const gpu::Texture2D& depth() const { return mTargets.depth; }
+  const gpu::Texture2DArray& shadowMaps() const { return mShadows.maps; }
+  const gpu::Texture2D& accumulation() const { return mTargets.accumulation; }
 
  private:
-  void createTargets();
-  void createShadowMaps();
+  // Everything sized by the image: built whole, then swapped in.
+  struct Targets {
+    gpu::Texture2D albedoMetallic, normalRoughness, materialId, depth;
+    gpu::Texture2D accumulation, forwardDepth, display;
+    gpu::Framebuffer gbuffer, accumulationTarget, forwardTarget, displayTarget;
+  };
+  // Everything sized by the shadow-map resolution.
+  struct Shadows {
+    std::vector<ShadowView> views;
+    gpu::Texture2DArray maps;
+    std::vector<gpu::Framebuffer> framebuffers;  // one per view
+  };
+  static Targets makeTargets(int width, int height);
+  static Shadows makeShadows(const Scene& scene, int mapSize);
   void hook(std::string_view pass) const;
   void shadowPass();
   void gbufferPass();
@@ -80,9 +97,10 @@ class Renderer {
   FrameSettings mSettings;
   Camera mCamera;
   CameraTransform mCameraTransform;
+  Bounds mBounds;
   GpuScene mGpuScene;
   gpu::Texture3D mUpsamplingTable;
-  std::vector<ShadowView> mShadowViews;
+  DisplayTransform mDisplayTransform;  // of mSettings and the camera's exposure
   FrameData mFrame;
   int mAccumulated = 0;
   std::uint32_t mFrameIndex = 0;
@@ -91,11 +109,8 @@ class Renderer {
   gpu::Program mShadowProgram, mGBufferProgram, mLightingProgram, mForwardProgram, mPostProgram;
   gpu::VertexArray mFullScreen;
   GpuMesh mGizmo;  // a unit sphere
-  gpu::Texture2DArray mShadowMaps;
-  std::vector<gpu::Framebuffer> mShadowFramebuffers;
-  gpu::Texture2D mAlbedoMetallic, mNormalRoughness, mMaterialId, mDepth;
-  gpu::Texture2D mAccumulation, mForwardDepth, mDisplay;
-  gpu::Framebuffer mGBuffer, mAccumulationTarget, mForwardTarget, mDisplayTarget;
+  Shadows mShadows;
+  Targets mTargets;
   gpu::Buffer mBatches, mLights, mMaterials, mLightSpectra, mMaterialSpectra;
 };
 

@@ -17,6 +17,7 @@
 #include "imaging/png_file.h"
 #include "render/cpu_shading.h"
 #include "render/scene_loader.h"
+#include "spectral/error.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 
 namespace prism::render {
@@ -255,7 +256,19 @@ TEST(Renderer, SettingsChangeWithoutRestartAndRestartAccumulation) {
   renderer.setSettings(bigger);
   EXPECT_EQ(renderer.accumulatedFrames(), 0);
   renderer.renderFrame();
+  EXPECT_EQ(renderer.accumulation().width(), 96);
+  EXPECT_EQ(renderer.accumulation().height(), 64);
   EXPECT_EQ(renderer.readDisplayRgba8().size(), std::size_t{96 * 64 * 4});
+  // A display-only change keeps what has accumulated; a failed change leaves all as it was.
+  bigger.toneMap = ToneMap::Reinhard;
+  renderer.setSettings(bigger);
+  EXPECT_EQ(renderer.accumulatedFrames(), 1);
+  FrameSettings bad = bigger;
+  bad.whiteBalance = "no-such-lamp";
+  EXPECT_THROW(renderer.setSettings(bad), Error);
+  EXPECT_EQ(renderer.settings().whiteBalance, "none");
+  renderer.renderFrame();
+  EXPECT_EQ(renderer.accumulatedFrames(), 2);
   EXPECT_EQ(renderer.frameData().batches.size(), std::size_t{8});
 }
 

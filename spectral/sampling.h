@@ -7,8 +7,8 @@
 // so one weight rule, w_i = 1 / (n·pdf_i), serves them all:
 //   Uniform     λ_i at the midpoints of n equal strata, pdf = 1/(λmax − λmin): the midpoint
 //               Riemann sum, deterministic.
-//   Stratified  one uniform jitter per stratum (seeded per pixel and frame, shaders/shared/
-//               random.glsl): unbiased, converging to the integral under accumulation.
+//   Stratified  one uniform jitter per stratum (from the seed, e.g. per frame or per pixel and
+//               frame; shaders/shared/random.glsl): unbiased, converging under accumulation.
 //   Rotated     the uniform grid shifted by one offset per frame, the golden-ratio sequence
 //               frac(½ + seed·0.618…): each frame has the midpoint rule's small error, and
 //               frames accumulated fill the gaps evenly, so the mean converges to the integral

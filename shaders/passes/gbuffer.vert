@@ -5,11 +5,13 @@ layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
 layout(location = 3) in vec4 aTangent;
 uniform mat4 uViewProjection;
+out vec3 vPosition;
 out vec3 vNormal;
 out vec2 vUv;
 out vec4 vTangent;
 
 void main() {
+  vPosition = aPosition;
   vNormal = aNormal;
   vUv = aUv;
   vTangent = aTangent;

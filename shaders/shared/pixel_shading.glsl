@@ -1,6 +1,6 @@
 // The lighting pass for one pixel: a G-buffer sample in, tristimulus (XYZ, or camera RGB) out.
 // This is the whole per-pixel computation of the spectral rasteriser, written once; the GPU runs
-// it in shaders/lighting.frag and the CPU twin (render/cpu_shading.h) in tests.
+// it in shaders/passes/lighting.frag and the CPU twin (render/cpu_shading.h) in tests.
 //
 // Data comes through accessors that each side defines before including this file:
 //   GpuBatch frameBatch(int b);           GpuLight frameLight(int l);

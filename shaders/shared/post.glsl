@@ -7,13 +7,14 @@ const int kToneMapReinhard = 1;  // x / (1 + x) on luminance, hue and saturation
 const int kToneMapAces = 2;      // Narkowicz 2015's fit of the ACES RRT + ODT, per channel
 
 // Exposure at ISO 100 (Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", §5.1): a scene
-// luminance of 1.2·2^EV100 cd/m² maps to display white 1.
+// luminance of 1.2·2^EV100 cd/m² maps to 1 before the tone map (display white without one;
+// ACES puts 1 at 0.80 and reaches white near 7).
 PRISM_INLINE float exposureScale(float ev100) { return 1.0f / (1.2f * exp2(ev100)); }
 
 // Colours a spectrum puts outside the display gamut have negative components. Rule: mix the
 // colour towards the grey of the same luminance Y (weights = the display's Y row) just far
 // enough that the smallest component is 0. Luminance and hue angle are kept, saturation is
-// lost; never NaN (a black or grey colour is returned unchanged).
+// lost; never NaN for finite input (a black or grey colour is returned unchanged).
 PRISM_INLINE vec3 compressToGamut(IN(vec3) rgb, IN(vec3) luminanceWeights) {
   float y = max(dot(rgb, luminanceWeights), 0.0f);
   float lowest = min(rgb.x, min(rgb.y, rgb.z));

@@ -18,12 +18,16 @@ PRISM_INLINE ShadowFootprint shadowFootprint(IN(vec4) lightClip, int size) {
   PRISM_PRECISE vec3 uvz = ndc * 0.5f + vec3(0.5f);
   f.inside = lightClip.w > 0.0f && uvz.x >= 0.0f && uvz.x <= 1.0f && uvz.y >= 0.0f &&
              uvz.y <= 1.0f && uvz.z <= 1.0f;
+  f.x0 = 0;
+  f.y0 = 0;
+  f.frac = vec2(0.0f);
+  f.depth = uvz.z;
+  if (!f.inside) return f;  // before any float → int conversion of a far-off (or NaN) texel
   PRISM_PRECISE vec2 texel = vec2(uvz.x, uvz.y) * float(size) - vec2(0.5f);
   vec2 base = floor(texel);
   f.frac = texel - base;
   f.x0 = int(base.x) - 1;
   f.y0 = int(base.y) - 1;
-  f.depth = uvz.z;
   return f;
 }
 

@@ -9,7 +9,8 @@
 //   PRISM_INLINE  before every function (C++ needs `inline`, GLSL has no such keyword)
 //   IN(T) / OUT(T) / INOUT(T)  parameter qualifiers
 //   PRISM_PRECISE  GLSL's `precise` (no fusing or reassociation) where CPU and GPU must agree
-//                  bit for bit; the C++ build neither fuses nor reassociates anyway
+//                  bit for bit; the C++ build neither fuses (-ffp-contract=off, set by the
+//                  top-level CMakeLists) nor reassociates
 #pragma once
 
 #include <cstdint>

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ostream>
 #include <random>
 
 #include "gpu/headless_context.h"
@@ -47,6 +48,8 @@ struct ParityCase {
   const char* scene;
   RenderMode mode;
 };
+// What gtest (and so ctest's test names) shows of a case, instead of its bytes.
+void PrintTo(const ParityCase& c, std::ostream* os) { *os << c.scene << " " << renderModeName(c.mode); }
 
 class GpuCpuParity : public testing::TestWithParam<ParityCase> {};
 
@@ -135,6 +138,7 @@ struct GoldenCase {
   const char* scene;
   RenderMode mode;
 };
+void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.scene << " " << renderModeName(c.mode); }
 
 class Golden : public testing::TestWithParam<GoldenCase> {};
 

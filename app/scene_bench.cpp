@@ -25,6 +25,8 @@ struct ConfigResult {
   std::map<std::string, double> medianMs;  // per pass and "frame"
 };
 
+constexpr int kFramesInFlight = 3;  // the timer's ring
+
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
   std::sort(values.begin(), values.end());
@@ -44,14 +46,15 @@ ConfigResult measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmu
     open = !pass.empty();
     if (open) timer.beginScope(pass);
   });
-  for (int f = 0; f < warmup + frames; ++f) {
+  // A frame's times arrive kFramesInFlight frames later: render that many more frames than are
+  // timed, so that exactly `frames` frames after the warm-up are collected, none waited for.
+  for (int f = 0; f < warmup + frames + kFramesInFlight; ++f) {
     timer.beginFrame();
-    if (f >= warmup + 3) collect(timer.latest());  // results arrive frames in flight later
+    if (f >= warmup + kFramesInFlight) collect(timer.latest());
     renderer.renderFrame();
     timer.endFrame();
-    bar.update(++done, total);
+    if (f < warmup + frames) bar.update(++done, total);
   }
-  collect(timer.resolve());
   renderer.setPassHook({});
   ConfigResult result;
   for (auto& [name, values] : samples) result.medianMs[name] = median(values);
@@ -142,7 +145,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   gpu::HeadlessContext context;
   std::string device = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   render::Renderer renderer(scene, table, settings);
-  gpu::GpuTimer timer;
+  gpu::GpuTimer timer({kFramesInFlight});
 
   std::size_t done = 0;
   std::size_t total = (options.wavelengths.size() + 1) *

@@ -14,7 +14,7 @@
 #include "imaging/image_difference.h"
 #include "imaging/png_file.h"
 #include "render/renderer.h"
-#include "render/scene_loader.h"
+#include "scene/scene_loader.h"
 #include "spectral/atomic_file.h"
 #include "spectral/data_files.h"
 #include "spectral/error.h"
@@ -126,7 +126,7 @@ void runGallery(const GalleryOptions& o) {
   ProgressBar bar("gallery");
   std::vector<Entry> entries;
   for (std::size_t i = 0; i < files.size(); ++i) {
-    render::Scene scene = render::loadScene(files[i]);
+    Scene scene = loadScene(files[i]);
     if (!tables.contains(scene.colourSpace)) {
       tables.emplace(scene.colourSpace, cachedRgbToSpectrumTable(scene.colourSpace, 64));
     }

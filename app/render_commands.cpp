@@ -8,7 +8,7 @@
 #include "imaging/png_file.h"
 #include "render/display_transform.h"
 #include "render/renderer.h"
-#include "render/scene_loader.h"
+#include "scene/scene_loader.h"
 #include "spectral/error.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_cache.h"
@@ -55,7 +55,7 @@ render::FrameSettings frameSettings(const RenderSettingsOptions& o) {
   return s;
 }
 
-void renderToFile(const render::Scene& scene, const render::FrameSettings& settings, int frames,
+void renderToFile(const Scene& scene, const render::FrameSettings& settings, int frames,
                   const std::filesystem::path& output, bool progress) {
   std::string extension = output.extension().string();
   if (extension != ".png" && extension != ".exr") {
@@ -93,7 +93,7 @@ void renderToFile(const render::Scene& scene, const render::FrameSettings& setti
 }
 
 void runRender(const RenderOptions& options) {
-  render::Scene scene = render::loadScene(options.scene, options.sets);
+  Scene scene = loadScene(options.scene, options.sets);
   render::FrameSettings settings = frameSettings(options.settings);
   renderToFile(scene, settings, options.frames, options.output, true);
   fmt::print("wrote {} ({}x{}, {} mode, {} frame{})\n", options.output.string(), settings.width,

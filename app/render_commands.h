@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "render/frame_settings.h"
-#include "render/scene.h"
+#include "scene/scene.h"
 
 namespace prism::app {
 
@@ -44,7 +44,7 @@ void runRender(const RenderOptions& options);
 
 // Renders `frames` frames of an already loaded scene headlessly and writes `output` (.png or
 // .exr); shared by `render` and `demo`.
-void renderToFile(const render::Scene& scene, const render::FrameSettings& settings, int frames,
+void renderToFile(const Scene& scene, const render::FrameSettings& settings, int frames,
                   const std::filesystem::path& output, bool progress);
 
 }  // namespace prism::app

@@ -11,7 +11,7 @@
 #include "gpu/headless_context.h"
 #include "gpu/timer_query.h"
 #include "render/renderer.h"
-#include "render/scene_loader.h"
+#include "scene/scene_loader.h"
 #include "spectral/atomic_file.h"
 #include "spectral/error.h"
 #include "spectral/rgb_to_spectrum_cache.h"
@@ -132,7 +132,7 @@ std::string svgPlot(const std::vector<ConfigResult>& spectral, double rgbMs, dou
 void runSceneBench(const SceneBenchOptions& options) {
   if (options.wavelengths.empty()) throw Error("--wavelengths: give at least one count");
   if (options.frames < 1 || options.warmup < 0) throw Error("--frames must be ≥ 1, --warmup ≥ 0");
-  render::Scene scene = render::loadScene(options.scene);
+  Scene scene = loadScene(options.scene);
   RenderSettingsOptions base = options.settings;
   base.mode = "rgb";
   render::FrameSettings settings = frameSettings(base);

@@ -11,7 +11,7 @@ class CpuShadingKernel {
                    std::vector<std::vector<float>> shadowLayers)
       : mFrame(frame), mTable(table), mShadowLayers(std::move(shadowLayers)) {}
 
-  vec3 shade(const render::GBufferTexel& texel, vec2 uv, const render::CameraTransform& camera) {
+  vec3 shade(const render::GBufferTexel& texel, vec2 uv, const CameraTransform& camera) {
     if (texel.materialId == 0) return shadeBackground(mFrame.constants);
     SurfaceSample s;
     s.position = worldFromDepth(camera.inverseViewProjection, uv, texel.depth);

@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render/camera_transform.h"
+#include "scene/camera_transform.h"
 #include "render/frame_data.h"
 #include "spectral/rgb_to_spectrum_table.h"
 

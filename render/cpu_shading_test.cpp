@@ -11,7 +11,7 @@
 #include <limits>
 
 #include "render/display_transform.h"
-#include "render/scene_loader.h"
+#include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"

@@ -25,7 +25,7 @@
 #include <glm/glm.hpp>
 
 #include "render/frame_settings.h"
-#include "render/scene.h"
+#include "scene/scene.h"
 #include "render/shadow_views.h"
 #include "render/shared_shading.h"
 #include "spectral/rgb_to_spectrum_table.h"

@@ -8,7 +8,7 @@
 #include "gpu/buffer.h"
 #include "gpu/texture.h"
 #include "gpu/vertex_array.h"
-#include "render/scene.h"
+#include "scene/scene.h"
 
 namespace prism::render {
 

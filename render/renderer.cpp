@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/procedural_mesh.h"
+#include "scene/procedural_mesh.h"
 #include "render/upsampling_texture.h"
 #include "spectral/colour_space.h"
 #include "spectral/data_files.h"
@@ -178,7 +178,7 @@ void Renderer::hook(std::string_view pass) const {
 }
 
 void Renderer::renderFrame() {
-  mCameraTransform = render::cameraTransform(mCamera, mSettings.width, mSettings.height);
+  mCameraTransform = prism::cameraTransform(mCamera, mSettings.width, mSettings.height);
   // A new set of wavelengths every frame (only stochastic strategies differ between frames).
   mFrame = buildFrameData(mScene, mSettings, mTable, mShadows.views, mFrameIndex++);
   uploadFrameData();

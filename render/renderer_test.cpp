@@ -17,7 +17,7 @@
 #include "imaging/image_difference.h"
 #include "imaging/png_file.h"
 #include "render/cpu_shading.h"
-#include "render/scene_loader.h"
+#include "scene/scene_loader.h"
 #include "spectral/error.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 

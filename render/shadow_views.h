@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render/scene.h"
+#include "scene/scene.h"
 
 namespace prism::render {
 

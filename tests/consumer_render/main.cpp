@@ -4,11 +4,11 @@
 
 #include "gpu/headless_context.h"
 #include "render/renderer.h"
-#include "render/scene_loader.h"
+#include "scene/scene_loader.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 
 int main() {
-  prism::render::Scene scene = prism::render::loadScene(SCENE);
+  prism::Scene scene = prism::loadScene(SCENE);
   prism::RgbToSpectrumTable table = prism::buildRgbToSpectrumTable({"srgb", 8, 0, {}});
   prism::gpu::HeadlessContext context;
   prism::render::FrameSettings settings;

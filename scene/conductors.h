@@ -12,12 +12,12 @@
 #include <string_view>
 #include <vector>
 
-#include "render/scene.h"
+#include "scene/scene.h"
 
-namespace prism::render {
+namespace prism {
 
 // Error "unknown conductor 'X' (known: Ag, Al, …)" when the name is not in listConductors().
 ConductorIor conductorIor(std::string_view name);
 std::vector<std::string> listConductors();
 
-}  // namespace prism::render
+}  // namespace prism

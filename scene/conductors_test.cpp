@@ -1,10 +1,10 @@
-#include "render/conductors.h"
+#include "scene/conductors.h"
 
 #include <gtest/gtest.h>
 
 #include "spectral/error.h"
 
-namespace prism::render {
+namespace prism {
 namespace {
 
 TEST(Conductors, EveryListedConductorLoads) {
@@ -50,4 +50,4 @@ TEST(Conductors, UnknownNameListsTheKnownOnes) {
 }
 
 }  // namespace
-}  // namespace prism::render
+}  // namespace prism

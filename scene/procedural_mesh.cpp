@@ -1,4 +1,4 @@
-#include "render/procedural_mesh.h"
+#include "scene/procedural_mesh.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "spectral/error.h"
 
-namespace prism::render {
+namespace prism {
 
 namespace {
 
@@ -194,4 +194,4 @@ void computeTangents(Mesh& mesh) {
   }
 }
 
-}  // namespace prism::render
+}  // namespace prism

@@ -1,4 +1,4 @@
-#include "render/gltf_loader.h"
+#include "scene/gltf_loader.h"
 
 #include <algorithm>
 #include <cctype>
@@ -15,11 +15,11 @@
 // header is included without TINYGLTF_IMPLEMENTATION and every symbol comes from it.
 #include <tiny_gltf.h>
 
-#include "render/procedural_mesh.h"
-#include "render/scene_schema.h"
+#include "scene/procedural_mesh.h"
+#include "scene/scene_schema.h"
 #include "spectral/error.h"
 
-namespace prism::render {
+namespace prism {
 
 namespace {
 
@@ -646,4 +646,4 @@ void appendGltf(const fs::path& file, const fs::path& root, const GltfPlacement&
   Converter(model, name, placement, scene).run();
 }
 
-}  // namespace prism::render
+}  // namespace prism

@@ -20,7 +20,7 @@
 
 #include "spectral/spectrum.h"
 
-namespace prism::render {
+namespace prism {
 
 struct Camera {
   glm::vec3 position{0.0f, 1.0f, 5.0f};
@@ -113,4 +113,4 @@ struct Bounds {
 };
 Bounds sceneBounds(const Scene& scene);
 
-}  // namespace prism::render
+}  // namespace prism

@@ -1,4 +1,4 @@
-#include "render/conductors.h"
+#include "scene/conductors.h"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 #include "spectral/data_files.h"
 #include "spectral/error.h"
 
-namespace prism::render {
+namespace prism {
 
 namespace {
 
@@ -59,4 +59,4 @@ ConductorIor conductorIor(std::string_view name) {
   throw Error("unknown conductor '" + std::string(name) + "' (known: " + known + ")");
 }
 
-}  // namespace prism::render
+}  // namespace prism

@@ -21,7 +21,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-namespace prism::render::schema {
+namespace prism::schema {
 
 // The reference token of an object key in a JSON pointer (RFC 6901 §3: "~" → "~0", "/" → "~1").
 std::string pointerToken(std::string_view key);
@@ -125,4 +125,4 @@ bool isInside(const std::filesystem::path& root, const std::filesystem::path& pa
 // A whole file as bytes; Error naming the file when it cannot be read.
 std::vector<unsigned char> readBinaryFile(const std::filesystem::path& path);
 
-}  // namespace prism::render::schema
+}  // namespace prism::schema

@@ -1,8 +1,8 @@
 #include <limits>
 
-#include "render/scene.h"
+#include "scene/scene.h"
 
-namespace prism::render {
+namespace prism {
 
 Bounds sceneBounds(const Scene& scene) {
   constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -18,4 +18,4 @@ Bounds sceneBounds(const Scene& scene) {
   return any ? b : Bounds{};
 }
 
-}  // namespace prism::render
+}  // namespace prism

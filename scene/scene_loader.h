@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "render/scene.h"
+#include "scene/scene.h"
 #include "spectral/spectrum.h"
 
-namespace prism::render {
+namespace prism {
 
 Scene loadScene(const std::filesystem::path& file);
 
@@ -32,4 +32,4 @@ Scene loadScene(const std::filesystem::path& file, const std::vector<std::string
 // quantity of one unit of S. Every light's SPD is divided by it on load, so that it is 1.
 double luminousIntegral(const Spectrum& spd);
 
-}  // namespace prism::render
+}  // namespace prism

@@ -1,4 +1,4 @@
-#include "render/scene_loader.h"
+#include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include "spectral/error.h"
 #include "spectral/observer.h"
 
-namespace prism::render {
+namespace prism {
 namespace {
 
 namespace fs = std::filesystem;
@@ -438,4 +438,4 @@ TEST(SceneLoader, ExampleScenesLoad) {
 }
 
 }  // namespace
-}  // namespace prism::render
+}  // namespace prism

@@ -1,4 +1,4 @@
-#include "render/scene_loader.h"
+#include "scene/scene_loader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,10 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
-#include "render/conductors.h"
-#include "render/gltf_loader.h"
-#include "render/procedural_mesh.h"
-#include "render/scene_schema.h"
+#include "scene/conductors.h"
+#include "scene/gltf_loader.h"
+#include "scene/procedural_mesh.h"
+#include "scene/scene_schema.h"
 #include "spectral/colour_space.h"
 #include "spectral/csv.h"
 #include "spectral/error.h"
@@ -20,7 +20,7 @@
 #include "spectral/observer.h"
 #include "spectral/sigmoid_fit.h"
 
-namespace prism::render {
+namespace prism {
 
 namespace {
 
@@ -413,4 +413,4 @@ Scene loadScene(const fs::path& file, const std::vector<std::string>& sets) {
   return SceneParser(file, document).parse(root);
 }
 
-}  // namespace prism::render
+}  // namespace prism

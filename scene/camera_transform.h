@@ -5,9 +5,9 @@
 
 #include <glm/glm.hpp>
 
-#include "render/scene.h"
+#include "scene/scene.h"
 
-namespace prism::render {
+namespace prism {
 
 struct CameraTransform {
   glm::mat4 view{1.0f};
@@ -19,4 +19,4 @@ struct CameraTransform {
 
 CameraTransform cameraTransform(const Camera& camera, int width, int height);
 
-}  // namespace prism::render
+}  // namespace prism

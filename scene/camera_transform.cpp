@@ -1,8 +1,8 @@
-#include "render/camera_transform.h"
+#include "scene/camera_transform.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace prism::render {
+namespace prism {
 
 CameraTransform cameraTransform(const Camera& camera, int width, int height) {
   CameraTransform t;
@@ -16,4 +16,4 @@ CameraTransform cameraTransform(const Camera& camera, int width, int height) {
   return t;
 }
 
-}  // namespace prism::render
+}  // namespace prism

@@ -11,9 +11,9 @@
 
 #include <glm/glm.hpp>
 
-#include "render/scene.h"
+#include "scene/scene.h"
 
-namespace prism::render {
+namespace prism {
 
 // A UV sphere: `segments` slices around the +y axis and segments/2 stacks (at least 2) from
 // the north (+y) pole. u = longitude / 2π, starting at +z and growing toward +x; v = colatitude / π.
@@ -55,4 +55,4 @@ void computeNormals(Mesh& mesh);
 // degenerate, any unit vector orthogonal to the normal, with w = 1.
 void computeTangents(Mesh& mesh);
 
-}  // namespace prism::render
+}  // namespace prism

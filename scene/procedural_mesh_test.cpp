@@ -1,10 +1,10 @@
-#include "render/procedural_mesh.h"
+#include "scene/procedural_mesh.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace prism::render {
+namespace prism {
 namespace {
 
 // Every triangle is counter-clockwise seen from outside: its geometric normal agrees with the
@@ -115,4 +115,4 @@ TEST(ProceduralMesh, ComputedNormalsAreAreaWeightedAndUnit) {
 }
 
 }  // namespace
-}  // namespace prism::render
+}  // namespace prism

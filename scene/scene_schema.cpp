@@ -1,4 +1,4 @@
-#include "render/scene_schema.h"
+#include "scene/scene_schema.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "spectral/error.h"
 
-namespace prism::render::schema {
+namespace prism::schema {
 
 using nlohmann::json;
 
@@ -329,4 +329,4 @@ std::vector<unsigned char> readBinaryFile(const std::filesystem::path& path) {
   return bytes;
 }
 
-}  // namespace prism::render::schema
+}  // namespace prism::schema

@@ -1,4 +1,4 @@
-#include "render/gltf_loader.h"
+#include "scene/gltf_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 
 #include "spectral/error.h"
 
-namespace prism::render {
+namespace prism {
 namespace {
 
 namespace fs = std::filesystem;
@@ -119,4 +119,4 @@ TEST(GltfLoader, DecodeImageRefusesWhatIsNotPngOrJpeg) {
 }
 
 }  // namespace
-}  // namespace prism::render
+}  // namespace prism

@@ -28,9 +28,9 @@
 
 #include <glm/glm.hpp>
 
-#include "render/scene.h"
+#include "scene/scene.h"
 
-namespace prism::render {
+namespace prism {
 
 struct GltfPlacement {
   glm::mat4 transform{1.0f};  // model → world, applied after the file's own node transforms
@@ -46,4 +46,4 @@ void appendGltf(const std::filesystem::path& file, const std::filesystem::path& 
 // without a location otherwise, e.g. for OpenEXR or Radiance HDR files.
 Image decodeImage(std::span<const std::uint8_t> bytes, bool srgb, std::string source);
 
-}  // namespace prism::render
+}  // namespace prism

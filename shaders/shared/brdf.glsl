@@ -97,3 +97,12 @@ PRISM_INLINE vec4 metallicRoughnessReflection(IN(MicrofacetTerms) t, IN(vec4) al
 PRISM_INLINE vec4 conductorReflection(IN(MicrofacetTerms) t, IN(vec4) n, IN(vec4) k) {
   return t.specular * conductorFresnel(n, k, t.cosHalf) * t.cosLight;
 }
+
+// BRDF·cos of a surface: a conductor (albedoOrN holds n, conductorK holds k) or the
+// metallic–roughness model (albedoOrN holds the albedo). The rasteriser and the reference both
+// choose through here.
+PRISM_INLINE vec4 surfaceReflection(IN(MicrofacetTerms) t, bool conductor, IN(vec4) albedoOrN,
+                                    IN(vec4) conductorK, float metallic) {
+  if (conductor) return conductorReflection(t, albedoOrN, conductorK);
+  return metallicRoughnessReflection(t, albedoOrN, metallic);
+}

@@ -109,16 +109,12 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     }
     vec4 conductorK = kind == kMaterialConductor ? frameMaterialSpectrum(spectra, b, 1)
                                                  : vec4(0.0f);
+    // In RGB mode a conductor is Schlick's Fresnel on its normal-incidence colour (metallic 1).
+    bool spectralConductor = kind == kMaterialConductor && fc.mode != kModeRgb;
+    float metallic = kind == kMaterialConductor ? 1.0f : s.metallic;
     vec4 radiance = vec4(0.0f);
     for (int l = 0; l < fc.lightCount; ++l) {
-      vec4 reflection;
-      if (kind != kMaterialConductor) {
-        reflection = metallicRoughnessReflection(terms[l], albedo, s.metallic);
-      } else if (fc.mode == kModeRgb) {
-        reflection = metallicRoughnessReflection(terms[l], albedo, 1.0f);
-      } else {
-        reflection = conductorReflection(terms[l], albedo, conductorK);
-      }
+      vec4 reflection = surfaceReflection(terms[l], spectralConductor, albedo, conductorK, metallic);
       radiance += reflection * frameLightSpectrum(l, b) * irradiance[l];
     }
     tristimulus += integrateBatch(batch, radiance);

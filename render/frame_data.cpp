@@ -5,9 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "scene/scene_spectra.h"
 #include "spectral/colour_space.h"
 #include "spectral/error.h"
-#include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/sampling.h"
 #include "spectral/sigmoid_fit.h"
@@ -58,12 +58,7 @@ void addBatches(FrameData& frame, const FrameSettings& settings, const Scene& sc
     return;
   }
   const Observer& obs = observer(settings.observer);
-  double scale = kLumensPerWatt;
-  if (obs.isCamera) {
-    // The camera's green of D65 equals D65's Y (cd/m² scale); cameraToXyz does the rest.
-    static const Spectrum d65 = illuminant("D65");
-    scale *= observer("cie1931").integrate(d65).y() / obs.integrate(d65).y();
-  }
+  double scale = absoluteTristimulusScale(obs);
   SamplingSettings sampling = effectiveSampling(settings);
   std::vector<SampledWavelengths> sampled =
       sampleWavelengths(sampling, frameIndex, obs);
@@ -133,19 +128,13 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
   }
 
   // Background radiance, a light colour of the given luminance.
-  float luminance = scene.backgroundLuminance;
   if (rgbMode) {
-    frame.lightSpectra.push_back(glm::vec4(scene.background * luminance, 0.0f));
+    frame.lightSpectra.push_back(glm::vec4(scene.background * scene.backgroundLuminance, 0.0f));
   } else {
-    Spectrum white = gamutWhiteIlluminant(space);
-    white *= 1.0 / (kLumensPerWatt * observer("cie1931").integrate(white).y());
-    UnboundedUpsampling up = lookupUnbounded(table, scene.background);
+    BackgroundRadiance background(scene, table);
     for (const shared::GpuBatch& batch : frame.batches) {
       glm::vec4 v;
-      for (int j = 0; j < 4; ++j) {
-        double r = shared::upsampledReflectance(up.coeffs, batch.lambdaNm[j]) * up.scale;
-        v[j] = static_cast<float>(white.at(batch.lambdaNm[j]) * r) * luminance;
-      }
+      for (int j = 0; j < 4; ++j) v[j] = static_cast<float>(background.at(batch.lambdaNm[j]));
       frame.lightSpectra.push_back(v);
     }
   }

@@ -5,6 +5,7 @@
 #include "spectral/csv.h"
 #include "spectral/data_files.h"
 #include "spectral/error.h"
+#include "spectral/illuminant.h"
 
 namespace prism {
 namespace {
@@ -112,6 +113,13 @@ std::vector<Eigen::Vector3d> reflectanceWeights(const Observer& obs, const Spect
                       (trapezoid * illuminant[i] / norm));
   }
   return weights;
+}
+
+double absoluteTristimulusScale(const Observer& obs) {
+  constexpr double kLumensPerWatt = 683.0;
+  if (!obs.isCamera) return kLumensPerWatt;
+  static const Spectrum d65 = illuminant("D65");
+  return kLumensPerWatt * observer("cie1931").integrate(d65).y() / obs.integrate(d65).y();
 }
 
 }  // namespace prism

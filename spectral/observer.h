@@ -45,4 +45,10 @@ Eigen::Vector3d whiteTristimulus(const Observer& obs, const Spectrum& illuminant
 // R, so optimisers can evaluate colours without building a Spectrum; Σ_i w[i] is the white.
 std::vector<Eigen::Vector3d> reflectanceWeights(const Observer& obs, const Spectrum& illuminant);
 
+// The factor that makes a renderer's tristimulus absolute: 683 lm/W (so that CIE Y of spectral
+// radiance in W·sr⁻¹·m⁻²·nm⁻¹ is luminance in cd/m²), and for a camera also the scale that gives
+// its green of D65 the Y of D65 (raw camera RGB on the luminance scale; its fitted camera matrix
+// does the rest). Every renderer multiplies its integration weights by it.
+double absoluteTristimulusScale(const Observer& obs);
+
 }  // namespace prism

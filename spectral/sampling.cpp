@@ -12,11 +12,10 @@ namespace prism::shared {
 }
 
 namespace prism {
-namespace {
 
 // Piecewise-constant pdf over 1 nm bins of [minNm, maxNm] (the last bin may be shorter),
 // proportional to the observer's summed response.
-struct ResponsePdf {
+struct WavelengthSampler::ResponsePdf {
   std::vector<double> edgesNm;  // bins + 1
   std::vector<double> density;  // per nm, integrates to 1
   std::vector<double> cdf;      // at edges
@@ -56,7 +55,6 @@ struct ResponsePdf {
   }
 };
 
-}  // namespace
 
 SamplingStrategy samplingStrategyFromName(std::string_view name) {
   if (name == "uniform") return SamplingStrategy::Uniform;
@@ -76,16 +74,39 @@ void validate(const SamplingSettings& s) {
                 std::to_string(s.minNm) + "–" + std::to_string(s.maxNm) + " nm");
 }
 
-std::vector<SampledWavelengths> sampleWavelengths(const SamplingSettings& s, std::uint32_t seed,
-                                                  const Observer& importance) {
-  validate(s);
+WavelengthSampler::WavelengthSampler(const SamplingSettings& settings, const Observer& importance)
+    : mSettings(settings) {
+  validate(settings);
+  if (settings.strategy == SamplingStrategy::Importance) {
+    mPdf = std::make_unique<ResponsePdf>(importance, settings.minNm, settings.maxNm);
+  }
+}
+
+WavelengthSampler::~WavelengthSampler() = default;
+WavelengthSampler::WavelengthSampler(WavelengthSampler&&) noexcept = default;
+WavelengthSampler& WavelengthSampler::operator=(WavelengthSampler&&) noexcept = default;
+
+std::vector<SampledWavelengths> sampleWavelengths(const SamplingSettings& settings,
+                                                  std::uint32_t seed, const Observer& importance) {
+  return WavelengthSampler(settings, importance).sample(seed);
+}
+
+std::vector<SampledWavelengths> WavelengthSampler::sample(std::uint32_t seed) const {
+  return sample(seed, 0, 1);
+}
+
+std::vector<SampledWavelengths> WavelengthSampler::sample(std::uint32_t seed, int part,
+                                                          int parts) const {
+  PRISM_CHECK(parts >= 1 && part >= 0 && part < parts);
+  const SamplingSettings& s = mSettings;
   const int n = s.count;
   const double width = s.maxNm - s.minNm;
   std::vector<SampledWavelengths> batches(static_cast<std::size_t>(n / 4));
   if (s.strategy == SamplingStrategy::Importance) {
-    ResponsePdf pdf(importance, s.minNm, s.maxNm);
+    const ResponsePdf& pdf = *mPdf;
     for (int i = 0; i < n; ++i) {
-      double u = (i + static_cast<double>(shared::randomFloat(seed, static_cast<std::uint32_t>(i)))) / n;
+      double jitter = static_cast<double>(shared::randomFloat(seed, static_cast<std::uint32_t>(i)));
+      double u = (i + (part + jitter) / parts) / n;
       auto [lambda, p] = pdf.invert(u);
       batches[static_cast<std::size_t>(i / 4)].lambdaNm[static_cast<std::size_t>(i % 4)] = lambda;
       batches[static_cast<std::size_t>(i / 4)].pdf[static_cast<std::size_t>(i % 4)] = p;
@@ -95,9 +116,9 @@ std::vector<SampledWavelengths> sampleWavelengths(const SamplingSettings& s, std
   constexpr double kGoldenRatioConjugate = 0.6180339887498949;
   const double rotation = std::fmod(0.5 + static_cast<double>(seed) * kGoldenRatioConjugate, 1.0);
   for (int i = 0; i < n; ++i) {
-    double offset = s.strategy == SamplingStrategy::Uniform   ? 0.5
+    double offset = s.strategy == SamplingStrategy::Uniform   ? (part + 0.5) / parts
                     : s.strategy == SamplingStrategy::Rotated ? rotation
-                    : static_cast<double>(shared::randomFloat(seed, static_cast<std::uint32_t>(i)));
+                    : (part + static_cast<double>(shared::randomFloat(seed, static_cast<std::uint32_t>(i)))) / parts;
     batches[static_cast<std::size_t>(i / 4)].lambdaNm[static_cast<std::size_t>(i % 4)] =
         s.minNm + (i + offset) * width / n;
     batches[static_cast<std::size_t>(i / 4)].pdf[static_cast<std::size_t>(i % 4)] = 1.0 / width;

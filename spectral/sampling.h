@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -51,6 +52,27 @@ void validate(const SamplingSettings& settings);
 // whose response Importance follows.
 std::vector<SampledWavelengths> sampleWavelengths(const SamplingSettings& settings,
                                                   std::uint32_t seed, const Observer& importance);
+
+// The same, for callers that draw many sets (a path tracer: one per path): the settings are
+// validated and Importance's pdf is tabulated once, at construction.
+class WavelengthSampler {
+ public:
+  WavelengthSampler(const SamplingSettings& settings, const Observer& importance);
+  ~WavelengthSampler();
+  WavelengthSampler(WavelengthSampler&&) noexcept;
+  WavelengthSampler& operator=(WavelengthSampler&&) noexcept;
+  std::vector<SampledWavelengths> sample(std::uint32_t seed) const;
+  // Stratified and Importance, subdivided: wavelength i lies in part `part` of `parts` equal
+  // parts (in the CDF) of its stratum. Sets drawn for part = 0..parts−1, each weighted as usual,
+  // average to the stratified estimate over n·parts strata (how a path tracer spreads a pixel's
+  // paths over the spectrum). Uniform takes the part's midpoint; Rotated ignores parts.
+  std::vector<SampledWavelengths> sample(std::uint32_t seed, int part, int parts) const;
+
+ private:
+  struct ResponsePdf;
+  SamplingSettings mSettings;
+  std::unique_ptr<ResponsePdf> mPdf;  // Importance only
+};
 
 using IntegrationMatrix = Eigen::Matrix<double, 3, 4>;
 // M[c][j] = curve_c(λ_j) / (n·pdf_j): tristimulus += M · (L(λ_0..3)).

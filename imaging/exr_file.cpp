@@ -9,6 +9,7 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStdIO.h>
+#include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
 #include <algorithm>
@@ -85,6 +86,9 @@ void writeExr(const std::filesystem::path& path, const FloatImage& image, const 
     if (options.colour == ColourMeaning::LinearSrgb) Imf::addChromaticities(header, Imf::Chromaticities());
     if (options.colour == ColourMeaning::Xyz) Imf::addChromaticities(header, xyzChromaticities());
   }
+  if (options.displayWhite) {
+    header.insert(kDisplayWhiteAttribute, Imf::FloatAttribute(static_cast<float>(*options.displayWhite)));
+  }
 
   // OutputFile does not convert pixel types (InputFile does), so half gets its own copy,
   // rounded to nearest by Imath::half.
@@ -160,6 +164,13 @@ ExrImage readExr(const std::filesystem::path& path) {
                                                                 : ColourMeaning::OtherRgb;
     } else {
       out.colour = names[0] == "X" ? ColourMeaning::Xyz : ColourMeaning::LinearSrgb;
+    }
+    if (const auto* white = header.findTypedAttribute<Imf::FloatAttribute>(kDisplayWhiteAttribute)) {
+      if (!(white->value() > 0.0f) || !std::isfinite(white->value())) {
+        throw Error(path.string() + ": " + kDisplayWhiteAttribute + ": expected a positive number, got " +
+                    std::to_string(white->value()));
+      }
+      out.displayWhite = white->value();
     }
     return out;
   } catch (const Error&) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 
 #include "imaging/float_image.h"
 
@@ -21,10 +22,15 @@ enum class ExrChannelNames {
   Xyz,         // X, Y, Z (+ A)
 };
 
+// "prism:displayWhite" (float): the luminance, in the image's units (cd/m² for Prism's renders),
+// that the exposure maps to display white. Comparisons read it as the white of CIELAB.
+inline constexpr const char* kDisplayWhiteAttribute = "prism:displayWhite";
+
 struct ExrWriteOptions {
   ColourMeaning colour = ColourMeaning::LinearSrgb;
   ExrPrecision precision = ExrPrecision::Float;
   ExrChannelNames names = ExrChannelNames::FromColour;  // a 1-channel image is always "Y"
+  std::optional<double> displayWhite = std::nullopt;  // written as kDisplayWhiteAttribute when set
 };
 
 // ZIP-compressed scan lines, written to memory and then to `path` atomically: a reader never
@@ -36,6 +42,7 @@ void writeExr(const std::filesystem::path& path, const FloatImage& image,
 struct ExrImage {
   FloatImage image;
   ColourMeaning colour = ColourMeaning::LinearSrgb;
+  std::optional<double> displayWhite;  // kDisplayWhiteAttribute, when the file has it
 };
 
 // Reads R, G, B (+ A), else X, Y, Z (+ A), else Y alone as one channel, in any pixel type, as

@@ -83,6 +83,17 @@ TEST_F(Exr, HalfRoundTripIsWithinHalfPrecision) {
   }
 }
 
+TEST_F(Exr, TheDisplayWhiteTravelsWithTheImage) {
+  std::filesystem::path dir = freshDir("white");
+  FloatImage image = ramp(3, 2, 3);
+  writeExr(dir / "white.exr", image, {.colour = ColourMeaning::Xyz, .displayWhite = 3932.16});
+  std::optional<double> white = readExr(dir / "white.exr").displayWhite;
+  ASSERT_TRUE(white);
+  EXPECT_NEAR(*white, 3932.16, 1e-3);
+  writeExr(dir / "plain.exr", image);
+  EXPECT_FALSE(readExr(dir / "plain.exr").displayWhite);
+}
+
 TEST_F(Exr, ChannelNamesAndMeaningsRoundTrip) {
   std::filesystem::path dir = freshDir("meanings");
   FloatImage image = ramp(3, 2, 3);

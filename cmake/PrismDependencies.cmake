@@ -15,6 +15,9 @@ find_package(OpenEXR 3 REQUIRED CONFIG)
 find_package(TinyGLTF 2.7 REQUIRED CONFIG)
 # libepoxy loads OpenGL and EGL for prism::gpu (no CMake config of its own).
 pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
+# Embree 3 traces the reference path tracer's rays (Debian: libembree-dev): target embree.
+find_package(embree 3 REQUIRED CONFIG)
+find_package(Threads REQUIRED)
 # GLFW opens the viewer's window and its GL context (prism_gpu_window only): target glfw.
 find_package(glfw3 3.3 REQUIRED)
 

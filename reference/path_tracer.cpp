@@ -1,0 +1,372 @@
+#include "reference/path_tracer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "reference/ray_scene.h"
+#include "reference/surface_hit.h"
+#include "scene/camera_transform.h"
+#include "scene/scene_spectra.h"
+#include "shared_cpp.h"
+#include "spectral/error.h"
+#include "spectral/observer.h"
+
+namespace prism::shared {
+#include "random.glsl"
+#include "sigmoid.glsl"
+#include "brdf.glsl"
+#include "lights.glsl"
+}  // namespace prism::shared
+
+namespace prism::reference {
+namespace {
+
+using glm::vec3;
+using glm::vec4;
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+constexpr float kPi = 3.14159265358979f;
+constexpr int kPassSamples = 8;  // samples per pixel per progressive pass
+
+// Independent uniform numbers for one path: the PCG hash of a counter (random.glsl), seeded by
+// pixel, sample and image seed, so that the image does not depend on the thread count.
+class PathRandom {
+ public:
+  PathRandom(std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed)
+      : mSeed(shared::pcgHash(pixel ^ shared::pcgHash(sample ^ shared::pcgHash(seed)))) {}
+  std::uint32_t seed() const { return mSeed; }
+  float next() { return shared::randomFloat(mSeed, mIndex++); }
+
+ private:
+  std::uint32_t mSeed;
+  std::uint32_t mIndex = 0;
+};
+
+// A light as lightIncidence() takes it.
+struct LightInput {
+  int type;
+  vec3 position, directionTravel;
+  float intensity, cosInner, cosOuter;
+  bool castsShadows;
+};
+
+// Per material: how its albedo is evaluated at a path's wavelengths.
+struct MaterialInput {
+  const Material* material;
+  vec3 coefficients{0.0f};  // Jakob–Hanika coefficients of the base colour (untextured)
+};
+
+// An offset along the geometric normal that clears the surface's own triangles (float
+// positions of scenes measured in metres).
+vec3 offsetOrigin(const vec3& p, const vec3& geometricNormal) {
+  float scale = std::max({1.0f, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  return p + geometricNormal * (1e-4f * scale);
+}
+
+// An orthonormal frame around unit n (Duff et al. 2017, "Building an Orthonormal Basis, Revisited").
+void frame(const vec3& n, vec3& t, vec3& b) {
+  float sign = std::copysign(1.0f, n.z);
+  float a = -1.0f / (sign + n.z);
+  float c = n.x * n.y * a;
+  t = vec3(1.0f + sign * n.x * n.x * a, sign * c, -sign * n.x);
+  b = vec3(c, sign + n.y * n.y * a, -n.y);
+}
+
+class PathTracer {
+ public:
+  PathTracer(const Scene& scene, const RgbToSpectrumTable& table, const ReferenceSettings& settings)
+      : mScene(scene),
+        mTable(table),
+        mSettings(settings),
+        mObserver(observer(settings.observer)),
+        mScale(absoluteTristimulusScale(mObserver)),
+        mSampler(settings.wavelengths, mObserver),
+        mRays(scene),
+        mBackground(scene, table),
+        mCamera(cameraTransform(scene.camera, settings.width, settings.height)) {
+    for (const Light& light : scene.lights) {
+      int type = light.type == LightType::Directional ? shared::kLightDirectional
+                 : light.type == LightType::Point     ? shared::kLightPoint
+                                                      : shared::kLightSpot;
+      mLights.push_back({type, light.position, glm::normalize(light.direction), light.intensity,
+                         std::cos(glm::radians(light.innerConeDeg)),
+                         std::cos(glm::radians(light.outerConeDeg)), light.castsShadows});
+    }
+    for (const Material& m : scene.materials) {
+      mMaterials.push_back({&m, table.lookup(m.baseColour)});
+    }
+  }
+
+  // One path through pixel (x, y) (row 0 at the top): its tristimulus estimate.
+  Eigen::Vector3d samplePixel(int x, int y, std::uint32_t sample) const {
+    std::uint32_t pixel = static_cast<std::uint32_t>(y * mSettings.width + x);
+    PathRandom random(pixel, sample, mSettings.seed);
+    // Sample s of N takes part s of every stratum: a pixel's N paths together are a stratified
+    // estimate over 4·N strata of the spectrum.
+    SampledWavelengths wavelengths =
+        mSampler.sample(random.seed(), static_cast<int>(sample % static_cast<std::uint32_t>(mSettings.samplesPerPixel)),
+                        mSettings.samplesPerPixel).front();
+    vec4 lambdaNm;
+    for (int j = 0; j < 4; ++j) lambdaNm[j] = static_cast<float>(wavelengths.lambdaNm[static_cast<std::size_t>(j)]);
+
+    float sx = static_cast<float>(x) + 0.5f, sy = static_cast<float>(y) + 0.5f;
+    if (mSettings.filter == PixelFilter::Box) {
+      sx = static_cast<float>(x) + random.next();
+      sy = static_cast<float>(y) + random.next();
+    }
+    vec3 direction = cameraDirection(sx / static_cast<float>(mSettings.width),
+                                     1.0f - sy / static_cast<float>(mSettings.height));
+    vec4 radiance = trace(mCamera.position, direction, lambdaNm, random);
+
+    IntegrationMatrix m = integrationMatrices({wavelengths}, mObserver).front();
+    Eigen::Vector4d l(radiance.x, radiance.y, radiance.z, radiance.w);
+    return mScale * (m * l);
+  }
+
+ private:
+  // The direction through the point uv ∈ [0, 1]² of the image (GL window convention).
+  vec3 cameraDirection(float u, float v) const {
+    vec4 farPoint = mCamera.inverseViewProjection * vec4(u * 2.0f - 1.0f, v * 2.0f - 1.0f, 1.0f, 1.0f);
+    return glm::normalize(vec3(farPoint) / farPoint.w - mCamera.position);
+  }
+
+  vec4 backgroundAt(const vec4& lambdaNm) const {
+    vec4 v;
+    for (int j = 0; j < 4; ++j) v[j] = static_cast<float>(mBackground.at(lambdaNm[j]));
+    return v;
+  }
+
+  // The spectra of a surface at the path's wavelengths: albedo (or n) and conductor k.
+  void surfaceSpectra(const SurfaceHit& hit, const vec4& lambdaNm, vec4& albedoOrN, vec4& k) const {
+    const MaterialInput& input = mMaterials[static_cast<std::size_t>(hit.material)];
+    const Material& m = *input.material;
+    k = vec4(0.0f);
+    if (m.conductor) {
+      for (int j = 0; j < 4; ++j) {
+        albedoOrN[j] = static_cast<float>(m.conductor->n.at(lambdaNm[j]));
+        k[j] = static_cast<float>(m.conductor->k.at(lambdaNm[j]));
+      }
+    } else if (m.reflectance) {
+      for (int j = 0; j < 4; ++j) albedoOrN[j] = static_cast<float>(m.reflectance->at(lambdaNm[j]));
+    } else {
+      vec3 coefficients = m.baseColourTexture >= 0 ? mTable.lookup(hit.albedo) : input.coefficients;
+      albedoOrN = shared::upsampledReflectance4(coefficients, lambdaNm);
+    }
+  }
+
+  // BRDF·cos for light arriving from l (unit), the rasteriser's model.
+  vec4 reflection(const SurfaceHit& hit, const vec3& v, const vec3& l, const vec4& albedoOrN,
+                  const vec4& k) const {
+    const Material& m = *mMaterials[static_cast<std::size_t>(hit.material)].material;
+    shared::MicrofacetTerms terms = shared::microfacetTerms(hit.normalW, v, l, hit.roughness);
+    if (m.lambertian) terms.specular = 0.0f;
+    bool conductor = m.conductor.has_value();
+    return shared::surfaceReflection(terms, conductor, albedoOrN, k, conductor ? 1.0f : hit.metallic);
+  }
+
+  // Every light's contribution at a hit (next-event estimation; delta lights).
+  vec4 directLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm,
+                   const vec4& albedoOrN, const vec4& k) const {
+    vec4 sum(0.0f);
+    for (std::size_t i = 0; i < mLights.size(); ++i) {
+      const LightInput& light = mLights[i];
+      shared::LightIncidence li =
+          shared::lightIncidence(light.type, light.position, light.directionTravel, light.intensity,
+                                 light.cosInner, light.cosOuter, hit.positionW);
+      if (li.irradiance <= 0.0f || glm::dot(li.toLight, hit.geometricNormalW) <= 0.0f) continue;
+      if (glm::dot(li.toLight, hit.normalW) <= 0.0f) continue;
+      if (light.castsShadows) {
+        float tMax = li.distance > 0.0f ? li.distance * (1.0f - 1e-5f) : kInfinity;
+        if (mRays.occluded(offsetOrigin(hit.positionW, hit.geometricNormalW), li.toLight, 0.0f, tMax)) continue;
+      }
+      vec4 spd;
+      for (int j = 0; j < 4; ++j) spd[j] = static_cast<float>(mScene.lights[i].spd.at(lambdaNm[j]));
+      sum += reflection(hit, v, li.toLight, albedoOrN, k) * spd * li.irradiance;
+    }
+    return sum;
+  }
+
+  // Samples a direction from the BRDF's lobes; false when the path ends here. throughput
+  // is multiplied by BRDF·cos / pdf.
+  bool sampleBrdf(const SurfaceHit& hit, const vec3& v, const vec4& albedoOrN, const vec4& k,
+                  PathRandom& random, vec3& l, vec4& throughput) const {
+    const Material& m = *mMaterials[static_cast<std::size_t>(hit.material)].material;
+    const vec3& n = hit.normalW;
+    // The specular lobe's share: all of a conductor's, none of a Lambertian's, and for the
+    // metallic–roughness model from ¼ (dielectric) to all (metal).
+    float specularShare = m.conductor ? 1.0f : m.lambertian ? 0.0f : 0.25f + 0.75f * hit.metallic;
+    float r = std::max(hit.roughness, 0.02f);  // as microfacetTerms clamps it
+    float alpha = r * r;
+    vec3 t, b;
+    frame(n, t, b);
+    float u1 = random.next(), u2 = random.next();
+    if (random.next() < specularShare) {
+      // GGX normal distribution D(h)·(n·h) (Walter et al. 2007, Eq. 35–36), then reflect.
+      float phi = 2.0f * kPi * u1;
+      float cos2 = (1.0f - u2) / (1.0f + (alpha * alpha - 1.0f) * u2);
+      float cosTheta = std::sqrt(cos2), sinTheta = std::sqrt(std::max(0.0f, 1.0f - cos2));
+      vec3 h = t * (sinTheta * std::cos(phi)) + b * (sinTheta * std::sin(phi)) + n * cosTheta;
+      l = 2.0f * glm::dot(v, h) * h - v;
+    } else {
+      // Cosine-weighted hemisphere (Malley's method).
+      float radius = std::sqrt(u1), phi = 2.0f * kPi * u2;
+      l = t * (radius * std::cos(phi)) + b * (radius * std::sin(phi)) +
+          n * std::sqrt(std::max(0.0f, 1.0f - u1));
+    }
+    float nDotL = glm::dot(n, l);
+    if (nDotL <= 0.0f || glm::dot(l, hit.geometricNormalW) <= 0.0f) return false;
+    l = glm::normalize(l);
+    vec3 h = glm::normalize(v + l);
+    float nDotH = std::max(glm::dot(n, h), 0.0f);
+    vec3 nCrossH = glm::cross(n, h);
+    float vDotH = std::max(glm::dot(v, h), 1e-6f);
+    float pdfSpecular = shared::ggxDistribution(nDotH, glm::dot(nCrossH, nCrossH), alpha) * nDotH / (4.0f * vDotH);
+    float pdfDiffuse = nDotL / kPi;
+    float pdf = specularShare * pdfSpecular + (1.0f - specularShare) * pdfDiffuse;
+    if (!(pdf > 0.0f)) return false;
+    throughput *= reflection(hit, v, l, albedoOrN, k) / pdf;
+    return true;
+  }
+
+  vec4 trace(vec3 origin, vec3 direction, const vec4& lambdaNm, PathRandom& random) const {
+    const bool global = mSettings.transport == LightTransport::Global;
+    vec4 radiance(0.0f), throughput(1.0f);
+    for (int depth = 0;; ++depth) {
+      std::optional<RayHit> found = mRays.intersect(origin, direction, 0.0f, kInfinity);
+      if (!found) {
+        if (depth == 0 || global) radiance += throughput * backgroundAt(lambdaNm);
+        break;
+      }
+      SurfaceHit hit = surfaceHit(mScene, *found, origin, direction);
+      vec3 v = -direction;
+      vec4 albedoOrN, k;
+      surfaceSpectra(hit, lambdaNm, albedoOrN, k);
+      radiance += throughput * directLight(hit, v, lambdaNm, albedoOrN, k);
+      if (!global || depth + 1 >= mSettings.maxDepth) break;
+      vec3 l;
+      if (!sampleBrdf(hit, v, albedoOrN, k, random, l, throughput)) break;
+      if (depth >= 3) {  // Russian roulette on the largest throughput
+        float survive = std::min(1.0f, std::max({throughput.x, throughput.y, throughput.z, throughput.w}));
+        if (random.next() >= survive) break;
+        throughput /= survive;
+      }
+      origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
+      direction = l;
+    }
+    // A NaN or ∞ (a degenerate pdf) must not poison the pixel's mean: such a path counts as 0.
+    for (int j = 0; j < 4; ++j) {
+      if (!std::isfinite(radiance[j])) return vec4(0.0f);
+    }
+    return radiance;
+  }
+
+  const Scene& mScene;
+  const RgbToSpectrumTable& mTable;
+  ReferenceSettings mSettings;
+  const Observer& mObserver;
+  double mScale;
+  WavelengthSampler mSampler;
+  RayScene mRays;
+  BackgroundRadiance mBackground;
+  CameraTransform mCamera;
+  std::vector<LightInput> mLights;
+  std::vector<MaterialInput> mMaterials;
+};
+
+}  // namespace
+
+LightTransport lightTransportFromName(std::string_view name) {
+  if (name == "direct") return LightTransport::Direct;
+  if (name == "global") return LightTransport::Global;
+  throw Error(fmt::format("unknown light transport \"{}\" (known: direct, global)", name));
+}
+
+PixelFilter pixelFilterFromName(std::string_view name) {
+  if (name == "box") return PixelFilter::Box;
+  if (name == "centre" || name == "center") return PixelFilter::Centre;
+  throw Error(fmt::format("unknown pixel filter \"{}\" (known: box, centre)", name));
+}
+
+void validate(const ReferenceSettings& s) {
+  if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384) {
+    throw Error(fmt::format("image size must be 1–16384 on each side, got {}x{}", s.width, s.height));
+  }
+  if (s.samplesPerPixel < 1) throw Error(fmt::format("--spp must be at least 1, got {}", s.samplesPerPixel));
+  if (s.maxDepth < 1) throw Error(fmt::format("--max-depth must be at least 1, got {}", s.maxDepth));
+  if (s.wavelengths.count != 4) {
+    throw Error(fmt::format("the reference traces 4 hero wavelengths per path, got {}", s.wavelengths.count));
+  }
+  prism::validate(s.wavelengths);
+  observer(s.observer);  // throws naming it when unknown
+}
+
+ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& table,
+                               const ReferenceSettings& settings, const ReferenceProgress& progress) {
+  validate(settings);
+  PathTracer tracer(scene, table, settings);
+  const int width = settings.width, height = settings.height;
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  std::vector<Eigen::Vector3d> sum(pixels, Eigen::Vector3d::Zero()), sumSquares = sum;
+
+  const int passes = (settings.samplesPerPixel + kPassSamples - 1) / kPassSamples;
+  const std::size_t total = static_cast<std::size_t>(passes) * static_cast<std::size_t>(height);
+  std::size_t done = 0;
+  std::mutex progressMutex;
+  unsigned threadCount = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
+
+  for (int pass = 0; pass < passes; ++pass) {
+    const int first = pass * kPassSamples;
+    const int last = std::min(settings.samplesPerPixel, first + kPassSamples);
+    std::atomic<int> nextRow{0};
+    std::exception_ptr failure;
+    auto work = [&] {
+      try {
+        for (int y = nextRow++; y < height; y = nextRow++) {
+          for (int x = 0; x < width; ++x) {
+            std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+            for (int s = first; s < last; ++s) {
+              Eigen::Vector3d value = tracer.samplePixel(x, y, static_cast<std::uint32_t>(s));
+              sum[i] += value;
+              sumSquares[i] += value.cwiseProduct(value);
+            }
+          }
+          std::lock_guard lock(progressMutex);
+          ++done;
+          if (progress) progress(done, total);
+        }
+      } catch (...) {
+        std::lock_guard lock(progressMutex);
+        if (!failure) failure = std::current_exception();
+        nextRow = height;
+      }
+    };
+    std::vector<std::thread> threads;
+    for (unsigned t = 1; t < threadCount; ++t) threads.emplace_back(work);
+    work();
+    for (std::thread& t : threads) t.join();
+    if (failure) std::rethrow_exception(failure);
+  }
+
+  ReferenceImage image{imaging::FloatImage(width, height, 3), imaging::FloatImage(width, height, 3)};
+  const double n = settings.samplesPerPixel;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    Eigen::Vector3d mean = sum[i] / n;
+    Eigen::Vector3d variance = Eigen::Vector3d::Zero();
+    if (n > 1) variance = ((sumSquares[i] - n * mean.cwiseProduct(mean)) / (n - 1)).cwiseMax(0.0);
+    for (int c = 0; c < 3; ++c) {
+      image.tristimulus.pixels[3 * i + static_cast<std::size_t>(c)] = static_cast<float>(mean[c]);
+      image.variance.pixels[3 * i + static_cast<std::size_t>(c)] = static_cast<float>(variance[c] / n);
+    }
+  }
+  return image;
+}
+
+}  // namespace prism::reference

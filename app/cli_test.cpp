@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -256,4 +257,69 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
   EXPECT_NE(index.find("spheres_d65_spectral.png"), std::string::npos);
   EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / "textured_gltf_rgb.png"));
   EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / "colorchecker.png"));
+}
+
+TEST(Cli, ReferenceAndCompareCheckTheirInput) {
+  const std::string scenes = PRISM_SCENES_DIR;
+  const std::string scene = scenes + "/spheres_d65.json";
+  expectOneLineError("reference " + scenes + "/missing.json -o x.exr", "missing.json");
+  expectOneLineError("reference " + scene + " -o x.jpg", "x.jpg: the output must be a .png or an .exr");
+  expectOneLineError("reference " + scene + " -o x.exr --variance v.png", "v.png: the variance image must be an .exr");
+  expectOneLineError("reference " + scene + " -o x.exr --spp 0", "--spp must be at least 1");
+  expectOneLineError("reference " + scene + " -o x.exr --transport photons", "unknown light transport \"photons\"");
+  expectOneLineError("reference " + scene + " -o x.exr --filter gauss", "unknown pixel filter \"gauss\"");
+  expectOneLineError("reference " + scene + " -o x.exr --camera cie1964", "not a camera");
+  expectOneLineError("reference " + scene + " -o x.exr --range 300,700", "360–830");
+  expectOneLineError("reference " + scene + " -o x.exr --set lights.0.intensity=-1", "/lights/0/intensity");
+
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "compare_input";
+  std::filesystem::create_directories(dir);
+  prism::imaging::FloatImage small(4, 3, 3, 0.5f), other(5, 3, 3, 0.5f);
+  prism::imaging::writeExr(dir / "a.exr", small, {.colour = prism::imaging::ColourMeaning::Xyz});
+  prism::imaging::writeExr(dir / "b.exr", other, {.colour = prism::imaging::ColourMeaning::Xyz});
+  prism::imaging::writeExr(dir / "cam.exr", small, {.colour = prism::imaging::ColourMeaning::CameraRgb});
+  const std::string a = (dir / "a.exr").string();
+  expectOneLineError("compare " + a + " " + (dir / "nope.exr").string(), "nope.exr");
+  expectOneLineError("compare " + a + " " + (dir / "b.exr").string(), "reference 4 × 3, test 5 × 3");
+  expectOneLineError("compare " + a + " " + (dir / "cam.exr").string(), "camera-rgb");
+  expectOneLineError("compare " + a + " " + a + " --white -1", "--white");
+}
+
+// The reference against the rasteriser through `compare`: the same scene and exposure, so the
+// files carry the same display white and compare with no --white.
+TEST(Cli, ReferenceWritesWhatCompareReads) {
+  const std::string scenes = PRISM_SCENES_DIR;
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "reference_cli";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string scene = scenes + "/spheres_d65.json";
+  Result ref = run("reference " + scene + " -o " + (dir / "ref.exr").string() + " --variance " +
+                   (dir / "var.exr").string() + " --width 48 --height 27 --spp 8 --filter centre");
+  ASSERT_EQ(ref.exitCode, 0) << ref.err;
+  EXPECT_NE(ref.err.find("100%"), std::string::npos) << "a progress bar on stderr";
+  prism::imaging::ExrImage image = prism::imaging::readExr(dir / "ref.exr");
+  EXPECT_EQ(image.colour, prism::imaging::ColourMeaning::Xyz);
+  ASSERT_TRUE(image.displayWhite);
+  EXPECT_NEAR(*image.displayWhite, 1.2 * std::exp2(11.7), 1.0);  // the scene's EV100
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "var.exr"));
+  Result png = run("reference " + scene + " -o " + (dir / "ref.png").string() +
+                   " --width 48 --height 27 --spp 2 --transport global --max-depth 3");
+  ASSERT_EQ(png.exitCode, 0) << png.err;
+
+  Result raster = run("render " + scene + " -o " + (dir / "raster.exr").string() + " --width 48 --height 27");
+  ASSERT_EQ(raster.exitCode, 0) << raster.err;
+  Result cmp = run("compare " + (dir / "ref.exr").string() + " " + (dir / "raster.exr").string() +
+                   " --json --heatmap " + (dir / "heat.png").string() + " --histogram " +
+                   (dir / "hist.png").string());
+  ASSERT_EQ(cmp.exitCode, 0) << cmp.err;
+  nlohmann::json j = nlohmann::json::parse(cmp.out);
+  EXPECT_EQ(j["pixels"].get<int>(), 48 * 27);
+  EXPECT_GT(j["mean_delta_e"].get<double>(), 0.0);
+  EXPECT_LT(j["mean_delta_e"].get<double>(), 3.0);
+  EXPECT_GE(j["max_delta_e"].get<double>(), j["p95_delta_e"].get<double>());
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "heat.png"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "hist.png"));
+  Result same = run("compare " + (dir / "ref.png").string() + " " + (dir / "ref.png").string());
+  ASSERT_EQ(same.exitCode, 0) << same.err;
+  EXPECT_NE(same.out.find("mean 0.0000"), std::string::npos) << same.out;
 }

@@ -13,6 +13,7 @@
 #include "gpu/headless_context.h"
 #include "imaging/image_difference.h"
 #include "imaging/png_file.h"
+#include "render/display_transform.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "spectral/atomic_file.h"
@@ -150,7 +151,7 @@ void runGallery(const GalleryOptions& o) {
     e.description = description(files[i]);
     // In XYZ before the display transform, relative to the exposure's white: dither and tone
     // mapping are not differences between the modes.
-    double white = 1.2 * std::exp2(static_cast<double>(scene.camera.ev100));
+    double white = render::displayWhiteLuminance(scene.camera.ev100);
     e.difference = imaging::compareImages(
                        imaging::linearInput(spectralXyz, imaging::ColourMeaning::Xyz, white),
                        imaging::linearInput(rgbXyz, imaging::ColourMeaning::Xyz, white))

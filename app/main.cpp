@@ -9,10 +9,13 @@
 
 #include "app/colour_checker_demo.h"
 #include "app/colour_commands.h"
+#include "app/compare_commands.h"
 #include "app/gallery.h"
+#include "app/reference_commands.h"
 #include "app/render_commands.h"
 #include "app/scene_bench.h"
 #include "app/upsampling_commands.h"
+#include "app/validate.h"
 #include "gpu/error.h"
 #include "spectral/error.h"
 
@@ -187,6 +190,55 @@ int main(int argc, char** argv) {
   };
   addRenderSettings(renderCmd, render.settings, renderRange, renderEv, nullptr);
 
+  ReferenceOptions ref;
+  std::string refRange, refEv;
+  auto* referenceCmd = app.add_subcommand(
+      "reference", "the ground truth: a CPU spectral path tracer (hero wavelengths, Embree) to an EXR "
+                   "(linear XYZ in cd/m²) or a PNG");
+  referenceCmd->add_option("scene", ref.scene, "scene file (JSON, see docs/scene-format.md)")->required();
+  referenceCmd->add_option("-o,--output", ref.output, "OUT.exr or OUT.png")->required();
+  referenceCmd->add_option("--variance", ref.variance, "also write the per-pixel variance of the mean (EXR)");
+  referenceCmd->add_option("--set", ref.sets, "override a scene value: json.path=value (repeatable)");
+  referenceCmd->add_option("--width", ref.width, "image width")->capture_default_str();
+  referenceCmd->add_option("--height", ref.height, "image height")->capture_default_str();
+  referenceCmd->add_option("--spp", ref.samplesPerPixel, "paths per pixel (4 wavelengths each)")->capture_default_str();
+  referenceCmd->add_option("--transport", ref.transport, "direct (what the rasteriser computes) or global")
+      ->capture_default_str();
+  referenceCmd->add_option("--max-depth", ref.maxDepth, "global: surface interactions per path at most")
+      ->capture_default_str();
+  referenceCmd->add_option("--filter", ref.filter, "box (antialiased) or centre (pixel centres, as a rasteriser)")
+      ->capture_default_str();
+  referenceCmd->add_option("--observer", ref.observer, "cie1931, cie1964 or a camera")->capture_default_str();
+  referenceCmd->add_option("--camera", ref.camera, "a camera as the observer (raw camera RGB)");
+  referenceCmd->add_option("--range", refRange, "MIN,MAX nm of the hero wavelengths (within 360–830)");
+  referenceCmd->add_option("--strategy", ref.strategy, "importance (observer response), stratified or uniform")
+      ->capture_default_str();
+  referenceCmd->add_option("--seed", ref.seed, "random seed (the image depends on it alone)")->capture_default_str();
+  referenceCmd->add_option("--threads", ref.threads, "worker threads (0: all)");
+  referenceCmd->add_option("--ev", refEv, "exposure EV100 for the PNG and the display white (default: the scene camera's)");
+
+  CompareOptions cmp;
+  double cmpWhite = 0.0;
+  auto* compareCmd = app.add_subcommand("compare", "CIEDE2000 and MAE between a reference and a test image (EXR or PNG)");
+  compareCmd->add_option("reference", cmp.reference, "reference image (.exr XYZ or linear sRGB, or 8-bit .png)")->required();
+  compareCmd->add_option("test", cmp.test, "test image, the same size")->required();
+  compareCmd->add_option("--heatmap", cmp.heatmap, "write a ΔE00 heat map (PNG)");
+  compareCmd->add_option("--histogram", cmp.histogram, "write a ΔE00 histogram (PNG)");
+  auto* whiteOpt = compareCmd->add_option("--white", cmpWhite,
+                                          "luminance of white for linear images (default: the file's display white, else 1)");
+  compareCmd->add_option("--threshold", cmp.threshold, "ΔE00 above which a pixel fails")->capture_default_str();
+  compareCmd->add_option("--scale-max", cmp.scaleMax, "ΔE00 at the top of the heat map and histogram")->capture_default_str();
+  compareCmd->add_flag("--json", cmp.json, "JSON output");
+
+  ValidateOptions val;
+  auto* validateCmd = app.add_subcommand(
+      "validate", "the thesis's experiments: the rasteriser's modes against the reference path tracer, "
+                  "with an HTML report; fails when a bound is broken");
+  validateCmd->add_option("-o,--output", val.output, "folder to write")->capture_default_str();
+  validateCmd->add_option("--scenes", val.scenes, "folder of the scene files (default: the example scenes)");
+  validateCmd->add_flag("--quick", val.quick, "240x135 and 64 paths per pixel (minutes on 2 cores), for CI");
+  validateCmd->add_flag("--json", val.json, "JSON output");
+
   SceneBenchOptions sceneBench;
   std::string benchWavelengths, benchRange, benchEv;
   auto* bench = app.add_subcommand(
@@ -236,6 +288,16 @@ int main(int argc, char** argv) {
       render.settings.ev100 = parseEv(renderEv);
       runRender(render);
     }
+    if (*referenceCmd) {
+      if (!refRange.empty()) ref.range = parseNumbers(refRange, "--range");
+      ref.ev100 = parseEv(refEv);
+      runReference(ref);
+    }
+    if (*compareCmd) {
+      if (whiteOpt->count() > 0) cmp.white = cmpWhite;
+      runCompare(cmp);
+    }
+    if (*validateCmd) return runValidate(val);
     if (*bench && !sceneBench.scene.empty()) {
       if (!bench->remaining().empty()) throw prism::Error("bench: unexpected '" + bench->remaining().front() + "'");
       if (!benchRange.empty()) sceneBench.settings.range = parseNumbers(benchRange, "--range");

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "app/progress_bar.h"
+#include "app/upsampling_table.h"
 #include "gpu/headless_context.h"
 #include "imaging/exr_file.h"
 #include "imaging/png_file.h"
@@ -11,19 +12,8 @@
 #include "scene/scene_loader.h"
 #include "spectral/error.h"
 #include "spectral/observer.h"
-#include "spectral/rgb_to_spectrum_cache.h"
 
 namespace prism::app {
-namespace {
-
-// The Jakob–Hanika table of a scene's colour space, built (with a progress bar) on first use.
-RgbToSpectrumTable upsamplingTable(const std::string& colourSpace) {
-  ProgressBar bar("upsampling table for " + colourSpace);
-  return cachedRgbToSpectrumTable(colourSpace, 64,
-                                  [&](std::size_t done, std::size_t total) { bar.update(done, total); });
-}
-
-}  // namespace
 
 render::FrameSettings frameSettings(const RenderSettingsOptions& o) {
   render::FrameSettings s;
@@ -89,7 +79,8 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
   bool camera = settings.mode != render::RenderMode::Rgb && observer(settings.observer).isCamera;
   imaging::writeExr(output, image,
                     {camera ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,
-                     imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour});
+                     imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour,
+                     render::displayWhiteLuminance(settings.ev100.value_or(scene.camera.ev100))});
 }
 
 void runRender(const RenderOptions& options) {

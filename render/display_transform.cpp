@@ -46,4 +46,16 @@ DisplayTransform displayTransform(const FrameSettings& settings, float sceneEv10
   return t;
 }
 
+double displayWhiteLuminance(float ev100) { return 1.0 / shared::exposureScale(ev100); }
+
+glm::vec3 encodeForDisplay(const DisplayTransform& transform, ToneMap toneMap,
+                           const glm::vec3& tristimulus) {
+  glm::vec3 t = tristimulus;
+  if (glm::any(glm::isnan(t)) || glm::any(glm::isinf(t))) t = glm::vec3(0.0f);
+  glm::vec3 rgb = shared::compressToGamut(transform.toDisplay * t, transform.luminanceWeights);
+  rgb = shared::toneMap(static_cast<int>(toneMap), rgb, transform.luminanceWeights);  // as the pass's uniform
+  rgb = transform.transfer == 1 ? shared::bt2020Encode3(rgb) : shared::srgbEncode3(rgb);
+  return glm::clamp(rgb, glm::vec3(0.0f), glm::vec3(1.0f));
+}
+
 }  // namespace prism::render

@@ -18,4 +18,13 @@ struct DisplayTransform {
 
 DisplayTransform displayTransform(const FrameSettings& settings, float sceneEv100);
 
+// The luminance (cd/m²) an exposure of ev100 maps to display white: 1.2 · 2^ev100 (Lagarde &
+// de Rousiers 2014), the inverse of shaders/shared/post.glsl's exposureScale.
+double displayWhiteLuminance(float ev100);
+
+// The post pass on the CPU for one pixel (shaders/passes/post.frag without the dither): tristimulus
+// → display RGB → gamut compression → tone map → transfer, clamped to [0, 1]. NaN or ∞ give black.
+glm::vec3 encodeForDisplay(const DisplayTransform& transform, ToneMap toneMap,
+                           const glm::vec3& tristimulus);
+
 }  // namespace prism::render

@@ -1,0 +1,87 @@
+#include "app/compare_commands.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "imaging/exr_file.h"
+#include "imaging/heatmap.h"
+#include "imaging/image_difference.h"
+#include "imaging/png_file.h"
+#include "spectral/error.h"
+
+namespace prism::app {
+namespace {
+
+// One side of the comparison, kept alive while the input views it.
+struct Loaded {
+  imaging::PngImage png;
+  imaging::ExrImage exr;
+  bool linear = false;
+  imaging::DifferenceInput input() const {
+    return linear ? imaging::linearInput(exr.image, exr.colour, exr.displayWhite.value_or(1.0))
+                  : imaging::srgb8Input(png);
+  }
+};
+
+Loaded load(const std::filesystem::path& path, const std::optional<double>& white) {
+  Loaded l;
+  std::string extension = path.extension().string();
+  if (extension == ".exr") {
+    l.linear = true;
+    l.exr = imaging::readExr(path);
+    if (l.exr.colour != imaging::ColourMeaning::Xyz && l.exr.colour != imaging::ColourMeaning::LinearSrgb) {
+      throw Error(fmt::format("{}: holds {} values; compare takes XYZ or linear sRGB (render camera "
+                              "images with a CIE observer to compare them)",
+                              path.string(), imaging::colourMeaningName(l.exr.colour)));
+    }
+    if (white) l.exr.displayWhite = *white;
+  } else {
+    l.png = imaging::readPng8(path);
+  }
+  return l;
+}
+
+}  // namespace
+
+void runCompare(const CompareOptions& o) {
+  if (o.white && !(*o.white > 0.0)) throw Error("--white: must be a positive luminance");
+  if (!(o.threshold >= 0.0)) throw Error("--threshold: must be ≥ 0");
+  if (!(o.scaleMax > 0.0)) throw Error("--scale-max: must be > 0");
+  Loaded reference = load(o.reference, o.white);
+  Loaded test = load(o.test, o.white);
+  imaging::DifferenceOptions options;
+  options.thresholdDeltaE = o.threshold;
+  options.keepMap = !o.heatmap.empty() || !o.histogram.empty();
+  imaging::ImageDifference difference;
+  try {
+    difference = imaging::compareImages(reference.input(), test.input(), options);
+  } catch (const Error& e) {
+    throw Error(fmt::format("{} vs {}: {}", o.reference.string(), o.test.string(), e.what()));
+  }
+  if (!o.heatmap.empty()) {
+    imaging::heatMap(difference.deltaEMap, {.maxDeltaE = o.scaleMax, .legend = true}).write(o.heatmap);
+  }
+  if (!o.histogram.empty()) {
+    imaging::HistogramOptions h;
+    h.maxDeltaE = o.scaleMax;
+    imaging::deltaEHistogram(difference.deltaEMap, h).write(o.histogram);
+  }
+  const imaging::DifferenceStats& s = difference.stats;
+  if (o.json) {
+    nlohmann::json j = {{"reference", o.reference.string()}, {"test", o.test.string()},
+                        {"pixels", s.pixelCount},        {"mean_delta_e", s.meanDeltaE},
+                        {"median_delta_e", s.medianDeltaE}, {"p95_delta_e", s.p95DeltaE},
+                        {"p99_delta_e", s.p99DeltaE},     {"max_delta_e", s.maxDeltaE},
+                        {"threshold_delta_e", s.thresholdDeltaE}, {"fraction_above", s.fractionAbove},
+                        {"mae_8bit", s.mae8},             {"relative_error", s.relativeError}};
+    fmt::print("{}\n", j.dump(2));
+    return;
+  }
+  fmt::print("{} vs {} ({} pixels)\n", o.test.string(), o.reference.string(), s.pixelCount);
+  fmt::print("CIEDE2000  mean {:.4f}  median {:.4f}  p95 {:.4f}  p99 {:.4f}  max {:.4f}\n", s.meanDeltaE,
+             s.medianDeltaE, s.p95DeltaE, s.p99DeltaE, s.maxDeltaE);
+  fmt::print("pixels above ΔE00 {:g}: {:.2f} %\n", s.thresholdDeltaE, 100.0 * s.fractionAbove);
+  fmt::print("MAE (8-bit sRGB) {:.4f}   relative error (linear) {:.4f}\n", s.mae8, s.relativeError);
+}
+
+}  // namespace prism::app

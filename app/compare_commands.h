@@ -1,0 +1,24 @@
+// `prism compare REF TEST`: how far a test image is from a reference, as a viewer would judge
+// it (imaging/image_difference.h): mean, median, 95th and 99th percentile and max CIEDE2000,
+// the share of pixels above a threshold, MAE on 8-bit sRGB and the relative error on linear
+// values; optionally a heat map and a histogram of the per-pixel ΔE00 as PNG pictures.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+namespace prism::app {
+
+struct CompareOptions {
+  std::filesystem::path reference;
+  std::filesystem::path test;
+  std::filesystem::path heatmap;    // optional PNG
+  std::filesystem::path histogram;  // optional PNG
+  std::optional<double> white;      // CIELAB white of linear images (default: the file's, else 1)
+  double threshold = 1.0;           // ΔE00 above which a pixel counts as failing
+  double scaleMax = 10.0;           // ΔE00 at the top of the heat map's and histogram's scale
+  bool json = false;
+};
+void runCompare(const CompareOptions& options);
+
+}  // namespace prism::app

@@ -1,0 +1,27 @@
+// `prism validate`: Pérez García's experiments, reproduced against Prism's own ground truth.
+// The thesis's 15 spheres under D65, under its LED lamp and under a narrow blue LED, rendered by
+// the rasteriser in RGB, naive (box) and Jakob–Hanika modes with 200 wavelengths, and in
+// Jakob–Hanika mode with 16 wavelengths a frame (the real-time setting: the uniform grid rotated
+// each frame and 32 frames accumulated, as a still camera gets it, and one frame alone), each
+// compared in CIEDE2000 and MAE with the reference path tracer (direct lighting, pixel centres:
+// what the rasteriser computes, exactly).
+// Writes DIR/index.html (images side by side, heat maps, histograms, the table) and
+// DIR/results.json, prints the table, and fails (exit 1) when a bound below is broken:
+//   spheres under D65, Jakob–Hanika, 16 wavelengths a frame, accumulated: mean ΔE00 ≤ 0.5
+//   spheres under the blue LED, the same: mean ΔE00 ≤ 1.0
+#pragma once
+
+#include <filesystem>
+
+namespace prism::app {
+
+struct ValidateOptions {
+  std::filesystem::path output = "out/validate";
+  std::filesystem::path scenes;  // default: the example scenes
+  bool quick = false;            // 240×135, 64 paths per pixel (CI); else 640×360, 256
+  bool json = false;             // print results.json instead of the table
+};
+// 0 when every bound holds, 1 otherwise (the report is written either way).
+int runValidate(const ValidateOptions& options);
+
+}  // namespace prism::app

@@ -80,6 +80,60 @@ void frame(const vec3& n, vec3& t, vec3& b) {
   b = vec3(c, sign + n.y * n.y * a, -n.y);
 }
 
+// The medium's coefficients at a path's four wavelengths.
+struct MediumAt {
+  vec4 sigmaS{0.0f};
+  vec4 sigmaT{0.0f};
+};
+
+// The part of the ray [tMin, tMax] inside the medium's region (slab test); empty when
+// tEnter >= tExit.
+void mediumInterval(const HomogeneousMedium& medium, const vec3& origin, const vec3& direction,
+                    float tMin, float tMax, float& tEnter, float& tExit) {
+  tEnter = tMin;
+  tExit = tMax;
+  if (!medium.region) return;
+  for (int a = 0; a < 3; ++a) {
+    float inverse = 1.0f / direction[a];
+    float t0 = (medium.region->min[a] - origin[a]) * inverse;
+    float t1 = (medium.region->max[a] - origin[a]) * inverse;
+    if (t0 > t1) std::swap(t0, t1);
+    if (std::isnan(t0) || std::isnan(t1)) {  // parallel to the slab, on its boundary plane
+      if (origin[a] < medium.region->min[a] || origin[a] > medium.region->max[a]) tExit = tEnter;
+      continue;
+    }
+    tEnter = std::max(tEnter, t0);
+    tExit = std::min(tExit, t1);
+  }
+}
+
+// Henyey & Greenstein 1941's phase function of the angle between the light's direction of travel
+// before and after scattering, per steradian.
+float henyeyGreenstein(float cosTheta, float g) {
+  float d = 1.0f + g * g - 2.0f * g * cosTheta;
+  return (1.0f - g * g) / (4.0f * kPi * d * std::sqrt(d));
+}
+
+// A direction of travel after scattering, drawn from the phase function itself (its inverse CDF,
+// pbrt-v3 §15.2.3), so that the path's weight does not change.
+vec3 sampleHenyeyGreenstein(const vec3& travel, float g, float u1, float u2) {
+  float cosTheta;
+  if (std::abs(g) < 1e-3f) {
+    cosTheta = 1.0f - 2.0f * u1;
+  } else {
+    float q = (1.0f - g * g) / (1.0f - g + 2.0f * g * u1);
+    cosTheta = std::clamp((1.0f + g * g - q * q) / (2.0f * g), -1.0f, 1.0f);
+  }
+  float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+  float phi = 2.0f * kPi * u2;
+  vec3 t, b;
+  frame(travel, t, b);
+  return glm::normalize(t * (sinTheta * std::cos(phi)) + b * (sinTheta * std::sin(phi)) + travel * cosTheta);
+}
+
+vec4 exp4(const vec4& v) { return vec4(std::exp(v.x), std::exp(v.y), std::exp(v.z), std::exp(v.w)); }
+float mean4(const vec4& v) { return 0.25f * (v.x + v.y + v.z + v.w); }
+
 class PathTracer {
  public:
   PathTracer(const Scene& scene, const RgbToSpectrumTable& table, const ReferenceSettings& settings)
@@ -124,7 +178,15 @@ class PathTracer {
     }
     vec3 direction = cameraDirection(sx / static_cast<float>(mSettings.width),
                                      1.0f - sy / static_cast<float>(mSettings.height));
-    vec4 radiance = trace(mCamera.position, direction, lambdaNm, random);
+    MediumAt medium;
+    if (mScene.medium) {
+      for (int j = 0; j < 4; ++j) {
+        float sigmaA = static_cast<float>(mScene.medium->sigmaA.at(lambdaNm[j]));
+        medium.sigmaS[j] = static_cast<float>(mScene.medium->sigmaS.at(lambdaNm[j]));
+        medium.sigmaT[j] = sigmaA + medium.sigmaS[j];
+      }
+    }
+    vec4 radiance = trace(mCamera.position, direction, lambdaNm, medium, random);
 
     IntegrationMatrix m = integrationMatrices({wavelengths}, mObserver).front();
     Eigen::Vector4d l(radiance.x, radiance.y, radiance.z, radiance.w);
@@ -172,26 +234,55 @@ class PathTracer {
     return shared::surfaceReflection(terms, conductor, albedoOrN, k, conductor ? 1.0f : hit.metallic);
   }
 
-  // Every light's contribution at a hit (next-event estimation; delta lights).
-  vec4 directLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm,
-                   const vec4& albedoOrN, const vec4& k) const {
+  // Beer–Lambert transmittance of the medium along origin + t·direction, t ∈ [0, tMax].
+  vec4 transmittance(const vec3& origin, const vec3& direction, float tMax, const MediumAt& medium) const {
+    if (!mScene.medium) return vec4(1.0f);
+    float tEnter, tExit;
+    mediumInterval(*mScene.medium, origin, direction, 0.0f, tMax, tEnter, tExit);
+    if (!(tExit > tEnter)) return vec4(1.0f);
+    if (std::isinf(tExit)) {
+      vec4 none(0.0f);
+      for (int j = 0; j < 4; ++j) none[j] = medium.sigmaT[j] > 0.0f ? 0.0f : 1.0f;
+      return none;
+    }
+    return exp4(-medium.sigmaT * (tExit - tEnter));
+  }
+
+  // Spectral irradiance from every light at a point (on a surface facing it), times whatever
+  // `response` makes of the light's direction: BRDF·cos at a surface, the phase function in a
+  // medium. Delta lights, so next-event estimation is exact; shadow rays see surfaces that cast
+  // shadows and the medium's transmittance.
+  template <typename Response>
+  vec4 directLight(const vec3& point, const vec3& rayOrigin, const vec4& lambdaNm, const MediumAt& medium,
+                   Response&& response) const {
     vec4 sum(0.0f);
     for (std::size_t i = 0; i < mLights.size(); ++i) {
       const LightInput& light = mLights[i];
       shared::LightIncidence li =
           shared::lightIncidence(light.type, light.position, light.directionTravel, light.intensity,
-                                 light.cosInner, light.cosOuter, hit.positionW);
-      if (li.irradiance <= 0.0f || glm::dot(li.toLight, hit.geometricNormalW) <= 0.0f) continue;
-      if (glm::dot(li.toLight, hit.normalW) <= 0.0f) continue;
-      if (light.castsShadows) {
-        float tMax = li.distance > 0.0f ? li.distance * (1.0f - 1e-5f) : kInfinity;
-        if (mRays.occluded(offsetOrigin(hit.positionW, hit.geometricNormalW), li.toLight, 0.0f, tMax)) continue;
-      }
+                                 light.cosInner, light.cosOuter, point);
+      if (li.irradiance <= 0.0f) continue;
+      vec4 f = response(li.toLight);
+      if (!(f.x > 0.0f || f.y > 0.0f || f.z > 0.0f || f.w > 0.0f)) continue;
+      float tMax = li.distance > 0.0f ? li.distance * (1.0f - 1e-5f) : kInfinity;
+      if (light.castsShadows && mRays.occluded(rayOrigin, li.toLight, 0.0f, tMax)) continue;
       vec4 spd;
       for (int j = 0; j < 4; ++j) spd[j] = static_cast<float>(mScene.lights[i].spd.at(lambdaNm[j]));
-      sum += reflection(hit, v, li.toLight, albedoOrN, k) * spd * li.irradiance;
+      sum += f * spd * li.irradiance * transmittance(rayOrigin, li.toLight, tMax, medium);
     }
     return sum;
+  }
+
+  vec4 surfaceDirectLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm, const vec4& albedoOrN,
+                          const vec4& k, const MediumAt& medium) const {
+    return directLight(hit.positionW, offsetOrigin(hit.positionW, hit.geometricNormalW), lambdaNm, medium,
+                       [&](const vec3& toLight) {
+                         if (glm::dot(toLight, hit.geometricNormalW) <= 0.0f ||
+                             glm::dot(toLight, hit.normalW) <= 0.0f) {
+                           return vec4(0.0f);
+                         }
+                         return reflection(hit, v, toLight, albedoOrN, k);
+                       });
   }
 
   // Samples a direction from the BRDF's lobes; false when the path ends here. throughput
@@ -236,30 +327,74 @@ class PathTracer {
     return true;
   }
 
-  vec4 trace(vec3 origin, vec3 direction, const vec4& lambdaNm, PathRandom& random) const {
+  // In a medium, the distance to the next scattering event is drawn from one of the four
+  // wavelengths' scattering coefficient (the hero, chosen at random) and absorption weights the
+  // path by Beer–Lambert, so a pure absorber costs no noise; every wavelength is weighted by its
+  // own σs·T over the mean of the four heroes' free-flight densities: the one-sample balance
+  // heuristic of spectral MIS (Wilkie et al. 2014), unbiased at every wavelength of a chromatic
+  // medium.
+  vec4 trace(vec3 origin, vec3 direction, const vec4& lambdaNm, const MediumAt& medium,
+             PathRandom& random) const {
     const bool global = mSettings.transport == LightTransport::Global;
     vec4 radiance(0.0f), throughput(1.0f);
     for (int depth = 0;; ++depth) {
       std::optional<RayHit> found = mRays.intersect(origin, direction, 0.0f, kInfinity);
-      if (!found) {
-        if (depth == 0 || global) radiance += throughput * backgroundAt(lambdaNm);
-        break;
+      const float tSurface = found ? found->distance : kInfinity;
+      bool scattered = false;
+      if (mScene.medium) {
+        float tEnter, tExit;
+        mediumInterval(*mScene.medium, origin, direction, 0.0f, tSurface, tEnter, tExit);
+        if (tExit > tEnter) {
+          float sigmaHero = medium.sigmaS[std::min(3, static_cast<int>(random.next() * 4.0f))];
+          float u = random.next();
+          float t = sigmaHero > 0.0f ? tEnter - std::log1p(-u) / sigmaHero : kInfinity;
+          if (t < tExit) {
+            float d = t - tEnter;
+            throughput *= medium.sigmaS * exp4(-medium.sigmaT * d) / mean4(medium.sigmaS * exp4(-medium.sigmaS * d));
+            vec3 point = origin + direction * t;
+            radiance += throughput * directLight(point, point, lambdaNm, medium, [&](const vec3& toLight) {
+                          return vec4(henyeyGreenstein(glm::dot(toLight, direction), mScene.medium->g));
+                        });
+            scattered = true;
+            if (!global || depth + 1 >= mSettings.maxDepth) break;
+            origin = point;
+            direction = sampleHenyeyGreenstein(direction, mScene.medium->g, random.next(), random.next());
+          } else if (std::isinf(tExit)) {
+            // Through an unbounded medium to infinity: only wavelengths the medium neither
+            // absorbs nor scatters arrive, and only heroes that do not scatter get there.
+            vec4 arrives(0.0f), passes(0.0f);
+            for (int j = 0; j < 4; ++j) {
+              arrives[j] = medium.sigmaT[j] > 0.0f ? 0.0f : 1.0f;
+              passes[j] = medium.sigmaS[j] > 0.0f ? 0.0f : 1.0f;
+            }
+            throughput *= arrives / mean4(passes);
+          } else {
+            float d = tExit - tEnter;
+            throughput *= exp4(-medium.sigmaT * d) / mean4(exp4(-medium.sigmaS * d));
+          }
+        }
       }
-      SurfaceHit hit = surfaceHit(mScene, *found, origin, direction);
-      vec3 v = -direction;
-      vec4 albedoOrN, k;
-      surfaceSpectra(hit, lambdaNm, albedoOrN, k);
-      radiance += throughput * directLight(hit, v, lambdaNm, albedoOrN, k);
-      if (!global || depth + 1 >= mSettings.maxDepth) break;
-      vec3 l;
-      if (!sampleBrdf(hit, v, albedoOrN, k, random, l, throughput)) break;
+      if (!scattered) {
+        if (!found) {
+          if (depth == 0 || global) radiance += throughput * backgroundAt(lambdaNm);
+          break;
+        }
+        SurfaceHit hit = surfaceHit(mScene, *found, origin, direction);
+        vec3 v = -direction;
+        vec4 albedoOrN, k;
+        surfaceSpectra(hit, lambdaNm, albedoOrN, k);
+        radiance += throughput * surfaceDirectLight(hit, v, lambdaNm, albedoOrN, k, medium);
+        if (!global || depth + 1 >= mSettings.maxDepth) break;
+        vec3 l;
+        if (!sampleBrdf(hit, v, albedoOrN, k, random, l, throughput)) break;
+        origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
+        direction = l;
+      }
       if (depth >= 3) {  // Russian roulette on the largest throughput
         float survive = std::min(1.0f, std::max({throughput.x, throughput.y, throughput.z, throughput.w}));
         if (random.next() >= survive) break;
         throughput /= survive;
       }
-      origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
-      direction = l;
     }
     // A NaN or ∞ (a degenerate pdf) must not poison the pixel's mean: such a path counts as 0.
     for (int j = 0; j < 4; ++j) {

@@ -22,6 +22,11 @@
 //   estimation at every vertex, Russian roulette from the fourth vertex; rays that escape see the
 //   background as uniform surrounding radiance. Delta lights cannot be hit, so nothing is
 //   counted twice.
+// - Media (Scene::medium, homogeneous, in a box or everywhere): free flights drawn against
+//   scattering with spectral MIS over the four wavelengths, absorption as Beer–Lambert weight,
+//   Henyey–Greenstein phase; next-event estimation at every scattering event and surface with
+//   the medium's transmittance on the shadow ray. Direct is then single scattering (one event,
+//   in the medium or on a surface, lit by the lights); global, multiple scattering.
 #pragma once
 
 #include <cstdint>
@@ -64,7 +69,9 @@ void validate(const ReferenceSettings& settings);
 
 struct ReferenceImage {
   imaging::FloatImage tristimulus;  // mean over the pixel's paths, 3 channels, row 0 at the top
-  imaging::FloatImage variance;     // the variance of that mean per channel (sample variance / N)
+  // The variance of that mean per channel: sample variance / N, an upper bound for the
+  // stratified wavelengths.
+  imaging::FloatImage variance;
 };
 
 // done / total in pixel rows × passes; called from one thread at a time.

@@ -193,6 +193,104 @@ TEST(PathTracer, TheImageDependsOnTheSeedNotOnTheThreadCount) {
   EXPECT_NE(one.tristimulus.pixels, other.tristimulus.pixels);
 }
 
+// Seen and lit through an absorbing slab: Beer–Lambert on both legs, per pixel.
+TEST(PathTracer, AnAbsorbingSlabAttenuatesBothLegsByBeerLambert) {
+  Scene scene = litPlane(0.5, 1000.0f);
+  HomogeneousMedium slab;
+  slab.sigmaA = Spectrum::constant(0.7);
+  slab.sigmaS = Spectrum::constant(0.0);
+  slab.region = Bounds{{-100.0f, 0.5f, -100.0f}, {100.0f, 1.5f, 100.0f}};
+  scene.medium = slab;
+  ReferenceSettings settings = small(8);
+  ReferenceImage image = renderReference(scene, srgbTable(), settings);
+  CameraTransform camera = cameraTransform(scene.camera, settings.width, settings.height);
+  const float w = static_cast<float>(settings.width), h = static_cast<float>(settings.height);
+  double worstZ = 0.0, meanRatio = 0.0;
+  for (int y = 0; y < settings.height; ++y) {
+    for (int x = 0; x < settings.width; ++x) {
+      float u = (static_cast<float>(x) + 0.5f) / w, v = 1.0f - (static_cast<float>(y) + 0.5f) / h;
+      glm::vec4 far = camera.inverseViewProjection * glm::vec4(u * 2.0f - 1.0f, v * 2.0f - 1.0f, 1.0f, 1.0f);
+      glm::vec3 d = glm::normalize(glm::vec3(far) / far.w - camera.position);
+      // 1 m of slab: 1/0.6 m along the light, 1/|d_y| m along the view.
+      double expected = 0.5 * 1000.0 * 0.6 / kPi * std::exp(-0.7 / 0.6) * std::exp(-0.7 / std::abs(d.y));
+      double sigma = std::sqrt(image.variance.at(x, y, 1));
+      worstZ = std::max(worstZ, std::abs(image.tristimulus.at(x, y, 1) - expected) / sigma);
+      meanRatio += image.tristimulus.at(x, y, 1) / expected;
+    }
+  }
+  meanRatio /= static_cast<double>(image.tristimulus.pixelCount());
+  // No scattering, so no path is lost to it: the only noise is the wavelengths'.
+  EXPECT_NEAR(meanRatio, 1.0, 2e-3);
+  EXPECT_LT(worstZ, 5.0);
+}
+
+// Single scattering from a point light in a chromatic, forward-scattering slab, against the same
+// integral evaluated numerically in the test: ∫∫ σs(λ)·p(θ)·I·S(λ)/r² · e^(−σt(λ)·(s + r)) ds ȳ dλ.
+TEST(PathTracer, SingleScatteringInAChromaticMediumMatchesNumericalIntegration) {
+  Scene scene;
+  scene.camera.position = {0.0f, 0.0f, 0.0f};
+  scene.camera.target = {0.0f, 0.0f, -1.0f};
+  scene.camera.verticalFovDeg = 20.0f;
+  Light lamp;
+  lamp.type = LightType::Point;
+  lamp.position = {0.8f, 0.0f, -1.2f};  // near the entrance: the far slab scatters it backwards
+  lamp.spd = illuminant("D65");
+  lamp.spd *= 1.0 / luminousIntegral(lamp.spd);
+  lamp.intensity = 500.0f;
+  scene.lights.push_back(lamp);
+  HomogeneousMedium fog;
+  fog.sigmaS = Spectrum::fromFunction([](double l) { return 0.3 * std::pow(550.0 / l, 4.0); });
+  fog.sigmaA = Spectrum::fromFunction([](double l) { return 0.05 + 0.2 * (l - 360.0) / 470.0; });
+  fog.g = 0.4f;
+  fog.region = Bounds{{-50.0f, -50.0f, -5.0f}, {50.0f, 50.0f, -1.0f}};
+  scene.medium = fog;
+  ReferenceSettings settings;
+  settings.width = settings.height = 5;
+  settings.samplesPerPixel = 1024;
+  settings.filter = PixelFilter::Centre;
+  ReferenceImage image = renderReference(scene, srgbTable(), settings);
+
+  CameraTransform camera = cameraTransform(scene.camera, settings.width, settings.height);
+  const Observer& cie = observer("cie1931");
+  double worstZ = 0.0, sumDifference = 0.0, sumVariance = 0.0;
+  for (int y = 0; y < settings.height; ++y) {
+    for (int x = 0; x < settings.width; ++x) {
+      float u = (static_cast<float>(x) + 0.5f) / 5.0f, v = 1.0f - (static_cast<float>(y) + 0.5f) / 5.0f;
+      glm::vec4 far = camera.inverseViewProjection * glm::vec4(u * 2.0f - 1.0f, v * 2.0f - 1.0f, 1.0f, 1.0f);
+      glm::dvec3 d = glm::normalize(glm::dvec3(glm::vec3(far) / far.w));
+      double tEnter = 1.0 / -d.z, tExit = 5.0 / -d.z;
+      const int steps = 2000;
+      double expectedY = 0.0;
+      for (int i = kLambdaMinNm; i <= kLambdaMaxNm; ++i) {
+        double l = i, sigmaS = fog.sigmaS.at(l), sigmaT = sigmaS + fog.sigmaA.at(l);
+        double integral = 0.0;  // Simpson over the slab
+        for (int k = 0; k <= steps; ++k) {
+          double t = tEnter + (tExit - tEnter) * k / steps;
+          glm::dvec3 p = d * t, toLight = glm::dvec3(lamp.position) - p;
+          double r = glm::length(toLight);
+          double cosTheta = glm::dot(toLight / r, d);
+          double g = fog.g, q = 1.0 + g * g - 2.0 * g * cosTheta;
+          double phase = (1.0 - g * g) / (4.0 * kPi * q * std::sqrt(q));
+          double f = sigmaS * phase * lamp.intensity / (r * r) * std::exp(-sigmaT * (t - tEnter + r));
+          integral += f * (k == 0 || k == steps ? 1.0 : (k % 2 ? 4.0 : 2.0));
+        }
+        integral *= (tExit - tEnter) / (3.0 * steps);
+        double trapezoid = (i == kLambdaMinNm || i == kLambdaMaxNm) ? 0.5 : 1.0;
+        expectedY += trapezoid * integral * lamp.spd.at(l) * cie.at(l).y();
+      }
+      expectedY *= absoluteTristimulusScale(cie);
+      double got = image.tristimulus.at(x, y, 1);
+      double variance = image.variance.at(x, y, 1);
+      worstZ = std::max(worstZ, std::abs(got - expectedY) / std::sqrt(variance));
+      sumDifference += got - expectedY;
+      sumVariance += variance;
+    }
+  }
+  // Per pixel, and all 25 together (a bias would show in the sum long before in one pixel).
+  EXPECT_LT(worstZ, 5.0);
+  EXPECT_LT(std::abs(sumDifference) / std::sqrt(sumVariance), 4.0);
+}
+
 TEST(PathTracer, BadSettingsAreErrorsNamingThem) {
   Scene scene = litPlane(0.5, 1000.0f);
   ReferenceSettings settings = small(4);

@@ -94,6 +94,23 @@ struct Mesh {
   int material = 0;                    // index into Scene::materials
 };
 
+// Axis-aligned bounds (min, max).
+struct Bounds {
+  glm::vec3 min{0.0f};
+  glm::vec3 max{0.0f};
+};
+
+// A homogeneous participating medium (water, fog): absorption σa and scattering σs per
+// wavelength in 1/m, extinction σt = σa + σs, and a Henyey–Greenstein phase function of
+// asymmetry g. It fills the whole scene, or only the box `region` (a body of water under its
+// surface). Surfaces inside it are lit and seen through it.
+struct HomogeneousMedium {
+  Spectrum sigmaA;
+  Spectrum sigmaS;
+  float g = 0.0f;                // in (−1, 1); 0: isotropic
+  std::optional<Bounds> region;  // none: everywhere
+};
+
 struct Scene {
   std::filesystem::path file;      // the scene file it was loaded from
   std::string colourSpace = "srgb";  // of every RGB value in the scene (spectral/colour_space.h)
@@ -104,13 +121,12 @@ struct Scene {
   std::vector<Image> textures;
   glm::vec3 background{0.0f};  // linear RGB radiance-like colour where no geometry is, as a light colour
   float backgroundLuminance = 0.0f;  // cd/m² of a white background
+  // Traced by the reference (reference/path_tracer.h); the rasteriser does not see it yet. Not
+  // in scene files yet: the underwater issue adds water to them.
+  std::optional<HomogeneousMedium> medium;
 };
 
-// Axis-aligned bounds of all mesh vertices (min, max); both zero for an empty scene.
-struct Bounds {
-  glm::vec3 min{0.0f};
-  glm::vec3 max{0.0f};
-};
+// The bounds of all mesh vertices; both corners zero for an empty scene.
 Bounds sceneBounds(const Scene& scene);
 
 }  // namespace prism

@@ -1,7 +1,8 @@
 # prism_add_layer(NAME SOURCES...): one layer of Prism as a static library `prism_NAME` with
-# the alias and export name prism::NAME, the house warnings, headers included as
-# "NAME/file.h" from the source root (and from include/prism when installed), and install
-# rules for the library and the layer's headers (tests excluded).
+# the alias and export name prism::NAME, the house warnings, headers included by their folder
+# from the source root ("spectral/file.h", "techniques/underwater/file.h"; the same from
+# include/prism when installed), and install rules for the library and the layer's headers
+# (tests excluded).
 function(prism_add_layer name)
   set(target prism_${name})
   add_library(${target} ${ARGN})
@@ -12,6 +13,7 @@ function(prism_add_layer name)
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/prism>)
   install(TARGETS ${target} EXPORT PrismTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/prism/${name}
+  file(RELATIVE_PATH folder ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR})  # e.g. techniques/underwater
+  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/prism/${folder}
           FILES_MATCHING PATTERN "*.h" PATTERN "*_test*" EXCLUDE PATTERN "tests" EXCLUDE)
 endfunction()

@@ -12,7 +12,10 @@ class CpuShadingKernel {
       : mFrame(frame), mTable(table), mShadowLayers(std::move(shadowLayers)) {}
 
   vec3 shade(const render::GBufferTexel& texel, vec2 uv, const CameraTransform& camera) {
-    if (texel.materialId == 0) return shadeBackground(mFrame.constants);
+    if (texel.materialId == 0) {
+      return shadeBackground(mFrame.constants, worldFromDepth(camera.inverseViewProjection, uv, 1.0f),
+                             camera.position);
+    }
     SurfaceSample s;
     s.position = worldFromDepth(camera.inverseViewProjection, uv, texel.depth);
     s.normal = normalize(vec3(texel.normalRoughness));
@@ -38,6 +41,7 @@ class CpuShadingKernel {
     return mShadowLayers[index(layer)][index(y * mFrame.constants.shadowMapSize + x)];
   }
   vec3 upsamplingCoefficients(vec3 rgb) const { return mTable.lookup(rgb); }
+  vec4 frameWaterSpectrum(int b, int j) const { return mFrame.waterSpectra[index(b * 3 + j)]; }
 
 #include "pixel_shading.glsl"
 

@@ -168,6 +168,23 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
   }
   if (frame.materials.empty()) frame.materials.push_back(shared::GpuMaterial{});
   if (frame.materialSpectra.empty()) frame.materialSpectra.push_back(glm::vec4(0.0f));
+
+  // Water.
+  if (scene.water) {
+    const Water& w = *scene.water;
+    frame.constants.water = 1;
+    frame.constants.waterDepthM = w.depthM;
+    frame.constants.waterSurfaceY = w.surfaceY(scene.camera);
+    for (const shared::GpuBatch& batch : frame.batches) {
+      glm::vec4 lambdaNm = rgbMode ? glm::vec4(680.0f, 550.0f, 440.0f, 550.0f) : batch.lambdaNm;
+      glm::vec4 sigmaS = at4(w.sigmaS, lambdaNm), sigmaA = at4(w.sigmaA, lambdaNm);
+      frame.waterSpectra.push_back(sigmaS);
+      frame.waterSpectra.push_back(sigmaA + sigmaS);
+      frame.waterSpectra.push_back(at4(w.kd, lambdaNm));
+    }
+  } else {
+    frame.waterSpectra.push_back(glm::vec4(0.0f));
+  }
   return frame;
 }
 

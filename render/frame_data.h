@@ -17,6 +17,8 @@
 //   (Y in cd/m²). A camera observer is scaled so that its green of D65 equals D65's Y; the post
 //   pass maps camera RGB to XYZ with the fitted camera matrix. RGB mode integrates with the
 //   colour space's RGB → XYZ rows.
+// - Water: σs, σt = σa + σs and Kd at each wavelength (RGB mode: at 680, 550 and 440 nm, the
+//   wavelengths RGB renderers commonly stand R, G and B for).
 #pragma once
 
 #include <cstdint>
@@ -39,6 +41,7 @@ struct FrameData {
   std::vector<shared::GpuMaterial> materials;  // one per scene material, in scene order
   std::vector<glm::vec4> lightSpectra;         // (lightCount + 1) × batchCount
   std::vector<glm::vec4> materialSpectra;      // spectra × batchCount × 2 (at least one entry)
+  std::vector<glm::vec4> waterSpectra;         // batchCount × 3 under water, else one zero entry
 };
 
 // frameIndex seeds stochastic wavelength strategies (a new set every frame).

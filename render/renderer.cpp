@@ -204,6 +204,7 @@ void Renderer::uploadFrameData() {
   upload(mMaterials, mFrame.materials, "frame materials");
   upload(mLightSpectra, mFrame.lightSpectra, "frame light spectra");
   upload(mMaterialSpectra, mFrame.materialSpectra, "frame material spectra");
+  upload(mWaterSpectra, mFrame.waterSpectra, "frame water spectra");
 }
 
 namespace {
@@ -247,15 +248,15 @@ void Renderer::gbufferPass() {
     int textures = 0;
     if (m.baseColourTexture >= 0) {
       mGpuScene.texture(m.baseColourTexture).bind(0);
-      textures |= 1;
+      textures |= shared::kTextureBaseColour;
     }
     if (m.metallicRoughnessTexture >= 0) {
       mGpuScene.texture(m.metallicRoughnessTexture).bind(1);
-      textures |= 2;
+      textures |= shared::kTextureMetallicRoughness;
     }
     if (m.normalTexture >= 0) {
       mGpuScene.texture(m.normalTexture).bind(2);
-      textures |= 4;
+      textures |= shared::kTextureNormal;
     }
     mGBufferProgram.setUniform("uBaseColour", m.baseColour);
     mGBufferProgram.setUniform("uMetallic", m.metallic);
@@ -277,6 +278,7 @@ void Renderer::lightingPass() {
   mMaterials.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
   mLightSpectra.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   mMaterialSpectra.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+  mWaterSpectra.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
   mTargets.albedoMetallic.bind(0);
   mTargets.normalRoughness.bind(1);
   mTargets.materialId.bind(2);
@@ -289,6 +291,9 @@ void Renderer::lightingPass() {
   p.setUniform("uBatchCount", mFrame.constants.batchCount);
   p.setUniform("uLightCount", mFrame.constants.lightCount);
   p.setUniform("uShadowMapSize", mFrame.constants.shadowMapSize);
+  p.setUniform("uWater", mFrame.constants.water);
+  p.setUniform("uWaterDepth", mFrame.constants.waterDepthM);
+  p.setUniform("uWaterSurfaceY", mFrame.constants.waterSurfaceY);
   p.setUniform("uUpsamplingResolution", mTable.resolution());
   p.setUniform("uFilteredLookup", mSettings.lookup == UpsamplingLookup::Filtered ? 1 : 0);
   p.setUniform("uInverseViewProjection", mCameraTransform.inverseViewProjection);

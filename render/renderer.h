@@ -111,7 +111,7 @@ class Renderer {
   GpuMesh mGizmo;  // a unit sphere
   Shadows mShadows;
   Targets mTargets;
-  gpu::Buffer mBatches, mLights, mMaterials, mLightSpectra, mMaterialSpectra;
+  gpu::Buffer mBatches, mLights, mMaterials, mLightSpectra, mMaterialSpectra, mWaterSpectra;
 };
 
 }  // namespace prism::render

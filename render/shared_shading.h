@@ -13,6 +13,8 @@ namespace prism::shared {
 #include "frame_layout.glsl"
 #include "transfer.glsl"
 #include "post.glsl"
+#include "surface_inputs.glsl"
+#include "underwater.glsl"
 
 // std430 sizes and offsets of the buffer structs (vec4 = 16 bytes, mat4 = 64, no padding).
 static_assert(sizeof(GpuBatch) == 64 && offsetof(GpuBatch, toZ) == 48);

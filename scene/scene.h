@@ -111,6 +111,25 @@ struct HomogeneousMedium {
   std::optional<Bounds> region;  // none: everywhere
 };
 
+// The camera under water: a Jerlov water type (techniques/underwater/jerlov_water.h), the
+// camera's depth below the surface (which lies depthM above the camera: everything in the scene
+// moves down with it) and multipliers of each coefficient. The rasteriser applies Pérez García's
+// analytic model (shaders/shared/underwater.glsl); the reference traces the same water as a
+// medium below the surface.
+struct Water {
+  std::string type = "I";
+  std::string dataset = "jerlov";  // or "williamson2022"
+  float depthM = 5.0f;             // of the camera
+  float scatteringScale = 1.0f;
+  float absorptionScale = 1.0f;
+  float kdScale = 1.0f;
+  // Resolved from the above, multipliers applied: 1/m.
+  Spectrum sigmaA;
+  Spectrum sigmaS;
+  Spectrum kd;
+  float surfaceY(const Camera& camera) const { return camera.position.y + depthM; }
+};
+
 struct Scene {
   std::filesystem::path file;      // the scene file it was loaded from
   std::string colourSpace = "srgb";  // of every RGB value in the scene (spectral/colour_space.h)
@@ -121,8 +140,9 @@ struct Scene {
   std::vector<Image> textures;
   glm::vec3 background{0.0f};  // linear RGB radiance-like colour where no geometry is, as a light colour
   float backgroundLuminance = 0.0f;  // cd/m² of a white background
-  // Traced by the reference (reference/path_tracer.h); the rasteriser does not see it yet. Not
-  // in scene files yet: the underwater issue adds water to them.
+  std::optional<Water> water;
+  // A participating medium other than water, traced by the reference (reference/path_tracer.h)
+  // only; not in scene files. With water, the reference traces the water as its medium.
   std::optional<HomogeneousMedium> medium;
 };
 

@@ -19,6 +19,7 @@
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/sigmoid_fit.h"
+#include "techniques/underwater/jerlov_water.h"
 
 namespace prism {
 
@@ -61,7 +62,7 @@ class SceneParser {
   Scene parse(const json& root) {
     Node top(root, "", mDocument);
     top.expectObject({"$schema", "description", "colour_space", "camera", "lights", "materials",
-                      "objects", "background"});
+                      "objects", "background", "water"});
     for (const char* key : {"$schema", "description"})
       if (auto n = top.optionalChild(key); n && !n->json().is_string())
         n->fail("expected a string, got " + schema::describe(n->json()));
@@ -88,10 +89,38 @@ class SceneParser {
       mScene.background = bg->vec3("colour", glm::vec3(1.0f), Range::atLeast(0.0));
       mScene.backgroundLuminance = bg->child("luminance").numberF(Range::atLeast(0.0));
     }
+    if (auto w = top.optionalChild("water")) mScene.water = water(*w);
     return std::move(mScene);
   }
 
  private:
+  Water water(const Node& n) const {
+    n.expectObject({"type", "dataset", "depth", "scattering_scale", "absorption_scale", "kd_scale"});
+    Water w;
+    if (auto d = n.optionalChild("dataset")) w.dataset = d->string();
+    underwater::JerlovDataset dataset;
+    try {
+      dataset = underwater::jerlovDatasetFromName(w.dataset);
+    } catch (const Error& e) {
+      n.child("dataset").fail(e.what());
+    }
+    if (auto t = n.optionalChild("type")) w.type = t->string();
+    underwater::WaterProperties properties;
+    try {
+      properties = underwater::jerlovWater(w.type, dataset);
+    } catch (const Error& e) {
+      (n.has("type") ? n.child("type") : n).fail(e.what());
+    }
+    w.depthM = n.numberF("depth", w.depthM, Range::atLeast(0.0));
+    w.scatteringScale = n.numberF("scattering_scale", 1.0f, Range::atLeast(0.0));
+    w.absorptionScale = n.numberF("absorption_scale", 1.0f, Range::atLeast(0.0));
+    w.kdScale = n.numberF("kd_scale", 1.0f, Range::atLeast(0.0));
+    w.sigmaA = properties.sigmaA * w.absorptionScale;
+    w.sigmaS = properties.sigmaS * w.scatteringScale;
+    w.kd = properties.kd * w.kdScale;
+    return w;
+  }
+
   // A file named by a string node: inside the scene's folder, existing.
   fs::path file(const Node& node) const {
     std::string relative = node.string();

@@ -12,6 +12,7 @@
 #include "spectral/colour_space.h"
 #include "spectral/error.h"
 #include "spectral/observer.h"
+#include "techniques/underwater/jerlov_water.h"
 
 namespace prism {
 namespace {
@@ -435,6 +436,39 @@ TEST(SceneLoader, ExampleScenesLoad) {
     }
   }
   EXPECT_GT(count, 0);
+}
+
+}  // namespace
+}  // namespace prism
+
+namespace prism {
+namespace {
+
+TEST_F(SceneFolder, WaterIsAJerlovTypeAtADepthWithItsMultipliers) {
+  fs::path f = write("water.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "objects": [],
+    "water": {"type": "3C", "depth": 12, "scattering_scale": 2, "absorption_scale": 0.5, "kd_scale": 1.5}})");
+  Scene s = loadScene(f);
+  ASSERT_TRUE(s.water);
+  EXPECT_EQ(s.water->type, "3C");
+  EXPECT_FLOAT_EQ(s.water->depthM, 12.0f);
+  EXPECT_FLOAT_EQ(s.water->surfaceY(s.camera), 13.0f);
+  underwater::WaterProperties water = underwater::jerlovWater("3C");
+  EXPECT_NEAR(s.water->sigmaS.at(500.0), 2.0 * water.sigmaS.at(500.0), 1e-12);
+  EXPECT_NEAR(s.water->sigmaA.at(500.0), 0.5 * water.sigmaA.at(500.0), 1e-12);
+  EXPECT_NEAR(s.water->kd.at(500.0), 1.5 * water.kd.at(500.0), 1e-12);
+  // The command line changes it like any other value.
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"water.type=9C", "water.dataset=williamson2022"}); }),
+            f.string() + ": /water/type: unknown water type \"9C\" in the williamson2022 data (known: IB, II, "
+                         "III, 1C, 3C, 5C)");
+  Scene t = loadScene(f, {"water.type=5C", "water.depth=20", "water.dataset=williamson2022"});
+  EXPECT_FLOAT_EQ(t.water->depthM, 20.0f);
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"water.type=IV"}); }),
+            f.string() + ": /water/type: unknown water type \"IV\" in the jerlov data (known: I, IA, IB, II, III, "
+                         "1C, 3C, 5C, 7C, 9C)");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"water.depth=-1"}); }),
+            f.string() + ": /water/depth: expected a number >= 0, got -1");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"water.salinity=35"}); }),
+                         f.string() + ": /water/salinity: unknown key (set on the command line) (allowed: "));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "shared/lights.glsl"
 #include "shared/shadow_filter.glsl"
 #include "shared/frame_layout.glsl"
+#include "shared/underwater.glsl"
 #include "common_upsampling.glsl"
 
 layout(std430, binding = 0) readonly buffer Batches { GpuBatch batches[]; };
@@ -18,6 +19,7 @@ layout(std430, binding = 1) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
 layout(std430, binding = 3) readonly buffer LightSpectra { vec4 lightSpectra[]; };
 layout(std430, binding = 4) readonly buffer MaterialSpectra { vec4 materialSpectra[]; };
+layout(std430, binding = 5) readonly buffer WaterSpectra { vec4 waterSpectra[]; };
 
 layout(binding = 0) uniform sampler2D gAlbedoMetallic;
 layout(binding = 1) uniform sampler2D gNormalRoughness;
@@ -30,6 +32,9 @@ uniform int uMode;
 uniform int uBatchCount;
 uniform int uLightCount;
 uniform int uShadowMapSize;
+uniform int uWater;
+uniform float uWaterDepth;
+uniform float uWaterSurfaceY;
 uniform int uUpsamplingResolution;
 uniform int uFilteredLookup;
 uniform mat4 uInverseViewProjection;
@@ -45,6 +50,7 @@ vec4 frameLightSpectrum(int l, int b) { return lightSpectra[l * uBatchCount + b]
 vec4 frameMaterialSpectrum(int s, int b, int j) {
   return materialSpectra[(s * uBatchCount + b) * 2 + j];
 }
+vec4 frameWaterSpectrum(int b, int j) { return waterSpectra[b * 3 + j]; }
 float shadowDepthAt(int layer, int x, int y) {
   return texelFetch(uShadowMaps, ivec3(x, y, layer), 0).r;
 }
@@ -57,11 +63,14 @@ vec3 upsamplingCoefficients(vec3 rgb) {
 #include "shared/pixel_shading.glsl"
 
 void main() {
-  FrameConstants fc = FrameConstants(uMode, uBatchCount, uLightCount, uShadowMapSize);
+  FrameConstants fc = FrameConstants(uMode, uBatchCount, uLightCount, uShadowMapSize, uWater,
+                                     uWaterDepth, uWaterSurfaceY);
   ivec2 p = ivec2(gl_FragCoord.xy);
   uint id = texelFetch(gMaterialId, p, 0).r;
   if (id == 0u) {
-    oTristimulus = vec4(shadeBackground(fc), 1.0);
+    // No geometry: the far plane through this pixel, reconstructed from depth 1.
+    vec3 farPoint = worldFromDepth(uInverseViewProjection, (vec2(p) + 0.5) / uViewportSize, 1.0);
+    oTristimulus = vec4(shadeBackground(fc, farPoint, uCameraPosition), 1.0);
     return;
   }
   vec4 am = texelFetch(gAlbedoMetallic, p, 0);

@@ -10,7 +10,9 @@
 //
 // Spectra. lightSpectra[l·batchCount + b] is light l's normalised SPD at batch b's wavelengths
 // (l = lightCount is the background's radiance); materialSpectra[(s·batchCount + b)·2 + j] is a
-// material's measured reflectance (j = 0) or its conductor n (j = 0) and k (j = 1).
+// material's measured reflectance (j = 0) or its conductor n (j = 0) and k (j = 1);
+// waterSpectra[b·3 + j] is the water's σs (j = 0), σt (j = 1) and Kd (j = 2) in 1/m (in RGB mode
+// at 680, 550 and 440 nm).
 
 const int kModeRgb = 0;
 const int kModeNaive = 1;        // box upsampling (495 / 570 nm)
@@ -48,6 +50,9 @@ struct FrameConstants {
   int batchCount;
   int lightCount;     // ≤ kMaxLights
   int shadowMapSize;  // texels along each side of a shadow-map layer
+  int water;          // 1: the camera is under water (underwater.glsl; waterSpectra below)
+  float waterDepthM;  // the camera's depth below the water surface
+  float waterSurfaceY;  // world height of the water surface (m)
 };
 
 struct SurfaceSample {

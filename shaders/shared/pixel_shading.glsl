@@ -8,12 +8,19 @@
 //   vec4 frameMaterialSpectrum(int s, int b, int j);
 //   float shadowDepthAt(int layer, int x, int y);    (x, y already clamped to the map)
 //   vec3 upsamplingCoefficients(vec3 rgb);           (Jakob–Hanika table lookup)
+//   vec4 frameWaterSpectrum(int b, int j);           (σs, σt, Kd; only read under water)
+//
+// Under water (fc.water != 0, underwater.glsl) a directional light is the sun above the
+// surface: its irradiance at a point is attenuated by e^(−Kd·depth), and it single-scatters into
+// every view ray; point and spot lights are under water with the camera and lose e^(−σt·r) over
+// their distance r (and add no in-scattering: the model's is the sun's). What the camera sees at
+// distance S is then surface radiance · e^(−σt·S) + the sun's in-scattering over S.
 //
 // Loop order: per light, the wavelength-independent terms (incidence, shadow, D·G) once; then
 // per batch the albedo spectrum once and every light's contribution, accumulated straight into
 // tristimulus through the batch's integration matrix (integration is linear, so the order of
 // lights and batches does not matter).
-// Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl pixel_shading_accessors.glsl
+// Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl underwater.glsl pixel_shading_accessors.glsl
 
 // m·(p, 1), summed column by column in this order on both sides: a built-in mat4 × vec4 is
 // free to sum in another order (and to fuse), and shadow-map weights amplify the difference.
@@ -55,11 +62,44 @@ PRISM_INLINE vec3 integrateBatch(IN(GpuBatch) batch, IN(vec4) radiance) {
   return vec3(dot(batch.toX, radiance), dot(batch.toY, radiance), dot(batch.toZ, radiance));
 }
 
-// Tristimulus of the background (pixels where no geometry is).
-PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc) {
+// Irradiance at the water surface from the lights above it (the directional ones), per
+// wavelength of batch b: E(0) of underwater.glsl.
+PRISM_INLINE vec4 sunIrradianceAtSurface(IN(FrameConstants) fc, int b) {
+  vec4 e = vec4(0.0f);
+  for (int l = 0; l < fc.lightCount; ++l) {
+    GpuLight light = frameLight(l);
+    if (int(light.positionType.w + 0.5f) == kLightDirectional) {
+      e += frameLightSpectrum(l, b) * light.directionIntensity.w;
+    }
+  }
+  return e;
+}
+
+// What the water does to radiance leaving a point `distanceM` along the unit view direction
+// `viewDir` from the camera: transmittance, then the sun's in-scattering over that distance.
+PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, IN(vec3) viewDir,
+                               float distanceM) {
+  vec4 sigmaS = frameWaterSpectrum(b, 0);
+  vec4 sigmaT = frameWaterSpectrum(b, 1);
+  vec4 kd = frameWaterSpectrum(b, 2);
+  return radiance * waterTransmittance(sigmaT, distanceM) +
+         waterInScattering(sigmaS, sigmaT, kd, fc.waterDepthM, -viewDir.y, distanceM) *
+             sunIrradianceAtSurface(fc, b);
+}
+
+// Tristimulus of the background (pixels where no geometry is), seen towards farPoint (a point
+// on the far plane). Under water the view ray ends where it would leave the water (looking up)
+// or at the far plane, and the background shows through what is left of it.
+PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(vec3) cameraPosition) {
+  PRISM_PRECISE vec3 toFar = farPoint - cameraPosition;
+  float distanceM = length(toFar);
+  vec3 viewDir = toFar / distanceM;
+  if (fc.water != 0 && viewDir.y > 0.0f) distanceM = min(distanceM, fc.waterDepthM / viewDir.y);
   vec3 tristimulus = vec3(0.0f);
   for (int b = 0; b < fc.batchCount; ++b) {
-    tristimulus += integrateBatch(frameBatch(b), frameLightSpectrum(fc.lightCount, b));
+    vec4 radiance = frameLightSpectrum(fc.lightCount, b);
+    if (fc.water != 0) radiance = throughWater(fc, b, radiance, viewDir, distanceM);
+    tristimulus += integrateBatch(frameBatch(b), radiance);
   }
   return tristimulus;
 }
@@ -74,6 +114,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 
   MicrofacetTerms terms[kMaxLights];
   float irradiance[kMaxLights];
+  float waterPathM[kMaxLights];  // under water: depth (directional) or distance (point, spot)
   for (int l = 0; l < fc.lightCount; ++l) {
     GpuLight light = frameLight(l);
     LightIncidence li = lightIncidence(
@@ -87,6 +128,9 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
                         ? li.irradiance * shadowVisibility(light, s.position, s.normal,
                                                            fc.shadowMapSize)
                         : 0.0f;
+    waterPathM[l] = int(light.positionType.w + 0.5f) == kLightDirectional
+                        ? fc.waterSurfaceY - s.position.y
+                        : li.distance;
   }
 
   vec3 coefficients = vec3(0.0f);
@@ -115,7 +159,18 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     vec4 radiance = vec4(0.0f);
     for (int l = 0; l < fc.lightCount; ++l) {
       vec4 reflection = surfaceReflection(terms[l], spectralConductor, albedo, conductorK, metallic);
-      radiance += reflection * frameLightSpectrum(l, b) * irradiance[l];
+      vec4 arriving = frameLightSpectrum(l, b) * irradiance[l];
+      if (fc.water != 0) {
+        bool sun = int(frameLight(l).positionType.w + 0.5f) == kLightDirectional;
+        arriving *= sun ? downwellingAttenuation(frameWaterSpectrum(b, 2), waterPathM[l])
+                        : waterTransmittance(frameWaterSpectrum(b, 1), waterPathM[l]);
+      }
+      radiance += reflection * arriving;
+    }
+    if (fc.water != 0) {
+      PRISM_PRECISE vec3 fromCamera = s.position - cameraPosition;
+      float distanceM = length(fromCamera);
+      radiance = throughWater(fc, b, radiance, fromCamera / distanceM, distanceM);
     }
     tristimulus += integrateBatch(batch, radiance);
   }

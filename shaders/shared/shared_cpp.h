@@ -44,6 +44,7 @@ using glm::exp2;
 using glm::floor;
 using glm::isinf;
 using glm::isnan;
+using glm::length;
 using glm::max;
 using glm::min;
 using glm::mix;

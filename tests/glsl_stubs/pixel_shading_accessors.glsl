@@ -9,3 +9,4 @@ vec4 frameLightSpectrum(int l, int b) { return vec4(l + b); }
 vec4 frameMaterialSpectrum(int s, int b, int j) { return vec4(s + b + j); }
 float shadowDepthAt(int layer, int x, int y) { return float(layer + x + y); }
 vec3 upsamplingCoefficients(vec3 rgb) { return rgb; }
+vec4 frameWaterSpectrum(int b, int j) { return vec4(b + j); }

@@ -1,5 +1,7 @@
 #include "app/validate.h"
 
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -23,15 +25,19 @@
 namespace prism::app {
 namespace {
 
-struct Experiment {
+// The thesis's sphere scenes (exposure: each scene camera's).
+struct SphereScene {
   const char* scene;
   const char* light;
 };
-constexpr Experiment kExperiments[] = {
+constexpr SphereScene kSphereScenes[] = {
     {"spheres_d65", "D65"},
     {"spheres_led", "the thesis's LED lamp (LSPDD Globe A19)"},
     {"spheres_blue_led", "a narrow-band blue LED (450 nm)"},
 };
+
+// The reef's camera depths (Jerlov I), the thesis's underwater experiment.
+constexpr float kReefDepthsM[] = {1.0f, 5.0f, 10.0f, 20.0f, 50.0f};
 
 // The thesis's three modes at 200 wavelengths (one frame of the uniform grid), and the real-time
 // setting, 16 wavelengths a frame: as a still camera sees it (the uniform grid rotated every
@@ -63,78 +69,189 @@ constexpr Bound kBounds[] = {
 
 struct Result {
   std::string scene, mode;
-  imaging::DifferenceStats stats;
+  imaging::DifferenceStats stats;  // against the direct-lighting (single-scattering) reference
+  double meanVsGlobal = std::numeric_limits<double>::quiet_NaN();  // reef: vs multiple scattering
+};
+
+struct Sizes {
+  int width, height, spheresSpp, reefSpp, reefGlobalSpp;
 };
 
 constexpr double kHeatScale = 5.0;  // ΔE00 at the top of the heat maps and histograms
 
+// One experiment: a scene's references and every mode of the rasteriser compared with them.
+class Experiment {
+ public:
+  Experiment(const std::filesystem::path& output, const RgbToSpectrumTable& table, const Sizes& sizes,
+             ProgressBar& bar, std::size_t total)
+      : mOutput(output), mTable(table), mSizes(sizes), mBar(bar), mTotal(total) {}
+
+  // Renders and compares `scene` as `name`. whiteFromReference: set the exposure so that the
+  // reference's mean luminance is middle grey (0.18 of white) instead of the scene camera's.
+  void run(const Scene& scene, const std::string& name, bool whiteFromReference, int spp, int globalSpp,
+           std::vector<Result>& results) {
+    reference::ReferenceSettings rs;
+    rs.width = mSizes.width;
+    rs.height = mSizes.height;
+    rs.samplesPerPixel = spp;
+    rs.filter = reference::PixelFilter::Centre;
+    imaging::FloatImage direct = reference::renderReference(scene, mTable, rs).tristimulus;
+    step();
+    double white = render::displayWhiteLuminance(scene.camera.ev100);
+    if (whiteFromReference) {
+      double sum = 0.0;
+      for (std::size_t i = 0; i < direct.pixelCount(); ++i) sum += direct.pixels[3 * i + 1];
+      white = std::max(sum / static_cast<double>(direct.pixelCount()) / 0.18, 1e-6);
+    }
+    const float ev100 = static_cast<float>(std::log2(white / 1.2));
+    imaging::FloatImage global;
+    if (globalSpp > 0) {
+      rs.samplesPerPixel = globalSpp;
+      rs.transport = reference::LightTransport::Global;
+      global = reference::renderReference(scene, mTable, rs).tristimulus;
+      writeImages(global, fmt::format("{}_reference_global", name), ev100, white);
+      step();
+    }
+    writeImages(direct, fmt::format("{}_reference", name), ev100, white);
+
+    render::FrameSettings base;
+    base.width = mSizes.width;
+    base.height = mSizes.height;
+    base.dither = false;
+    base.ev100 = ev100;
+    render::Renderer renderer(scene, mTable, base);  // one renderer, its settings changed per mode
+    for (const Mode& m : kModes) {
+      render::FrameSettings settings = base;
+      settings.mode = m.mode;
+      settings.sampling.count = m.wavelengths;
+      settings.sampling.strategy = m.strategy;
+      renderer.setSettings(settings);
+      for (int f = 0; f < m.frames; ++f) renderer.renderFrame();
+      imaging::FloatImage image(mSizes.width, mSizes.height, 3);
+      image.pixels = renderer.readMeanTristimulus();
+      displayImage(image, settings, ev100).write(mOutput / fmt::format("{}_{}.png", name, m.name));
+      imaging::DifferenceOptions options;
+      options.keepMap = true;
+      auto input = [&](const imaging::FloatImage& i) {
+        return imaging::linearInput(i, imaging::ColourMeaning::Xyz, white);
+      };
+      imaging::ImageDifference d = imaging::compareImages(input(direct), input(image), options);
+      imaging::heatMap(d.deltaEMap, {.maxDeltaE = kHeatScale, .legend = true})
+          .write(mOutput / fmt::format("{}_{}_heatmap.png", name, m.name));
+      imaging::HistogramOptions histogram;
+      histogram.maxDeltaE = kHeatScale;
+      imaging::deltaEHistogram(d.deltaEMap, histogram).write(mOutput / fmt::format("{}_{}_histogram.png", name, m.name));
+      Result r{name, m.name, d.stats};
+      if (globalSpp > 0) r.meanVsGlobal = imaging::compareImages(input(global), input(image)).stats.meanDeltaE;
+      results.push_back(r);
+      step();
+    }
+  }
+
+ private:
+  void step() { mBar.update(++mDone, mTotal); }
+  void writeImages(const imaging::FloatImage& image, const std::string& stem, float ev100, double white) {
+    render::FrameSettings display;
+    display.ev100 = ev100;
+    displayImage(image, display, ev100).write(mOutput / (stem + ".png"));
+    imaging::writeExr(mOutput / (stem + ".exr"), image, {.colour = imaging::ColourMeaning::Xyz, .displayWhite = white});
+  }
+
+  const std::filesystem::path& mOutput;
+  const RgbToSpectrumTable& mTable;
+  Sizes mSizes;
+  ProgressBar& mBar;
+  std::size_t mTotal;
+  std::size_t mDone = 0;
+};
+
+std::string reefName(float depthM) { return fmt::format("reef_{:g}m", depthM); }
+
 std::string resultTable(const std::vector<Result>& results) {
   std::ostringstream out;
-  out << fmt::format("{:<18} {:<24} {:>9} {:>8} {:>8} {:>8} {:>8}\n", "scene", "mode", "mean ΔE00",
-                     "median", "p95", "max", "MAE 8b");
+  out << fmt::format("{:<18} {:<24} {:>9} {:>8} {:>8} {:>8} {:>8} {:>11}\n", "scene", "mode", "mean ΔE00",
+                     "median", "p95", "max", "MAE 8b", "vs global");
   for (const Result& r : results) {
-    out << fmt::format("{:<18} {:<24} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.2f} {:>8.3f}\n", r.scene, r.mode,
+    out << fmt::format("{:<18} {:<24} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.2f} {:>8.3f} {:>11}\n", r.scene, r.mode,
                        r.stats.meanDeltaE, r.stats.medianDeltaE, r.stats.p95DeltaE, r.stats.maxDeltaE,
-                       r.stats.mae8);
+                       r.stats.mae8, std::isnan(r.meanVsGlobal) ? "" : fmt::format("{:.3f}", r.meanVsGlobal));
   }
   return out.str();
 }
 
 std::string indexHtml(const std::vector<Result>& results, const std::vector<std::string>& failures,
-                      int width, int height, int spp) {
+                      const Sizes& sizes) {
   std::ostringstream h;
   h << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>Prism validation"
        "</title>\n<style>body{font-family:sans-serif;background:#222;color:#ddd;margin:2em}figure{"
        "display:inline-block;margin:0 1em 1em 0;vertical-align:top}figcaption{text-align:center}"
        "td,th{padding:0 1em;text-align:right}.fail{color:#f66}</style></head><body>\n"
        "<h1>Prism validation</h1>\n";
-  h << fmt::format("<p>The rasteriser against the reference path tracer (direct lighting, {} paths "
-                   "per pixel at the pixel centres, 4 hero wavelengths each), {}×{}. ΔE00 is CIEDE2000 "
-                   "in XYZ before the display transform relative to the exposure's white; MAE is on "
-                   "8-bit sRGB (0–255) after it. Heat maps and histograms span ΔE00 0–{}.</p>\n",
-                   spp, width, height, kHeatScale);
+  h << fmt::format("<p>The rasteriser against the reference path tracer at the pixel centres, 4 hero "
+                   "wavelengths a path, {}×{}: direct lighting (single scattering under water; {} paths "
+                   "per pixel for the spheres, {} for the reef) and, for the reef, multiple scattering "
+                   "({} paths; the last column). ΔE00 is CIEDE2000 in XYZ before the display transform "
+                   "relative to the exposure's white (the scene camera's for the spheres; for the reef, "
+                   "the one that makes the reference's mean luminance middle grey); MAE is on 8-bit sRGB "
+                   "after it. Heat maps and histograms span ΔE00 0–{}.</p>\n",
+                   sizes.width, sizes.height, sizes.spheresSpp, sizes.reefSpp, sizes.reefGlobalSpp, kHeatScale);
   h << (failures.empty() ? "<p>Every bound holds.</p>\n" : "<p class=\"fail\">Broken bounds:</p><ul>\n");
   for (const std::string& f : failures) h << "<li class=\"fail\">" << f << "</li>\n";
   if (!failures.empty()) h << "</ul>\n";
   h << "<table><tr><th>scene</th><th>mode</th><th>mean ΔE00</th><th>median</th><th>p95</th>"
-       "<th>max</th><th>MAE</th></tr>\n";
+       "<th>max</th><th>MAE</th><th>mean ΔE00 vs multiple scattering</th></tr>\n";
   for (const Result& r : results) {
     h << fmt::format("<tr><td>{}</td><td>{}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td>"
-                     "<td>{:.2f}</td><td>{:.3f}</td></tr>\n", r.scene, r.mode, r.stats.meanDeltaE,
-                     r.stats.medianDeltaE, r.stats.p95DeltaE, r.stats.maxDeltaE, r.stats.mae8);
+                     "<td>{:.2f}</td><td>{:.3f}</td><td>{}</td></tr>\n", r.scene, r.mode, r.stats.meanDeltaE,
+                     r.stats.medianDeltaE, r.stats.p95DeltaE, r.stats.maxDeltaE, r.stats.mae8,
+                     std::isnan(r.meanVsGlobal) ? "" : fmt::format("{:.3f}", r.meanVsGlobal));
   }
   h << "</table>\n";
-  for (const Experiment& e : kExperiments) {
-    h << fmt::format("<section><h2>{} — under {}</h2>\n<figure><img src=\"{}_reference.png\" alt=\"reference\">"
-                     "<figcaption>reference</figcaption></figure><br>\n", e.scene, e.light, e.scene);
+  auto section = [&](const std::string& name, const std::string& title, bool global) {
+    h << fmt::format("<section><h2>{}</h2>\n<figure><img src=\"{}_reference.png\" alt=\"reference\">"
+                     "<figcaption>reference{}</figcaption></figure>\n", title, name,
+                     global ? " (single scattering)" : "");
+    if (global) {
+      h << fmt::format("<figure><img src=\"{}_reference_global.png\" alt=\"multiple scattering\">"
+                       "<figcaption>reference (multiple scattering)</figcaption></figure>\n", name);
+    }
+    h << "<br>\n";
     for (const Mode& m : kModes) {
       h << fmt::format("<figure><img src=\"{0}_{1}.png\" alt=\"{1}\"><br><img src=\"{0}_{1}_heatmap.png\" "
                        "alt=\"ΔE00 heat map\"><br><img src=\"{0}_{1}_histogram.png\" width=\"320\" "
-                       "alt=\"ΔE00 histogram\"><figcaption>{1}</figcaption></figure>\n", e.scene, m.name);
+                       "alt=\"ΔE00 histogram\"><figcaption>{1}</figcaption></figure>\n", name, m.name);
     }
     h << "</section>\n";
+  };
+  for (const SphereScene& e : kSphereScenes) section(e.scene, fmt::format("{} — under {}", e.scene, e.light), false);
+  for (float depth : kReefDepthsM) {
+    section(reefName(depth), fmt::format("the reef, Jerlov I, camera {:g} m deep", depth), true);
   }
   h << "</body></html>\n";
   return h.str();
 }
 
 nlohmann::json toJson(const std::vector<Result>& results, const std::vector<std::string>& failures,
-                      int width, int height, int spp) {
+                      const Sizes& sizes) {
   nlohmann::json rows = nlohmann::json::array();
   for (const Result& r : results) {
-    rows.push_back({{"scene", r.scene}, {"mode", r.mode}, {"mean_delta_e", r.stats.meanDeltaE},
-                    {"median_delta_e", r.stats.medianDeltaE}, {"p95_delta_e", r.stats.p95DeltaE},
-                    {"max_delta_e", r.stats.maxDeltaE}, {"mae_8bit", r.stats.mae8},
-                    {"relative_error", r.stats.relativeError}});
+    nlohmann::json row = {{"scene", r.scene}, {"mode", r.mode}, {"mean_delta_e", r.stats.meanDeltaE},
+                          {"median_delta_e", r.stats.medianDeltaE}, {"p95_delta_e", r.stats.p95DeltaE},
+                          {"max_delta_e", r.stats.maxDeltaE}, {"mae_8bit", r.stats.mae8},
+                          {"relative_error", r.stats.relativeError}};
+    if (!std::isnan(r.meanVsGlobal)) row["mean_delta_e_vs_multiple_scattering"] = r.meanVsGlobal;
+    rows.push_back(row);
   }
-  return {{"width", width}, {"height", height}, {"reference_paths_per_pixel", spp},
+  return {{"width", sizes.width}, {"height", sizes.height},
+          {"reference_paths_per_pixel", {{"spheres", sizes.spheresSpp}, {"reef", sizes.reefSpp},
+                                         {"reef_multiple_scattering", sizes.reefGlobalSpp}}},
           {"results", rows}, {"failures", failures}};
 }
 
 }  // namespace
 
 int runValidate(const ValidateOptions& o) {
-  const int width = o.quick ? 240 : 640, height = o.quick ? 135 : 360, spp = o.quick ? 64 : 256;
+  const Sizes sizes = o.quick ? Sizes{240, 135, 64, 32, 8} : Sizes{640, 360, 256, 128, 64};
   const std::filesystem::path sceneDir = o.scenes.empty() ? exampleSceneDirectory() : o.scenes;
   std::filesystem::create_directories(o.output);
   RgbToSpectrumTable table = upsamplingTable("srgb");
@@ -142,54 +259,20 @@ int runValidate(const ValidateOptions& o) {
 
   std::vector<Result> results;
   ProgressBar bar("validate");
-  const std::size_t total = std::size(kExperiments) * (1 + std::size(kModes));
-  std::size_t done = 0;
-  for (const Experiment& e : kExperiments) {
-    Scene scene = loadScene(sceneDir / (std::string(e.scene) + ".json"));
-    if (scene.colourSpace != "srgb") throw Error(fmt::format("{}: validate expects an sRGB scene", e.scene));
-    const double white = render::displayWhiteLuminance(scene.camera.ev100);
-
-    reference::ReferenceSettings rs;
-    rs.width = width;
-    rs.height = height;
-    rs.samplesPerPixel = spp;
-    rs.filter = reference::PixelFilter::Centre;
-    reference::ReferenceImage reference = reference::renderReference(scene, table, rs);
-    render::FrameSettings display;
-    display.width = width;
-    display.height = height;
-    display.dither = false;
-    displayImage(reference.tristimulus, display, scene.camera.ev100)
-        .write(o.output / fmt::format("{}_reference.png", e.scene));
-    imaging::writeExr(o.output / fmt::format("{}_reference.exr", e.scene), reference.tristimulus,
-                      {.colour = imaging::ColourMeaning::Xyz, .displayWhite = white});
-    bar.update(++done, total);
-
-    render::Renderer renderer(scene, table, display);  // one renderer, its settings changed per mode
-    for (const Mode& m : kModes) {
-      render::FrameSettings settings = display;
-      settings.mode = m.mode;
-      settings.sampling.count = m.wavelengths;
-      settings.sampling.strategy = m.strategy;
-      renderer.setSettings(settings);
-      for (int f = 0; f < m.frames; ++f) renderer.renderFrame();
-      imaging::FloatImage image(width, height, 3);
-      image.pixels = renderer.readMeanTristimulus();
-      displayImage(image, settings, scene.camera.ev100).write(o.output / fmt::format("{}_{}.png", e.scene, m.name));
-      imaging::DifferenceOptions options;
-      options.keepMap = true;
-      imaging::ImageDifference d =
-          imaging::compareImages(imaging::linearInput(reference.tristimulus, imaging::ColourMeaning::Xyz, white),
-                                 imaging::linearInput(image, imaging::ColourMeaning::Xyz, white), options);
-      imaging::heatMap(d.deltaEMap, {.maxDeltaE = kHeatScale, .legend = true})
-          .write(o.output / fmt::format("{}_{}_heatmap.png", e.scene, m.name));
-      imaging::HistogramOptions histogram;
-      histogram.maxDeltaE = kHeatScale;
-      imaging::deltaEHistogram(d.deltaEMap, histogram)
-          .write(o.output / fmt::format("{}_{}_histogram.png", e.scene, m.name));
-      results.push_back({e.scene, m.name, d.stats});
-      bar.update(++done, total);
-    }
+  const std::size_t total = std::size(kSphereScenes) * (1 + std::size(kModes)) +
+                            std::size(kReefDepthsM) * (2 + std::size(kModes));
+  Experiment experiment(o.output, table, sizes, bar, total);
+  auto load = [&](const std::string& name, const std::vector<std::string>& sets) {
+    Scene scene = loadScene(sceneDir / (name + ".json"), sets);
+    if (scene.colourSpace != "srgb") throw Error(fmt::format("{}: validate expects an sRGB scene", name));
+    return scene;
+  };
+  for (const SphereScene& e : kSphereScenes) {
+    experiment.run(load(e.scene, {}), e.scene, false, sizes.spheresSpp, 0, results);
+  }
+  for (float depth : kReefDepthsM) {
+    Scene reef = load("reef", {"water.type=I", fmt::format("water.depth={:g}", depth)});
+    experiment.run(reef, reefName(depth), true, sizes.reefSpp, sizes.reefGlobalSpp, results);
   }
 
   std::vector<std::string> failures;
@@ -201,9 +284,9 @@ int runValidate(const ValidateOptions& o) {
       }
     }
   }
-  nlohmann::json json = toJson(results, failures, width, height, spp);
+  nlohmann::json json = toJson(results, failures, sizes);
   writeFileAtomically(o.output / "results.json", json.dump(2) + "\n");
-  writeFileAtomically(o.output / "index.html", indexHtml(results, failures, width, height, spp));
+  writeFileAtomically(o.output / "index.html", indexHtml(results, failures, sizes));
   if (o.json) {
     fmt::print("{}\n", json.dump(2));
   } else {

@@ -134,6 +134,19 @@ vec3 sampleHenyeyGreenstein(const vec3& travel, float g, float u1, float u2) {
 vec4 exp4(const vec4& v) { return vec4(std::exp(v.x), std::exp(v.y), std::exp(v.z), std::exp(v.w)); }
 float mean4(const vec4& v) { return 0.25f * (v.x + v.y + v.z + v.w); }
 
+// The medium the paths cross: the scene's water (everything below its surface, scattering
+// isotropically as the analytic model assumes), else the scene's medium, if any.
+std::optional<HomogeneousMedium> effectiveMedium(const Scene& scene) {
+  if (!scene.water) return scene.medium;
+  constexpr float kFar = 1e7f;  // the ocean has no sides or bottom
+  HomogeneousMedium water;
+  water.sigmaA = scene.water->sigmaA;
+  water.sigmaS = scene.water->sigmaS;
+  water.g = 0.0f;
+  water.region = Bounds{{-kFar, -kFar, -kFar}, {kFar, scene.water->surfaceY(scene.camera), kFar}};
+  return water;
+}
+
 class PathTracer {
  public:
   PathTracer(const Scene& scene, const RgbToSpectrumTable& table, const ReferenceSettings& settings)
@@ -145,7 +158,8 @@ class PathTracer {
         mSampler(settings.wavelengths, mObserver),
         mRays(scene),
         mBackground(scene, table),
-        mCamera(cameraTransform(scene.camera, settings.width, settings.height)) {
+        mCamera(cameraTransform(scene.camera, settings.width, settings.height)),
+        mMedium(effectiveMedium(scene)) {
     for (const Light& light : scene.lights) {
       int type = light.type == LightType::Directional ? shared::kLightDirectional
                  : light.type == LightType::Point     ? shared::kLightPoint
@@ -179,10 +193,10 @@ class PathTracer {
     vec3 direction = cameraDirection(sx / static_cast<float>(mSettings.width),
                                      1.0f - sy / static_cast<float>(mSettings.height));
     MediumAt medium;
-    if (mScene.medium) {
+    if (mMedium) {
       for (int j = 0; j < 4; ++j) {
-        float sigmaA = static_cast<float>(mScene.medium->sigmaA.at(lambdaNm[j]));
-        medium.sigmaS[j] = static_cast<float>(mScene.medium->sigmaS.at(lambdaNm[j]));
+        float sigmaA = static_cast<float>(mMedium->sigmaA.at(lambdaNm[j]));
+        medium.sigmaS[j] = static_cast<float>(mMedium->sigmaS.at(lambdaNm[j]));
         medium.sigmaT[j] = sigmaA + medium.sigmaS[j];
       }
     }
@@ -236,9 +250,9 @@ class PathTracer {
 
   // Beer–Lambert transmittance of the medium along origin + t·direction, t ∈ [0, tMax].
   vec4 transmittance(const vec3& origin, const vec3& direction, float tMax, const MediumAt& medium) const {
-    if (!mScene.medium) return vec4(1.0f);
+    if (!mMedium) return vec4(1.0f);
     float tEnter, tExit;
-    mediumInterval(*mScene.medium, origin, direction, 0.0f, tMax, tEnter, tExit);
+    mediumInterval(*mMedium, origin, direction, 0.0f, tMax, tEnter, tExit);
     if (!(tExit > tEnter)) return vec4(1.0f);
     if (std::isinf(tExit)) {
       vec4 none(0.0f);
@@ -327,12 +341,13 @@ class PathTracer {
     return true;
   }
 
-  // In a medium, the distance to the next scattering event is drawn from one of the four
-  // wavelengths' scattering coefficient (the hero, chosen at random) and absorption weights the
-  // path by Beer–Lambert, so a pure absorber costs no noise; every wavelength is weighted by its
-  // own σs·T over the mean of the four heroes' free-flight densities: the one-sample balance
-  // heuristic of spectral MIS (Wilkie et al. 2014), unbiased at every wavelength of a chromatic
-  // medium.
+  // In a medium, with global transport, the distance to the next scattering event is drawn from
+  // one of the four wavelengths' scattering coefficient (the hero, chosen at random) and
+  // absorption weights the path by Beer–Lambert, so a pure absorber costs no noise; every
+  // wavelength is weighted by its own σs·T over the mean of the four heroes' free-flight
+  // densities: the one-sample balance heuristic of spectral MIS (Wilkie et al. 2014), unbiased at
+  // every wavelength of a chromatic medium. Direct transport (single scattering) forces one
+  // scattering event per segment instead, with the same MIS over truncated exponentials.
   vec4 trace(vec3 origin, vec3 direction, const vec4& lambdaNm, const MediumAt& medium,
              PathRandom& random) const {
     const bool global = mSettings.transport == LightTransport::Global;
@@ -341,10 +356,37 @@ class PathTracer {
       std::optional<RayHit> found = mRays.intersect(origin, direction, 0.0f, kInfinity);
       const float tSurface = found ? found->distance : kInfinity;
       bool scattered = false;
-      if (mScene.medium) {
+      if (mMedium) {
         float tEnter, tExit;
-        mediumInterval(*mScene.medium, origin, direction, 0.0f, tSurface, tEnter, tExit);
-        if (tExit > tEnter) {
+        mediumInterval(*mMedium, origin, direction, 0.0f, tSurface, tEnter, tExit);
+        if (tExit > tEnter && !global) {
+          // Single scattering: every path both scatters once somewhere on the segment (the
+          // distance drawn from the hero's extinction, truncated to the segment) and goes on to
+          // the surface behind with its exact transmittance: no path is spent missing the medium.
+          const float length = tExit - tEnter;
+          float sigmaHero = medium.sigmaT[std::min(3, static_cast<int>(random.next() * 4.0f))];
+          if (sigmaHero > 0.0f) {
+            auto truncatedDensity = [&](const vec4& sigma, float d) {  // per wavelength, at d
+              vec4 density;
+              for (int j = 0; j < 4; ++j) {
+                float kept = std::isinf(length) ? 1.0f : -std::expm1(-sigma[j] * length);
+                density[j] = sigma[j] > 0.0f ? sigma[j] * std::exp(-sigma[j] * d) / kept : 0.0f;
+              }
+              return density;
+            };
+            float kept = std::isinf(length) ? 1.0f : -std::expm1(-sigmaHero * length);
+            float d = -std::log1p(-random.next() * kept) / sigmaHero;
+            vec3 point = origin + direction * (tEnter + d);
+            vec4 weight = medium.sigmaS * exp4(-medium.sigmaT * d) / mean4(truncatedDensity(medium.sigmaT, d));
+            radiance += throughput * weight * directLight(point, point, lambdaNm, medium, [&](const vec3& toLight) {
+                          return vec4(henyeyGreenstein(glm::dot(toLight, direction), mMedium->g));
+                        });
+          }
+          vec4 pass(0.0f);
+          for (int j = 0; j < 4; ++j) pass[j] = std::isinf(length) ? (medium.sigmaT[j] > 0.0f ? 0.0f : 1.0f)
+                                                                   : std::exp(-medium.sigmaT[j] * length);
+          throughput *= pass;
+        } else if (tExit > tEnter) {
           float sigmaHero = medium.sigmaS[std::min(3, static_cast<int>(random.next() * 4.0f))];
           float u = random.next();
           float t = sigmaHero > 0.0f ? tEnter - std::log1p(-u) / sigmaHero : kInfinity;
@@ -353,12 +395,12 @@ class PathTracer {
             throughput *= medium.sigmaS * exp4(-medium.sigmaT * d) / mean4(medium.sigmaS * exp4(-medium.sigmaS * d));
             vec3 point = origin + direction * t;
             radiance += throughput * directLight(point, point, lambdaNm, medium, [&](const vec3& toLight) {
-                          return vec4(henyeyGreenstein(glm::dot(toLight, direction), mScene.medium->g));
+                          return vec4(henyeyGreenstein(glm::dot(toLight, direction), mMedium->g));
                         });
             scattered = true;
             if (!global || depth + 1 >= mSettings.maxDepth) break;
             origin = point;
-            direction = sampleHenyeyGreenstein(direction, mScene.medium->g, random.next(), random.next());
+            direction = sampleHenyeyGreenstein(direction, mMedium->g, random.next(), random.next());
           } else if (std::isinf(tExit)) {
             // Through an unbounded medium to infinity: only wavelengths the medium neither
             // absorbs nor scatters arrive, and only heroes that do not scatter get there.
@@ -414,6 +456,7 @@ class PathTracer {
   CameraTransform mCamera;
   std::vector<LightInput> mLights;
   std::vector<MaterialInput> mMaterials;
+  std::optional<HomogeneousMedium> mMedium;
 };
 
 }  // namespace

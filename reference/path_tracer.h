@@ -22,11 +22,14 @@
 //   estimation at every vertex, Russian roulette from the fourth vertex; rays that escape see the
 //   background as uniform surrounding radiance. Delta lights cannot be hit, so nothing is
 //   counted twice.
-// - Media (Scene::medium, homogeneous, in a box or everywhere): free flights drawn against
+// - Media (Scene::water below its surface, isotropic as the analytic model assumes; else
+//   Scene::medium, homogeneous, in a box or everywhere): free flights drawn against
 //   scattering with spectral MIS over the four wavelengths, absorption as Beer–Lambert weight,
 //   Henyey–Greenstein phase; next-event estimation at every scattering event and surface with
-//   the medium's transmittance on the shadow ray. Direct is then single scattering (one event,
-//   in the medium or on a surface, lit by the lights); global, multiple scattering.
+//   the medium's transmittance on the shadow ray: multiple scattering. Direct is single
+//   scattering: each path scatters once at a distance drawn from the extinction (truncated to
+//   the segment, spectral MIS) and also reaches the surface behind it through the exact
+//   transmittance, both lit by the lights.
 #pragma once
 
 #include <cstdint>

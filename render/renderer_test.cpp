@@ -114,7 +114,9 @@ INSTANTIATE_TEST_SUITE_P(
                     ParityCase{"spheres_led.json", RenderMode::Rgb},
                     ParityCase{"conductors_f11.json", RenderMode::JakobHanika},
                     ParityCase{"cook_torrance_sweep.json", RenderMode::JakobHanika},
-                    ParityCase{"textured_gltf.json", RenderMode::JakobHanika}),
+                    ParityCase{"textured_gltf.json", RenderMode::JakobHanika},
+                    ParityCase{"reef.json", RenderMode::JakobHanika},  // under water
+                    ParityCase{"reef.json", RenderMode::Rgb}),
     [](const testing::TestParamInfo<ParityCase>& param) {
       std::string name = std::filesystem::path(param.param.scene).stem().string() + "_" +
                          std::string(renderModeName(param.param.mode));
@@ -173,7 +175,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                                          GoldenCase{"spheres_d65.json", RenderMode::JakobHanika},
                                          GoldenCase{"spheres_blue_led.json", RenderMode::JakobHanika},
                                          GoldenCase{"conductors_d65.json", RenderMode::JakobHanika},
-                                         GoldenCase{"textured_gltf.json", RenderMode::JakobHanika}),
+                                         GoldenCase{"textured_gltf.json", RenderMode::JakobHanika},
+                                         GoldenCase{"reef.json", RenderMode::JakobHanika}),
                          [](const testing::TestParamInfo<GoldenCase>& param) {
                            std::string name = std::filesystem::path(param.param.scene).stem().string() +
                                               "_" + std::string(renderModeName(param.param.mode));

@@ -6,7 +6,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "shared_cpp.h"
 #include "spectral/error.h"
+
+namespace prism::shared {
+#include "random.glsl"
+}  // namespace prism::shared
 
 namespace prism {
 
@@ -94,6 +99,62 @@ Mesh makePlane(const glm::vec3& centreW, const glm::vec3& normalW, const glm::ve
   Mesh mesh;
   mesh.name = "plane";
   appendQuad(mesh, centreW, n, planeTangent(n), sizeM.x, sizeM.y);
+  return mesh;
+}
+
+namespace {
+
+// Value noise in [−1, 1]: hashed lattice values blended with smoothstep weights.
+float valueNoise(float x, float z, std::uint32_t seed) {
+  float fx = std::floor(x), fz = std::floor(z);
+  auto lattice = [&](float i, float k) {
+    auto ui = static_cast<std::uint32_t>(static_cast<std::int32_t>(i));
+    auto uk = static_cast<std::uint32_t>(static_cast<std::int32_t>(k));
+    std::uint32_t h = shared::pcgHash(ui ^ shared::pcgHash(uk ^ shared::pcgHash(seed)));
+    return shared::uintToUnitFloat(h) * 2.0f - 1.0f;
+  };
+  auto smooth = [](float t) { return t * t * (3.0f - 2.0f * t); };
+  float tx = smooth(x - fx), tz = smooth(z - fz);
+  float a = glm::mix(lattice(fx, fz), lattice(fx + 1.0f, fz), tx);
+  float b = glm::mix(lattice(fx, fz + 1.0f), lattice(fx + 1.0f, fz + 1.0f), tx);
+  return glm::mix(a, b, tz);
+}
+
+}  // namespace
+
+Mesh makeHeightField(const glm::vec3& centreW, const glm::vec2& sizeM, int resolution, float amplitudeM,
+                     float featureM, std::uint32_t seed, float tileM) {
+  PRISM_CHECK(resolution >= 1 && sizeM.x > 0.0f && sizeM.y > 0.0f && featureM > 0.0f && tileM > 0.0f);
+  Mesh mesh;
+  mesh.name = "heightfield";
+  const int n = resolution;
+  for (int i = 0; i <= n; ++i) {      // rows along +z
+    for (int j = 0; j <= n; ++j) {    // columns along +x
+      float x = centreW.x + sizeM.x * (static_cast<float>(j) / static_cast<float>(n) - 0.5f);
+      float z = centreW.z + sizeM.y * (static_cast<float>(i) / static_cast<float>(n) - 0.5f);
+      float height = 0.0f, scale = 1.0f, weight = 0.0f;
+      for (int octave = 0; octave < 3; ++octave) {
+        height += scale * valueNoise(x / (featureM * scale), z / (featureM * scale), seed + static_cast<std::uint32_t>(octave));
+        weight += scale;
+        scale *= 0.5f;
+      }
+      Vertex v;
+      v.position = {x, centreW.y + amplitudeM * height / weight, z};
+      v.uv = {x / tileM, z / tileM};
+      mesh.vertices.push_back(v);
+    }
+  }
+  auto at = [&](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      // Seen from above (+y) with x to the right and z towards the viewer, a (i, j) → b (i+1, j)
+      // → c (i+1, j+1) runs counter-clockwise.
+      std::uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      mesh.indices.insert(mesh.indices.end(), {a, b, c, a, c, d});
+    }
+  }
+  computeNormals(mesh);
+  computeTangents(mesh);
   return mesh;
 }
 

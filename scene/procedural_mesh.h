@@ -9,6 +9,8 @@
 //   whose tangents Blender computes with MikkTSpace before flipping v on export.
 #pragma once
 
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 #include "scene/scene.h"
@@ -28,6 +30,15 @@ Mesh makePlane(const glm::vec3& centreW, const glm::vec3& normalW, const glm::ve
 // An axis-aligned box of sizeM, rotated by rotationDeg (eulerRotation) about its centre; each
 // face is a makePlane quad (24 vertices, flat normals).
 Mesh makeBox(const glm::vec3& centreW, const glm::vec3& sizeM, const glm::vec3& rotationDeg = {});
+
+// A height field over sizeM.x (along +x) by sizeM.y (along +z) centred at centreW, a grid of
+// resolution × resolution quads: y = centreW.y + amplitudeM · fbm(x/featureM, z/featureM), three
+// octaves of value noise (lattice values from the PCG hash of random.glsl and `seed`, smoothstep
+// interpolation, each octave half the size and half the height), in [−amplitude, amplitude].
+// Front faces up; smooth normals and tangents computed; uv = (x, z) / tileM, so that a texture
+// repeats every tileM metres (textures wrap). resolution ≥ 1, sizes, featureM and tileM > 0.
+Mesh makeHeightField(const glm::vec3& centreW, const glm::vec2& sizeM, int resolution, float amplitudeM,
+                     float featureM, std::uint32_t seed, float tileM);
 
 // Rotation by Euler angles in degrees: about x first, then y, then z, all about the fixed
 // (world) axes: R = Rz · Ry · Rx.

@@ -116,3 +116,36 @@ TEST(ProceduralMesh, ComputedNormalsAreAreaWeightedAndUnit) {
 
 }  // namespace
 }  // namespace prism
+
+namespace prism {
+namespace {
+
+TEST(ProceduralMesh, HeightFieldFacesUpStaysWithinItsAmplitudeAndRepeatsItsSeed) {
+  Mesh field = makeHeightField({1.0f, -2.0f, 3.0f}, {8.0f, 6.0f}, 16, 0.5f, 2.0f, 7, 2.0f);
+  ASSERT_EQ(field.vertices.size(), 17u * 17u);
+  ASSERT_EQ(field.indices.size(), 16u * 16u * 6u);
+  float lowest = 1e9f, highest = -1e9f;
+  for (const Vertex& v : field.vertices) {
+    lowest = std::min(lowest, v.position.y);
+    highest = std::max(highest, v.position.y);
+    EXPECT_GT(v.normal.y, 0.0f);
+    EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-5f);
+  }
+  EXPECT_GE(lowest, -2.5f);
+  EXPECT_LE(highest, -1.5f);
+  EXPECT_GT(highest - lowest, 0.2f) << "not flat";
+  for (std::size_t t = 0; t < field.indices.size(); t += 3) {
+    const glm::vec3& a = field.vertices[field.indices[t]].position;
+    const glm::vec3& b = field.vertices[field.indices[t + 1]].position;
+    const glm::vec3& c = field.vertices[field.indices[t + 2]].position;
+    EXPECT_GT(glm::cross(b - a, c - a).y, 0.0f) << "triangle " << t / 3 << " faces down";
+  }
+  EXPECT_FLOAT_EQ(field.vertices.back().uv.x, (1.0f + 4.0f) / 2.0f);  // x / tile at the far corner
+  Mesh again = makeHeightField({1.0f, -2.0f, 3.0f}, {8.0f, 6.0f}, 16, 0.5f, 2.0f, 7, 2.0f);
+  EXPECT_EQ(again.vertices[100].position, field.vertices[100].position);
+  Mesh other = makeHeightField({1.0f, -2.0f, 3.0f}, {8.0f, 6.0f}, 16, 0.5f, 2.0f, 8, 2.0f);
+  EXPECT_NE(other.vertices[100].position, field.vertices[100].position);
+}
+
+}  // namespace
+}  // namespace prism

@@ -318,11 +318,11 @@ class SceneParser {
   void object(const Node& o) {
     if (!o.json().is_object()) o.fail("expected an object, got " + schema::describe(o.json()));
     std::vector<std::string> kinds;
-    for (const char* k : {"sphere", "plane", "box", "gltf"})
+    for (const char* k : {"sphere", "plane", "box", "heightfield", "gltf"})
       if (o.has(k)) kinds.push_back(k);
     if (kinds.size() != 1)
-      o.fail(kinds.empty() ? "expected one of the keys sphere, plane, box, gltf"
-                           : "expected only one of the keys sphere, plane, box, gltf, got " + joined(kinds));
+      o.fail(kinds.empty() ? "expected one of the keys sphere, plane, box, heightfield, gltf"
+                           : "expected only one of the keys sphere, plane, box, heightfield, gltf, got " + joined(kinds));
     const std::string& kind = kinds[0];
     std::string name = o.has("name") ? o.child("name").string() : o.pointer();
 
@@ -354,6 +354,14 @@ class SceneParser {
       glm::vec3 nv = normal.vec3();
       if (!(glm::length(nv) > 0.0f)) normal.fail("expected a non-zero normal");
       mesh = makePlane(shape.child("centre").vec3(), nv, shape.child("size").vec2(Range::above(0.0)));
+    } else if (kind == "heightfield") {
+      shape.expectObject({"centre", "size", "resolution", "amplitude", "feature_size", "seed", "texture_tile"});
+      mesh = makeHeightField(shape.child("centre").vec3(), shape.child("size").vec2(Range::above(0.0)),
+                             shape.has("resolution") ? shape.child("resolution").integer(Range::closed(1, 2048)) : 128,
+                             shape.numberF("amplitude", 0.5f, Range::atLeast(0.0)),
+                             shape.numberF("feature_size", 4.0f, Range::above(0.0)),
+                             static_cast<std::uint32_t>(shape.has("seed") ? shape.child("seed").integer(Range::closed(0, 1e9)) : 1),
+                             shape.numberF("texture_tile", 1.0f, Range::above(0.0)));
     } else {
       shape.expectObject({"centre", "size", "rotation_deg"});
       mesh = makeBox(shape.child("centre").vec3(), shape.child("size").vec3(Range::above(0.0)),

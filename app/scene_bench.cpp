@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -148,7 +149,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   gpu::GpuTimer timer({kFramesInFlight});
 
   std::size_t done = 0;
-  std::size_t total = (options.wavelengths.size() + 1) *
+  std::size_t total = (options.wavelengths.size() + 1 + (scene.water ? 3 : 0)) *
                       static_cast<std::size_t>(options.warmup + options.frames);
   ProgressBar bar("benchmark " + options.scene.filename().string());
   ConfigResult rgb = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
@@ -163,6 +164,27 @@ void runSceneBench(const SceneBenchOptions& options) {
     r.label = std::to_string(n);
     r.wavelengths = n;
     spectral.push_back(std::move(r));
+  }
+
+  // Under water: the water term's cost, the same frames with the scene's water taken out (RGB and
+  // 16 wavelengths), measured in the same run.
+  std::optional<std::pair<ConfigResult, ConfigResult>> dry;
+  if (scene.water) {
+    Scene dryScene = scene;
+    dryScene.water.reset();
+    render::Renderer dryRenderer(dryScene, table, settings);
+    ConfigResult dryRgb = measure(dryRenderer, timer, options.warmup, options.frames, bar, done, total);
+    render::FrameSettings s16 = settings;
+    s16.mode = render::RenderMode::JakobHanika;
+    s16.sampling.count = 16;
+    dryRenderer.setSettings(s16);
+    ConfigResult dry16 = measure(dryRenderer, timer, options.warmup, options.frames, bar, done, total);
+    renderer.setSettings(s16);
+    ConfigResult wet16 = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
+    dry.emplace(std::move(dryRgb), std::move(dry16));
+    dry->second.label = "16 dry";
+    wet16.label = "16 wet";
+    dry->first.medianMs["wet_frame_16"] = wet16.medianMs.at("frame");
   }
 
   std::vector<double> ns, ts;
@@ -208,6 +230,14 @@ void runSceneBench(const SceneBenchOptions& options) {
     j["fit"] = {{"slope_ms_per_wavelength", a}, {"intercept_ms", b},
                 {"slope_fraction_of_rgb_frame", a / rgbFrame}};
     j["extra_gpu_memory_mb"] = {{"upsampling_table", tableMb}, {"frame_buffers", buffersMb}};
+    if (dry) {
+      j["water"] = {{"rgb_ratio_wet_to_dry", rgbFrame / dry->first.medianMs.at("frame")},
+                    {"spectral16_ratio_wet_to_dry",
+                     dry->first.medianMs.at("wet_frame_16") / dry->second.medianMs.at("frame")},
+                    {"dry_rgb_frame_ms", dry->first.medianMs.at("frame")},
+                    {"dry_spectral16_frame_ms", dry->second.medianMs.at("frame")},
+                    {"wet_spectral16_frame_ms", dry->first.medianMs.at("wet_frame_16")}};
+    }
     fmt::print("{}\n", j.dump(2));
     return;
   }
@@ -237,6 +267,12 @@ void runSceneBench(const SceneBenchOptions& options) {
              a, b, 100.0 * a / rgbFrame);
   fmt::print("GPU memory added by spectral modes: {:.2f} MB (upsampling table {:.2f} MB, "
              "frame buffers at n = {} {:.3f} MB)\n", tableMb + buffersMb, tableMb, maxN, buffersMb);
+  if (dry) {
+    double wet16 = dry->first.medianMs.at("wet_frame_16"), dry16 = dry->second.medianMs.at("frame");
+    fmt::print("water on / off: RGB {:.3f} / {:.3f} ms = {:.3f}×; 16 wavelengths {:.3f} / {:.3f} ms = {:.3f}×\n",
+               rgbFrame, dry->first.medianMs.at("frame"), rgbFrame / dry->first.medianMs.at("frame"), wet16,
+               dry16, wet16 / dry16);
+  }
 }
 
 }  // namespace prism::app

@@ -179,6 +179,8 @@ int main(int argc, char** argv) {
     cmd->add_option("--observer", o.observer, "cie1931, cie1964 or a camera")->capture_default_str();
     cmd->add_option("--camera", o.camera, "a camera as the observer (raw camera RGB, fitted matrix for display)");
     cmd->add_option("--lookup", o.lookup, "upsampling table lookup: filtered or manual")->capture_default_str();
+    cmd->add_option("--gbuffer", o.gbuffer, "what the G-buffer keeps of a base colour: rgb or coefficients")
+        ->capture_default_str();
     cmd->add_option("--tonemap", o.toneMap, "none, reinhard or aces")->capture_default_str();
     cmd->add_option("--display", o.display, "srgb, display-p3 or rec2020")->capture_default_str();
     cmd->add_option("--white-balance", o.whiteBalance, "adapt this illuminant's white to the display white, or none")

@@ -34,6 +34,9 @@ render::FrameSettings frameSettings(const RenderSettingsOptions& o) {
   if (o.lookup == "manual") s.lookup = render::UpsamplingLookup::Manual;
   else if (o.lookup == "filtered") s.lookup = render::UpsamplingLookup::Filtered;
   else throw Error(fmt::format("--lookup: unknown \"{}\" (manual, filtered)", o.lookup));
+  if (o.gbuffer == "rgb") s.gbufferAlbedo = render::GBufferAlbedo::Rgb;
+  else if (o.gbuffer == "coefficients") s.gbufferAlbedo = render::GBufferAlbedo::Coefficients;
+  else throw Error(fmt::format("--gbuffer: unknown \"{}\" (rgb, coefficients)", o.gbuffer));
   s.toneMap = render::toneMapFromName(o.toneMap);
   s.display = o.display;
   s.whiteBalance = o.whiteBalance;

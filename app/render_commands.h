@@ -23,6 +23,7 @@ struct RenderSettingsOptions {
   std::string observer = "cie1931";
   std::string camera;  // a camera from data/cameras.csv as the observer (overrides observer)
   std::string lookup = "filtered";
+  std::string gbuffer = "rgb";  // what the G-buffer keeps of a base colour: rgb or coefficients
   std::string toneMap = "aces";
   std::string display = "srgb";
   std::string whiteBalance = "none";

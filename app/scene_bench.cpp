@@ -149,7 +149,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   gpu::GpuTimer timer({kFramesInFlight});
 
   std::size_t done = 0;
-  std::size_t total = (options.wavelengths.size() + 1 + (scene.water ? 3 : 0)) *
+  std::size_t total = (options.wavelengths.size() + 3 + (scene.water ? 3 : 0)) *
                       static_cast<std::size_t>(options.warmup + options.frames);
   ProgressBar bar("benchmark " + options.scene.filename().string());
   ConfigResult rgb = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
@@ -165,6 +165,20 @@ void runSceneBench(const SceneBenchOptions& options) {
     r.wavelengths = n;
     spectral.push_back(std::move(r));
   }
+
+  // What the G-buffer keeps of a base colour (issue #4: which is faster?): RGB albedo, upsampled
+  // once per pixel in the lighting pass, against Jakob–Hanika coefficients looked up per G-buffer
+  // fragment into one more RGBA32F target; 16 wavelengths, the same run.
+  render::FrameSettings rgbAlbedo = settings;
+  rgbAlbedo.mode = render::RenderMode::JakobHanika;
+  rgbAlbedo.sampling.count = 16;
+  rgbAlbedo.gbufferAlbedo = render::GBufferAlbedo::Rgb;
+  render::FrameSettings coefficientAlbedo = rgbAlbedo;
+  coefficientAlbedo.gbufferAlbedo = render::GBufferAlbedo::Coefficients;
+  renderer.setSettings(coefficientAlbedo);
+  ConfigResult coefficients16 = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
+  renderer.setSettings(rgbAlbedo);
+  ConfigResult rgbAlbedo16 = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
 
   // Under water: the water term's cost, the same frames with the scene's water taken out (RGB and
   // 16 wavelengths), measured in the same run.
@@ -230,6 +244,12 @@ void runSceneBench(const SceneBenchOptions& options) {
     j["fit"] = {{"slope_ms_per_wavelength", a}, {"intercept_ms", b},
                 {"slope_fraction_of_rgb_frame", a / rgbFrame}};
     j["extra_gpu_memory_mb"] = {{"upsampling_table", tableMb}, {"frame_buffers", buffersMb}};
+    j["gbuffer_albedo_16"] = {{"rgb_frame_ms", rgbAlbedo16.medianMs.at("frame")},
+                              {"coefficients_frame_ms", coefficients16.medianMs.at("frame")},
+                              {"rgb_median_ms", rgbAlbedo16.medianMs},
+                              {"coefficients_median_ms", coefficients16.medianMs},
+                              {"ratio_coefficients_to_rgb",
+                               coefficients16.medianMs.at("frame") / rgbAlbedo16.medianMs.at("frame")}};
     if (dry) {
       j["water"] = {{"rgb_ratio_wet_to_dry", rgbFrame / dry->first.medianMs.at("frame")},
                     {"spectral16_ratio_wet_to_dry",
@@ -267,6 +287,15 @@ void runSceneBench(const SceneBenchOptions& options) {
              a, b, 100.0 * a / rgbFrame);
   fmt::print("GPU memory added by spectral modes: {:.2f} MB (upsampling table {:.2f} MB, "
              "frame buffers at n = {} {:.3f} MB)\n", tableMb + buffersMb, tableMb, maxN, buffersMb);
+  auto passMs = [](const ConfigResult& r, const char* pass) {
+    auto it = r.medianMs.find(pass);
+    return it == r.medianMs.end() ? 0.0 : it->second;
+  };
+  fmt::print("G-buffer at 16 wavelengths, coefficients / RGB albedo: frame {:.3f} / {:.3f} ms = {:.3f}× "
+             "(G-buffer {:.3f} / {:.3f} ms, lighting {:.3f} / {:.3f} ms)\n",
+             coefficients16.medianMs.at("frame"), rgbAlbedo16.medianMs.at("frame"),
+             coefficients16.medianMs.at("frame") / rgbAlbedo16.medianMs.at("frame"), passMs(coefficients16, "gbuffer"),
+             passMs(rgbAlbedo16, "gbuffer"), passMs(coefficients16, "lighting"), passMs(rgbAlbedo16, "lighting"));
   if (dry) {
     double wet16 = dry->first.medianMs.at("wet_frame_16"), dry16 = dry->second.medianMs.at("frame");
     fmt::print("water on / off: RGB {:.3f} / {:.3f} ms = {:.3f}×; 16 wavelengths {:.3f} / {:.3f} ms = {:.3f}×\n",

@@ -23,6 +23,7 @@ class CpuShadingKernel {
     s.metallic = texel.albedoMetallic.w;
     s.roughness = texel.normalRoughness.w;
     s.material = static_cast<int>(texel.materialId) - 1;
+    mTexelCoefficients = texel.coefficients;
     return shadeSurface(mFrame.constants, s, camera.position);
   }
 
@@ -40,7 +41,9 @@ class CpuShadingKernel {
   float shadowDepthAt(int layer, int x, int y) const {
     return mShadowLayers[index(layer)][index(y * mFrame.constants.shadowMapSize + x)];
   }
-  vec3 upsamplingCoefficients(vec3 rgb) const { return mTable.lookup(rgb); }
+  vec3 upsamplingCoefficients(vec3 rgb) const {
+    return mFrame.constants.gbufferCoefficients != 0 ? mTexelCoefficients : mTable.lookup(rgb);
+  }
   vec4 frameWaterSpectrum(int b, int j) const { return mFrame.waterSpectra[index(b * 3 + j)]; }
 
 #include "pixel_shading.glsl"
@@ -48,6 +51,7 @@ class CpuShadingKernel {
   render::FrameData mFrame;
   const RgbToSpectrumTable& mTable;
   std::vector<std::vector<float>> mShadowLayers;
+  vec3 mTexelCoefficients{0.0f};  // of the texel being shaded
 };
 
 }  // namespace prism::shared

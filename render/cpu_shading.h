@@ -21,6 +21,7 @@ struct GBufferTexel {
   glm::vec4 normalRoughness{0.0f};
   std::uint32_t materialId = 0;  // material index + 1; 0 where no geometry is
   float depth = 1.0f;
+  glm::vec3 coefficients{0.0f};  // Jakob–Hanika coefficients, when the G-buffer holds them
 };
 
 class CpuShading {

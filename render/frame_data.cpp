@@ -96,6 +96,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
   frame.constants.batchCount = batchCount;
   frame.constants.lightCount = static_cast<int>(scene.lights.size());
   frame.constants.shadowMapSize = settings.shadowMapSize;
+  frame.constants.gbufferCoefficients = settings.gbufferAlbedo == GBufferAlbedo::Coefficients ? 1 : 0;
 
   // Lights and their spectra.
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {

@@ -28,6 +28,11 @@ ToneMap toneMapFromName(std::string_view name);  // none|reinhard|aces
 // the CPU) or one hardware-filtered fetch (faster, an equally smooth interpolant).
 enum class UpsamplingLookup { Manual, Filtered };
 
+// What the G-buffer keeps of a base colour: its RGB (upsampled once per pixel by the lighting
+// pass) or its Jakob–Hanika coefficients (looked up per G-buffer fragment, one RGBA32F target
+// more). Issue #4 asked which is faster; `prism bench` measures both side by side.
+enum class GBufferAlbedo { Rgb, Coefficients };
+
 struct FrameSettings {
   int width = 1280;
   int height = 720;
@@ -35,6 +40,7 @@ struct FrameSettings {
   SamplingSettings sampling;          // spectral modes other than reference
   std::string observer = "cie1931";   // or a camera from data/cameras.csv: raw camera RGB
   UpsamplingLookup lookup = UpsamplingLookup::Filtered;
+  GBufferAlbedo gbufferAlbedo = GBufferAlbedo::Rgb;
   int shadowMapSize = 2048;
   bool lightGizmos = false;  // forward pass: an emissive marker at each point and spot light
   // Display transform.

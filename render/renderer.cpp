@@ -18,11 +18,13 @@
 namespace prism::render {
 namespace {
 
-gpu::Program passProgram(const char* vertex, const char* fragment, const char* label) {
+gpu::Program passProgram(const char* vertex, const char* fragment, const char* label,
+                         std::vector<gpu::ShaderDefine> defines = {}) {
   gpu::ProgramDesc desc;
   desc.vertex = shaderDirectory() / "passes" / vertex;
   desc.fragment = shaderDirectory() / "passes" / fragment;
   desc.includeDirs = {shaderDirectory()};
+  desc.defines = std::move(defines);
   desc.label = label;
   return gpu::Program(desc);
 }
@@ -72,6 +74,8 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
       mUpsamplingTable(uploadUpsamplingTable(table)),
       mShadowProgram(passProgram("shadow.vert", "shadow.frag", "shadow pass")),
       mGBufferProgram(passProgram("gbuffer.vert", "gbuffer.frag", "g-buffer pass")),
+      mGBufferCoefficientsProgram(passProgram("gbuffer.vert", "gbuffer.frag", "g-buffer pass (coefficients)",
+                                              {{"PRISM_GBUFFER_COEFFICIENTS", "1"}})),
       mLightingProgram(passProgram("fullscreen.vert", "lighting.frag", "lighting pass")),
       mForwardProgram(passProgram("forward.vert", "forward.frag", "forward pass")),
       mPostProgram(passProgram("fullscreen.vert", "post.frag", "post pass")),
@@ -88,19 +92,20 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
   }
   mDisplayTransform = displayTransform(mSettings, mCamera.ev100);
   mShadows = makeShadows(mScene, mSettings.shadowMapSize);
-  mTargets = makeTargets(mSettings.width, mSettings.height);
+  mTargets = makeTargets(mSettings.width, mSettings.height, mSettings.gbufferAlbedo);
 }
 
 void Renderer::setSettings(const FrameSettings& settings) {
   validate(settings);
   DisplayTransform display = displayTransform(settings, mCamera.ev100);
-  bool resized = settings.width != mSettings.width || settings.height != mSettings.height;
+  bool resized = settings.width != mSettings.width || settings.height != mSettings.height ||
+                 settings.gbufferAlbedo != mSettings.gbufferAlbedo;
   std::optional<Shadows> shadows;
   if (settings.shadowMapSize != mSettings.shadowMapSize) {
     shadows = makeShadows(mScene, settings.shadowMapSize);
   }
   std::optional<Targets> targets;
-  if (resized) targets = makeTargets(settings.width, settings.height);
+  if (resized) targets = makeTargets(settings.width, settings.height, settings.gbufferAlbedo);
   // Nothing below throws.
   bool lightingChanged = resized || shadows || settings.mode != mSettings.mode ||
                          settings.sampling.count != mSettings.sampling.count ||
@@ -143,7 +148,7 @@ Renderer::Shadows Renderer::makeShadows(const Scene& scene, int mapSize) {
   return s;
 }
 
-Renderer::Targets Renderer::makeTargets(int w, int h) {
+Renderer::Targets Renderer::makeTargets(int w, int h, GBufferAlbedo albedo) {
   Targets t;
   t.albedoMetallic = target(w, h, GL_RGBA16F, "g-buffer albedo, metallic");
   t.normalRoughness = target(w, h, GL_RGBA16F, "g-buffer normal, roughness");
@@ -154,6 +159,11 @@ Renderer::Targets Renderer::makeTargets(int w, int h) {
   t.display = target(w, h, GL_RGBA8, "display");
   gpu::FramebufferDesc g;
   g.colour = {{&t.albedoMetallic, 0}, {&t.normalRoughness, 0}, {&t.materialId, 0}};
+  if (albedo == GBufferAlbedo::Coefficients) {
+    // Coefficients reach ±150 (saturated colours) and cancel each other: 16-bit floats would not do.
+    t.coefficients = target(w, h, GL_RGBA32F, "g-buffer Jakob–Hanika coefficients");
+    g.colour.push_back({&t.coefficients, 0});
+  }
   g.depth.texture = &t.depth;
   g.label = "g-buffer";
   t.gbuffer = gpu::Framebuffer(g);
@@ -241,8 +251,16 @@ void Renderer::gbufferPass() {
   mTargets.gbuffer.clearColour(1, glm::vec4(0.0f));
   mTargets.gbuffer.clearColourUint(2, {0, 0, 0, 0});
   mTargets.gbuffer.clearDepth(1.0f);
-  mGBufferProgram.use();
-  mGBufferProgram.setUniform("uViewProjection", mCameraTransform.viewProjection);
+  const bool coefficients = mSettings.gbufferAlbedo == GBufferAlbedo::Coefficients;
+  const gpu::Program& program = coefficients ? mGBufferCoefficientsProgram : mGBufferProgram;
+  program.use();
+  program.setUniform("uViewProjection", mCameraTransform.viewProjection);
+  if (coefficients) {
+    mTargets.gbuffer.clearColour(3, glm::vec4(0.0f));
+    mUpsamplingTable.bind(3);
+    program.setUniform("uUpsamplingResolution", mTable.resolution());
+    program.setUniform("uFilteredLookup", mSettings.lookup == UpsamplingLookup::Filtered ? 1 : 0);
+  }
   for (const GpuMesh& mesh : mGpuScene.meshes()) {
     const Material& m = mScene.materials.at(static_cast<std::size_t>(mesh.material));
     int textures = 0;
@@ -258,11 +276,11 @@ void Renderer::gbufferPass() {
       mGpuScene.texture(m.normalTexture).bind(2);
       textures |= shared::kTextureNormal;
     }
-    mGBufferProgram.setUniform("uBaseColour", m.baseColour);
-    mGBufferProgram.setUniform("uMetallic", m.metallic);
-    mGBufferProgram.setUniform("uRoughness", m.roughness);
-    mGBufferProgram.setUniform("uMaterialId", static_cast<GLuint>(mesh.material + 1));
-    mGBufferProgram.setUniform("uTextures", textures);
+    program.setUniform("uBaseColour", m.baseColour);
+    program.setUniform("uMetallic", m.metallic);
+    program.setUniform("uRoughness", m.roughness);
+    program.setUniform("uMaterialId", static_cast<GLuint>(mesh.material + 1));
+    program.setUniform("uTextures", textures);
     mesh.vertexArray.draw();
   }
 }
@@ -285,6 +303,7 @@ void Renderer::lightingPass() {
   mTargets.depth.bind(3);
   mShadows.maps.bind(4);
   mUpsamplingTable.bind(5);
+  if (mSettings.gbufferAlbedo == GBufferAlbedo::Coefficients) mTargets.coefficients.bind(6);
   const gpu::Program& p = mLightingProgram;
   p.use();
   p.setUniform("uMode", mFrame.constants.mode);
@@ -292,6 +311,7 @@ void Renderer::lightingPass() {
   p.setUniform("uLightCount", mFrame.constants.lightCount);
   p.setUniform("uShadowMapSize", mFrame.constants.shadowMapSize);
   p.setUniform("uWater", mFrame.constants.water);
+  p.setUniform("uGBufferCoefficients", mFrame.constants.gbufferCoefficients);
   p.setUniform("uWaterDepth", mFrame.constants.waterDepthM);
   p.setUniform("uWaterSurfaceY", mFrame.constants.waterSurfaceY);
   p.setUniform("uUpsamplingResolution", mTable.resolution());

@@ -66,6 +66,7 @@ class Renderer {
   const gpu::Texture2D& normalRoughness() const { return mTargets.normalRoughness; }
   const gpu::Texture2D& materialId() const { return mTargets.materialId; }
   const gpu::Texture2D& depth() const { return mTargets.depth; }
+  const gpu::Texture2D& coefficients() const { return mTargets.coefficients; }  // when the G-buffer has them
   const gpu::Texture2DArray& shadowMaps() const { return mShadows.maps; }
   const gpu::Texture2D& accumulation() const { return mTargets.accumulation; }
 
@@ -73,6 +74,7 @@ class Renderer {
   // Everything sized by the image: built whole, then swapped in.
   struct Targets {
     gpu::Texture2D albedoMetallic, normalRoughness, materialId, depth;
+    gpu::Texture2D coefficients;  // GBufferAlbedo::Coefficients only
     gpu::Texture2D accumulation, forwardDepth, display;
     gpu::Framebuffer gbuffer, accumulationTarget, forwardTarget, displayTarget;
   };
@@ -82,7 +84,7 @@ class Renderer {
     gpu::Texture2DArray maps;
     std::vector<gpu::Framebuffer> framebuffers;  // one per view
   };
-  static Targets makeTargets(int width, int height);
+  static Targets makeTargets(int width, int height, GBufferAlbedo albedo);
   static Shadows makeShadows(const Scene& scene, int mapSize);
   void hook(std::string_view pass) const;
   void shadowPass();
@@ -106,7 +108,8 @@ class Renderer {
   std::uint32_t mFrameIndex = 0;
   PassHook mPassHook;
 
-  gpu::Program mShadowProgram, mGBufferProgram, mLightingProgram, mForwardProgram, mPostProgram;
+  gpu::Program mShadowProgram, mGBufferProgram, mGBufferCoefficientsProgram, mLightingProgram, mForwardProgram,
+      mPostProgram;
   gpu::VertexArray mFullScreen;
   GpuMesh mGizmo;  // a unit sphere
   Shadows mShadows;

@@ -47,9 +47,12 @@ FrameSettings smallFrame(RenderMode mode, int wavelengths = 16) {
 struct ParityCase {
   const char* scene;
   RenderMode mode;
+  GBufferAlbedo albedo = GBufferAlbedo::Rgb;
 };
 // What gtest (and so ctest's test names) shows of a case, instead of its bytes.
-void PrintTo(const ParityCase& c, std::ostream* os) { *os << c.scene << " " << renderModeName(c.mode); }
+void PrintTo(const ParityCase& c, std::ostream* os) {
+  *os << c.scene << " " << renderModeName(c.mode) << (c.albedo == GBufferAlbedo::Coefficients ? " coefficients" : "");
+}
 
 class GpuCpuParity : public testing::TestWithParam<ParityCase> {};
 
@@ -57,10 +60,13 @@ TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kScenes / GetParam().scene);
   FrameSettings settings = smallFrame(GetParam().mode);
+  settings.gbufferAlbedo = GetParam().albedo;
   Renderer renderer(scene, table(), settings);
   renderer.renderFrame();
 
   const int w = settings.width, h = settings.height;
+  const bool coefficients = GetParam().albedo == GBufferAlbedo::Coefficients;
+  std::vector<float> stored = coefficients ? gpu::readTexture2DFloat(renderer.coefficients(), 4) : std::vector<float>();
   std::vector<float> albedo = gpu::readTexture2DFloat(renderer.albedoMetallic(), 4);
   std::vector<float> normal = gpu::readTexture2DFloat(renderer.normalRoughness(), 4);
   std::vector<std::uint32_t> ids = gpu::readTexture2DUint(renderer.materialId(), 1);
@@ -85,6 +91,7 @@ TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {
     t.normalRoughness = glm::vec4(normal[4 * i], normal[4 * i + 1], normal[4 * i + 2], normal[4 * i + 3]);
     t.materialId = ids[i];
     t.depth = depth[i];
+    if (coefficients) t.coefficients = glm::vec3(stored[4 * i], stored[4 * i + 1], stored[4 * i + 2]);
     surfaces += t.materialId != 0;
     glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(w),
                  (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
@@ -116,10 +123,12 @@ INSTANTIATE_TEST_SUITE_P(
                     ParityCase{"cook_torrance_sweep.json", RenderMode::JakobHanika},
                     ParityCase{"textured_gltf.json", RenderMode::JakobHanika},
                     ParityCase{"reef.json", RenderMode::JakobHanika},  // under water
-                    ParityCase{"reef.json", RenderMode::Rgb}),
+                    ParityCase{"reef.json", RenderMode::Rgb},
+                    ParityCase{"textured_gltf.json", RenderMode::JakobHanika, GBufferAlbedo::Coefficients}),
     [](const testing::TestParamInfo<ParityCase>& param) {
       std::string name = std::filesystem::path(param.param.scene).stem().string() + "_" +
-                         std::string(renderModeName(param.param.mode));
+                         std::string(renderModeName(param.param.mode)) +
+                         (param.param.albedo == GBufferAlbedo::Coefficients ? "_coefficients" : "");
       std::replace(name.begin(), name.end(), '-', '_');
       return name;
     });
@@ -277,6 +286,35 @@ TEST(Renderer, SettingsChangeWithoutRestartAndRestartAccumulation) {
   renderer.renderFrame();
   EXPECT_EQ(renderer.accumulatedFrames(), 2);
   EXPECT_EQ(renderer.frameData().batches.size(), std::size_t{8});
+}
+
+// Coefficients stored in the G-buffer give the image the RGB albedo gives (the same lookup, per
+// fragment instead of per pixel; only the albedo's 16-bit storage differs), switched live.
+TEST(Renderer, GBufferCoefficientsRenderWhatTheRgbAlbedoRenders) {
+  gpu::HeadlessContext context;
+  Scene scene = loadScene(kScenes / "textured_gltf.json");
+  FrameSettings settings = smallFrame(RenderMode::JakobHanika);
+  Renderer renderer(scene, table(), settings);
+  renderer.renderFrame();
+  std::vector<float> fromRgb = renderer.readMeanTristimulus();
+  settings.gbufferAlbedo = GBufferAlbedo::Coefficients;
+  renderer.setSettings(settings);
+  EXPECT_EQ(renderer.accumulatedFrames(), 0);
+  renderer.renderFrame();
+  std::vector<float> fromCoefficients = renderer.readMeanTristimulus();
+  ASSERT_EQ(fromRgb.size(), fromCoefficients.size());
+  double worst = 0.0, peak = 0.0;
+  for (float v : fromRgb) peak = std::max(peak, static_cast<double>(std::abs(v)));
+  for (std::size_t i = 0; i < fromRgb.size(); ++i) {
+    worst = std::max(worst, std::abs(static_cast<double>(fromRgb[i]) - fromCoefficients[i]) / peak);
+  }
+  EXPECT_GT(peak, 0.0);
+  // Half-float albedo (2⁻¹¹ relative) moves a saturated colour's reflectance by a few 1e-4.
+  EXPECT_LT(worst, 2e-3);
+  settings.gbufferAlbedo = GBufferAlbedo::Rgb;
+  renderer.setSettings(settings);
+  renderer.renderFrame();
+  EXPECT_EQ(renderer.readMeanTristimulus(), fromRgb);
 }
 
 }  // namespace

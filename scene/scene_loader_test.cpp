@@ -266,7 +266,7 @@ TEST_F(SceneFolder, ObjectsMustNameAKnownMaterialAndOneShape) {
   EXPECT_EQ(errorOf([&] { loadScene(f); }), f.string() + ": /objects/0/material: unknown material 'c' (materials: a, b)");
   f = scene(R"("a": {})", "", R"({"sphere": {"centre": [0, 0, 0], "radius": 1}, "box": {}, "material": "a"})");
   EXPECT_EQ(errorOf([&] { loadScene(f); }),
-            f.string() + ": /objects/0: expected only one of the keys sphere, plane, box, gltf, got sphere, box");
+            f.string() + ": /objects/0: expected only one of the keys sphere, plane, box, heightfield, gltf, got sphere, box");
   f = scene(R"("a": {})", "", R"({"sphere": {"centre": [0, 0, 0], "radius": 0}, "material": "a"})");
   EXPECT_EQ(errorOf([&] { loadScene(f); }), f.string() + ": /objects/0/sphere/radius: expected a number > 0, got 0");
 }

@@ -2,6 +2,7 @@
 // G-buffer pass: the material's inputs at each visible point (shared/surface_inputs.glsl), as RGB
 // (the albedo stays RGB here and is upsampled once per pixel in the lighting pass). Base colour
 // textures are sRGB-format textures, decoded by the sampler with the sRGB transfer function.
+// With PRISM_GBUFFER_COEFFICIENTS it also stores the albedo's Jakob–Hanika coefficients.
 in vec3 vPosition;
 in vec3 vNormal;
 in vec2 vUv;
@@ -9,6 +10,14 @@ in vec4 vTangent;
 
 #include "shared/prelude.glsl"
 #include "shared/surface_inputs.glsl"
+#ifdef PRISM_GBUFFER_COEFFICIENTS
+#include "shared/upsampling.glsl"
+#include "common_upsampling.glsl"
+layout(binding = 3) uniform sampler3D uUpsamplingTable;
+uniform int uUpsamplingResolution;
+uniform int uFilteredLookup;
+layout(location = 3) out vec4 gCoefficients;  // Jakob–Hanika c0, c1, c2 of the albedo
+#endif
 
 layout(binding = 0) uniform sampler2D uBaseColourTexture;
 layout(binding = 1) uniform sampler2D uMetallicRoughnessTexture;
@@ -40,4 +49,10 @@ void main() {
   gAlbedoMetallic = vec4(s.albedo, s.metallic);
   gNormalRoughness = vec4(s.normal, s.roughness);
   gMaterialId = uMaterialId;
+#ifdef PRISM_GBUFFER_COEFFICIENTS
+  gCoefficients = vec4(uFilteredLookup != 0
+                           ? upsamplingCoefficientsFiltered(uUpsamplingTable, uUpsamplingResolution, s.albedo)
+                           : upsamplingCoefficientsManual(uUpsamplingTable, uUpsamplingResolution, s.albedo),
+                       0.0);
+#endif
 }

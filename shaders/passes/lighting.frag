@@ -27,12 +27,14 @@ layout(binding = 2) uniform usampler2D gMaterialId;
 layout(binding = 3) uniform sampler2D gDepth;
 layout(binding = 4) uniform sampler2DArray uShadowMaps;
 layout(binding = 5) uniform sampler3D uUpsamplingTable;
+layout(binding = 6) uniform sampler2D gCoefficients;  // read when uGBufferCoefficients != 0
 
 uniform int uMode;
 uniform int uBatchCount;
 uniform int uLightCount;
 uniform int uShadowMapSize;
 uniform int uWater;
+uniform int uGBufferCoefficients;
 uniform float uWaterDepth;
 uniform float uWaterSurfaceY;
 uniform int uUpsamplingResolution;
@@ -55,6 +57,7 @@ float shadowDepthAt(int layer, int x, int y) {
   return texelFetch(uShadowMaps, ivec3(x, y, layer), 0).r;
 }
 vec3 upsamplingCoefficients(vec3 rgb) {
+  if (uGBufferCoefficients != 0) return texelFetch(gCoefficients, ivec2(gl_FragCoord.xy), 0).xyz;
   return uFilteredLookup != 0
              ? upsamplingCoefficientsFiltered(uUpsamplingTable, uUpsamplingResolution, rgb)
              : upsamplingCoefficientsManual(uUpsamplingTable, uUpsamplingResolution, rgb);
@@ -64,7 +67,7 @@ vec3 upsamplingCoefficients(vec3 rgb) {
 
 void main() {
   FrameConstants fc = FrameConstants(uMode, uBatchCount, uLightCount, uShadowMapSize, uWater,
-                                     uWaterDepth, uWaterSurfaceY);
+                                     uWaterDepth, uWaterSurfaceY, uGBufferCoefficients);
   ivec2 p = ivec2(gl_FragCoord.xy);
   uint id = texelFetch(gMaterialId, p, 0).r;
   if (id == 0u) {

@@ -53,6 +53,7 @@ struct FrameConstants {
   int water;          // 1: the camera is under water (underwater.glsl; waterSpectra below)
   float waterDepthM;  // the camera's depth below the water surface
   float waterSurfaceY;  // world height of the water surface (m)
+  int gbufferCoefficients;  // 1: the G-buffer holds Jakob–Hanika coefficients (upsamplingCoefficients reads them)
 };
 
 struct SurfaceSample {

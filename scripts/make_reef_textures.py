@@ -2,15 +2,10 @@
 """Writes the reef scene's textures: scenes/models/reef_sand.png (tileable rippled sand) and
 scenes/models/reef_coral.png (tileable polyp spots on coral tissue), 8-bit sRGB. Standard library
 only; run once, the output is committed. Usage: scripts/make_reef_textures.py [OUT_DIR]"""
-import math, os, struct, sys, zlib
+import math, os, sys
 
-def png(path, w, h, pixel):
-    rows = b"".join(b"\0" + bytes(c for x in range(w) for c in pixel(x, y)) for y in range(h))
-    def chunk(tag, data):
-        return struct.pack(">I", len(data)) + tag + data + struct.pack(">I", zlib.crc32(tag + data))
-    data = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
-    data += chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b"")
-    open(path, "wb").write(data)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from png8 import png  # noqa: E402
 
 N = 128
 

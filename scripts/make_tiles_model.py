@@ -3,15 +3,10 @@
 test model, a slab of coloured tiles with grooves, to exercise every texture path of the
 renderer (sRGB base colour, metallic-roughness, tangent-space normal map). Standard library
 only; run once, the output is committed. Usage: scripts/make_tiles_model.py [OUT_DIR]"""
-import base64, json, math, os, struct, sys, zlib
+import base64, json, math, os, struct, sys
 
-def png(path, w, h, pixel):
-    rows = b"".join(b"\0" + bytes(c for x in range(w) for c in pixel(x, y)) for y in range(h))
-    def chunk(tag, data):
-        return struct.pack(">I", len(data)) + tag + data + struct.pack(">I", zlib.crc32(tag + data))
-    data = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
-    data += chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b"")
-    open(path, "wb").write(data)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from png8 import png  # noqa: E402
 
 N, TILES, GROOVE = 256, 4, 0.08  # texture size, tiles per side, groove width (fraction of a tile)
 # sRGB-encoded tile colours (8-bit), saturated enough to show upsampling differences.

@@ -265,7 +265,7 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("reference " + scenes + "/missing.json -o x.exr", "missing.json");
   expectOneLineError("reference " + scene + " -o x.jpg", "x.jpg: the output must be a .png or an .exr");
   expectOneLineError("reference " + scene + " -o x.exr --variance v.png", "v.png: the variance image must be an .exr");
-  expectOneLineError("reference " + scene + " -o x.exr --spp 0", "--spp must be at least 1");
+  expectOneLineError("reference " + scene + " -o x.exr --spp 0", "--spp must be within 1–1048576");
   expectOneLineError("reference " + scene + " -o x.exr --transport photons", "unknown light transport \"photons\"");
   expectOneLineError("reference " + scene + " -o x.exr --filter gauss", "unknown pixel filter \"gauss\"");
   expectOneLineError("reference " + scene + " -o x.exr --camera cie1964", "not a camera");
@@ -283,6 +283,11 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("compare " + a + " " + (dir / "b.exr").string(), "reference 4 × 3, test 5 × 3");
   expectOneLineError("compare " + a + " " + (dir / "cam.exr").string(), "camera-rgb");
   expectOneLineError("compare " + a + " " + a + " --white -1", "--white");
+  prism::imaging::writeExr(dir / "w1.exr", small, {.colour = prism::imaging::ColourMeaning::Xyz, .displayWhite = 100.0});
+  prism::imaging::writeExr(dir / "w2.exr", small, {.colour = prism::imaging::ColourMeaning::Xyz, .displayWhite = 400.0});
+  expectOneLineError("compare " + (dir / "w1.exr").string() + " " + (dir / "w2.exr").string(),
+                     "different display whites (100 and 400 cd/m²)");
+  EXPECT_EQ(run("compare " + (dir / "w1.exr").string() + " " + (dir / "w2.exr").string() + " --white 100").exitCode, 0);
 }
 
 // The reference against the rasteriser through `compare`: the same scene and exposure, so the

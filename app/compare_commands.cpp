@@ -1,5 +1,8 @@
 #include "app/compare_commands.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -49,6 +52,19 @@ void runCompare(const CompareOptions& o) {
   if (!(o.scaleMax > 0.0)) throw Error("--scale-max: must be > 0");
   Loaded reference = load(o.reference, o.white);
   Loaded test = load(o.test, o.white);
+  // Both linear sides must be put into CIELAB against one white: the one they agree on, the one
+  // only one of them records, or --white.
+  if (reference.linear && test.linear && !o.white) {
+    std::optional<double>& a = reference.exr.displayWhite;
+    std::optional<double>& b = test.exr.displayWhite;
+    if (a && b && std::abs(*a - *b) > 1e-4 * std::max(*a, *b)) {
+      throw Error(fmt::format("{} and {} were exposed for different display whites ({:g} and {:g} cd/m²); "
+                              "give --white to compare them against one", o.reference.string(),
+                              o.test.string(), *a, *b));
+    }
+    if (!a) a = b;
+    if (!b) b = a;
+  }
   imaging::DifferenceOptions options;
   options.thresholdDeltaE = o.threshold;
   options.keepMap = !o.heatmap.empty() || !o.histogram.empty();

@@ -14,7 +14,9 @@ struct CompareOptions {
   std::filesystem::path test;
   std::filesystem::path heatmap;    // optional PNG
   std::filesystem::path histogram;  // optional PNG
-  std::optional<double> white;      // CIELAB white of linear images (default: the file's, else 1)
+  // CIELAB white of linear images (default: the files' display white, which must agree when both
+  // record one; the one that records it, else 1).
+  std::optional<double> white;
   double threshold = 1.0;           // ΔE00 above which a pixel counts as failing
   double scaleMax = 10.0;           // ΔE00 at the top of the heat map's and histogram's scale
   bool json = false;

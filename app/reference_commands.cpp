@@ -82,7 +82,8 @@ void runReference(const ReferenceOptions& o) {
     display.ev100 = ev100;
     displayImage(image.tristimulus, display, ev100).write(o.output);
   }
-  if (!o.variance.empty()) imaging::writeExr(o.variance, image.variance, exr);
+  // The variance is in squared units and no colour: not something compare should take for one.
+  if (!o.variance.empty()) imaging::writeExr(o.variance, image.variance, {.colour = imaging::ColourMeaning::OtherRgb});
   fmt::print("wrote {} ({}x{}, {} paths per pixel, {} lighting)\n", o.output.string(), settings.width,
              settings.height, settings.samplesPerPixel, o.transport);
 }

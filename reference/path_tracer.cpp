@@ -6,6 +6,7 @@
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -180,7 +181,8 @@ class PathTracer {
     // Sample s of N takes part s of every stratum: a pixel's N paths together are a stratified
     // estimate over 4·N strata of the spectrum.
     SampledWavelengths wavelengths =
-        mSampler.sample(random.seed(), static_cast<int>(sample % static_cast<std::uint32_t>(mSettings.samplesPerPixel)),
+        mSampler.sample(shared::pcgHash(random.seed() ^ 0x9E3779B9u),  // a stream of its own
+                        static_cast<int>(sample % static_cast<std::uint32_t>(mSettings.samplesPerPixel)),
                         mSettings.samplesPerPixel).front();
     vec4 lambdaNm;
     for (int j = 0; j < 4; ++j) lambdaNm[j] = static_cast<float>(wavelengths.lambdaNm[static_cast<std::size_t>(j)]);
@@ -477,8 +479,11 @@ void validate(const ReferenceSettings& s) {
   if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384) {
     throw Error(fmt::format("image size must be 1–16384 on each side, got {}x{}", s.width, s.height));
   }
-  if (s.samplesPerPixel < 1) throw Error(fmt::format("--spp must be at least 1, got {}", s.samplesPerPixel));
-  if (s.maxDepth < 1) throw Error(fmt::format("--max-depth must be at least 1, got {}", s.maxDepth));
+  if (s.samplesPerPixel < 1 || s.samplesPerPixel > (1 << 20)) {
+    throw Error(fmt::format("--spp must be within 1–1048576, got {}", s.samplesPerPixel));
+  }
+  if (s.maxDepth < 1 || s.maxDepth > 1024) throw Error(fmt::format("--max-depth must be within 1–1024, got {}", s.maxDepth));
+  if (s.threads > 1024) throw Error(fmt::format("--threads must be at most 1024 (0: all cores), got {}", s.threads));
   if (s.wavelengths.count != 4) {
     throw Error(fmt::format("the reference traces 4 hero wavelengths per path, got {}", s.wavelengths.count));
   }
@@ -527,7 +532,11 @@ ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& tab
       }
     };
     std::vector<std::thread> threads;
-    for (unsigned t = 1; t < threadCount; ++t) threads.emplace_back(work);
+    try {
+      for (unsigned t = 1; t < threadCount; ++t) threads.emplace_back(work);
+    } catch (const std::system_error&) {
+      // The system gave fewer threads than asked: the ones started and this one share the rows.
+    }
     work();
     for (std::thread& t : threads) t.join();
     if (failure) std::rethrow_exception(failure);

@@ -15,7 +15,8 @@
 // Light transport.
 // - Direct: what the rasteriser computes. At the first hit, every light (directional, point,
 //   spot: delta lights) by next-event estimation with an exact shadow ray for lights that cast
-//   shadows; a camera ray that escapes sees the background. The only noise is the wavelengths'
+//   shadows (point lights included, which the rasteriser cannot shadow yet: it has no cube
+//   maps); a camera ray that escapes sees the background. The only noise is the wavelengths'
 //   (and the pixel footprint's with the box filter).
 // - Global: paths continue by sampling the BRDF (cosine-weighted for the diffuse lobe, GGX
 //   normals for the specular one, combined by their one-sample mixture pdf), next-event
@@ -58,7 +59,7 @@ struct ReferenceSettings {
   int height = 360;
   int samplesPerPixel = 64;  // paths per pixel, 4 wavelengths each
   LightTransport transport = LightTransport::Direct;
-  int maxDepth = 16;         // global: surface interactions per path at most
+  int maxDepth = 16;         // global: interactions per path at most (surface hits and scattering events)
   PixelFilter filter = PixelFilter::Box;
   std::string observer = "cie1931";  // or a camera: raw camera RGB (on the luminance scale)
   // The hero wavelengths: count must be 4. Importance (the observer's response) by default.

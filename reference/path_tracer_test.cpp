@@ -301,6 +301,35 @@ TEST(PathTracer, SingleScatteringInAChromaticMediumMatchesNumericalIntegration) 
   }
 }
 
+// Jerlov 3C with the camera 1.5 m deep.
+Water coastalWater() {
+  Water water;
+  water.type.assign("3C");
+  water.depthM = 1.5f;
+  resolveWater(water);
+  return water;
+}
+
+// A scene's water is traced as the same medium below its surface, isotropic.
+TEST(PathTracer, WaterIsTheMediumBelowItsSurface) {
+  Scene wet = litPlane(0.5, 1000.0f);
+  wet.water = coastalWater();
+  const Water& water = *wet.water;
+  Scene explicitMedium = litPlane(0.5, 1000.0f);
+  HomogeneousMedium below;
+  below.sigmaA = water.sigmaA;
+  below.sigmaS = water.sigmaS;
+  below.region = Bounds{{-1e7f, -1e7f, -1e7f}, {1e7f, 4.5f, 1e7f}};
+  explicitMedium.medium = below;
+  ReferenceSettings settings = small(4);
+  ReferenceImage a = renderReference(wet, srgbTable(), settings);
+  ReferenceImage b = renderReference(explicitMedium, srgbTable(), settings);
+  EXPECT_EQ(a.tristimulus.pixels, b.tristimulus.pixels);
+  // And the water does something: coastal water over 3 m dims the plane.
+  ReferenceImage dry = renderReference(litPlane(0.5, 1000.0f), srgbTable(), settings);
+  EXPECT_LT(a.tristimulus.at(24, 16, 1), 0.5f * dry.tristimulus.at(24, 16, 1));
+}
+
 TEST(PathTracer, BadSettingsAreErrorsNamingThem) {
   Scene scene = litPlane(0.5, 1000.0f);
   ReferenceSettings settings = small(4);

@@ -28,8 +28,10 @@ glm::vec4 texel(const Image& image, int x, int y) {
 }  // namespace
 
 glm::vec4 sampleTexture(const Image& image, const glm::vec2& uv) {
-  float x = uv.x * static_cast<float>(image.width) - 0.5f;
-  float y = uv.y * static_cast<float>(image.height) - 0.5f;
+  // Wrapped to [0, 1) first (repeat), so that no coordinate is too large for an int.
+  auto wrap = [](float t) { return std::isfinite(t) ? t - std::floor(t) : 0.0f; };
+  float x = wrap(uv.x) * static_cast<float>(image.width) - 0.5f;
+  float y = wrap(uv.y) * static_cast<float>(image.height) - 0.5f;
   float x0 = std::floor(x), y0 = std::floor(y);
   float fx = x - x0, fy = y - y0;
   int ix = static_cast<int>(x0), iy = static_cast<int>(y0);

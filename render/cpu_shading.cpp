@@ -69,7 +69,7 @@ CpuShading::CpuShading(const FrameData& frame, const RgbToSpectrumTable& table,
 CpuShading::~CpuShading() = default;
 
 glm::vec3 CpuShading::shade(const GBufferTexel& texel, const glm::vec2& uv,
-                            const CameraTransform& camera) const {
+                            const CameraTransform& camera) {
   return mKernel->shade(texel, uv, camera);
 }
 

@@ -34,9 +34,9 @@ class CpuShading {
   CpuShading(const CpuShading&) = delete;
   CpuShading& operator=(const CpuShading&) = delete;
 
-  // Tristimulus of the pixel whose centre is at uv ∈ [0, 1]² (GL window convention).
-  glm::vec3 shade(const GBufferTexel& texel, const glm::vec2& uv,
-                  const CameraTransform& camera) const;
+  // Tristimulus of the pixel whose centre is at uv ∈ [0, 1]² (GL window convention). Not
+  // thread-safe: the kernel keeps the texel being shaded.
+  glm::vec3 shade(const GBufferTexel& texel, const glm::vec2& uv, const CameraTransform& camera);
 
  private:
   struct Kernel;

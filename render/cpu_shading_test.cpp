@@ -70,7 +70,7 @@ struct UpFacing {
 
 glm::vec3 shadeOnce(const Scene& scene, const FrameSettings& settings, const UpFacing& p,
                     const RgbToSpectrumTable& lut = table()) {
-  FrameData frame = buildFrameData(scene, settings, lut, {}, 0);
+  FrameData frame = buildFrameData(scene, settings, lut, {}, 0, scene.camera.position);
   CpuShading shading(frame, lut, {});
   return shading.shade(p.texel, glm::vec2(0.5f), p.camera);
 }

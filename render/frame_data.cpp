@@ -79,7 +79,7 @@ void addBatches(FrameData& frame, const FrameSettings& settings, const Scene& sc
 
 FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
                          const RgbToSpectrumTable& table, const std::vector<ShadowView>& shadows,
-                         std::uint32_t frameIndex) {
+                         std::uint32_t frameIndex, const glm::vec3& cameraPositionW) {
   if (scene.lights.size() > static_cast<std::size_t>(shared::kMaxLights)) {
     throw Error(fmt::format("{}: {} lights; the renderer handles at most {}",
                             scene.file.string(), scene.lights.size(), shared::kMaxLights));
@@ -174,8 +174,8 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
   if (scene.water) {
     const Water& w = *scene.water;
     frame.constants.water = 1;
-    frame.constants.waterDepthM = w.depthM;
     frame.constants.waterSurfaceY = w.surfaceY(scene.camera);
+    frame.constants.waterDepthM = std::max(frame.constants.waterSurfaceY - cameraPositionW.y, 0.0f);
     for (const shared::GpuBatch& batch : frame.batches) {
       glm::vec4 lambdaNm = rgbMode ? glm::vec4(680.0f, 550.0f, 440.0f, 550.0f) : batch.lambdaNm;
       glm::vec4 sigmaS = at4(w.sigmaS, lambdaNm), sigmaA = at4(w.sigmaA, lambdaNm);

@@ -44,9 +44,10 @@ struct FrameData {
   std::vector<glm::vec4> waterSpectra;         // batchCount × 3 under water, else one zero entry
 };
 
-// frameIndex seeds stochastic wavelength strategies (a new set every frame).
+// frameIndex seeds stochastic wavelength strategies (a new set every frame). cameraPositionW is
+// where the frame is seen from (the water's depth there; the surface stays where the scene put it).
 FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
                          const RgbToSpectrumTable& table, const std::vector<ShadowView>& shadows,
-                         std::uint32_t frameIndex);
+                         std::uint32_t frameIndex, const glm::vec3& cameraPositionW);
 
 }  // namespace prism::render

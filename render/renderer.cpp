@@ -122,6 +122,29 @@ void Renderer::setSettings(const FrameSettings& settings) {
   if (lightingChanged) mAccumulated = 0;
 }
 
+void Renderer::sceneChanged() {
+  mShadows = makeShadows(mScene, mSettings.shadowMapSize);
+  mAccumulated = 0;
+}
+
+void Renderer::reloadShaders() {
+  // Built whole before any is replaced: a failure leaves the renderer as it was.
+  gpu::Program shadow = passProgram("shadow.vert", "shadow.frag", "shadow pass");
+  gpu::Program gbuffer = passProgram("gbuffer.vert", "gbuffer.frag", "g-buffer pass");
+  gpu::Program gbufferCoefficients = passProgram("gbuffer.vert", "gbuffer.frag", "g-buffer pass (coefficients)",
+                                                 {{"PRISM_GBUFFER_COEFFICIENTS", "1"}});
+  gpu::Program lighting = passProgram("fullscreen.vert", "lighting.frag", "lighting pass");
+  gpu::Program forward = passProgram("forward.vert", "forward.frag", "forward pass");
+  gpu::Program post = passProgram("fullscreen.vert", "post.frag", "post pass");
+  mShadowProgram = std::move(shadow);
+  mGBufferProgram = std::move(gbuffer);
+  mGBufferCoefficientsProgram = std::move(gbufferCoefficients);
+  mLightingProgram = std::move(lighting);
+  mForwardProgram = std::move(forward);
+  mPostProgram = std::move(post);
+  mAccumulated = 0;
+}
+
 void Renderer::setCamera(const Camera& camera) {
   mDisplayTransform = displayTransform(mSettings, camera.ev100);
   mCamera = camera;
@@ -190,7 +213,7 @@ void Renderer::hook(std::string_view pass) const {
 void Renderer::renderFrame() {
   mCameraTransform = prism::cameraTransform(mCamera, mSettings.width, mSettings.height);
   // A new set of wavelengths every frame (only stochastic strategies differ between frames).
-  mFrame = buildFrameData(mScene, mSettings, mTable, mShadows.views, mFrameIndex++);
+  mFrame = buildFrameData(mScene, mSettings, mTable, mShadows.views, mFrameIndex++, mCamera.position);
   uploadFrameData();
   hook("shadow");
   shadowPass();

@@ -42,6 +42,12 @@ class Renderer {
   // unless only the display transform changed (exposure, tone map, white balance, display).
   void setSettings(const FrameSettings& settings);
   void setCamera(const Camera& camera);  // restarts accumulation
+  // The scene held by reference was edited (lights, materials, water: not its meshes or
+  // textures): shadow views are planned again and accumulation restarts.
+  void sceneChanged();
+  // Compiles every pass's shaders again from their files (shaderDirectory()); on failure throws
+  // gpu::GpuError with the first error as FILE:LINE and keeps the programs it had.
+  void reloadShaders();
   const Camera& camera() const { return mCamera; }
   void resetAccumulation() { mAccumulated = 0; }
 
@@ -69,6 +75,7 @@ class Renderer {
   const gpu::Texture2D& coefficients() const { return mTargets.coefficients; }  // when the G-buffer has them
   const gpu::Texture2DArray& shadowMaps() const { return mShadows.maps; }
   const gpu::Texture2D& accumulation() const { return mTargets.accumulation; }
+  const gpu::Framebuffer& displayFramebuffer() const { return mTargets.displayTarget; }
 
  private:
   // Everything sized by the image: built whole, then swapped in.

@@ -98,26 +98,21 @@ class SceneParser {
     n.expectObject({"type", "dataset", "depth", "scattering_scale", "absorption_scale", "kd_scale"});
     Water w;
     if (auto d = n.optionalChild("dataset")) w.dataset = d->string();
-    underwater::JerlovDataset dataset;
-    try {
-      dataset = underwater::jerlovDatasetFromName(w.dataset);
-    } catch (const Error& e) {
-      n.child("dataset").fail(e.what());
-    }
     if (auto t = n.optionalChild("type")) w.type = t->string();
-    underwater::WaterProperties properties;
-    try {
-      properties = underwater::jerlovWater(w.type, dataset);
-    } catch (const Error& e) {
-      (n.has("type") ? n.child("type") : n).fail(e.what());
-    }
     w.depthM = n.numberF("depth", w.depthM, Range::atLeast(0.0));
     w.scatteringScale = n.numberF("scattering_scale", 1.0f, Range::atLeast(0.0));
     w.absorptionScale = n.numberF("absorption_scale", 1.0f, Range::atLeast(0.0));
     w.kdScale = n.numberF("kd_scale", 1.0f, Range::atLeast(0.0));
-    w.sigmaA = properties.sigmaA * w.absorptionScale;
-    w.sigmaS = properties.sigmaS * w.scatteringScale;
-    w.kd = properties.kd * w.kdScale;
+    try {
+      underwater::jerlovDatasetFromName(w.dataset);
+    } catch (const Error& e) {
+      n.child("dataset").fail(e.what());
+    }
+    try {
+      resolveWater(w);
+    } catch (const Error& e) {
+      (n.has("type") ? n.child("type") : n).fail(e.what());
+    }
     return w;
   }
 
@@ -359,9 +354,9 @@ class SceneParser {
       mesh = makeHeightField(shape.child("centre").vec3(), shape.child("size").vec2(Range::above(0.0)),
                              shape.has("resolution") ? shape.child("resolution").integer(Range::closed(1, 2048)) : 128,
                              shape.numberF("amplitude", 0.5f, Range::atLeast(0.0)),
-                             shape.numberF("feature_size", 4.0f, Range::above(0.0)),
+                             shape.numberF("feature_size", 4.0f, Range::atLeast(1e-3)),
                              static_cast<std::uint32_t>(shape.has("seed") ? shape.child("seed").integer(Range::closed(0, 1e9)) : 1),
-                             shape.numberF("texture_tile", 1.0f, Range::above(0.0)));
+                             shape.numberF("texture_tile", 1.0f, Range::atLeast(1e-3)));
     } else {
       shape.expectObject({"centre", "size", "rotation_deg"});
       mesh = makeBox(shape.child("centre").vec3(), shape.child("size").vec3(Range::above(0.0)),
@@ -432,6 +427,14 @@ void applyOverride(json& root, const std::string& set, schema::Document& documen
 }
 
 }  // namespace
+
+void resolveWater(Water& water) {
+  underwater::WaterProperties properties =
+      underwater::jerlovWater(water.type, underwater::jerlovDatasetFromName(water.dataset));
+  water.sigmaA = properties.sigmaA * water.absorptionScale;
+  water.sigmaS = properties.sigmaS * water.scatteringScale;
+  water.kd = properties.kd * water.kdScale;
+}
 
 double luminousIntegral(const Spectrum& spd) {
   return kKm * observer("cie1931").integrate(spd)[1];

@@ -32,4 +32,8 @@ Scene loadScene(const std::filesystem::path& file, const std::vector<std::string
 // quantity of one unit of S. Every light's SPD is divided by it on load, so that it is 1.
 double luminousIntegral(const Spectrum& spd);
 
+// Fills water.sigmaA, sigmaS and kd from its type, data set and multipliers (the scene file's
+// "water", or an editor's changes to it). Error naming the type or data set when unknown.
+void resolveWater(Water& water);
+
 }  // namespace prism

@@ -68,7 +68,7 @@ PRISM_INLINE vec4 sunIrradianceAtSurface(IN(FrameConstants) fc, int b) {
   vec4 e = vec4(0.0f);
   for (int l = 0; l < fc.lightCount; ++l) {
     GpuLight light = frameLight(l);
-    if (int(light.positionType.w + 0.5f) == kLightDirectional) {
+    if (int(light.positionType.w + 0.5f) == kLightDirectional && light.directionIntensity.y < 0.0f) {
       e += frameLightSpectrum(l, b) * light.directionIntensity.w;
     }
   }
@@ -76,14 +76,16 @@ PRISM_INLINE vec4 sunIrradianceAtSurface(IN(FrameConstants) fc, int b) {
 }
 
 // What the water does to radiance leaving a point `distanceM` along the unit view direction
-// `viewDir` from the camera: transmittance, then the sun's in-scattering over that distance.
+// `viewDir` from the camera: transmittance, then the sun's in-scattering, over the part of that
+// distance below the surface (a ray that looks up leaves the water after depth / viewDir.y).
 PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, IN(vec3) viewDir,
                                float distanceM) {
   vec4 sigmaS = frameWaterSpectrum(b, 0);
   vec4 sigmaT = frameWaterSpectrum(b, 1);
   vec4 kd = frameWaterSpectrum(b, 2);
-  return radiance * waterTransmittance(sigmaT, distanceM) +
-         waterInScattering(sigmaS, sigmaT, kd, fc.waterDepthM, -viewDir.y, distanceM) *
+  float inWaterM = viewDir.y > 0.0f ? min(distanceM, fc.waterDepthM / viewDir.y) : distanceM;
+  return radiance * waterTransmittance(sigmaT, inWaterM) +
+         waterInScattering(sigmaS, sigmaT, kd, fc.waterDepthM, -viewDir.y, inWaterM) *
              sunIrradianceAtSurface(fc, b);
 }
 
@@ -96,8 +98,7 @@ PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, 
 PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(vec3) cameraPosition) {
   PRISM_PRECISE vec3 toFar = farPoint - cameraPosition;
   vec3 viewDir = normalize(toFar);
-  float distanceM = 0.0f;
-  if (fc.water != 0) distanceM = viewDir.y > 0.0f ? fc.waterDepthM / viewDir.y : 1e30f;
+  float distanceM = 1e30f;  // throughWater stops it at the surface when it looks up
   vec3 tristimulus = vec3(0.0f);
   for (int b = 0; b < fc.batchCount; ++b) {
     vec4 radiance = frameLightSpectrum(fc.lightCount, b);

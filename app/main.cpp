@@ -16,6 +16,7 @@
 #include "app/scene_bench.h"
 #include "app/upsampling_commands.h"
 #include "app/validate.h"
+#include "app/view_command.h"
 #include "gpu/error.h"
 #include "spectral/error.h"
 
@@ -241,6 +242,14 @@ int main(int argc, char** argv) {
   validateCmd->add_flag("--quick", val.quick, "240x135 and 64 paths per pixel (minutes on 2 cores), for CI");
   validateCmd->add_flag("--json", val.json, "JSON output");
 
+  ViewOptions view;
+  std::string viewRange, viewEv;
+  auto* viewCmd = app.add_subcommand("view", "the interactive viewer: a window with every spectral setting live");
+  viewCmd->add_option("scene", view.scene, "scene file (JSON, see docs/scene-format.md)")->required();
+  viewCmd->add_option("--script", view.script, "run these viewer commands (README), then close");
+  viewCmd->add_option("--set", view.sets, "override a scene value: json.path=value (repeatable)");
+  addRenderSettings(viewCmd, view.settings, viewRange, viewEv, nullptr);
+
   SceneBenchOptions sceneBench;
   std::string benchWavelengths, benchRange, benchEv;
   auto* bench = app.add_subcommand(
@@ -300,6 +309,11 @@ int main(int argc, char** argv) {
       runCompare(cmp);
     }
     if (*validateCmd) return runValidate(val);
+    if (*viewCmd) {
+      if (!viewRange.empty()) view.settings.range = parseNumbers(viewRange, "--range");
+      view.settings.ev100 = parseEv(viewEv);
+      return runView(view);
+    }
     if (*bench && !sceneBench.scene.empty()) {
       if (!bench->remaining().empty()) throw prism::Error("bench: unexpected '" + bench->remaining().front() + "'");
       if (!benchRange.empty()) sceneBench.settings.range = parseNumbers(benchRange, "--range");

@@ -20,6 +20,8 @@ find_package(embree 3 REQUIRED CONFIG)
 find_package(Threads REQUIRED)
 # GLFW opens the viewer's window and its GL context (prism_gpu_window only): target glfw.
 find_package(glfw3 3.3 REQUIRED)
+# Dear ImGui draws the viewer's interface (Debian: libimgui-dev; no CMake package, pkg-config).
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 
 # libcsv (RFC 4180 tokenizer) ships neither a CMake config nor a pkg-config file.
 find_path(CSV_INCLUDE_DIR csv.h REQUIRED)

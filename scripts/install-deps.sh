@@ -9,6 +9,7 @@ packages=(
   libopenexr-dev libtinygltf-dev libembree-dev
   libgtest-dev libbenchmark-dev glslang-tools
   libepoxy-dev libegl-dev libgl-dev libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri libglfw3-dev
+  libimgui-dev xvfb xauth
 )
 
 missing=()

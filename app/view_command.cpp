@@ -1,0 +1,20 @@
+#include "app/view_command.h"
+
+#include "app/upsampling_table.h"
+#include "scene/scene_loader.h"
+#include "viewer/viewer.h"
+
+namespace prism::app {
+
+int runView(const ViewOptions& options) {
+  Scene scene = loadScene(options.scene, options.sets);
+  render::FrameSettings settings = frameSettings(options.settings);
+  RgbToSpectrumTable table = upsamplingTable(scene.colourSpace);
+  viewer::ViewerOptions v;
+  v.width = settings.width;
+  v.height = settings.height;
+  v.script = options.script;
+  return viewer::runViewer(scene, table, settings, v);
+}
+
+}  // namespace prism::app

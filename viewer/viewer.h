@@ -1,0 +1,42 @@
+// `prism view`: the interactive viewer. A GLFW window (GL 4.5 core) with a Dear ImGui interface
+// (Debian's libimgui-dev) over the renderer: camera controls, every spectral setting live, the
+// observer's curves and the lights' SPDs with the frame's wavelengths marked, lights, materials
+// and water edited in place, an A/B split of two modes with a CIEDE2000 heat map, screenshots,
+// settings files, and hot reload of the shaders (errors shown, never a crash).
+//
+// A script (`--script FILE`) drives the same viewer without a person, one command a line:
+//   set KEY VALUE        a frame key of viewer_settings.h for the left (or only) view,
+//                        right.KEY for the right one, or: split on|off, heat-map on|off, fov DEG,
+//                        light.N.spd NAME, light.N.intensity X, light.N.direction X,Y,Z,
+//                        material.NAME.base-colour R,G,B, material.NAME.roughness X,
+//                        material.NAME.metallic X, water.type T, water.depth M
+//   frames N             render N frames (the window shows them)
+//   resize W H           resize the window
+//   orbit YAW PITCH      degrees
+//   screenshot FILE      .png: the window as shown (UI included); .exr: the left view's tristimulus
+//   save-settings FILE / load-settings FILE
+//   reload-shaders
+//   soak N               N frames that change settings every 10 frames and resize every 100,
+//                        then print the live GL objects and resident memory before and after
+// `#` starts a comment. A bad command is one line "FILE:LINE: what" and exit 1.
+#pragma once
+
+#include <filesystem>
+
+#include "render/frame_settings.h"
+#include "scene/scene.h"
+#include "spectral/rgb_to_spectrum_table.h"
+
+namespace prism::viewer {
+
+struct ViewerOptions {
+  int width = 1280;
+  int height = 720;
+  std::filesystem::path script;  // run it, then close
+};
+
+// The scene is edited in place; the table is the scene colour space's. Returns the exit code.
+int runViewer(Scene& scene, const RgbToSpectrumTable& table, const render::FrameSettings& initial,
+              const ViewerOptions& options);
+
+}  // namespace prism::viewer

@@ -459,7 +459,7 @@ class Viewer {
 
   void interface() {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(430, 640), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(430, std::max(200.0f, ImGui::GetIO().DisplaySize.y - 20.0f)), ImGuiCond_FirstUseEver);
     ImGui::Begin("Prism");
     float mean = 0.0f;
     for (float ms : mFrameMs) mean += ms;
@@ -487,7 +487,7 @@ class Viewer {
       mSettingsChanged |= frameSettingsControls(mView.left, "left");
       spectrumPlot();
     }
-    if (ImGui::CollapsingHeader("A/B split")) {
+    if (ImGui::CollapsingHeader("A/B split", ImGuiTreeNodeFlags_DefaultOpen)) {
       mSettingsChanged |= ImGui::Checkbox("split: left | right", &mView.split);
       if (mView.split) {
         mSettingsChanged |= frameSettingsControls(mView.right, "right");

@@ -123,7 +123,13 @@ void Renderer::setSettings(const FrameSettings& settings) {
 }
 
 void Renderer::sceneChanged() {
-  mShadows = makeShadows(mScene, mSettings.shadowMapSize);
+  // The views follow the lights; the maps are made again only when their number changes.
+  std::vector<ShadowView> views = planShadowViews(mScene, mSettings.shadowMapSize);
+  if (views.size() == mShadows.views.size()) {
+    mShadows.views = std::move(views);
+  } else {
+    mShadows = makeShadows(mScene, mSettings.shadowMapSize);
+  }
   mAccumulated = 0;
 }
 

@@ -22,6 +22,14 @@ glm::vec3 turned(const glm::vec3& v, float yaw, float pitch) {
 
 glm::vec3 CameraController::forward() const { return glm::normalize(mCamera.target - mCamera.position); }
 
+glm::vec3 CameraController::right() const {
+  glm::vec3 r = glm::cross(forward(), glm::vec3(0.0f, 1.0f, 0.0f));
+  // Looking straight up or down: the camera's own up vector decides what is right.
+  if (glm::dot(r, r) < 1e-10f) r = glm::cross(forward(), mCamera.up);
+  if (glm::dot(r, r) < 1e-10f) r = glm::vec3(1.0f, 0.0f, 0.0f);
+  return glm::normalize(r);
+}
+
 void CameraController::setFieldOfView(float verticalDeg) {
   mCamera.verticalFovDeg = std::clamp(verticalDeg, 5.0f, 150.0f);
 }
@@ -41,8 +49,7 @@ void CameraController::dolly(float fraction) {
 
 void CameraController::pan(float right, float up) {
   float distance = glm::length(mCamera.target - mCamera.position);
-  glm::vec3 f = forward();
-  glm::vec3 r = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
+  glm::vec3 f = forward(), r = this->right();
   glm::vec3 u = glm::cross(r, f);
   glm::vec3 move = (r * right + u * up) * distance;
   mCamera.position += move;
@@ -50,8 +57,7 @@ void CameraController::pan(float right, float up) {
 }
 
 void CameraController::fly(const glm::vec3& rightUpForwardM) {
-  glm::vec3 f = forward();
-  glm::vec3 r = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
+  glm::vec3 f = forward(), r = right();
   glm::vec3 u = glm::cross(r, f);
   glm::vec3 move = r * rightUpForwardM.x + u * rightUpForwardM.y + f * rightUpForwardM.z;
   mCamera.position += move;

@@ -32,6 +32,7 @@ class CameraController {
 
  private:
   glm::vec3 forward() const;
+  glm::vec3 right() const;  // unit, horizontal where it can be
   Camera mInitial;
   Camera mCamera;
 };

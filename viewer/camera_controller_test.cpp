@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace prism::viewer {
 namespace {
 
@@ -40,6 +42,19 @@ TEST(CameraController, DollyPanFlyAndLookMoveAsNamedAndResetRestores) {
   c.reset();
   EXPECT_EQ(c.camera().position, start().position);
   EXPECT_FLOAT_EQ(c.camera().verticalFovDeg, start().verticalFovDeg);
+}
+
+TEST(CameraController, LookingStraightDownStillPansAndFlies) {
+  Camera down;
+  down.position = {0.0f, 5.0f, 0.0f};
+  down.target = {0.0f, 0.0f, 0.0f};
+  down.up = {0.0f, 0.0f, -1.0f};
+  CameraController c(down);
+  c.pan(0.1f, 0.0f);
+  c.fly({1.0f, 0.0f, 0.0f});
+  EXPECT_TRUE(std::isfinite(c.camera().position.x) && std::isfinite(c.camera().target.z));
+  EXPECT_NEAR(c.camera().position.y, 5.0f, 1e-5f);
+  EXPECT_GT(std::abs(c.camera().position.x) + std::abs(c.camera().position.z), 1.0f);
 }
 
 }  // namespace

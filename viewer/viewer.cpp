@@ -10,12 +10,14 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -73,6 +75,16 @@ double residentMegabytes() {
   return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
 }
 
+// A whole number within [min, max]; Error naming `what` otherwise.
+long parseInteger(const std::string& text, const std::string& what, long min, long max) {
+  long v = 0;
+  auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || v < min || v > max) {
+    throw Error(fmt::format("{}: expected a whole number within {}–{}, got \"{}\"", what, min, max, text));
+  }
+  return v;
+}
+
 float parseFloat(const std::string& text, const std::string& what) {
   try {
     std::size_t used = 0;
@@ -94,13 +106,19 @@ glm::vec3 parseVec3(const std::string& text, const std::string& what) {
   return v;
 }
 
-// A light's SPD by name, normalised as the scene loader normalises it (scene/scene.h).
-void setLightSpd(Light& light, const std::string& label) {
-  Spectrum s = illuminant(label);
-  s *= 1.0 / luminousIntegral(s);
-  light.spd = s;
+// A light's SPD, normalised as the scene loader normalises it (scene/scene.h); Error when it
+// has no luminous power to normalise.
+void setLightSpectrum(Light& light, Spectrum spd, const std::string& label) {
+  double luminous = luminousIntegral(spd);
+  if (!(luminous > 0.0) || !std::isfinite(luminous)) {
+    throw Error(fmt::format("{}: no visible power between 360 and 830 nm", label));
+  }
+  spd *= 1.0 / luminous;
+  light.spd = spd;
   light.spdLabel = label;
 }
+
+void setLightSpd(Light& light, const std::string& label) { setLightSpectrum(light, illuminant(label), label); }
 
 class Viewer {
  public:
@@ -110,7 +128,10 @@ class Viewer {
     mView.left = initial;
     mView.right = initial;
     mView.right.mode = render::RenderMode::Rgb;
-    for (const IlluminantInfo& info : listIlluminants()) mIlluminants.push_back(info.name);
+    for (const IlluminantInfo& info : listIlluminants()) {
+      // Parametric families ("blackbody:<K>") have their own controls.
+      if (info.name.find('<') == std::string::npos) mIlluminants.push_back(info.name);
+    }
     mObservers = {"cie1931", "cie1964"};
     for (const std::string& c : listCameras()) mObservers.push_back(c);
     Bounds b = sceneBounds(scene);
@@ -141,7 +162,7 @@ class Viewer {
   Viewer& operator=(const Viewer&) = delete;
 
   int interactive() {
-    while (!mWindow.shouldClose()) frame();
+    while (!mWindow.shouldClose()) frame();  // errors are shown in the window, not thrown
     return 0;
   }
 
@@ -232,35 +253,59 @@ class Viewer {
     }
   }
 
+  // Changes a view's renderer has yet to take: each view keeps its own, so that one hidden or
+  // made later misses nothing.
+  struct Pending {
+    bool settings = true, camera = true, scene = true;
+  };
+
   // Brings a renderer to the settings and window size (made on first use), and renders a frame.
-  void renderView(std::unique_ptr<render::Renderer>& renderer, render::FrameSettings settings, int w, int h) {
+  void renderView(std::unique_ptr<render::Renderer>& renderer, Pending& pending, render::FrameSettings settings,
+                  int w, int h) {
     settings.width = w;
     settings.height = h;
     if (!renderer) {
       renderer = std::make_unique<render::Renderer>(mScene, mTable, settings);
-      renderer->setCamera(mCamera.camera());
-    } else if (mSettingsChanged || renderer->settings().width != w || renderer->settings().height != h) {
+      pending = {false, true, false};
+    } else if (pending.settings || renderer->settings().width != w || renderer->settings().height != h) {
       renderer->setSettings(settings);
     }
-    if (mCameraChanged) renderer->setCamera(mCamera.camera());
-    if (mSceneChanged) renderer->sceneChanged();
+    pending.settings = false;
+    if (pending.camera) renderer->setCamera(mCamera.camera());
+    if (pending.scene) renderer->sceneChanged();
+    pending.camera = pending.scene = false;
     renderer->renderFrame();
   }
 
   void renderViews(int w, int h) {
-    try {
-      renderView(mLeft, mView.left, w, h);
-      // The right view's renderer stays once made (hidden when the split is off): making one
-      // compiles every pass again, which the driver does not give back to the system at once.
-      if (mView.split) renderView(mRight, mView.right, w, h);
-      mStatus.clear();
-    } catch (const Error& e) {
-      mStatus = e.what();  // a bad setting: keep the last good one
-      mView.left = mLeft ? mLeft->settings() : mView.left;
-      if (mRight) mView.right = mRight->settings();
-    }
+    if (mSettingsChanged) mLeftPending.settings = mRightPending.settings = true;
+    if (mCameraChanged) mLeftPending.camera = mRightPending.camera = true;
+    if (mSceneChanged) mLeftPending.scene = mRightPending.scene = true;
     mSettingsChanged = mCameraChanged = mSceneChanged = false;
-    if (mView.split && mView.heatMap && mLeft && mRight && ++mFramesSinceHeatMap >= 15) updateHeatMap();
+    try {
+      renderView(mLeft, mLeftPending, mView.left, w, h);
+      mRenderError.clear();
+    } catch (const std::exception& e) {
+      mRenderError = e.what();  // a bad setting or shader: keep the last good settings
+      if (mLeft) mView.left = mLeft->settings();
+    }
+    // The right view's renderer stays once made (hidden when the split is off): making one
+    // compiles every pass again, which the driver does not give back to the system at once.
+    if (mView.split) {
+      try {
+        renderView(mRight, mRightPending, mView.right, w, h);
+      } catch (const std::exception& e) {
+        mRenderError = e.what();
+        if (mRight) mView.right = mRight->settings();
+        else mView.split = false;  // it cannot be made: no split rather than a retry every frame
+      }
+    }
+    try {
+      if (mView.split && mView.heatMap && mLeft && mRight && ++mFramesSinceHeatMap >= 15) updateHeatMap();
+    } catch (const std::exception& e) {
+      mRenderError = e.what();
+      mView.heatMap = false;
+    }
     if (!(mView.split && mView.heatMap)) mHeatTexture = gpu::Texture2D();  // its GL object goes with it
   }
 
@@ -284,15 +329,21 @@ class Viewer {
   void updateHeatMap() {
     mFramesSinceHeatMap = 0;
     const render::FrameSettings& s = mLeft->settings();
-    imaging::FloatImage a(s.width, s.height, 3), b(s.width, s.height, 3);
+    const render::FrameSettings& t = mRight->settings();
+    auto isCamera = [](const render::FrameSettings& f) {
+      return f.mode != render::RenderMode::Rgb && observer(f.observer).isCamera;
+    };
+    if (isCamera(s) || isCamera(t)) throw Error("the heat map compares XYZ: choose a CIE observer on both sides");
+    imaging::FloatImage a(s.width, s.height, 3), b(t.width, t.height, 3);
     a.pixels = mLeft->readMeanTristimulus();
     b.pixels = mRight->readMeanTristimulus();
-    double white = render::displayWhiteLuminance(s.ev100.value_or(mCamera.camera().ev100));
+    auto white = [&](const render::FrameSettings& f) {
+      return render::displayWhiteLuminance(f.ev100.value_or(mCamera.camera().ev100));
+    };
     imaging::DifferenceOptions options;
     options.keepMap = true;
-    // In XYZ: both views use CIE observers here (camera RGB would need its matrix first).
-    imaging::ImageDifference d = imaging::compareImages(imaging::linearInput(a, imaging::ColourMeaning::Xyz, white),
-                                                        imaging::linearInput(b, imaging::ColourMeaning::Xyz, white),
+    imaging::ImageDifference d = imaging::compareImages(imaging::linearInput(a, imaging::ColourMeaning::Xyz, white(s)),
+                                                        imaging::linearInput(b, imaging::ColourMeaning::Xyz, white(t)),
                                                         options);
     mHeatStats = d.stats;
     imaging::PngImage heat = imaging::heatMap(d.deltaEMap, {.maxDeltaE = 5.0, .legend = true});
@@ -322,7 +373,8 @@ class Viewer {
     image.write(path);
   }
 
-  void screenshot(const std::filesystem::path& path) {
+  // renderNow: take it in a frame of its own (the script); from the interface, in this frame.
+  void screenshot(const std::filesystem::path& path, bool renderNow) {
     if (path.extension() == ".exr") {
       if (!mLeft) throw Error("nothing rendered yet");
       const render::FrameSettings& s = mLeft->settings();
@@ -336,8 +388,11 @@ class Viewer {
       return;
     }
     if (path.extension() != ".png") throw Error(fmt::format("{}: a screenshot is a .png or an .exr", path.string()));
-    mPendingScreenshot = path;
-    frame();  // written after the interface is drawn, before the swap
+    mPendingScreenshot = path;  // written after the interface is drawn, before the swap
+    if (renderNow) {
+      frame();
+      if (!mPendingScreenshot.empty()) throw Error("the window is minimised: nothing to take");
+    }
   }
 
   // ---- the interface -------------------------------------------------------------------------
@@ -468,7 +523,10 @@ class Viewer {
     ImGui::PlotLines("##frame", mFrameMs.data(), static_cast<int>(mFrameMs.size()),
                      static_cast<int>(mFrameCursor % mFrameMs.size()), "frame ms", 0.0f, 2.0f * mean + 1.0f,
                      ImVec2(0, 40));
-    if (!mStatus.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", mStatus.c_str());
+    for (const std::string* error : {&mRenderError, &mActionError}) {
+      if (!error->empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error->c_str());
+    }
+    if (!mActionError.empty() && ImGui::SmallButton("dismiss")) mActionError.clear();
 
     if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
       float fov = mCamera.camera().verticalFovDeg;
@@ -518,32 +576,34 @@ class Viewer {
                   light.spdLabel.c_str());
       std::string choice = light.spdLabel;
       if (stringCombo("SPD", choice, mIlluminants)) {
-        setLightSpd(light, choice);
-        mSceneChanged = true;
+        runAction([&] {
+          setLightSpd(light, choice);
+          mSceneChanged = true;
+        });
       }
       if (ImGui::SliderFloat("blackbody K", &mBlackbodyK, 1000.0f, 12000.0f, "%.0f K")) {
-        setLightSpd(light, fmt::format("blackbody:{:.0f}", mBlackbodyK));
-        mSceneChanged = true;
+        runAction([&] {
+          setLightSpd(light, fmt::format("blackbody:{:.0f}", mBlackbodyK));
+          mSceneChanged = true;
+        });
       }
       float led[2] = {mLedPeakNm, mLedWidthNm};
       if (ImGui::SliderFloat2("LED peak, width nm", led, 380.0f, 700.0f, "%.0f")) {
         mLedPeakNm = led[0];
         mLedWidthNm = std::clamp(led[1], 5.0f, 100.0f);
-        setLightSpd(light, fmt::format("led:{:.0f}:{:.0f}", mLedPeakNm, mLedWidthNm));
-        mSceneChanged = true;
+        runAction([&] {
+          setLightSpd(light, fmt::format("led:{:.0f}:{:.0f}", mLedPeakNm, mLedWidthNm));
+          mSceneChanged = true;
+        });
       }
       ImGui::InputText("CSV file", mCsvPath.data(), mCsvPath.size());
       ImGui::SameLine();
       if (ImGui::Button("load")) {
-        try {
-          Spectrum s = readSpectrumCsv(mCsvPath.data(), Extrapolation::Zero).toDense();
-          s *= 1.0 / luminousIntegral(s);
-          light.spd = s;
-          light.spdLabel = std::string("csv:") + mCsvPath.data();
+        runAction([&] {
+          std::string path = mCsvPath.data();
+          setLightSpectrum(light, readSpectrumCsv(path, Extrapolation::Zero, 0.0).toDense(), "csv:" + path);
           mSceneChanged = true;
-        } catch (const Error& e) {
-          mStatus = e.what();
-        }
+        });
       }
       if (ImGui::SliderFloat("intensity", &light.intensity, 1.0f, 200000.0f, "%.0f", ImGuiSliderFlags_Logarithmic)) {
         mSceneChanged = true;
@@ -569,7 +629,9 @@ class Viewer {
     mMaterial = std::min(mMaterial, mScene.materials.size() - 1);
     if (ImGui::BeginCombo("material", mScene.materials[mMaterial].name.c_str())) {
       for (std::size_t i = 0; i < mScene.materials.size(); ++i) {
+        ImGui::PushID(static_cast<int>(i));  // glTF material names may repeat or be empty
         if (ImGui::Selectable(mScene.materials[i].name.c_str(), i == mMaterial)) mMaterial = i;
+        ImGui::PopID();
       }
       ImGui::EndCombo();
     }
@@ -611,7 +673,7 @@ class Viewer {
     } catch (const Error& e) {  // a type the other data set lacks: back to its first
       w.type = underwater::listJerlovTypes(underwater::jerlovDatasetFromName(w.dataset)).front();
       resolveWater(w);
-      mStatus = e.what();
+      mActionError = e.what();
     }
     mSceneChanged = true;
   }
@@ -631,16 +693,18 @@ class Viewer {
     balances.insert(balances.end(), mIlluminants.begin(), mIlluminants.end());
     mSettingsChanged |= stringCombo("white balance", s.whiteBalance, balances);
     mSettingsChanged |= stringCombo("display", s.display, {"srgb", "display-p3", "rec2020"});
-    mView.right.toneMap = s.toneMap;
-    mView.right.ev100 = s.ev100;
-    mView.right.whiteBalance = s.whiteBalance;
-    mView.right.display = s.display;
+    if (mSettingsChanged) {  // one display for both halves of the split
+      mView.right.toneMap = s.toneMap;
+      mView.right.ev100 = s.ev100;
+      mView.right.whiteBalance = s.whiteBalance;
+      mView.right.display = s.display;
+    }
   }
 
   void filesPanel() {
     ImGui::InputText("screenshot", mScreenshotPath.data(), mScreenshotPath.size());
     ImGui::SameLine();
-    if (ImGui::Button("save##shot")) runAction([&] { screenshot(mScreenshotPath.data()); });
+    if (ImGui::Button("save##shot")) runAction([&] { screenshot(mScreenshotPath.data(), false); });
     ImGui::InputText("settings", mSettingsPath.data(), mSettingsPath.size());
     if (ImGui::Button("save settings")) runAction([&] { saveViewSettings(mSettingsPath.data(), mView, mCamera.camera()); });
     ImGui::SameLine();
@@ -648,13 +712,14 @@ class Viewer {
     if (ImGui::Button("reload shaders")) runAction([&] { reloadShaders(); });
   }
 
+  // An action from the interface: its error stays on screen until the next action or dismissed.
   template <typename F>
   void runAction(F&& action) {
     try {
       action();
-      mStatus.clear();
+      mActionError.clear();
     } catch (const std::exception& e) {
-      mStatus = e.what();
+      mActionError = e.what();
     }
   }
 
@@ -686,36 +751,42 @@ class Viewer {
       }
     } else if (verb == "frames") {
       need(1);
-      int n = static_cast<int>(parseFloat(w[1], "frames"));
-      for (int i = 0; i < n; ++i) frame();
-      if (!mStatus.empty()) throw Error(mStatus);
+      long n = parseInteger(w[1], "frames", 0, 1000000);
+      for (long i = 0; i < n; ++i) frame();
+      if (!mRenderError.empty()) throw Error(mRenderError);
     } else if (verb == "resize") {
       need(2);
-      int width = static_cast<int>(parseFloat(w[1], "width")), height = static_cast<int>(parseFloat(w[2], "height"));
-      if (width < 16 || height < 16 || width > 8192 || height > 8192) throw Error("resize: 16–8192 on each side");
-      resize(width, height);
+      resize(static_cast<int>(parseInteger(w[1], "width", 16, 8192)),
+             static_cast<int>(parseInteger(w[2], "height", 16, 8192)));
     } else if (verb == "orbit") {
       need(2);
       mCamera.orbit(parseFloat(w[1], "yaw") * kDegrees, parseFloat(w[2], "pitch") * kDegrees);
       mCameraChanged = true;
     } else if (verb == "screenshot") {
       need(1);
-      screenshot(w[1]);
+      screenshot(w[1], true);
     } else if (verb == "save-settings") {
       need(1);
       saveViewSettings(w[1], mView, mCamera.camera());
     } else if (verb == "load-settings") {
       need(1);
       loadSettings(w[1]);
+    } else if (verb == "heat-map-stats") {
+      need(0);
+      if (!(mView.split && mView.heatMap) || mHeatTexture.id() == 0) throw Error("no heat map yet (set split on, heat-map on, frames N)");
+      fmt::print("heat map: mean {:.3f} p95 {:.3f} max {:.3f}\n", mHeatStats.meanDeltaE, mHeatStats.p95DeltaE,
+                 mHeatStats.maxDeltaE);
+      std::fflush(stdout);
     } else if (verb == "reload-shaders") {
       need(0);
       reloadShaders();
     } else if (verb == "soak") {
-      need(1);
-      soak(static_cast<int>(parseFloat(w[1], "soak")));
+      if (w.size() != 2 && w.size() != 3) throw Error("soak takes FRAMES and optionally MAX-GROWTH-MB");
+      soak(static_cast<int>(parseInteger(w[1], "soak", 1, 1000000)),
+           w.size() == 3 ? std::optional<double>(parseFloat(w[2], "soak's memory bound")) : std::nullopt);
     } else {
       throw Error(fmt::format("unknown command \"{}\" (set, frames, resize, orbit, screenshot, save-settings, "
-                              "load-settings, reload-shaders, soak)", verb));
+                              "load-settings, reload-shaders, soak, heat-map-stats)", verb));
     }
   }
 
@@ -764,8 +835,9 @@ class Viewer {
     std::stringstream in(key);
     for (std::string p; std::getline(in, p, '.');) parts.push_back(p);
     if (parts.size() == 3 && parts[0] == "light") {
-      std::size_t i = static_cast<std::size_t>(parseFloat(parts[1], "light index"));
-      if (i >= mScene.lights.size()) throw Error(fmt::format("{}: the scene has {} lights", key, mScene.lights.size()));
+      if (mScene.lights.empty()) throw Error(fmt::format("{}: the scene has no lights", key));
+      auto i = static_cast<std::size_t>(
+          parseInteger(parts[1], "light index", 0, static_cast<long>(mScene.lights.size()) - 1));
       Light& light = mScene.lights[i];
       if (parts[2] == "spd") setLightSpd(light, value);
       else if (parts[2] == "intensity") light.intensity = std::max(0.0f, parseFloat(value, key));
@@ -795,9 +867,11 @@ class Viewer {
   }
 
   // Parameter changes every 10 frames, a resize every 100, the split toggled every 250; counts
-  // taken in the same state before and after.
-  void soak(int frames) {
+  // taken in the same state before and after. Error when any kind of GL object is not back to
+  // its count, or when resident memory grew by more than maxGrowthMb (when given).
+  void soak(int frames, std::optional<double> maxGrowthMb) {
     const ViewSettings start = mView;
+    const float startIntensity = mScene.lights.empty() ? 0.0f : mScene.lights[0].intensity;
     const gpu::WindowSize startSize = mWindow.framebufferSize();
     // Both views made before the first count, so that the counts compare like with like.
     mView.split = true;
@@ -835,7 +909,8 @@ class Viewer {
       frame();
     }
     mView = start;
-    mSettingsChanged = true;
+    if (!mScene.lights.empty()) mScene.lights[0].intensity = startIntensity;
+    mSettingsChanged = mSceneChanged = true;
     resize(startSize.width, startSize.height);
     for (int i = 0; i < 20; ++i) frame();
     gpu::GlObjectCounts objectsAfter = gpu::liveGlObjects();
@@ -844,6 +919,12 @@ class Viewer {
     fmt::print("soak: GL objects {} -> {} ({} -> {})\n", objectsBefore.total(), objectsAfter.total(),
                gpu::describeGlObjects(objectsBefore), gpu::describeGlObjects(objectsAfter));
     fmt::print("soak: resident memory {:.1f} MB -> {:.1f} MB\n", residentBefore, residentAfter);
+    std::fflush(stdout);
+    if (!(objectsAfter == objectsBefore)) throw Error("soak: GL objects were left behind (or lost)");
+    if (maxGrowthMb && !(residentAfter - residentBefore <= *maxGrowthMb)) {
+      throw Error(fmt::format("soak: resident memory grew by {:.1f} MB (bound {:g} MB)", residentAfter - residentBefore,
+                              *maxGrowthMb));
+    }
   }
 
   gpu::WindowContext& mWindow;
@@ -853,7 +934,9 @@ class Viewer {
   ViewSettings mView;
   std::unique_ptr<render::Renderer> mLeft, mRight;
   bool mSettingsChanged = false, mCameraChanged = false, mSceneChanged = false;
-  std::string mStatus;  // the last error, shown in red
+  std::string mRenderError;  // from the last frame's rendering, shown in red
+  std::string mActionError;  // from the last action in the interface, shown until dismissed
+  Pending mLeftPending, mRightPending;
   std::vector<std::string> mIlluminants, mObservers;
   float mFlySpeed = 1.0f;
   double mCursorX = 0.0, mCursorY = 0.0;

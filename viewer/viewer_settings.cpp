@@ -163,6 +163,11 @@ void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Cam
       throw Error(fmt::format("{}: /{}: unknown key (allowed: left, right, split, heat_map, camera)", file, key));
     }
   }
+  glm::vec3 look = nextCamera.target - nextCamera.position;
+  if (!(glm::length(look) > 0.0f) || !(glm::length(glm::cross(look, nextCamera.up)) > 1e-6f * glm::length(look))) {
+    throw Error(fmt::format("{}: /camera: the target must differ from the position, and up must not be parallel "
+                            "to the view", file));
+  }
   view = next;
   camera = nextCamera;
 }

@@ -239,7 +239,7 @@ int main(int argc, char** argv) {
                   "with an HTML report; fails when a bound is broken");
   validateCmd->add_option("-o,--output", val.output, "folder to write")->capture_default_str();
   validateCmd->add_option("--scenes", val.scenes, "folder of the scene files (default: the example scenes)");
-  validateCmd->add_flag("--quick", val.quick, "240x135 and 64 paths per pixel (minutes on 2 cores), for CI");
+  validateCmd->add_flag("--quick", val.quick, "240x135 and fewer paths per pixel (seconds on 2 cores), for CI");
   validateCmd->add_flag("--json", val.json, "JSON output");
 
   ViewOptions view;

@@ -175,12 +175,11 @@ class SceneParser {
         s = rgbLightSpectrum(rgb, colourSpace(mScene.colourSpace));
       }
     }
-    for (int i = 0; i < kSpectrumSamples; ++i)
-      if (!(s[i] >= 0.0) || !std::isfinite(s[i])) n.fail("the spectrum has negative or non-finite values");
-    double luminous = luminousIntegral(s);
-    if (!(luminous > 0.0) || !std::isfinite(luminous))
-      n.fail("the spectrum has no luminous power (683 lm/W · ∫ S ȳ dλ = 0 over 360–830 nm)");
-    return s * (1.0 / luminous);
+    try {
+      return normalisedLightSpectrum(s);
+    } catch (const Error& e) {
+      n.fail(e.what());
+    }
   }
 
   Light light(const Node& n) const {
@@ -427,6 +426,15 @@ void applyOverride(json& root, const std::string& set, schema::Document& documen
 }
 
 }  // namespace
+
+Spectrum normalisedLightSpectrum(const Spectrum& spd) {
+  for (int i = 0; i < kSpectrumSamples; ++i)
+    if (!(spd[i] >= 0.0) || !std::isfinite(spd[i])) throw Error("the spectrum has negative or non-finite values");
+  double luminous = luminousIntegral(spd);
+  if (!(luminous > 0.0) || !std::isfinite(luminous))
+    throw Error("the spectrum has no luminous power (683 lm/W · ∫ S ȳ dλ = 0 over 360–830 nm)");
+  return spd * (1.0 / luminous);
+}
 
 void resolveWater(Water& water) {
   underwater::WaterProperties properties =

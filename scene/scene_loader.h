@@ -32,6 +32,10 @@ Scene loadScene(const std::filesystem::path& file, const std::vector<std::string
 // quantity of one unit of S. Every light's SPD is divided by it on load, so that it is 1.
 double luminousIntegral(const Spectrum& spd);
 
+// A light's SPD divided by its luminousIntegral, as every light in a Scene is (scene/scene.h).
+// Error when a value is negative or not finite, or when there is no luminous power.
+Spectrum normalisedLightSpectrum(const Spectrum& spd);
+
 // Fills water.sigmaA, sigmaS and kd from its type, data set and multipliers (the scene file's
 // "water", or an editor's changes to it). Error naming the type or data set when unknown.
 void resolveWater(Water& water);

@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -75,46 +74,28 @@ double residentMegabytes() {
   return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
 }
 
-// A whole number within [min, max]; Error naming `what` otherwise.
-long parseInteger(const std::string& text, const std::string& what, long min, long max) {
-  long v = 0;
-  auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || v < min || v > max) {
-    throw Error(fmt::format("{}: expected a whole number within {}–{}, got \"{}\"", what, min, max, text));
-  }
-  return v;
+float parseFloat(const std::string& what, const std::string& text) {
+  return static_cast<float>(parseNumber(what, text));
 }
 
-float parseFloat(const std::string& text, const std::string& what) {
-  try {
-    std::size_t used = 0;
-    float v = std::stof(text, &used);
-    if (used == text.size() && std::isfinite(v)) return v;
-  } catch (const std::exception&) {
-  }
-  throw Error(fmt::format("{}: expected a number, got \"{}\"", what, text));
-}
-
-glm::vec3 parseVec3(const std::string& text, const std::string& what) {
+glm::vec3 parseVec3(const std::string& what, const std::string& text) {
   glm::vec3 v;
   std::stringstream in(text);
   std::string part;
   for (int i = 0; i < 3; ++i) {
     if (!std::getline(in, part, ',')) throw Error(fmt::format("{}: expected X,Y,Z, got \"{}\"", what, text));
-    v[i] = parseFloat(part, what);
+    v[i] = parseFloat(what, part);
   }
   return v;
 }
 
-// A light's SPD, normalised as the scene loader normalises it (scene/scene.h); Error when it
-// has no luminous power to normalise.
-void setLightSpectrum(Light& light, Spectrum spd, const std::string& label) {
-  double luminous = luminousIntegral(spd);
-  if (!(luminous > 0.0) || !std::isfinite(luminous)) {
-    throw Error(fmt::format("{}: no visible power between 360 and 830 nm", label));
+// A light's SPD, normalised and checked as the scene loader does it.
+void setLightSpectrum(Light& light, const Spectrum& spd, const std::string& label) {
+  try {
+    light.spd = normalisedLightSpectrum(spd);
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: {}", label, e.what()));
   }
-  spd *= 1.0 / luminous;
-  light.spd = spd;
   light.spdLabel = label;
 }
 
@@ -657,7 +638,11 @@ class Viewer {
 
   void waterPanel() {
     Water& w = *mScene.water;
-    bool changed = stringCombo("type", w.type, underwater::listJerlovTypes(underwater::jerlovDatasetFromName(w.dataset)));
+    if (mWaterTypesOf != w.dataset) {  // read from data/ when the data set changes, not every frame
+      mWaterTypes = underwater::listJerlovTypes(underwater::jerlovDatasetFromName(w.dataset));
+      mWaterTypesOf = w.dataset;
+    }
+    bool changed = stringCombo("type", w.type, mWaterTypes);
     changed |= stringCombo("data set", w.dataset, {"jerlov", "williamson2022"});
     changed |= ImGui::SliderFloat("camera depth m", &w.depthM, 0.0f, 60.0f, "%.1f");
     changed |= ImGui::SliderFloat("scattering x", &w.scatteringScale, 0.0f, 4.0f);
@@ -751,16 +736,16 @@ class Viewer {
       }
     } else if (verb == "frames") {
       need(1);
-      long n = parseInteger(w[1], "frames", 0, 1000000);
+      long n = parseInteger("frames", w[1], 0, 1000000);
       for (long i = 0; i < n; ++i) frame();
       if (!mRenderError.empty()) throw Error(mRenderError);
     } else if (verb == "resize") {
       need(2);
-      resize(static_cast<int>(parseInteger(w[1], "width", 16, 8192)),
-             static_cast<int>(parseInteger(w[2], "height", 16, 8192)));
+      resize(static_cast<int>(parseInteger("width", w[1], 16, 8192)),
+             static_cast<int>(parseInteger("height", w[2], 16, 8192)));
     } else if (verb == "orbit") {
       need(2);
-      mCamera.orbit(parseFloat(w[1], "yaw") * kDegrees, parseFloat(w[2], "pitch") * kDegrees);
+      mCamera.orbit(parseFloat("yaw", w[1]) * kDegrees, parseFloat("pitch", w[2]) * kDegrees);
       mCameraChanged = true;
     } else if (verb == "screenshot") {
       need(1);
@@ -782,8 +767,8 @@ class Viewer {
       reloadShaders();
     } else if (verb == "soak") {
       if (w.size() != 2 && w.size() != 3) throw Error("soak takes FRAMES and optionally MAX-GROWTH-MB");
-      soak(static_cast<int>(parseInteger(w[1], "soak", 1, 1000000)),
-           w.size() == 3 ? std::optional<double>(parseFloat(w[2], "soak's memory bound")) : std::nullopt);
+      soak(static_cast<int>(parseInteger("soak", w[1], 1, 1000000)),
+           w.size() == 3 ? std::optional<double>(parseFloat("soak's memory bound", w[2])) : std::nullopt);
     } else {
       throw Error(fmt::format("unknown command \"{}\" (set, frames, resize, orbit, screenshot, save-settings, "
                               "load-settings, reload-shaders, soak, heat-map-stats)", verb));
@@ -819,14 +804,14 @@ class Viewer {
     if (key == "split") return onOff(mView.split);
     if (key == "heat-map") return onOff(mView.heatMap);
     if (key == "fov") {
-      mCamera.setFieldOfView(parseFloat(value, key));
+      mCamera.setFieldOfView(parseFloat(key, value));
       mCameraChanged = true;
       return;
     }
     if (key == "water.type" || key == "water.depth") {
       if (!mScene.water) throw Error("the scene has no water");
       if (key == "water.type") mScene.water->type = value;
-      else mScene.water->depthM = std::max(0.0f, parseFloat(value, key));
+      else mScene.water->depthM = std::max(0.0f, parseFloat(key, value));
       resolveWater(*mScene.water);
       mSceneChanged = true;
       return;
@@ -837,12 +822,12 @@ class Viewer {
     if (parts.size() == 3 && parts[0] == "light") {
       if (mScene.lights.empty()) throw Error(fmt::format("{}: the scene has no lights", key));
       auto i = static_cast<std::size_t>(
-          parseInteger(parts[1], "light index", 0, static_cast<long>(mScene.lights.size()) - 1));
+          parseInteger("light index", parts[1], 0, static_cast<long>(mScene.lights.size()) - 1));
       Light& light = mScene.lights[i];
       if (parts[2] == "spd") setLightSpd(light, value);
-      else if (parts[2] == "intensity") light.intensity = std::max(0.0f, parseFloat(value, key));
+      else if (parts[2] == "intensity") light.intensity = std::max(0.0f, parseFloat(key, value));
       else if (parts[2] == "direction") {
-        glm::vec3 d = parseVec3(value, key);
+        glm::vec3 d = parseVec3(key, value);
         if (!(glm::length(d) > 0.0f)) throw Error(fmt::format("{}: expected a non-zero direction", key));
         light.direction = glm::normalize(d);
       } else {
@@ -855,9 +840,9 @@ class Viewer {
       auto it = std::find_if(mScene.materials.begin(), mScene.materials.end(),
                              [&](const Material& m) { return m.name == parts[1]; });
       if (it == mScene.materials.end()) throw Error(fmt::format("{}: no material \"{}\"", key, parts[1]));
-      if (parts[2] == "base-colour") it->baseColour = glm::clamp(parseVec3(value, key), glm::vec3(0.0f), glm::vec3(1.0f));
-      else if (parts[2] == "roughness") it->roughness = std::clamp(parseFloat(value, key), 0.0f, 1.0f);
-      else if (parts[2] == "metallic") it->metallic = std::clamp(parseFloat(value, key), 0.0f, 1.0f);
+      if (parts[2] == "base-colour") it->baseColour = glm::clamp(parseVec3(key, value), glm::vec3(0.0f), glm::vec3(1.0f));
+      else if (parts[2] == "roughness") it->roughness = std::clamp(parseFloat(key, value), 0.0f, 1.0f);
+      else if (parts[2] == "metallic") it->metallic = std::clamp(parseFloat(key, value), 0.0f, 1.0f);
       else throw Error(fmt::format("unknown setting \"{}\" (material.NAME.base-colour, roughness, metallic)", key));
       mSceneChanged = true;
       return;
@@ -949,6 +934,8 @@ class Viewer {
   std::filesystem::path mPendingScreenshot;
   float mBlackbodyK = 3000.0f, mLedPeakNm = 450.0f, mLedWidthNm = 20.0f;
   std::size_t mMaterial = 0;
+  std::vector<std::string> mWaterTypes;  // of the data set mWaterTypesOf
+  std::string mWaterTypesOf;
   std::array<char, 512> mCsvPath{}, mScreenshotPath{}, mSettingsPath{};
 };
 

@@ -15,21 +15,6 @@
 namespace prism::viewer {
 namespace {
 
-double number(std::string_view key, std::string_view text) {
-  double v = 0.0;
-  auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v)) {
-    throw Error(fmt::format("{}: expected a number, got \"{}\"", key, text));
-  }
-  return v;
-}
-
-int integer(std::string_view key, std::string_view text) {
-  double v = number(key, text);
-  if (v != std::floor(v) || std::abs(v) > 1e9) throw Error(fmt::format("{}: expected an integer, got \"{}\"", key, text));
-  return static_cast<int>(v);
-}
-
 std::string strategyName(SamplingStrategy s) {
   switch (s) {
     case SamplingStrategy::Uniform: return "uniform";
@@ -62,15 +47,33 @@ glm::vec3 vec3Of(const nlohmann::json& j, const std::string& where) {
 
 }  // namespace
 
+double parseNumber(std::string_view what, std::string_view text) {
+  double v = 0.0;
+  auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v)) {
+    throw Error(fmt::format("{}: expected a number, got \"{}\"", what, text));
+  }
+  return v;
+}
+
+long parseInteger(std::string_view what, std::string_view text, long min, long max) {
+  long v = 0;
+  auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || v < min || v > max) {
+    throw Error(fmt::format("{}: expected a whole number within {}–{}, got \"{}\"", what, min, max, text));
+  }
+  return v;
+}
+
 bool applyFrameSetting(render::FrameSettings& s, std::string_view key, std::string_view value) {
   std::string v(value);
   if (key == "mode") s.mode = render::renderModeFromName(v);
-  else if (key == "wavelengths") s.sampling.count = integer(key, v);
+  else if (key == "wavelengths") s.sampling.count = static_cast<int>(parseInteger(key, v, 0, 100000));
   else if (key == "range") {
     std::size_t comma = v.find(',');
     if (comma == std::string::npos) throw Error(fmt::format("range: expected MIN,MAX in nm, got \"{}\"", v));
-    s.sampling.minNm = number(key, std::string_view(v).substr(0, comma));
-    s.sampling.maxNm = number(key, std::string_view(v).substr(comma + 1));
+    s.sampling.minNm = parseNumber(key, std::string_view(v).substr(0, comma));
+    s.sampling.maxNm = parseNumber(key, std::string_view(v).substr(comma + 1));
   } else if (key == "strategy") s.sampling.strategy = samplingStrategyFromName(v);
   else if (key == "observer") s.observer = v;
   else if (key == "lookup") {
@@ -83,8 +86,8 @@ bool applyFrameSetting(render::FrameSettings& s, std::string_view key, std::stri
   else if (key == "display") s.display = v;
   else if (key == "white-balance") s.whiteBalance = v;
   else if (key == "adaptation") s.adaptation = adaptationFromName(v);
-  else if (key == "ev") s.ev100 = v == "scene" ? std::nullopt : std::optional<float>(static_cast<float>(number(key, v)));
-  else if (key == "shadow-map-size") s.shadowMapSize = integer(key, v);
+  else if (key == "ev") s.ev100 = v == "scene" ? std::nullopt : std::optional<float>(static_cast<float>(parseNumber(key, v)));
+  else if (key == "shadow-map-size") s.shadowMapSize = static_cast<int>(parseInteger(key, v, 0, 100000));
   else return false;
   return true;
 }

@@ -25,6 +25,11 @@ struct ViewSettings {
   bool heatMap = false;
 };
 
+// The numbers of settings and script commands: a finite number, or a whole one within [min, max];
+// Error naming `what` and the text otherwise.
+double parseNumber(std::string_view what, std::string_view text);
+long parseInteger(std::string_view what, std::string_view text, long min, long max);
+
 // Applies `key` = `value` to frame settings; false when the key is not a frame key. Error naming
 // the key and what it expects when the value is bad (validate() then checks the combination).
 bool applyFrameSetting(render::FrameSettings& settings, std::string_view key, std::string_view value);

@@ -7,8 +7,8 @@
 //
 // Between samples, linear. Beyond the tables every coefficient is held at its end value: no
 // data set here reaches past 700 nm, where pure water's absorption keeps rising steeply (Pope &
-// Fry 1997: 0.57 m⁻¹ at 700 nm; Kou et al. 1993: ≈ 2.5 m⁻¹ at 750 nm), so deep red and near
-// infrared light is attenuated less than in real water. It matters little to a CIE observer
+// Fry 1997 measure 0.624 m⁻¹ at 700 nm, the end of their table, and it climbs from 0.448 m⁻¹ at
+// 675 nm), so deep red and near infrared light is attenuated less than in real water. It matters little to a CIE observer
 // (ȳ at 700 nm is 0.4 % of its peak) and more to a camera with a wide red band.
 #pragma once
 

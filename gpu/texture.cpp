@@ -295,6 +295,10 @@ void Texture2D::bindImage(GLuint unit, GLenum access, GLint level) const {
 
 // ---- Texture2DArray ----
 
+void Texture2DArray::bindImage(GLuint unit, GLenum access, GLint level) const {
+  glBindImageTexture(unit, mId, level, GL_TRUE, 0, access, mInternalFormat);
+}
+
 Texture2DArray::Texture2DArray(const Texture2DArrayDesc& desc)
     : mWidth(desc.width),
       mHeight(desc.height),

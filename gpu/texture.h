@@ -136,6 +136,9 @@ class Texture2DArray {
   GLenum internalFormat() const { return mInternalFormat; }
 
   void bind(GLuint unit) const { glBindTextureUnit(unit, mId); }
+  // Every layer as an image2DArray for compute (format: the internal format; access as
+  // Texture2D::bindImage).
+  void bindImage(GLuint unit, GLenum access, GLint level = 0) const;
 
  private:
   void release();

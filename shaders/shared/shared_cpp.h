@@ -32,6 +32,7 @@ using ivec2 = glm::ivec2;
 using mat3 = glm::mat3;
 using mat4 = glm::mat4;
 using glm::abs;
+using glm::acos;
 using glm::asin;
 using glm::atan;
 using glm::clamp;

@@ -1,0 +1,91 @@
+#include "techniques/atmosphere/atmosphere_tables.h"
+
+#include "spectral/parallel_for.h"
+
+namespace prism::shared {
+
+// atmosphere_luts.glsl compiled inside a class whose members are its accessors.
+class AtmosphereTablesKernel {
+ public:
+  explicit AtmosphereTablesKernel(const atmosphere::AtmosphereTables& tables) : mTables(tables) {}
+
+  vec4 transmittanceLutTexel(int, int x, int y) const {
+    return mTables.transmittance[static_cast<std::size_t>(y * kTransmittanceLutWidth + x)];
+  }
+  vec4 multipleScatteringLutTexel(int, int x, int y) const {
+    if (mTables.multipleScattering.empty()) return vec4(0.0f);
+    return mTables.multipleScattering[static_cast<std::size_t>(y * kMultipleScatteringLutSize + x)];
+  }
+
+#include "atmosphere_luts.glsl"
+
+ private:
+  const atmosphere::AtmosphereTables& mTables;
+};
+
+}  // namespace prism::shared
+
+namespace prism::atmosphere {
+
+using shared::AtmosphereTablesKernel;
+
+AtmosphereTables computeTables(const shared::GpuAtmosphere& atmosphere, unsigned threads) {
+  AtmosphereTables tables;
+  tables.atmosphere = atmosphere;
+  AtmosphereTablesKernel kernel(tables);
+  const int tw = shared::kTransmittanceLutWidth, th = shared::kTransmittanceLutHeight;
+  tables.transmittance.resize(static_cast<std::size_t>(tw * th));
+  parallelFor(static_cast<std::size_t>(th), threads, [&](std::size_t y) {
+    for (int x = 0; x < tw; ++x) {
+      tables.transmittance[y * static_cast<std::size_t>(tw) + static_cast<std::size_t>(x)] =
+          kernel.transmittanceLutValue(atmosphere, x, static_cast<int>(y));
+    }
+  });
+  if (atmosphere.options.x > 0.5f) {
+    const int n = shared::kMultipleScatteringLutSize;
+    std::vector<glm::vec4> ms(static_cast<std::size_t>(n * n));
+    parallelFor(static_cast<std::size_t>(n), threads, [&](std::size_t y) {
+      for (int x = 0; x < n; ++x) {
+        ms[y * static_cast<std::size_t>(n) + static_cast<std::size_t>(x)] =
+            kernel.multipleScatteringLutValue(atmosphere, 0, x, static_cast<int>(y));
+      }
+    });
+    tables.multipleScattering = std::move(ms);
+  }
+  return tables;
+}
+
+std::vector<glm::vec4> computeSkyView(const AtmosphereTables& tables, float rKm, float muSun,
+                                      unsigned threads) {
+  AtmosphereTablesKernel kernel(tables);
+  const int w = shared::kSkyViewLutWidth, h = shared::kSkyViewLutHeight;
+  std::vector<glm::vec4> sky(static_cast<std::size_t>(w * h));
+  parallelFor(static_cast<std::size_t>(h), threads, [&](std::size_t y) {
+    for (int x = 0; x < w; ++x) {
+      sky[y * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)] =
+          kernel.skyViewLutValue(tables.atmosphere, 0, rKm, muSun, x, static_cast<int>(y));
+    }
+  });
+  return sky;
+}
+
+glm::vec4 skyRadiance(const AtmosphereTables& tables, float rKm, float muSun, float zenith,
+                      float azimuth, bool withGround) {
+  AtmosphereTablesKernel kernel(tables);
+  return kernel.skyRadiance(tables.atmosphere, 0, rKm, muSun, zenith, azimuth, withGround);
+}
+
+SkyViewDirection skyViewTexelDirection(const shared::GpuAtmosphere& atmosphere, float rKm, int x, int y) {
+  AtmosphereTables none;
+  AtmosphereTablesKernel kernel(none);
+  glm::vec2 unit(float(x) / float(shared::kSkyViewLutWidth - 1), float(y) / float(shared::kSkyViewLutHeight - 1));
+  AtmosphereTablesKernel::SkyViewAngles a = kernel.skyViewAngles(atmosphere, rKm, unit);
+  return {a.zenith, a.azimuth};
+}
+
+glm::vec4 sunTransmittance(const AtmosphereTables& tables, float rKm, float muSun) {
+  AtmosphereTablesKernel kernel(tables);
+  return kernel.transmittanceToSpace(tables.atmosphere, 0, rKm, muSun);
+}
+
+}  // namespace prism::atmosphere

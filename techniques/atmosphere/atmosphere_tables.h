@@ -1,0 +1,44 @@
+// Hillaire's tables for one batch of four wavelengths, computed on the CPU by the same shared
+// code the GPU's compute passes run (shaders/shared/atmosphere_luts.glsl): the renderer's twin
+// in tests, and the engine of `prism atmosphere evaluate|optimise`, which needs the sky of
+// every strategy without a GPU.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "techniques/atmosphere/atmosphere_layout.h"
+
+namespace prism::atmosphere {
+
+struct AtmosphereTables {
+  shared::GpuAtmosphere atmosphere{};
+  std::vector<glm::vec4> transmittance;       // optical depth, width × height, x fastest
+  std::vector<glm::vec4> multipleScattering;  // Ψ_ms, size × size; empty when it is off
+};
+
+// Both tables (multiple scattering only when the atmosphere asks for it), rows in parallel.
+AtmosphereTables computeTables(const shared::GpuAtmosphere& atmosphere, unsigned threads = 0);
+
+// The sky-view table seen from radius rKm under a sun of zenith cosine muSun.
+std::vector<glm::vec4> computeSkyView(const AtmosphereTables& tables, float rKm, float muSun,
+                                      unsigned threads = 0);
+
+// Radiance from one direction, integrated along the view ray (not looked up in a sky-view
+// table), sun disc excluded; withGround adds the ground's reflection below the horizon.
+glm::vec4 skyRadiance(const AtmosphereTables& tables, float rKm, float muSun, float zenith,
+                      float azimuth, bool withGround = true);
+
+// The view direction of sky-view texel (x, y) for a camera at radius rKm.
+struct SkyViewDirection {
+  float zenith = 0.0f;
+  float azimuth = 0.0f;  // from the sun's vertical plane
+};
+SkyViewDirection skyViewTexelDirection(const shared::GpuAtmosphere& atmosphere, float rKm, int x, int y);
+
+// The sun's transmittance to a point at radius rKm for a sun of zenith cosine muSun there.
+glm::vec4 sunTransmittance(const AtmosphereTables& tables, float rKm, float muSun);
+
+}  // namespace prism::atmosphere

@@ -11,6 +11,7 @@
 #include "app/colour_commands.h"
 #include "app/compare_commands.h"
 #include "app/gallery.h"
+#include "app/atmosphere_commands.h"
 #include "app/reference_commands.h"
 #include "app/render_commands.h"
 #include "app/scene_bench.h"
@@ -252,6 +253,25 @@ int main(int argc, char** argv) {
 
   SceneBenchOptions sceneBench;
   std::string benchWavelengths, benchRange, benchEv;
+  AtmosphereCommandOptions atm;
+  auto* atmosphereCmd = app.add_subcommand("atmosphere", "the spectral sky: wavelength strategies against the reference");
+  atmosphereCmd->require_subcommand(1);
+  auto* atmEvaluate = atmosphereCmd->add_subcommand(
+      "evaluate", "mean and max CIEDE2000 of RGB-3, uniform 4, optimised 4 (8 and 12 parameters) and uniform 16 "
+                  "against the reference sky, per sun elevation (exit 1 when the optimised set misses ΔE00 1.0)");
+  auto* atmOptimise = atmosphereCmd->add_subcommand(
+      "optimise", "fit the four wavelengths and weights (and the 3x4 matrix), with and without aerosols");
+  for (CLI::App* c : {atmEvaluate, atmOptimise}) {
+    c->add_option("--reference-step", atm.referenceStepNm, "nm between the reference's wavelengths (0.5..50)")->capture_default_str();
+    c->add_option("--zeniths", atm.zeniths, "view zenith bins over the upper hemisphere")->capture_default_str();
+    c->add_option("--azimuths", atm.azimuths, "view azimuth bins over 0..180° from the sun")->capture_default_str();
+    c->add_flag("--quick", atm.quick, "10 nm reference, 8 x 16 directions (seconds)");
+  }
+  atmEvaluate->add_flag("!--no-aerosols", atm.aerosols, "Rayleigh + ozone only (and its optimised set)");
+  atmEvaluate->add_option("--wavelengths", atm.wavelengths, "an optimised wavelength file (default: data/atmosphere_wavelengths.json)");
+  atmEvaluate->add_flag("--json", atm.json, "JSON output");
+  atmOptimise->add_option("-o,--output", atm.output, "where to write (default: data/atmosphere_wavelengths.json)");
+
   auto* bench = app.add_subcommand(
       "bench", "GPU frame times of a scene (prism bench SCENE.json), or, without a scene, Prism's "
                "micro-benchmarks (Google Benchmark flags pass through)");
@@ -307,6 +327,14 @@ int main(int argc, char** argv) {
     if (*compareCmd) {
       if (whiteOpt->count() > 0) cmp.white = cmpWhite;
       runCompare(cmp);
+    }
+    if (*atmEvaluate) {
+      if (atm.zeniths < 1 || atm.zeniths > 512 || atm.azimuths < 1 || atm.azimuths > 1024) throw prism::Error("--zeniths must be within 1..512 and --azimuths within 1..1024");
+      return runAtmosphereEvaluate(atm);
+    }
+    if (*atmOptimise) {
+      if (atm.zeniths < 1 || atm.zeniths > 512 || atm.azimuths < 1 || atm.azimuths > 1024) throw prism::Error("--zeniths must be within 1..512 and --azimuths within 1..1024");
+      runAtmosphereOptimise(atm);
     }
     if (*validateCmd) return runValidate(val);
     if (*viewCmd) {

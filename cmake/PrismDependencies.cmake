@@ -18,6 +18,7 @@ pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
 # Embree 3 traces the reference path tracer's rays (Debian: libembree-dev): target embree.
 find_package(embree 3 REQUIRED CONFIG)
 find_package(Threads REQUIRED)
+find_package(NLopt 2.7 REQUIRED CONFIG)  # Nelder–Mead for the atmosphere's wavelength optimiser
 # GLFW opens the viewer's window and its GL context (prism_gpu_window only): target glfw.
 find_package(glfw3 3.3 REQUIRED)
 # Dear ImGui draws the viewer's interface (Debian: libimgui-dev; no CMake package, pkg-config).

@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build pkg-config g++ ccache
   libcli11-dev nlohmann-json3-dev libfmt-dev libeigen3-dev libglm-dev libcsv-dev libstb-dev zlib1g-dev
-  libopenexr-dev libtinygltf-dev libembree-dev
+  libopenexr-dev libtinygltf-dev libembree-dev libnlopt-cxx-dev
   libgtest-dev libbenchmark-dev glslang-tools
   libepoxy-dev libegl-dev libgl-dev libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri libglfw3-dev
   libimgui-dev xvfb xauth

@@ -1,0 +1,27 @@
+// `prism atmosphere evaluate|optimise`: the wavelength strategies of the spectral sky against
+// the 1 nm reference (techniques/atmosphere/sky_evaluation.h), and the offline fit of the four
+// optimised wavelengths (wavelength_optimiser.h) into data/atmosphere_wavelengths.json.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace prism::app {
+
+struct AtmosphereCommandOptions {
+  double referenceStepNm = 1.0;
+  int zeniths = 16;   // view directions: zeniths × azimuths over the upper hemisphere
+  int azimuths = 32;
+  bool aerosols = true;  // evaluate: the atmosphere (and optimised set) with or without aerosols
+  bool json = false;
+  bool quick = false;    // 10 nm reference, 8 × 16 directions (seconds, for tests)
+  std::filesystem::path wavelengths;  // evaluate: a wavelength file other than data/'s
+  std::filesystem::path output;       // optimise: where to write (default: data/atmosphere_wavelengths.json)
+};
+
+// Exit status 1 when the optimised set's mean ΔE00 exceeds 1.0 at some elevation (the goal).
+int runAtmosphereEvaluate(const AtmosphereCommandOptions& options);
+void runAtmosphereOptimise(const AtmosphereCommandOptions& options);
+
+}  // namespace prism::app

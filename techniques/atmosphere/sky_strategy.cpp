@@ -1,0 +1,129 @@
+#include "techniques/atmosphere/sky_strategy.h"
+
+#include <cmath>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "spectral/colour_space.h"
+#include "spectral/data_files.h"
+#include "spectral/error.h"
+#include "spectral/observer.h"
+#include "techniques/atmosphere/atmosphere_parameters.h"
+
+namespace prism::atmosphere {
+namespace {
+
+constexpr double kLumensPerWatt = 683.0;
+
+// Wavelengths with integration weights (nm) into batches of four.
+SkyStrategy weighted(std::string name, const std::vector<double>& lambdas, const std::vector<double>& weights) {
+  const Observer& cie = observer("cie1931");
+  SkyStrategy s{std::move(name), {}};
+  for (std::size_t i = 0; i < lambdas.size(); i += 4) {
+    SkyBatch b;
+    for (std::size_t j = 0; j < 4 && i + j < lambdas.size(); ++j) {
+      double lambda = lambdas[i + j];
+      b.lambdaNm[static_cast<int>(j)] = static_cast<float>(lambda);
+      b.solarIrradiance[static_cast<int>(j)] = static_cast<float>(solarIrradiance(lambda));
+      b.toXyz.col(static_cast<Eigen::Index>(j)) = cie.at(lambda) * weights[i + j] * kLumensPerWatt;
+    }
+    s.batches.push_back(b);
+  }
+  return s;
+}
+
+}  // namespace
+
+SkyStrategy referenceStrategy(double stepNm) {
+  if (!(stepNm >= 0.5 && stepNm <= 50.0)) throw Error(fmt::format("reference step {} nm must be within 0.5..50", stepNm));
+  int n = static_cast<int>(std::lround((kLambdaMaxNm - kLambdaMinNm) / stepNm));
+  std::vector<double> lambdas, weights;
+  double h = double(kLambdaMaxNm - kLambdaMinNm) / n;
+  for (int i = 0; i <= n; ++i) {
+    lambdas.push_back(kLambdaMinNm + h * i);
+    weights.push_back(i == 0 || i == n ? 0.5 * h : h);
+  }
+  return weighted(fmt::format("reference {:g} nm", h), lambdas, weights);
+}
+
+SkyStrategy uniformStrategy(int count) {
+  if (count < 4 || count % 4 != 0 || count > 1000) {
+    throw Error(fmt::format("uniform wavelength count {} must be a multiple of 4 within 4..1000", count));
+  }
+  std::vector<double> lambdas, weights;
+  double h = double(kLambdaMaxNm - kLambdaMinNm) / count;
+  for (int i = 0; i < count; ++i) {
+    lambdas.push_back(kLambdaMinNm + h * (i + 0.5));
+    weights.push_back(h);
+  }
+  return weighted(fmt::format("uniform {}", count), lambdas, weights);
+}
+
+SkyStrategy rgbStrategy() {
+  const RgbColourSpace& srgb = colourSpace("srgb");
+  Eigen::Vector3d sunXyz = kLumensPerWatt * observer("cie1931").integrate(solarIrradianceSpectrum().toDense());
+  Eigen::Vector3d sunRgb = srgb.xyzToRgb * sunXyz;
+  SkyBatch b;
+  b.lambdaNm = glm::vec4(680.0f, 550.0f, 440.0f, 0.0f);
+  b.solarIrradiance = glm::vec4(sunRgb.x(), sunRgb.y(), sunRgb.z(), 0.0f);
+  b.toXyz.leftCols<3>() = srgb.rgbToXyz;
+  return SkyStrategy{"rgb 680/550/440", {b}};
+}
+
+SkyStrategy optimisedStrategy(const OptimisedWavelengths& set, bool twelve) {
+  std::vector<double> lambdas(set.lambdaNm.begin(), set.lambdaNm.end());
+  std::vector<double> weights(set.weights.begin(), set.weights.end());
+  SkyStrategy s = weighted("optimised 4 (8 parameters)", lambdas, weights);
+  if (twelve) {
+    if (!set.hasMatrix) throw Error("the optimised wavelength set has no fitted 3x4 matrix");
+    s.name = "optimised 4 (12 parameters)";
+    s.batches[0].toXyz = set.matrix * kLumensPerWatt;
+  }
+  return s;
+}
+
+OptimisedWavelengths loadOptimisedWavelengths(const std::filesystem::path& file, std::string_view set) {
+  std::ifstream in(file);
+  if (!in) throw Error(fmt::format("{}: cannot open", file.string()));
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+    const nlohmann::json& s = j.at("sets").at(std::string(set));
+    OptimisedWavelengths w;
+    for (int i = 0; i < 4; ++i) {
+      w.lambdaNm[static_cast<std::size_t>(i)] = s.at("lambda_nm").at(static_cast<std::size_t>(i)).get<double>();
+      w.weights[static_cast<std::size_t>(i)] = s.at("weights_nm").at(static_cast<std::size_t>(i)).get<double>();
+      if (!(w.lambdaNm[static_cast<std::size_t>(i)] >= kLambdaMinNm && w.lambdaNm[static_cast<std::size_t>(i)] <= kLambdaMaxNm)) {
+        throw Error(fmt::format("{}: sets.{}.lambda_nm[{}] is outside 360..830 nm", file.string(), set, i));
+      }
+    }
+    if (s.contains("matrix")) {
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 4; ++c) w.matrix(r, c) = s.at("matrix").at(static_cast<std::size_t>(r)).at(static_cast<std::size_t>(c)).get<double>();
+      }
+      w.hasMatrix = true;
+    }
+    return w;
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(fmt::format("{}: sets.{}: {}", file.string(), set, e.what()));
+  }
+}
+
+OptimisedWavelengths loadOptimisedWavelengths(std::string_view set) {
+  return loadOptimisedWavelengths(dataFile("atmosphere_wavelengths.json"), set);
+}
+
+SkyStrategy skyStrategyFromName(std::string_view name, std::string_view set) {
+  if (name == "reference") return referenceStrategy(1.0);
+  if (name == "rgb") return rgbStrategy();
+  if (name == "uniform4") return uniformStrategy(4);
+  if (name == "uniform16") return uniformStrategy(16);
+  if (name == "optimised4") return optimisedStrategy(loadOptimisedWavelengths(set), false);
+  if (name == "optimised4-matrix") return optimisedStrategy(loadOptimisedWavelengths(set), true);
+  throw Error(fmt::format("unknown sky strategy \"{}\" (reference, rgb, uniform4, uniform16, "
+                          "optimised4, optimised4-matrix)", name));
+}
+
+}  // namespace prism::atmosphere

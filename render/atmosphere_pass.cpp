@@ -36,10 +36,16 @@ AtmospherePass::AtmospherePass()
     : mTransmittanceProgram(computeProgram("atmosphere_transmittance.comp", "atmosphere transmittance")),
       mMultipleScatteringProgram(
           computeProgram("atmosphere_multiple_scattering.comp", "atmosphere multiple scattering")),
-      mSkyViewProgram(computeProgram("atmosphere_sky_view.comp", "atmosphere sky view")) {}
+      mSkyViewProgram(computeProgram("atmosphere_sky_view.comp", "atmosphere sky view")),
+      mSkyIrradianceProgram(computeProgram("atmosphere_sky_irradiance.comp", "atmosphere sky irradiance")),
+      mAerialPerspectiveProgram(
+          computeProgram("atmosphere_aerial_perspective.comp", "atmosphere aerial perspective")) {}
 
-void AtmospherePass::update(const std::vector<shared::GpuAtmosphere>& batches, float cameraRadiusKm,
-                            float muSun) {
+float AtmosphereView::cameraRadiusKm() const {
+  return glm::length(glm::vec3(cameraWorldM.x * 1e-3f, originKm + cameraWorldM.y * 1e-3f, cameraWorldM.z * 1e-3f));
+}
+
+void AtmospherePass::update(const std::vector<shared::GpuAtmosphere>& batches, const AtmosphereView& view) {
   const int n = static_cast<int>(batches.size());
   if (n != mBatches) {
     mTransmittance = table(shared::kTransmittanceLutWidth, shared::kTransmittanceLutHeight, n,
@@ -47,9 +53,15 @@ void AtmospherePass::update(const std::vector<shared::GpuAtmosphere>& batches, f
     mMultipleScattering = table(shared::kMultipleScatteringLutSize, shared::kMultipleScatteringLutSize,
                                 n, "atmosphere multiple scattering");
     mSkyView = table(shared::kSkyViewLutWidth, shared::kSkyViewLutHeight, n, "atmosphere sky view");
+    mAerialPerspective = table(shared::kAerialPerspectiveSize * n, shared::kAerialPerspectiveSize,
+                               2 * shared::kAerialPerspectiveSlices, "atmosphere aerial perspective");
+    mSkyIrradiance = gpu::Buffer(gpu::BufferDesc{static_cast<std::size_t>(n) * 4 * sizeof(glm::vec4), nullptr,
+                                                 GL_DYNAMIC_STORAGE_BIT, "sky irradiance"});
+    mAtmospheres = gpu::Buffer(gpu::BufferDesc{batches.size() * sizeof(shared::GpuAtmosphere), nullptr,
+                                               GL_DYNAMIC_STORAGE_BIT, "atmospheres"});
     mBatches = n;
   }
-  mAtmospheres = gpu::Buffer::fromSpan(std::span<const shared::GpuAtmosphere>(batches), "atmospheres");
+  mAtmospheres.upload(0, std::as_bytes(std::span<const shared::GpuAtmosphere>(batches)));
   mAtmospheres.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
   const GLbitfield barriers = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
   const GLuint layers = static_cast<GLuint>(n);
@@ -64,11 +76,26 @@ void AtmospherePass::update(const std::vector<shared::GpuAtmosphere>& batches, f
   gpu::runCompute(mMultipleScatteringProgram,
                   {groups(shared::kMultipleScatteringLutSize), groups(shared::kMultipleScatteringLutSize), layers},
                   barriers);
+  const float cameraRadiusKm = view.cameraRadiusKm();
   mSkyView.bindImage(0, GL_WRITE_ONLY);
   mSkyViewProgram.setUniform("uCameraRadiusKm", cameraRadiusKm);
-  mSkyViewProgram.setUniform("uMuSun", muSun);
+  mSkyViewProgram.setUniform("uMuSun", view.sun.y);  // the scene's up is y (atmosphere_lighting.glsl)
   gpu::runCompute(mSkyViewProgram,
                   {groups(shared::kSkyViewLutWidth), groups(shared::kSkyViewLutHeight), layers}, barriers);
+
+  mSkyView.bind(2);
+  mSkyIrradiance.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  mSkyIrradianceProgram.setUniform("uCameraRadiusKm", cameraRadiusKm);
+  mSkyIrradianceProgram.setUniform("uSun", view.sun);
+  gpu::runCompute(mSkyIrradianceProgram, {1, layers, 1}, barriers | GL_SHADER_STORAGE_BARRIER_BIT);
+
+  mAerialPerspective.bindImage(0, GL_WRITE_ONLY);
+  mAerialPerspectiveProgram.setUniform("uInverseViewProjection", view.inverseViewProjection);
+  mAerialPerspectiveProgram.setUniform("uCameraWorld", view.cameraWorldM);
+  mAerialPerspectiveProgram.setUniform("uOriginKm", view.originKm);
+  mAerialPerspectiveProgram.setUniform("uSun", view.sun);
+  gpu::runCompute(mAerialPerspectiveProgram,
+                  {groups(shared::kAerialPerspectiveSize), groups(shared::kAerialPerspectiveSize), layers}, barriers);
 }
 
 }  // namespace prism::render

@@ -1,12 +1,17 @@
 // The sky's tables on the GPU, recomputed whenever asked (every frame, so that the sun and the
 // atmosphere can change live): for each batch of four wavelengths, the transmittance table,
 // the multiple-scattering table and the sky-view table seen from the camera, each a layer of a
-// texture array, by the compute passes shaders/passes/atmosphere_*.comp over the same
-// shaders/shared/atmosphere_luts.glsl the CPU twin (techniques/atmosphere/atmosphere_tables.h)
-// runs. Tests hold them to the double-precision reference.
+// texture array, then the sky's irradiance (four spherical-harmonic coefficients per batch, a
+// storage buffer) and the aerial-perspective volume (one array: batches side by side in x, layer
+// j·32 + slice, j 0 in-scattering, 1 transmittance),
+// by the compute passes shaders/passes/atmosphere_*.comp over the same shaders/shared/atmosphere_*.glsl
+// the CPU twin (techniques/atmosphere/atmosphere_tables.h) runs. Tests hold the tables to the
+// double-precision reference.
 #pragma once
 
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "gpu/buffer.h"
 #include "gpu/program.h"
@@ -15,22 +20,35 @@
 
 namespace prism::render {
 
+// Where the frame is seen from (see shaders/shared/atmosphere_lighting.glsl for the frames).
+struct AtmosphereView {
+  float originKm = 6360.0f;      // distance of the world's origin from the planet's centre
+  glm::vec3 cameraWorldM{0.0f};  // the camera, world metres
+  glm::mat4 inverseViewProjection{1.0f};
+  glm::vec3 sun{0.0f, 1.0f, 0.0f};  // unit, towards the sun
+  float cameraRadiusKm() const;
+};
+
 class AtmospherePass {
  public:
   AtmospherePass();  // compiles the passes (a context must be current)
 
-  // All three tables for these batches, the camera at radius cameraRadiusKm under a sun of
-  // zenith cosine muSun. Textures are reallocated when the batch count changes.
-  void update(const std::vector<shared::GpuAtmosphere>& batches, float cameraRadiusKm, float muSun);
+  // Every table for these batches and this view. Textures are reallocated when the batch count
+  // changes.
+  void update(const std::vector<shared::GpuAtmosphere>& batches, const AtmosphereView& view);
 
   const gpu::Texture2DArray& transmittance() const { return mTransmittance; }  // optical depth
   const gpu::Texture2DArray& multipleScattering() const { return mMultipleScattering; }
   const gpu::Texture2DArray& skyView() const { return mSkyView; }
+  const gpu::Texture2DArray& aerialPerspective() const { return mAerialPerspective; }
+  const gpu::Buffer& skyIrradiance() const { return mSkyIrradiance; }  // vec4 × 4 per batch
+  const gpu::Buffer& atmospheres() const { return mAtmospheres; }      // GpuAtmosphere per batch
 
  private:
-  gpu::Program mTransmittanceProgram, mMultipleScatteringProgram, mSkyViewProgram;
-  gpu::Buffer mAtmospheres;
-  gpu::Texture2DArray mTransmittance, mMultipleScattering, mSkyView;
+  gpu::Program mTransmittanceProgram, mMultipleScatteringProgram, mSkyViewProgram,
+      mSkyIrradianceProgram, mAerialPerspectiveProgram;
+  gpu::Buffer mAtmospheres, mSkyIrradiance;
+  gpu::Texture2DArray mTransmittance, mMultipleScattering, mSkyView, mAerialPerspective;
   int mBatches = 0;
 };
 

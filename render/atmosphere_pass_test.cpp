@@ -40,7 +40,9 @@ TEST(AtmospherePass, TablesMatchTheDoublePrecisionReference) {
   AtmosphereTables cpu = computeTables(batch);
 
   // Transmittance: every 5th × 3rd texel.
-  pass.update({batch}, r, 0.5f);
+  AtmosphereView view;
+  view.originKm = r;
+  pass.update({batch}, view);
   std::vector<glm::vec4> depth = layer(pass.transmittance());
   double worst = 0.0, worstAll = 0.0, worstCpu = 0.0;
   for (int y = 0; y < shared::kTransmittanceLutHeight; y += 3) {
@@ -70,7 +72,8 @@ TEST(AtmospherePass, TablesMatchTheDoublePrecisionReference) {
   // Single scattering: sky-view texels above the horizon, for a low and a high sun.
   for (double elevationDeg : {5.0, 45.0}) {
     float muSun = float(std::sin(elevationDeg * kPi / 180.0));
-    pass.update({batch}, r, muSun);
+    view.sun = glm::vec3(std::sqrt(1.0f - muSun * muSun), muSun, 0.0f);
+    pass.update({batch}, view);
     std::vector<glm::vec4> sky = layer(pass.skyView());
     std::vector<std::array<double, 4>> got, want;
     for (int y = 2; y < shared::kSkyViewLutHeight / 2; y += 9) {

@@ -8,8 +8,8 @@ namespace prism::shared {
 class CpuShadingKernel {
  public:
   CpuShadingKernel(const render::FrameData& frame, const RgbToSpectrumTable& table,
-                   std::vector<std::vector<float>> shadowLayers)
-      : mFrame(frame), mTable(table), mShadowLayers(std::move(shadowLayers)) {}
+                   std::vector<std::vector<float>> shadowLayers, render::AtmosphereTexels atmosphere)
+      : mFrame(frame), mTable(table), mShadowLayers(std::move(shadowLayers)), mAtmosphere(std::move(atmosphere)) {}
 
   vec3 shade(const render::GBufferTexel& texel, vec2 uv, const CameraTransform& camera) {
     if (texel.materialId == 0) {
@@ -24,7 +24,7 @@ class CpuShadingKernel {
     s.roughness = texel.normalRoughness.w;
     s.material = static_cast<int>(texel.materialId) - 1;
     mTexelCoefficients = texel.coefficients;
-    return shadeSurface(mFrame.constants, s, camera.position);
+    return shadeSurface(mFrame.constants, s, camera.position, uv);
   }
 
  private:
@@ -45,12 +45,31 @@ class CpuShadingKernel {
     return mFrame.constants.gbufferCoefficients != 0 ? mTexelCoefficients : mTable.lookup(rgb);
   }
   vec4 frameWaterSpectrum(int b, int j) const { return mFrame.waterSpectra[index(b * 3 + j)]; }
+  GpuAtmosphere frameAtmosphere(int b) const { return mFrame.atmospheres[index(b)]; }
+  static vec4 texel(const std::vector<std::vector<glm::vec4>>& layers, int layer, int x, int y, int width) {
+    return layers[index(layer)][index(y * width + x)];
+  }
+  vec4 transmittanceLutTexel(int b, int x, int y) const {
+    return texel(mAtmosphere.transmittance, b, x, y, kTransmittanceLutWidth);
+  }
+  vec4 multipleScatteringLutTexel(int b, int x, int y) const {
+    return texel(mAtmosphere.multipleScattering, b, x, y, kMultipleScatteringLutSize);
+  }
+  vec4 skyViewLutTexel(int b, int x, int y) const { return texel(mAtmosphere.skyView, b, x, y, kSkyViewLutWidth); }
+  vec4 aerialPerspectiveTexel(int b, int x, int y, int slice, int j) const {
+    return texel(mAtmosphere.aerialPerspective, j * kAerialPerspectiveSlices + slice,
+                 b * kAerialPerspectiveSize + x, y, kAerialPerspectiveSize * mFrame.constants.batchCount);
+  }
+  vec4 skyIrradianceCoefficient(int b, int k) const { return mAtmosphere.skyIrradiance[index(b * 4 + k)]; }
 
+#include "atmosphere_luts.glsl"
+#include "atmosphere_lighting.glsl"
 #include "pixel_shading.glsl"
 
   render::FrameData mFrame;
   const RgbToSpectrumTable& mTable;
   std::vector<std::vector<float>> mShadowLayers;
+  render::AtmosphereTexels mAtmosphere;
   vec3 mTexelCoefficients{0.0f};  // of the texel being shaded
 };
 
@@ -63,8 +82,8 @@ struct CpuShading::Kernel : shared::CpuShadingKernel {
 };
 
 CpuShading::CpuShading(const FrameData& frame, const RgbToSpectrumTable& table,
-                       std::vector<std::vector<float>> shadowLayers)
-    : mKernel(std::make_unique<Kernel>(frame, table, std::move(shadowLayers))) {}
+                       std::vector<std::vector<float>> shadowLayers, AtmosphereTexels atmosphere)
+    : mKernel(std::make_unique<Kernel>(frame, table, std::move(shadowLayers), std::move(atmosphere))) {}
 
 CpuShading::~CpuShading() = default;
 

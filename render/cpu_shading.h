@@ -24,12 +24,20 @@ struct GBufferTexel {
   glm::vec3 coefficients{0.0f};  // Jakob–Hanika coefficients, when the G-buffer holds them
 };
 
+// The sky's tables as the GPU holds them (render/atmosphere_pass.h, read back), one entry per
+// texture-array layer, texels row by row from the bottom (the aerial-perspective volume's rows
+// hold every batch side by side); empty without a sky.
+struct AtmosphereTexels {
+  std::vector<std::vector<glm::vec4>> transmittance, multipleScattering, skyView, aerialPerspective;
+  std::vector<glm::vec4> skyIrradiance;  // four per batch
+};
+
 class CpuShading {
  public:
   // shadowLayers: each layer's depths, size × size, row 0 at the bottom (GL order). The table
   // is looked up with the manual (reference) path and must outlive this; the frame is copied.
   CpuShading(const FrameData& frame, const RgbToSpectrumTable& table,
-             std::vector<std::vector<float>> shadowLayers);
+             std::vector<std::vector<float>> shadowLayers, AtmosphereTexels atmosphere = {});
   ~CpuShading();
   CpuShading(const CpuShading&) = delete;
   CpuShading& operator=(const CpuShading&) = delete;

@@ -1,5 +1,8 @@
 #include "render/frame_data.h"
 
+#include "techniques/atmosphere/atmosphere_parameters.h"
+#include "techniques/atmosphere/sky_strategy.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -59,6 +62,21 @@ void addBatches(FrameData& frame, const FrameSettings& settings, const Scene& sc
   }
   const Observer& obs = observer(settings.observer);
   double scale = absoluteTristimulusScale(obs);
+  if (settings.mode == RenderMode::Optimised4) {
+    bool aerosols = !scene.atmosphere || scene.atmosphere->parameters.aerosols;
+    atmosphere::OptimisedWavelengths set = atmosphere::loadOptimisedWavelengths(aerosols ? "aerosols" : "rayleigh-ozone");
+    shared::GpuBatch batch{};
+    for (int j = 0; j < 4; ++j) {
+      double lambda = set.lambdaNm[static_cast<std::size_t>(j)];
+      Eigen::Vector3d row = obs.at(lambda) * set.weights[static_cast<std::size_t>(j)] * scale;
+      batch.lambdaNm[j] = static_cast<float>(lambda);
+      batch.toX[j] = static_cast<float>(row.x());
+      batch.toY[j] = static_cast<float>(row.y());
+      batch.toZ[j] = static_cast<float>(row.z());
+    }
+    frame.batches.push_back(batch);
+    return;
+  }
   SamplingSettings sampling = effectiveSampling(settings);
   std::vector<SampledWavelengths> sampled =
       sampleWavelengths(sampling, frameIndex, obs);
@@ -185,6 +203,31 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
     }
   } else {
     frame.waterSpectra.push_back(glm::vec4(0.0f));
+  }
+
+  // Atmosphere.
+  if (scene.atmosphere) {
+    const Atmosphere& a = *scene.atmosphere;
+    frame.constants.atmosphere = 1;
+    frame.constants.atmosphereOriginKm =
+        static_cast<float>(a.parameters.bottomRadiusKm + a.groundAltitudeM * 1e-3);
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+      if (scene.lights[i].atmosphereSun) frame.constants.atmosphereSunLight = static_cast<int>(i);
+    }
+    const int sun = frame.constants.atmosphereSunLight;
+    for (int b = 0; b < batchCount; ++b) {
+      if (rgbMode) {
+        glm::vec4 sunRgb = frame.lightSpectra[static_cast<std::size_t>(sun * batchCount + b)] *
+                           scene.lights[static_cast<std::size_t>(sun)].intensity;
+        sunRgb.w = 0.0f;
+        frame.atmospheres.push_back(
+            atmosphere::packAtmosphere(a.parameters, glm::vec4(680.0f, 550.0f, 440.0f, 0.0f), sunRgb));
+      } else {
+        frame.atmospheres.push_back(atmosphere::packAtmosphere(a.parameters, frame.batches[static_cast<std::size_t>(b)].lambdaNm));
+      }
+    }
+  } else {
+    frame.atmospheres.push_back(shared::GpuAtmosphere{});
   }
   return frame;
 }

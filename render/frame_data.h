@@ -19,6 +19,10 @@
 //   colour space's RGB → XYZ rows.
 // - Water: σs, σt = σa + σs and Kd at each wavelength (RGB mode: at 680, 550 and 440 nm, the
 //   wavelengths RGB renderers commonly stand R, G and B for).
+// - Atmosphere: its coefficients at each wavelength and the solar spectrum at the top of the
+//   atmosphere (RGB mode: at 680, 550 and 440 nm, with the sun's own RGB as its irradiance, so
+//   that the sun above the atmosphere is exactly its colour; the RGB-3 strategy of
+//   techniques/atmosphere/sky_strategy.h).
 #pragma once
 
 #include <cstdint>
@@ -30,6 +34,7 @@
 #include "scene/scene.h"
 #include "render/shadow_views.h"
 #include "render/shared_shading.h"
+#include "techniques/atmosphere/atmosphere_layout.h"
 #include "spectral/rgb_to_spectrum_table.h"
 
 namespace prism::render {
@@ -42,6 +47,7 @@ struct FrameData {
   std::vector<glm::vec4> lightSpectra;         // (lightCount + 1) × batchCount
   std::vector<glm::vec4> materialSpectra;      // spectra × batchCount × 2 (at least one entry)
   std::vector<glm::vec4> waterSpectra;         // batchCount × 3 under water, else one zero entry
+  std::vector<shared::GpuAtmosphere> atmospheres;  // one per batch with a sky, else one zero entry
 };
 
 // frameIndex seeds stochastic wavelength strategies (a new set every frame). cameraPositionW is

@@ -15,7 +15,8 @@ RenderMode renderModeFromName(std::string_view name) {
   if (name == "naive") return RenderMode::Naive;
   if (name == "jakob-hanika") return RenderMode::JakobHanika;
   if (name == "reference") return RenderMode::Reference;
-  throw Error(fmt::format("unknown mode \"{}\" (rgb, naive, jakob-hanika, reference)", name));
+  if (name == "optimised4") return RenderMode::Optimised4;
+  throw Error(fmt::format("unknown mode \"{}\" (rgb, naive, jakob-hanika, reference, optimised4)", name));
 }
 
 std::string_view renderModeName(RenderMode mode) {
@@ -24,6 +25,7 @@ std::string_view renderModeName(RenderMode mode) {
     case RenderMode::Naive: return "naive";
     case RenderMode::JakobHanika: return "jakob-hanika";
     case RenderMode::Reference: return "reference";
+    case RenderMode::Optimised4: return "optimised4";
   }
   return "?";
 }

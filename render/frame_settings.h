@@ -14,9 +14,11 @@ namespace prism::render {
 
 // rgb: three channels as "wavelengths" (the common practice); naive: box upsampling at
 // 495/570 nm; jakob-hanika: sigmoid upsampling with `sampling`; reference: Jakob–Hanika with
-// kReferenceWavelengths uniform wavelengths over 360–830 nm, whatever `sampling` says.
-enum class RenderMode { Rgb, Naive, JakobHanika, Reference };
-RenderMode renderModeFromName(std::string_view name);  // rgb|naive|jakob-hanika|reference
+// kReferenceWavelengths uniform wavelengths over 360–830 nm, whatever `sampling` says;
+// optimised4: Jakob–Hanika at the sky's four optimised wavelengths with their weights
+// (data/atmosphere_wavelengths.json, the set of the scene's atmosphere; García Liñán).
+enum class RenderMode { Rgb, Naive, JakobHanika, Reference, Optimised4 };
+RenderMode renderModeFromName(std::string_view name);  // rgb|naive|jakob-hanika|reference|optimised4
 std::string_view renderModeName(RenderMode mode);
 
 inline constexpr int kReferenceWavelengths = 472;  // ≈ 1 nm steps over 360–830 nm

@@ -225,6 +225,10 @@ void Renderer::renderFrame() {
   shadowPass();
   hook("gbuffer");
   gbufferPass();
+  if (mScene.atmosphere) {
+    hook("atmosphere");
+    atmospherePass();
+  }
   hook("lighting");
   lightingPass();
   if (mSettings.lightGizmos) {
@@ -314,6 +318,18 @@ void Renderer::gbufferPass() {
   }
 }
 
+// The sky's tables for this frame's batches, sun and camera (recomputed every frame, so the sun
+// and the atmosphere can change live).
+void Renderer::atmospherePass() {
+  if (!mAtmosphere) mAtmosphere = std::make_unique<AtmospherePass>();
+  AtmosphereView view;
+  view.originKm = mFrame.constants.atmosphereOriginKm;
+  view.cameraWorldM = mCameraTransform.position;
+  view.inverseViewProjection = mCameraTransform.inverseViewProjection;
+  view.sun = mScene.atmosphere->sunDirection();
+  mAtmosphere->update(mFrame.atmospheres, view);
+}
+
 void Renderer::lightingPass() {
   mTargets.accumulationTarget.bind();
   if (mAccumulated == 0) mTargets.accumulationTarget.clearColour(0, glm::vec4(0.0f));
@@ -333,6 +349,21 @@ void Renderer::lightingPass() {
   mShadows.maps.bind(4);
   mUpsamplingTable.bind(5);
   if (mSettings.gbufferAlbedo == GBufferAlbedo::Coefficients) mTargets.coefficients.bind(6);
+  const bool sky = mFrame.constants.atmosphere != 0 && mAtmosphere;
+  if (sky) {
+    mAtmosphere->atmospheres().bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+    mAtmosphere->skyIrradiance().bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+    mAtmosphere->transmittance().bind(7);
+    mAtmosphere->multipleScattering().bind(8);
+    mAtmosphere->skyView().bind(9);
+    mAtmosphere->aerialPerspective().bind(10);
+  } else {
+    if (mNoSkyIrradiance.id() == 0) {
+      mNoSkyIrradiance = gpu::Buffer(gpu::BufferDesc{sizeof(shared::GpuAtmosphere), nullptr, GL_DYNAMIC_STORAGE_BIT, "no sky"});
+    }
+    mNoSkyIrradiance.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+    mNoSkyIrradiance.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+  }
   const gpu::Program& p = mLightingProgram;
   p.use();
   p.setUniform("uMode", mFrame.constants.mode);
@@ -343,6 +374,9 @@ void Renderer::lightingPass() {
   p.setUniform("uGBufferCoefficients", mFrame.constants.gbufferCoefficients);
   p.setUniform("uWaterDepth", mFrame.constants.waterDepthM);
   p.setUniform("uWaterSurfaceY", mFrame.constants.waterSurfaceY);
+  p.setUniform("uAtmosphere", sky ? 1 : 0);
+  p.setUniform("uAtmosphereSunLight", mFrame.constants.atmosphereSunLight);
+  p.setUniform("uAtmosphereOriginKm", mFrame.constants.atmosphereOriginKm);
   p.setUniform("uUpsamplingResolution", mTable.resolution());
   p.setUniform("uFilteredLookup", mSettings.lookup == UpsamplingLookup::Filtered ? 1 : 0);
   p.setUniform("uInverseViewProjection", mCameraTransform.inverseViewProjection);

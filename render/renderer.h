@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "gpu/texture.h"
 #include "gpu/vertex_array.h"
 #include "scene/camera_transform.h"
+#include "render/atmosphere_pass.h"
 #include "render/display_transform.h"
 #include "render/frame_data.h"
 #include "render/frame_settings.h"
@@ -52,7 +54,8 @@ class Renderer {
   void resetAccumulation() { mAccumulated = 0; }
 
   // Pass boundaries for timing (e.g. gpu timer scopes): called with "shadow", "gbuffer",
-  // "lighting", "forward", "post" before each pass and with "" after the last.
+  // "atmosphere" (scenes with a sky), "lighting", "forward", "post" before each pass and with ""
+  // after the last.
   using PassHook = std::function<void(std::string_view pass)>;
   void setPassHook(PassHook hook) { mPassHook = std::move(hook); }
 
@@ -76,6 +79,8 @@ class Renderer {
   const gpu::Texture2DArray& shadowMaps() const { return mShadows.maps; }
   const gpu::Texture2D& accumulation() const { return mTargets.accumulation; }
   const gpu::Framebuffer& displayFramebuffer() const { return mTargets.displayTarget; }
+  // The sky's tables of the last frame; null without an atmosphere.
+  const AtmospherePass* atmospherePass() const { return mAtmosphere.get(); }
 
  private:
   // Everything sized by the image: built whole, then swapped in.
@@ -99,6 +104,7 @@ class Renderer {
   void lightingPass();
   void forwardPass();
   void postPass();
+  void atmospherePass();
   void uploadFrameData();
 
   const Scene& mScene;
@@ -122,6 +128,8 @@ class Renderer {
   Shadows mShadows;
   Targets mTargets;
   gpu::Buffer mBatches, mLights, mMaterials, mLightSpectra, mMaterialSpectra, mWaterSpectra;
+  gpu::Buffer mNoSkyIrradiance;              // bound in place of the sky's without an atmosphere
+  std::unique_ptr<AtmospherePass> mAtmosphere;  // made for the first frame with a sky
 };
 
 }  // namespace prism::render

@@ -56,6 +56,30 @@ void PrintTo(const ParityCase& c, std::ostream* os) {
 
 class GpuCpuParity : public testing::TestWithParam<ParityCase> {};
 
+std::vector<std::vector<glm::vec4>> readLayers(const gpu::Texture2DArray& t) {
+  std::vector<std::vector<glm::vec4>> layers;
+  for (GLint l = 0; l < t.layers(); ++l) {
+    std::vector<float> v = gpu::readTextureLayerFloat(t, l, 4);
+    std::vector<glm::vec4> texels(v.size() / 4);
+    for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = glm::vec4(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
+    layers.push_back(std::move(texels));
+  }
+  return layers;
+}
+
+// The sky's tables of the renderer's last frame, for the CPU twin.
+AtmosphereTexels readAtmosphere(const Renderer& renderer) {
+  AtmosphereTexels a;
+  const AtmospherePass* pass = renderer.atmospherePass();
+  if (!pass) return a;
+  a.transmittance = readLayers(pass->transmittance());
+  a.multipleScattering = readLayers(pass->multipleScattering());
+  a.skyView = readLayers(pass->skyView());
+  a.aerialPerspective = readLayers(pass->aerialPerspective());
+  a.skyIrradiance = pass->skyIrradiance().read<glm::vec4>();
+  return a;
+}
+
 TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kScenes / GetParam().scene);
@@ -76,7 +100,7 @@ TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {
   for (const ShadowView& view : renderer.shadowViews()) {
     shadowLayers.push_back(gpu::readTextureLayerFloat(renderer.shadowMaps(), view.layer));
   }
-  CpuShading cpu(renderer.frameData(), table(), std::move(shadowLayers));
+  CpuShading cpu(renderer.frameData(), table(), std::move(shadowLayers), readAtmosphere(renderer));
 
   std::mt19937 rng(4);
   std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
@@ -124,6 +148,9 @@ INSTANTIATE_TEST_SUITE_P(
                     ParityCase{"textured_gltf.json", RenderMode::JakobHanika},
                     ParityCase{"reef.json", RenderMode::JakobHanika},  // under water
                     ParityCase{"reef.json", RenderMode::Rgb},
+                    ParityCase{"sunset.json", RenderMode::Optimised4},  // under the sky
+                    ParityCase{"sunset.json", RenderMode::Rgb},
+                    ParityCase{"sunset.json", RenderMode::JakobHanika},
                     ParityCase{"textured_gltf.json", RenderMode::JakobHanika, GBufferAlbedo::Coefficients}),
     [](const testing::TestParamInfo<ParityCase>& param) {
       std::string name = std::filesystem::path(param.param.scene).stem().string() + "_" +
@@ -185,7 +212,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                                          GoldenCase{"spheres_blue_led.json", RenderMode::JakobHanika},
                                          GoldenCase{"conductors_d65.json", RenderMode::JakobHanika},
                                          GoldenCase{"textured_gltf.json", RenderMode::JakobHanika},
-                                         GoldenCase{"reef.json", RenderMode::JakobHanika}),
+                                         GoldenCase{"reef.json", RenderMode::JakobHanika},
+                                         GoldenCase{"sunset.json", RenderMode::Optimised4}),
                          [](const testing::TestParamInfo<GoldenCase>& param) {
                            std::string name = std::filesystem::path(param.param.scene).stem().string() +
                                               "_" + std::string(renderModeName(param.param.mode));

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "shared_cpp.h"
+#include "techniques/atmosphere/atmosphere_layout.h"  // atmosphere_model.glsl, once
 
 namespace prism::shared {
 #include "sigmoid.glsl"

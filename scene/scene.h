@@ -19,6 +19,7 @@
 #include <glm/glm.hpp>
 
 #include "spectral/spectrum.h"
+#include "techniques/atmosphere/atmosphere_parameters.h"
 
 namespace prism {
 
@@ -44,6 +45,9 @@ struct Light {
   std::string spdLabel;                         // what the file said, e.g. "D65", "blackbody:2700"
   float intensity = 1.0f;                       // lux (directional) or candela (point, spot)
   bool castsShadows = true;                     // directional and spot only
+  bool atmosphereSun = false;  // the sun of the scene's atmosphere: its SPD is the solar spectrum
+                               // at the top of the atmosphere, attenuated per point by the sky's
+                               // transmittance table (added by the loader, kept by applySun)
 };
 
 // Spectral complex index of refraction of a conductor, relative to air.
@@ -130,6 +134,17 @@ struct Water {
   float surfaceY(const Camera& camera) const { return camera.position.y + depthM; }
 };
 
+// A planet's atmosphere around the scene (techniques/atmosphere): the sky is the background,
+// the sun a directional light (Light::atmosphereSun), the sky lights the surfaces.
+struct Atmosphere {
+  atmosphere::AtmosphereParameters parameters;
+  float sunElevationDeg = 20.0f;  // above the horizon
+  float sunAzimuthDeg = 180.0f;   // 0: towards −z, 90: towards +x
+  float groundAltitudeM = 0.0f;   // height of the world's y = 0 above the ground
+  // Unit direction towards the sun (world, y up).
+  glm::vec3 sunDirection() const;
+};
+
 struct Scene {
   std::filesystem::path file;      // the scene file it was loaded from
   std::string colourSpace = "srgb";  // of every RGB value in the scene (spectral/colour_space.h)
@@ -141,6 +156,7 @@ struct Scene {
   glm::vec3 background{0.0f};  // linear RGB radiance-like colour where no geometry is, as a light colour
   float backgroundLuminance = 0.0f;  // cd/m² of a white background
   std::optional<Water> water;
+  std::optional<Atmosphere> atmosphere;  // not with water
   // A participating medium other than water, traced by the reference (reference/path_tracer.h)
   // only; not in scene files. With water, the reference traces the water as its medium.
   std::optional<HomogeneousMedium> medium;

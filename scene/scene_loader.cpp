@@ -62,7 +62,7 @@ class SceneParser {
   Scene parse(const json& root) {
     Node top(root, "", mDocument);
     top.expectObject({"$schema", "description", "colour_space", "camera", "lights", "materials",
-                      "objects", "background", "water"});
+                      "objects", "background", "water", "atmosphere"});
     for (const char* key : {"$schema", "description"})
       if (auto n = top.optionalChild(key); n && !n->json().is_string())
         n->fail("expected a string, got " + schema::describe(n->json()));
@@ -90,6 +90,11 @@ class SceneParser {
       mScene.backgroundLuminance = bg->child("luminance").numberF(Range::atLeast(0.0));
     }
     if (auto w = top.optionalChild("water")) mScene.water = water(*w);
+    if (auto a = top.optionalChild("atmosphere")) {
+      if (mScene.water) a->fail("a scene has water or an atmosphere, not both");
+      mScene.atmosphere = atmosphere(*a);
+      addSun(mScene);
+    }
     return std::move(mScene);
   }
 
@@ -114,6 +119,38 @@ class SceneParser {
       (n.has("type") ? n.child("type") : n).fail(e.what());
     }
     return w;
+  }
+
+  Atmosphere atmosphere(const Node& n) const {
+    n.expectObject({"sun", "ground_altitude", "planet_radius", "atmosphere_height", "rayleigh_scale_height",
+                    "aerosols", "turbidity", "angstrom_alpha", "mie_scale_height", "mie_albedo", "mie_g",
+                    "ozone", "ground_albedo", "multiple_scattering"});
+    Atmosphere a;
+    atmosphere::AtmosphereParameters& p = a.parameters;
+    if (auto sun = n.optionalChild("sun")) {
+      sun->expectObject({"elevation", "azimuth"});
+      a.sunElevationDeg = sun->numberF("elevation", a.sunElevationDeg, Range::closed(-90.0, 90.0));
+      a.sunAzimuthDeg = sun->numberF("azimuth", a.sunAzimuthDeg, Range::closed(-360.0, 360.0));
+    }
+    a.groundAltitudeM = n.numberF("ground_altitude", 0.0f, Range::closed(0.0, 50000.0));
+    p.bottomRadiusKm = n.number("planet_radius", p.bottomRadiusKm, Range::closed(1.0, 1e5));
+    p.topRadiusKm = p.bottomRadiusKm + n.number("atmosphere_height", p.topRadiusKm - 6360.0, Range::closed(1.0, 1000.0));
+    p.rayleighScaleHeightKm = n.number("rayleigh_scale_height", p.rayleighScaleHeightKm, Range::above(0.01));
+    p.aerosols = n.boolean("aerosols", p.aerosols);
+    p.mieAngstromBeta = n.number("turbidity", p.mieAngstromBeta, Range::closed(0.0, 5.0));
+    p.mieAngstromAlpha = n.number("angstrom_alpha", p.mieAngstromAlpha, Range::closed(-4.0, 4.0));
+    p.mieScaleHeightKm = n.number("mie_scale_height", p.mieScaleHeightKm, Range::above(0.01));
+    p.mieSingleScatteringAlbedo = n.number("mie_albedo", p.mieSingleScatteringAlbedo, Range::closed(0.0, 1.0));
+    p.miePhaseG = n.number("mie_g", p.miePhaseG, Range::open(-1.0, 1.0));
+    p.ozoneColumnDu = n.number("ozone", p.ozoneColumnDu, Range::closed(0.0, 1000.0));
+    p.groundAlbedo = n.number("ground_albedo", p.groundAlbedo, Range::closed(0.0, 1.0));
+    p.multipleScattering = n.boolean("multiple_scattering", p.multipleScattering);
+    try {
+      atmosphere::validate(p);
+    } catch (const Error& e) {
+      n.fail(e.what());
+    }
+    return a;
   }
 
   // A file named by a string node: inside the scene's folder, existing.
@@ -434,6 +471,30 @@ Spectrum normalisedLightSpectrum(const Spectrum& spd) {
   if (!(luminous > 0.0) || !std::isfinite(luminous))
     throw Error("the spectrum has no luminous power (683 lm/W · ∫ S ȳ dλ = 0 over 360–830 nm)");
   return spd * (1.0 / luminous);
+}
+
+glm::vec3 Atmosphere::sunDirection() const {
+  float e = glm::radians(sunElevationDeg), a = glm::radians(sunAzimuthDeg);
+  return glm::vec3(std::cos(e) * std::sin(a), std::sin(e), -std::cos(e) * std::cos(a));
+}
+
+void addSun(Scene& scene) {
+  Light sun;
+  sun.type = LightType::Directional;
+  Spectrum solar = atmosphere::solarIrradianceSpectrum().toDense();
+  sun.intensity = static_cast<float>(luminousIntegral(solar));  // lux above the atmosphere
+  sun.spd = normalisedLightSpectrum(solar);
+  sun.spdLabel = "sun (top of the atmosphere)";
+  sun.atmosphereSun = true;
+  scene.lights.push_back(sun);
+  applySun(scene);
+}
+
+void applySun(Scene& scene) {
+  if (!scene.atmosphere) return;
+  for (Light& light : scene.lights) {
+    if (light.atmosphereSun) light.direction = -scene.atmosphere->sunDirection();
+  }
 }
 
 void resolveWater(Water& water) {

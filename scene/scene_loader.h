@@ -40,4 +40,10 @@ Spectrum normalisedLightSpectrum(const Spectrum& spd);
 // "water", or an editor's changes to it). Error naming the type or data set when unknown.
 void resolveWater(Water& water);
 
+// The atmosphere's sun as a light (Light::atmosphereSun): the solar spectrum at the top of the
+// atmosphere, its illuminance there (about 133 klux), casting shadows; added on load.
+void addSun(Scene& scene);
+// Points the sun light along the atmosphere's sun angles again (after an editor changed them).
+void applySun(Scene& scene);
+
 }  // namespace prism

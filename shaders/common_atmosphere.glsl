@@ -4,6 +4,7 @@
 layout(std430, binding = 0) readonly buffer Atmospheres { GpuAtmosphere atmospheres[]; };
 layout(binding = 0) uniform sampler2DArray uTransmittanceLut;
 layout(binding = 1) uniform sampler2DArray uMultipleScatteringLut;
+layout(binding = 2) uniform sampler2DArray uSkyViewLut;
 
 vec4 transmittanceLutTexel(int b, int x, int y) {
   return texelFetch(uTransmittanceLut, ivec3(x, y, b), 0);
@@ -11,3 +12,4 @@ vec4 transmittanceLutTexel(int b, int x, int y) {
 vec4 multipleScatteringLutTexel(int b, int x, int y) {
   return texelFetch(uMultipleScatteringLut, ivec3(x, y, b), 0);
 }
+vec4 skyViewLutTexel(int b, int x, int y) { return texelFetch(uSkyViewLut, ivec3(x, y, b), 0); }

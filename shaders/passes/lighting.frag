@@ -12,6 +12,7 @@
 #include "shared/shadow_filter.glsl"
 #include "shared/frame_layout.glsl"
 #include "shared/underwater.glsl"
+#include "shared/atmosphere_model.glsl"
 #include "common_upsampling.glsl"
 
 layout(std430, binding = 0) readonly buffer Batches { GpuBatch batches[]; };
@@ -20,6 +21,8 @@ layout(std430, binding = 2) readonly buffer Materials { GpuMaterial materials[];
 layout(std430, binding = 3) readonly buffer LightSpectra { vec4 lightSpectra[]; };
 layout(std430, binding = 4) readonly buffer MaterialSpectra { vec4 materialSpectra[]; };
 layout(std430, binding = 5) readonly buffer WaterSpectra { vec4 waterSpectra[]; };
+layout(std430, binding = 6) readonly buffer Atmospheres { GpuAtmosphere atmospheres[]; };
+layout(std430, binding = 7) readonly buffer SkyIrradiance { vec4 skyIrradianceSh[]; };
 
 layout(binding = 0) uniform sampler2D gAlbedoMetallic;
 layout(binding = 1) uniform sampler2D gNormalRoughness;
@@ -28,6 +31,11 @@ layout(binding = 3) uniform sampler2D gDepth;
 layout(binding = 4) uniform sampler2DArray uShadowMaps;
 layout(binding = 5) uniform sampler3D uUpsamplingTable;
 layout(binding = 6) uniform sampler2D gCoefficients;  // read when uGBufferCoefficients != 0
+// The sky's tables (render/atmosphere_pass.h), read when uAtmosphere != 0.
+layout(binding = 7) uniform sampler2DArray uTransmittanceLut;
+layout(binding = 8) uniform sampler2DArray uMultipleScatteringLut;
+layout(binding = 9) uniform sampler2DArray uSkyViewLut;
+layout(binding = 10) uniform sampler2DArray uAerialPerspective;
 
 uniform int uMode;
 uniform int uBatchCount;
@@ -37,6 +45,9 @@ uniform int uWater;
 uniform int uGBufferCoefficients;
 uniform float uWaterDepth;
 uniform float uWaterSurfaceY;
+uniform int uAtmosphere;
+uniform int uAtmosphereSunLight;
+uniform float uAtmosphereOriginKm;
 uniform int uUpsamplingResolution;
 uniform int uFilteredLookup;
 uniform mat4 uInverseViewProjection;
@@ -53,6 +64,18 @@ vec4 frameMaterialSpectrum(int s, int b, int j) {
   return materialSpectra[(s * uBatchCount + b) * 2 + j];
 }
 vec4 frameWaterSpectrum(int b, int j) { return waterSpectra[b * 3 + j]; }
+GpuAtmosphere frameAtmosphere(int b) { return atmospheres[b]; }
+vec4 transmittanceLutTexel(int b, int x, int y) { return texelFetch(uTransmittanceLut, ivec3(x, y, b), 0); }
+vec4 multipleScatteringLutTexel(int b, int x, int y) {
+  return texelFetch(uMultipleScatteringLut, ivec3(x, y, b), 0);
+}
+vec4 skyViewLutTexel(int b, int x, int y) { return texelFetch(uSkyViewLut, ivec3(x, y, b), 0); }
+vec4 aerialPerspectiveTexel(int b, int x, int y, int slice, int j) {
+  return texelFetch(uAerialPerspective, ivec3(b * kAerialPerspectiveSize + x, y, j * kAerialPerspectiveSlices + slice), 0);
+}
+vec4 skyIrradianceCoefficient(int b, int k) { return skyIrradianceSh[b * 4 + k]; }
+#include "shared/atmosphere_luts.glsl"
+#include "shared/atmosphere_lighting.glsl"
 float shadowDepthAt(int layer, int x, int y) {
   return texelFetch(uShadowMaps, ivec3(x, y, layer), 0).r;
 }
@@ -67,7 +90,8 @@ vec3 upsamplingCoefficients(vec3 rgb) {
 
 void main() {
   FrameConstants fc = FrameConstants(uMode, uBatchCount, uLightCount, uShadowMapSize, uWater,
-                                     uWaterDepth, uWaterSurfaceY, uGBufferCoefficients);
+                                     uWaterDepth, uWaterSurfaceY, uGBufferCoefficients, uAtmosphere,
+                                     uAtmosphereSunLight, uAtmosphereOriginKm);
   ivec2 p = ivec2(gl_FragCoord.xy);
   uint id = texelFetch(gMaterialId, p, 0).r;
   if (id == 0u) {
@@ -86,5 +110,5 @@ void main() {
   s.metallic = am.a;
   s.roughness = nr.a;
   s.material = int(id) - 1;
-  oTristimulus = vec4(shadeSurface(fc, s, uCameraPosition), 1.0);
+  oTristimulus = vec4(shadeSurface(fc, s, uCameraPosition, (vec2(p) + 0.5) / uViewportSize), 1.0);
 }

@@ -203,53 +203,51 @@ PRISM_INLINE vec4 multipleScatteringLutValue(IN(GpuAtmosphere) a, int b, int x, 
 }
 
 // --- Sky-view table ------------------------------------------------------------------------
-// Seen from radius r: v ∈ [0, 0.5) covers zenith → horizon and (0.5, 1] horizon → nadir, both
-// squared towards the horizon (v = 0.5 is the horizon of a camera at r); u is the azimuth from
-// the sun's vertical plane, φ = π·u² (the sky is symmetric about it, and the aureole is sharp).
-PRISM_INLINE float horizonZenithAngle(IN(GpuAtmosphere) a, float r) {
-  float cosBeta = sqrt(max(r * r - a.shape.x * a.shape.x, 0.0f)) / r;
-  return kAtmospherePi - acos(clamp(cosBeta, -1.0f, 1.0f));
+// Seen from radius r, in cosines (no trigonometry: the lookups must agree on every driver):
+// v ∈ [0, 0.5) covers zenith → horizon and (0.5, 1] horizon → nadir, with the zenith cosine
+// c = c_h + (1 − c_h)·(1 − 2v)² above and c_h − (1 + c_h)·(2v − 1)² below the horizon cosine
+// c_h of a camera at r (crowded towards the horizon); u covers the azimuth from the sun's
+// vertical plane with cos φ = 1 − 2u² (φ from 0 to π; the sky is symmetric about that plane,
+// and the aureole round the sun is sharp).
+PRISM_INLINE float horizonCosine(IN(GpuAtmosphere) a, float r) {
+  return -sqrt(max(r * r - a.shape.x * a.shape.x, 0.0f)) / r;
 }
 
-struct SkyViewAngles {
-  float zenith;   // angle from the local up
-  float azimuth;  // from the sun's azimuth, [0, π]
-};
-
-PRISM_INLINE SkyViewAngles skyViewAngles(IN(GpuAtmosphere) a, float r, vec2 unit) {
-  float horizon = horizonZenithAngle(a, r);
-  SkyViewAngles angles;
+// The direction of sky-view coordinates, in the table's frame: y up, the sun in the xy plane
+// towards +x.
+PRISM_INLINE vec3 skyViewDirection(IN(GpuAtmosphere) a, float r, vec2 unit) {
+  float ch = horizonCosine(a, r);
+  float c;
   if (unit.y < 0.5f) {
-    float c = 1.0f - 2.0f * unit.y;
-    angles.zenith = horizon * (1.0f - c * c);
+    float s = 1.0f - 2.0f * unit.y;
+    c = ch + (1.0f - ch) * s * s;
   } else {
-    float c = 2.0f * unit.y - 1.0f;
-    angles.zenith = horizon + (kAtmospherePi - horizon) * c * c;
+    float s = 2.0f * unit.y - 1.0f;
+    c = ch - (1.0f + ch) * s * s;
   }
-  angles.azimuth = kAtmospherePi * unit.x * unit.x;
-  return angles;
+  float cosPhi = 1.0f - 2.0f * unit.x * unit.x;
+  float sinTheta = sqrt(max(1.0f - c * c, 0.0f));
+  float sinPhi = sqrt(max(1.0f - cosPhi * cosPhi, 0.0f));
+  return vec3(sinTheta * cosPhi, c, sinTheta * sinPhi);
 }
 
-PRISM_INLINE vec2 skyViewCoordinates(IN(GpuAtmosphere) a, float r, float zenith, float azimuth) {
-  float horizon = horizonZenithAngle(a, r);
-  float v;
-  if (zenith < horizon) {
-    v = (1.0f - sqrt(max(1.0f - zenith / horizon, 0.0f))) * 0.5f;
-  } else {
-    v = (1.0f + sqrt(max((zenith - horizon) / (kAtmospherePi - horizon), 0.0f))) * 0.5f;
-  }
-  return vec2(sqrt(clamp(azimuth / kAtmospherePi, 0.0f, 1.0f)), v);
+PRISM_INLINE vec2 skyViewCoordinates(IN(GpuAtmosphere) a, float r, float cosZenith, float cosAzimuth) {
+  float ch = horizonCosine(a, r);
+  float v = cosZenith > ch ? 0.5f * (1.0f - sqrt(max((cosZenith - ch) / (1.0f - ch), 0.0f)))
+                           : 0.5f * (1.0f + sqrt(max((ch - cosZenith) / (1.0f + ch), 0.0f)));
+  float u = sqrt(clamp((1.0f - cosAzimuth) * 0.5f, 0.0f, 1.0f));
+  return vec2(u, v);
 }
 
 // Radiance (W·m⁻²·sr⁻¹·nm⁻¹, solar irradiance applied) arriving at the camera at radius r from
-// the direction at (zenith, azimuth from the sun), sun at zenith cosine μ_s. withGround adds
-// the ground's reflection where the ray meets it.
-PRISM_INLINE vec4 skyRadiance(IN(GpuAtmosphere) a, int b, float r, float muSun, float zenith,
-                              float azimuth, bool withGround) {
+// the unit direction d of the table's frame, sun at zenith cosine μ_s. withGround adds the
+// ground's reflection where the ray meets it.
+PRISM_INLINE vec4 skyRadiance(IN(GpuAtmosphere) a, int b, float r, float muSun, IN(vec3) d,
+                              bool withGround) {
   ViewRay ray;
   ray.origin = vec3(0.0f, r, 0.0f);
   ray.sun = vec3(sqrt(max(1.0f - muSun * muSun, 0.0f)), muSun, 0.0f);
-  ray.direction = vec3(sin(zenith) * cos(azimuth), cos(zenith), sin(zenith) * sin(azimuth));
+  ray.direction = d;
   float nu = dot(ray.direction, ray.sun);
   ray.phaseRayleigh = rayleighPhase(nu);
   ray.phaseMie = miePhase(a.ozoneMie.z, nu);
@@ -266,8 +264,7 @@ PRISM_INLINE vec4 skyRadiance(IN(GpuAtmosphere) a, int b, float r, float muSun, 
 
 PRISM_INLINE vec4 skyViewLutValue(IN(GpuAtmosphere) a, int b, float r, float muSun, int x, int y) {
   vec2 unit = vec2(float(x) / float(kSkyViewLutWidth - 1), float(y) / float(kSkyViewLutHeight - 1));
-  SkyViewAngles angles = skyViewAngles(a, r, unit);
-  return skyRadiance(a, b, r, muSun, angles.zenith, angles.azimuth, true);
+  return skyRadiance(a, b, r, muSun, skyViewDirection(a, r, unit), true);
 }
 
 // --- Aerial perspective --------------------------------------------------------------------

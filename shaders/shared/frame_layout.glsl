@@ -54,6 +54,9 @@ struct FrameConstants {
   float waterDepthM;  // the camera's depth below the water surface
   float waterSurfaceY;  // world height of the water surface (m)
   int gbufferCoefficients;  // 1: the G-buffer holds Jakob–Hanika coefficients (upsamplingCoefficients reads them)
+  int atmosphere;           // 1: the scene has a sky (atmosphere_lighting.glsl; frameAtmosphere(b))
+  int atmosphereSunLight;   // index of the light that is the atmosphere's sun
+  float atmosphereOriginKm; // distance of the world's origin from the planet's centre
 };
 
 struct SurfaceSample {

@@ -9,6 +9,8 @@
 //   float shadowDepthAt(int layer, int x, int y);    (x, y already clamped to the map)
 //   vec3 upsamplingCoefficients(vec3 rgb);           (Jakob–Hanika table lookup)
 //   vec4 frameWaterSpectrum(int b, int j);           (σs, σt, Kd; only read under water)
+//   GpuAtmosphere frameAtmosphere(int b);            (only read with a sky), and the tables'
+//   accessors of atmosphere_luts.glsl and atmosphere_lighting.glsl
 //
 // Under water (fc.water != 0, underwater.glsl) a directional light is the sun above the
 // surface: its irradiance at a point is attenuated by e^(−Kd·depth), and it single-scatters into
@@ -16,11 +18,17 @@
 // their distance r (and add no in-scattering: the model's is the sun's). What the camera sees at
 // distance S is then surface radiance · e^(−σt·S) + the sun's in-scattering over S.
 //
+// With a sky (fc.atmosphere != 0, atmosphere_lighting.glsl) the background is the sky-view
+// table and the sun's disc; the light that is the sun is attenuated by the sun's transmittance
+// to the shaded point; the sky adds its irradiance through the diffuse part of the surface
+// ((1 − metallic)·albedo/π, conductors none; no occlusion: the sky is not shadowed); and the
+// aerial-perspective volume fogs what the camera sees: L·T + S.
+//
 // Loop order: per light, the wavelength-independent terms (incidence, shadow, D·G) once; then
 // per batch the albedo spectrum once and every light's contribution, accumulated straight into
 // tristimulus through the batch's integration matrix (integration is linear, so the order of
 // lights and batches does not matter).
-// Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl underwater.glsl pixel_shading_accessors.glsl
+// Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl underwater.glsl atmosphere_model.glsl pixel_shading_accessors.glsl atmosphere_luts_accessors.glsl atmosphere_luts.glsl atmosphere_lighting_accessors.glsl atmosphere_lighting.glsl
 
 // m·(p, 1), summed column by column in this order on both sides: a built-in mat4 × vec4 is
 // free to sum in another order (and to fuse), and shadow-map weights amplify the difference.
@@ -89,6 +97,12 @@ PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, 
              sunIrradianceAtSurface(fc, b);
 }
 
+// Unit direction towards the atmosphere's sun.
+PRISM_INLINE vec3 atmosphereSun(IN(FrameConstants) fc) {
+  GpuLight sun = frameLight(fc.atmosphereSunLight);
+  return -vec3(sun.directionIntensity.x, sun.directionIntensity.y, sun.directionIntensity.z);
+}
+
 // Tristimulus of the background (pixels where no geometry is), seen towards farPoint (a point
 // on the far plane, which gives the view direction). Under water the view ray crosses the water
 // to where it leaves it at the surface (looking up) and the background shows through what is
@@ -104,13 +118,18 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
   for (int b = 0; b < fc.batchCount; ++b) {
     vec4 radiance = frameLightSpectrum(fc.lightCount, b);
     if (fc.water != 0) radiance = throughWater(fc, b, radiance, viewDir, distanceM);
+    if (fc.atmosphere != 0) {
+      radiance = skyBackground(frameAtmosphere(b), b, planetPosition(fc.atmosphereOriginKm, cameraPosition),
+                               viewDir, atmosphereSun(fc));
+    }
     tristimulus += integrateBatch(frameBatch(b), radiance);
   }
   return tristimulus;
 }
 
+// uv: the pixel's centre in [0, 1]² (the aerial-perspective volume's screen coordinates).
 PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
-                               IN(vec3) cameraPosition) {
+                               IN(vec3) cameraPosition, IN(vec2) uv) {
   PRISM_PRECISE vec3 v = normalize(cameraPosition - s.position);
   GpuMaterial material = frameMaterial(s.material);
   int kind = int(material.roughnessKind.y + 0.5f);
@@ -162,9 +181,13 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     bool spectralConductor = kind == kMaterialConductor && fc.mode != kModeRgb;
     float metallic = kind == kMaterialConductor ? 1.0f : s.metallic;
     vec4 radiance = vec4(0.0f);
+    vec3 pointKm = planetPosition(fc.atmosphereOriginKm, s.position);
     for (int l = 0; l < fc.lightCount; ++l) {
       vec4 reflection = surfaceReflection(terms[l], spectralConductor, albedo, conductorK, metallic);
       vec4 arriving = frameLightSpectrum(l, b) * irradiance[l];
+      if (fc.atmosphere != 0 && l == fc.atmosphereSunLight && irradiance[l] > 0.0f) {
+        arriving *= sunTransmittanceTo(frameAtmosphere(b), b, pointKm, atmosphereSun(fc));
+      }
       if (fc.water != 0) {
         bool sun = int(frameLight(l).positionType.w + 0.5f) == kLightDirectional;
         arriving *= sun ? downwellingAttenuation(frameWaterSpectrum(b, 2), waterPathM[l])
@@ -176,6 +199,13 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
       PRISM_PRECISE vec3 fromCamera = s.position - cameraPosition;
       float distanceM = length(fromCamera);
       radiance = throughWater(fc, b, radiance, fromCamera / distanceM, distanceM);
+    }
+    if (fc.atmosphere != 0) {
+      if (kind != kMaterialConductor) {
+        radiance += albedo * (1.0f - metallic) * skyIrradiance(b, s.normal) * (1.0f / kAtmospherePi);
+      }
+      AerialPerspective ap = aerialPerspectiveAt(b, uv, length(s.position - cameraPosition) * 1e-3f);
+      radiance = radiance * ap.transmittance + ap.inScattering;
     }
     tristimulus += integrateBatch(batch, radiance);
   }

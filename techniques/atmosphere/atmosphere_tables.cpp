@@ -1,5 +1,8 @@
 #include "techniques/atmosphere/atmosphere_tables.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "spectral/parallel_for.h"
 
 namespace prism::shared {
@@ -72,15 +75,17 @@ std::vector<glm::vec4> computeSkyView(const AtmosphereTables& tables, float rKm,
 glm::vec4 skyRadiance(const AtmosphereTables& tables, float rKm, float muSun, float zenith,
                       float azimuth, bool withGround) {
   AtmosphereTablesKernel kernel(tables);
-  return kernel.skyRadiance(tables.atmosphere, 0, rKm, muSun, zenith, azimuth, withGround);
+  glm::vec3 d(std::sin(zenith) * std::cos(azimuth), std::cos(zenith), std::sin(zenith) * std::sin(azimuth));
+  return kernel.skyRadiance(tables.atmosphere, 0, rKm, muSun, d, withGround);
 }
 
 SkyViewDirection skyViewTexelDirection(const shared::GpuAtmosphere& atmosphere, float rKm, int x, int y) {
   AtmosphereTables none;
   AtmosphereTablesKernel kernel(none);
   glm::vec2 unit(float(x) / float(shared::kSkyViewLutWidth - 1), float(y) / float(shared::kSkyViewLutHeight - 1));
-  AtmosphereTablesKernel::SkyViewAngles a = kernel.skyViewAngles(atmosphere, rKm, unit);
-  return {a.zenith, a.azimuth};
+  glm::vec3 d = kernel.skyViewDirection(atmosphere, rKm, unit);
+  return {static_cast<float>(std::acos(std::clamp(double(d.y), -1.0, 1.0))),
+          static_cast<float>(std::atan2(double(d.z), double(d.x)))};
 }
 
 glm::vec4 sunTransmittance(const AtmosphereTables& tables, float rKm, float muSun) {

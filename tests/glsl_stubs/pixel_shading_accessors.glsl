@@ -10,3 +10,6 @@ vec4 frameMaterialSpectrum(int s, int b, int j) { return vec4(s + b + j); }
 float shadowDepthAt(int layer, int x, int y) { return float(layer + x + y); }
 vec3 upsamplingCoefficients(vec3 rgb) { return rgb; }
 vec4 frameWaterSpectrum(int b, int j) { return vec4(b + j); }
+GpuAtmosphere frameAtmosphere(int b) {
+  return GpuAtmosphere(vec4(b), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+}

@@ -1,0 +1,121 @@
+// What the sky gives a surface scene, per batch, from the tables of atmosphere_luts.glsl: the
+// background (the sky-view table, and the sun's disc), the sun's transmittance to a point (the
+// directional light that is the sun is the solar spectrum at the top of the atmosphere), the
+// sky's irradiance on a surface (the sky-view table projected on spherical harmonics of order 1,
+// Ramamoorthi & Hanrahan's clamped-cosine convolution), and the aerial-perspective volume
+// (in-scattering and transmittance per froxel: 32 × 32 screen columns × 32 slices crowded
+// towards the camera, D_k = 32 km·((k + 1)/32)²).
+//
+// Frames. The world's y is up and its origin lies `originKm` from the planet's centre (the
+// planet's radius plus the ground's altitude), so a world point p (metres) is
+// (p.x, originKm·1000 + p.y, p.z)/1000 in the planet's frame; the scene is small beside the
+// planet, so "up" is the world's y everywhere in it.
+//
+// Each side defines, besides the accessors of atmosphere_luts.glsl:
+//   vec4 skyViewLutTexel(int b, int x, int y);
+//   vec4 aerialPerspectiveTexel(int b, int x, int y, int slice, int j);  j 0: in-scattering, 1: transmittance
+//   vec4 skyIrradianceCoefficient(int b, int k);                          k = 0..3 (see below)
+// Requires: atmosphere_model.glsl atmosphere_luts_accessors.glsl atmosphere_luts.glsl atmosphere_lighting_accessors.glsl
+
+PRISM_INLINE vec3 planetPosition(float originKm, IN(vec3) worldM) {
+  return vec3(worldM.x * 1e-3f, originKm + worldM.y * 1e-3f, worldM.z * 1e-3f);
+}
+
+// The sky-view table's coordinates of a unit world direction d, for a viewer whose up is y.
+PRISM_INLINE vec4 skyViewLookup(IN(GpuAtmosphere) a, int b, float r, IN(vec3) d, IN(vec3) sun) {
+  vec2 dh = vec2(d.x, d.z);
+  vec2 sh = vec2(sun.x, sun.z);
+  float dl = length(dh), sl = length(sh);
+  float cosAzimuth = dl > 1e-6f && sl > 1e-6f ? dot(dh, sh) / (dl * sl) : 1.0f;
+  vec2 unit = skyViewCoordinates(a, r, d.y, cosAzimuth);
+  int x0, y0;
+  float fx = texelCentreCoordinate(unit.x, kSkyViewLutWidth, x0);
+  float fy = texelCentreCoordinate(unit.y, kSkyViewLutHeight, y0);
+  vec4 bottom = mix(skyViewLutTexel(b, x0, y0), skyViewLutTexel(b, x0 + 1, y0), fx);
+  vec4 top = mix(skyViewLutTexel(b, x0, y0 + 1), skyViewLutTexel(b, x0 + 1, y0 + 1), fx);
+  return mix(bottom, top, fy);
+}
+
+// The sun's transmittance from space to a planet-frame point.
+PRISM_INLINE vec4 sunTransmittanceTo(IN(GpuAtmosphere) a, int b, IN(vec3) p, IN(vec3) sun) {
+  float r = length(p);
+  return transmittanceToSpace(a, b, r, dot(p, sun) / r);
+}
+
+// Radiance of the sky seen from planet-frame point `camera` along d: the sky-view table, plus
+// the sun's disc (its irradiance spread evenly over its solid angle, transmitted to the camera).
+PRISM_INLINE vec4 skyBackground(IN(GpuAtmosphere) a, int b, IN(vec3) camera, IN(vec3) d, IN(vec3) sun) {
+  float r = length(camera);
+  vec4 radiance = skyViewLookup(a, b, r, d, sun);
+  float angularRadius = a.options.y;
+  if (dot(d, sun) > cos(angularRadius) && !rayIntersectsGround(a, r, d.y)) {
+    float solidAngle = kAtmospherePi * angularRadius * angularRadius;
+    radiance += a.solarIrradiance * sunTransmittanceTo(a, b, camera, sun) / solidAngle;
+  }
+  return radiance;
+}
+
+// Coefficient k of the sky's radiance on the real spherical harmonics of order ≤ 1 (k = 0: Y₀₀;
+// 1, 2, 3: Y₁₋₁, Y₁₀, Y₁₁ ∝ y, z, x), integrated over 32 × 64 directions of the sky-view table.
+PRISM_INLINE vec4 skyIrradianceCoefficientValue(IN(GpuAtmosphere) a, int b, float r, IN(vec3) sun, int k) {
+  const int zeniths = 32, azimuths = 64;
+  vec4 sum = vec4(0.0f);
+  for (int i = 0; i < zeniths; ++i) {
+    float theta = (float(i) + 0.5f) / float(zeniths) * kAtmospherePi;
+    for (int j = 0; j < azimuths; ++j) {
+      float phi = (float(j) + 0.5f) / float(azimuths) * 2.0f * kAtmospherePi;
+      vec3 d = vec3(sin(theta) * cos(phi), cos(theta), sin(theta) * sin(phi));
+      float basis = k == 0 ? 0.282095f : 0.488603f * (k == 1 ? d.y : (k == 2 ? d.z : d.x));
+      float solidAngle = sin(theta) * (kAtmospherePi / float(zeniths)) * (2.0f * kAtmospherePi / float(azimuths));
+      sum += skyViewLookup(a, b, r, d, sun) * (basis * solidAngle);
+    }
+  }
+  return sum;
+}
+
+// Irradiance on a surface of unit normal n from the whole sky (sun excluded: it is a light).
+PRISM_INLINE vec4 skyIrradiance(int b, IN(vec3) n) {
+  vec4 e = skyIrradianceCoefficient(b, 0) * (kAtmospherePi * 0.282095f) +
+           (skyIrradianceCoefficient(b, 1) * n.y + skyIrradianceCoefficient(b, 2) * n.z +
+            skyIrradianceCoefficient(b, 3) * n.x) *
+               (2.0f * kAtmospherePi / 3.0f * 0.488603f);
+  return max(e, vec4(0.0f));
+}
+
+// --- The aerial-perspective volume -----------------------------------------------------------
+struct AerialPerspective {
+  vec4 inScattering;   // radiance added between the camera and the point
+  vec4 transmittance;  // of the point's radiance
+};
+
+// The volume is built by aerialPerspectiveSlice (atmosphere_luts.glsl), column x of the screen
+// at u = x/31 (texel centres span [0, 1], as every table here).
+// The volume at screen position uv ∈ [0, 1]² and distance distanceKm from the camera: trilinear
+// on texel centres in x, y; in depth, between slices (and towards nothing at distance 0).
+PRISM_INLINE AerialPerspective aerialPerspectiveAt(int b, IN(vec2) uv, float distanceKm) {
+  int x0, y0;
+  float fx = texelCentreCoordinate(uv.x, kAerialPerspectiveSize, x0);
+  float fy = texelCentreCoordinate(uv.y, kAerialPerspectiveSize, y0);
+  float w = sqrt(max(distanceKm, 0.0f) / kAerialPerspectiveMaxKm) * float(kAerialPerspectiveSlices);
+  w = min(w, float(kAerialPerspectiveSlices));
+  int s1 = min(int(floor(w)), kAerialPerspectiveSlices - 1);  // slice whose end is past w
+  float fs = w - float(s1);
+  AerialPerspective ap;
+  vec4 v[2];
+  for (int j = 0; j < 2; ++j) {
+    vec4 far = mix(mix(aerialPerspectiveTexel(b, x0, y0, s1, j), aerialPerspectiveTexel(b, x0 + 1, y0, s1, j), fx),
+                   mix(aerialPerspectiveTexel(b, x0, y0 + 1, s1, j), aerialPerspectiveTexel(b, x0 + 1, y0 + 1, s1, j), fx),
+                   fy);
+    vec4 near = vec4(j == 0 ? 0.0f : 1.0f);
+    if (s1 > 0) {
+      int s0 = s1 - 1;
+      near = mix(mix(aerialPerspectiveTexel(b, x0, y0, s0, j), aerialPerspectiveTexel(b, x0 + 1, y0, s0, j), fx),
+                 mix(aerialPerspectiveTexel(b, x0, y0 + 1, s0, j), aerialPerspectiveTexel(b, x0 + 1, y0 + 1, s0, j), fx),
+                 fy);
+    }
+    v[j] = mix(near, far, fs);
+  }
+  ap.inScattering = v[0];
+  ap.transmittance = v[1];
+  return ap;
+}

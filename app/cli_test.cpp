@@ -256,7 +256,21 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
   std::string index = slurp(dir / "gallery" / "index.html");
   EXPECT_NE(index.find("spheres_d65_spectral.png"), std::string::npos);
   EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / "textured_gltf_rgb.png"));
+  for (const char* sky : {"sunset_rgb.png", "sunset_optimised4.png", "sunset_reference.png"}) {
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / sky)) << sky;
+  }
   EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / "colorchecker.png"));
+}
+
+TEST(Cli, AtmosphereCommandsCheckTheirInput) {
+  expectOneLineError("atmosphere evaluate --zeniths 0", "--zeniths must be within 1..512");
+  expectOneLineError("atmosphere evaluate --reference-step 100", "reference step 100 nm must be within 0.5..50");
+  expectOneLineError("atmosphere evaluate --wavelengths missing.json", "missing.json: cannot open");
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "atmosphere_input";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "bad.json") << R"({"sets": {"aerosols": {"lambda_nm": [300, 500, 600, 700], "weights_nm": [1, 1, 1, 1]}}})";
+  expectOneLineError("atmosphere evaluate --quick --wavelengths " + (dir / "bad.json").string(),
+                     "sets.aerosols.lambda_nm[0] is outside 360..830 nm");
 }
 
 TEST(Cli, ReferenceAndCompareCheckTheirInput) {
@@ -271,6 +285,7 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("reference " + scene + " -o x.exr --camera cie1964", "not a camera");
   expectOneLineError("reference " + scene + " -o x.exr --range 300,700", "360–830");
   expectOneLineError("reference " + scene + " -o x.exr --set lights.0.intensity=-1", "/lights/0/intensity");
+  expectOneLineError("reference " + scenes + "/sunset.json -o x.exr", "does not trace the atmosphere");
 
   std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "compare_input";
   std::filesystem::create_directories(dir);

@@ -27,7 +27,10 @@ namespace {
 struct Entry {
   std::string name;
   std::string description;
-  imaging::DifferenceStats difference;
+  imaging::DifferenceStats difference;  // RGB vs spectral (sky scenes: RGB-3 vs the reference)
+  // Scenes with a sky: RGB-3, optimised-4 and the reference side by side.
+  bool sky = false;
+  imaging::DifferenceStats optimisedDifference;  // optimised-4 vs the reference
 };
 
 std::string htmlEscape(const std::string& text) {
@@ -82,14 +85,34 @@ std::string indexHtml(const std::vector<Entry>& entries, const GalleryOptions& o
                    "accumulated, CIE 1931). ΔE00 is CIEDE2000 between the two, in XYZ before the display "
                    "transform, relative to the exposure's white (1.2·2^EV100 cd/m²).</p>\n",
                    o.width, o.height, o.wavelengths, o.frames);
+  h << "<p>Scenes under the spectral sky are rendered three ways instead: RGB-3 (680, 550, 440 nm as R, G, "
+       "B), the four optimised wavelengths (optimised4) and the reference (472 wavelengths), one frame each "
+       "(all deterministic), with ΔE00 of the first two against the reference.</p>\n";
   h << "<table><tr><th>scene</th><th>mean ΔE00</th><th>p95</th><th>max</th></tr>\n";
+  auto row = [&](const std::string& name, const std::string& label, const imaging::DifferenceStats& d) {
+    h << fmt::format("<tr><td><a href=\"#{0}\">{1}</a></td><td>{2:.2f}</td><td>{3:.2f}</td>"
+                     "<td>{4:.2f}</td></tr>\n", name, label, d.meanDeltaE, d.p95DeltaE, d.maxDeltaE);
+  };
   for (const Entry& e : entries) {
-    h << fmt::format("<tr><td><a href=\"#{0}\">{0}</a></td><td>{1:.2f}</td><td>{2:.2f}</td>"
-                     "<td>{3:.2f}</td></tr>\n", e.name, e.difference.meanDeltaE,
-                     e.difference.p95DeltaE, e.difference.maxDeltaE);
+    if (e.sky) {
+      row(e.name, e.name + ": RGB-3 vs reference", e.difference);
+      row(e.name, e.name + ": optimised4 vs reference", e.optimisedDifference);
+    } else {
+      row(e.name, e.name, e.difference);
+    }
   }
   h << "</table>\n";
   for (const Entry& e : entries) {
+    if (e.sky) {
+      h << fmt::format("<section id=\"{0}\"><h2>{0}</h2><p>{1}</p>\n"
+                       "<figure><img src=\"{0}_rgb.png\" alt=\"{0}, RGB-3\"><figcaption>RGB-3</figcaption></figure>\n"
+                       "<figure><img src=\"{0}_optimised4.png\" alt=\"{0}, optimised4\"><figcaption>optimised4"
+                       "</figcaption></figure>\n"
+                       "<figure><img src=\"{0}_reference.png\" alt=\"{0}, reference\"><figcaption>reference"
+                       "</figcaption></figure></section>\n",
+                       e.name, htmlEscape(e.description));
+      continue;
+    }
     h << fmt::format("<section id=\"{0}\"><h2>{0}</h2><p>{1}</p>\n"
                      "<figure><img src=\"{0}_rgb.png\" alt=\"{0} in RGB mode\"><figcaption>RGB"
                      "</figcaption></figure>\n"
@@ -140,22 +163,45 @@ void runGallery(const GalleryOptions& o) {
     renderer.renderFrame();
     imaging::PngImage rgb = display(renderer, o.width, o.height);
     imaging::FloatImage rgbXyz = tristimulus(renderer, o.width, o.height);
-    settings.mode = render::RenderMode::JakobHanika;
-    settings.sampling.strategy = SamplingStrategy::Rotated;
-    renderer.setSettings(settings);
-    for (int f = 0; f < o.frames; ++f) renderer.renderFrame();
-    imaging::PngImage spectral = display(renderer, o.width, o.height);
-    imaging::FloatImage spectralXyz = tristimulus(renderer, o.width, o.height);
     Entry e;
     e.name = files[i].stem().string();
     e.description = description(files[i]);
     // In XYZ before the display transform, relative to the exposure's white: dither and tone
     // mapping are not differences between the modes.
     double white = render::displayWhiteLuminance(scene.camera.ev100);
-    e.difference = imaging::compareImages(
-                       imaging::linearInput(spectralXyz, imaging::ColourMeaning::Xyz, white),
-                       imaging::linearInput(rgbXyz, imaging::ColourMeaning::Xyz, white))
-                       .stats;
+    auto difference = [&](const imaging::FloatImage& test, const imaging::FloatImage& reference) {
+      return imaging::compareImages(imaging::linearInput(test, imaging::ColourMeaning::Xyz, white),
+                                    imaging::linearInput(reference, imaging::ColourMeaning::Xyz, white))
+          .stats;
+    };
+    if (scene.atmosphere) {
+      e.sky = true;
+      settings.mode = render::RenderMode::Optimised4;
+      renderer.setSettings(settings);
+      renderer.renderFrame();
+      imaging::PngImage optimised = display(renderer, o.width, o.height);
+      imaging::FloatImage optimisedXyz = tristimulus(renderer, o.width, o.height);
+      settings.mode = render::RenderMode::Reference;
+      renderer.setSettings(settings);
+      renderer.renderFrame();
+      imaging::PngImage reference = display(renderer, o.width, o.height);
+      imaging::FloatImage referenceXyz = tristimulus(renderer, o.width, o.height);
+      e.difference = difference(rgbXyz, referenceXyz);
+      e.optimisedDifference = difference(optimisedXyz, referenceXyz);
+      rgb.write(o.output / (e.name + "_rgb.png"));
+      optimised.write(o.output / (e.name + "_optimised4.png"));
+      reference.write(o.output / (e.name + "_reference.png"));
+      entries.push_back(std::move(e));
+      bar.update(i + 1, files.size());
+      continue;
+    }
+    settings.mode = render::RenderMode::JakobHanika;
+    settings.sampling.strategy = SamplingStrategy::Rotated;
+    renderer.setSettings(settings);
+    for (int f = 0; f < o.frames; ++f) renderer.renderFrame();
+    imaging::PngImage spectral = display(renderer, o.width, o.height);
+    imaging::FloatImage spectralXyz = tristimulus(renderer, o.width, o.height);
+    e.difference = difference(spectralXyz, rgbXyz);
     rgb.write(o.output / (e.name + "_rgb.png"));
     spectral.write(o.output / (e.name + "_spectral.png"));
     entries.push_back(std::move(e));
@@ -164,6 +210,13 @@ void runGallery(const GalleryOptions& o) {
   writeFileAtomically(o.output / "index.html", indexHtml(entries, o));
   fmt::print("{:<24} {:>10} {:>8} {:>8}\n", "scene (RGB vs spectral)", "mean ΔE00", "p95", "max");
   for (const Entry& e : entries) {
+    if (e.sky) {
+      fmt::print("{:<24} {:>10.2f} {:>8.2f} {:>8.2f}\n", e.name + " RGB-3 vs ref", e.difference.meanDeltaE,
+                 e.difference.p95DeltaE, e.difference.maxDeltaE);
+      fmt::print("{:<24} {:>10.2f} {:>8.2f} {:>8.2f}\n", e.name + " opt4 vs ref", e.optimisedDifference.meanDeltaE,
+                 e.optimisedDifference.p95DeltaE, e.optimisedDifference.maxDeltaE);
+      continue;
+    }
     fmt::print("{:<24} {:>10.2f} {:>8.2f} {:>8.2f}\n", e.name, e.difference.meanDeltaE,
                e.difference.p95DeltaE, e.difference.maxDeltaE);
   }

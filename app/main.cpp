@@ -177,7 +177,7 @@ int main(int argc, char** argv) {
     }
     cmd->add_option("--range", range, "MIN,MAX nm of the sampled wavelengths (within 360–830)");
     cmd->add_option("--strategy", o.strategy, "uniform, stratified, rotated or importance")->capture_default_str();
-    cmd->add_option("--mode", o.mode, "rgb, naive, jakob-hanika or reference")->capture_default_str();
+    cmd->add_option("--mode", o.mode, "rgb, naive, jakob-hanika, reference or optimised4 (the sky's four wavelengths)")->capture_default_str();
     cmd->add_option("--observer", o.observer, "cie1931, cie1964 or a camera")->capture_default_str();
     cmd->add_option("--camera", o.camera, "a camera as the observer (raw camera RGB, fitted matrix for display)");
     cmd->add_option("--lookup", o.lookup, "upsampling table lookup: filtered or manual")->capture_default_str();

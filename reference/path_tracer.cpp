@@ -494,6 +494,11 @@ void validate(const ReferenceSettings& s) {
 ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& table,
                                const ReferenceSettings& settings, const ReferenceProgress& progress) {
   validate(settings);
+  if (scene.atmosphere) {
+    throw Error(fmt::format("{}: the path tracer does not trace the atmosphere; its references are "
+                            "`prism atmosphere evaluate` and `prism render --mode reference`",
+                            scene.file.string()));
+  }
   PathTracer tracer(scene, table, settings);
   const int width = settings.width, height = settings.height;
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);

@@ -471,5 +471,39 @@ TEST_F(SceneFolder, WaterIsAJerlovTypeAtADepthWithItsMultipliers) {
                          f.string() + ": /water/salinity: unknown key (set on the command line) (allowed: "));
 }
 
+TEST_F(SceneFolder, AtmosphereAddsTheSunAsALightAndChecksItsParameters) {
+  fs::path f = write("sky.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "objects": [],
+    "atmosphere": {"sun": {"elevation": 30, "azimuth": 90}, "turbidity": 0.02, "ozone": 350, "ground_altitude": 500}})");
+  Scene s = loadScene(f);
+  ASSERT_TRUE(s.atmosphere);
+  EXPECT_DOUBLE_EQ(s.atmosphere->parameters.mieAngstromBeta, 0.02);
+  EXPECT_DOUBLE_EQ(s.atmosphere->parameters.ozoneColumnDu, 350.0);
+  EXPECT_FLOAT_EQ(s.atmosphere->groundAltitudeM, 500.0f);
+  ASSERT_EQ(s.lights.size(), 1u);
+  const Light& sun = s.lights[0];
+  EXPECT_TRUE(sun.atmosphereSun);
+  // Towards +x (azimuth 90°), 30° up; the light travels the other way.
+  EXPECT_NEAR(sun.direction.x, -std::cos(glm::radians(30.0f)), 1e-6);
+  EXPECT_NEAR(sun.direction.y, -0.5f, 1e-6);
+  EXPECT_NEAR(sun.direction.z, 0.0f, 1e-6);
+  // The solar constant's visible part: ASTM G-173's extraterrestrial spectrum gives about 133 klux.
+  EXPECT_NEAR(sun.intensity, 1.33e5f, 0.03e5f);
+  EXPECT_NEAR(luminousIntegral(sun.spd), 1.0, 1e-9);
+  // applySun follows edits of the angles.
+  s.atmosphere->sunElevationDeg = 90.0f;
+  applySun(s);
+  EXPECT_NEAR(s.lights[0].direction.y, -1.0f, 1e-6);
+
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.sun.elevation=95"}); }),
+            f.string() + ": /atmosphere/sun/elevation: expected a number in [-90, 90], got 95");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.mie_g=1"}); }),
+            f.string() + ": /atmosphere/mie_g: expected a number in (-1, 1), got 1");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"atmosphere.humidity=3"}); }),
+                         f.string() + ": /atmosphere/humidity: unknown key (set on the command line) (allowed: "));
+  fs::path both = write("both.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "objects": [],
+    "water": {"type": "I"}, "atmosphere": {}})");
+  EXPECT_EQ(errorOf([&] { loadScene(both); }), both.string() + ": /atmosphere: a scene has water or an atmosphere, not both");
+}
+
 }  // namespace
 }  // namespace prism

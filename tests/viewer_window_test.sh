@@ -3,7 +3,8 @@
 # - the window's screenshots (PNG, interface included) in RGB and in spectral mode differ over a
 #   share of the window, and two of one mode two frames apart do not;
 # - the left view's tristimulus (EXR) in the two modes differ by the renderer's own measure;
-# - the split view's heat map compares the two modes and finds them apart.
+# - the split view's heat map compares the two modes and finds them apart;
+# - under the spectral sky, moving the sun (the sky panel's setting) changes the view.
 # Usage: viewer_window_test.sh PRISM SCENES_DIR SCRATCH_DIR
 set -euo pipefail
 prism=$1 scenes=$2 scratch=$3
@@ -52,3 +53,18 @@ echo "left view's tristimulus, RGB vs spectral: mean ΔE00 $views; the split vie
 [ -n "$same" ] && [ -n "$changed" ] && [ -n "$views" ] && [ -n "$heat" ]
 # The gallery measures 6 mean ΔE00 between the modes in this scene: the viewer must see it too.
 awk -v s="$same" -v c="$changed" -v v="$views" -v h="$heat" 'BEGIN { exit !(s < 1.0 && c > 5.0 && v > 3.0 && h > 3.0) }'
+
+# The sky: the sun from 3° to 30° above the horizon, in optimised4 mode.
+cat >"$scratch/sky_script" <<SCRIPT
+set mode optimised4
+frames 2
+screenshot $scratch/sky_low.exr
+set sky.elevation 30
+frames 2
+screenshot $scratch/sky_high.exr
+SCRIPT
+xvfb-run -a -s "-screen 0 1024x768x24" "$prism" view "$scenes/sunset.json" --width 480 --height 270 \
+  --script "$scratch/sky_script"
+sky=$(mean "$scratch/sky_low.exr" "$scratch/sky_high.exr")
+echo "sunset, sun at 3° vs 30°: mean ΔE00 $sky"
+[ -n "$sky" ] && awk -v d="$sky" 'BEGIN { exit !(d > 3.0) }'

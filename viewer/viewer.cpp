@@ -415,7 +415,8 @@ class Viewer {
                                              {{render::RenderMode::Rgb, "rgb"},
                                               {render::RenderMode::Naive, "naive"},
                                               {render::RenderMode::JakobHanika, "jakob-hanika"},
-                                              {render::RenderMode::Reference, "reference (472 wavelengths)"}});
+                                              {render::RenderMode::Reference, "reference (472 wavelengths)"},
+                                              {render::RenderMode::Optimised4, "optimised4 (sky's 4 wavelengths)"}});
     int count = s.sampling.count;
     if (ImGui::SliderInt("wavelengths", &count, 4, 256)) {
       s.sampling.count = std::max(4, count / 4 * 4);
@@ -543,6 +544,7 @@ class Viewer {
     if (ImGui::CollapsingHeader("Lights")) lightsPanel();
     if (ImGui::CollapsingHeader("Materials")) materialsPanel();
     if (mScene.water && ImGui::CollapsingHeader("Water")) waterPanel();
+    if (mScene.atmosphere && ImGui::CollapsingHeader("Sky")) skyPanel();
     if (ImGui::CollapsingHeader("Display")) displayPanel();
     if (ImGui::CollapsingHeader("Files")) filesPanel();
     ImGui::End();
@@ -649,6 +651,43 @@ class Viewer {
     changed |= ImGui::SliderFloat("absorption x", &w.absorptionScale, 0.0f, 4.0f);
     changed |= ImGui::SliderFloat("Kd x", &w.kdScale, 0.0f, 4.0f);
     if (changed) applyWater();
+  }
+
+  // The sun and the atmosphere (issue #8): every change recomputes the sky's tables next frame.
+  void skyPanel() {
+    Atmosphere& a = *mScene.atmosphere;
+    atmosphere::AtmosphereParameters& p = a.parameters;
+    bool changed = ImGui::SliderFloat("sun elevation deg", &a.sunElevationDeg, -10.0f, 90.0f, "%.1f");
+    changed |= ImGui::SliderFloat("sun azimuth deg", &a.sunAzimuthDeg, -180.0f, 180.0f, "%.0f");
+    ImGui::TextUnformatted("strategy: the mode above (rgb = RGB-3, optimised4, jakob-hanika, reference)");
+    float groundKm = a.groundAltitudeM * 1e-3f;
+    if (ImGui::SliderFloat("ground altitude km", &groundKm, 0.0f, 20.0f, "%.2f")) {
+      a.groundAltitudeM = groundKm * 1e3f;
+      changed = true;
+    }
+    auto slider = [&](const char* label, double& value, float lo, float hi, const char* format) {
+      float v = static_cast<float>(value);
+      if (!ImGui::SliderFloat(label, &v, lo, hi, format)) return false;
+      value = v;
+      return true;
+    };
+    changed |= slider("Rayleigh at 1 um /km", p.rayleighScatteringPerKm, 0.0f, 5e-3f, "%.5f");
+    changed |= slider("Rayleigh scale height km", p.rayleighScaleHeightKm, 1.0f, 20.0f, "%.1f");
+    changed |= ImGui::Checkbox("aerosols", &p.aerosols);
+    changed |= slider("turbidity (AOD at 1 um)", p.mieAngstromBeta, 0.0f, 0.5f, "%.4f");
+    changed |= slider("Angstrom alpha", p.mieAngstromAlpha, -1.0f, 3.0f, "%.2f");
+    changed |= slider("Mie scale height km", p.mieScaleHeightKm, 0.2f, 5.0f, "%.2f");
+    changed |= slider("Mie albedo", p.mieSingleScatteringAlbedo, 0.0f, 1.0f, "%.2f");
+    changed |= slider("Mie g", p.miePhaseG, -0.95f, 0.95f, "%.2f");
+    changed |= slider("ozone DU", p.ozoneColumnDu, 0.0f, 600.0f, "%.0f");
+    changed |= slider("ground albedo", p.groundAlbedo, 0.0f, 1.0f, "%.2f");
+    changed |= ImGui::Checkbox("multiple scattering", &p.multipleScattering);
+    if (changed) applySky();
+  }
+
+  void applySky() {
+    applySun(mScene);
+    mSceneChanged = true;
   }
 
   void applyWater() {
@@ -816,6 +855,24 @@ class Viewer {
       mSceneChanged = true;
       return;
     }
+    if (key.rfind("sky.", 0) == 0) {
+      if (!mScene.atmosphere) throw Error("the scene has no atmosphere");
+      Atmosphere& a = *mScene.atmosphere;
+      atmosphere::AtmosphereParameters p = a.parameters;
+      std::string_view k = std::string_view(key).substr(4);
+      if (k == "elevation") a.sunElevationDeg = std::clamp(parseFloat(key, value), -90.0f, 90.0f);
+      else if (k == "azimuth") a.sunAzimuthDeg = parseFloat(key, value);
+      else if (k == "turbidity") p.mieAngstromBeta = parseFloat(key, value);
+      else if (k == "ozone") p.ozoneColumnDu = parseFloat(key, value);
+      else if (k == "aerosols") p.aerosols = value == "on";
+      else if (k == "multiple-scattering") p.multipleScattering = value == "on";
+      else throw Error(fmt::format("unknown setting \"{}\" (sky.elevation, azimuth, turbidity, ozone, aerosols, "
+                                   "multiple-scattering)", key));
+      atmosphere::validate(p);  // nothing changes on an error
+      a.parameters = p;
+      applySky();
+      return;
+    }
     std::vector<std::string> parts;
     std::stringstream in(key);
     for (std::string p; std::getline(in, p, '.');) parts.push_back(p);
@@ -848,7 +905,7 @@ class Viewer {
       return;
     }
     throw Error(fmt::format("unknown setting \"{}\" (frame keys of viewer_settings.h, right.KEY, split, heat-map, "
-                            "fov, light.N.*, material.NAME.*, water.type, water.depth)", key));
+                            "fov, light.N.*, material.NAME.*, water.type, water.depth, sky.*)", key));
   }
 
   // Parameter changes every 10 frames, a resize every 100, the split toggled every 250; counts

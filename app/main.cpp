@@ -333,6 +333,7 @@ int main(int argc, char** argv) {
       return runAtmosphereEvaluate(atm);
     }
     if (*atmOptimise) {
+      if (atm.quick && atm.output.empty()) throw prism::Error("optimise --quick needs -o FILE: a quick fit must not replace data/atmosphere_wavelengths.json");
       if (atm.zeniths < 1 || atm.zeniths > 512 || atm.azimuths < 1 || atm.azimuths > 1024) throw prism::Error("--zeniths must be within 1..512 and --azimuths within 1..1024");
       runAtmosphereOptimise(atm);
     }

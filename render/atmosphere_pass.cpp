@@ -63,7 +63,9 @@ void AtmospherePass::update(const std::vector<shared::GpuAtmosphere>& batches, c
   }
   mAtmospheres.upload(0, std::as_bytes(std::span<const shared::GpuAtmosphere>(batches)));
   mAtmospheres.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  const GLbitfield barriers = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
+  // Later passes fetch the tables; tests read them back (texture and buffer updates).
+  const GLbitfield barriers = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                              GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
   const GLuint layers = static_cast<GLuint>(n);
 
   mTransmittance.bindImage(0, GL_WRITE_ONLY);
@@ -71,7 +73,7 @@ void AtmospherePass::update(const std::vector<shared::GpuAtmosphere>& batches, c
                   {groups(shared::kTransmittanceLutWidth), groups(shared::kTransmittanceLutHeight), layers},
                   barriers);
   mTransmittance.bind(0);
-  mMultipleScattering.bind(1);
+  mMultipleScattering.bind(1);  // for the later passes; this one never reads it (see its shader)
   mMultipleScattering.bindImage(0, GL_WRITE_ONLY);
   gpu::runCompute(mMultipleScatteringProgram,
                   {groups(shared::kMultipleScatteringLutSize), groups(shared::kMultipleScatteringLutSize), layers},

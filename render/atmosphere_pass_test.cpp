@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <glm/glm.hpp>
+
 #include "gpu/headless_context.h"
 #include "techniques/atmosphere/atmosphere_reference.h"
 #include "techniques/atmosphere/atmosphere_tables.h"
@@ -99,6 +101,99 @@ TEST(AtmospherePass, TablesMatchTheDoublePrecisionReference) {
                 "the channel's peak (%.3g everywhere)\n", elevationDeg, worstSky, worstSkyAll);
     EXPECT_LE(worstSky, 1e-3) << "sun elevation " << elevationDeg;
   }
+}
+
+// The sky's irradiance coefficients (a compute pass over 192 × 216 cells of the sky-view table's
+// own coordinates) against the same projection of the read-back table integrated on the CPU in
+// double over 960 × 1080 cells; and the aerial-perspective volume (single scattering only) against the reference
+// integrated to each slice's distance.
+TEST(AtmospherePass, IrradianceAndAerialPerspectiveMatchIndependentIntegrals) {
+  gpu::HeadlessContext context;
+  AtmosphereParameters p;
+  p.multipleScattering = false;
+  shared::GpuAtmosphere batch = packAtmosphere(p, glm::vec4(360.0f, 440.0f, 550.0f, 680.0f));
+  const float r = float(p.bottomRadiusKm) + 0.2f;
+  const double elevation = 10.0 * kPi / 180.0;
+  AtmosphereView view;
+  view.originKm = r;
+  view.sun = glm::vec3(std::cos(elevation), std::sin(elevation), 0.0f);
+  view.inverseViewProjection = glm::mat4(1.0f);  // far points (ndc x, ndc y, 1): a 90° view along +z
+  AtmospherePass pass;
+  pass.update({batch}, view);
+
+  // Irradiance coefficients.
+  std::vector<glm::vec4> sky = layer(pass.skyView());
+  std::vector<glm::vec4> sh = pass.skyIrradiance().read<glm::vec4>();
+  // Bilinear on texel centres, in double.
+  auto at = [&](double u, double v) {
+    double fx = u * (shared::kSkyViewLutWidth - 1), fy = v * (shared::kSkyViewLutHeight - 1);
+    int x0 = std::min(int(fx), shared::kSkyViewLutWidth - 2), y0 = std::min(int(fy), shared::kSkyViewLutHeight - 2);
+    double ax = fx - x0, ay = fy - y0;
+    auto texel = [&](int x, int y) { return glm::dvec4(sky[static_cast<std::size_t>(y * shared::kSkyViewLutWidth + x)]); };
+    return glm::mix(glm::mix(texel(x0, y0), texel(x0 + 1, y0), ax), glm::mix(texel(x0, y0 + 1), texel(x0 + 1, y0 + 1), ax), ay);
+  };
+  // The table's coordinates (atmosphere_luts.glsl), written again in double.
+  const double ch = -std::sqrt((double(r) - p.bottomRadiusKm) * (double(r) + p.bottomRadiusKm)) / r;
+  auto cosZenith = [&](double v) {
+    return v < 0.5 ? ch + (1.0 - ch) * (1.0 - 2.0 * v) * (1.0 - 2.0 * v) : ch - (1.0 + ch) * (2.0 * v - 1.0) * (2.0 * v - 1.0);
+  };
+  auto phiOf = [](double u) { return std::acos(std::clamp(1.0 - 2.0 * u * u, -1.0, 1.0)); };
+  std::array<glm::dvec4, 4> c{};
+  const int nu = 1920, nv = 2160;  // ten times the GPU's cells each way
+  for (int iv = 0; iv < nv; ++iv) {
+    double v = (iv + 0.5) / nv, dc = cosZenith(double(iv) / nv) - cosZenith(double(iv + 1) / nv);
+    double cz = cosZenith(v), sz = std::sqrt(std::max(1.0 - cz * cz, 0.0));
+    for (int iu = 0; iu < nu; ++iu) {
+      double u = (iu + 0.5) / nu, phi = phiOf(u);
+      double dPhi = phiOf(double(iu + 1) / nu) - phiOf(double(iu) / nu);
+      glm::dvec4 L = at(u, v) * (dc * dPhi);
+      for (double side : {1.0, -1.0}) {  // the sun is along +x here: the table's own frame
+        glm::dvec3 d(sz * std::cos(phi), cz, side * sz * std::sin(phi));
+        c[0] += L * 0.282095;
+        c[1] += L * (0.488603 * d.y);
+        c[2] += L * (0.488603 * d.z);
+        c[3] += L * (0.488603 * d.x);
+      }
+    }
+  }
+  double worstSh = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    for (int j = 0; j < 4; ++j) {
+      worstSh = std::max(worstSh, std::abs(double(sh[std::size_t(k)][j]) - c[std::size_t(k)][j]) / c[0][j]);
+    }
+  }
+  std::printf("sky irradiance coefficients, GPU vs CPU integral: max error %.3g of the constant term\n", worstSh);
+  EXPECT_LE(worstSh, 1e-3);
+
+  // Aerial perspective: columns across the view, slices near and far.
+  std::vector<std::vector<glm::vec4>> ap;
+  for (GLint l = 0; l < pass.aerialPerspective().layers(); ++l) {
+    std::vector<float> v = gpu::readTextureLayerFloat(pass.aerialPerspective(), l, 4);
+    std::vector<glm::vec4> t(v.size() / 4);
+    for (std::size_t i = 0; i < t.size(); ++i) t[i] = glm::vec4(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
+    ap.push_back(std::move(t));
+  }
+  double worstIn = 0.0, worstT = 0.0;
+  for (int y : {8, 16, 24, 31}) {
+    for (int x : {0, 16, 31}) {
+      glm::dvec3 d = glm::normalize(glm::dvec3(2.0 * x / 31.0 - 1.0, 2.0 * y / 31.0 - 1.0, 1.0));
+      double zenith = std::acos(d.y), azimuth = std::atan2(d.z, d.x);
+      for (int k : {3, 15, 31}) {
+        double distance = double(shared::kAerialPerspectiveMaxKm) * std::pow((k + 1) / 32.0, 2.0);
+        ReferenceSegment ref = referenceSingleScatteringTo(p, kLambdas, r, std::sin(elevation), zenith, azimuth, distance);
+        glm::vec4 in = ap[std::size_t(k)][std::size_t(y * shared::kAerialPerspectiveSize + x)];
+        glm::vec4 t = ap[std::size_t(shared::kAerialPerspectiveSlices + k)][std::size_t(y * shared::kAerialPerspectiveSize + x)];
+        for (int j = 0; j < 4; ++j) {
+          worstIn = std::max(worstIn, std::abs(double(in[j]) - ref.radiance[std::size_t(j)]) / ref.radiance[std::size_t(j)]);
+          worstT = std::max(worstT, std::abs(double(t[j]) - ref.transmittance[std::size_t(j)]) / ref.transmittance[std::size_t(j)]);
+        }
+      }
+    }
+  }
+  std::printf("aerial perspective, GPU vs double reference: in-scattering max relative %.3g, transmittance %.3g\n",
+              worstIn, worstT);
+  EXPECT_LE(worstIn, 1e-3);
+  EXPECT_LE(worstT, 1e-3);
 }
 
 }  // namespace

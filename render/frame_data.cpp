@@ -211,20 +211,23 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
     frame.constants.atmosphere = 1;
     frame.constants.atmosphereOriginKm =
         static_cast<float>(a.parameters.bottomRadiusKm + a.groundAltitudeM * 1e-3);
+    frame.constants.atmosphereSunLight = -1;
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
       if (scene.lights[i].atmosphereSun) frame.constants.atmosphereSunLight = static_cast<int>(i);
     }
     const int sun = frame.constants.atmosphereSunLight;
+    if (sun < 0) throw Error(fmt::format("{}: the atmosphere has no sun light (addSun adds it)", scene.file.string()));
+    // The sun's irradiance above the atmosphere is the sun light's own (its SPD × intensity: the
+    // measured solar spectrum unless edited; in RGB mode its RGB), so the sky follows the light.
+    const float intensity = scene.lights[static_cast<std::size_t>(sun)].intensity;
     for (int b = 0; b < batchCount; ++b) {
+      glm::vec4 solar = frame.lightSpectra[static_cast<std::size_t>(sun * batchCount + b)] * intensity;
+      glm::vec4 lambdaNm = frame.batches[static_cast<std::size_t>(b)].lambdaNm;
       if (rgbMode) {
-        glm::vec4 sunRgb = frame.lightSpectra[static_cast<std::size_t>(sun * batchCount + b)] *
-                           scene.lights[static_cast<std::size_t>(sun)].intensity;
-        sunRgb.w = 0.0f;
-        frame.atmospheres.push_back(
-            atmosphere::packAtmosphere(a.parameters, glm::vec4(680.0f, 550.0f, 440.0f, 0.0f), sunRgb));
-      } else {
-        frame.atmospheres.push_back(atmosphere::packAtmosphere(a.parameters, frame.batches[static_cast<std::size_t>(b)].lambdaNm));
+        solar.w = 0.0f;
+        lambdaNm = glm::vec4(680.0f, 550.0f, 440.0f, 0.0f);
       }
+      frame.atmospheres.push_back(atmosphere::packAtmosphere(a.parameters, lambdaNm, solar));
     }
   } else {
     frame.atmospheres.push_back(shared::GpuAtmosphere{});

@@ -142,12 +142,15 @@ void Renderer::reloadShaders() {
   gpu::Program lighting = passProgram("fullscreen.vert", "lighting.frag", "lighting pass");
   gpu::Program forward = passProgram("forward.vert", "forward.frag", "forward pass");
   gpu::Program post = passProgram("fullscreen.vert", "post.frag", "post pass");
+  // The sky's passes share shaders/shared with the lighting pass: reloaded together.
+  std::unique_ptr<AtmospherePass> atmosphere = mAtmosphere ? std::make_unique<AtmospherePass>() : nullptr;
   mShadowProgram = std::move(shadow);
   mGBufferProgram = std::move(gbuffer);
   mGBufferCoefficientsProgram = std::move(gbufferCoefficients);
   mLightingProgram = std::move(lighting);
   mForwardProgram = std::move(forward);
   mPostProgram = std::move(post);
+  if (atmosphere) mAtmosphere = std::move(atmosphere);
   mAccumulated = 0;
 }
 
@@ -326,7 +329,9 @@ void Renderer::atmospherePass() {
   view.originKm = mFrame.constants.atmosphereOriginKm;
   view.cameraWorldM = mCameraTransform.position;
   view.inverseViewProjection = mCameraTransform.inverseViewProjection;
-  view.sun = mScene.atmosphere->sunDirection();
+  // The sun light is the one source of the sun's direction (an editor may turn it).
+  const Light& sun = mScene.lights[static_cast<std::size_t>(mFrame.constants.atmosphereSunLight)];
+  view.sun = -glm::normalize(sun.direction);
   mAtmosphere->update(mFrame.atmospheres, view);
 }
 

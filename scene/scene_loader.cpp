@@ -7,6 +7,7 @@
 #include <utility>
 
 #include <Eigen/Core>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "scene/conductors.h"
@@ -149,6 +150,10 @@ class SceneParser {
       atmosphere::validate(p);
     } catch (const Error& e) {
       n.fail(e.what());
+    }
+    if (a.groundAltitudeM * 1e-3 >= p.topRadiusKm - p.bottomRadiusKm) {
+      n.child("ground_altitude").fail(fmt::format("{} m must be below the top of the atmosphere ({} km)",
+                                                  a.groundAltitudeM, p.topRadiusKm - p.bottomRadiusKm));
     }
     return a;
   }

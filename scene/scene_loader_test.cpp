@@ -498,6 +498,10 @@ TEST_F(SceneFolder, AtmosphereAddsTheSunAsALightAndChecksItsParameters) {
             f.string() + ": /atmosphere/sun/elevation: expected a number in [-90, 90], got 95");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.mie_g=1"}); }),
             f.string() + ": /atmosphere/mie_g: expected a number in (-1, 1), got 1");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.atmosphere_height=40", "atmosphere.ground_altitude=45000"}); }),
+            f.string() + ": /atmosphere/ground_altitude: 45000 m must be below the top of the atmosphere (40 km)");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.atmosphere_height=20"}); }),
+            f.string() + ": /atmosphere: ozone peak altitude (km) = 25 must be within 0 and the atmosphere height");
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"atmosphere.humidity=3"}); }),
                          f.string() + ": /atmosphere/humidity: unknown key (set on the command line) (allowed: "));
   fs::path both = write("both.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "objects": [],

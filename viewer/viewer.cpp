@@ -671,6 +671,11 @@ class Viewer {
       value = v;
       return true;
     };
+    atmosphere::AtmosphereParameters before = p;
+    double height = p.topRadiusKm - p.bottomRadiusKm;
+    changed |= slider("planet radius km", p.bottomRadiusKm, 1000.0f, 20000.0f, "%.0f");
+    if (slider("atmosphere height km", height, 20.0f, 200.0f, "%.0f")) changed = true;
+    p.topRadiusKm = p.bottomRadiusKm + height;
     changed |= slider("Rayleigh at 1 um /km", p.rayleighScatteringPerKm, 0.0f, 5e-3f, "%.5f");
     changed |= slider("Rayleigh scale height km", p.rayleighScaleHeightKm, 1.0f, 20.0f, "%.1f");
     changed |= ImGui::Checkbox("aerosols", &p.aerosols);
@@ -682,7 +687,15 @@ class Viewer {
     changed |= slider("ozone DU", p.ozoneColumnDu, 0.0f, 600.0f, "%.0f");
     changed |= slider("ground albedo", p.groundAlbedo, 0.0f, 1.0f, "%.2f");
     changed |= ImGui::Checkbox("multiple scattering", &p.multipleScattering);
-    if (changed) applySky();
+    if (!changed) return;
+    try {
+      atmosphere::validate(p);  // e.g. a scale height above the atmosphere's height
+    } catch (const Error& e) {
+      p = before;
+      mActionError = e.what();
+      return;
+    }
+    applySky();
   }
 
   void applySky() {
@@ -864,8 +877,10 @@ class Viewer {
       else if (k == "azimuth") a.sunAzimuthDeg = parseFloat(key, value);
       else if (k == "turbidity") p.mieAngstromBeta = parseFloat(key, value);
       else if (k == "ozone") p.ozoneColumnDu = parseFloat(key, value);
-      else if (k == "aerosols") p.aerosols = value == "on";
-      else if (k == "multiple-scattering") p.multipleScattering = value == "on";
+      else if (k == "aerosols" || k == "multiple-scattering") {
+        if (value != "on" && value != "off") throw Error(fmt::format("{}: expected on or off, got \"{}\"", key, value));
+        (k == "aerosols" ? p.aerosols : p.multipleScattering) = value == "on";
+      }
       else throw Error(fmt::format("unknown setting \"{}\" (sky.elevation, azimuth, turbidity, ozone, aerosols, "
                                    "multiple-scattering)", key));
       atmosphere::validate(p);  // nothing changes on an error

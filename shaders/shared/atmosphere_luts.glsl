@@ -17,7 +17,9 @@
 //
 // Each side defines, before including this file (batch b's tables):
 //   vec4 transmittanceLutTexel(int b, int x, int y);        optical depth
-//   vec4 multipleScatteringLutTexel(int b, int x, int y);   Ψ_ms (zero while it is being built)
+//   vec4 multipleScatteringLutTexel(int b, int x, int y);   Ψ_ms (never called while the table is
+//                                                           being built: its rays have
+//                                                           multipleScattering off)
 // Requires: atmosphere_model.glsl atmosphere_luts_accessors.glsl
 
 PRISM_INLINE float texelCentreCoordinate(float unit, int size, OUT(int) i0) {
@@ -210,21 +212,23 @@ PRISM_INLINE vec4 multipleScatteringLutValue(IN(GpuAtmosphere) a, int b, int x, 
 // vertical plane with cos φ = 1 − 2u² (φ from 0 to π; the sky is symmetric about that plane,
 // and the aureole round the sun is sharp).
 PRISM_INLINE float horizonCosine(IN(GpuAtmosphere) a, float r) {
-  return -sqrt(max(r * r - a.shape.x * a.shape.x, 0.0f)) / r;
+  return -sqrt(max(squaredDifference(r, a.shape.x), 0.0f)) / r;
+}
+
+// The zenith cosine at coordinate v, for a horizon cosine ch.
+PRISM_INLINE float skyViewZenithCosine(float ch, float v) {
+  if (v < 0.5f) {
+    float s = 1.0f - 2.0f * v;
+    return ch + (1.0f - ch) * s * s;
+  }
+  float s = 2.0f * v - 1.0f;
+  return ch - (1.0f + ch) * s * s;
 }
 
 // The direction of sky-view coordinates, in the table's frame: y up, the sun in the xy plane
 // towards +x.
 PRISM_INLINE vec3 skyViewDirection(IN(GpuAtmosphere) a, float r, vec2 unit) {
-  float ch = horizonCosine(a, r);
-  float c;
-  if (unit.y < 0.5f) {
-    float s = 1.0f - 2.0f * unit.y;
-    c = ch + (1.0f - ch) * s * s;
-  } else {
-    float s = 2.0f * unit.y - 1.0f;
-    c = ch - (1.0f + ch) * s * s;
-  }
+  float c = skyViewZenithCosine(horizonCosine(a, r), unit.y);
   float cosPhi = 1.0f - 2.0f * unit.x * unit.x;
   float sinTheta = sqrt(max(1.0f - c * c, 0.0f));
   float sinPhi = sqrt(max(1.0f - cosPhi * cosPhi, 0.0f));

@@ -84,17 +84,21 @@ PRISM_INLINE float miePhase(float g, float nu) {
   return k * (1.0f + nu * nu) / pow(max(1.0f + g * g - 2.0f * g * nu, 1e-6f), 1.5f);
 }
 
+// r² − R², written so that it keeps its precision near the ground (r ≈ R: r² alone rounds to
+// 4 km² at 6360 km, the whole difference at a few metres of altitude).
+PRISM_INLINE float squaredDifference(float r, float radius) { return (r - radius) * (r + radius); }
+
 // A ray from radius r whose direction makes cosine μ with the local up.
 PRISM_INLINE float distanceToTopBoundary(IN(GpuAtmosphere) a, float r, float mu) {
-  float discriminant = r * r * (mu * mu - 1.0f) + a.shape.y * a.shape.y;
+  float discriminant = r * r * mu * mu - squaredDifference(r, a.shape.y);
   return max(-r * mu + sqrt(max(discriminant, 0.0f)), 0.0f);
 }
 PRISM_INLINE float distanceToBottomBoundary(IN(GpuAtmosphere) a, float r, float mu) {
-  float discriminant = r * r * (mu * mu - 1.0f) + a.shape.x * a.shape.x;
+  float discriminant = r * r * mu * mu - squaredDifference(r, a.shape.x);
   return max(-r * mu - sqrt(max(discriminant, 0.0f)), 0.0f);
 }
 PRISM_INLINE bool rayIntersectsGround(IN(GpuAtmosphere) a, float r, float mu) {
-  return mu < 0.0f && r * r * (mu * mu - 1.0f) + a.shape.x * a.shape.x >= 0.0f;
+  return mu < 0.0f && r * r * mu * mu - squaredDifference(r, a.shape.x) >= 0.0f;
 }
 // The distance along the ray to the ground, or to the top of the atmosphere when it misses.
 PRISM_INLINE float distanceToAtmosphereExit(IN(GpuAtmosphere) a, float r, float mu) {
@@ -158,7 +162,7 @@ struct RadiusCosine {
 PRISM_INLINE vec2 transmittanceLutCoordinates(IN(GpuAtmosphere) a, float r, float mu) {
   float bottom = a.shape.x, top = a.shape.y;
   float horizonTop = sqrt(top * top - bottom * bottom);
-  float rho = sqrt(max(r * r - bottom * bottom, 0.0f));
+  float rho = sqrt(max(squaredDifference(r, bottom), 0.0f));
   float d = distanceToTopBoundary(a, r, mu);
   float dMin = top - r, dMax = rho + horizonTop;
   float xMu = dMax > dMin ? (d - dMin) / (dMax - dMin) : 0.0f;

@@ -41,7 +41,7 @@ const Spectra& spectra() {
 }
 
 void require(bool ok, const char* name, double value, const char* range) {
-  if (!ok) throw Error(fmt::format("atmosphere: {} = {} must be {}", name, value, range));
+  if (!ok) throw Error(fmt::format("{} = {} must be {}", name, value, range));
 }
 
 }  // namespace

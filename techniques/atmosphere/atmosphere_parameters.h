@@ -33,7 +33,8 @@ struct AtmosphereParameters {
   bool multipleScattering = true;
 };
 
-// Error naming the parameter when one is out of its physical range.
+// Error naming the parameter when one is out of its physical range ("ozone column (DU) = -1 must
+// be within 0..1000"; callers add where it came from).
 void validate(const AtmosphereParameters& p);
 
 // The atmosphere's measured spectra (data/atmosphere_spectra.csv, read once; linear between

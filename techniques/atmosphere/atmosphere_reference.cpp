@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -93,6 +94,15 @@ Channels referenceOpticalDepth(const AtmosphereParameters& p, const std::array<d
 Channels referenceSingleScattering(const AtmosphereParameters& p,
                                    const std::array<double, 4>& lambdaNm, double rKm,
                                    double muSun, double zenith, double azimuth) {
+  return referenceSingleScatteringTo(p, lambdaNm, rKm, muSun, zenith, azimuth,
+                                     std::numeric_limits<double>::infinity())
+      .radiance;
+}
+
+ReferenceSegment referenceSingleScatteringTo(const AtmosphereParameters& p,
+                                             const std::array<double, 4>& lambdaNm, double rKm,
+                                             double muSun, double zenith, double azimuth,
+                                             double maxDistanceKm) {
   Medium m(p, lambdaNm);
   const glm::dvec3 origin(0.0, rKm, 0.0);
   const glm::dvec3 sun(std::sqrt(std::max(1.0 - muSun * muSun, 0.0)), muSun, 0.0);
@@ -103,6 +113,7 @@ Channels referenceSingleScattering(const AtmosphereParameters& p,
                     ? -rKm * mu - std::sqrt(std::max(rKm * rKm * (mu * mu - 1.0) +
                                                          p.bottomRadiusKm * p.bottomRadiusKm, 0.0))
                     : distanceToTop(p, rKm, mu);
+  tMax = std::min(tMax, maxDistanceKm);
   auto shadowed = [&](double t) {
     glm::dvec3 x = origin + dir * t;
     double r = glm::length(x);
@@ -156,7 +167,10 @@ Channels referenceSingleScattering(const AtmosphereParameters& p,
       for (std::size_t j = 0; j < 4; ++j) depth[j] += e[j] * dt;
     }
   }
-  return radiance;
+  ReferenceSegment segment;
+  segment.radiance = radiance;
+  for (std::size_t j = 0; j < 4; ++j) segment.transmittance[j] = std::exp(-depth[j]);
+  return segment;
 }
 
 }  // namespace prism::atmosphere

@@ -88,6 +88,12 @@ SkyViewDirection skyViewTexelDirection(const shared::GpuAtmosphere& atmosphere, 
           static_cast<float>(std::atan2(double(d.z), double(d.x)))};
 }
 
+glm::vec2 skyViewCoordinatesOf(const shared::GpuAtmosphere& atmosphere, float rKm, float zenith, float azimuth) {
+  AtmosphereTables none;
+  AtmosphereTablesKernel kernel(none);
+  return kernel.skyViewCoordinates(atmosphere, rKm, std::cos(zenith), std::cos(azimuth));
+}
+
 glm::vec4 sunTransmittance(const AtmosphereTables& tables, float rKm, float muSun) {
   AtmosphereTablesKernel kernel(tables);
   return kernel.transmittanceToSpace(tables.atmosphere, 0, rKm, muSun);

@@ -37,6 +37,8 @@ struct SkyViewDirection {
   float azimuth = 0.0f;  // from the sun's vertical plane
 };
 SkyViewDirection skyViewTexelDirection(const shared::GpuAtmosphere& atmosphere, float rKm, int x, int y);
+// The sky-view table's coordinates ∈ [0, 1]² of a direction (the lookups' mapping).
+glm::vec2 skyViewCoordinatesOf(const shared::GpuAtmosphere& atmosphere, float rKm, float zenith, float azimuth);
 
 // The sun's transmittance to a point at radius rKm for a sun of zenith cosine muSun there.
 glm::vec4 sunTransmittance(const AtmosphereTables& tables, float rKm, float muSun);

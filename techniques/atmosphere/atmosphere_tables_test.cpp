@@ -82,5 +82,25 @@ TEST(AtmosphereTables, SingleScatteringMatchesTheReference) {
   EXPECT_LE(worst, 1e-3);
 }
 
+TEST(AtmosphereTables, SkyViewCoordinatesInvertTheTexelDirections) {
+  AtmosphereParameters p;
+  shared::GpuAtmosphere a = batchOf(p);
+  double worst = 0.0;
+  for (float altitude : {0.0016f, 0.2f, 10.0f}) {
+    float r = float(p.bottomRadiusKm) + altitude;
+    // Rows 0 and H − 1 are the zenith and the nadir, where every azimuth is the same direction.
+    for (int y = 1; y + 1 < shared::kSkyViewLutHeight; ++y) {
+      for (int x = 0; x < shared::kSkyViewLutWidth; x += 7) {
+        SkyViewDirection d = skyViewTexelDirection(a, r, x, y);
+        glm::vec2 unit = skyViewCoordinatesOf(a, r, d.zenith, d.azimuth);
+        worst = std::max({worst, std::abs(double(unit.x) * (shared::kSkyViewLutWidth - 1) - x),
+                          std::abs(double(unit.y) * (shared::kSkyViewLutHeight - 1) - y)});
+      }
+    }
+  }
+  std::printf("sky view: direction → coordinates round trip, max %.3g texels\n", worst);
+  EXPECT_LE(worst, 0.02);
+}
+
 }  // namespace
 }  // namespace prism::atmosphere

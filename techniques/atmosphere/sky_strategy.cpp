@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <mutex>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -112,7 +114,15 @@ OptimisedWavelengths loadOptimisedWavelengths(const std::filesystem::path& file,
 }
 
 OptimisedWavelengths loadOptimisedWavelengths(std::string_view set) {
-  return loadOptimisedWavelengths(dataFile("atmosphere_wavelengths.json"), set);
+  // Read once per set: the renderer asks every frame.
+  static std::mutex mutex;
+  static std::map<std::string, OptimisedWavelengths, std::less<>> cache;
+  std::lock_guard lock(mutex);
+  auto it = cache.find(set);
+  if (it == cache.end()) {
+    it = cache.emplace(std::string(set), loadOptimisedWavelengths(dataFile("atmosphere_wavelengths.json"), set)).first;
+  }
+  return it->second;
 }
 
 SkyStrategy skyStrategyFromName(std::string_view name, std::string_view set) {

@@ -46,8 +46,8 @@ SkyStrategy uniformStrategy(int count);
 // twelve: the fitted matrix (requires hasMatrix) instead of c̄(λᵢ)·wᵢ.
 SkyStrategy optimisedStrategy(const OptimisedWavelengths& set, bool twelve);
 
-// The sets in data/atmosphere_wavelengths.json: "aerosols" or "rayleigh-ozone". Error naming
-// the file and the key when it is missing or malformed.
+// The sets in data/atmosphere_wavelengths.json (read once per set and process): "aerosols" or
+// "rayleigh-ozone". Error naming the file and the key when it is missing or malformed.
 OptimisedWavelengths loadOptimisedWavelengths(std::string_view set);
 OptimisedWavelengths loadOptimisedWavelengths(const std::filesystem::path& file, std::string_view set);
 

@@ -84,6 +84,19 @@ struct Problem {
   }
 };
 
+// Runs Nelder–Mead from x (left at the best point found); the best value. A stop on rounding
+// keeps the best point so far, which is what NLopt leaves in x.
+double minimise(nlopt::opt& opt, std::vector<double>& x, int& evaluations) {
+  double value = 0.0;
+  try {
+    opt.optimize(x, value);
+  } catch (const nlopt::roundoff_limited&) {
+    value = opt.last_optimum_value();
+  }
+  evaluations += opt.get_numevals();
+  return value;
+}
+
 }  // namespace
 
 OptimiserResult optimiseWavelengths(const SkySamples& samples, const SpectralSky& reference,
@@ -151,13 +164,7 @@ OptimiserResult optimiseWavelengths(const SkySamples& samples, const SpectralSky
           return c->problem->objective(lambda, Problem::matrixOf(lambda, w));
         },
         &context);
-    double value = 0.0;
-    try {
-      opt.optimize(x, value);
-    } catch (const nlopt::roundoff_limited&) {
-      value = opt.last_optimum_value();
-    }
-    result.evaluations += opt.get_numevals();
+    double value = minimise(opt, x, result.evaluations);
     if (value < best) {
       best = value;
       for (std::size_t j = 0; j < 4; ++j) {
@@ -199,13 +206,7 @@ OptimiserResult optimiseWavelengths(const SkySamples& samples, const SpectralSky
         return c->problem->objective(c->lambda, mm);
       },
       &context);
-  double value = 0.0;
-  try {
-    opt.optimize(x, value);
-  } catch (const nlopt::roundoff_limited&) {
-    value = opt.last_optimum_value();
-  }
-  result.evaluations += opt.get_numevals();
+  double value = minimise(opt, x, result.evaluations);
   Matrix34 fitted = Eigen::Map<const Matrix34>(x.data());
   result.objective12 = std::min(value, best);
   result.set.matrix = (value < best ? fitted : m) / kLumensPerWatt;

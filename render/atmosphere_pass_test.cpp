@@ -6,11 +6,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 
 #include <glm/glm.hpp>
 
 #include "gpu/headless_context.h"
+#include "render/atmosphere_texels_test_support.h"
 #include "techniques/atmosphere/atmosphere_reference.h"
 #include "techniques/atmosphere/atmosphere_tables.h"
 
@@ -18,19 +20,12 @@ namespace prism::render {
 namespace {
 
 using namespace prism::atmosphere;
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 const std::array<double, 4> kLambdas{360.0, 440.0, 550.0, 680.0};
 // Transmittance is held to 1e-3 relative where it is at least 1e-6 (optical depth ≤ 13.8):
 // deeper, float's rounding of the optical-depth sum (a few 1e-5 of τ) alone exceeds 1e-3 of T.
 // The worst case everywhere is printed too.
 constexpr double kDeepestOpticalDepth = 13.8155;
-
-std::vector<glm::vec4> layer(const gpu::Texture2DArray& t) {
-  std::vector<float> v = gpu::readTextureLayerFloat(t, 0, 4);
-  std::vector<glm::vec4> out(v.size() / 4);
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = glm::vec4(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
-  return out;
-}
 
 TEST(AtmospherePass, TablesMatchTheDoublePrecisionReference) {
   gpu::HeadlessContext context;
@@ -45,7 +40,7 @@ TEST(AtmospherePass, TablesMatchTheDoublePrecisionReference) {
   AtmosphereView view;
   view.originKm = r;
   pass.update({batch}, view);
-  std::vector<glm::vec4> depth = layer(pass.transmittance());
+  std::vector<glm::vec4> depth = readAtmosphereTexels(pass).transmittance[0];
   double worst = 0.0, worstAll = 0.0, worstCpu = 0.0;
   for (int y = 0; y < shared::kTransmittanceLutHeight; y += 3) {
     for (int x = 0; x < shared::kTransmittanceLutWidth; x += 5) {
@@ -76,7 +71,7 @@ TEST(AtmospherePass, TablesMatchTheDoublePrecisionReference) {
     float muSun = float(std::sin(elevationDeg * kPi / 180.0));
     view.sun = glm::vec3(std::sqrt(1.0f - muSun * muSun), muSun, 0.0f);
     pass.update({batch}, view);
-    std::vector<glm::vec4> sky = layer(pass.skyView());
+    std::vector<glm::vec4> sky = readAtmosphereTexels(pass).skyView[0];
     std::vector<std::array<double, 4>> got, want;
     for (int y = 2; y < shared::kSkyViewLutHeight / 2; y += 9) {
       for (int x = 0; x < shared::kSkyViewLutWidth; x += 37) {
@@ -122,8 +117,9 @@ TEST(AtmospherePass, IrradianceAndAerialPerspectiveMatchIndependentIntegrals) {
   pass.update({batch}, view);
 
   // Irradiance coefficients.
-  std::vector<glm::vec4> sky = layer(pass.skyView());
-  std::vector<glm::vec4> sh = pass.skyIrradiance().read<glm::vec4>();
+  AtmosphereTexels texels = readAtmosphereTexels(pass);
+  const std::vector<glm::vec4>& sky = texels.skyView[0];
+  const std::vector<glm::vec4>& sh = texels.skyIrradiance;
   // Bilinear on texel centres, in double.
   auto at = [&](double u, double v) {
     double fx = u * (shared::kSkyViewLutWidth - 1), fy = v * (shared::kSkyViewLutHeight - 1);
@@ -166,13 +162,7 @@ TEST(AtmospherePass, IrradianceAndAerialPerspectiveMatchIndependentIntegrals) {
   EXPECT_LE(worstSh, 1e-3);
 
   // Aerial perspective: columns across the view, slices near and far.
-  std::vector<std::vector<glm::vec4>> ap;
-  for (GLint l = 0; l < pass.aerialPerspective().layers(); ++l) {
-    std::vector<float> v = gpu::readTextureLayerFloat(pass.aerialPerspective(), l, 4);
-    std::vector<glm::vec4> t(v.size() / 4);
-    for (std::size_t i = 0; i < t.size(); ++i) t[i] = glm::vec4(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
-    ap.push_back(std::move(t));
-  }
+  const std::vector<std::vector<glm::vec4>>& ap = texels.aerialPerspective;
   double worstIn = 0.0, worstT = 0.0;
   for (int y : {8, 16, 24, 31}) {
     for (int x : {0, 16, 31}) {

@@ -43,6 +43,11 @@ Spectrum normalIncidenceReflectance(const ConductorIor& ior) {
   return r;
 }
 
+// RGB mode's "wavelengths" for R, G, B and an unused fourth channel.
+glm::vec4 rgbStandIn(float fourth) {
+  return glm::vec4(kRgbStandInWavelengthsNm[0], kRgbStandInWavelengthsNm[1], kRgbStandInWavelengthsNm[2], fourth);
+}
+
 glm::vec4 at4(const Spectrum& s, const glm::vec4& lambdaNm, float scale = 1.0f) {
   glm::vec4 v;
   for (int j = 0; j < 4; ++j) v[j] = static_cast<float>(s.at(lambdaNm[j])) * scale;
@@ -195,7 +200,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
     frame.constants.waterSurfaceY = w.surfaceY(scene.camera);
     frame.constants.waterDepthM = std::max(frame.constants.waterSurfaceY - cameraPositionW.y, 0.0f);
     for (const shared::GpuBatch& batch : frame.batches) {
-      glm::vec4 lambdaNm = rgbMode ? glm::vec4(680.0f, 550.0f, 440.0f, 550.0f) : batch.lambdaNm;
+      glm::vec4 lambdaNm = rgbMode ? rgbStandIn(kRgbStandInWavelengthsNm[1]) : batch.lambdaNm;
       glm::vec4 sigmaS = at4(w.sigmaS, lambdaNm), sigmaA = at4(w.sigmaA, lambdaNm);
       frame.waterSpectra.push_back(sigmaS);
       frame.waterSpectra.push_back(sigmaA + sigmaS);
@@ -225,7 +230,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
       glm::vec4 lambdaNm = frame.batches[static_cast<std::size_t>(b)].lambdaNm;
       if (rgbMode) {
         solar.w = 0.0f;
-        lambdaNm = glm::vec4(680.0f, 550.0f, 440.0f, 0.0f);
+        lambdaNm = rgbStandIn(0.0f);  // no fourth channel: the sky's coefficients there are 0
       }
       frame.atmospheres.push_back(atmosphere::packAtmosphere(a.parameters, lambdaNm, solar));
     }

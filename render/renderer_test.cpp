@@ -16,6 +16,7 @@
 #include "gpu/headless_context.h"
 #include "imaging/image_difference.h"
 #include "imaging/png_file.h"
+#include "render/atmosphere_texels_test_support.h"
 #include "render/cpu_shading.h"
 #include "scene/scene_loader.h"
 #include "spectral/error.h"
@@ -56,28 +57,10 @@ void PrintTo(const ParityCase& c, std::ostream* os) {
 
 class GpuCpuParity : public testing::TestWithParam<ParityCase> {};
 
-std::vector<std::vector<glm::vec4>> readLayers(const gpu::Texture2DArray& t) {
-  std::vector<std::vector<glm::vec4>> layers;
-  for (GLint l = 0; l < t.layers(); ++l) {
-    std::vector<float> v = gpu::readTextureLayerFloat(t, l, 4);
-    std::vector<glm::vec4> texels(v.size() / 4);
-    for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = glm::vec4(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
-    layers.push_back(std::move(texels));
-  }
-  return layers;
-}
-
-// The sky's tables of the renderer's last frame, for the CPU twin.
+// The sky's tables of the renderer's last frame, for the CPU twin (none without a sky).
 AtmosphereTexels readAtmosphere(const Renderer& renderer) {
-  AtmosphereTexels a;
   const AtmospherePass* pass = renderer.atmospherePass();
-  if (!pass) return a;
-  a.transmittance = readLayers(pass->transmittance());
-  a.multipleScattering = readLayers(pass->multipleScattering());
-  a.skyView = readLayers(pass->skyView());
-  a.aerialPerspective = readLayers(pass->aerialPerspective());
-  a.skyIrradiance = pass->skyIrradiance().read<glm::vec4>();
-  return a;
+  return pass ? readAtmosphereTexels(*pass) : AtmosphereTexels{};
 }
 
 TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {

@@ -11,6 +11,7 @@
 
 #include "spectral/colour_space.h"
 #include "spectral/error.h"
+#include "spectral/error_test_support.h"
 #include "spectral/observer.h"
 #include "techniques/underwater/jerlov_water.h"
 
@@ -21,17 +22,6 @@ namespace fs = std::filesystem;
 
 const fs::path kFixtures = PRISM_SCENE_TEST_DIR;
 
-// The message of the Error that f throws; fails the test when none is thrown.
-template <typename F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no prism::Error thrown";
-  return {};
-}
 
 ::testing::AssertionResult startsWith(const std::string& text, const std::string& prefix) {
   if (text.rfind(prefix, 0) == 0) return ::testing::AssertionSuccess();

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "spectral/error.h"
+#include "spectral/error_test_support.h"
 
 namespace prism {
 namespace {
@@ -16,18 +17,6 @@ class CsvTest : public ::testing::Test {
     std::filesystem::path p = std::filesystem::path(::testing::TempDir()) / name;
     std::ofstream(p) << text;
     return p;
-  }
-
-  // The message of the Error that f throws; fails the test when none is thrown.
-  template <typename F>
-  std::string errorOf(F f) {
-    try {
-      f();
-    } catch (const Error& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "no prism::Error thrown";
-    return {};
   }
 };
 

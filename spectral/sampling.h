@@ -74,6 +74,11 @@ class WavelengthSampler {
   std::unique_ptr<ResponsePdf> mPdf;  // Importance only
 };
 
+// The wavelengths RGB renderers commonly stand R, G and B for (e.g. Bruneton's atmosphere,
+// model.h): where an RGB mode needs a per-channel physical coefficient (water, the sky), it is
+// evaluated at these.
+inline constexpr std::array<float, 3> kRgbStandInWavelengthsNm{680.0f, 550.0f, 440.0f};
+
 using IntegrationMatrix = Eigen::Matrix<double, 3, 4>;
 // M[c][j] = curve_c(λ_j) / (n·pdf_j): tristimulus += M · (L(λ_0..3)).
 std::vector<IntegrationMatrix> integrationMatrices(const std::vector<SampledWavelengths>& batches,

@@ -114,14 +114,13 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
   PRISM_PRECISE vec3 toFar = farPoint - cameraPosition;
   vec3 viewDir = normalize(toFar);
   float distanceM = 1e30f;  // throughWater stops it at the surface when it looks up
+  vec3 cameraKm = planetPosition(fc.atmosphereOriginKm, cameraPosition);
+  vec3 toSun = fc.atmosphere != 0 ? atmosphereSun(fc) : vec3(0.0f, 1.0f, 0.0f);
   vec3 tristimulus = vec3(0.0f);
   for (int b = 0; b < fc.batchCount; ++b) {
     vec4 radiance = frameLightSpectrum(fc.lightCount, b);
     if (fc.water != 0) radiance = throughWater(fc, b, radiance, viewDir, distanceM);
-    if (fc.atmosphere != 0) {
-      radiance = skyBackground(frameAtmosphere(b), b, planetPosition(fc.atmosphereOriginKm, cameraPosition),
-                               viewDir, atmosphereSun(fc));
-    }
+    if (fc.atmosphere != 0) radiance = skyBackground(frameAtmosphere(b), b, cameraKm, viewDir, toSun);
     tristimulus += integrateBatch(frameBatch(b), radiance);
   }
   return tristimulus;
@@ -162,6 +161,11 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     coefficients = upsamplingCoefficients(s.albedo);  // once per pixel, not per wavelength
   }
 
+  // The sky's per-pixel geometry, once for every batch.
+  vec3 pointKm = planetPosition(fc.atmosphereOriginKm, s.position);
+  vec3 toSun = fc.atmosphere != 0 ? atmosphereSun(fc) : vec3(0.0f, 1.0f, 0.0f);
+  float distanceKm = length(s.position - cameraPosition) * 1e-3f;
+
   vec3 tristimulus = vec3(0.0f);
   for (int b = 0; b < fc.batchCount; ++b) {
     GpuBatch batch = frameBatch(b);
@@ -181,12 +185,11 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     bool spectralConductor = kind == kMaterialConductor && fc.mode != kModeRgb;
     float metallic = kind == kMaterialConductor ? 1.0f : s.metallic;
     vec4 radiance = vec4(0.0f);
-    vec3 pointKm = planetPosition(fc.atmosphereOriginKm, s.position);
     for (int l = 0; l < fc.lightCount; ++l) {
       vec4 reflection = surfaceReflection(terms[l], spectralConductor, albedo, conductorK, metallic);
       vec4 arriving = frameLightSpectrum(l, b) * irradiance[l];
       if (fc.atmosphere != 0 && l == fc.atmosphereSunLight && irradiance[l] > 0.0f) {
-        arriving *= sunTransmittanceTo(frameAtmosphere(b), b, pointKm, atmosphereSun(fc));
+        arriving *= sunTransmittanceTo(frameAtmosphere(b), b, pointKm, toSun);
       }
       if (fc.water != 0) {
         bool sun = int(frameLight(l).positionType.w + 0.5f) == kLightDirectional;
@@ -204,7 +207,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
       if (kind != kMaterialConductor) {
         radiance += albedo * (1.0f - metallic) * skyIrradiance(b, s.normal) * (1.0f / kAtmospherePi);
       }
-      AerialPerspective ap = aerialPerspectiveAt(b, uv, length(s.position - cameraPosition) * 1e-3f);
+      AerialPerspective ap = aerialPerspectiveAt(b, uv, distanceKm);
       radiance = radiance * ap.transmittance + ap.inScattering;
     }
     tristimulus += integrateBatch(batch, radiance);

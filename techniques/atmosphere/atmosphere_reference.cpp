@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -11,7 +12,7 @@
 namespace prism::atmosphere {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 constexpr int kDepthSteps = 1000;  // Simpson intervals per half of the sun's ray (even)
 constexpr int kViewSteps = 1000;   // midpoint samples per piece of the view ray
 

@@ -58,20 +58,6 @@ AtmosphereTables computeTables(const shared::GpuAtmosphere& atmosphere, unsigned
   return tables;
 }
 
-std::vector<glm::vec4> computeSkyView(const AtmosphereTables& tables, float rKm, float muSun,
-                                      unsigned threads) {
-  AtmosphereTablesKernel kernel(tables);
-  const int w = shared::kSkyViewLutWidth, h = shared::kSkyViewLutHeight;
-  std::vector<glm::vec4> sky(static_cast<std::size_t>(w * h));
-  parallelFor(static_cast<std::size_t>(h), threads, [&](std::size_t y) {
-    for (int x = 0; x < w; ++x) {
-      sky[y * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)] =
-          kernel.skyViewLutValue(tables.atmosphere, 0, rKm, muSun, x, static_cast<int>(y));
-    }
-  });
-  return sky;
-}
-
 glm::vec4 skyRadiance(const AtmosphereTables& tables, float rKm, float muSun, float zenith,
                       float azimuth, bool withGround) {
   AtmosphereTablesKernel kernel(tables);
@@ -92,11 +78,6 @@ glm::vec2 skyViewCoordinatesOf(const shared::GpuAtmosphere& atmosphere, float rK
   AtmosphereTables none;
   AtmosphereTablesKernel kernel(none);
   return kernel.skyViewCoordinates(atmosphere, rKm, std::cos(zenith), std::cos(azimuth));
-}
-
-glm::vec4 sunTransmittance(const AtmosphereTables& tables, float rKm, float muSun) {
-  AtmosphereTablesKernel kernel(tables);
-  return kernel.transmittanceToSpace(tables.atmosphere, 0, rKm, muSun);
 }
 
 }  // namespace prism::atmosphere

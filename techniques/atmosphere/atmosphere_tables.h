@@ -22,10 +22,6 @@ struct AtmosphereTables {
 // Both tables (multiple scattering only when the atmosphere asks for it), rows in parallel.
 AtmosphereTables computeTables(const shared::GpuAtmosphere& atmosphere, unsigned threads = 0);
 
-// The sky-view table seen from radius rKm under a sun of zenith cosine muSun.
-std::vector<glm::vec4> computeSkyView(const AtmosphereTables& tables, float rKm, float muSun,
-                                      unsigned threads = 0);
-
 // Radiance from one direction, integrated along the view ray (not looked up in a sky-view
 // table), sun disc excluded; withGround adds the ground's reflection below the horizon.
 glm::vec4 skyRadiance(const AtmosphereTables& tables, float rKm, float muSun, float zenith,
@@ -39,8 +35,5 @@ struct SkyViewDirection {
 SkyViewDirection skyViewTexelDirection(const shared::GpuAtmosphere& atmosphere, float rKm, int x, int y);
 // The sky-view table's coordinates ∈ [0, 1]² of a direction (the lookups' mapping).
 glm::vec2 skyViewCoordinatesOf(const shared::GpuAtmosphere& atmosphere, float rKm, float zenith, float azimuth);
-
-// The sun's transmittance to a point at radius rKm for a sun of zenith cosine muSun there.
-glm::vec4 sunTransmittance(const AtmosphereTables& tables, float rKm, float muSun);
 
 }  // namespace prism::atmosphere

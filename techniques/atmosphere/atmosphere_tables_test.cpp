@@ -2,6 +2,7 @@
 // on the CPU) against the double-precision reference of the same model.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <vector>
 
@@ -13,7 +14,7 @@
 namespace prism::atmosphere {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 const std::array<double, 4> kLambdas{360.0, 440.0, 550.0, 680.0};
 // Transmittance is held to 1e-3 relative where it is at least 1e-6 (optical depth ≤ 13.8):
 // deeper, float's rounding of the optical-depth sum (a few 1e-5 of τ) alone exceeds 1e-3 of T.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <numbers>
 
 #include "spectral/colour_difference.h"
 #include "spectral/parallel_for.h"
@@ -11,8 +12,7 @@
 namespace prism::atmosphere {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-const Eigen::Vector3d kD65White(0.95047, 1.0, 1.08883);
+constexpr double kPi = std::numbers::pi;
 
 // Runs every batch of the strategy over every sample; body(batch, sample, radiance).
 void forEachBatchSample(const AtmosphereParameters& p, const SkyStrategy& strategy,
@@ -101,6 +101,11 @@ std::vector<double> exposures(const SkySamples& samples, const std::vector<Eigen
   return k;
 }
 
+Eigen::Vector3d exposedLab(const Eigen::Vector3d& xyz, double exposure) {
+  static const Eigen::Vector3d d65(0.95047, 1.0, 1.08883);  // CIE D65, 2°
+  return xyzToLab(xyz * exposure, d65);
+}
+
 std::vector<ElevationError> compareSkies(const SkySamples& samples, const std::vector<Eigen::Vector3d>& test,
                                          const std::vector<Eigen::Vector3d>& reference) {
   std::vector<double> k = exposures(samples, reference);
@@ -110,7 +115,7 @@ std::vector<ElevationError> compareSkies(const SkySamples& samples, const std::v
     err.elevationDeg = samples.sunElevationsDeg[e];
     for (std::size_t d = 0; d < samples.zenith.size(); ++d) {
       std::size_t i = samples.index(e, d);
-      double de = deltaE(xyzToLab(test[i] * k[e], kD65White), xyzToLab(reference[i] * k[e], kD65White));
+      double de = deltaE(exposedLab(test[i], k[e]), exposedLab(reference[i], k[e]));
       err.meanDeltaE += de;
       err.maxDeltaE = std::max(err.maxDeltaE, de);
     }

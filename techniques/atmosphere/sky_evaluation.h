@@ -57,6 +57,10 @@ struct ElevationError {
   double meanDeltaE = 0.0;
   double maxDeltaE = 0.0;
 };
+// CIELAB of sky XYZ under an exposure, with CIELAB's white CIE D65 at Y = 1 (the optimiser's
+// space too).
+Eigen::Vector3d exposedLab(const Eigen::Vector3d& xyz, double exposure);
+
 std::vector<ElevationError> compareSkies(const SkySamples& samples, const std::vector<Eigen::Vector3d>& test,
                                          const std::vector<Eigen::Vector3d>& reference);
 

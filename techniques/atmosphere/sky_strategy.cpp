@@ -12,16 +12,16 @@
 #include "spectral/data_files.h"
 #include "spectral/error.h"
 #include "spectral/observer.h"
+#include "spectral/sampling.h"
 #include "techniques/atmosphere/atmosphere_parameters.h"
 
 namespace prism::atmosphere {
 namespace {
 
-constexpr double kLumensPerWatt = 683.0;
-
 // Wavelengths with integration weights (nm) into batches of four.
 SkyStrategy weighted(std::string name, const std::vector<double>& lambdas, const std::vector<double>& weights) {
   const Observer& cie = observer("cie1931");
+  const double scale = absoluteTristimulusScale(cie);  // 683 lm/W
   SkyStrategy s{std::move(name), {}};
   for (std::size_t i = 0; i < lambdas.size(); i += 4) {
     SkyBatch b;
@@ -29,7 +29,7 @@ SkyStrategy weighted(std::string name, const std::vector<double>& lambdas, const
       double lambda = lambdas[i + j];
       b.lambdaNm[static_cast<int>(j)] = static_cast<float>(lambda);
       b.solarIrradiance[static_cast<int>(j)] = static_cast<float>(solarIrradiance(lambda));
-      b.toXyz.col(static_cast<Eigen::Index>(j)) = cie.at(lambda) * weights[i + j] * kLumensPerWatt;
+      b.toXyz.col(static_cast<Eigen::Index>(j)) = cie.at(lambda) * weights[i + j] * scale;
     }
     s.batches.push_back(b);
   }
@@ -65,10 +65,11 @@ SkyStrategy uniformStrategy(int count) {
 
 SkyStrategy rgbStrategy() {
   const RgbColourSpace& srgb = colourSpace("srgb");
-  Eigen::Vector3d sunXyz = kLumensPerWatt * observer("cie1931").integrate(solarIrradianceSpectrum().toDense());
+  const Observer& cie = observer("cie1931");
+  Eigen::Vector3d sunXyz = absoluteTristimulusScale(cie) * cie.integrate(solarIrradianceSpectrum().toDense());
   Eigen::Vector3d sunRgb = srgb.xyzToRgb * sunXyz;
   SkyBatch b;
-  b.lambdaNm = glm::vec4(680.0f, 550.0f, 440.0f, 0.0f);
+  b.lambdaNm = glm::vec4(kRgbStandInWavelengthsNm[0], kRgbStandInWavelengthsNm[1], kRgbStandInWavelengthsNm[2], 0.0f);
   b.solarIrradiance = glm::vec4(sunRgb.x(), sunRgb.y(), sunRgb.z(), 0.0f);
   b.toXyz.leftCols<3>() = srgb.rgbToXyz;
   return SkyStrategy{"rgb 680/550/440", {b}};
@@ -81,7 +82,7 @@ SkyStrategy optimisedStrategy(const OptimisedWavelengths& set, bool twelve) {
   if (twelve) {
     if (!set.hasMatrix) throw Error("the optimised wavelength set has no fitted 3x4 matrix");
     s.name = "optimised 4 (12 parameters)";
-    s.batches[0].toXyz = set.matrix * kLumensPerWatt;
+    s.batches[0].toXyz = set.matrix * absoluteTristimulusScale(observer("cie1931"));
   }
   return s;
 }
@@ -123,17 +124,6 @@ OptimisedWavelengths loadOptimisedWavelengths(std::string_view set) {
     it = cache.emplace(std::string(set), loadOptimisedWavelengths(dataFile("atmosphere_wavelengths.json"), set)).first;
   }
   return it->second;
-}
-
-SkyStrategy skyStrategyFromName(std::string_view name, std::string_view set) {
-  if (name == "reference") return referenceStrategy(1.0);
-  if (name == "rgb") return rgbStrategy();
-  if (name == "uniform4") return uniformStrategy(4);
-  if (name == "uniform16") return uniformStrategy(16);
-  if (name == "optimised4") return optimisedStrategy(loadOptimisedWavelengths(set), false);
-  if (name == "optimised4-matrix") return optimisedStrategy(loadOptimisedWavelengths(set), true);
-  throw Error(fmt::format("unknown sky strategy \"{}\" (reference, rgb, uniform4, uniform16, "
-                          "optimised4, optimised4-matrix)", name));
 }
 
 }  // namespace prism::atmosphere

@@ -51,8 +51,4 @@ SkyStrategy optimisedStrategy(const OptimisedWavelengths& set, bool twelve);
 OptimisedWavelengths loadOptimisedWavelengths(std::string_view set);
 OptimisedWavelengths loadOptimisedWavelengths(const std::filesystem::path& file, std::string_view set);
 
-// Strategy names for the command line and the renderer: reference, rgb, uniform4, uniform16,
-// optimised4 (8 parameters), optimised4-matrix (12), each for the given set's atmosphere.
-SkyStrategy skyStrategyFromName(std::string_view name, std::string_view set = "aerosols");
-
 }  // namespace prism::atmosphere

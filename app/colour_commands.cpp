@@ -7,12 +7,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "spectral/atomic_file.h"
+#include "core/atomic_file.h"
 #include "spectral/camera_matrix.h"
 #include "spectral/colour_difference.h"
 #include "spectral/colour_space.h"
-#include "spectral/csv.h"
-#include "spectral/error.h"
+#include "spectral/spectrum_csv.h"
+#include "core/error.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/sampling.h"

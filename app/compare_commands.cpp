@@ -10,7 +10,7 @@
 #include "imaging/heatmap.h"
 #include "imaging/image_difference.h"
 #include "imaging/png_file.h"
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::app {
 namespace {

@@ -16,9 +16,9 @@
 #include "render/display_transform.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
-#include "spectral/atomic_file.h"
-#include "spectral/data_files.h"
-#include "spectral/error.h"
+#include "core/atomic_file.h"
+#include "core/data_files.h"
+#include "core/error.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 
 namespace prism::app {

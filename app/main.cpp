@@ -19,7 +19,7 @@
 #include "app/validate.h"
 #include "app/view_command.h"
 #include "gpu/error.h"
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace {
 

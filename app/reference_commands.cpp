@@ -9,7 +9,7 @@
 #include "imaging/exr_file.h"
 #include "render/display_transform.h"
 #include "scene/scene_loader.h"
-#include "spectral/error.h"
+#include "core/error.h"
 #include "spectral/observer.h"
 
 namespace prism::app {

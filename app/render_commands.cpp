@@ -10,7 +10,7 @@
 #include "render/display_transform.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
-#include "spectral/error.h"
+#include "core/error.h"
 #include "spectral/observer.h"
 
 namespace prism::app {

@@ -13,8 +13,8 @@
 #include "gpu/timer_query.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
-#include "spectral/atomic_file.h"
-#include "spectral/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 
 namespace prism::app {

@@ -9,7 +9,7 @@
 
 #include "app/progress_bar.h"
 #include "spectral/colour_space.h"
-#include "spectral/error.h"
+#include "core/error.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 #include "spectral/rgb_to_spectrum_quality.h"

@@ -15,7 +15,7 @@
 #include "gpu/headless_context.h"
 #include "gpu/program.h"
 #include "render/upsampling_texture.h"
-#include "spectral/data_files.h"
+#include "core/data_files.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 
 namespace prism {

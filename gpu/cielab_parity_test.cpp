@@ -9,8 +9,8 @@
 
 #include "gpu/gpu_test_support.h"
 #include "shared_cpp.h"
-#include "spectral/csv.h"
-#include "spectral/data_files.h"
+#include "core/csv.h"
+#include "core/data_files.h"
 
 namespace prism::shared {
 #include "cielab.glsl"

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "gpu/error.h"
-#include "spectral/data_files.h"
+#include "core/data_files.h"
 
 namespace prism::gpu::testing {
 

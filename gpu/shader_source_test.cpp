@@ -14,7 +14,7 @@
 
 #include "gpu/error.h"
 #include "gpu/gpu_test_support.h"
-#include "spectral/data_files.h"
+#include "core/data_files.h"
 
 namespace prism::gpu {
 namespace {
@@ -89,10 +89,11 @@ TEST(ShaderSource, ResolvesIncludesAndEveryLineMapsBackToItsFile) {
   EXPECT_EQ(source.text.find("#include"), std::string::npos);
   ASSERT_GE(source.files.size(), 5u);
   EXPECT_EQ(source.files[0], loader("main.comp"));
-  // Each file once in the table, in first-inclusion order; lib/second.glsl was included twice.
+  // Each file once in the table, in first-inclusion order (the prelude includes the shared
+  // constants beside it); lib/second.glsl was included twice.
   std::vector<fs::path> expected{
       loader("main.comp"), testing::sharedIncludeDirs()[0] / "prelude.glsl",
-      loader("lib/first.glsl"), loader("lib/second.glsl"), loader("shadow.glsl")};
+      testing::sharedIncludeDirs()[0] / "constants.glsl", loader("lib/first.glsl"), loader("lib/second.glsl"), loader("shadow.glsl")};
   EXPECT_EQ(source.files, expected);
   EXPECT_EQ(source.text.find("return 7u"), std::string::npos) << "other/shadow.glsl chosen";
   EXPECT_GT(expectLinesMapBack(source), 20u);
@@ -192,7 +193,7 @@ TEST(ShaderSource, IncludeSyntaxVariants) {
   fs::remove_all(dir);
 }
 
-// spectral/data_files.h's shaderDirectory(), which the GPU tests rely on: $PRISM_SHADER_DIR
+// core/data_files.h's shaderDirectory(), which the GPU tests rely on: $PRISM_SHADER_DIR
 // first, else (in a build tree) the source tree's shaders/.
 TEST(ShaderDirectory, EnvironmentFirstThenTheSourceTree) {
   const char* saved = std::getenv("PRISM_SHADER_DIR");

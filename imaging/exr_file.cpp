@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "spectral/atomic_file.h"
-#include "spectral/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 
 namespace prism::imaging {
 namespace {

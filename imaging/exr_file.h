@@ -34,7 +34,7 @@ struct ExrWriteOptions {
 };
 
 // ZIP-compressed scan lines, written to memory and then to `path` atomically: a reader never
-// sees half a file, and a failure leaves nothing behind (spectral/atomic_file.h). Creates
+// sees half a file, and a failure leaves nothing behind (core/atomic_file.h). Creates
 // missing folders. Error naming the path when it fails.
 void writeExr(const std::filesystem::path& path, const FloatImage& image,
               const ExrWriteOptions& options = {});

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::imaging {
 namespace {

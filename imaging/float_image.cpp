@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::imaging {
 namespace {

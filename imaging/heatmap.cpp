@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::imaging {
 namespace {

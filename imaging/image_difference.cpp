@@ -10,8 +10,8 @@
 
 #include "spectral/colour_difference.h"
 #include "spectral/colour_space.h"
-#include "spectral/error.h"
-#include "spectral/parallel_for.h"
+#include "core/error.h"
+#include "core/parallel_for.h"
 
 namespace prism::imaging {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "spectral/colour_difference.h"
 #include "spectral/colour_space.h"
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::imaging {
 namespace {

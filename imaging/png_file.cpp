@@ -8,8 +8,8 @@
 #include <limits>
 #include <string>
 
-#include "spectral/atomic_file.h"
-#include "spectral/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"

@@ -34,7 +34,7 @@ class PngImage {
   // top left of the first character.
   void drawText(int x, int y, std::string_view text, Rgb8 colour, int scale);
   // RGB when every pixel is opaque, RGBA otherwise. Error naming the path when it fails; a
-  // failed write leaves no file behind (spectral/atomic_file.h).
+  // failed write leaves no file behind (core/atomic_file.h).
   void write(const std::filesystem::path& path) const;
 
   const std::vector<std::uint8_t>& rgba() const { return mRgba; }

@@ -4,7 +4,7 @@
 
 #include <fstream>
 
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::imaging {
 namespace {

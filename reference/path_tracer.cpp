@@ -17,7 +17,7 @@
 #include "scene/camera_transform.h"
 #include "scene/scene_spectra.h"
 #include "shared_cpp.h"
-#include "spectral/error.h"
+#include "core/error.h"
 #include "spectral/observer.h"
 
 namespace prism::shared {
@@ -34,7 +34,7 @@ using glm::vec3;
 using glm::vec4;
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
-constexpr float kPi = 3.14159265358979f;
+using shared::kPi;
 constexpr int kPassSamples = 8;  // samples per pixel per progressive pass
 
 // Independent uniform numbers for one path: the PCG hash of a counter (random.glsl), seeded by

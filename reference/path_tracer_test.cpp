@@ -11,7 +11,7 @@
 #include "scene/procedural_mesh.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_spectra.h"
-#include "spectral/error.h"
+#include "core/error.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_cache.h"

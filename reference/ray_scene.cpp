@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::reference {
 namespace {

@@ -3,7 +3,7 @@
 #include <span>
 
 #include "gpu/compute.h"
-#include "spectral/data_files.h"
+#include "core/data_files.h"
 
 namespace prism::render {
 namespace {

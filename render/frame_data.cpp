@@ -10,15 +10,13 @@
 
 #include "scene/scene_spectra.h"
 #include "spectral/colour_space.h"
-#include "spectral/error.h"
+#include "core/error.h"
 #include "spectral/observer.h"
 #include "spectral/sampling.h"
 #include "spectral/sigmoid_fit.h"
 
 namespace prism::render {
 namespace {
-
-constexpr double kLumensPerWatt = 683.0;
 
 glm::vec4 toVec4(const Eigen::Vector3d& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()), 0.0f};
@@ -142,7 +140,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
     }
     frame.lights.push_back(g);
     if (rgbMode) {
-      Eigen::Vector3d xyz = kLumensPerWatt * observer("cie1931").integrate(light.spd);
+      Eigen::Vector3d xyz = double(shared::kLumensPerWatt) * observer("cie1931").integrate(light.spd);
       frame.lightSpectra.push_back(toVec4(space.xyzToRgb * xyz));
     } else {
       for (const shared::GpuBatch& batch : frame.batches) {

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "spectral/error.h"
+#include "core/error.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 

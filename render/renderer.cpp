@@ -11,8 +11,8 @@
 #include "scene/procedural_mesh.h"
 #include "render/upsampling_texture.h"
 #include "spectral/colour_space.h"
-#include "spectral/data_files.h"
-#include "spectral/error.h"
+#include "core/data_files.h"
+#include "core/error.h"
 #include "spectral/observer.h"
 
 namespace prism::render {

@@ -19,7 +19,7 @@
 #include "render/atmosphere_texels_test_support.h"
 #include "render/cpu_shading.h"
 #include "scene/scene_loader.h"
-#include "spectral/error.h"
+#include "core/error.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 
 namespace prism::render {

@@ -13,7 +13,7 @@
 #include "gpu/headless_context.h"
 #include "gpu/program.h"
 #include "shared_cpp.h"
-#include "spectral/data_files.h"
+#include "core/data_files.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 
 namespace prism::shared {

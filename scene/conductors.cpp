@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <array>
 
-#include "spectral/csv.h"
-#include "spectral/data_files.h"
-#include "spectral/error.h"
+#include "core/csv.h"
+#include "spectral/spectrum_csv.h"
+#include "core/data_files.h"
+#include "core/error.h"
 
 namespace prism {
 

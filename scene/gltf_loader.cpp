@@ -16,8 +16,8 @@
 #include <tiny_gltf.h>
 
 #include "scene/procedural_mesh.h"
-#include "scene/scene_schema.h"
-#include "spectral/error.h"
+#include "core/json_schema.h"
+#include "core/error.h"
 
 namespace prism {
 

@@ -7,7 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism {
 namespace {

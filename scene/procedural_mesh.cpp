@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+
+#include "shared_cpp.h"
 #include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "shared_cpp.h"
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::shared {
 #include "random.glsl"
@@ -17,7 +19,7 @@ namespace prism {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979323846f;
+using shared::kPi;
 
 // The horizontal tangent of a plane facing n (unit): +y × n, or +x for a vertical normal.
 glm::vec3 planeTangent(const glm::vec3& n) {

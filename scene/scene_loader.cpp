@@ -10,13 +10,14 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "shared_cpp.h"
 #include "scene/conductors.h"
 #include "scene/gltf_loader.h"
 #include "scene/procedural_mesh.h"
-#include "scene/scene_schema.h"
+#include "core/json_schema.h"
 #include "spectral/colour_space.h"
-#include "spectral/csv.h"
-#include "spectral/error.h"
+#include "spectral/spectrum_csv.h"
+#include "core/error.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/sigmoid_fit.h"
@@ -30,11 +31,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using schema::Node;
 using schema::Range;
-
-// The maximum luminous efficacy of radiation, lm/W, as the photometric normalisation uses it
-// (CIE 1931 ȳ peaks at 555 nm; the SI's 683 lm/W is defined at 540 THz ≈ 555.016 nm, and the
-// difference, 683.002 at the ȳ peak, is below the tabulation's precision).
-constexpr double kKm = 683.0;
 
 std::string joined(const std::vector<std::string>& items) {
   std::string out;
@@ -511,7 +507,7 @@ void resolveWater(Water& water) {
 }
 
 double luminousIntegral(const Spectrum& spd) {
-  return kKm * observer("cie1931").integrate(spd)[1];
+  return double(shared::kLumensPerWatt) * observer("cie1931").integrate(spd)[1];
 }
 
 Scene loadScene(const fs::path& file) { return loadScene(file, {}); }

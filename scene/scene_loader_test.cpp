@@ -10,8 +10,8 @@
 #include <string>
 
 #include "spectral/colour_space.h"
-#include "spectral/error.h"
-#include "spectral/error_test_support.h"
+#include "core/error.h"
+#include "core/error_test_support.h"
 #include "spectral/observer.h"
 #include "techniques/underwater/jerlov_water.h"
 

@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "spectral/csv.h"
-#include "spectral/data_files.h"
-#include "spectral/error.h"
+#include "core/csv.h"
+#include "core/data_files.h"
+#include "core/error.h"
 
 namespace prism {
 namespace {

@@ -3,7 +3,7 @@
 #include <Eigen/LU>
 
 #include "shared_cpp.h"
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::shared {
 #include "transfer.glsl"

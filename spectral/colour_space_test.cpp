@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism {
 namespace {

@@ -3,9 +3,9 @@
 #include <charconv>
 #include <cmath>
 
-#include "spectral/csv.h"
-#include "spectral/data_files.h"
-#include "spectral/error.h"
+#include "spectral/spectrum_csv.h"
+#include "core/data_files.h"
+#include "core/error.h"
 
 namespace prism {
 namespace {

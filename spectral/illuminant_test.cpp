@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "spectral/colour_space.h"
-#include "spectral/error.h"
+#include "core/error.h"
 #include "spectral/observer.h"
 
 namespace prism {

@@ -2,9 +2,11 @@
 
 #include <map>
 
-#include "spectral/csv.h"
-#include "spectral/data_files.h"
-#include "spectral/error.h"
+#include "core/csv.h"
+#include "spectral/spectrum_csv.h"
+#include "core/data_files.h"
+#include "core/error.h"
+#include "shared_cpp.h"
 #include "spectral/illuminant.h"
 
 namespace prism {
@@ -116,7 +118,7 @@ std::vector<Eigen::Vector3d> reflectanceWeights(const Observer& obs, const Spect
 }
 
 double absoluteTristimulusScale(const Observer& obs) {
-  constexpr double kLumensPerWatt = 683.0;
+  const double kLumensPerWatt = shared::kLumensPerWatt;
   if (!obs.isCamera) return kLumensPerWatt;
   static const Spectrum d65 = illuminant("D65");
   return kLumensPerWatt * observer("cie1931").integrate(d65).y() / obs.integrate(d65).y();

@@ -7,7 +7,7 @@
 
 #include "shared_cpp.h"
 #include "spectral/colour_space.h"
-#include "spectral/error.h"
+#include "core/error.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 #include "spectral/sigmoid_fit.h"

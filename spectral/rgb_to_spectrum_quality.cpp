@@ -9,7 +9,7 @@
 #include "spectral/colour_difference.h"
 #include "spectral/colour_space.h"
 #include "spectral/observer.h"
-#include "spectral/parallel_for.h"
+#include "core/parallel_for.h"
 #include "spectral/sigmoid_fit.h"
 
 namespace prism::shared {

@@ -10,8 +10,8 @@
 #include <limits>
 
 #include "shared_cpp.h"
-#include "spectral/atomic_file.h"
-#include "spectral/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 
 namespace prism::shared {
 #include "upsampling.glsl"

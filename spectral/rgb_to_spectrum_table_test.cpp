@@ -9,7 +9,7 @@
 #include <random>
 
 #include "shared_cpp.h"
-#include "spectral/error.h"
+#include "core/error.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 
 namespace prism::shared {

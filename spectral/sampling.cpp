@@ -5,7 +5,7 @@
 #include <string>
 
 #include "shared_cpp.h"
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::shared {
 #include "random.glsl"

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "shared_cpp.h"
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::shared {
 #include "box_upsampling.glsl"

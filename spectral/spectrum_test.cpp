@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism {
 namespace {

@@ -8,9 +8,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "spectral/atomic_file.h"
+#include "core/atomic_file.h"
 #include "spectral/colour_space.h"
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::viewer {
 namespace {

@@ -53,7 +53,7 @@ PRISM_INLINE vec4 skyBackground(IN(GpuAtmosphere) a, int b, IN(vec3) camera, IN(
   vec4 radiance = skyViewLookup(a, b, r, d, sun);
   float angularRadius = a.options.y;
   if (dot(d, sun) > cos(angularRadius) && !rayIntersectsGround(a, r, d.y)) {
-    float solidAngle = kAtmospherePi * angularRadius * angularRadius;
+    float solidAngle = kPi * angularRadius * angularRadius;
     radiance += a.solarIrradiance * sunTransmittanceTo(a, b, camera, sun) / solidAngle;
   }
   return radiance;
@@ -99,10 +99,10 @@ PRISM_INLINE vec4 skyIrradianceCoefficientValue(IN(GpuAtmosphere) a, int b, floa
 
 // Irradiance on a surface of unit normal n from the whole sky (sun excluded: it is a light).
 PRISM_INLINE vec4 skyIrradiance(int b, IN(vec3) n) {
-  vec4 e = skyIrradianceCoefficient(b, 0) * (kAtmospherePi * 0.282095f) +
+  vec4 e = skyIrradianceCoefficient(b, 0) * (kPi * 0.282095f) +
            (skyIrradianceCoefficient(b, 1) * n.y + skyIrradianceCoefficient(b, 2) * n.z +
             skyIrradianceCoefficient(b, 3) * n.x) *
-               (2.0f * kAtmospherePi / 3.0f * 0.488603f);
+               (2.0f * kPi / 3.0f * 0.488603f);
   return max(e, vec4(0.0f));
 }
 

@@ -152,7 +152,7 @@ PRISM_INLINE vec4 groundRadiance(IN(GpuAtmosphere) a, int b, IN(vec3) groundPoin
   float r = length(groundPoint);
   float muSun = dot(groundPoint, sun) / r;
   if (muSun <= 0.0f) return vec4(0.0f);
-  return transmittanceToSpace(a, b, r, muSun) * (muSun * a.ozoneMie.w / kAtmospherePi);
+  return transmittanceToSpace(a, b, r, muSun) * (muSun * a.ozoneMie.w / kPi);
 }
 
 // --- Transmittance table texel -------------------------------------------------------------
@@ -181,7 +181,7 @@ PRISM_INLINE vec4 multipleScatteringLutValue(IN(GpuAtmosphere) a, int b, int x, 
   ViewRay ray;
   ray.origin = vec3(0.0f, r, 0.0f);
   ray.sun = vec3(sqrt(max(1.0f - muSun * muSun, 0.0f)), muSun, 0.0f);
-  ray.phaseRayleigh = 1.0f / (4.0f * kAtmospherePi);
+  ray.phaseRayleigh = 1.0f / (4.0f * kPi);
   ray.phaseMie = ray.phaseRayleigh;
   ray.multipleScattering = false;
   vec4 secondOrder = vec4(0.0f), transfer = vec4(0.0f);

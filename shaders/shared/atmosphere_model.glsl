@@ -19,7 +19,6 @@
 // (μ < 0 without hitting it) is split at its lowest point, and each half crowds its samples
 // there.
 
-const float kAtmospherePi = 3.14159265358979f;
 
 // Sizes of the tables (texels): transmittance (r, μ), multiple scattering (μ_s, r), sky view
 // (azimuth from the sun, zenith angle), aerial perspective (screen x, y, depth slice).
@@ -77,10 +76,10 @@ PRISM_INLINE vec4 mieScatteringAt(IN(GpuAtmosphere) a, IN(AtmosphereDensity) d) 
 
 // ν: cosine of the angle between the view direction and the direction towards the sun.
 PRISM_INLINE float rayleighPhase(float nu) {
-  return 3.0f / (16.0f * kAtmospherePi) * (1.0f + nu * nu);
+  return 3.0f / (16.0f * kPi) * (1.0f + nu * nu);
 }
 PRISM_INLINE float miePhase(float g, float nu) {
-  float k = 3.0f / (8.0f * kAtmospherePi) * (1.0f - g * g) / (2.0f + g * g);
+  float k = 3.0f / (8.0f * kPi) * (1.0f - g * g) / (2.0f + g * g);
   return k * (1.0f + nu * nu) / pow(max(1.0f + g * g - 2.0f * g * nu, 1e-6f), 1.5f);
 }
 

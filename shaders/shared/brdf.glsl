@@ -13,8 +13,6 @@
 // D·G/(4·n·l·n·v) does not depend on the wavelength, so it is computed once per pixel and light
 // (MicrofacetTerms); only F and the albedo are evaluated per batch.
 
-const float kPi = 3.14159265358979f;
-
 // GGX in Filament's form: 1 − (n·h)² given as |n × h|², which keeps its precision near the
 // highlight's peak (n·h → 1), where a2·(n·h)² + 1 − (n·h)² cancels for smooth surfaces.
 PRISM_INLINE float ggxDistribution(float nDotH, float oneMinusNDotHSquared, float alpha) {

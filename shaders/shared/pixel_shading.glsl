@@ -205,7 +205,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     }
     if (fc.atmosphere != 0) {
       if (kind != kMaterialConductor) {
-        radiance += albedo * (1.0f - metallic) * skyIrradiance(b, s.normal) * (1.0f / kAtmospherePi);
+        radiance += albedo * (1.0f - metallic) * skyIrradiance(b, s.normal) * (1.0f / kPi);
       }
       AerialPerspective ap = aerialPerspectiveAt(b, uv, distanceKm);
       radiance = radiance * ap.transmittance + ap.inScattering;

@@ -4,3 +4,4 @@
 #define OUT(T) out T
 #define INOUT(T) inout T
 #define PRISM_PRECISE precise
+#include "constants.glsl"

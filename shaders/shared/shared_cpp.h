@@ -55,4 +55,6 @@ using glm::radians;
 using glm::sin;
 using glm::smoothstep;
 using glm::sqrt;
+
+#include "constants.glsl"
 }  // namespace prism::shared

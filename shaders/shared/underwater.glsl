@@ -30,7 +30,7 @@ PRISM_INLINE vec4 waterInScattering(IN(vec4) sigmaS, IN(vec4) sigmaT, IN(vec4) k
     float xs = x * distanceM;
     float path = abs(xs) < 1e-3f ? distanceM * (1.0f - xs * 0.5f + xs * xs * (1.0f / 6.0f))
                                  : (1.0f - exp(-xs)) / x;
-    result[j] = sigmaS[j] * exp(-kd[j] * cameraDepthM) * (1.0f / (4.0f * 3.14159265358979f)) * path;
+    result[j] = sigmaS[j] * exp(-kd[j] * cameraDepthM) * (1.0f / (4.0f * kPi)) * path;
   }
   return result;
 }

@@ -12,7 +12,7 @@
 namespace prism::atmosphere {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 constexpr int kDepthSteps = 1000;  // Simpson intervals per half of the sun's ray (even)
 constexpr int kViewSteps = 1000;   // midpoint samples per piece of the view ray
 
@@ -138,8 +138,8 @@ ReferenceSegment referenceSingleScatteringTo(const AtmosphereParameters& p,
 
   const double nu = glm::dot(dir, sun);
   const double g = p.miePhaseG;
-  const double phaseR = 3.0 / (16.0 * kPi) * (1.0 + nu * nu);
-  const double phaseM = 3.0 / (8.0 * kPi) * (1.0 - g * g) / (2.0 + g * g) * (1.0 + nu * nu) /
+  const double phaseR = 3.0 / (16.0 * pi) * (1.0 + nu * nu);
+  const double phaseM = 3.0 / (8.0 * pi) * (1.0 - g * g) / (2.0 + g * g) * (1.0 + nu * nu) /
                         std::pow(1.0 + g * g - 2.0 * g * nu, 1.5);
   Channels radiance{}, depth{};
   for (std::size_t piece = 0; piece + 1 < breaks.size(); ++piece) {

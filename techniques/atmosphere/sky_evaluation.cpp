@@ -6,13 +6,13 @@
 #include <numbers>
 
 #include "spectral/colour_difference.h"
-#include "spectral/parallel_for.h"
+#include "core/parallel_for.h"
 #include "techniques/atmosphere/atmosphere_tables.h"
 
 namespace prism::atmosphere {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 
 // Runs every batch of the strategy over every sample; body(batch, sample, radiance).
 void forEachBatchSample(const AtmosphereParameters& p, const SkyStrategy& strategy,
@@ -24,7 +24,7 @@ void forEachBatchSample(const AtmosphereParameters& p, const SkyStrategy& strate
     const SkyBatch& batch = strategy.batches[b];
     AtmosphereTables tables = computeTables(packAtmosphere(p, batch.lambdaNm, batch.solarIrradiance));
     parallelFor(samples.sunElevationsDeg.size(), 0, [&](std::size_t e) {
-      float muSun = static_cast<float>(std::sin(samples.sunElevationsDeg[e] * kPi / 180.0));
+      float muSun = static_cast<float>(std::sin(samples.sunElevationsDeg[e] * pi / 180.0));
       for (std::size_t d = 0; d < samples.zenith.size(); ++d) {
         glm::vec4 radiance = skyRadiance(tables, r, muSun, static_cast<float>(samples.zenith[d]),
                                          static_cast<float>(samples.azimuth[d]), false);
@@ -44,7 +44,7 @@ SkySamples makeSkySamples(std::vector<double> sunElevationsDeg, int zeniths, int
     double cosZenith = (i + 0.5) / zeniths;
     for (int j = 0; j < azimuths; ++j) {
       s.zenith.push_back(std::acos(cosZenith));
-      s.azimuth.push_back((j + 0.5) / azimuths * kPi);
+      s.azimuth.push_back((j + 0.5) / azimuths * pi);
     }
   }
   return s;

@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "spectral/colour_space.h"
-#include "spectral/data_files.h"
-#include "spectral/error.h"
+#include "core/data_files.h"
+#include "core/error.h"
 #include "spectral/observer.h"
 #include "spectral/sampling.h"
 #include "techniques/atmosphere/atmosphere_parameters.h"

@@ -1,5 +1,5 @@
-// Checking JSON documents (scene files, glTF files) with errors that point into them: the
-// pieces the scene loader and the glTF loader share. Internal to render/: not part of the API.
+// Checking JSON documents (scene files, glTF files, techniques' scene sections, settings) with
+// errors that point into them: the pieces every loader of a JSON document shares.
 //
 // Every error is a prism::Error of one line, "<document>: <JSON pointer>: <what>", the pointer
 // as RFC 6901 writes it ("/lights/0/intensity", "/" for the whole document), so that a user can

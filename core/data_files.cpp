@@ -1,9 +1,9 @@
-#include "spectral/data_files.h"
+#include "core/data_files.h"
 
 #include <cstdlib>
 #include <string>
 
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism {
 namespace {

@@ -1,11 +1,11 @@
-#include "spectral/atomic_file.h"
+#include "core/atomic_file.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism {
 namespace {

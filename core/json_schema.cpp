@@ -1,4 +1,4 @@
-#include "scene/scene_schema.h"
+#include "core/json_schema.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <iterator>
 #include <system_error>
 
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism::schema {
 

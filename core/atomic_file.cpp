@@ -1,4 +1,4 @@
-#include "spectral/atomic_file.h"
+#include "core/atomic_file.h"
 
 #include <unistd.h>
 
@@ -7,7 +7,7 @@
 #include <cstring>
 #include <string>
 
-#include "spectral/error.h"
+#include "core/error.h"
 
 namespace prism {
 

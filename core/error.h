@@ -1,7 +1,7 @@
 // The two kinds of failure in Prism, kept apart (STYLE.md §10):
 // - prism::Error: bad user input or data (a file, a name, a number out of range). Its message is
-//   one line that names the thing and, for files, file:line[:column]; the CLI prints it and
-//   exits non-zero.
+//   one line that names the thing and, for files, the place (FileLocation: file:line[:column]);
+//   the CLI prints it and exits non-zero.
 // - PRISM_CHECK: a broken invariant inside Prism (a bug). Always on; prints both the expression
 //   and where, then aborts.
 #pragma once
@@ -13,9 +13,29 @@
 
 namespace prism {
 
+// A place in a user's file, as editors and compilers print it: "FILE", "FILE:LINE" or
+// "FILE:LINE:COLUMN" (1-based; 0 means not known).
+struct FileLocation {
+  std::string file;
+  int line = 0;
+  int column = 0;
+
+  std::string str() const {
+    std::string s = file;
+    for (int n : {line, column}) {
+      if (n <= 0) break;
+      s += ':';
+      s += std::to_string(n);
+    }
+    return s;
+  }
+};
+
 class Error : public std::runtime_error {
  public:
   explicit Error(const std::string& message) : std::runtime_error(message) {}
+  // "FILE:LINE:COLUMN: message"
+  Error(const FileLocation& where, const std::string& message) : std::runtime_error(where.str() + ": " + message) {}
 };
 
 }  // namespace prism

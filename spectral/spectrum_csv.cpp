@@ -1,0 +1,70 @@
+#include "spectral/spectrum_csv.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/csv.h"
+#include "core/error.h"
+
+namespace prism {
+
+SpectraTable SpectraTable::read(const std::filesystem::path& path,
+                                std::span<const std::string_view> expectedColumns) {
+  CsvTable csv = CsvTable::read(path);
+  SpectraTable table;
+  table.mPath = csv.path();
+  if (csv.header().front() != "wavelength_nm")
+    throw Error(table.mPath + ":1: first column must be 'wavelength_nm', found '" +
+                csv.header().front() + "'");
+  for (std::string_view name : expectedColumns) csv.column(name);
+  table.mNames.assign(csv.header().begin() + 1, csv.header().end());
+  table.mColumns.resize(table.mNames.size());
+  std::vector<int> lines;
+  for (const CsvRow& row : csv.rows()) {
+    table.mLambdasNm.push_back(csv.number(row, 0));
+    lines.push_back(row.line);
+    for (std::size_t c = 0; c < table.mNames.size(); ++c)
+      table.mColumns[c].push_back(csv.number(row, static_cast<int>(c + 1)));
+  }
+  checkIncreasingWavelengths(table.mPath, table.mLambdasNm, lines);
+  return table;
+}
+
+bool SpectraTable::contains(std::string_view name) const {
+  return std::find(mNames.begin(), mNames.end(), name) != mNames.end();
+}
+
+TabulatedSpectrum SpectraTable::spectrum(std::string_view name, Extrapolation extrapolation) const {
+  auto it = std::find(mNames.begin(), mNames.end(), name);
+  if (it == mNames.end()) throw Error(mPath + ": no spectrum named '" + std::string(name) + "'");
+  return TabulatedSpectrum(mLambdasNm, mColumns[static_cast<std::size_t>(it - mNames.begin())],
+                           extrapolation);
+}
+
+TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path, Extrapolation extrapolation,
+                                  double minValue, double maxValue) {
+  CsvTable csv = CsvTable::read(path);
+  if (csv.header().size() != 2)
+    throw Error(csv.path() + ":1: a spectrum file has two columns (wavelength in nm, value), found " +
+                std::to_string(csv.header().size()));
+  std::vector<double> lambdas, values;
+  std::vector<int> lines;
+  for (const CsvRow& row : csv.rows()) {
+    lambdas.push_back(csv.number(row, 0));
+    double v = csv.number(row, 1);
+    if (v < minValue || v > maxValue) {
+      std::ostringstream bounds;
+      bounds << "[" << minValue << ", " << maxValue << "]";
+      throw Error(csv.path() + ":" + std::to_string(row.line) + ":2: value " + row.fields[1] +
+                  (minValue == 0.0 && std::isinf(maxValue) ? " is negative"
+                                                           : " is outside " + bounds.str()));
+    }
+    values.push_back(v);
+    lines.push_back(row.line);
+  }
+  checkIncreasingWavelengths(csv.path(), lambdas, lines);
+  return TabulatedSpectrum(std::move(lambdas), std::move(values), extrapolation);
+}
+
+}  // namespace prism

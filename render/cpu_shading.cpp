@@ -33,10 +33,10 @@ class CpuShadingKernel {
   GpuLight frameLight(int l) const { return mFrame.lights[index(l)]; }
   GpuMaterial frameMaterial(int id) const { return mFrame.materials[index(id)]; }
   vec4 frameLightSpectrum(int l, int b) const {
-    return mFrame.lightSpectra[index(l * mFrame.constants.batchCount + b)];
+    return mFrame.lightSpectra[index(lightSpectrumIndex(l, b, mFrame.constants.batchCount))];
   }
   vec4 frameMaterialSpectrum(int s, int b, int j) const {
-    return mFrame.materialSpectra[index((s * mFrame.constants.batchCount + b) * 2 + j)];
+    return mFrame.materialSpectra[index(materialSpectrumIndex(s, b, j, mFrame.constants.batchCount))];
   }
   float shadowDepthAt(int layer, int x, int y) const {
     return mShadowLayers[index(layer)][index(y * mFrame.constants.shadowMapSize + x)];
@@ -44,7 +44,7 @@ class CpuShadingKernel {
   vec3 upsamplingCoefficients(vec3 rgb) const {
     return mFrame.constants.gbufferCoefficients != 0 ? mTexelCoefficients : mTable.lookup(rgb);
   }
-  vec4 frameWaterSpectrum(int b, int j) const { return mFrame.waterSpectra[index(b * 3 + j)]; }
+  vec4 frameWaterSpectrum(int b, int j) const { return mFrame.waterSpectra[index(waterSpectrumIndex(b, j))]; }
   GpuAtmosphere frameAtmosphere(int b) const { return mFrame.atmospheres[index(b)]; }
   static vec4 texel(const std::vector<std::vector<glm::vec4>>& layers, int layer, int x, int y, int width) {
     return layers[index(layer)][index(y * width + x)];

@@ -70,7 +70,8 @@ struct UpFacing {
 
 glm::vec3 shadeOnce(const Scene& scene, const FrameSettings& settings, const UpFacing& p,
                     const RgbToSpectrumTable& lut = table()) {
-  FrameData frame = buildFrameData(scene, settings, lut, {}, 0, scene.camera.position);
+  FrameData frame = buildFrameData(scene, settings, lut, {}, 0,
+                                   cameraTransform(scene.camera, settings.width, settings.height));
   CpuShading shading(frame, lut, {});
   return shading.shade(p.texel, glm::vec2(0.5f), p.camera);
 }

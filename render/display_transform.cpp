@@ -50,11 +50,8 @@ double displayWhiteLuminance(float ev100) { return 1.0 / shared::exposureScale(e
 
 glm::vec3 encodeForDisplay(const DisplayTransform& transform, ToneMap toneMap,
                            const glm::vec3& tristimulus) {
-  glm::vec3 t = tristimulus;
-  if (glm::any(glm::isnan(t)) || glm::any(glm::isinf(t))) t = glm::vec3(0.0f);
-  glm::vec3 rgb = shared::compressToGamut(transform.toDisplay * t, transform.luminanceWeights);
-  rgb = shared::toneMap(static_cast<int>(toneMap), rgb, transform.luminanceWeights);  // as the pass's uniform
-  rgb = transform.transfer == 1 ? shared::bt2020Encode3(rgb) : shared::srgbEncode3(rgb);
+  glm::vec3 rgb = shared::encodeForDisplay(transform.toDisplay, transform.luminanceWeights,
+                                           static_cast<int>(toneMap), transform.transfer, tristimulus);
   return glm::clamp(rgb, glm::vec3(0.0f), glm::vec3(1.0f));
 }
 

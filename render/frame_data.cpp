@@ -31,12 +31,12 @@ glm::vec4 reflectanceRgb(const Spectrum& reflectance, const RgbColourSpace& spac
   return toVec4(rgb);
 }
 
-// Reflectance of a conductor at normal incidence: ((n − 1)² + k²) / ((n + 1)² + k²).
+// Reflectance of a conductor at normal incidence, by the spectral path's own Fresnel formula.
 Spectrum normalIncidenceReflectance(const ConductorIor& ior) {
   Spectrum r;
   for (int i = 0; i < kSpectrumSamples; ++i) {
-    double n = ior.n[i], k = ior.k[i];
-    r[i] = ((n - 1) * (n - 1) + k * k) / ((n + 1) * (n + 1) + k * k);
+    glm::vec4 n(static_cast<float>(ior.n[i])), k(static_cast<float>(ior.k[i]));
+    r[i] = shared::conductorFresnel(n, k, 1.0f).x;
   }
   return r;
 }
@@ -100,7 +100,7 @@ void addBatches(FrameData& frame, const FrameSettings& settings, const Scene& sc
 
 FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
                          const RgbToSpectrumTable& table, const std::vector<ShadowView>& shadows,
-                         std::uint32_t frameIndex, const glm::vec3& cameraPositionW) {
+                         std::uint32_t frameIndex, const CameraTransform& camera) {
   if (scene.lights.size() > static_cast<std::size_t>(shared::kMaxLights)) {
     throw Error(fmt::format("{}: {} lights; the renderer handles at most {}",
                             scene.file.string(), scene.lights.size(), shared::kMaxLights));
@@ -118,6 +118,11 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
   frame.constants.lightCount = static_cast<int>(scene.lights.size());
   frame.constants.shadowMapSize = settings.shadowMapSize;
   frame.constants.gbufferCoefficients = settings.gbufferAlbedo == GBufferAlbedo::Coefficients ? 1 : 0;
+  frame.constants.upsamplingResolution = table.resolution();
+  frame.constants.filteredLookup = settings.lookup == UpsamplingLookup::Filtered ? 1 : 0;
+  frame.constants.inverseViewProjection = camera.inverseViewProjection;
+  frame.constants.cameraPositionW = camera.position;
+  frame.constants.viewportSize = glm::vec2(static_cast<float>(settings.width), static_cast<float>(settings.height));
 
   // Lights and their spectra.
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
@@ -126,16 +131,19 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
     int type = light.type == LightType::Directional ? shared::kLightDirectional
                : light.type == LightType::Point     ? shared::kLightPoint
                                                     : shared::kLightSpot;
-    glm::vec3 direction = glm::normalize(light.direction);
-    g.positionType = glm::vec4(light.position, static_cast<float>(type));
-    g.directionIntensity = glm::vec4(direction, light.intensity);
-    g.cone = glm::vec4(std::cos(glm::radians(light.innerConeDeg)),
-                       std::cos(glm::radians(light.outerConeDeg)), 0.0f, 0.0f);
-    g.shadow = glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f);
+    g.positionW = light.position;
+    g.type = type;
+    g.direction = glm::normalize(light.direction);
+    g.intensity = light.intensity;
+    g.cosInner = std::cos(glm::radians(light.innerConeDeg));
+    g.cosOuter = std::cos(glm::radians(light.outerConeDeg));
+    g.shadowLayer = -1;
     g.shadowFromWorld = glm::mat4(1.0f);
     for (const ShadowView& view : shadows) {
       if (view.lightIndex != static_cast<int>(i)) continue;
-      g.shadow = glm::vec4(static_cast<float>(view.layer), view.normalOffsetM, view.depthBias, 0.0f);
+      g.shadowLayer = view.layer;
+      g.shadowNormalOffsetM = view.normalOffsetM;
+      g.shadowDepthBias = view.depthBias;
       g.shadowFromWorld = view.viewProjection;
     }
     frame.lights.push_back(g);
@@ -165,13 +173,15 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
   int spectraCount = 0;
   for (const Material& m : scene.materials) {
     shared::GpuMaterial g{};
-    g.baseColourMetallic = glm::vec4(m.baseColour, m.metallic);
-    int kind = m.conductor     ? shared::kMaterialConductor
-               : m.reflectance ? shared::kMaterialMeasured
-                               : shared::kMaterialBaseColour;
-    g.roughnessKind = glm::vec4(m.roughness, static_cast<float>(kind), 0.0f, m.lambertian ? 1.0f : 0.0f);
-    if (kind != shared::kMaterialBaseColour) {
-      g.roughnessKind.z = static_cast<float>(spectraCount++);
+    g.baseColour = m.baseColour;
+    g.metallic = m.metallic;
+    g.roughness = m.roughness;
+    g.kind = m.conductor     ? shared::kMaterialConductor
+             : m.reflectance ? shared::kMaterialMeasured
+                             : shared::kMaterialBaseColour;
+    g.lambertian = m.lambertian ? 1 : 0;
+    if (g.kind != shared::kMaterialBaseColour) {
+      g.spectra = spectraCount++;
       for (const shared::GpuBatch& batch : frame.batches) {
         if (rgbMode) {
           const Spectrum& r = m.conductor ? normalIncidenceReflectance(*m.conductor) : *m.reflectance;
@@ -196,7 +206,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
     const Water& w = *scene.water;
     frame.constants.water = 1;
     frame.constants.waterSurfaceY = w.surfaceY(scene.camera);
-    frame.constants.waterDepthM = std::max(frame.constants.waterSurfaceY - cameraPositionW.y, 0.0f);
+    frame.constants.waterDepthM = std::max(frame.constants.waterSurfaceY - camera.position.y, 0.0f);
     for (const shared::GpuBatch& batch : frame.batches) {
       glm::vec4 lambdaNm = rgbMode ? rgbStandIn(kRgbStandInWavelengthsNm[1]) : batch.lambdaNm;
       glm::vec4 sigmaS = at4(w.sigmaS, lambdaNm), sigmaA = at4(w.sigmaA, lambdaNm);
@@ -224,7 +234,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
     // measured solar spectrum unless edited; in RGB mode its RGB), so the sky follows the light.
     const float intensity = scene.lights[static_cast<std::size_t>(sun)].intensity;
     for (int b = 0; b < batchCount; ++b) {
-      glm::vec4 solar = frame.lightSpectra[static_cast<std::size_t>(sun * batchCount + b)] * intensity;
+      glm::vec4 solar = frame.lightSpectra[static_cast<std::size_t>(shared::lightSpectrumIndex(sun, b, batchCount))] * intensity;
       glm::vec4 lambdaNm = frame.batches[static_cast<std::size_t>(b)].lambdaNm;
       if (rgbMode) {
         solar.w = 0.0f;

@@ -31,6 +31,7 @@
 #include <glm/glm.hpp>
 
 #include "render/frame_settings.h"
+#include "scene/camera_transform.h"
 #include "scene/scene.h"
 #include "render/shadow_views.h"
 #include "render/shared_shading.h"
@@ -50,10 +51,10 @@ struct FrameData {
   std::vector<shared::GpuAtmosphere> atmospheres;  // one per batch with a sky, else one zero entry
 };
 
-// frameIndex seeds stochastic wavelength strategies (a new set every frame). cameraPositionW is
-// where the frame is seen from (the water's depth there; the surface stays where the scene put it).
+// frameIndex seeds stochastic wavelength strategies (a new set every frame). camera is where the
+// frame is seen from (the water's depth there; the surface stays where the scene put it).
 FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
                          const RgbToSpectrumTable& table, const std::vector<ShadowView>& shadows,
-                         std::uint32_t frameIndex, const glm::vec3& cameraPositionW);
+                         std::uint32_t frameIndex, const CameraTransform& camera);
 
 }  // namespace prism::render

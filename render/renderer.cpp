@@ -222,7 +222,7 @@ void Renderer::hook(std::string_view pass) const {
 void Renderer::renderFrame() {
   mCameraTransform = prism::cameraTransform(mCamera, mSettings.width, mSettings.height);
   // A new set of wavelengths every frame (only stochastic strategies differ between frames).
-  mFrame = buildFrameData(mScene, mSettings, mTable, mShadows.views, mFrameIndex++, mCamera.position);
+  mFrame = buildFrameData(mScene, mSettings, mTable, mShadows.views, mFrameIndex++, mCameraTransform);
   uploadFrameData();
   hook("shadow");
   shadowPass();
@@ -244,6 +244,7 @@ void Renderer::renderFrame() {
 }
 
 void Renderer::uploadFrameData() {
+  upload(mFrameConstants, std::vector<shared::FrameConstants>{mFrame.constants}, "frame constants");
   upload(mBatches, mFrame.batches, "frame batches");
   upload(mLights, mFrame.lights.empty() ? std::vector<shared::GpuLight>(1) : mFrame.lights,
          "frame lights");
@@ -341,6 +342,7 @@ void Renderer::lightingPass() {
   glDisable(GL_DEPTH_TEST);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
+  mFrameConstants.bindBase(GL_UNIFORM_BUFFER, shared::kFrameConstantsBinding);
   mBatches.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
   mLights.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   mMaterials.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
@@ -371,23 +373,6 @@ void Renderer::lightingPass() {
   }
   const gpu::Program& p = mLightingProgram;
   p.use();
-  p.setUniform("uMode", mFrame.constants.mode);
-  p.setUniform("uBatchCount", mFrame.constants.batchCount);
-  p.setUniform("uLightCount", mFrame.constants.lightCount);
-  p.setUniform("uShadowMapSize", mFrame.constants.shadowMapSize);
-  p.setUniform("uWater", mFrame.constants.water);
-  p.setUniform("uGBufferCoefficients", mFrame.constants.gbufferCoefficients);
-  p.setUniform("uWaterDepth", mFrame.constants.waterDepthM);
-  p.setUniform("uWaterSurfaceY", mFrame.constants.waterSurfaceY);
-  p.setUniform("uAtmosphere", sky ? 1 : 0);
-  p.setUniform("uAtmosphereSunLight", mFrame.constants.atmosphereSunLight);
-  p.setUniform("uAtmosphereOriginKm", mFrame.constants.atmosphereOriginKm);
-  p.setUniform("uUpsamplingResolution", mTable.resolution());
-  p.setUniform("uFilteredLookup", mSettings.lookup == UpsamplingLookup::Filtered ? 1 : 0);
-  p.setUniform("uInverseViewProjection", mCameraTransform.inverseViewProjection);
-  p.setUniform("uCameraPosition", mCameraTransform.position);
-  p.setUniform("uViewportSize", glm::vec2(static_cast<float>(mSettings.width),
-                                          static_cast<float>(mSettings.height)));
   mFullScreen.draw(3);
   glDisable(GL_BLEND);
   ++mAccumulated;

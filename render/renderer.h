@@ -127,7 +127,7 @@ class Renderer {
   GpuMesh mGizmo;  // a unit sphere
   Shadows mShadows;
   Targets mTargets;
-  gpu::Buffer mBatches, mLights, mMaterials, mLightSpectra, mMaterialSpectra, mWaterSpectra;
+  gpu::Buffer mFrameConstants, mBatches, mLights, mMaterials, mLightSpectra, mMaterialSpectra, mWaterSpectra;
   gpu::Buffer mNoSkyIrradiance;              // bound in place of the sky's without an atmosphere
   std::unique_ptr<AtmospherePass> mAtmosphere;  // made for the first frame with a sky
 };

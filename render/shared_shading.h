@@ -2,6 +2,8 @@
 // once (inside prism::shared), with the GPU buffer layouts checked against std430.
 #pragma once
 
+#include <cstddef>
+
 #include "shared_cpp.h"
 #include "techniques/atmosphere/atmosphere_layout.h"  // atmosphere_model.glsl, once
 
@@ -17,8 +19,15 @@ namespace prism::shared {
 #include "surface_inputs.glsl"
 #include "underwater.glsl"
 
-// std430 sizes and offsets of the buffer structs (vec4 = 16 bytes, mat4 = 64, no padding).
+// std430 (storage buffers) and std140 (the constants' block) sizes and offsets: a vec3 takes 12
+// bytes and the scalar after it the last 4 of its 16, as glm lays them out in C++.
 static_assert(sizeof(GpuBatch) == 64 && offsetof(GpuBatch, toZ) == 48);
-static_assert(sizeof(GpuLight) == 128 && offsetof(GpuLight, shadowFromWorld) == 64);
-static_assert(sizeof(GpuMaterial) == 32 && offsetof(GpuMaterial, roughnessKind) == 16);
+static_assert(sizeof(GpuLight) == 128 && offsetof(GpuLight, type) == 12 && offsetof(GpuLight, intensity) == 28 &&
+              offsetof(GpuLight, shadowLayer) == 40 && offsetof(GpuLight, shadowFromWorld) == 64);
+static_assert(sizeof(GpuMaterial) == 32 && offsetof(GpuMaterial, metallic) == 12 &&
+              offsetof(GpuMaterial, lambertian) == 28);
+static_assert(sizeof(FrameConstants) == 144 && offsetof(FrameConstants, cameraPositionW) == 64 &&
+              offsetof(FrameConstants, mode) == 76 && offsetof(FrameConstants, viewportSize) == 80 &&
+              offsetof(FrameConstants, batchCount) == 88 && offsetof(FrameConstants, water) == 112 &&
+              offsetof(FrameConstants, atmosphereOriginKm) == 132);
 }  // namespace prism::shared

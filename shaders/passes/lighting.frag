@@ -1,6 +1,7 @@
 #version 450
 // Spectral lighting pass: shaders/shared/pixel_shading.glsl for every pixel, over the G-buffer,
-// with this frame's data in shader storage buffers (layout: shared/frame_layout.glsl). Writes
+// with this frame's constants in a uniform block and its data in shader storage buffers (layout:
+// shared/frame_layout.glsl, both written once for GLSL and C++). Writes
 // tristimulus with alpha 1 into an accumulation target blended additively, so that after N
 // frames rgb / a is the mean of N frames (temporal accumulation of stochastic wavelengths).
 #include "shared/prelude.glsl"
@@ -15,6 +16,7 @@
 #include "shared/atmosphere_model.glsl"
 #include "common_upsampling.glsl"
 
+layout(std140, binding = kFrameConstantsBinding) uniform Frame { FrameConstants frame; };
 layout(std430, binding = 0) readonly buffer Batches { GpuBatch batches[]; };
 layout(std430, binding = 1) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
@@ -30,40 +32,23 @@ layout(binding = 2) uniform usampler2D gMaterialId;
 layout(binding = 3) uniform sampler2D gDepth;
 layout(binding = 4) uniform sampler2DArray uShadowMaps;
 layout(binding = 5) uniform sampler3D uUpsamplingTable;
-layout(binding = 6) uniform sampler2D gCoefficients;  // read when uGBufferCoefficients != 0
-// The sky's tables (render/atmosphere_pass.h), read when uAtmosphere != 0.
+layout(binding = 6) uniform sampler2D gCoefficients;  // read when frame.gbufferCoefficients != 0
+// The sky's tables (render/atmosphere_pass.h), read when frame.atmosphere != 0.
 layout(binding = 7) uniform sampler2DArray uTransmittanceLut;
 layout(binding = 8) uniform sampler2DArray uMultipleScatteringLut;
 layout(binding = 9) uniform sampler2DArray uSkyViewLut;
 layout(binding = 10) uniform sampler2DArray uAerialPerspective;
-
-uniform int uMode;
-uniform int uBatchCount;
-uniform int uLightCount;
-uniform int uShadowMapSize;
-uniform int uWater;
-uniform int uGBufferCoefficients;
-uniform float uWaterDepth;
-uniform float uWaterSurfaceY;
-uniform int uAtmosphere;
-uniform int uAtmosphereSunLight;
-uniform float uAtmosphereOriginKm;
-uniform int uUpsamplingResolution;
-uniform int uFilteredLookup;
-uniform mat4 uInverseViewProjection;
-uniform vec3 uCameraPosition;
-uniform vec2 uViewportSize;
 
 layout(location = 0) out vec4 oTristimulus;
 
 GpuBatch frameBatch(int b) { return batches[b]; }
 GpuLight frameLight(int l) { return lights[l]; }
 GpuMaterial frameMaterial(int id) { return materials[id]; }
-vec4 frameLightSpectrum(int l, int b) { return lightSpectra[l * uBatchCount + b]; }
+vec4 frameLightSpectrum(int l, int b) { return lightSpectra[lightSpectrumIndex(l, b, frame.batchCount)]; }
 vec4 frameMaterialSpectrum(int s, int b, int j) {
-  return materialSpectra[(s * uBatchCount + b) * 2 + j];
+  return materialSpectra[materialSpectrumIndex(s, b, j, frame.batchCount)];
 }
-vec4 frameWaterSpectrum(int b, int j) { return waterSpectra[b * 3 + j]; }
+vec4 frameWaterSpectrum(int b, int j) { return waterSpectra[waterSpectrumIndex(b, j)]; }
 GpuAtmosphere frameAtmosphere(int b) { return atmospheres[b]; }
 vec4 transmittanceLutTexel(int b, int x, int y) { return texelFetch(uTransmittanceLut, ivec3(x, y, b), 0); }
 vec4 multipleScatteringLutTexel(int b, int x, int y) {
@@ -80,35 +65,32 @@ float shadowDepthAt(int layer, int x, int y) {
   return texelFetch(uShadowMaps, ivec3(x, y, layer), 0).r;
 }
 vec3 upsamplingCoefficients(vec3 rgb) {
-  if (uGBufferCoefficients != 0) return texelFetch(gCoefficients, ivec2(gl_FragCoord.xy), 0).xyz;
-  return uFilteredLookup != 0
-             ? upsamplingCoefficientsFiltered(uUpsamplingTable, uUpsamplingResolution, rgb)
-             : upsamplingCoefficientsManual(uUpsamplingTable, uUpsamplingResolution, rgb);
+  if (frame.gbufferCoefficients != 0) return texelFetch(gCoefficients, ivec2(gl_FragCoord.xy), 0).xyz;
+  return frame.filteredLookup != 0
+             ? upsamplingCoefficientsFiltered(uUpsamplingTable, frame.upsamplingResolution, rgb)
+             : upsamplingCoefficientsManual(uUpsamplingTable, frame.upsamplingResolution, rgb);
 }
 
 #include "shared/pixel_shading.glsl"
 
 void main() {
-  FrameConstants fc = FrameConstants(uMode, uBatchCount, uLightCount, uShadowMapSize, uWater,
-                                     uWaterDepth, uWaterSurfaceY, uGBufferCoefficients, uAtmosphere,
-                                     uAtmosphereSunLight, uAtmosphereOriginKm);
   ivec2 p = ivec2(gl_FragCoord.xy);
   uint id = texelFetch(gMaterialId, p, 0).r;
   if (id == 0u) {
     // No geometry: the far plane through this pixel, reconstructed from depth 1.
-    vec3 farPoint = worldFromDepth(uInverseViewProjection, (vec2(p) + 0.5) / uViewportSize, 1.0);
-    oTristimulus = vec4(shadeBackground(fc, farPoint, uCameraPosition), 1.0);
+    vec3 farPoint = worldFromDepth(frame.inverseViewProjection, (vec2(p) + 0.5) / frame.viewportSize, 1.0);
+    oTristimulus = vec4(shadeBackground(frame, farPoint, frame.cameraPositionW), 1.0);
     return;
   }
   vec4 am = texelFetch(gAlbedoMetallic, p, 0);
   vec4 nr = texelFetch(gNormalRoughness, p, 0);
   SurfaceSample s;
-  s.position = worldFromDepth(uInverseViewProjection, (vec2(p) + 0.5) / uViewportSize,
+  s.position = worldFromDepth(frame.inverseViewProjection, (vec2(p) + 0.5) / frame.viewportSize,
                               texelFetch(gDepth, p, 0).r);
   s.normal = normalize(nr.xyz);
   s.albedo = am.rgb;
   s.metallic = am.a;
   s.roughness = nr.a;
   s.material = int(id) - 1;
-  oTristimulus = vec4(shadeSurface(fc, s, uCameraPosition, (vec2(p) + 0.5) / uViewportSize), 1.0);
+  oTristimulus = vec4(shadeSurface(frame, s, frame.cameraPositionW, (vec2(p) + 0.5) / frame.viewportSize), 1.0);
 }

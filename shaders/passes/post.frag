@@ -21,12 +21,7 @@ void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   vec4 acc = texelFetch(uAccumulation, p, 0);
   vec3 tristimulus = acc.a > 0.0 ? acc.rgb / acc.a : vec3(0.0);
-  // Nothing upstream should make NaN or ∞; if anything does, show black rather than whatever
-  // the driver's clamp makes of it.
-  if (any(isnan(tristimulus)) || any(isinf(tristimulus))) tristimulus = vec3(0.0);
-  vec3 rgb = compressToGamut(uToDisplay * tristimulus, uLuminanceWeights);
-  rgb = toneMap(uToneMap, rgb, uLuminanceWeights);
-  rgb = uTransfer == 1 ? bt2020Encode3(rgb) : srgbEncode3(rgb);
+  vec3 rgb = encodeForDisplay(uToDisplay, uLuminanceWeights, uToneMap, uTransfer, tristimulus);
   if (uDither != 0) {
     uint seed = pcgHash(uint(p.x) + 65536u * uint(p.y)) ^ uSeed;
     rgb += vec3(ditherOffset(randomFloat(seed, 0u), randomFloat(seed, 1u)),

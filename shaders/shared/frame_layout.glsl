@@ -1,18 +1,19 @@
-// The lighting pass's per-frame data, laid out once for both sides: the GPU reads these structs
-// from std430 shader storage buffers, the CPU (render/frame_data.h) fills arrays of the same
-// structs (C++ checks their sizes). Only vec4 and mat4 members, so std430 and C++ agree with
-// no padding.
+// The lighting pass's per-frame data, laid out once for both sides: the GPU reads the frame's
+// constants from a std140 uniform block and the rest from std430 shader storage buffers; the CPU
+// (render/frame_data.h) fills the same structs (render/shared_shading.h checks their sizes and
+// offsets). Every member is a scalar, vec2, vec3 followed by a scalar, vec4 or mat4 in an order
+// where std140, std430 and C++ agree, with explicit padding to whole vec4s: no hand-kept mirror.
+// Integers are ints on both sides (never floats to round back).
 //
 // Batches. A frame evaluates batchCount batches of four wavelengths; batch b holds the
 // wavelengths and the rows of its integration matrix (observer or camera response over
 // n·pdf, times 683 lm/W), so tristimulus += (toX·L, toY·L, toZ·L) for the batch's radiance L.
 // In RGB mode there is one batch whose four "wavelengths" are the R, G, B channels (and a zero).
 //
-// Spectra. lightSpectra[l·batchCount + b] is light l's normalised SPD at batch b's wavelengths
-// (l = lightCount is the background's radiance); materialSpectra[(s·batchCount + b)·2 + j] is a
-// material's measured reflectance (j = 0) or its conductor n (j = 0) and k (j = 1);
-// waterSpectra[b·3 + j] is the water's σs (j = 0), σt (j = 1) and Kd (j = 2) in 1/m (in RGB mode
-// at 680, 550 and 440 nm).
+// Spectra. Flat arrays of vec4 (one batch each), indexed by the helpers below, which both sides
+// call: a light's normalised SPD (the light after the last, lightCount, is the background's
+// radiance); a material's measured reflectance (j = 0) or its conductor n (j = 0) and k (j = 1);
+// the water's σs (j = 0), σt (j = 1) and Kd (j = 2) in 1/m (in RGB mode at 680, 550 and 440 nm).
 
 const int kModeRgb = 0;
 const int kModeNaive = 1;        // box upsampling (495 / 570 nm)
@@ -32,32 +33,63 @@ struct GpuBatch {
 };
 
 struct GpuLight {
-  vec4 positionType;        // xyz position (point, spot); w type (kLight*)
-  vec4 directionIntensity;  // xyz direction of travel (unit); w intensity (lux or cd)
-  vec4 cone;                // x cos of inner half-angle, y cos of outer; zw unused
-  vec4 shadow;              // x shadow-map layer (< 0: none), y normal offset (m), z depth bias
-  mat4 shadowFromWorld;     // world → the light's clip space
+  vec3 positionW;          // point, spot
+  int type;                // kLight* (lights.glsl)
+  vec3 direction;          // of travel, unit (directional, spot)
+  float intensity;         // lux (directional) or candela (point, spot)
+  float cosInner;          // spot: cosine of the inner half-angle
+  float cosOuter;          // spot: cosine of the outer half-angle
+  int shadowLayer;         // layer of the shadow-map array; < 0: casts none
+  float shadowNormalOffsetM;
+  float shadowDepthBias;
+  float pad0;
+  float pad1;
+  float pad2;
+  mat4 shadowFromWorld;    // world → the light's clip space
 };
 
 struct GpuMaterial {
-  vec4 baseColourMetallic;  // linear RGB factor, metallic
-  vec4 roughnessKind;       // x roughness, y kind (kMaterial*), z spectra index, w 1: Lambertian
+  vec3 baseColour;  // linear RGB factor (× the texture)
+  float metallic;
+  float roughness;
+  int kind;         // kMaterial*
+  int spectra;      // index of its spectra (measured and conductor kinds)
+  int lambertian;   // 1: the diffuse lobe alone
 };
 
-// Per-frame constants of the lighting pass (uniforms on the GPU) and one G-buffer sample.
+// The lighting pass's per-frame constants: one std140 uniform block on the GPU (binding
+// kFrameConstantsBinding), the same struct on the CPU.
+const int kFrameConstantsBinding = 0;
 struct FrameConstants {
-  int mode;           // kMode*
+  mat4 inverseViewProjection;  // clip → world, of the frame's camera
+  vec3 cameraPositionW;
+  int mode;                    // kMode*
+  vec2 viewportSize;           // pixels
   int batchCount;
-  int lightCount;     // ≤ kMaxLights
-  int shadowMapSize;  // texels along each side of a shadow-map layer
-  int water;          // 1: the camera is under water (underwater.glsl; waterSpectra below)
-  float waterDepthM;  // the camera's depth below the water surface
-  float waterSurfaceY;  // world height of the water surface (m)
-  int gbufferCoefficients;  // 1: the G-buffer holds Jakob–Hanika coefficients (upsamplingCoefficients reads them)
-  int atmosphere;           // 1: the scene has a sky (atmosphere_lighting.glsl; frameAtmosphere(b))
-  int atmosphereSunLight;   // index of the light that is the atmosphere's sun
-  float atmosphereOriginKm; // distance of the world's origin from the planet's centre
+  int lightCount;              // ≤ kMaxLights
+  int shadowMapSize;           // texels along each side of a shadow-map layer
+  int gbufferCoefficients;     // 1: the G-buffer holds Jakob–Hanika coefficients (upsamplingCoefficients reads them)
+  int upsamplingResolution;    // of the Jakob–Hanika table, per side
+  int filteredLookup;          // 1: one filtered fetch of the table; 0: the manual blend
+  int water;                   // 1: the camera is under water (underwater.glsl; the water spectra)
+  float waterDepthM;           // the camera's depth below the water surface
+  float waterSurfaceY;         // world height of the water surface (m)
+  int atmosphere;              // 1: the scene has a sky (atmosphere_lighting.glsl; frameAtmosphere(b))
+  int atmosphereSunLight;      // index of the light that is the atmosphere's sun
+  float atmosphereOriginKm;    // distance of the world's origin from the planet's centre
+  float pad0;
+  float pad1;
 };
+
+PRISM_INLINE int lightSpectrumIndex(int light, int batch, int batchCount) {
+  return light * batchCount + batch;
+}
+PRISM_INLINE int materialSpectrumIndex(int spectra, int batch, int j, int batchCount) {
+  return (spectra * batchCount + batch) * 2 + j;
+}
+PRISM_INLINE int waterSpectrumIndex(int batch, int j) { return batch * 3 + j; }
+
+// One G-buffer sample.
 
 struct SurfaceSample {
   vec3 position;   // world

@@ -47,9 +47,9 @@ PRISM_INLINE vec3 worldFromDepth(IN(mat4) inverseViewProjection, IN(vec2) uv, fl
 // Fraction of the PCF footprint that sees the light (1 for lights without a shadow map).
 PRISM_INLINE float shadowVisibility(IN(GpuLight) light, IN(vec3) position, IN(vec3) normal,
                                     int size) {
-  int layer = int(light.shadow.x);
+  int layer = light.shadowLayer;
   if (layer < 0) return 1.0f;
-  PRISM_PRECISE vec3 offsetPosition = position + normal * light.shadow.y;
+  PRISM_PRECISE vec3 offsetPosition = position + normal * light.shadowNormalOffsetM;
   vec4 clip = transformPoint(light.shadowFromWorld, offsetPosition);
   ShadowFootprint f = shadowFootprint(clip, size);
   if (!f.inside) return 1.0f;
@@ -60,7 +60,7 @@ PRISM_INLINE float shadowVisibility(IN(GpuLight) light, IN(vec3) position, IN(ve
     for (int i = 0; i < 4; ++i) {
       int x = clamp(f.x0 + i, 0, size - 1);
       visible += wy * shadowTapWeight(i, f.frac.x) *
-                 shadowTest(shadowDepthAt(layer, x, y), f.depth, light.shadow.z);
+                 shadowTest(shadowDepthAt(layer, x, y), f.depth, light.shadowDepthBias);
     }
   }
   return visible;
@@ -76,8 +76,8 @@ PRISM_INLINE vec4 sunIrradianceAtSurface(IN(FrameConstants) fc, int b) {
   vec4 e = vec4(0.0f);
   for (int l = 0; l < fc.lightCount; ++l) {
     GpuLight light = frameLight(l);
-    if (int(light.positionType.w + 0.5f) == kLightDirectional && light.directionIntensity.y < 0.0f) {
-      e += frameLightSpectrum(l, b) * light.directionIntensity.w;
+    if (light.type == kLightDirectional && light.direction.y < 0.0f) {
+      e += frameLightSpectrum(l, b) * light.intensity;
     }
   }
   return e;
@@ -99,8 +99,7 @@ PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, 
 
 // Unit direction towards the atmosphere's sun.
 PRISM_INLINE vec3 atmosphereSun(IN(FrameConstants) fc) {
-  GpuLight sun = frameLight(fc.atmosphereSunLight);
-  return -vec3(sun.directionIntensity.x, sun.directionIntensity.y, sun.directionIntensity.z);
+  return -frameLight(fc.atmosphereSunLight).direction;
 }
 
 // Tristimulus of the background (pixels where no geometry is), seen towards farPoint (a point
@@ -131,27 +130,24 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
                                IN(vec3) cameraPosition, IN(vec2) uv) {
   PRISM_PRECISE vec3 v = normalize(cameraPosition - s.position);
   GpuMaterial material = frameMaterial(s.material);
-  int kind = int(material.roughnessKind.y + 0.5f);
-  int spectra = int(material.roughnessKind.z + 0.5f);
-  bool lambertian = material.roughnessKind.w > 0.5f;
+  int kind = material.kind;
+  int spectra = material.spectra;
+  bool lambertian = material.lambertian != 0;
 
   MicrofacetTerms terms[kMaxLights];
   float irradiance[kMaxLights];
   float waterPathM[kMaxLights];  // under water: depth (directional) or distance (point, spot)
   for (int l = 0; l < fc.lightCount; ++l) {
     GpuLight light = frameLight(l);
-    LightIncidence li = lightIncidence(
-        int(light.positionType.w + 0.5f),
-        vec3(light.positionType.x, light.positionType.y, light.positionType.z),
-        vec3(light.directionIntensity.x, light.directionIntensity.y, light.directionIntensity.z),
-        light.directionIntensity.w, light.cone.x, light.cone.y, s.position);
+    LightIncidence li = lightIncidence(light.type, light.positionW, light.direction, light.intensity,
+                                       light.cosInner, light.cosOuter, s.position);
     terms[l] = microfacetTerms(s.normal, v, li.toLight, s.roughness);
     if (lambertian) terms[l].specular = 0.0f;
     irradiance[l] = terms[l].cosLight > 0.0f
                         ? li.irradiance * shadowVisibility(light, s.position, s.normal,
                                                            fc.shadowMapSize)
                         : 0.0f;
-    waterPathM[l] = int(light.positionType.w + 0.5f) == kLightDirectional
+    waterPathM[l] = light.type == kLightDirectional
                         ? fc.waterSurfaceY - s.position.y
                         : li.distance;
   }
@@ -192,7 +188,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
         arriving *= sunTransmittanceTo(frameAtmosphere(b), b, pointKm, toSun);
       }
       if (fc.water != 0) {
-        bool sun = int(frameLight(l).positionType.w + 0.5f) == kLightDirectional;
+        bool sun = frameLight(l).type == kLightDirectional;
         arriving *= sun ? downwellingAttenuation(frameWaterSpectrum(b, 2), waterPathM[l])
                         : waterTransmittance(frameWaterSpectrum(b, 1), waterPathM[l]);
       }

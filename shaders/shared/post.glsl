@@ -1,6 +1,7 @@
 // Display transform of the post pass, after exposure and the XYZ → display-RGB matrix (which
 // includes white balance): out-of-gamut compression, then a tone map. The encode to the
 // display's transfer function is transfer.glsl's.
+// Requires: transfer.glsl
 
 const int kToneMapNone = 0;      // clip to [0, 1]
 const int kToneMapReinhard = 1;  // x / (1 + x) on luminance, hue and saturation kept
@@ -40,6 +41,19 @@ PRISM_INLINE vec3 toneMap(int op, IN(vec3) rgb, IN(vec3) luminanceWeights) {
   }
   if (op == kToneMapAces) return vec3(acesFilmic(rgb.x), acesFilmic(rgb.y), acesFilmic(rgb.z));
   return clamp(rgb, vec3(0.0f), vec3(1.0f));
+}
+
+// Tristimulus → display, all of the post pass but the dither and the final clamp (the pass dithers
+// before it clamps): display RGB (exposure folded into toDisplay), gamut compression, tone map,
+// transfer (0 sRGB curve, 1 BT.2020). NaN or ∞, which nothing upstream should make, show black
+// rather than whatever a driver's clamp makes of them.
+PRISM_INLINE vec3 encodeForDisplay(IN(mat3) toDisplay, IN(vec3) luminanceWeights, int toneMapOp,
+                                   int transfer, IN(vec3) tristimulus) {
+  vec3 t = tristimulus;
+  if (any(isnan(t)) || any(isinf(t))) t = vec3(0.0f);
+  vec3 rgb = compressToGamut(toDisplay * t, luminanceWeights);
+  rgb = toneMap(toneMapOp, rgb, luminanceWeights);
+  return transfer == 1 ? bt2020Encode3(rgb) : srgbEncode3(rgb);
 }
 
 // Triangular-distributed dither of ±1 LSB at 8 bits from two uniform numbers, added before

@@ -33,6 +33,7 @@ using mat3 = glm::mat3;
 using mat4 = glm::mat4;
 using glm::abs;
 using glm::acos;
+using glm::any;
 using glm::asin;
 using glm::atan;
 using glm::clamp;

@@ -4,30 +4,17 @@
 
 namespace prism::shared {
 
-// pixel_shading.glsl compiled inside a class whose members are its accessors.
-class CpuShadingKernel {
+// The accessors pixel_shading.glsl reads, over the same FrameData the GPU reads, and the sky's
+// tables (atmosphere_luts.glsl and atmosphere_lighting.glsl compiled over them).
+class CpuShadingAccessors {
  public:
-  CpuShadingKernel(const render::FrameData& frame, const RgbToSpectrumTable& table,
-                   std::vector<std::vector<float>> shadowLayers, render::AtmosphereTexels atmosphere)
+  CpuShadingAccessors(const render::FrameData& frame, const RgbToSpectrumTable& table,
+                      std::vector<std::vector<float>> shadowLayers, render::AtmosphereTexels atmosphere)
       : mFrame(frame), mTable(table), mShadowLayers(std::move(shadowLayers)), mAtmosphere(std::move(atmosphere)) {}
+  virtual ~CpuShadingAccessors() = default;
+  virtual vec3 shade(const render::GBufferTexel& texel, vec2 uv, const CameraTransform& camera) = 0;
 
-  vec3 shade(const render::GBufferTexel& texel, vec2 uv, const CameraTransform& camera) {
-    if (texel.materialId == 0) {
-      return shadeBackground(mFrame.constants, worldFromDepth(camera.inverseViewProjection, uv, 1.0f),
-                             camera.position);
-    }
-    SurfaceSample s;
-    s.position = worldFromDepth(camera.inverseViewProjection, uv, texel.depth);
-    s.normal = normalize(vec3(texel.normalRoughness));
-    s.albedo = vec3(texel.albedoMetallic);
-    s.metallic = texel.albedoMetallic.w;
-    s.roughness = texel.normalRoughness.w;
-    s.material = static_cast<int>(texel.materialId) - 1;
-    mTexelCoefficients = texel.coefficients;
-    return shadeSurface(mFrame.constants, s, camera.position, uv);
-  }
-
- private:
+ protected:
   static std::size_t index(int i) { return static_cast<std::size_t>(i); }
   GpuBatch frameBatch(int b) const { return mFrame.batches[index(b)]; }
   GpuLight frameLight(int l) const { return mFrame.lights[index(l)]; }
@@ -64,7 +51,6 @@ class CpuShadingKernel {
 
 #include "atmosphere_luts.glsl"
 #include "atmosphere_lighting.glsl"
-#include "pixel_shading.glsl"
 
   render::FrameData mFrame;
   const RgbToSpectrumTable& mTable;
@@ -73,23 +59,78 @@ class CpuShadingKernel {
   vec3 mTexelCoefficients{0.0f};  // of the texel being shaded
 };
 
+// pixel_shading.glsl compiled inside a class whose base holds its accessors, once per variant of
+// techniques, as the renderer compiles lighting.frag (PRISM_CPU_SHADING_VARIANT's body below).
+#define PRISM_CPU_SHADING_VARIANT(Name)                                                              \
+  class Name final : public CpuShadingAccessors {                                                    \
+   public:                                                                                           \
+    using CpuShadingAccessors::CpuShadingAccessors;                                                  \
+    vec3 shade(const render::GBufferTexel& texel, vec2 uv, const CameraTransform& camera) override { \
+      if (texel.materialId == 0) {                                                                   \
+        return shadeBackground(mFrame.constants, worldFromDepth(camera.inverseViewProjection, uv, 1.0f), \
+                               camera.position);                                                     \
+      }                                                                                              \
+      SurfaceSample s;                                                                               \
+      s.position = worldFromDepth(camera.inverseViewProjection, uv, texel.depth);                    \
+      s.normal = normalize(vec3(texel.normalRoughness));                                             \
+      s.albedo = vec3(texel.albedoMetallic);                                                         \
+      s.metallic = texel.albedoMetallic.w;                                                           \
+      s.roughness = texel.normalRoughness.w;                                                         \
+      s.material = static_cast<int>(texel.materialId) - 1;                                           \
+      mTexelCoefficients = texel.coefficients;                                                       \
+      return shadeSurface(mFrame.constants, s, camera.position, uv);                                 \
+    }
+// (each variant's class continues with the shared file and closes after it)
+
+PRISM_CPU_SHADING_VARIANT(KernelPlain)
+#include "pixel_shading.glsl"
+};
+
+#define PRISM_TECHNIQUE_WATER
+PRISM_CPU_SHADING_VARIANT(KernelWater)
+#include "pixel_shading.glsl"
+};
+#undef PRISM_TECHNIQUE_WATER
+
+#define PRISM_TECHNIQUE_ATMOSPHERE
+PRISM_CPU_SHADING_VARIANT(KernelAtmosphere)
+#include "pixel_shading.glsl"
+};
+
+#define PRISM_TECHNIQUE_WATER
+PRISM_CPU_SHADING_VARIANT(KernelWaterAtmosphere)
+#include "pixel_shading.glsl"
+};
+#undef PRISM_TECHNIQUE_WATER
+#undef PRISM_TECHNIQUE_ATMOSPHERE
+#undef PRISM_CPU_SHADING_VARIANT
+
 }  // namespace prism::shared
 
 namespace prism::render {
 
-struct CpuShading::Kernel : shared::CpuShadingKernel {
-  using CpuShadingKernel::CpuShadingKernel;
+struct CpuShading::Kernel {
+  std::unique_ptr<shared::CpuShadingAccessors> variant;
 };
 
 CpuShading::CpuShading(const FrameData& frame, const RgbToSpectrumTable& table,
                        std::vector<std::vector<float>> shadowLayers, AtmosphereTexels atmosphere)
-    : mKernel(std::make_unique<Kernel>(frame, table, std::move(shadowLayers), std::move(atmosphere))) {}
+    : mKernel(std::make_unique<Kernel>()) {
+  const bool water = frame.constants.water != 0, sky = frame.constants.atmosphere != 0;
+  auto make = [&]<class Variant>() -> std::unique_ptr<shared::CpuShadingAccessors> {
+    return std::make_unique<Variant>(frame, table, std::move(shadowLayers), std::move(atmosphere));
+  };
+  mKernel->variant = water && sky ? make.operator()<shared::KernelWaterAtmosphere>()
+                     : water      ? make.operator()<shared::KernelWater>()
+                     : sky        ? make.operator()<shared::KernelAtmosphere>()
+                                  : make.operator()<shared::KernelPlain>();
+}
 
 CpuShading::~CpuShading() = default;
 
 glm::vec3 CpuShading::shade(const GBufferTexel& texel, const glm::vec2& uv,
                             const CameraTransform& camera) {
-  return mKernel->shade(texel, uv, camera);
+  return mKernel->variant->shade(texel, uv, camera);
 }
 
 }  // namespace prism::render

@@ -49,6 +49,27 @@ void upload(gpu::Buffer& buffer, const std::vector<T>& values, const char* label
   buffer.upload(0, std::as_bytes(std::span<const T>(values)));
 }
 
+// The scene's techniques as the lighting pass's #define variant, e.g. "PRISM_TECHNIQUE_WATER".
+std::vector<gpu::ShaderDefine> techniqueDefines(const Scene& scene) {
+  std::vector<gpu::ShaderDefine> defines;
+  if (scene.water) defines.push_back({"PRISM_TECHNIQUE_WATER", ""});
+  if (scene.atmosphere) defines.push_back({"PRISM_TECHNIQUE_ATMOSPHERE", ""});
+  return defines;
+}
+
+std::string lightingVariant(const Scene& scene) {
+  std::string key;
+  for (const gpu::ShaderDefine& d : techniqueDefines(scene)) key += (key.empty() ? "" : " ") + d.name;
+  return key;
+}
+
+gpu::Program lightingProgram(const Scene& scene) {
+  std::string variant = lightingVariant(scene);
+  return passProgram("fullscreen.vert", "lighting.frag",
+                     variant.empty() ? "lighting pass" : ("lighting pass (" + variant + ")").c_str(),
+                     techniqueDefines(scene));
+}
+
 // Rows top first from GL's bottom-first read-back.
 template <class T>
 std::vector<T> flipRows(const std::vector<T>& pixels, int width, int height, int channels) {
@@ -76,7 +97,6 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
       mGBufferProgram(passProgram("gbuffer.vert", "gbuffer.frag", "g-buffer pass")),
       mGBufferCoefficientsProgram(passProgram("gbuffer.vert", "gbuffer.frag", "g-buffer pass (coefficients)",
                                               {{"PRISM_GBUFFER_COEFFICIENTS", "1"}})),
-      mLightingProgram(passProgram("fullscreen.vert", "lighting.frag", "lighting pass")),
       mForwardProgram(passProgram("forward.vert", "forward.frag", "forward pass")),
       mPostProgram(passProgram("fullscreen.vert", "post.frag", "post pass")),
       mFullScreen(gpu::VertexArray::attributeless("full-screen triangle")),
@@ -90,6 +110,7 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
     throw Error(fmt::format("{}: {} lights; the renderer handles at most {}", scene.file.string(),
                             scene.lights.size(), shared::kMaxLights));
   }
+  mLightingPrograms.emplace(lightingVariant(scene), lightingProgram(scene));
   mDisplayTransform = displayTransform(mSettings, mCamera.ev100);
   mShadows = makeShadows(mScene, mSettings.shadowMapSize);
   mTargets = makeTargets(mSettings.width, mSettings.height, mSettings.gbufferAlbedo);
@@ -139,7 +160,7 @@ void Renderer::reloadShaders() {
   gpu::Program gbuffer = passProgram("gbuffer.vert", "gbuffer.frag", "g-buffer pass");
   gpu::Program gbufferCoefficients = passProgram("gbuffer.vert", "gbuffer.frag", "g-buffer pass (coefficients)",
                                                  {{"PRISM_GBUFFER_COEFFICIENTS", "1"}});
-  gpu::Program lighting = passProgram("fullscreen.vert", "lighting.frag", "lighting pass");
+  gpu::Program lighting = lightingProgram(mScene);
   gpu::Program forward = passProgram("forward.vert", "forward.frag", "forward pass");
   gpu::Program post = passProgram("fullscreen.vert", "post.frag", "post pass");
   // The sky's passes share shaders/shared with the lighting pass: reloaded together.
@@ -147,7 +168,8 @@ void Renderer::reloadShaders() {
   mShadowProgram = std::move(shadow);
   mGBufferProgram = std::move(gbuffer);
   mGBufferCoefficientsProgram = std::move(gbufferCoefficients);
-  mLightingProgram = std::move(lighting);
+  mLightingPrograms.clear();
+  mLightingPrograms.emplace(lightingVariant(mScene), std::move(lighting));
   mForwardProgram = std::move(forward);
   mPostProgram = std::move(post);
   if (atmosphere) mAtmosphere = std::move(atmosphere);
@@ -356,23 +378,20 @@ void Renderer::lightingPass() {
   mShadows.maps.bind(4);
   mUpsamplingTable.bind(5);
   if (mSettings.gbufferAlbedo == GBufferAlbedo::Coefficients) mTargets.coefficients.bind(6);
-  const bool sky = mFrame.constants.atmosphere != 0 && mAtmosphere;
-  if (sky) {
+  if (mFrame.constants.atmosphere != 0) {
     mAtmosphere->atmospheres().bindBase(GL_SHADER_STORAGE_BUFFER, 6);
     mAtmosphere->skyIrradiance().bindBase(GL_SHADER_STORAGE_BUFFER, 7);
     mAtmosphere->transmittance().bind(7);
     mAtmosphere->multipleScattering().bind(8);
     mAtmosphere->skyView().bind(9);
     mAtmosphere->aerialPerspective().bind(10);
-  } else {
-    if (mNoSkyIrradiance.id() == 0) {
-      mNoSkyIrradiance = gpu::Buffer(gpu::BufferDesc{sizeof(shared::GpuAtmosphere), nullptr, GL_DYNAMIC_STORAGE_BIT, "no sky"});
-    }
-    mNoSkyIrradiance.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
-    mNoSkyIrradiance.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   }
-  const gpu::Program& p = mLightingProgram;
-  p.use();
+  // The variant of the scene's techniques, compiled the first time it is needed (an editor may
+  // add or remove a technique's section between frames).
+  std::string variant = lightingVariant(mScene);
+  auto program = mLightingPrograms.find(variant);
+  if (program == mLightingPrograms.end()) program = mLightingPrograms.emplace(variant, lightingProgram(mScene)).first;
+  program->second.use();
   mFullScreen.draw(3);
   glDisable(GL_BLEND);
   ++mAccumulated;

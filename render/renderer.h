@@ -10,7 +10,9 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -121,14 +123,13 @@ class Renderer {
   std::uint32_t mFrameIndex = 0;
   PassHook mPassHook;
 
-  gpu::Program mShadowProgram, mGBufferProgram, mGBufferCoefficientsProgram, mLightingProgram, mForwardProgram,
-      mPostProgram;
+  gpu::Program mShadowProgram, mGBufferProgram, mGBufferCoefficientsProgram, mForwardProgram, mPostProgram;
+  std::map<std::string, gpu::Program> mLightingPrograms;  // per variant of techniques (#defines)
   gpu::VertexArray mFullScreen;
   GpuMesh mGizmo;  // a unit sphere
   Shadows mShadows;
   Targets mTargets;
   gpu::Buffer mFrameConstants, mBatches, mLights, mMaterials, mLightSpectra, mMaterialSpectra, mWaterSpectra;
-  gpu::Buffer mNoSkyIrradiance;              // bound in place of the sky's without an atmosphere
   std::unique_ptr<AtmospherePass> mAtmosphere;  // made for the first frame with a sky
 };
 

@@ -8,17 +8,22 @@
 //   vec4 frameMaterialSpectrum(int s, int b, int j);
 //   float shadowDepthAt(int layer, int x, int y);    (x, y already clamped to the map)
 //   vec3 upsamplingCoefficients(vec3 rgb);           (Jakob–Hanika table lookup)
-//   vec4 frameWaterSpectrum(int b, int j);           (σs, σt, Kd; only read under water)
-//   GpuAtmosphere frameAtmosphere(int b);            (only read with a sky), and the tables'
+//   vec4 frameWaterSpectrum(int b, int j);           (σs, σt, Kd; variants with water)
+//   GpuAtmosphere frameAtmosphere(int b);            (variants with a sky), and the tables'
 //   accessors of atmosphere_luts.glsl and atmosphere_lighting.glsl
 //
-// Under water (fc.water != 0, underwater.glsl) a directional light is the sun above the
+// Techniques specialise the file at compile time, never by a run-time test per pixel: the
+// includer defines PRISM_TECHNIQUE_<NAME> for each technique of the scene (the renderer compiles
+// and caches one lighting program per combination; the CPU twin compiles every combination).
+// Variants: PRISM_TECHNIQUE_WATER PRISM_TECHNIQUE_ATMOSPHERE
+//
+// Under water (PRISM_TECHNIQUE_WATER, underwater.glsl) a directional light is the sun above the
 // surface: its irradiance at a point is attenuated by e^(−Kd·depth), and it single-scatters into
 // every view ray; point and spot lights are under water with the camera and lose e^(−σt·r) over
 // their distance r (and add no in-scattering: the model's is the sun's). What the camera sees at
 // distance S is then surface radiance · e^(−σt·S) + the sun's in-scattering over S.
 //
-// With a sky (fc.atmosphere != 0, atmosphere_lighting.glsl) the background is the sky-view
+// With a sky (PRISM_TECHNIQUE_ATMOSPHERE, atmosphere_lighting.glsl) the background is the sky-view
 // table and the sun's disc; the light that is the sun is attenuated by the sun's transmittance
 // to the shaded point; the sky adds its irradiance through the diffuse part of the surface
 // ((1 − metallic)·albedo/π, conductors none; no occlusion: the sky is not shadowed); and the
@@ -70,6 +75,7 @@ PRISM_INLINE vec3 integrateBatch(IN(GpuBatch) batch, IN(vec4) radiance) {
   return vec3(dot(batch.toX, radiance), dot(batch.toY, radiance), dot(batch.toZ, radiance));
 }
 
+#ifdef PRISM_TECHNIQUE_WATER
 // Irradiance at the water surface from the lights above it (the directional ones), per
 // wavelength of batch b: E(0) of underwater.glsl.
 PRISM_INLINE vec4 sunIrradianceAtSurface(IN(FrameConstants) fc, int b) {
@@ -96,11 +102,14 @@ PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, 
          waterInScattering(sigmaS, sigmaT, kd, fc.waterDepthM, -viewDir.y, inWaterM) *
              sunIrradianceAtSurface(fc, b);
 }
+#endif
 
+#ifdef PRISM_TECHNIQUE_ATMOSPHERE
 // Unit direction towards the atmosphere's sun.
 PRISM_INLINE vec3 atmosphereSun(IN(FrameConstants) fc) {
   return -frameLight(fc.atmosphereSunLight).direction;
 }
+#endif
 
 // Tristimulus of the background (pixels where no geometry is), seen towards farPoint (a point
 // on the far plane, which gives the view direction). Under water the view ray crosses the water
@@ -110,16 +119,29 @@ PRISM_INLINE vec3 atmosphereSun(IN(FrameConstants) fc) {
 // e^(−σt·far) of the in-scattering: 11 % at 440 nm looking level in Jerlov I (σt = 0.022 m⁻¹)
 // with a 100 m far plane.
 PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(vec3) cameraPosition) {
+#if defined(PRISM_TECHNIQUE_WATER) || defined(PRISM_TECHNIQUE_ATMOSPHERE)
   PRISM_PRECISE vec3 toFar = farPoint - cameraPosition;
   vec3 viewDir = normalize(toFar);
+#else
+  PRISM_UNUSED(farPoint);
+  PRISM_UNUSED(cameraPosition);
+#endif
+#ifdef PRISM_TECHNIQUE_WATER
   float distanceM = 1e30f;  // throughWater stops it at the surface when it looks up
+#endif
+#ifdef PRISM_TECHNIQUE_ATMOSPHERE
   vec3 cameraKm = planetPosition(fc.atmosphereOriginKm, cameraPosition);
-  vec3 toSun = fc.atmosphere != 0 ? atmosphereSun(fc) : vec3(0.0f, 1.0f, 0.0f);
+  vec3 toSun = atmosphereSun(fc);
+#endif
   vec3 tristimulus = vec3(0.0f);
   for (int b = 0; b < fc.batchCount; ++b) {
     vec4 radiance = frameLightSpectrum(fc.lightCount, b);
-    if (fc.water != 0) radiance = throughWater(fc, b, radiance, viewDir, distanceM);
-    if (fc.atmosphere != 0) radiance = skyBackground(frameAtmosphere(b), b, cameraKm, viewDir, toSun);
+#ifdef PRISM_TECHNIQUE_WATER
+    radiance = throughWater(fc, b, radiance, viewDir, distanceM);
+#endif
+#ifdef PRISM_TECHNIQUE_ATMOSPHERE
+    radiance = skyBackground(frameAtmosphere(b), b, cameraKm, viewDir, toSun);
+#endif
     tristimulus += integrateBatch(frameBatch(b), radiance);
   }
   return tristimulus;
@@ -129,6 +151,7 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
 PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
                                IN(vec3) cameraPosition, IN(vec2) uv) {
   PRISM_PRECISE vec3 v = normalize(cameraPosition - s.position);
+  PRISM_UNUSED(uv);  // the sky's aerial perspective alone reads it
   GpuMaterial material = frameMaterial(s.material);
   int kind = material.kind;
   int spectra = material.spectra;
@@ -136,7 +159,9 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 
   MicrofacetTerms terms[kMaxLights];
   float irradiance[kMaxLights];
-  float waterPathM[kMaxLights];  // under water: depth (directional) or distance (point, spot)
+#ifdef PRISM_TECHNIQUE_WATER
+  float waterPathM[kMaxLights];  // depth (directional) or distance (point, spot)
+#endif
   for (int l = 0; l < fc.lightCount; ++l) {
     GpuLight light = frameLight(l);
     LightIncidence li = lightIncidence(light.type, light.positionW, light.direction, light.intensity,
@@ -147,9 +172,11 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
                         ? li.irradiance * shadowVisibility(light, s.position, s.normal,
                                                            fc.shadowMapSize)
                         : 0.0f;
+#ifdef PRISM_TECHNIQUE_WATER
     waterPathM[l] = light.type == kLightDirectional
                         ? fc.waterSurfaceY - s.position.y
                         : li.distance;
+#endif
   }
 
   vec3 coefficients = vec3(0.0f);
@@ -157,10 +184,12 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     coefficients = upsamplingCoefficients(s.albedo);  // once per pixel, not per wavelength
   }
 
+#ifdef PRISM_TECHNIQUE_ATMOSPHERE
   // The sky's per-pixel geometry, once for every batch.
   vec3 pointKm = planetPosition(fc.atmosphereOriginKm, s.position);
-  vec3 toSun = fc.atmosphere != 0 ? atmosphereSun(fc) : vec3(0.0f, 1.0f, 0.0f);
+  vec3 toSun = atmosphereSun(fc);
   float distanceKm = length(s.position - cameraPosition) * 1e-3f;
+#endif
 
   vec3 tristimulus = vec3(0.0f);
   for (int b = 0; b < fc.batchCount; ++b) {
@@ -184,28 +213,30 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     for (int l = 0; l < fc.lightCount; ++l) {
       vec4 reflection = surfaceReflection(terms[l], spectralConductor, albedo, conductorK, metallic);
       vec4 arriving = frameLightSpectrum(l, b) * irradiance[l];
-      if (fc.atmosphere != 0 && l == fc.atmosphereSunLight && irradiance[l] > 0.0f) {
+#ifdef PRISM_TECHNIQUE_ATMOSPHERE
+      if (l == fc.atmosphereSunLight && irradiance[l] > 0.0f) {
         arriving *= sunTransmittanceTo(frameAtmosphere(b), b, pointKm, toSun);
       }
-      if (fc.water != 0) {
-        bool sun = frameLight(l).type == kLightDirectional;
-        arriving *= sun ? downwellingAttenuation(frameWaterSpectrum(b, 2), waterPathM[l])
-                        : waterTransmittance(frameWaterSpectrum(b, 1), waterPathM[l]);
-      }
+#endif
+#ifdef PRISM_TECHNIQUE_WATER
+      bool sun = frameLight(l).type == kLightDirectional;
+      arriving *= sun ? downwellingAttenuation(frameWaterSpectrum(b, 2), waterPathM[l])
+                      : waterTransmittance(frameWaterSpectrum(b, 1), waterPathM[l]);
+#endif
       radiance += reflection * arriving;
     }
-    if (fc.water != 0) {
-      PRISM_PRECISE vec3 fromCamera = s.position - cameraPosition;
-      float distanceM = length(fromCamera);
-      radiance = throughWater(fc, b, radiance, fromCamera / distanceM, distanceM);
+#ifdef PRISM_TECHNIQUE_WATER
+    PRISM_PRECISE vec3 fromCamera = s.position - cameraPosition;
+    float distanceM = length(fromCamera);
+    radiance = throughWater(fc, b, radiance, fromCamera / distanceM, distanceM);
+#endif
+#ifdef PRISM_TECHNIQUE_ATMOSPHERE
+    if (kind != kMaterialConductor) {
+      radiance += albedo * (1.0f - metallic) * skyIrradiance(b, s.normal) * (1.0f / kPi);
     }
-    if (fc.atmosphere != 0) {
-      if (kind != kMaterialConductor) {
-        radiance += albedo * (1.0f - metallic) * skyIrradiance(b, s.normal) * (1.0f / kPi);
-      }
-      AerialPerspective ap = aerialPerspectiveAt(b, uv, distanceKm);
-      radiance = radiance * ap.transmittance + ap.inScattering;
-    }
+    AerialPerspective ap = aerialPerspectiveAt(b, uv, distanceKm);
+    radiance = radiance * ap.transmittance + ap.inScattering;
+#endif
     tristimulus += integrateBatch(batch, radiance);
   }
   return tristimulus;

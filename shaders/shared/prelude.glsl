@@ -4,4 +4,5 @@
 #define OUT(T) out T
 #define INOUT(T) inout T
 #define PRISM_PRECISE precise
+#define PRISM_UNUSED(x)
 #include "constants.glsl"

@@ -8,6 +8,7 @@
 // listed here, no swizzles, no texture functions, and these macros:
 //   PRISM_INLINE  before every function (C++ needs `inline`, GLSL has no such keyword)
 //   IN(T) / OUT(T) / INOUT(T)  parameter qualifiers
+//   PRISM_UNUSED(x)  a parameter a variant of the file does not read (C++ warns, GLSL cannot)
 //   PRISM_PRECISE  GLSL's `precise` (no fusing or reassociation) where CPU and GPU must agree
 //                  bit for bit; the C++ build neither fuses (-ffp-contract=off, set by the
 //                  top-level CMakeLists) nor reassociates
@@ -22,6 +23,7 @@
 #define OUT(T) T&
 #define INOUT(T) T&
 #define PRISM_PRECISE
+#define PRISM_UNUSED(x) static_cast<void>(x)
 
 namespace prism::shared {
 using uint = std::uint32_t;

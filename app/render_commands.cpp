@@ -2,9 +2,9 @@
 
 #include <fmt/format.h>
 
-#include "app/progress_bar.h"
-#include "app/upsampling_table.h"
 #include "gpu/headless_context.h"
+#include "harness/progress_bar.h"
+#include "harness/upsampling_table.h"
 #include "imaging/exr_file.h"
 #include "imaging/png_file.h"
 #include "render/display_transform.h"
@@ -55,10 +55,10 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
     throw Error(fmt::format("{}: the output must be a .png or an .exr file", output.string()));
   }
   if (frames < 1) throw Error("--frames: must be at least 1");
-  RgbToSpectrumTable table = upsamplingTable(scene.colourSpace);
+  RgbToSpectrumTable table = harness::upsamplingTable(scene.colourSpace);
   gpu::HeadlessContext context;
   render::Renderer renderer(scene, table, settings);
-  std::optional<ProgressBar> bar;
+  std::optional<harness::ProgressBar> bar;
   if (progress && frames > 1) bar.emplace("rendering " + output.filename().string());
   for (int f = 0; f < frames; ++f) {
     renderer.renderFrame();

@@ -1,4 +1,4 @@
-#include "app/validate.h"
+#include "harness/validate.h"
 
 #include <cmath>
 #include <limits>
@@ -7,10 +7,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "app/progress_bar.h"
-#include "app/reference_commands.h"
-#include "app/upsampling_table.h"
 #include "gpu/headless_context.h"
+#include "harness/display_png.h"
+#include "harness/progress_bar.h"
+#include "harness/upsampling_table.h"
 #include "imaging/exr_file.h"
 #include "imaging/heatmap.h"
 #include "imaging/image_difference.h"
@@ -22,7 +22,7 @@
 #include "spectral/data_files.h"
 #include "spectral/error.h"
 
-namespace prism::app {
+namespace prism::harness {
 namespace {
 
 // The thesis's sphere scenes (exposure: each scene camera's).
@@ -297,4 +297,4 @@ int runValidate(const ValidateOptions& o) {
   return failures.empty() ? 0 : 1;
 }
 
-}  // namespace prism::app
+}  // namespace prism::harness

@@ -1,4 +1,4 @@
-#include "app/gallery.h"
+#include "harness/gallery.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +8,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "app/colour_checker_demo.h"
-#include "app/progress_bar.h"
 #include "gpu/headless_context.h"
+#include "harness/colour_checker_chart.h"
+#include "harness/progress_bar.h"
 #include "imaging/image_difference.h"
 #include "imaging/png_file.h"
 #include "render/display_transform.h"
@@ -21,7 +21,7 @@
 #include "spectral/error.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 
-namespace prism::app {
+namespace prism::harness {
 namespace {
 
 struct Entry {
@@ -223,4 +223,4 @@ void runGallery(const GalleryOptions& o) {
   fmt::print("wrote {}\n", (o.output / "index.html").string());
 }
 
-}  // namespace prism::app
+}  // namespace prism::harness

@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "app/render_commands.h"
+#include "render/frame_settings.h"
 
-namespace prism::app {
+namespace prism::harness {
 
 struct SceneBenchOptions {
   std::filesystem::path scene;
   std::vector<int> wavelengths{4, 8, 16, 32, 64, 128, 256};
-  RenderSettingsOptions settings;  // width, height, lookup, … (mode is set per configuration)
+  render::FrameSettings settings;  // width, height, lookup, … in RGB mode (the mode is set per configuration)
   int frames = 100;                // timed frames per configuration (the median is reported)
   int warmup = 10;
   bool json = false;
@@ -23,4 +23,4 @@ struct SceneBenchOptions {
 };
 void runSceneBench(const SceneBenchOptions& options);
 
-}  // namespace prism::app
+}  // namespace prism::harness

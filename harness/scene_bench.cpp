@@ -1,4 +1,4 @@
-#include "app/scene_bench.h"
+#include "harness/scene_bench.h"
 
 #include <algorithm>
 #include <map>
@@ -8,16 +8,16 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "app/progress_bar.h"
 #include "gpu/headless_context.h"
 #include "gpu/timer_query.h"
+#include "harness/progress_bar.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "spectral/atomic_file.h"
 #include "spectral/error.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 
-namespace prism::app {
+namespace prism::harness {
 namespace {
 
 struct ConfigResult {
@@ -134,9 +134,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   if (options.wavelengths.empty()) throw Error("--wavelengths: give at least one count");
   if (options.frames < 1 || options.warmup < 0) throw Error("--frames must be ≥ 1, --warmup ≥ 0");
   Scene scene = loadScene(options.scene);
-  RenderSettingsOptions base = options.settings;
-  base.mode = "rgb";
-  render::FrameSettings settings = frameSettings(base);
+  const render::FrameSettings& settings = options.settings;
   for (int n : options.wavelengths) {
     render::FrameSettings check = settings;
     check.sampling.count = n;
@@ -336,4 +334,4 @@ void runSceneBench(const SceneBenchOptions& options) {
   }
 }
 
-}  // namespace prism::app
+}  // namespace prism::harness

@@ -1,0 +1,24 @@
+#include "harness/display_png.h"
+
+#include <cmath>
+
+#include "render/display_transform.h"
+
+namespace prism::harness {
+
+imaging::PngImage displayImage(const imaging::FloatImage& tristimulus,
+                               const render::FrameSettings& settings, float sceneEv100) {
+  render::DisplayTransform transform = render::displayTransform(settings, sceneEv100);
+  imaging::PngImage image(tristimulus.width, tristimulus.height, {});
+  auto byte = [](float v) { return static_cast<std::uint8_t>(std::lround(v * 255.0f)); };
+  for (int y = 0; y < tristimulus.height; ++y) {
+    for (int x = 0; x < tristimulus.width; ++x) {
+      glm::vec3 t(tristimulus.at(x, y, 0), tristimulus.at(x, y, 1), tristimulus.at(x, y, 2));
+      glm::vec3 rgb = render::encodeForDisplay(transform, settings.toneMap, t);
+      image.setPixel(x, y, {byte(rgb.x), byte(rgb.y), byte(rgb.z)});
+    }
+  }
+  return image;
+}
+
+}  // namespace prism::harness

@@ -1,0 +1,15 @@
+// Display-referred 8-bit images of what Prism renders, as PNGs. displayImage: linear tristimulus (XYZ, or camera RGB for a camera observer) through the post
+// pass's maths on the CPU (render::encodeForDisplay, no dither), i.e. what `prism render`
+// would show of a reference image.
+#pragma once
+
+#include "imaging/float_image.h"
+#include "imaging/png_file.h"
+#include "render/frame_settings.h"
+
+namespace prism::harness {
+
+imaging::PngImage displayImage(const imaging::FloatImage& tristimulus,
+                               const render::FrameSettings& settings, float sceneEv100);
+
+}  // namespace prism::harness

@@ -6,6 +6,19 @@
 
 namespace prism::harness {
 
+imaging::PngImage displayPng(const render::Renderer& renderer) {
+  const int width = renderer.settings().width, height = renderer.settings().height;
+  std::vector<std::uint8_t> rgba = renderer.readDisplayRgba8();
+  imaging::PngImage image(width, height, {});
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4;
+      image.setPixel(x, y, {rgba[i], rgba[i + 1], rgba[i + 2]});
+    }
+  }
+  return image;
+}
+
 imaging::PngImage displayImage(const imaging::FloatImage& tristimulus,
                                const render::FrameSettings& settings, float sceneEv100) {
   render::DisplayTransform transform = render::displayTransform(settings, sceneEv100);

@@ -9,6 +9,7 @@
 
 #include "gpu/headless_context.h"
 #include "harness/colour_checker_chart.h"
+#include "harness/display_png.h"
 #include "harness/html_report.h"
 #include "harness/progress_bar.h"
 #include "imaging/image_difference.h"
@@ -32,19 +33,6 @@ struct Entry {
   bool sky = false;
   imaging::DifferenceStats optimisedDifference;  // optimised-4 vs the reference
 };
-
-imaging::PngImage display(const render::Renderer& renderer, int width, int height) {
-  std::vector<std::uint8_t> rgba = renderer.readDisplayRgba8();
-  imaging::PngImage image(width, height, {});
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                       static_cast<std::size_t>(x)) * 4;
-      image.setPixel(x, y, {rgba[i], rgba[i + 1], rgba[i + 2]});
-    }
-  }
-  return image;
-}
 
 imaging::FloatImage tristimulus(const render::Renderer& renderer, int width, int height) {
   imaging::FloatImage image(width, height, 3);
@@ -140,7 +128,7 @@ void runGallery(const GalleryOptions& o) {
     settings.sampling.count = o.wavelengths;
     render::Renderer renderer(scene, tables.at(scene.colourSpace), settings);
     renderer.renderFrame();
-    imaging::PngImage rgb = display(renderer, o.width, o.height);
+    imaging::PngImage rgb = displayPng(renderer);
     imaging::FloatImage rgbXyz = tristimulus(renderer, o.width, o.height);
     Entry e;
     e.name = files[i].stem().string();
@@ -158,12 +146,12 @@ void runGallery(const GalleryOptions& o) {
       settings.mode = render::RenderMode::Optimised4;
       renderer.setSettings(settings);
       renderer.renderFrame();
-      imaging::PngImage optimised = display(renderer, o.width, o.height);
+      imaging::PngImage optimised = displayPng(renderer);
       imaging::FloatImage optimisedXyz = tristimulus(renderer, o.width, o.height);
       settings.mode = render::RenderMode::Reference;
       renderer.setSettings(settings);
       renderer.renderFrame();
-      imaging::PngImage reference = display(renderer, o.width, o.height);
+      imaging::PngImage reference = displayPng(renderer);
       imaging::FloatImage referenceXyz = tristimulus(renderer, o.width, o.height);
       e.difference = difference(rgbXyz, referenceXyz);
       e.optimisedDifference = difference(optimisedXyz, referenceXyz);
@@ -178,7 +166,7 @@ void runGallery(const GalleryOptions& o) {
     settings.sampling.strategy = SamplingStrategy::Rotated;
     renderer.setSettings(settings);
     for (int f = 0; f < o.frames; ++f) renderer.renderFrame();
-    imaging::PngImage spectral = display(renderer, o.width, o.height);
+    imaging::PngImage spectral = displayPng(renderer);
     imaging::FloatImage spectralXyz = tristimulus(renderer, o.width, o.height);
     e.difference = difference(spectralXyz, rgbXyz);
     rgb.write(o.output / (e.name + "_rgb.png"));

@@ -280,8 +280,12 @@ int main(int argc, char** argv) {
   bench->allow_extras();
   bench->add_option("scene", sceneBench.scene, "scene file: time its passes in RGB and spectral modes");
   addRenderSettings(bench, benchSettings, benchRange, benchEv, &benchWavelengths);
-  bench->add_option("--frames", sceneBench.frames, "timed frames per configuration")->capture_default_str();
-  bench->add_option("--warmup", sceneBench.warmup, "untimed frames first")->capture_default_str();
+  bench->add_option("--frames", sceneBench.frames, "timed frames per configuration, spread over the rounds")
+      ->capture_default_str();
+  bench->add_option("--rounds", sceneBench.rounds, "rounds over every configuration in turn (load drift cancels "
+                    "in per-round ratios)")->capture_default_str();
+  bench->add_option("--warmup", sceneBench.warmup, "untimed frames before each configuration in every round")
+      ->capture_default_str();
   bench->add_option("--plot", sceneBench.plot, "SVG plot of frame time against the wavelength count");
   bench->add_flag("--json", sceneBench.json, "JSON output");
 

@@ -3,13 +3,15 @@
 #include <algorithm>
 #include <map>
 #include <optional>
-#include <sstream>
+#include <string>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "gpu/headless_context.h"
 #include "gpu/timer_query.h"
+#include "harness/bench_plot.h"
+#include "harness/bench_statistics.h"
 #include "harness/progress_bar.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -20,23 +22,57 @@
 namespace prism::harness {
 namespace {
 
-struct ConfigResult {
-  std::string label;  // "rgb" or the wavelength count
-  int wavelengths = 0;  // 0 for RGB
-  std::map<std::string, double> medianMs;  // per pass and "frame"
-};
-
 constexpr int kFramesInFlight = 3;  // the timer's ring
 
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+using PassTimes = std::map<std::string, double>;  // ms per pass and for the whole "frame"
+
+// One configuration of the run: what renders it, with which settings, and what each round gave.
+struct Config {
+  std::string label;  // "rgb" or the wavelength count, …
+  render::Renderer* renderer = nullptr;
+  render::FrameSettings settings;
+  int warmup = 0, frames = 0;  // per round
+  int wavelengths = 0;         // spectral configurations of the fit; 0 otherwise
+  std::vector<PassTimes> rounds;  // per round, the median of its frames
+  std::size_t gpuMemoryBytes = 0;  // held by the renderer after the first round
+
+  std::vector<double> frameMsPerRound() const {
+    std::vector<double> ms;
+    for (const PassTimes& r : rounds) ms.push_back(r.at("frame"));
+    return ms;
+  }
+  // Per pass, the median over the rounds.
+  PassTimes medianMs() const {
+    std::map<std::string, std::vector<double>> perPass;
+    for (const PassTimes& r : rounds)
+      for (const auto& [pass, ms] : r) perPass[pass].push_back(ms);
+    PassTimes out;
+    for (auto& [pass, values] : perPass) out[pass] = median(values);
+    return out;
+  }
+  double frameMs() const { return median(frameMsPerRound()); }
+  double passMs(const char* pass) const {
+    PassTimes m = medianMs();
+    auto it = m.find(pass);
+    return it == m.end() ? 0.0 : it->second;
+  }
+};
+
+RatioSpread ratio(const Config& test, const Config& baseline) {
+  return perRoundRatios(test.frameMsPerRound(), baseline.frameMsPerRound());
 }
 
-ConfigResult measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, int frames,
-                     ProgressBar& bar, std::size_t& done, std::size_t total) {
+// `key`: the median of the per-round ratios; `key`_min and _max: the extreme rounds.
+void putRatio(nlohmann::json& j, const std::string& key, const RatioSpread& s) {
+  j[key] = s.median;
+  j[key + "_min"] = s.min;
+  j[key + "_max"] = s.max;
+}
+
+double megabytes(std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
+
+PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, int frames,
+                  ProgressBar& bar, std::size_t& done, std::size_t total) {
   std::map<std::string, std::vector<double>> samples;
   auto collect = [&](const gpu::GpuTimings& timings) {
     for (const auto& [name, ms] : timings) samples[name].push_back(ms);
@@ -57,189 +93,123 @@ ConfigResult measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmu
     if (f < warmup + frames) bar.update(++done, total);
   }
   renderer.setPassHook({});
-  ConfigResult result;
-  for (auto& [name, values] : samples) result.medianMs[name] = median(values);
+  PassTimes result;
+  for (auto& [name, values] : samples) result[name] = median(values);
   return result;
-}
-
-// Least squares t = a·n + b.
-std::pair<double, double> linearFit(const std::vector<double>& n, const std::vector<double>& t) {
-  double mn = 0, mt = 0;
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    mn += n[i];
-    mt += t[i];
-  }
-  mn /= static_cast<double>(n.size());
-  mt /= static_cast<double>(n.size());
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    sxy += (n[i] - mn) * (t[i] - mt);
-    sxx += (n[i] - mn) * (n[i] - mn);
-  }
-  double a = sxx > 0 ? sxy / sxx : 0.0;
-  return {a, mt - a * mn};
-}
-
-std::string svgPlot(const std::vector<ConfigResult>& spectral, double rgbMs, double a, double b,
-                    const std::string& title) {
-  const double w = 640, h = 400, left = 70, right = 20, top = 40, bottom = 50;
-  double maxN = 0, maxT = rgbMs;
-  for (const ConfigResult& r : spectral) {
-    maxN = std::max(maxN, static_cast<double>(r.wavelengths));
-    maxT = std::max(maxT, r.medianMs.at("frame"));
-  }
-  maxT *= 1.1;
-  auto x = [&](double n) { return left + n / maxN * (w - left - right); };
-  auto y = [&](double t) { return h - bottom - t / maxT * (h - top - bottom); };
-  std::ostringstream s;
-  s << fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" "
-                   "font-family=\"sans-serif\" font-size=\"12\">\n", w, h);
-  s << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  s << fmt::format("<text x=\"{}\" y=\"22\" font-size=\"14\">{}</text>\n", left, title);
-  s << fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"black\"/>\n", left,
-                   h - bottom, w - right);
-  s << fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{0}\" y2=\"{2}\" stroke=\"black\"/>\n", left,
-                   h - bottom, top);
-  for (int i = 0; i <= 4; ++i) {
-    double t = maxT * i / 4, n = maxN * i / 4;
-    s << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{:.3g}</text>\n", left - 6,
-                     y(t) + 4, t);
-    s << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{:.0f}</text>\n", x(n),
-                     h - bottom + 18, n);
-  }
-  s << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">wavelengths n</text>\n",
-                   (left + w - right) / 2, h - 8);
-  s << fmt::format("<text x=\"16\" y=\"{}\" transform=\"rotate(-90 16 {})\" "
-                   "text-anchor=\"middle\">frame time (ms)</text>\n", (top + h - bottom) / 2,
-                   (top + h - bottom) / 2);
-  s << fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#c33\" "
-                   "stroke-dasharray=\"6 4\"/>\n", x(0), y(rgbMs), x(maxN), y(rgbMs));
-  s << fmt::format("<text x=\"{}\" y=\"{}\" fill=\"#c33\" text-anchor=\"end\">RGB {:.3g} ms</text>\n",
-                   w - right, y(rgbMs) - 6, rgbMs);
-  s << fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#36c\"/>\n", x(0), y(b),
-                   x(maxN), y(a * maxN + b));
-  for (const ConfigResult& r : spectral) {
-    s << fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"4\" fill=\"#36c\"/>\n",
-                     x(r.wavelengths), y(r.medianMs.at("frame")));
-  }
-  s << fmt::format("<text x=\"{}\" y=\"{}\" fill=\"#36c\">t(n) = {:.4g} ms·n + {:.4g} ms</text>\n",
-                   left + 10, top + 14, a, b);
-  s << "</svg>\n";
-  return s.str();
 }
 
 }  // namespace
 
 void runSceneBench(const SceneBenchOptions& options) {
   if (options.wavelengths.empty()) throw Error("--wavelengths: give at least one count");
-  if (options.frames < 1 || options.warmup < 0) throw Error("--frames must be ≥ 1, --warmup ≥ 0");
-  Scene scene = loadScene(options.scene);
+  if (options.frames < 1 || options.warmup < 0 || options.rounds < 1)
+    throw Error("--frames and --rounds must be ≥ 1, --warmup ≥ 0");
   const render::FrameSettings& settings = options.settings;
   for (int n : options.wavelengths) {
     render::FrameSettings check = settings;
     check.sampling.count = n;
     render::validate(check);
   }
+  const int rounds = std::min(options.rounds, options.frames);
+  const int frames = (options.frames + rounds - 1) / rounds;  // per round
+  Scene scene = loadScene(options.scene);
   RgbToSpectrumTable table = cachedRgbToSpectrumTable(scene.colourSpace, 64);
   gpu::HeadlessContext context;
   std::string device = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   render::Renderer renderer(scene, table, settings);
   gpu::GpuTimer timer({kFramesInFlight});
 
-  std::size_t done = 0;
-  // With a sky, the reference (118 batches of tables per frame) is timed over a few frames only.
-  const int referenceFrames = std::min(options.frames, 3), referenceWarmup = std::min(options.warmup, 1);
-  std::size_t total = (options.wavelengths.size() + 3 + (scene.water ? 3 : 0) + (scene.atmosphere ? 1 : 0)) *
-                          static_cast<std::size_t>(options.warmup + options.frames) +
-                      (scene.atmosphere ? static_cast<std::size_t>(referenceWarmup + referenceFrames) : 0);
-  ProgressBar bar("benchmark " + options.scene.filename().string());
-  ConfigResult rgb = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
-  rgb.label = "rgb";
-  std::vector<ConfigResult> spectral;
-  for (int n : options.wavelengths) {
+  std::vector<Config> configs;
+  auto add = [&](std::string label, render::Renderer& r, const render::FrameSettings& s) -> std::size_t {
+    Config& c = configs.emplace_back();
+    c.label = std::move(label);
+    c.renderer = &r;
+    c.settings = s;
+    c.warmup = options.warmup;
+    c.frames = frames;
+    return configs.size() - 1;
+  };
+  auto spectralSettings = [&](int n) {
     render::FrameSettings s = settings;
     s.mode = render::RenderMode::JakobHanika;
     s.sampling.count = n;
-    renderer.setSettings(s);
-    ConfigResult r = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
-    r.label = std::to_string(n);
-    r.wavelengths = n;
-    spectral.push_back(std::move(r));
+    return s;
+  };
+  const std::size_t rgb = add("rgb", renderer, settings);
+  std::vector<std::size_t> spectral;
+  for (int n : options.wavelengths) {
+    spectral.push_back(add(std::to_string(n), renderer, spectralSettings(n)));
+    configs.back().wavelengths = n;
   }
 
   // What the G-buffer keeps of a base colour (issue #4: which is faster?): RGB albedo, upsampled
   // once per pixel in the lighting pass, against Jakob–Hanika coefficients looked up per G-buffer
-  // fragment into one more RGBA32F target; 16 wavelengths, the same run.
-  render::FrameSettings rgbAlbedo = settings;
-  rgbAlbedo.mode = render::RenderMode::JakobHanika;
-  rgbAlbedo.sampling.count = 16;
+  // fragment into one more RGBA32F target; 16 wavelengths.
+  render::FrameSettings rgbAlbedo = spectralSettings(16);
   rgbAlbedo.gbufferAlbedo = render::GBufferAlbedo::Rgb;
   render::FrameSettings coefficientAlbedo = rgbAlbedo;
   coefficientAlbedo.gbufferAlbedo = render::GBufferAlbedo::Coefficients;
-  renderer.setSettings(coefficientAlbedo);
-  ConfigResult coefficients16 = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
-  renderer.setSettings(rgbAlbedo);
-  ConfigResult rgbAlbedo16 = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
+  const std::size_t coefficients16 = add("16 coefficients", renderer, coefficientAlbedo);
+  const std::size_t rgbAlbedo16 = add("16 rgb albedo", renderer, rgbAlbedo);
 
   // Under water: the water term's cost, the same frames with the scene's water taken out (RGB and
-  // 16 wavelengths), measured in the same run.
-  std::optional<std::pair<ConfigResult, ConfigResult>> dry;
+  // 16 wavelengths).
+  Scene dryScene = scene;
+  dryScene.water.reset();
+  std::optional<render::Renderer> dryRenderer;
+  std::size_t dryRgb = 0, dry16 = 0, wet16 = 0;
   if (scene.water) {
-    Scene dryScene = scene;
-    dryScene.water.reset();
-    render::Renderer dryRenderer(dryScene, table, settings);
-    ConfigResult dryRgb = measure(dryRenderer, timer, options.warmup, options.frames, bar, done, total);
-    render::FrameSettings s16 = settings;
-    s16.mode = render::RenderMode::JakobHanika;
-    s16.sampling.count = 16;
-    dryRenderer.setSettings(s16);
-    ConfigResult dry16 = measure(dryRenderer, timer, options.warmup, options.frames, bar, done, total);
-    renderer.setSettings(s16);
-    ConfigResult wet16 = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
-    dry.emplace(std::move(dryRgb), std::move(dry16));
-    dry->second.label = "16 dry";
-    wet16.label = "16 wet";
-    dry->first.medianMs["wet_frame_16"] = wet16.medianMs.at("frame");
+    dryRenderer.emplace(dryScene, table, settings);
+    dryRgb = add("rgb dry", *dryRenderer, settings);
+    dry16 = add("16 dry", *dryRenderer, spectralSettings(16));
+    wet16 = add("16 wet", renderer, spectralSettings(16));
   }
 
   // Under the sky (issue #8): García Liñán's four optimised wavelengths against RGB-3 (the rgb
-  // configuration above) and against the reference, every table recomputed every frame.
-  std::optional<std::pair<ConfigResult, ConfigResult>> sky;
+  // configuration) and against the reference, every table recomputed every frame; the reference
+  // (118 batches of tables per frame) is timed over one frame a round.
+  std::size_t optimised4 = 0, reference = 0;
   if (scene.atmosphere) {
     render::FrameSettings s = settings;
     s.mode = render::RenderMode::Optimised4;
-    renderer.setSettings(s);
-    ConfigResult optimised = measure(renderer, timer, options.warmup, options.frames, bar, done, total);
+    optimised4 = add("optimised4", renderer, s);
     s.mode = render::RenderMode::Reference;
-    renderer.setSettings(s);
-    ConfigResult reference = measure(renderer, timer, referenceWarmup, referenceFrames, bar, done, total);
-    sky.emplace(std::move(optimised), std::move(reference));
+    reference = add("reference", renderer, s);
+    configs[reference].warmup = std::min(options.warmup, 1);
+    configs[reference].frames = 1;
+  }
+
+  std::size_t done = 0, total = 0;
+  for (const Config& c : configs) total += static_cast<std::size_t>(rounds * (c.warmup + c.frames));
+  ProgressBar bar("benchmark " + options.scene.filename().string());
+  for (int r = 0; r < rounds; ++r) {
+    for (Config& c : configs) {
+      c.renderer->setSettings(c.settings);
+      c.rounds.push_back(measure(*c.renderer, timer, c.warmup, c.frames, bar, done, total));
+      if (r == 0) c.gpuMemoryBytes = c.renderer->gpuMemoryBytes();
+    }
   }
 
   std::vector<double> ns, ts;
-  for (const ConfigResult& r : spectral) {
-    ns.push_back(r.wavelengths);
-    ts.push_back(r.medianMs.at("frame"));
+  std::vector<BenchPoint> points;
+  const Config* largest = &configs[spectral.front()];
+  for (std::size_t i : spectral) {
+    const Config& c = configs[i];
+    std::vector<double> perRound = c.frameMsPerRound();
+    ns.push_back(c.wavelengths);
+    ts.push_back(c.frameMs());
+    points.push_back({c.wavelengths, c.frameMs(), *std::min_element(perRound.begin(), perRound.end()),
+                      *std::max_element(perRound.begin(), perRound.end())});
+    if (c.wavelengths > largest->wavelengths) largest = &c;
   }
-  auto [a, b] = linearFit(ns, ts);
-  double rgbFrame = rgb.medianMs.at("frame");
-  // GPU memory the spectral modes add over RGB: the upsampling table texture (RGB32F) and the
-  // per-frame spectra buffers; render targets and meshes are the same in both modes.
-  std::size_t res = static_cast<std::size_t>(table.resolution());
-  double tableMb = static_cast<double>(res * res * res * 3 * 3 * sizeof(float)) / (1024.0 * 1024.0);
-  std::size_t maxN = static_cast<std::size_t>(*std::max_element(options.wavelengths.begin(),
-                                                                options.wavelengths.end()));
-  std::size_t batches = maxN / 4;
-  double buffersMb = static_cast<double>(batches * (sizeof(shared::GpuBatch) +
-                                                    (scene.lights.size() + 1) * 16 +
-                                                    scene.materials.size() * 32)) /
-                     (1024.0 * 1024.0);
+  const LinearFit fit = linearFit(ns, ts);
+  const double rgbFrame = configs[rgb].frameMs();
 
   if (!options.plot.empty()) {
     writeFileAtomically(options.plot,
-                        svgPlot(spectral, rgbFrame, a, b,
-                                fmt::format("{} at {}x{} on {}", options.scene.filename().string(),
-                                            settings.width, settings.height, device)));
+                        benchPlotSvg(points, rgbFrame, fit,
+                                     fmt::format("{} at {}x{} on {}", options.scene.filename().string(),
+                                                 settings.width, settings.height, device)));
   }
   if (options.json) {
     nlohmann::json j;
@@ -247,90 +217,97 @@ void runSceneBench(const SceneBenchOptions& options) {
     j["device"] = device;
     j["width"] = settings.width;
     j["height"] = settings.height;
-    j["frames"] = options.frames;
-    j["rgb"] = rgb.medianMs;
-    for (const ConfigResult& r : spectral) {
-      nlohmann::json c;
-      c["wavelengths"] = r.wavelengths;
-      c["median_ms"] = r.medianMs;
-      c["ratio_to_rgb"] = r.medianMs.at("frame") / rgbFrame;
-      j["spectral"].push_back(c);
+    j["frames"] = rounds * frames;
+    j["rounds"] = rounds;
+    j["frames_per_round"] = frames;
+    j["rgb"] = configs[rgb].medianMs();
+    for (std::size_t i : spectral) {
+      const Config& c = configs[i];
+      nlohmann::json e;
+      e["wavelengths"] = c.wavelengths;
+      e["median_ms"] = c.medianMs();
+      putRatio(e, "ratio_to_rgb", ratio(c, configs[rgb]));
+      e["gpu_memory_mb"] = megabytes(c.gpuMemoryBytes);
+      j["spectral"].push_back(e);
     }
-    j["fit"] = {{"slope_ms_per_wavelength", a}, {"intercept_ms", b},
-                {"slope_fraction_of_rgb_frame", a / rgbFrame}};
-    j["extra_gpu_memory_mb"] = {{"upsampling_table", tableMb}, {"frame_buffers", buffersMb}};
-    j["gbuffer_albedo_16"] = {{"rgb_frame_ms", rgbAlbedo16.medianMs.at("frame")},
-                              {"coefficients_frame_ms", coefficients16.medianMs.at("frame")},
-                              {"rgb_median_ms", rgbAlbedo16.medianMs},
-                              {"coefficients_median_ms", coefficients16.medianMs},
-                              {"ratio_coefficients_to_rgb",
-                               coefficients16.medianMs.at("frame") / rgbAlbedo16.medianMs.at("frame")}};
-    if (dry) {
-      j["water"] = {{"rgb_ratio_wet_to_dry", rgbFrame / dry->first.medianMs.at("frame")},
-                    {"spectral16_ratio_wet_to_dry",
-                     dry->first.medianMs.at("wet_frame_16") / dry->second.medianMs.at("frame")},
-                    {"dry_rgb_frame_ms", dry->first.medianMs.at("frame")},
-                    {"dry_spectral16_frame_ms", dry->second.medianMs.at("frame")},
-                    {"wet_spectral16_frame_ms", dry->first.medianMs.at("wet_frame_16")}};
+    j["fit"] = {{"slope_ms_per_wavelength", fit.slope}, {"intercept_ms", fit.intercept},
+                {"slope_fraction_of_rgb_frame", fit.slope / rgbFrame}};
+    j["gpu_memory_mb"] = {{"rgb", megabytes(configs[rgb].gpuMemoryBytes)},
+                          {"largest_wavelength_count", largest->wavelengths},
+                          {"spectral_largest", megabytes(largest->gpuMemoryBytes)},
+                          {"coefficients_16", megabytes(configs[coefficients16].gpuMemoryBytes)}};
+    nlohmann::json& g = j["gbuffer_albedo_16"];
+    g = {{"rgb_frame_ms", configs[rgbAlbedo16].frameMs()},
+         {"coefficients_frame_ms", configs[coefficients16].frameMs()},
+         {"rgb_median_ms", configs[rgbAlbedo16].medianMs()},
+         {"coefficients_median_ms", configs[coefficients16].medianMs()}};
+    putRatio(g, "ratio_coefficients_to_rgb", ratio(configs[coefficients16], configs[rgbAlbedo16]));
+    if (scene.water) {
+      nlohmann::json& w = j["water"];
+      w = {{"dry_rgb_frame_ms", configs[dryRgb].frameMs()},
+           {"dry_spectral16_frame_ms", configs[dry16].frameMs()},
+           {"wet_spectral16_frame_ms", configs[wet16].frameMs()}};
+      putRatio(w, "rgb_ratio_wet_to_dry", ratio(configs[rgb], configs[dryRgb]));
+      putRatio(w, "spectral16_ratio_wet_to_dry", ratio(configs[wet16], configs[dry16]));
     }
-    if (sky) {
-      j["sky"] = {{"optimised4_median_ms", sky->first.medianMs},
-                  {"reference_median_ms", sky->second.medianMs},
-                  {"reference_frames", referenceFrames},
-                  {"ratio_optimised4_to_rgb3", sky->first.medianMs.at("frame") / rgbFrame},
-                  {"ratio_reference_to_optimised4", sky->second.medianMs.at("frame") / sky->first.medianMs.at("frame")}};
+    if (scene.atmosphere) {
+      nlohmann::json& s = j["sky"];
+      s = {{"optimised4_median_ms", configs[optimised4].medianMs()},
+           {"reference_median_ms", configs[reference].medianMs()},
+           {"reference_frames", rounds}};
+      putRatio(s, "ratio_optimised4_to_rgb3", ratio(configs[optimised4], configs[rgb]));
+      putRatio(s, "ratio_reference_to_optimised4", ratio(configs[reference], configs[optimised4]));
     }
     fmt::print("{}\n", j.dump(2));
     return;
   }
-  fmt::print("{} at {}x{} on {}; median of {} frames after {} warm-up, GPU timer queries\n",
-             options.scene.string(), settings.width, settings.height, device, options.frames,
-             options.warmup);
+  fmt::print("{} at {}x{} on {}; GPU timer queries, {} rounds of {} frames per configuration (after {} warm-up "
+             "each), the configurations interleaved; medians over the rounds, × RGB the median of the "
+             "per-round ratios [lowest, highest round]\n",
+             options.scene.string(), settings.width, settings.height, device, rounds, frames, options.warmup);
   std::vector<std::string> passes;
-  for (const auto& [name, ms] : rgb.medianMs) {
+  for (const auto& [name, ms] : configs[rgb].medianMs()) {
     if (name != "frame") passes.push_back(name);
   }
   std::string header = fmt::format("{:>8} {:>10}", "mode", "frame ms");
   for (const std::string& p : passes) header += fmt::format(" {:>10}", p);
-  header += fmt::format(" {:>9}", "× RGB");
+  header += fmt::format(" {:>9} {:>15}", "× RGB", "rounds");
   fmt::print("{}\n", header);
-  auto row = [&](const ConfigResult& r) {
-    std::string line = fmt::format("{:>8} {:>10.3f}", r.label, r.medianMs.at("frame"));
-    for (const std::string& p : passes) {
-      auto it = r.medianMs.find(p);
-      line += fmt::format(" {:>10.3f}", it == r.medianMs.end() ? 0.0 : it->second);
-    }
-    line += fmt::format(" {:>9.3f}", r.medianMs.at("frame") / rgbFrame);
+  auto row = [&](const Config& c) {
+    std::string line = fmt::format("{:>8} {:>10.3f}", c.label, c.frameMs());
+    for (const std::string& p : passes) line += fmt::format(" {:>10.3f}", c.passMs(p.c_str()));
+    RatioSpread s = ratio(c, configs[rgb]);
+    line += fmt::format(" {:>9.3f} {:>15}", s.median, fmt::format("[{:.3f}, {:.3f}]", s.min, s.max));
     fmt::print("{}\n", line);
   };
-  row(rgb);
-  for (const ConfigResult& r : spectral) row(r);
+  row(configs[rgb]);
+  for (std::size_t i : spectral) row(configs[i]);
   fmt::print("fit: t(n) = {:.4f} ms·n + {:.3f} ms; slope = {:.2f} % of the RGB frame per wavelength\n",
-             a, b, 100.0 * a / rgbFrame);
-  fmt::print("GPU memory added by spectral modes: {:.2f} MB (upsampling table {:.2f} MB, "
-             "frame buffers at n = {} {:.3f} MB)\n", tableMb + buffersMb, tableMb, maxN, buffersMb);
-  auto passMs = [](const ConfigResult& r, const char* pass) {
-    auto it = r.medianMs.find(pass);
-    return it == r.medianMs.end() ? 0.0 : it->second;
-  };
-  fmt::print("G-buffer at 16 wavelengths, coefficients / RGB albedo: frame {:.3f} / {:.3f} ms = {:.3f}× "
+             fit.slope, fit.intercept, 100.0 * fit.slope / rgbFrame);
+  fmt::print("GPU memory held by the renderer: RGB {:.2f} MB, n = {} {:.2f} MB (+{:.3f} MB)\n",
+             megabytes(configs[rgb].gpuMemoryBytes), largest->wavelengths, megabytes(largest->gpuMemoryBytes),
+             megabytes(largest->gpuMemoryBytes) - megabytes(configs[rgb].gpuMemoryBytes));
+  auto spread = [](const RatioSpread& s) { return fmt::format("{:.3f}× [{:.3f}, {:.3f}]", s.median, s.min, s.max); };
+  const Config& coefficients = configs[coefficients16];
+  const Config& rgbAlbedoConfig = configs[rgbAlbedo16];
+  fmt::print("G-buffer at 16 wavelengths, coefficients / RGB albedo: frame {:.3f} / {:.3f} ms = {} "
              "(G-buffer {:.3f} / {:.3f} ms, lighting {:.3f} / {:.3f} ms)\n",
-             coefficients16.medianMs.at("frame"), rgbAlbedo16.medianMs.at("frame"),
-             coefficients16.medianMs.at("frame") / rgbAlbedo16.medianMs.at("frame"), passMs(coefficients16, "gbuffer"),
-             passMs(rgbAlbedo16, "gbuffer"), passMs(coefficients16, "lighting"), passMs(rgbAlbedo16, "lighting"));
-  if (dry) {
-    double wet16 = dry->first.medianMs.at("wet_frame_16"), dry16 = dry->second.medianMs.at("frame");
-    fmt::print("water on / off: RGB {:.3f} / {:.3f} ms = {:.3f}×; 16 wavelengths {:.3f} / {:.3f} ms = {:.3f}×\n",
-               rgbFrame, dry->first.medianMs.at("frame"), rgbFrame / dry->first.medianMs.at("frame"), wet16,
-               dry16, wet16 / dry16);
+             coefficients.frameMs(), rgbAlbedoConfig.frameMs(), spread(ratio(coefficients, rgbAlbedoConfig)),
+             coefficients.passMs("gbuffer"), rgbAlbedoConfig.passMs("gbuffer"), coefficients.passMs("lighting"),
+             rgbAlbedoConfig.passMs("lighting"));
+  if (scene.water) {
+    fmt::print("water on / off: RGB {:.3f} / {:.3f} ms = {}; 16 wavelengths {:.3f} / {:.3f} ms = {}\n", rgbFrame,
+               configs[dryRgb].frameMs(), spread(ratio(configs[rgb], configs[dryRgb])), configs[wet16].frameMs(),
+               configs[dry16].frameMs(), spread(ratio(configs[wet16], configs[dry16])));
   }
-  if (sky) {
-    auto atmosphereMs = [&](const ConfigResult& r) { return passMs(r, "atmosphere"); };
-    double optimised = sky->first.medianMs.at("frame"), reference = sky->second.medianMs.at("frame");
-    fmt::print("sky: optimised4 / RGB-3 frame {:.3f} / {:.3f} ms = {:.3f}× (sky tables {:.3f} / {:.3f} ms); "
-               "reference (472 wavelengths, {} frames) {:.3f} ms = {:.1f}× optimised4 (sky tables {:.3f} ms)\n",
-               optimised, rgbFrame, optimised / rgbFrame, atmosphereMs(sky->first), atmosphereMs(rgb), referenceFrames,
-               reference, reference / optimised, atmosphereMs(sky->second));
+  if (scene.atmosphere) {
+    const Config& o4 = configs[optimised4];
+    const Config& ref = configs[reference];
+    fmt::print("sky: optimised4 / RGB-3 frame {:.3f} / {:.3f} ms = {} (sky tables {:.3f} / {:.3f} ms); "
+               "reference (472 wavelengths, {} frames) {:.3f} ms = {} optimised4 (sky tables {:.3f} ms)\n",
+               o4.frameMs(), rgbFrame, spread(ratio(o4, configs[rgb])), o4.passMs("atmosphere"),
+               configs[rgb].passMs("atmosphere"), rounds, ref.frameMs(), spread(ratio(ref, o4)),
+               ref.passMs("atmosphere"));
   }
 }
 

@@ -242,13 +242,21 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
   ASSERT_EQ(display.exitCode, 0) << display.err;
   expectOneLineError("render " + scenes + "/spheres_led.json -o x.png --camera cie1964", "not a camera");
 
-  Result bench = run("bench " + scenes + "/spheres_d65.json --width 64 --height 36 --frames 4 --warmup 1 "
-                     "--wavelengths 4,8,16 --json --plot " + (dir / "plot.svg").string());
+  Result bench = run("bench " + scenes + "/spheres_d65.json --width 64 --height 36 --frames 4 --rounds 2 "
+                     "--warmup 1 --wavelengths 4,8,16 --json --plot " + (dir / "plot.svg").string());
   ASSERT_EQ(bench.exitCode, 0) << bench.err;
   nlohmann::json j = nlohmann::json::parse(bench.out);
   EXPECT_EQ(j["spectral"].size(), 3u);
+  EXPECT_EQ(j["rounds"], 2);
+  EXPECT_EQ(j["frames_per_round"], 2);
   EXPECT_GT(j["rgb"]["frame"].get<double>(), 0.0);
   EXPECT_TRUE(j["fit"].contains("slope_ms_per_wavelength"));
+  for (const nlohmann::json& c : j["spectral"]) {
+    EXPECT_LE(c["ratio_to_rgb_min"].get<double>(), c["ratio_to_rgb"].get<double>());
+    EXPECT_GE(c["ratio_to_rgb_max"].get<double>(), c["ratio_to_rgb"].get<double>());
+  }
+  // The renderer's own count: at least the 64³ RGB32F upsampling table (9 MB).
+  EXPECT_GT(j["gpu_memory_mb"]["rgb"].get<double>(), 9.0);
   EXPECT_NE(slurp(dir / "plot.svg").find("<svg"), std::string::npos);
 
   Result demo = run("demo -o " + (dir / "gallery").string() + " --width 64 --height 36 --frames 2");

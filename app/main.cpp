@@ -7,18 +7,18 @@
 #include <charconv>
 #include <cmath>
 
-#include "app/colour_checker_demo.h"
 #include "app/colour_commands.h"
-#include "app/compare_commands.h"
-#include "app/gallery.h"
-#include "app/atmosphere_commands.h"
 #include "app/reference_commands.h"
 #include "app/render_commands.h"
-#include "app/scene_bench.h"
 #include "app/upsampling_commands.h"
-#include "app/validate.h"
 #include "app/view_command.h"
 #include "gpu/error.h"
+#include "harness/colour_checker_chart.h"
+#include "harness/compare_report.h"
+#include "harness/gallery.h"
+#include "harness/scene_bench.h"
+#include "harness/sky_experiments.h"
+#include "harness/validate.h"
 #include "core/error.h"
 
 namespace {
@@ -56,6 +56,7 @@ int runBenchmarks(std::vector<std::string> args) {
 
 int main(int argc, char** argv) {
   using namespace prism::app;
+  using namespace prism::harness;
   CLI::App app{"Prism: real-time spectral rendering. Run `prism COMMAND --help` for a command."};
   app.require_subcommand(1);
 
@@ -252,6 +253,7 @@ int main(int argc, char** argv) {
   addRenderSettings(viewCmd, view.settings, viewRange, viewEv, nullptr);
 
   SceneBenchOptions sceneBench;
+  RenderSettingsOptions benchSettings;
   std::string benchWavelengths, benchRange, benchEv;
   AtmosphereCommandOptions atm;
   auto* atmosphereCmd = app.add_subcommand("atmosphere", "the spectral sky: wavelength strategies against the reference");
@@ -277,9 +279,13 @@ int main(int argc, char** argv) {
                "micro-benchmarks (Google Benchmark flags pass through)");
   bench->allow_extras();
   bench->add_option("scene", sceneBench.scene, "scene file: time its passes in RGB and spectral modes");
-  addRenderSettings(bench, sceneBench.settings, benchRange, benchEv, &benchWavelengths);
-  bench->add_option("--frames", sceneBench.frames, "timed frames per configuration")->capture_default_str();
-  bench->add_option("--warmup", sceneBench.warmup, "untimed frames first")->capture_default_str();
+  addRenderSettings(bench, benchSettings, benchRange, benchEv, &benchWavelengths);
+  bench->add_option("--frames", sceneBench.frames, "timed frames per configuration, spread over the rounds")
+      ->capture_default_str();
+  bench->add_option("--rounds", sceneBench.rounds, "rounds over every configuration in turn (load drift cancels "
+                    "in per-round ratios)")->capture_default_str();
+  bench->add_option("--warmup", sceneBench.warmup, "untimed frames before each configuration in every round")
+      ->capture_default_str();
   bench->add_option("--plot", sceneBench.plot, "SVG plot of frame time against the wavelength count");
   bench->add_flag("--json", sceneBench.json, "JSON output");
 
@@ -345,8 +351,10 @@ int main(int argc, char** argv) {
     }
     if (*bench && !sceneBench.scene.empty()) {
       if (!bench->remaining().empty()) throw prism::Error("bench: unexpected '" + bench->remaining().front() + "'");
-      if (!benchRange.empty()) sceneBench.settings.range = parseNumbers(benchRange, "--range");
-      sceneBench.settings.ev100 = parseEv(benchEv);
+      if (!benchRange.empty()) benchSettings.range = parseNumbers(benchRange, "--range");
+      benchSettings.ev100 = parseEv(benchEv);
+      benchSettings.mode = "rgb";  // the bench sets the mode per configuration
+      sceneBench.settings = frameSettings(benchSettings);
       if (!benchWavelengths.empty()) {
         sceneBench.wavelengths.clear();
         for (double n : parseNumbers(benchWavelengths, "--wavelengths")) sceneBench.wavelengths.push_back(static_cast<int>(n));

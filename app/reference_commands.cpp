@@ -1,11 +1,10 @@
 #include "app/reference_commands.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
 
-#include "app/progress_bar.h"
-#include "app/upsampling_table.h"
+#include "harness/display_png.h"
+#include "harness/progress_bar.h"
+#include "harness/upsampling_table.h"
 #include "imaging/exr_file.h"
 #include "render/display_transform.h"
 #include "scene/scene_loader.h"
@@ -13,21 +12,6 @@
 #include "spectral/observer.h"
 
 namespace prism::app {
-
-imaging::PngImage displayImage(const imaging::FloatImage& tristimulus,
-                               const render::FrameSettings& settings, float sceneEv100) {
-  render::DisplayTransform transform = render::displayTransform(settings, sceneEv100);
-  imaging::PngImage image(tristimulus.width, tristimulus.height, {});
-  auto byte = [](float v) { return static_cast<std::uint8_t>(std::lround(v * 255.0f)); };
-  for (int y = 0; y < tristimulus.height; ++y) {
-    for (int x = 0; x < tristimulus.width; ++x) {
-      glm::vec3 t(tristimulus.at(x, y, 0), tristimulus.at(x, y, 1), tristimulus.at(x, y, 2));
-      glm::vec3 rgb = render::encodeForDisplay(transform, settings.toneMap, t);
-      image.setPixel(x, y, {byte(rgb.x), byte(rgb.y), byte(rgb.z)});
-    }
-  }
-  return image;
-}
 
 reference::ReferenceSettings referenceSettings(const ReferenceOptions& o) {
   reference::ReferenceSettings s;
@@ -63,8 +47,8 @@ void runReference(const ReferenceOptions& o) {
   }
   Scene scene = loadScene(o.scene, o.sets);
   reference::ReferenceSettings settings = referenceSettings(o);
-  RgbToSpectrumTable table = upsamplingTable(scene.colourSpace);
-  ProgressBar bar("tracing " + o.output.filename().string());
+  RgbToSpectrumTable table = harness::upsamplingTable(scene.colourSpace);
+  harness::ProgressBar bar("tracing " + o.output.filename().string());
   reference::ReferenceImage image = reference::renderReference(
       scene, table, settings, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
 
@@ -80,7 +64,7 @@ void runReference(const ReferenceOptions& o) {
     display.mode = render::RenderMode::JakobHanika;
     display.observer = settings.observer;
     display.ev100 = ev100;
-    displayImage(image.tristimulus, display, ev100).write(o.output);
+    harness::displayImage(image.tristimulus, display, ev100).write(o.output);
   }
   // The variance is in squared units and no colour: not something compare should take for one.
   if (!o.variance.empty()) imaging::writeExr(o.variance, image.variance, {.colour = imaging::ColourMeaning::OtherRgb});

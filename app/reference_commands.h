@@ -1,18 +1,15 @@
 // `prism reference`: a scene through the CPU spectral path tracer (prism::reference), to an EXR
 // of linear tristimulus (XYZ in cd/m², or raw camera RGB) or a PNG after the same display
-// transform as `prism render`; and the helpers `prism validate` shares with it.
+// transform as `prism render`.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "imaging/float_image.h"
-#include "imaging/png_file.h"
 #include "reference/path_tracer.h"
-#include "render/frame_settings.h"
-#include "scene/scene.h"
 
 namespace prism::app {
 
@@ -37,10 +34,5 @@ struct ReferenceOptions {
 };
 reference::ReferenceSettings referenceSettings(const ReferenceOptions& options);
 void runReference(const ReferenceOptions& options);
-
-// Linear tristimulus (XYZ, or camera RGB for a camera observer) through the post pass's maths
-// on the CPU (render::encodeForDisplay, no dither): what `prism render` would show.
-imaging::PngImage displayImage(const imaging::FloatImage& tristimulus,
-                               const render::FrameSettings& settings, float sceneEv100);
 
 }  // namespace prism::app

@@ -2,11 +2,11 @@
 
 #include <fmt/format.h>
 
-#include "app/progress_bar.h"
-#include "app/upsampling_table.h"
 #include "gpu/headless_context.h"
+#include "harness/display_png.h"
+#include "harness/progress_bar.h"
+#include "harness/upsampling_table.h"
 #include "imaging/exr_file.h"
-#include "imaging/png_file.h"
 #include "render/display_transform.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -55,26 +55,17 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
     throw Error(fmt::format("{}: the output must be a .png or an .exr file", output.string()));
   }
   if (frames < 1) throw Error("--frames: must be at least 1");
-  RgbToSpectrumTable table = upsamplingTable(scene.colourSpace);
+  RgbToSpectrumTable table = harness::upsamplingTable(scene.colourSpace);
   gpu::HeadlessContext context;
   render::Renderer renderer(scene, table, settings);
-  std::optional<ProgressBar> bar;
+  std::optional<harness::ProgressBar> bar;
   if (progress && frames > 1) bar.emplace("rendering " + output.filename().string());
   for (int f = 0; f < frames; ++f) {
     renderer.renderFrame();
     if (bar) bar->update(static_cast<std::size_t>(f + 1), static_cast<std::size_t>(frames));
   }
   if (extension == ".png") {
-    std::vector<std::uint8_t> rgba = renderer.readDisplayRgba8();
-    imaging::PngImage image(settings.width, settings.height, {});
-    for (int y = 0; y < settings.height; ++y) {
-      for (int x = 0; x < settings.width; ++x) {
-        std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(settings.width) +
-                         static_cast<std::size_t>(x)) * 4;
-        image.setPixel(x, y, {rgba[i], rgba[i + 1], rgba[i + 2]});
-      }
-    }
-    image.write(output);
+    harness::displayPng(renderer).write(output);
     return;
   }
   imaging::FloatImage image(settings.width, settings.height, 3);

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "app/progress_bar.h"
+#include "harness/progress_bar.h"
 #include "spectral/colour_space.h"
 #include "core/error.h"
 #include "spectral/rgb_to_spectrum_cache.h"
@@ -40,7 +40,7 @@ void printError(const char* what, const UpsamplingError& e) {
 void runLut(const LutOptions& o) {
   const std::string gamut = colourSpace(o.gamut).name;  // unknown names fail before any work
   if (o.output.empty()) throw Error("lut: give the output file with -o");
-  ProgressBar bar("lut " + gamut + " " + std::to_string(o.resolution) + "³");
+  harness::ProgressBar bar("lut " + gamut + " " + std::to_string(o.resolution) + "³");
   auto start = std::chrono::steady_clock::now();
   RgbToSpectrumTable table = buildRgbToSpectrumTable(
       {gamut, o.resolution, o.threads, [&](std::size_t done, std::size_t total) { bar.update(done, total); }});
@@ -87,7 +87,7 @@ void runUpsample(const UpsampleOptions& o) {
     }
     reflectance = boxReflectanceSpectrum(rgb);
   } else {
-    ProgressBar bar("building the " + gamut + " upsampling table (first use, cached)");
+    harness::ProgressBar bar("building the " + gamut + " upsampling table (first use, cached)");
     RgbToSpectrumTable table = cachedRgbToSpectrumTable(
         gamut, o.resolution, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
     if (o.intent == "unbounded") {

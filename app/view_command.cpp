@@ -1,6 +1,6 @@
 #include "app/view_command.h"
 
-#include "app/upsampling_table.h"
+#include "harness/upsampling_table.h"
 #include "scene/scene_loader.h"
 #include "viewer/viewer.h"
 
@@ -9,7 +9,7 @@ namespace prism::app {
 int runView(const ViewOptions& options) {
   Scene scene = loadScene(options.scene, options.sets);
   render::FrameSettings settings = frameSettings(options.settings);
-  RgbToSpectrumTable table = upsamplingTable(scene.colourSpace);
+  RgbToSpectrumTable table = harness::upsamplingTable(scene.colourSpace);
   viewer::ViewerOptions v;
   v.width = settings.width;
   v.height = settings.height;

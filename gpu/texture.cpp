@@ -179,6 +179,59 @@ bool isDepthFormat(GLenum internalFormat) {
   }
 }
 
+std::size_t texelBytes(GLenum internalFormat) {
+  switch (internalFormat) {
+    case GL_R8:
+    case GL_R8I:
+    case GL_R8UI: return 1;
+    case GL_R16F:
+    case GL_R16I:
+    case GL_R16UI:
+    case GL_RG8:
+    case GL_RG8I:
+    case GL_RG8UI:
+    case GL_DEPTH_COMPONENT16: return 2;
+    case GL_RGB8:
+    case GL_SRGB8:
+    case GL_RGB8I:
+    case GL_RGB8UI:
+    case GL_DEPTH_COMPONENT24: return 3;
+    case GL_R32F:
+    case GL_R32I:
+    case GL_R32UI:
+    case GL_RG16F:
+    case GL_RG16I:
+    case GL_RG16UI:
+    case GL_RGBA8:
+    case GL_SRGB8_ALPHA8:
+    case GL_RGBA8I:
+    case GL_RGBA8UI:
+    case GL_RGB10_A2:
+    case GL_RGB10_A2UI:
+    case GL_R11F_G11F_B10F:
+    case GL_DEPTH_COMPONENT32:
+    case GL_DEPTH_COMPONENT32F:
+    case GL_DEPTH24_STENCIL8: return 4;
+    case GL_RGB16F:
+    case GL_RGB16I:
+    case GL_RGB16UI: return 6;
+    case GL_RG32F:
+    case GL_RG32I:
+    case GL_RG32UI:
+    case GL_RGBA16F:
+    case GL_RGBA16I:
+    case GL_RGBA16UI:
+    case GL_DEPTH32F_STENCIL8: return 8;
+    case GL_RGB32F:
+    case GL_RGB32I:
+    case GL_RGB32UI: return 12;
+    case GL_RGBA32F:
+    case GL_RGBA32I:
+    case GL_RGBA32UI: return 16;
+    default: throw std::invalid_argument("prism::gpu texelBytes: unsupported internal format");
+  }
+}
+
 // ---- Texture3D ----
 
 Texture3D::Texture3D(const Texture3DDesc& desc) {
@@ -200,6 +253,7 @@ Texture3D::Texture3D(const Texture3DDesc& desc) {
   for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
     glTextureParameteri(mId, wrap, GL_CLAMP_TO_EDGE);
   setLabel(mId, desc.label);
+  mSizeBytes = expected / channels(desc.format) * texelBytes(desc.internalFormat);
 }
 
 Texture3D::~Texture3D() { release(); }
@@ -211,12 +265,14 @@ void Texture3D::release() {
   mId = 0;
 }
 
-Texture3D::Texture3D(Texture3D&& other) noexcept : mId(std::exchange(other.mId, 0)) {}
+Texture3D::Texture3D(Texture3D&& other) noexcept
+    : mId(std::exchange(other.mId, 0)), mSizeBytes(std::exchange(other.mSizeBytes, 0)) {}
 
 Texture3D& Texture3D::operator=(Texture3D&& other) noexcept {
   if (this != &other) {
     release();
     mId = std::exchange(other.mId, 0);
+    mSizeBytes = std::exchange(other.mSizeBytes, 0);
   }
   return *this;
 }
@@ -272,6 +328,14 @@ Texture2D& Texture2D::operator=(Texture2D&& other) noexcept {
 
 GLsizei Texture2D::width(GLint level) const { return mipExtent(mWidth, level); }
 GLsizei Texture2D::height(GLint level) const { return mipExtent(mHeight, level); }
+
+std::size_t Texture2D::sizeBytes() const {
+  if (!mId) return 0;
+  std::size_t texels = 0;
+  for (GLint level = 0; level < mLevels; ++level)
+    texels += static_cast<std::size_t>(width(level)) * static_cast<std::size_t>(height(level));
+  return texels * texelBytes(mInternalFormat);
+}
 
 void Texture2D::upload(const TextureData& data, GLint level) {
   checkLevel(level, mLevels);
@@ -351,6 +415,14 @@ Texture2DArray& Texture2DArray::operator=(Texture2DArray&& other) noexcept {
 
 GLsizei Texture2DArray::width(GLint level) const { return mipExtent(mWidth, level); }
 GLsizei Texture2DArray::height(GLint level) const { return mipExtent(mHeight, level); }
+
+std::size_t Texture2DArray::sizeBytes() const {
+  if (!mId) return 0;
+  std::size_t texels = 0;
+  for (GLint level = 0; level < mLevels; ++level)
+    texels += static_cast<std::size_t>(width(level)) * static_cast<std::size_t>(height(level));
+  return texels * static_cast<std::size_t>(mLayers) * texelBytes(mInternalFormat);
+}
 
 // ---- read-back ----
 

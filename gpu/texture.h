@@ -38,11 +38,13 @@ class Texture3D {
 
   GLuint id() const { return mId; }
   void bind(GLuint unit) const { glBindTextureUnit(unit, mId); }
+  std::size_t sizeBytes() const { return mSizeBytes; }  // of its storage (texelBytes); 0 without a GL object
 
  private:
   void release();
 
   GLuint mId = 0;
+  std::size_t mSizeBytes = 0;
 };
 
 // Client-memory texels for one level: tightly packed rows (no 4-byte row alignment), bottom
@@ -87,6 +89,7 @@ class Texture2D {
   GLsizei height(GLint level = 0) const;
   GLsizei levels() const { return mLevels; }
   GLenum internalFormat() const { return mInternalFormat; }
+  std::size_t sizeBytes() const;  // of its storage, every level (texelBytes); 0 without a GL object
 
   // Replaces one whole level. Throws std::invalid_argument when the byte count does not match.
   void upload(const TextureData& data, GLint level = 0);
@@ -134,6 +137,7 @@ class Texture2DArray {
   GLsizei layers() const { return mLayers; }
   GLsizei levels() const { return mLevels; }
   GLenum internalFormat() const { return mInternalFormat; }
+  std::size_t sizeBytes() const;  // of its storage, every layer and level; 0 without a GL object
 
   void bind(GLuint unit) const { glBindTextureUnit(unit, mId); }
   // Every layer as an image2DArray for compute (format: the internal format; access as
@@ -150,6 +154,11 @@ class Texture2DArray {
 
 // Whether a sized internal format is a depth (or depth-stencil) format.
 bool isDepthFormat(GLenum internalFormat);
+
+// Bytes per texel of a sized internal format as the GL specification sizes it, for memory
+// accounting: drivers may pad (RGB32F to 16 bytes, DEPTH24_STENCIL8 to 8), so this is what a
+// texture needs at least. Throws std::invalid_argument for a format Prism does not use.
+std::size_t texelBytes(GLenum internalFormat);
 
 // Level `level` as `channels` floats per texel (1: red, or depth for depth formats; 2..4: RG,
 // RGB, RGBA). sRGB formats come back as stored (encoded), not decoded. glGetTextureImage.

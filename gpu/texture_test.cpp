@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "gpu/gpu_test_support.h"
@@ -85,6 +86,21 @@ TEST_F(GpuTest, Texture2DFullMipChainAndGeneratedLevels) {
   EXPECT_EQ(readTexture2DFloat(texture, 2, 1).size(), 4u * 1u * 2u);
   EXPECT_THROW(readTexture2DFloat(texture, 4, 4), std::out_of_range);
   EXPECT_THROW(Texture2D({w, h, GL_RGBA8, 5, {}, {}, {}}), std::invalid_argument);
+}
+
+TEST_F(GpuTest, SizeBytesCountsEveryLevelLayerAndTexel) {
+  EXPECT_EQ(Texture2D().sizeBytes(), 0u);
+  // 8×4 then 4×2, 2×1, 1×1: 32 + 8 + 2 + 1 texels of 4 bytes.
+  EXPECT_EQ(Texture2D({8, 4, GL_RGBA8, 0, {}, {}, "mips"}).sizeBytes(), 43u * 4u);
+  EXPECT_EQ(Texture2DArray({16, 16, 3, GL_DEPTH_COMPONENT32F, 1, false, {}, "layers"}).sizeBytes(),
+            16u * 16u * 3u * 4u);
+  std::vector<float> table(2 * 3 * 4 * 3, 0.5f);
+  Texture3D volume({2, 3, 4, GL_RGB32F, GL_RGB, table, "volume"});
+  EXPECT_EQ(volume.sizeBytes(), 2u * 3u * 4u * 12u);
+  Texture3D moved = std::move(volume);
+  EXPECT_EQ(moved.sizeBytes(), 2u * 3u * 4u * 12u);
+  EXPECT_EQ(texelBytes(GL_RGBA16F), 8u);
+  EXPECT_THROW(texelBytes(GL_RGBA), std::invalid_argument);  // unsized: no size to give
 }
 
 TEST_F(GpuTest, Texture2DUploadChecksTheByteCount) {

@@ -53,4 +53,11 @@ const gpu::Texture2D& GpuScene::texture(int index) const {
   return mTextures.at(static_cast<std::size_t>(index));
 }
 
+std::size_t GpuScene::gpuMemoryBytes() const {
+  std::size_t bytes = 0;
+  for (const GpuMesh& m : mMeshes) bytes += m.vertices.sizeBytes() + m.indices.sizeBytes();
+  for (const gpu::Texture2D& t : mTextures) bytes += t.sizeBytes();
+  return bytes;
+}
+
 }  // namespace prism::render

@@ -28,6 +28,8 @@ class GpuScene {
 
   const std::vector<GpuMesh>& meshes() const { return mMeshes; }
   const gpu::Texture2D& texture(int index) const;
+  // Bytes of its vertex, index and texture storage (mip chains included).
+  std::size_t gpuMemoryBytes() const;
 
  private:
   std::vector<GpuMesh> mMeshes;

@@ -474,4 +474,26 @@ std::vector<float> Renderer::readMeanTristimulus() const {
   return flipRows(rgb, mSettings.width, mSettings.height, 3);
 }
 
+std::size_t Renderer::gpuMemoryBytes() const {
+  std::size_t bytes = mGpuScene.gpuMemoryBytes() + mUpsamplingTable.sizeBytes() + mShadows.maps.sizeBytes() +
+                      mGizmo.vertices.sizeBytes() + mGizmo.indices.sizeBytes();
+  for (const gpu::Texture2D* t : {&mTargets.albedoMetallic, &mTargets.normalRoughness, &mTargets.materialId,
+                                  &mTargets.depth, &mTargets.coefficients, &mTargets.accumulation,
+                                  &mTargets.forwardDepth, &mTargets.display}) {
+    bytes += t->sizeBytes();
+  }
+  for (const gpu::Buffer* b : {&mBatches, &mLights, &mMaterials, &mLightSpectra, &mMaterialSpectra,
+                               &mWaterSpectra, &mNoSkyIrradiance}) {
+    bytes += b->sizeBytes();
+  }
+  if (mAtmosphere) {
+    for (const gpu::Texture2DArray* t : {&mAtmosphere->transmittance(), &mAtmosphere->multipleScattering(),
+                                         &mAtmosphere->skyView(), &mAtmosphere->aerialPerspective()}) {
+      bytes += t->sizeBytes();
+    }
+    bytes += mAtmosphere->skyIrradiance().sizeBytes() + mAtmosphere->atmospheres().sizeBytes();
+  }
+  return bytes;
+}
+
 }  // namespace prism::render

@@ -69,6 +69,12 @@ class Renderer {
   std::vector<std::uint8_t> readDisplayRgba8() const;
   std::vector<float> readMeanTristimulus() const;  // rgb per pixel, the mean of the frames so far
 
+  // The GPU memory it holds now, in bytes, from the sizes of its textures (render targets,
+  // shadow maps, the upsampling table, the scene's images, the sky's tables) and buffers
+  // (meshes, per-frame data, the sky's); programs and vertex arrays are not counted. Per-frame
+  // buffers only grow: after a switch to fewer wavelengths they keep their largest size.
+  std::size_t gpuMemoryBytes() const;
+
   // What the last frame used, for the CPU twin and tests.
   const FrameData& frameData() const { return mFrame; }
   const CameraTransform& cameraTransform() const { return mCameraTransform; }

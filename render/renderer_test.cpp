@@ -301,6 +301,23 @@ TEST(Renderer, SettingsChangeWithoutRestartAndRestartAccumulation) {
 
 // Coefficients stored in the G-buffer give the image the RGB albedo gives (the same lookup, per
 // fragment instead of per pixel; only the albedo's 16-bit storage differs), switched live.
+TEST(Renderer, GpuMemoryCountsWhatItHolds) {
+  gpu::HeadlessContext context;
+  Scene scene = loadScene(kScenes / "spheres_d65.json");
+  FrameSettings settings = smallFrame(RenderMode::JakobHanika, 16);
+  Renderer renderer(scene, table(), settings);
+  renderer.renderFrame();
+  const std::size_t rgbAlbedo = renderer.gpuMemoryBytes();
+  const auto res = static_cast<std::size_t>(table().resolution());
+  EXPECT_GT(rgbAlbedo, res * res * 3 * res * 12) << "the RGB32F upsampling table alone is this big";
+  // The coefficients G-buffer adds one RGBA32F target: 16 bytes a pixel, nothing else.
+  settings.gbufferAlbedo = GBufferAlbedo::Coefficients;
+  renderer.setSettings(settings);
+  renderer.renderFrame();
+  EXPECT_EQ(renderer.gpuMemoryBytes() - rgbAlbedo,
+            static_cast<std::size_t>(settings.width) * static_cast<std::size_t>(settings.height) * 16);
+}
+
 TEST(Renderer, GBufferCoefficientsRenderWhatTheRgbAlbedoRenders) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kScenes / "textured_gltf.json");

@@ -1,8 +1,8 @@
-#include "app/progress_bar.h"
+#include "harness/progress_bar.h"
 
 #include <fmt/core.h>
 
-namespace prism::app {
+namespace prism::harness {
 
 ProgressBar::ProgressBar(std::string label)
     : mLabel(std::move(label)), mStart(std::chrono::steady_clock::now()) {}
@@ -20,4 +20,4 @@ void ProgressBar::update(std::size_t done, std::size_t total) {
   std::fflush(stderr);
 }
 
-}  // namespace prism::app
+}  // namespace prism::harness

@@ -1,17 +1,17 @@
-#include "app/atmosphere_commands.h"
+#include "harness/sky_experiments.h"
 
 #include <cstdio>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "app/progress_bar.h"
+#include "harness/progress_bar.h"
 #include "core/atomic_file.h"
 #include "core/data_files.h"
 #include "techniques/atmosphere/sky_evaluation.h"
 #include "techniques/atmosphere/wavelength_optimiser.h"
 
-namespace prism::app {
+namespace prism::harness {
 namespace {
 
 using namespace prism::atmosphere;
@@ -130,4 +130,4 @@ void runAtmosphereOptimise(const AtmosphereCommandOptions& raw) {
   std::printf("wrote %s\n", output.string().c_str());
 }
 
-}  // namespace prism::app
+}  // namespace prism::harness

@@ -1,16 +1,16 @@
-#include "app/colour_checker_demo.h"
+#include "harness/colour_checker_chart.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
-namespace prism::app {
+namespace prism::harness {
 namespace {
 
 // Patches 19–24 of the chart are the neutral row.
 constexpr std::size_t kFirstNeutral = 18, kLastNeutral = 23;
 
-TEST(ColourCheckerDemo, NeutralsAreNearlyGreyUnderD65) {
+TEST(ColourCheckerChart, NeutralsAreNearlyGreyUnderD65) {
   // The chart's neutrals are not perfectly flat (BabelColor: white 9.5 has b* ≈ 1.2), so allow
   // the few levels of blue that this costs.
   std::vector<ChartPatch> d65 = renderColourChecker("D65", "bradford");
@@ -21,7 +21,7 @@ TEST(ColourCheckerDemo, NeutralsAreNearlyGreyUnderD65) {
   }
 }
 
-TEST(ColourCheckerDemo, WhiteBalanceKeepsNeutralsUnderEveryIlluminant) {
+TEST(ColourCheckerChart, WhiteBalanceKeepsNeutralsUnderEveryIlluminant) {
   // A neutral reflectance is lit like the white, so after adaptation it lands where it does
   // under D65 whatever the lamp.
   std::vector<ChartPatch> d65 = renderColourChecker("D65", "bradford");
@@ -37,7 +37,7 @@ TEST(ColourCheckerDemo, WhiteBalanceKeepsNeutralsUnderEveryIlluminant) {
   EXPECT_GT(white[0] - white[2], 40) << "illuminant A should look orange without adaptation";
 }
 
-TEST(ColourCheckerDemo, DarkSkinMatchesBabelColorsSrgb) {
+TEST(ColourCheckerChart, DarkSkinMatchesBabelColorsSrgb) {
   // BabelColor's published sRGB of its average chart: dark skin (115, 82, 68); our D65-lit
   // value may differ by a few levels (BabelColor renders under D50 and adapts).
   std::vector<ChartPatch> patches = renderColourChecker("D65", "bradford");
@@ -48,4 +48,4 @@ TEST(ColourCheckerDemo, DarkSkinMatchesBabelColorsSrgb) {
 }
 
 }  // namespace
-}  // namespace prism::app
+}  // namespace prism::harness

@@ -1,9 +1,9 @@
-#include "app/upsampling_table.h"
+#include "harness/upsampling_table.h"
 
-#include "app/progress_bar.h"
+#include "harness/progress_bar.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 
-namespace prism::app {
+namespace prism::harness {
 
 RgbToSpectrumTable upsamplingTable(const std::string& colourSpace) {
   ProgressBar bar("upsampling table for " + colourSpace);
@@ -11,4 +11,4 @@ RgbToSpectrumTable upsamplingTable(const std::string& colourSpace) {
                                   [&](std::size_t done, std::size_t total) { bar.update(done, total); });
 }
 
-}  // namespace prism::app
+}  // namespace prism::harness

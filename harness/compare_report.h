@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <optional>
 
-namespace prism::app {
+namespace prism::harness {
 
 struct CompareOptions {
   std::filesystem::path reference;
@@ -23,4 +23,4 @@ struct CompareOptions {
 };
 void runCompare(const CompareOptions& options);
 
-}  // namespace prism::app
+}  // namespace prism::harness

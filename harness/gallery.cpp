@@ -1,16 +1,17 @@
-#include "app/gallery.h"
+#include "harness/gallery.h"
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "app/colour_checker_demo.h"
-#include "app/progress_bar.h"
 #include "gpu/headless_context.h"
+#include "harness/colour_checker_chart.h"
+#include "harness/display_png.h"
+#include "harness/html_report.h"
+#include "harness/progress_bar.h"
 #include "imaging/image_difference.h"
 #include "imaging/png_file.h"
 #include "render/display_transform.h"
@@ -21,7 +22,7 @@
 #include "core/error.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 
-namespace prism::app {
+namespace prism::harness {
 namespace {
 
 struct Entry {
@@ -32,31 +33,6 @@ struct Entry {
   bool sky = false;
   imaging::DifferenceStats optimisedDifference;  // optimised-4 vs the reference
 };
-
-std::string htmlEscape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
-
-imaging::PngImage display(const render::Renderer& renderer, int width, int height) {
-  std::vector<std::uint8_t> rgba = renderer.readDisplayRgba8();
-  imaging::PngImage image(width, height, {});
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                       static_cast<std::size_t>(x)) * 4;
-      image.setPixel(x, y, {rgba[i], rgba[i + 1], rgba[i + 2]});
-    }
-  }
-  return image;
-}
 
 imaging::FloatImage tristimulus(const render::Renderer& renderer, int width, int height) {
   imaging::FloatImage image(width, height, 3);
@@ -73,25 +49,20 @@ std::string description(const std::filesystem::path& file) {
 }
 
 std::string indexHtml(const std::vector<Entry>& entries, const GalleryOptions& o) {
-  std::ostringstream h;
-  h << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
-       "<title>Prism gallery</title>\n<style>body{font-family:sans-serif;background:#222;"
-       "color:#ddd;margin:2em}figure{display:inline-block;margin:0 1em 0 0}img{max-width:100%}"
-       "figcaption{text-align:center}section{margin-bottom:2.5em}td,th{padding:0 1em;"
-       "text-align:right}</style></head><body>\n<h1>Prism gallery</h1>\n";
-  h << fmt::format("<p>Each scene rendered by <code>prism demo</code> at {}×{} in RGB mode (three "
-                   "channels, the common practice) and in spectral mode (Jakob–Hanika upsampling, "
-                   "{} wavelengths per frame on a uniform grid rotated each frame (golden-ratio offsets), {} frames "
-                   "accumulated, CIE 1931). ΔE00 is CIEDE2000 between the two, in XYZ before the display "
-                   "transform, relative to the exposure's white (1.2·2^EV100 cd/m²).</p>\n",
-                   o.width, o.height, o.wavelengths, o.frames);
-  h << "<p>Scenes under the spectral sky are rendered three ways instead: RGB-3 (680, 550, 440 nm as R, G, "
-       "B), the four optimised wavelengths (optimised4) and the reference (472 wavelengths), one frame each "
-       "(all deterministic), with ΔE00 of the first two against the reference.</p>\n";
-  h << "<table><tr><th>scene</th><th>mean ΔE00</th><th>p95</th><th>max</th></tr>\n";
+  HtmlPage page("Prism gallery");
+  page.paragraph(fmt::format(
+      "Each scene rendered by <code>prism demo</code> at {}×{} in RGB mode (three channels, the common "
+      "practice) and in spectral mode (Jakob–Hanika upsampling, {} wavelengths per frame on a uniform grid "
+      "rotated each frame (golden-ratio offsets), {} frames accumulated, CIE 1931). ΔE00 is CIEDE2000 between "
+      "the two, in XYZ before the display transform, relative to the exposure's white (1.2·2^EV100 cd/m²).",
+      o.width, o.height, o.wavelengths, o.frames));
+  page.paragraph("Scenes under the spectral sky are rendered three ways instead: RGB-3 (680, 550, 440 nm as R, G, "
+                 "B), the four optimised wavelengths (optimised4) and the reference (472 wavelengths), one frame each "
+                 "(all deterministic), with ΔE00 of the first two against the reference.");
+  std::vector<std::vector<std::string>> rows;
   auto row = [&](const std::string& name, const std::string& label, const imaging::DifferenceStats& d) {
-    h << fmt::format("<tr><td><a href=\"#{0}\">{1}</a></td><td>{2:.2f}</td><td>{3:.2f}</td>"
-                     "<td>{4:.2f}</td></tr>\n", name, label, d.meanDeltaE, d.p95DeltaE, d.maxDeltaE);
+    rows.push_back({htmlLink("#" + name, label), fmt::format("{:.2f}", d.meanDeltaE), fmt::format("{:.2f}", d.p95DeltaE),
+                    fmt::format("{:.2f}", d.maxDeltaE)});
   };
   for (const Entry& e : entries) {
     if (e.sky) {
@@ -101,29 +72,25 @@ std::string indexHtml(const std::vector<Entry>& entries, const GalleryOptions& o
       row(e.name, e.name, e.difference);
     }
   }
-  h << "</table>\n";
+  page.table({"scene", "mean ΔE00", "p95", "max"}, rows);
   for (const Entry& e : entries) {
+    page.beginSection(e.name, e.name);
+    page.paragraph(htmlEscape(e.description));
     if (e.sky) {
-      h << fmt::format("<section id=\"{0}\"><h2>{0}</h2><p>{1}</p>\n"
-                       "<figure><img src=\"{0}_rgb.png\" alt=\"{0}, RGB-3\"><figcaption>RGB-3</figcaption></figure>\n"
-                       "<figure><img src=\"{0}_optimised4.png\" alt=\"{0}, optimised4\"><figcaption>optimised4"
-                       "</figcaption></figure>\n"
-                       "<figure><img src=\"{0}_reference.png\" alt=\"{0}, reference\"><figcaption>reference"
-                       "</figcaption></figure></section>\n",
-                       e.name, htmlEscape(e.description));
-      continue;
+      page.figure({{e.name + "_rgb.png", e.name + ", RGB-3"}}, "RGB-3");
+      page.figure({{e.name + "_optimised4.png", e.name + ", optimised4"}}, "optimised4");
+      page.figure({{e.name + "_reference.png", e.name + ", reference"}}, "reference");
+    } else {
+      page.figure({{e.name + "_rgb.png", e.name + " in RGB mode"}}, "RGB");
+      page.figure({{e.name + "_spectral.png", e.name + " in spectral mode"}}, "spectral");
     }
-    h << fmt::format("<section id=\"{0}\"><h2>{0}</h2><p>{1}</p>\n"
-                     "<figure><img src=\"{0}_rgb.png\" alt=\"{0} in RGB mode\"><figcaption>RGB"
-                     "</figcaption></figure>\n"
-                     "<figure><img src=\"{0}_spectral.png\" alt=\"{0} in spectral mode\">"
-                     "<figcaption>spectral</figcaption></figure></section>\n",
-                     e.name, htmlEscape(e.description));
+    page.endSection();
   }
-  h << "<section><h2>ColorChecker</h2><p>The 24 patches lit spectrally by D65, A, F2 and F11, "
-       "white-balanced to D65.</p><img src=\"colorchecker.png\" alt=\"ColorChecker chart\">"
-       "</section>\n</body></html>\n";
-  return h.str();
+  page.beginSection("", "ColorChecker");
+  page.paragraph("The 24 patches lit spectrally by D65, A, F2 and F11, white-balanced to D65.");
+  page.image({"colorchecker.png", "ColorChecker chart"});
+  page.endSection();
+  return page.html();
 }
 
 }  // namespace
@@ -161,7 +128,7 @@ void runGallery(const GalleryOptions& o) {
     settings.sampling.count = o.wavelengths;
     render::Renderer renderer(scene, tables.at(scene.colourSpace), settings);
     renderer.renderFrame();
-    imaging::PngImage rgb = display(renderer, o.width, o.height);
+    imaging::PngImage rgb = displayPng(renderer);
     imaging::FloatImage rgbXyz = tristimulus(renderer, o.width, o.height);
     Entry e;
     e.name = files[i].stem().string();
@@ -179,12 +146,12 @@ void runGallery(const GalleryOptions& o) {
       settings.mode = render::RenderMode::Optimised4;
       renderer.setSettings(settings);
       renderer.renderFrame();
-      imaging::PngImage optimised = display(renderer, o.width, o.height);
+      imaging::PngImage optimised = displayPng(renderer);
       imaging::FloatImage optimisedXyz = tristimulus(renderer, o.width, o.height);
       settings.mode = render::RenderMode::Reference;
       renderer.setSettings(settings);
       renderer.renderFrame();
-      imaging::PngImage reference = display(renderer, o.width, o.height);
+      imaging::PngImage reference = displayPng(renderer);
       imaging::FloatImage referenceXyz = tristimulus(renderer, o.width, o.height);
       e.difference = difference(rgbXyz, referenceXyz);
       e.optimisedDifference = difference(optimisedXyz, referenceXyz);
@@ -199,7 +166,7 @@ void runGallery(const GalleryOptions& o) {
     settings.sampling.strategy = SamplingStrategy::Rotated;
     renderer.setSettings(settings);
     for (int f = 0; f < o.frames; ++f) renderer.renderFrame();
-    imaging::PngImage spectral = display(renderer, o.width, o.height);
+    imaging::PngImage spectral = displayPng(renderer);
     imaging::FloatImage spectralXyz = tristimulus(renderer, o.width, o.height);
     e.difference = difference(spectralXyz, rgbXyz);
     rgb.write(o.output / (e.name + "_rgb.png"));
@@ -223,4 +190,4 @@ void runGallery(const GalleryOptions& o) {
   fmt::print("wrote {}\n", (o.output / "index.html").string());
 }
 
-}  // namespace prism::app
+}  // namespace prism::harness

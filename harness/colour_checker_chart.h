@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-namespace prism::app {
+namespace prism::harness {
 
 struct ChartPatch {
   std::string name;
@@ -32,4 +32,4 @@ std::vector<std::vector<ChartPatch>> writeColourCheckerChart(const DemoOptions& 
 // Writes the chart and prints the patches (text or JSON).
 void runDemo(const DemoOptions& options);
 
-}  // namespace prism::app
+}  // namespace prism::harness

@@ -6,8 +6,8 @@
 
 #include "spectral/rgb_to_spectrum_table.h"
 
-namespace prism::app {
+namespace prism::harness {
 
 RgbToSpectrumTable upsamplingTable(const std::string& colourSpace);
 
-}  // namespace prism::app
+}  // namespace prism::harness

@@ -1,4 +1,4 @@
-#include "app/compare_commands.h"
+#include "harness/compare_report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include "imaging/png_file.h"
 #include "core/error.h"
 
-namespace prism::app {
+namespace prism::harness {
 namespace {
 
 // One side of the comparison, kept alive while the input views it.
@@ -100,4 +100,4 @@ void runCompare(const CompareOptions& o) {
   fmt::print("MAE (8-bit sRGB) {:.4f}   relative error (linear) {:.4f}\n", s.mae8, s.relativeError);
 }
 
-}  // namespace prism::app
+}  // namespace prism::harness

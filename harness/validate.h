@@ -13,7 +13,7 @@
 
 #include <filesystem>
 
-namespace prism::app {
+namespace prism::harness {
 
 struct ValidateOptions {
   std::filesystem::path output = "out/validate";
@@ -24,4 +24,4 @@ struct ValidateOptions {
 // 0 when every bound holds, 1 otherwise (the report is written either way).
 int runValidate(const ValidateOptions& options);
 
-}  // namespace prism::app
+}  // namespace prism::harness

@@ -1,4 +1,4 @@
-#include "app/colour_checker_demo.h"
+#include "harness/colour_checker_chart.h"
 
 #include <fmt/core.h>
 
@@ -12,7 +12,7 @@
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 
-namespace prism::app {
+namespace prism::harness {
 namespace {
 
 const char* const kIlluminants[] = {"D65", "A", "F2", "F11"};
@@ -106,4 +106,4 @@ void runDemo(const DemoOptions& options) {
   fmt::print("chart: {}\n", options.output.string());
 }
 
-}  // namespace prism::app
+}  // namespace prism::harness

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <string>
 
-namespace prism::app {
+namespace prism::harness {
 
 struct GalleryOptions {
   std::filesystem::path output = "out/gallery";
@@ -21,4 +21,4 @@ struct GalleryOptions {
 };
 void runGallery(const GalleryOptions& options);
 
-}  // namespace prism::app
+}  // namespace prism::harness

@@ -1,4 +1,4 @@
-#include "app/validate.h"
+#include "harness/validate.h"
 
 #include <cmath>
 #include <limits>
@@ -7,10 +7,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "app/progress_bar.h"
-#include "app/reference_commands.h"
-#include "app/upsampling_table.h"
 #include "gpu/headless_context.h"
+#include "harness/display_png.h"
+#include "harness/html_report.h"
+#include "harness/progress_bar.h"
+#include "harness/upsampling_table.h"
 #include "imaging/exr_file.h"
 #include "imaging/heatmap.h"
 #include "imaging/image_difference.h"
@@ -22,7 +23,7 @@
 #include "core/data_files.h"
 #include "core/error.h"
 
-namespace prism::app {
+namespace prism::harness {
 namespace {
 
 // The thesis's sphere scenes (exposure: each scene camera's).
@@ -181,54 +182,46 @@ std::string resultTable(const std::vector<Result>& results) {
 
 std::string indexHtml(const std::vector<Result>& results, const std::vector<std::string>& failures,
                       const Sizes& sizes) {
-  std::ostringstream h;
-  h << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>Prism validation"
-       "</title>\n<style>body{font-family:sans-serif;background:#222;color:#ddd;margin:2em}figure{"
-       "display:inline-block;margin:0 1em 1em 0;vertical-align:top}figcaption{text-align:center}"
-       "td,th{padding:0 1em;text-align:right}.fail{color:#f66}</style></head><body>\n"
-       "<h1>Prism validation</h1>\n";
-  h << fmt::format("<p>The rasteriser against the reference path tracer at the pixel centres, 4 hero "
-                   "wavelengths a path, {}×{}: direct lighting (single scattering under water; {} paths "
-                   "per pixel for the spheres, {} for the reef) and, for the reef, multiple scattering "
-                   "({} paths; the last column). ΔE00 is CIEDE2000 in XYZ before the display transform "
-                   "relative to the exposure's white (the scene camera's for the spheres; for the reef, "
-                   "the one that makes the reference's mean luminance middle grey); MAE is on 8-bit sRGB "
-                   "after it. Heat maps and histograms span ΔE00 0–{}.</p>\n",
-                   sizes.width, sizes.height, sizes.spheresSpp, sizes.reefSpp, sizes.reefGlobalSpp, kHeatScale);
-  h << (failures.empty() ? "<p>Every bound holds.</p>\n" : "<p class=\"fail\">Broken bounds:</p><ul>\n");
-  for (const std::string& f : failures) h << "<li class=\"fail\">" << f << "</li>\n";
-  if (!failures.empty()) h << "</ul>\n";
-  h << "<table><tr><th>scene</th><th>mode</th><th>mean ΔE00</th><th>median</th><th>p95</th>"
-       "<th>max</th><th>MAE</th><th>mean ΔE00 vs multiple scattering</th></tr>\n";
-  for (const Result& r : results) {
-    h << fmt::format("<tr><td>{}</td><td>{}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td>"
-                     "<td>{:.2f}</td><td>{:.3f}</td><td>{}</td></tr>\n", r.scene, r.mode, r.stats.meanDeltaE,
-                     r.stats.medianDeltaE, r.stats.p95DeltaE, r.stats.maxDeltaE, r.stats.mae8,
-                     std::isnan(r.meanVsGlobal) ? "" : fmt::format("{:.3f}", r.meanVsGlobal));
+  HtmlPage page("Prism validation");
+  page.paragraph(fmt::format(
+      "The rasteriser against the reference path tracer at the pixel centres, 4 hero wavelengths a path, "
+      "{}×{}: direct lighting (single scattering under water; {} paths per pixel for the spheres, {} for the "
+      "reef) and, for the reef, multiple scattering ({} paths; the last column). ΔE00 is CIEDE2000 in XYZ "
+      "before the display transform relative to the exposure's white (the scene camera's for the spheres; "
+      "for the reef, the one that makes the reference's mean luminance middle grey); MAE is on 8-bit sRGB "
+      "after it. Heat maps and histograms span ΔE00 0–{}.",
+      sizes.width, sizes.height, sizes.spheresSpp, sizes.reefSpp, sizes.reefGlobalSpp, kHeatScale));
+  if (failures.empty()) {
+    page.paragraph("Every bound holds.");
+  } else {
+    page.paragraph("Broken bounds:", "fail");
+    page.list(failures, "fail");
   }
-  h << "</table>\n";
+  std::vector<std::vector<std::string>> rows;
+  for (const Result& r : results) {
+    rows.push_back({htmlEscape(r.scene), htmlEscape(r.mode), fmt::format("{:.3f}", r.stats.meanDeltaE),
+                    fmt::format("{:.3f}", r.stats.medianDeltaE), fmt::format("{:.3f}", r.stats.p95DeltaE),
+                    fmt::format("{:.2f}", r.stats.maxDeltaE), fmt::format("{:.3f}", r.stats.mae8),
+                    std::isnan(r.meanVsGlobal) ? "" : fmt::format("{:.3f}", r.meanVsGlobal)});
+  }
+  page.table({"scene", "mode", "mean ΔE00", "median", "p95", "max", "MAE", "mean ΔE00 vs multiple scattering"}, rows);
   auto section = [&](const std::string& name, const std::string& title, bool global) {
-    h << fmt::format("<section><h2>{}</h2>\n<figure><img src=\"{}_reference.png\" alt=\"reference\">"
-                     "<figcaption>reference{}</figcaption></figure>\n", title, name,
-                     global ? " (single scattering)" : "");
-    if (global) {
-      h << fmt::format("<figure><img src=\"{}_reference_global.png\" alt=\"multiple scattering\">"
-                       "<figcaption>reference (multiple scattering)</figcaption></figure>\n", name);
-    }
-    h << "<br>\n";
+    page.beginSection("", title);
+    page.figure({{name + "_reference.png", "reference"}}, global ? "reference (single scattering)" : "reference");
+    if (global) page.figure({{name + "_reference_global.png", "multiple scattering"}}, "reference (multiple scattering)");
+    page.lineBreak();
     for (const Mode& m : kModes) {
-      h << fmt::format("<figure><img src=\"{0}_{1}.png\" alt=\"{1}\"><br><img src=\"{0}_{1}_heatmap.png\" "
-                       "alt=\"ΔE00 heat map\"><br><img src=\"{0}_{1}_histogram.png\" width=\"320\" "
-                       "alt=\"ΔE00 histogram\"><figcaption>{1}</figcaption></figure>\n", name, m.name);
+      const std::string stem = fmt::format("{}_{}", name, m.name);
+      page.figure({{stem + ".png", m.name}, {stem + "_heatmap.png", "ΔE00 heat map"},
+                   {stem + "_histogram.png", "ΔE00 histogram", 320}}, m.name);
     }
-    h << "</section>\n";
+    page.endSection();
   };
   for (const SphereScene& e : kSphereScenes) section(e.scene, fmt::format("{} — under {}", e.scene, e.light), false);
   for (float depth : kReefDepthsM) {
     section(reefName(depth), fmt::format("the reef, Jerlov I, camera {:g} m deep", depth), true);
   }
-  h << "</body></html>\n";
-  return h.str();
+  return page.html();
 }
 
 nlohmann::json toJson(const std::vector<Result>& results, const std::vector<std::string>& failures,
@@ -297,4 +290,4 @@ int runValidate(const ValidateOptions& o) {
   return failures.empty() ? 0 : 1;
 }
 
-}  // namespace prism::app
+}  // namespace prism::harness

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <string>
 
-namespace prism::app {
+namespace prism::harness {
 
 class ProgressBar {
  public:
@@ -19,4 +19,4 @@ class ProgressBar {
   std::chrono::steady_clock::time_point mStart;
 };
 
-}  // namespace prism::app
+}  // namespace prism::harness

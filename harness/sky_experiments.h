@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace prism::app {
+namespace prism::harness {
 
 struct AtmosphereCommandOptions {
   double referenceStepNm = 1.0;
@@ -24,4 +24,4 @@ struct AtmosphereCommandOptions {
 int runAtmosphereEvaluate(const AtmosphereCommandOptions& options);
 void runAtmosphereOptimise(const AtmosphereCommandOptions& options);
 
-}  // namespace prism::app
+}  // namespace prism::harness

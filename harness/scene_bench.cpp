@@ -1,0 +1,314 @@
+#include "harness/scene_bench.h"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "gpu/headless_context.h"
+#include "gpu/timer_query.h"
+#include "harness/bench_plot.h"
+#include "harness/bench_statistics.h"
+#include "harness/progress_bar.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "spectral/rgb_to_spectrum_cache.h"
+
+namespace prism::harness {
+namespace {
+
+constexpr int kFramesInFlight = 3;  // the timer's ring
+
+using PassTimes = std::map<std::string, double>;  // ms per pass and for the whole "frame"
+
+// One configuration of the run: what renders it, with which settings, and what each round gave.
+struct Config {
+  std::string label;  // "rgb" or the wavelength count, …
+  render::Renderer* renderer = nullptr;
+  render::FrameSettings settings;
+  int warmup = 0, frames = 0;  // per round
+  int wavelengths = 0;         // spectral configurations of the fit; 0 otherwise
+  std::vector<PassTimes> rounds;  // per round, the median of its frames
+  std::size_t gpuMemoryBytes = 0;  // held by the renderer after the first round
+
+  std::vector<double> frameMsPerRound() const {
+    std::vector<double> ms;
+    for (const PassTimes& r : rounds) ms.push_back(r.at("frame"));
+    return ms;
+  }
+  // Per pass, the median over the rounds.
+  PassTimes medianMs() const {
+    std::map<std::string, std::vector<double>> perPass;
+    for (const PassTimes& r : rounds)
+      for (const auto& [pass, ms] : r) perPass[pass].push_back(ms);
+    PassTimes out;
+    for (auto& [pass, values] : perPass) out[pass] = median(values);
+    return out;
+  }
+  double frameMs() const { return median(frameMsPerRound()); }
+  double passMs(const char* pass) const {
+    PassTimes m = medianMs();
+    auto it = m.find(pass);
+    return it == m.end() ? 0.0 : it->second;
+  }
+};
+
+RatioSpread ratio(const Config& test, const Config& baseline) {
+  return perRoundRatios(test.frameMsPerRound(), baseline.frameMsPerRound());
+}
+
+// `key`: the median of the per-round ratios; `key`_min and _max: the extreme rounds.
+void putRatio(nlohmann::json& j, const std::string& key, const RatioSpread& s) {
+  j[key] = s.median;
+  j[key + "_min"] = s.min;
+  j[key + "_max"] = s.max;
+}
+
+double megabytes(std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
+
+PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, int frames,
+                  ProgressBar& bar, std::size_t& done, std::size_t total) {
+  std::map<std::string, std::vector<double>> samples;
+  auto collect = [&](const gpu::GpuTimings& timings) {
+    for (const auto& [name, ms] : timings) samples[name].push_back(ms);
+  };
+  bool open = false;
+  renderer.setPassHook([&](std::string_view pass) {
+    if (open) timer.endScope();
+    open = !pass.empty();
+    if (open) timer.beginScope(pass);
+  });
+  // A frame's times arrive kFramesInFlight frames later: render that many more frames than are
+  // timed, so that exactly `frames` frames after the warm-up are collected, none waited for.
+  for (int f = 0; f < warmup + frames + kFramesInFlight; ++f) {
+    timer.beginFrame();
+    if (f >= warmup + kFramesInFlight) collect(timer.latest());
+    renderer.renderFrame();
+    timer.endFrame();
+    if (f < warmup + frames) bar.update(++done, total);
+  }
+  renderer.setPassHook({});
+  PassTimes result;
+  for (auto& [name, values] : samples) result[name] = median(values);
+  return result;
+}
+
+}  // namespace
+
+void runSceneBench(const SceneBenchOptions& options) {
+  if (options.wavelengths.empty()) throw Error("--wavelengths: give at least one count");
+  if (options.frames < 1 || options.warmup < 0 || options.rounds < 1)
+    throw Error("--frames and --rounds must be ≥ 1, --warmup ≥ 0");
+  const render::FrameSettings& settings = options.settings;
+  for (int n : options.wavelengths) {
+    render::FrameSettings check = settings;
+    check.sampling.count = n;
+    render::validate(check);
+  }
+  const int rounds = std::min(options.rounds, options.frames);
+  const int frames = (options.frames + rounds - 1) / rounds;  // per round
+  Scene scene = loadScene(options.scene);
+  RgbToSpectrumTable table = cachedRgbToSpectrumTable(scene.colourSpace, 64);
+  gpu::HeadlessContext context;
+  std::string device = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  render::Renderer renderer(scene, table, settings);
+  gpu::GpuTimer timer({kFramesInFlight});
+
+  std::vector<Config> configs;
+  auto add = [&](std::string label, render::Renderer& r, const render::FrameSettings& s) -> std::size_t {
+    Config& c = configs.emplace_back();
+    c.label = std::move(label);
+    c.renderer = &r;
+    c.settings = s;
+    c.warmup = options.warmup;
+    c.frames = frames;
+    return configs.size() - 1;
+  };
+  auto spectralSettings = [&](int n) {
+    render::FrameSettings s = settings;
+    s.mode = render::RenderMode::JakobHanika;
+    s.sampling.count = n;
+    return s;
+  };
+  const std::size_t rgb = add("rgb", renderer, settings);
+  std::vector<std::size_t> spectral;
+  for (int n : options.wavelengths) {
+    spectral.push_back(add(std::to_string(n), renderer, spectralSettings(n)));
+    configs.back().wavelengths = n;
+  }
+
+  // What the G-buffer keeps of a base colour (issue #4: which is faster?): RGB albedo, upsampled
+  // once per pixel in the lighting pass, against Jakob–Hanika coefficients looked up per G-buffer
+  // fragment into one more RGBA32F target; 16 wavelengths.
+  render::FrameSettings rgbAlbedo = spectralSettings(16);
+  rgbAlbedo.gbufferAlbedo = render::GBufferAlbedo::Rgb;
+  render::FrameSettings coefficientAlbedo = rgbAlbedo;
+  coefficientAlbedo.gbufferAlbedo = render::GBufferAlbedo::Coefficients;
+  const std::size_t coefficients16 = add("16 coefficients", renderer, coefficientAlbedo);
+  const std::size_t rgbAlbedo16 = add("16 rgb albedo", renderer, rgbAlbedo);
+
+  // Under water: the water term's cost, the same frames with the scene's water taken out (RGB and
+  // 16 wavelengths).
+  Scene dryScene = scene;
+  dryScene.water.reset();
+  std::optional<render::Renderer> dryRenderer;
+  std::size_t dryRgb = 0, dry16 = 0, wet16 = 0;
+  if (scene.water) {
+    dryRenderer.emplace(dryScene, table, settings);
+    dryRgb = add("rgb dry", *dryRenderer, settings);
+    dry16 = add("16 dry", *dryRenderer, spectralSettings(16));
+    wet16 = add("16 wet", renderer, spectralSettings(16));
+  }
+
+  // Under the sky (issue #8): García Liñán's four optimised wavelengths against RGB-3 (the rgb
+  // configuration) and against the reference, every table recomputed every frame; the reference
+  // (118 batches of tables per frame) is timed over one frame a round.
+  std::size_t optimised4 = 0, reference = 0;
+  if (scene.atmosphere) {
+    render::FrameSettings s = settings;
+    s.mode = render::RenderMode::Optimised4;
+    optimised4 = add("optimised4", renderer, s);
+    s.mode = render::RenderMode::Reference;
+    reference = add("reference", renderer, s);
+    configs[reference].warmup = std::min(options.warmup, 1);
+    configs[reference].frames = 1;
+  }
+
+  std::size_t done = 0, total = 0;
+  for (const Config& c : configs) total += static_cast<std::size_t>(rounds * (c.warmup + c.frames));
+  ProgressBar bar("benchmark " + options.scene.filename().string());
+  for (int r = 0; r < rounds; ++r) {
+    for (Config& c : configs) {
+      c.renderer->setSettings(c.settings);
+      c.rounds.push_back(measure(*c.renderer, timer, c.warmup, c.frames, bar, done, total));
+      if (r == 0) c.gpuMemoryBytes = c.renderer->gpuMemoryBytes();
+    }
+  }
+
+  std::vector<double> ns, ts;
+  std::vector<BenchPoint> points;
+  const Config* largest = &configs[spectral.front()];
+  for (std::size_t i : spectral) {
+    const Config& c = configs[i];
+    std::vector<double> perRound = c.frameMsPerRound();
+    ns.push_back(c.wavelengths);
+    ts.push_back(c.frameMs());
+    points.push_back({c.wavelengths, c.frameMs(), *std::min_element(perRound.begin(), perRound.end()),
+                      *std::max_element(perRound.begin(), perRound.end())});
+    if (c.wavelengths > largest->wavelengths) largest = &c;
+  }
+  const LinearFit fit = linearFit(ns, ts);
+  const double rgbFrame = configs[rgb].frameMs();
+
+  if (!options.plot.empty()) {
+    writeFileAtomically(options.plot,
+                        benchPlotSvg(points, rgbFrame, fit,
+                                     fmt::format("{} at {}x{} on {}", options.scene.filename().string(),
+                                                 settings.width, settings.height, device)));
+  }
+  if (options.json) {
+    nlohmann::json j;
+    j["scene"] = options.scene.string();
+    j["device"] = device;
+    j["width"] = settings.width;
+    j["height"] = settings.height;
+    j["frames"] = rounds * frames;
+    j["rounds"] = rounds;
+    j["frames_per_round"] = frames;
+    j["rgb"] = configs[rgb].medianMs();
+    for (std::size_t i : spectral) {
+      const Config& c = configs[i];
+      nlohmann::json e;
+      e["wavelengths"] = c.wavelengths;
+      e["median_ms"] = c.medianMs();
+      putRatio(e, "ratio_to_rgb", ratio(c, configs[rgb]));
+      e["gpu_memory_mb"] = megabytes(c.gpuMemoryBytes);
+      j["spectral"].push_back(e);
+    }
+    j["fit"] = {{"slope_ms_per_wavelength", fit.slope}, {"intercept_ms", fit.intercept},
+                {"slope_fraction_of_rgb_frame", fit.slope / rgbFrame}};
+    j["gpu_memory_mb"] = {{"rgb", megabytes(configs[rgb].gpuMemoryBytes)},
+                          {"largest_wavelength_count", largest->wavelengths},
+                          {"spectral_largest", megabytes(largest->gpuMemoryBytes)},
+                          {"coefficients_16", megabytes(configs[coefficients16].gpuMemoryBytes)}};
+    nlohmann::json& g = j["gbuffer_albedo_16"];
+    g = {{"rgb_frame_ms", configs[rgbAlbedo16].frameMs()},
+         {"coefficients_frame_ms", configs[coefficients16].frameMs()},
+         {"rgb_median_ms", configs[rgbAlbedo16].medianMs()},
+         {"coefficients_median_ms", configs[coefficients16].medianMs()}};
+    putRatio(g, "ratio_coefficients_to_rgb", ratio(configs[coefficients16], configs[rgbAlbedo16]));
+    if (scene.water) {
+      nlohmann::json& w = j["water"];
+      w = {{"dry_rgb_frame_ms", configs[dryRgb].frameMs()},
+           {"dry_spectral16_frame_ms", configs[dry16].frameMs()},
+           {"wet_spectral16_frame_ms", configs[wet16].frameMs()}};
+      putRatio(w, "rgb_ratio_wet_to_dry", ratio(configs[rgb], configs[dryRgb]));
+      putRatio(w, "spectral16_ratio_wet_to_dry", ratio(configs[wet16], configs[dry16]));
+    }
+    if (scene.atmosphere) {
+      nlohmann::json& s = j["sky"];
+      s = {{"optimised4_median_ms", configs[optimised4].medianMs()},
+           {"reference_median_ms", configs[reference].medianMs()},
+           {"reference_frames", rounds}};
+      putRatio(s, "ratio_optimised4_to_rgb3", ratio(configs[optimised4], configs[rgb]));
+      putRatio(s, "ratio_reference_to_optimised4", ratio(configs[reference], configs[optimised4]));
+    }
+    fmt::print("{}\n", j.dump(2));
+    return;
+  }
+  fmt::print("{} at {}x{} on {}; GPU timer queries, {} rounds of {} frames per configuration (after {} warm-up "
+             "each), the configurations interleaved; medians over the rounds, × RGB the median of the "
+             "per-round ratios [lowest, highest round]\n",
+             options.scene.string(), settings.width, settings.height, device, rounds, frames, options.warmup);
+  std::vector<std::string> passes;
+  for (const auto& [name, ms] : configs[rgb].medianMs()) {
+    if (name != "frame") passes.push_back(name);
+  }
+  std::string header = fmt::format("{:>8} {:>10}", "mode", "frame ms");
+  for (const std::string& p : passes) header += fmt::format(" {:>10}", p);
+  header += fmt::format(" {:>9} {:>15}", "× RGB", "rounds");
+  fmt::print("{}\n", header);
+  auto row = [&](const Config& c) {
+    std::string line = fmt::format("{:>8} {:>10.3f}", c.label, c.frameMs());
+    for (const std::string& p : passes) line += fmt::format(" {:>10.3f}", c.passMs(p.c_str()));
+    RatioSpread s = ratio(c, configs[rgb]);
+    line += fmt::format(" {:>9.3f} {:>15}", s.median, fmt::format("[{:.3f}, {:.3f}]", s.min, s.max));
+    fmt::print("{}\n", line);
+  };
+  row(configs[rgb]);
+  for (std::size_t i : spectral) row(configs[i]);
+  fmt::print("fit: t(n) = {:.4f} ms·n + {:.3f} ms; slope = {:.2f} % of the RGB frame per wavelength\n",
+             fit.slope, fit.intercept, 100.0 * fit.slope / rgbFrame);
+  fmt::print("GPU memory held by the renderer: RGB {:.2f} MB, n = {} {:.2f} MB (+{:.3f} MB)\n",
+             megabytes(configs[rgb].gpuMemoryBytes), largest->wavelengths, megabytes(largest->gpuMemoryBytes),
+             megabytes(largest->gpuMemoryBytes) - megabytes(configs[rgb].gpuMemoryBytes));
+  auto spread = [](const RatioSpread& s) { return fmt::format("{:.3f}× [{:.3f}, {:.3f}]", s.median, s.min, s.max); };
+  const Config& coefficients = configs[coefficients16];
+  const Config& rgbAlbedoConfig = configs[rgbAlbedo16];
+  fmt::print("G-buffer at 16 wavelengths, coefficients / RGB albedo: frame {:.3f} / {:.3f} ms = {} "
+             "(G-buffer {:.3f} / {:.3f} ms, lighting {:.3f} / {:.3f} ms)\n",
+             coefficients.frameMs(), rgbAlbedoConfig.frameMs(), spread(ratio(coefficients, rgbAlbedoConfig)),
+             coefficients.passMs("gbuffer"), rgbAlbedoConfig.passMs("gbuffer"), coefficients.passMs("lighting"),
+             rgbAlbedoConfig.passMs("lighting"));
+  if (scene.water) {
+    fmt::print("water on / off: RGB {:.3f} / {:.3f} ms = {}; 16 wavelengths {:.3f} / {:.3f} ms = {}\n", rgbFrame,
+               configs[dryRgb].frameMs(), spread(ratio(configs[rgb], configs[dryRgb])), configs[wet16].frameMs(),
+               configs[dry16].frameMs(), spread(ratio(configs[wet16], configs[dry16])));
+  }
+  if (scene.atmosphere) {
+    const Config& o4 = configs[optimised4];
+    const Config& ref = configs[reference];
+    fmt::print("sky: optimised4 / RGB-3 frame {:.3f} / {:.3f} ms = {} (sky tables {:.3f} / {:.3f} ms); "
+               "reference (472 wavelengths, {} frames) {:.3f} ms = {} optimised4 (sky tables {:.3f} ms)\n",
+               o4.frameMs(), rgbFrame, spread(ratio(o4, configs[rgb])), o4.passMs("atmosphere"),
+               configs[rgb].passMs("atmosphere"), rounds, ref.frameMs(), spread(ratio(ref, o4)),
+               ref.passMs("atmosphere"));
+  }
+}
+
+}  // namespace prism::harness

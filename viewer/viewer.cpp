@@ -40,6 +40,7 @@
 #include "spectral/observer.h"
 #include "techniques/underwater/jerlov_water.h"
 #include "viewer/camera_controller.h"
+#include "viewer/compositor.h"
 #include "viewer/viewer_settings.h"
 
 namespace prism::viewer {
@@ -120,6 +121,26 @@ void setLightSpectrum(Light& light, const Spectrum& spd, const std::string& labe
 
 void setLightSpd(Light& light, const std::string& label) { setLightSpectrum(light, illuminant(label), label); }
 
+// Dear ImGui over the window, from construction to destruction.
+class ImGuiSession {
+ public:
+  explicit ImGuiSession(gpu::WindowContext& window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini written beside the user's files
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window.window(), true);
+    ImGui_ImplOpenGL3_Init("#version 450");
+  }
+  ~ImGuiSession() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  ImGuiSession(const ImGuiSession&) = delete;
+  ImGuiSession& operator=(const ImGuiSession&) = delete;
+};
+
 class Viewer {
  public:
   Viewer(gpu::WindowContext& window, Scene& scene, const RgbToSpectrumTable& table,
@@ -141,21 +162,6 @@ class Viewer {
     };
     fill(mScreenshotPath, "prism_screenshot.png");
     fill(mSettingsPath, "prism_view_settings.json");
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini written beside the user's files
-    ImGui::StyleColorsDark();
-    ImGui_ImplGlfw_InitForOpenGL(window.window(), true);
-    ImGui_ImplOpenGL3_Init("#version 450");
-  }
-
-  ~Viewer() {
-    mHeatTexture = gpu::Texture2D();
-    mRight.reset();
-    mLeft.reset();
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
   }
 
   Viewer(const Viewer&) = delete;
@@ -195,8 +201,10 @@ class Viewer {
     ImGui::NewFrame();
     if (size.width > 0 && size.height > 0) {  // minimised: nothing to draw into
       handleInput(std::min(seconds, 0.1f));
-      renderViews(size.width, size.height);
-      compose(size.width, size.height);
+      mRenderError = mCompositor.render(mView, {mSettingsChanged, mCameraChanged, mSceneChanged}, mCamera.camera(),
+                                        size.width, size.height);
+      mSettingsChanged = mCameraChanged = mSceneChanged = false;
+      mCompositor.compose(mView, size.width, size.height);
     }
     interface();
     ImGui::Render();
@@ -253,109 +261,6 @@ class Viewer {
     }
   }
 
-  // Changes a view's renderer has yet to take: each view keeps its own, so that one hidden or
-  // made later misses nothing.
-  struct Pending {
-    bool settings = true, camera = true, scene = true;
-  };
-
-  // Brings a renderer to the settings and window size (made on first use), and renders a frame.
-  void renderView(std::unique_ptr<render::Renderer>& renderer, Pending& pending, render::FrameSettings settings,
-                  int w, int h) {
-    settings.width = w;
-    settings.height = h;
-    if (!renderer) {
-      renderer = std::make_unique<render::Renderer>(mScene, mTable, settings);
-      pending = {false, true, false};
-    } else if (pending.settings || renderer->settings().width != w || renderer->settings().height != h) {
-      renderer->setSettings(settings);
-    }
-    pending.settings = false;
-    if (pending.camera) renderer->setCamera(mCamera.camera());
-    if (pending.scene) renderer->sceneChanged();
-    pending.camera = pending.scene = false;
-    renderer->renderFrame();
-  }
-
-  void renderViews(int w, int h) {
-    if (mSettingsChanged) mLeftPending.settings = mRightPending.settings = true;
-    if (mCameraChanged) mLeftPending.camera = mRightPending.camera = true;
-    if (mSceneChanged) mLeftPending.scene = mRightPending.scene = true;
-    mSettingsChanged = mCameraChanged = mSceneChanged = false;
-    try {
-      renderView(mLeft, mLeftPending, mView.left, w, h);
-      mRenderError.clear();
-    } catch (const std::exception& e) {
-      mRenderError = e.what();  // a bad setting or shader: keep the last good settings
-      if (mLeft) mView.left = mLeft->settings();
-    }
-    // The right view's renderer stays once made (hidden when the split is off): making one
-    // compiles every pass again, which the driver does not give back to the system at once.
-    if (mView.split) {
-      try {
-        renderView(mRight, mRightPending, mView.right, w, h);
-      } catch (const std::exception& e) {
-        mRenderError = e.what();
-        if (mRight) mView.right = mRight->settings();
-        else mView.split = false;  // it cannot be made: no split rather than a retry every frame
-      }
-    }
-    try {
-      if (mView.split && mView.heatMap && mLeft && mRight && ++mFramesSinceHeatMap >= 15) updateHeatMap();
-    } catch (const std::exception& e) {
-      mRenderError = e.what();
-      mView.heatMap = false;
-    }
-    if (!(mView.split && mView.heatMap)) mHeatTexture = gpu::Texture2D();  // its GL object goes with it
-  }
-
-  void compose(int w, int h) {
-    gpu::Framebuffer::window(w, h).bind();
-    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    if (!mLeft) return;
-    int half = mView.split && mRight ? w / 2 : w;
-    glBlitNamedFramebuffer(mLeft->displayFramebuffer().id(), 0, 0, 0, half, h, 0, 0, half, h, GL_COLOR_BUFFER_BIT,
-                           GL_NEAREST);
-    if (mView.split && mRight) {
-      glBlitNamedFramebuffer(mRight->displayFramebuffer().id(), 0, half, 0, w, h, half, 0, w, h,
-                             GL_COLOR_BUFFER_BIT, GL_NEAREST);
-      ImGui::GetBackgroundDrawList()->AddLine(ImVec2(static_cast<float>(half), 0.0f),
-                                              ImVec2(static_cast<float>(half), static_cast<float>(h)),
-                                              IM_COL32(255, 255, 255, 160), 1.0f);
-    }
-  }
-
-  void updateHeatMap() {
-    mFramesSinceHeatMap = 0;
-    const render::FrameSettings& s = mLeft->settings();
-    const render::FrameSettings& t = mRight->settings();
-    auto isCamera = [](const render::FrameSettings& f) {
-      return f.mode != render::RenderMode::Rgb && observer(f.observer).isCamera;
-    };
-    if (isCamera(s) || isCamera(t)) throw Error("the heat map compares XYZ: choose a CIE observer on both sides");
-    imaging::FloatImage a(s.width, s.height, 3), b(t.width, t.height, 3);
-    a.pixels = mLeft->readMeanTristimulus();
-    b.pixels = mRight->readMeanTristimulus();
-    auto white = [&](const render::FrameSettings& f) {
-      return render::displayWhiteLuminance(f.ev100.value_or(mCamera.camera().ev100));
-    };
-    imaging::DifferenceOptions options;
-    options.keepMap = true;
-    imaging::ImageDifference d = imaging::compareImages(imaging::linearInput(a, imaging::ColourMeaning::Xyz, white(s)),
-                                                        imaging::linearInput(b, imaging::ColourMeaning::Xyz, white(t)),
-                                                        options);
-    mHeatStats = d.stats;
-    imaging::PngImage heat = imaging::heatMap(d.deltaEMap, {.maxDeltaE = 5.0, .legend = true});
-    gpu::Texture2DDesc desc;
-    desc.width = heat.width();
-    desc.height = heat.height();
-    desc.internalFormat = GL_RGBA8;
-    desc.data = {GL_RGBA, GL_UNSIGNED_BYTE, std::as_bytes(std::span(heat.rgba()))};
-    desc.label = "viewer heat map";
-    mHeatTexture = gpu::Texture2D(desc);
-  }
-
   void writeScreenshot(const std::filesystem::path& path, int w, int h) {
     std::vector<std::uint8_t> rgba(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
@@ -375,18 +280,7 @@ class Viewer {
 
   // renderNow: take it in a frame of its own (the script); from the interface, in this frame.
   void screenshot(const std::filesystem::path& path, bool renderNow) {
-    if (path.extension() == ".exr") {
-      if (!mLeft) throw Error("nothing rendered yet");
-      const render::FrameSettings& s = mLeft->settings();
-      imaging::FloatImage image(s.width, s.height, 3);
-      image.pixels = mLeft->readMeanTristimulus();
-      bool camera = s.mode != render::RenderMode::Rgb && observer(s.observer).isCamera;
-      imaging::writeExr(path, image,
-                        {camera ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,
-                         imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour,
-                         render::displayWhiteLuminance(s.ev100.value_or(mCamera.camera().ev100))});
-      return;
-    }
+    if (path.extension() == ".exr") return mCompositor.writeLeftExr(path, mCamera.camera());
     if (path.extension() != ".png") throw Error(fmt::format("{}: a screenshot is a .png or an .exr", path.string()));
     mPendingScreenshot = path;  // written after the interface is drawn, before the swap
     if (renderNow) {
@@ -483,8 +377,9 @@ class Viewer {
       curve([&](double l) { return light.spd.at(l); }, 1.0 / std::max(light.spd.maxValue(), 1e-12),
             IM_COL32(250, 230, 120, 255));
     }
-    if (mLeft && mLeft->settings().mode != render::RenderMode::Rgb) {
-      for (const auto& batch : mLeft->frameData().batches) {
+    const render::Renderer* left = mCompositor.left();
+    if (left && left->settings().mode != render::RenderMode::Rgb) {
+      for (const auto& batch : left->frameData().batches) {
         for (int j = 0; j < 4; ++j) {
           ImVec2 x = at(batch.lambdaNm[j], 0.0);
           draw->AddLine(ImVec2(x.x, origin.y + height), ImVec2(x.x, origin.y + height - 10.0f), IM_COL32(255, 255, 255, 200));
@@ -551,12 +446,13 @@ class Viewer {
       if (mView.split) {
         mSettingsChanged |= frameSettingsControls(mView.right, "right");
         ImGui::Checkbox("CIEDE2000 heat map", &mView.heatMap);
-        if (mView.heatMap && mHeatTexture.id() != 0) {
-          ImGui::Text("dE00 mean %.2f  p95 %.2f  max %.1f", mHeatStats.meanDeltaE, mHeatStats.p95DeltaE,
-                      mHeatStats.maxDeltaE);
+        if (mView.heatMap && mCompositor.heatMap().id() != 0) {
+          ImGui::Text("dE00 mean %.2f  p95 %.2f  max %.1f", mCompositor.heatMapStats().meanDeltaE, mCompositor.heatMapStats().p95DeltaE,
+                      mCompositor.heatMapStats().maxDeltaE);
           float w = ImGui::GetContentRegionAvail().x;
-          float h = w * static_cast<float>(mHeatTexture.height()) / static_cast<float>(mHeatTexture.width());
-          ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(mHeatTexture.id())), ImVec2(w, h));
+          const gpu::Texture2D& heat = mCompositor.heatMap();
+          float h = w * static_cast<float>(heat.height()) / static_cast<float>(heat.width());
+          ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(heat.id())), ImVec2(w, h));
         }
       }
     }
@@ -786,10 +682,7 @@ class Viewer {
     mSettingsChanged = mCameraChanged = true;
   }
 
-  void reloadShaders() {
-    if (mLeft) mLeft->reloadShaders();
-    if (mRight) mRight->reloadShaders();
-  }
+  void reloadShaders() { mCompositor.reloadShaders(); }
 
   // ---- the script -----------------------------------------------------------------------------
 
@@ -829,9 +722,9 @@ class Viewer {
       loadSettings(w[1]);
     } else if (verb == "heat-map-stats") {
       need(0);
-      if (!(mView.split && mView.heatMap) || mHeatTexture.id() == 0) throw Error("no heat map yet (set split on, heat-map on, frames N)");
-      fmt::print("heat map: mean {:.3f} p95 {:.3f} max {:.3f}\n", mHeatStats.meanDeltaE, mHeatStats.p95DeltaE,
-                 mHeatStats.maxDeltaE);
+      if (!(mView.split && mView.heatMap) || mCompositor.heatMap().id() == 0) throw Error("no heat map yet (set split on, heat-map on, frames N)");
+      fmt::print("heat map: mean {:.3f} p95 {:.3f} max {:.3f}\n", mCompositor.heatMapStats().meanDeltaE, mCompositor.heatMapStats().p95DeltaE,
+                 mCompositor.heatMapStats().maxDeltaE);
       std::fflush(stdout);
     } else if (verb == "reload-shaders") {
       need(0);
@@ -1017,20 +910,17 @@ class Viewer {
   const RgbToSpectrumTable& mTable;
   CameraController mCamera;
   ViewSettings mView;
-  std::unique_ptr<render::Renderer> mLeft, mRight;
+  ImGuiSession mImGui{mWindow};
+  Compositor mCompositor{mScene, mTable};  // goes before ImGui, as the window's GL objects did
   bool mSettingsChanged = false, mCameraChanged = false, mSceneChanged = false;
   std::string mRenderError;  // from the last frame's rendering, shown in red
   std::string mActionError;  // from the last action in the interface, shown until dismissed
-  Pending mLeftPending, mRightPending;
   std::vector<std::string> mIlluminants, mObservers;
   float mFlySpeed = 1.0f;
   double mCursorX = 0.0, mCursorY = 0.0;
   std::chrono::steady_clock::time_point mLastFrame = std::chrono::steady_clock::now();
   std::array<float, 120> mFrameMs{};
   std::size_t mFrameCursor = 0;
-  gpu::Texture2D mHeatTexture;
-  imaging::DifferenceStats mHeatStats;
-  int mFramesSinceHeatMap = 1000;
   std::filesystem::path mPendingScreenshot;
   float mBlackbodyK = 3000.0f, mLedPeakNm = 450.0f, mLedWidthNm = 20.0f;
   std::size_t mMaterial = 0;

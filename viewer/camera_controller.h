@@ -10,6 +10,9 @@
 
 namespace prism::viewer {
 
+// Radians per degree: the viewer's controls and script take angles in degrees.
+constexpr float kDegrees = 3.14159265358979f / 180.0f;
+
 class CameraController {
  public:
   explicit CameraController(const Camera& initial) : mInitial(initial), mCamera(initial) {}

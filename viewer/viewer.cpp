@@ -41,12 +41,11 @@
 #include "techniques/underwater/jerlov_water.h"
 #include "viewer/camera_controller.h"
 #include "viewer/compositor.h"
+#include "viewer/light_spectrum.h"
 #include "viewer/viewer_settings.h"
 
 namespace prism::viewer {
 namespace {
-
-constexpr float kDegrees = 3.14159265358979f / 180.0f;
 
 struct ScriptLine {
   int line = 0;
@@ -94,10 +93,6 @@ MemoryUse memoryUse() {
   return m;
 }
 
-float parseFloat(const std::string& what, const std::string& text) {
-  return static_cast<float>(parseNumber(what, text));
-}
-
 glm::vec3 parseVec3(const std::string& what, const std::string& text) {
   glm::vec3 v;
   std::stringstream in(text);
@@ -108,18 +103,6 @@ glm::vec3 parseVec3(const std::string& what, const std::string& text) {
   }
   return v;
 }
-
-// A light's SPD, normalised and checked as the scene loader does it.
-void setLightSpectrum(Light& light, const Spectrum& spd, const std::string& label) {
-  try {
-    light.spd = normalisedLightSpectrum(spd);
-  } catch (const Error& e) {
-    throw Error(fmt::format("{}: {}", label, e.what()));
-  }
-  light.spdLabel = label;
-}
-
-void setLightSpd(Light& light, const std::string& label) { setLightSpectrum(light, illuminant(label), label); }
 
 // Dear ImGui over the window, from construction to destruction.
 class ImGuiSession {

@@ -5,10 +5,14 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include "scene/scene.h"
 
 namespace prism::viewer {
+
+// Radians per degree: the viewer's controls and script take angles in degrees.
+constexpr float kDegrees = glm::pi<float>() / 180.0f;
 
 class CameraController {
  public:

@@ -65,6 +65,10 @@ long parseInteger(std::string_view what, std::string_view text, long min, long m
   return v;
 }
 
+float parseFloat(std::string_view what, std::string_view text) {
+  return static_cast<float>(parseNumber(what, text));
+}
+
 bool applyFrameSetting(render::FrameSettings& s, std::string_view key, std::string_view value) {
   std::string v(value);
   if (key == "mode") s.mode = render::renderModeFromName(v);

@@ -29,6 +29,7 @@ struct ViewSettings {
 // Error naming `what` and the text otherwise.
 double parseNumber(std::string_view what, std::string_view text);
 long parseInteger(std::string_view what, std::string_view text, long min, long max);
+float parseFloat(std::string_view what, std::string_view text);  // parseNumber, as a float
 
 // Applies `key` = `value` to frame settings; false when the key is not a frame key. Error naming
 // the key and what it expects when the value is bad (validate() then checks the combination).

@@ -1,0 +1,67 @@
+#include "viewer/panel_widgets.h"
+
+#include <algorithm>
+
+#include "spectral/illuminant.h"
+#include "spectral/observer.h"
+
+namespace prism::viewer {
+
+bool stringCombo(const char* label, std::string& value, const std::vector<std::string>& choices) {
+  bool changed = false;
+  if (ImGui::BeginCombo(label, value.c_str())) {
+    for (const std::string& c : choices) {
+      if (ImGui::Selectable(c.c_str(), c == value)) {
+        value = c;
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+bool frameSettingsControls(render::FrameSettings& s, const char* id, const std::vector<std::string>& observers) {
+  ImGui::PushID(id);
+  bool changed = combo<render::RenderMode>("mode", s.mode,
+                                           {{render::RenderMode::Rgb, "rgb"},
+                                            {render::RenderMode::Naive, "naive"},
+                                            {render::RenderMode::JakobHanika, "jakob-hanika"},
+                                            {render::RenderMode::Reference, "reference (472 wavelengths)"},
+                                            {render::RenderMode::Optimised4, "optimised4 (sky's 4 wavelengths)"}});
+  int count = s.sampling.count;
+  if (ImGui::SliderInt("wavelengths", &count, 4, 256)) {
+    s.sampling.count = std::max(4, count / 4 * 4);
+    changed = true;
+  }
+  float range[2] = {static_cast<float>(s.sampling.minNm), static_cast<float>(s.sampling.maxNm)};
+  if (ImGui::SliderFloat2("range nm", range, 360.0f, 830.0f, "%.0f")) {
+    s.sampling.minNm = std::clamp<double>(range[0], 360.0, 829.0);
+    s.sampling.maxNm = std::clamp<double>(range[1], s.sampling.minNm + 1.0, 830.0);
+    changed = true;
+  }
+  changed |= combo<SamplingStrategy>("strategy", s.sampling.strategy,
+                                     {{SamplingStrategy::Uniform, "uniform"},
+                                      {SamplingStrategy::Stratified, "stratified"},
+                                      {SamplingStrategy::Rotated, "rotated"},
+                                      {SamplingStrategy::Importance, "importance"}});
+  changed |= stringCombo("observer", s.observer, observers);
+  ImGui::PopID();
+  return changed;
+}
+
+std::vector<std::string> illuminantChoices() {
+  std::vector<std::string> names;
+  for (const IlluminantInfo& info : listIlluminants()) {
+    if (info.name.find('<') == std::string::npos) names.push_back(info.name);
+  }
+  return names;
+}
+
+std::vector<std::string> observerChoices() {
+  std::vector<std::string> names = {"cie1931", "cie1964"};
+  for (const std::string& c : listCameras()) names.push_back(c);
+  return names;
+}
+
+}  // namespace prism::viewer

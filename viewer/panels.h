@@ -1,0 +1,22 @@
+// The viewer's panels, in the order the interface shows them: one file each, <name>_panel.cpp.
+#pragma once
+
+#include <memory>
+
+#include "viewer/panel.h"
+
+namespace prism::viewer {
+
+class Viewer;
+
+std::unique_ptr<Panel> makeCameraPanel();     // field of view, reset
+std::unique_ptr<Panel> makeSpectralPanel();   // the left view's spectral settings, the spectra plot
+std::unique_ptr<Panel> makeSplitPanel();      // the A/B split: the right view's settings, the heat map
+std::unique_ptr<Panel> makeLightsPanel();     // each light's SPD, intensity and direction
+std::unique_ptr<Panel> makeMaterialsPanel();  // one material's colour, roughness, metal, reflectance
+std::unique_ptr<Panel> makeWaterPanel();      // the underwater technique's water
+std::unique_ptr<Panel> makeSkyPanel();        // the atmosphere technique's sun and atmosphere
+std::unique_ptr<Panel> makeDisplayPanel();    // tone map, exposure, white balance, display
+std::unique_ptr<Panel> makeFilesPanel(Viewer& viewer);  // screenshots, settings files, shader reload
+
+}  // namespace prism::viewer

@@ -1,0 +1,201 @@
+#include "viewer/script.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "viewer/light_spectrum.h"
+#include "viewer/soak.h"
+#include "viewer/technique_settings.h"
+#include "viewer/viewer_settings.h"
+
+namespace prism::viewer {
+namespace {
+
+struct ScriptLine {
+  int line = 0;
+  std::vector<std::string> words;
+};
+
+std::vector<ScriptLine> readScript(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(fmt::format("{}: cannot read the script", path.string()));
+  std::vector<ScriptLine> lines;
+  std::string text;
+  for (int n = 1; std::getline(in, text); ++n) {
+    if (std::size_t hash = text.find('#'); hash != std::string::npos) text.resize(hash);
+    std::istringstream words(text);
+    ScriptLine line{n, {}};
+    for (std::string w; words >> w;) line.words.push_back(w);
+    if (!line.words.empty()) lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+glm::vec3 parseVec3(const std::string& what, const std::string& text) {
+  glm::vec3 v;
+  std::stringstream in(text);
+  std::string part;
+  for (int i = 0; i < 3; ++i) {
+    if (!std::getline(in, part, ',')) throw Error(fmt::format("{}: expected X,Y,Z, got \"{}\"", what, text));
+    v[i] = parseFloat(what, part);
+  }
+  return v;
+}
+
+// light.N.spd NAME, light.N.intensity X, light.N.direction X,Y,Z (parts: light, N, what).
+void setLightKey(Scene& scene, const std::string& key, const std::vector<std::string>& parts,
+                 const std::string& value) {
+  if (scene.lights.empty()) throw Error(fmt::format("{}: the scene has no lights", key));
+  auto i = static_cast<std::size_t>(
+      parseInteger("light index", parts[1], 0, static_cast<long>(scene.lights.size()) - 1));
+  Light& light = scene.lights[i];
+  if (parts[2] == "spd") setLightSpd(light, value);
+  else if (parts[2] == "intensity") light.intensity = std::max(0.0f, parseFloat(key, value));
+  else if (parts[2] == "direction") {
+    glm::vec3 d = parseVec3(key, value);
+    if (!(glm::length(d) > 0.0f)) throw Error(fmt::format("{}: expected a non-zero direction", key));
+    light.direction = glm::normalize(d);
+  } else {
+    throw Error(fmt::format("unknown setting \"{}\" (light.N.spd, intensity, direction)", key));
+  }
+}
+
+// material.NAME.base-colour R,G,B, material.NAME.roughness X, material.NAME.metallic X.
+void setMaterialKey(Scene& scene, const std::string& key, const std::vector<std::string>& parts,
+                    const std::string& value) {
+  auto it = std::find_if(scene.materials.begin(), scene.materials.end(),
+                         [&](const Material& m) { return m.name == parts[1]; });
+  if (it == scene.materials.end()) throw Error(fmt::format("{}: no material \"{}\"", key, parts[1]));
+  if (parts[2] == "base-colour") it->baseColour = glm::clamp(parseVec3(key, value), glm::vec3(0.0f), glm::vec3(1.0f));
+  else if (parts[2] == "roughness") it->roughness = std::clamp(parseFloat(key, value), 0.0f, 1.0f);
+  else if (parts[2] == "metallic") it->metallic = std::clamp(parseFloat(key, value), 0.0f, 1.0f);
+  else throw Error(fmt::format("unknown setting \"{}\" (material.NAME.base-colour, roughness, metallic)", key));
+}
+
+void set(Viewer& viewer, const std::string& key, const std::string& value) {
+  ViewSettings& view = viewer.view();
+  Changes& changes = viewer.changes();
+  if (key.rfind("right.", 0) == 0) {
+    if (!applyFrameSetting(view.right, key.substr(6), value)) throw Error(fmt::format("unknown setting \"{}\"", key));
+    changes.settings = true;
+    return;
+  }
+  if (applyFrameSetting(view.left, key, value)) {
+    changes.settings = true;
+    return;
+  }
+  auto onOff = [&](bool& flag) {
+    if (value != "on" && value != "off") throw Error(fmt::format("{}: expected on or off, got \"{}\"", key, value));
+    flag = value == "on";
+    changes.settings = true;
+  };
+  if (key == "split") return onOff(view.split);
+  if (key == "heat-map") return onOff(view.heatMap);
+  if (key == "fov") {
+    viewer.camera().setFieldOfView(parseFloat(key, value));
+    changes.camera = true;
+    return;
+  }
+  Scene& scene = viewer.scene();
+  if (setWaterKey(scene, key, value) || setSkyKey(scene, key, value)) {
+    changes.scene = true;
+    return;
+  }
+  std::vector<std::string> parts;
+  std::stringstream in(key);
+  for (std::string p; std::getline(in, p, '.');) parts.push_back(p);
+  if (parts.size() == 3 && parts[0] == "light") {
+    setLightKey(scene, key, parts, value);
+    changes.scene = true;
+    return;
+  }
+  if (parts.size() == 3 && parts[0] == "material") {
+    setMaterialKey(scene, key, parts, value);
+    changes.scene = true;
+    return;
+  }
+  throw Error(fmt::format("unknown setting \"{}\" (frame keys of viewer_settings.h, right.KEY, split, heat-map, "
+                          "fov, light.N.*, material.NAME.*, water.type, water.depth, sky.*)", key));
+}
+
+void execute(Viewer& viewer, const std::vector<std::string>& w) {
+  auto need = [&](std::size_t n) {
+    if (w.size() != n + 1) throw Error(fmt::format("{} takes {} argument{}", w[0], n, n == 1 ? "" : "s"));
+  };
+  const std::string& verb = w[0];
+  if (verb == "set") {
+    need(2);
+    set(viewer, w[1], w[2]);
+    if (viewer.changes().settings) {  // a bad value should fail here, at its line
+      render::validate(viewer.view().left);
+      render::validate(viewer.view().right);
+    }
+  } else if (verb == "frames") {
+    need(1);
+    long n = parseInteger("frames", w[1], 0, 1000000);
+    for (long i = 0; i < n; ++i) viewer.frame();
+    if (!viewer.renderError().empty()) throw Error(viewer.renderError());
+  } else if (verb == "resize") {
+    need(2);
+    viewer.resize(static_cast<int>(parseInteger("width", w[1], 16, 8192)),
+                  static_cast<int>(parseInteger("height", w[2], 16, 8192)));
+  } else if (verb == "orbit") {
+    need(2);
+    viewer.camera().orbit(parseFloat("yaw", w[1]) * kDegrees, parseFloat("pitch", w[2]) * kDegrees);
+    viewer.changes().camera = true;
+  } else if (verb == "screenshot") {
+    need(1);
+    viewer.screenshot(w[1], true);
+  } else if (verb == "save-settings") {
+    need(1);
+    saveViewSettings(w[1], viewer.view(), viewer.camera().camera());
+  } else if (verb == "load-settings") {
+    need(1);
+    viewer.loadSettings(w[1]);
+  } else if (verb == "heat-map-stats") {
+    need(0);
+    const ViewSettings& view = viewer.view();
+    if (!(view.split && view.heatMap) || viewer.compositor().heatMap().id() == 0) {
+      throw Error("no heat map yet (set split on, heat-map on, frames N)");
+    }
+    const imaging::DifferenceStats& stats = viewer.compositor().heatMapStats();
+    fmt::print("heat map: mean {:.3f} p95 {:.3f} max {:.3f}\n", stats.meanDeltaE, stats.p95DeltaE, stats.maxDeltaE);
+    std::fflush(stdout);
+  } else if (verb == "reload-shaders") {
+    need(0);
+    viewer.reloadShaders();
+  } else if (verb == "soak") {
+    if (w.size() != 2 && w.size() != 3) throw Error("soak takes FRAMES and optionally MAX-GROWTH-MB");
+    soak(viewer, static_cast<int>(parseInteger("soak", w[1], 1, 1000000)),
+         w.size() == 3 ? std::optional<double>(parseFloat("soak's memory bound", w[2])) : std::nullopt);
+  } else {
+    throw Error(fmt::format("unknown command \"{}\" (set, frames, resize, orbit, screenshot, save-settings, "
+                            "load-settings, reload-shaders, soak, heat-map-stats)", verb));
+  }
+}
+
+}  // namespace
+
+int runScript(Viewer& viewer, const std::filesystem::path& path) {
+  std::vector<ScriptLine> lines = readScript(path);
+  viewer.frame();
+  for (const ScriptLine& line : lines) {
+    try {
+      execute(viewer, line.words);
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "prism: error: {}:{}: {}\n", path.string(), line.line, e.what());
+      return 1;
+    }
+  }
+  return 0;
+}
+
+}  // namespace prism::viewer

@@ -1,0 +1,45 @@
+#include "viewer/technique_settings.h"
+
+#include <algorithm>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "scene/scene_loader.h"
+#include "core/error.h"
+#include "viewer/viewer_settings.h"
+
+namespace prism::viewer {
+
+bool setWaterKey(Scene& scene, const std::string& key, const std::string& value) {
+  if (key != "water.type" && key != "water.depth") return false;
+  if (!scene.water) throw Error("the scene has no water");
+  if (key == "water.type") scene.water->type = value;
+  else scene.water->depthM = std::max(0.0f, parseFloat(key, value));
+  resolveWater(*scene.water);
+  return true;
+}
+
+bool setSkyKey(Scene& scene, const std::string& key, const std::string& value) {
+  if (key.rfind("sky.", 0) != 0) return false;
+  if (!scene.atmosphere) throw Error("the scene has no atmosphere");
+  Atmosphere& a = *scene.atmosphere;
+  atmosphere::AtmosphereParameters p = a.parameters;
+  std::string_view k = std::string_view(key).substr(4);
+  if (k == "elevation") a.sunElevationDeg = std::clamp(parseFloat(key, value), -90.0f, 90.0f);
+  else if (k == "azimuth") a.sunAzimuthDeg = parseFloat(key, value);
+  else if (k == "turbidity") p.mieAngstromBeta = parseFloat(key, value);
+  else if (k == "ozone") p.ozoneColumnDu = parseFloat(key, value);
+  else if (k == "aerosols" || k == "multiple-scattering") {
+    if (value != "on" && value != "off") throw Error(fmt::format("{}: expected on or off, got \"{}\"", key, value));
+    (k == "aerosols" ? p.aerosols : p.multipleScattering) = value == "on";
+  }
+  else throw Error(fmt::format("unknown setting \"{}\" (sky.elevation, azimuth, turbidity, ozone, aerosols, "
+                               "multiple-scattering)", key));
+  atmosphere::validate(p);  // nothing changes on an error
+  a.parameters = p;
+  applySun(scene);
+  return true;
+}
+
+}  // namespace prism::viewer

@@ -1,0 +1,55 @@
+// The water panel (techniques/underwater): the Jerlov water type and its data set, the camera's
+// depth and the multipliers of each coefficient. Sees only the PanelContext.
+#include <imgui.h>
+
+#include "scene/scene_loader.h"
+#include "core/error.h"
+#include "techniques/underwater/jerlov_water.h"
+#include "viewer/panel_widgets.h"
+#include "viewer/panels.h"
+
+namespace prism::viewer {
+namespace {
+
+class WaterPanel final : public Panel {
+ public:
+  const char* title() const override { return "Water"; }
+  bool applies(const Scene& scene) const override { return scene.water.has_value(); }
+
+  void draw(PanelContext& context) override {
+    Water& w = *context.scene.water;
+    if (mTypesOf != w.dataset) {  // read from data/ when the data set changes, not every frame
+      mTypes = underwater::listJerlovTypes(underwater::jerlovDatasetFromName(w.dataset));
+      mTypesOf = w.dataset;
+    }
+    bool changed = stringCombo("type", w.type, mTypes);
+    changed |= stringCombo("data set", w.dataset, {"jerlov", "williamson2022"});
+    changed |= ImGui::SliderFloat("camera depth m", &w.depthM, 0.0f, 60.0f, "%.1f");
+    changed |= ImGui::SliderFloat("scattering x", &w.scatteringScale, 0.0f, 4.0f);
+    changed |= ImGui::SliderFloat("absorption x", &w.absorptionScale, 0.0f, 4.0f);
+    changed |= ImGui::SliderFloat("Kd x", &w.kdScale, 0.0f, 4.0f);
+    if (changed) apply(context);
+  }
+
+ private:
+  static void apply(PanelContext& context) {
+    Water& w = *context.scene.water;
+    try {
+      resolveWater(w);
+    } catch (const Error& e) {  // a type the other data set lacks: back to its first
+      w.type = underwater::listJerlovTypes(underwater::jerlovDatasetFromName(w.dataset)).front();
+      resolveWater(w);
+      context.actionError = e.what();
+    }
+    context.changes.scene = true;
+  }
+
+  std::vector<std::string> mTypes;  // of the data set mTypesOf
+  std::string mTypesOf;
+};
+
+}  // namespace
+
+std::unique_ptr<Panel> makeWaterPanel() { return std::make_unique<WaterPanel>(); }
+
+}  // namespace prism::viewer

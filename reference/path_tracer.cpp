@@ -245,7 +245,7 @@ class PathTracer {
                   const vec4& k) const {
     const Material& m = *mMaterials[static_cast<std::size_t>(hit.material)].material;
     shared::MicrofacetTerms terms = shared::microfacetTerms(hit.normalW, v, l, hit.roughness);
-    if (m.lambertian) terms.specular = 0.0f;
+    if (m.lambertian) terms = shared::lambertianTerms(terms);
     bool conductor = m.conductor.has_value();
     return shared::surfaceReflection(terms, conductor, albedoOrN, k, conductor ? 1.0f : hit.metallic);
   }

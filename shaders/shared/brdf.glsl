@@ -2,7 +2,9 @@
 // in RGB mode: the same code either way.
 //
 // Cook–Torrance as in UE4 (Karis 2013, "Real Shading in Unreal Engine 4"):
-//   f(l, v) = (1 − metallic)·albedo/π + D(h)·G(l, v)·F(v, h) / (4·(n·l)·(n·v))
+//   f(l, v) = (1 − F(v, h))·(1 − metallic)·albedo/π + D(h)·G(l, v)·F(v, h) / (4·(n·l)·(n·v))
+//   (the diffuse lobe gets the light the specular one does not reflect, as in Pérez García 2024
+//   and sRAT-RT; UE4 itself drops the (1 − F))
 //   D  GGX / Trowbridge–Reitz with α = roughness² (perceptual roughness squared)
 //   G  Smith with Schlick's approximation, k = (roughness + 1)²/8 (Karis's remapping for
 //      analytic lights; the issue's "(α+1)²/8" with α read as the perceptual roughness)
@@ -57,9 +59,10 @@ PRISM_INLINE vec4 conductorFresnel(IN(vec4) n, IN(vec4) k, float cosTheta) {
 
 // The wavelength-independent part of one light's reflection at one pixel.
 struct MicrofacetTerms {
-  float cosLight;  // n·l, clamped to 0 (0: the light is behind the surface)
-  float specular;  // D·G / (4·n·l·n·v), the factor F multiplies
-  float cosHalf;   // v·h, Fresnel's angle
+  float cosLight;        // n·l, clamped to 0 (0: the light is behind the surface)
+  float specular;        // D·G / (4·n·l·n·v), the factor F multiplies
+  float cosHalf;         // v·h, Fresnel's angle
+  float diffuseFresnel;  // 1: the diffuse lobe keeps (1 − F) of the light; 0: all of it
 };
 
 // n, v, l unit vectors (v towards the viewer, l towards the light).
@@ -70,6 +73,7 @@ PRISM_INLINE MicrofacetTerms microfacetTerms(IN(vec3) n, IN(vec3) v, IN(vec3) l,
   t.cosLight = max(nDotL, 0.0f);
   t.specular = 0.0f;
   t.cosHalf = 1.0f;
+  t.diffuseFresnel = 1.0f;
   if (nDotL <= 0.0f) return t;
   PRISM_PRECISE vec3 h = normalize(v + l);
   PRISM_PRECISE vec3 nCrossH = cross(n, h);
@@ -83,12 +87,22 @@ PRISM_INLINE MicrofacetTerms microfacetTerms(IN(vec3) n, IN(vec3) v, IN(vec3) l,
   return t;
 }
 
+// The terms of a Lambertian surface (the thesis's test spheres): the diffuse lobe alone, all of
+// the light, no specular lobe to share it with.
+PRISM_INLINE MicrofacetTerms lambertianTerms(IN(MicrofacetTerms) t) {
+  MicrofacetTerms l = t;
+  l.specular = 0.0f;
+  l.diffuseFresnel = 0.0f;
+  return l;
+}
+
 // BRDF·cos of the metallic–roughness model for four wavelengths of albedo.
 PRISM_INLINE vec4 metallicRoughnessReflection(IN(MicrofacetTerms) t, IN(vec4) albedo,
                                                float metallic) {
   vec4 f0 = mix(vec4(0.04f), albedo, metallic);
-  vec4 diffuse = (1.0f - metallic) * albedo * (1.0f / kPi);
-  return (diffuse + t.specular * schlickFresnel(f0, t.cosHalf)) * t.cosLight;
+  vec4 f = schlickFresnel(f0, t.cosHalf);
+  vec4 diffuse = (1.0f - metallic) * albedo * (1.0f / kPi) * (vec4(1.0f) - f * t.diffuseFresnel);
+  return (diffuse + t.specular * f) * t.cosLight;
 }
 
 // BRDF·cos of a conductor for four wavelengths of n and k.

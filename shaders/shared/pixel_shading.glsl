@@ -167,7 +167,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     LightIncidence li = lightIncidence(light.type, light.positionW, light.direction, light.intensity,
                                        light.cosInner, light.cosOuter, s.position);
     terms[l] = microfacetTerms(s.normal, v, li.toLight, s.roughness);
-    if (lambertian) terms[l].specular = 0.0f;
+    if (lambertian) terms[l] = lambertianTerms(terms[l]);
     irradiance[l] = terms[l].cosLight > 0.0f
                         ? li.irradiance * shadowVisibility(light, s.position, s.normal,
                                                            fc.shadowMapSize)

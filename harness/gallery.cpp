@@ -21,6 +21,7 @@
 #include "core/data_files.h"
 #include "core/error.h"
 #include "spectral/rgb_to_spectrum_cache.h"
+#include "techniques/atmosphere/atmosphere_section.h"
 
 namespace prism::harness {
 namespace {
@@ -141,7 +142,7 @@ void runGallery(const GalleryOptions& o) {
                                     imaging::linearInput(reference, imaging::ColourMeaning::Xyz, white))
           .stats;
     };
-    if (scene.atmosphere) {
+    if (scene.techniques.has(atmosphere::AtmosphereSection::kKey)) {
       e.sky = true;
       settings.mode = render::RenderMode::Optimised4;
       renderer.setSettings(settings);

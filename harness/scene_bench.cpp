@@ -18,6 +18,8 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "spectral/rgb_to_spectrum_cache.h"
+#include "techniques/atmosphere/atmosphere_section.h"
+#include "techniques/underwater/water_section.h"
 
 namespace prism::harness {
 namespace {
@@ -155,10 +157,10 @@ void runSceneBench(const SceneBenchOptions& options) {
   // Under water: the water term's cost, the same frames with the scene's water taken out (RGB and
   // 16 wavelengths).
   Scene dryScene = scene;
-  dryScene.water.reset();
+  dryScene.techniques.remove(underwater::WaterSection::kKey);
   std::optional<render::Renderer> dryRenderer;
   std::size_t dryRgb = 0, dry16 = 0, wet16 = 0;
-  if (scene.water) {
+  if (scene.techniques.has(underwater::WaterSection::kKey)) {
     dryRenderer.emplace(dryScene, table, settings);
     dryRgb = add("rgb dry", *dryRenderer, settings);
     dry16 = add("16 dry", *dryRenderer, spectralSettings(16));
@@ -169,7 +171,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   // configuration) and against the reference, every table recomputed every frame; the reference
   // (118 batches of tables per frame) is timed over one frame a round.
   std::size_t optimised4 = 0, reference = 0;
-  if (scene.atmosphere) {
+  if (scene.techniques.has(atmosphere::AtmosphereSection::kKey)) {
     render::FrameSettings s = settings;
     s.mode = render::RenderMode::Optimised4;
     optimised4 = add("optimised4", renderer, s);
@@ -242,7 +244,7 @@ void runSceneBench(const SceneBenchOptions& options) {
          {"rgb_median_ms", configs[rgbAlbedo16].medianMs()},
          {"coefficients_median_ms", configs[coefficients16].medianMs()}};
     putRatio(g, "ratio_coefficients_to_rgb", ratio(configs[coefficients16], configs[rgbAlbedo16]));
-    if (scene.water) {
+    if (scene.techniques.has(underwater::WaterSection::kKey)) {
       nlohmann::json& w = j["water"];
       w = {{"dry_rgb_frame_ms", configs[dryRgb].frameMs()},
            {"dry_spectral16_frame_ms", configs[dry16].frameMs()},
@@ -250,7 +252,7 @@ void runSceneBench(const SceneBenchOptions& options) {
       putRatio(w, "rgb_ratio_wet_to_dry", ratio(configs[rgb], configs[dryRgb]));
       putRatio(w, "spectral16_ratio_wet_to_dry", ratio(configs[wet16], configs[dry16]));
     }
-    if (scene.atmosphere) {
+    if (scene.techniques.has(atmosphere::AtmosphereSection::kKey)) {
       nlohmann::json& s = j["sky"];
       s = {{"optimised4_median_ms", configs[optimised4].medianMs()},
            {"reference_median_ms", configs[reference].medianMs()},
@@ -295,12 +297,12 @@ void runSceneBench(const SceneBenchOptions& options) {
              coefficients.frameMs(), rgbAlbedoConfig.frameMs(), spread(ratio(coefficients, rgbAlbedoConfig)),
              coefficients.passMs("gbuffer"), rgbAlbedoConfig.passMs("gbuffer"), coefficients.passMs("lighting"),
              rgbAlbedoConfig.passMs("lighting"));
-  if (scene.water) {
+  if (scene.techniques.has(underwater::WaterSection::kKey)) {
     fmt::print("water on / off: RGB {:.3f} / {:.3f} ms = {}; 16 wavelengths {:.3f} / {:.3f} ms = {}\n", rgbFrame,
                configs[dryRgb].frameMs(), spread(ratio(configs[rgb], configs[dryRgb])), configs[wet16].frameMs(),
                configs[dry16].frameMs(), spread(ratio(configs[wet16], configs[dry16])));
   }
-  if (scene.atmosphere) {
+  if (scene.techniques.has(atmosphere::AtmosphereSection::kKey)) {
     const Config& o4 = configs[optimised4];
     const Config& ref = configs[reference];
     fmt::print("sky: optimised4 / RGB-3 frame {:.3f} / {:.3f} ms = {} (sky tables {:.3f} / {:.3f} ms); "

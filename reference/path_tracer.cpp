@@ -19,6 +19,7 @@
 #include "shared_cpp.h"
 #include "core/error.h"
 #include "spectral/observer.h"
+#include "techniques/underwater/water_section.h"
 
 namespace prism::shared {
 #include "random.glsl"
@@ -138,13 +139,14 @@ float mean4(const vec4& v) { return 0.25f * (v.x + v.y + v.z + v.w); }
 // The medium the paths cross: the scene's water (everything below its surface, scattering
 // isotropically as the analytic model assumes), else the scene's medium, if any.
 std::optional<HomogeneousMedium> effectiveMedium(const Scene& scene) {
-  if (!scene.water) return scene.medium;
+  const auto* section = scene.techniques.find<underwater::WaterSection>();
+  if (!section) return scene.medium;
   constexpr float kFar = 1e7f;  // the ocean has no sides or bottom
   HomogeneousMedium water;
-  water.sigmaA = scene.water->sigmaA;
-  water.sigmaS = scene.water->sigmaS;
+  water.sigmaA = section->sigmaA;
+  water.sigmaS = section->sigmaS;
   water.g = 0.0f;
-  water.region = Bounds{{-kFar, -kFar, -kFar}, {kFar, scene.water->surfaceY(scene.camera), kFar}};
+  water.region = Bounds{{-kFar, -kFar, -kFar}, {kFar, section->surfaceY(scene.camera.position.y), kFar}};
   return water;
 }
 
@@ -494,7 +496,7 @@ void validate(const ReferenceSettings& s) {
 ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& table,
                                const ReferenceSettings& settings, const ReferenceProgress& progress) {
   validate(settings);
-  if (scene.atmosphere) {
+  if (scene.techniques.has("atmosphere")) {
     throw Error(fmt::format("{}: the path tracer does not trace the atmosphere; its references are "
                             "`prism atmosphere evaluate` and `prism render --mode reference`",
                             scene.file.string()));

@@ -15,6 +15,7 @@
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_cache.h"
+#include "techniques/underwater/water_section.h"
 
 namespace prism::reference {
 namespace {
@@ -302,19 +303,19 @@ TEST(PathTracer, SingleScatteringInAChromaticMediumMatchesNumericalIntegration) 
 }
 
 // Jerlov 3C with the camera 1.5 m deep.
-Water coastalWater() {
-  Water water;
-  water.type.assign("3C");
-  water.depthM = 1.5f;
-  resolveWater(water);
+std::unique_ptr<underwater::WaterSection> coastalWater() {
+  auto water = std::make_unique<underwater::WaterSection>();
+  water->type.assign("3C");
+  water->depthM = 1.5f;
+  water->resolve();
   return water;
 }
 
 // A scene's water is traced as the same medium below its surface, isotropic.
 TEST(PathTracer, WaterIsTheMediumBelowItsSurface) {
   Scene wet = litPlane(0.5, 1000.0f);
-  wet.water = coastalWater();
-  const Water& water = *wet.water;
+  wet.techniques.add(coastalWater());
+  const auto& water = *wet.techniques.find<underwater::WaterSection>();
   Scene explicitMedium = litPlane(0.5, 1000.0f);
   HomogeneousMedium below;
   below.sigmaA = water.sigmaA;

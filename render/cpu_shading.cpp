@@ -10,7 +10,10 @@ class CpuShadingAccessors {
  public:
   CpuShadingAccessors(const render::FrameData& frame, const RgbToSpectrumTable& table,
                       std::vector<std::vector<float>> shadowLayers, render::AtmosphereTexels atmosphere)
-      : mFrame(frame), mTable(table), mShadowLayers(std::move(shadowLayers)), mAtmosphere(std::move(atmosphere)) {}
+      : mFrame(frame), mTable(table), mShadowLayers(std::move(shadowLayers)), mAtmosphere(std::move(atmosphere)) {
+    if (const TechniqueBlock* water = mFrame.technique("water")) mWater = water;
+    if (const TechniqueBlock* sky = mFrame.technique("atmosphere")) mSky = sky;
+  }
   virtual ~CpuShadingAccessors() = default;
   virtual vec3 shade(const render::GBufferTexel& texel, vec2 uv, const CameraTransform& camera) = 0;
 
@@ -31,8 +34,10 @@ class CpuShadingAccessors {
   vec3 upsamplingCoefficients(vec3 rgb) const {
     return mFrame.constants.gbufferCoefficients != 0 ? mTexelCoefficients : mTable.lookup(rgb);
   }
-  vec4 frameWaterSpectrum(int b, int j) const { return mFrame.waterSpectra[index(waterSpectrumIndex(b, j))]; }
-  GpuAtmosphere frameAtmosphere(int b) const { return mFrame.atmospheres[index(b)]; }
+  WaterConstants frameWater() const { return mWater->constantsAs<WaterConstants>(); }
+  vec4 frameWaterSpectrum(int b, int j) const { return mWater->dataAt<vec4>(index(waterSpectrumIndex(b, j))); }
+  SkyConstants frameSky() const { return mSky->constantsAs<SkyConstants>(); }
+  GpuAtmosphere frameAtmosphere(int b) const { return mSky->dataAt<GpuAtmosphere>(index(b)); }
   static vec4 texel(const std::vector<std::vector<glm::vec4>>& layers, int layer, int x, int y, int width) {
     return layers[index(layer)][index(y * width + x)];
   }
@@ -56,6 +61,8 @@ class CpuShadingAccessors {
   const RgbToSpectrumTable& mTable;
   std::vector<std::vector<float>> mShadowLayers;
   render::AtmosphereTexels mAtmosphere;
+  const TechniqueBlock* mWater = nullptr;  // in mFrame, when the scene has these techniques
+  const TechniqueBlock* mSky = nullptr;
   vec3 mTexelCoefficients{0.0f};  // of the texel being shaded
 };
 
@@ -116,7 +123,7 @@ struct CpuShading::Kernel {
 CpuShading::CpuShading(const FrameData& frame, const RgbToSpectrumTable& table,
                        std::vector<std::vector<float>> shadowLayers, AtmosphereTexels atmosphere)
     : mKernel(std::make_unique<Kernel>()) {
-  const bool water = frame.constants.water != 0, sky = frame.constants.atmosphere != 0;
+  const bool water = frame.technique("water") != nullptr, sky = frame.technique("atmosphere") != nullptr;
   auto make = [&]<class Variant>() -> std::unique_ptr<shared::CpuShadingAccessors> {
     return std::make_unique<Variant>(frame, table, std::move(shadowLayers), std::move(atmosphere));
   };

@@ -1,6 +1,6 @@
 #include "render/frame_data.h"
 
-#include "techniques/atmosphere/atmosphere_parameters.h"
+#include "techniques/atmosphere/atmosphere_section.h"
 #include "techniques/atmosphere/sky_strategy.h"
 
 #include <algorithm>
@@ -41,11 +41,6 @@ Spectrum normalIncidenceReflectance(const ConductorIor& ior) {
   return r;
 }
 
-// RGB mode's "wavelengths" for R, G, B and an unused fourth channel.
-glm::vec4 rgbStandIn(float fourth) {
-  return glm::vec4(kRgbStandInWavelengthsNm[0], kRgbStandInWavelengthsNm[1], kRgbStandInWavelengthsNm[2], fourth);
-}
-
 glm::vec4 at4(const Spectrum& s, const glm::vec4& lambdaNm, float scale = 1.0f) {
   glm::vec4 v;
   for (int j = 0; j < 4; ++j) v[j] = static_cast<float>(s.at(lambdaNm[j])) * scale;
@@ -66,7 +61,8 @@ void addBatches(FrameData& frame, const FrameSettings& settings, const Scene& sc
   const Observer& obs = observer(settings.observer);
   double scale = absoluteTristimulusScale(obs);
   if (settings.mode == RenderMode::Optimised4) {
-    bool aerosols = !scene.atmosphere || scene.atmosphere->parameters.aerosols;
+    const auto* sky = scene.techniques.find<atmosphere::AtmosphereSection>();
+    bool aerosols = !sky || sky->parameters.aerosols;
     atmosphere::OptimisedWavelengths set = atmosphere::loadOptimisedWavelengths(aerosols ? "aerosols" : "rayleigh-ozone");
     shared::GpuBatch batch{};
     for (int j = 0; j < 4; ++j) {
@@ -201,49 +197,24 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
   if (frame.materials.empty()) frame.materials.push_back(shared::GpuMaterial{});
   if (frame.materialSpectra.empty()) frame.materialSpectra.push_back(glm::vec4(0.0f));
 
-  // Water.
-  if (scene.water) {
-    const Water& w = *scene.water;
-    frame.constants.water = 1;
-    frame.constants.waterSurfaceY = w.surfaceY(scene.camera);
-    frame.constants.waterDepthM = std::max(frame.constants.waterSurfaceY - camera.position.y, 0.0f);
-    for (const shared::GpuBatch& batch : frame.batches) {
-      glm::vec4 lambdaNm = rgbMode ? rgbStandIn(kRgbStandInWavelengthsNm[1]) : batch.lambdaNm;
-      glm::vec4 sigmaS = at4(w.sigmaS, lambdaNm), sigmaA = at4(w.sigmaA, lambdaNm);
-      frame.waterSpectra.push_back(sigmaS);
-      frame.waterSpectra.push_back(sigmaA + sigmaS);
-      frame.waterSpectra.push_back(at4(w.kd, lambdaNm));
-    }
-  } else {
-    frame.waterSpectra.push_back(glm::vec4(0.0f));
-  }
-
-  // Atmosphere.
-  if (scene.atmosphere) {
-    const Atmosphere& a = *scene.atmosphere;
-    frame.constants.atmosphere = 1;
-    frame.constants.atmosphereOriginKm =
-        static_cast<float>(a.parameters.bottomRadiusKm + a.groundAltitudeM * 1e-3);
-    frame.constants.atmosphereSunLight = -1;
+  // The techniques' blocks, each packed by its technique (techniques/technique_section.h).
+  for (const auto& section : scene.techniques.all()) {
+    FramePackInput input;
+    input.batches = frame.batches;
+    input.rgbMode = rgbMode;
+    input.cameraPositionW = camera.position;
+    input.sceneCameraPositionW = scene.camera.position;
+    input.lightSpectra = frame.lightSpectra;
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-      if (scene.lights[i].atmosphereSun) frame.constants.atmosphereSunLight = static_cast<int>(i);
+      if (scene.lights[i].technique != section->key()) continue;
+      input.ownLight = static_cast<int>(i);
+      input.ownLightIntensity = scene.lights[i].intensity;
     }
-    const int sun = frame.constants.atmosphereSunLight;
-    if (sun < 0) throw Error(fmt::format("{}: the atmosphere has no sun light (addSun adds it)", scene.file.string()));
-    // The sun's irradiance above the atmosphere is the sun light's own (its SPD × intensity: the
-    // measured solar spectrum unless edited; in RGB mode its RGB), so the sky follows the light.
-    const float intensity = scene.lights[static_cast<std::size_t>(sun)].intensity;
-    for (int b = 0; b < batchCount; ++b) {
-      glm::vec4 solar = frame.lightSpectra[static_cast<std::size_t>(shared::lightSpectrumIndex(sun, b, batchCount))] * intensity;
-      glm::vec4 lambdaNm = frame.batches[static_cast<std::size_t>(b)].lambdaNm;
-      if (rgbMode) {
-        solar.w = 0.0f;
-        lambdaNm = rgbStandIn(0.0f);  // no fourth channel: the sky's coefficients there are 0
-      }
-      frame.atmospheres.push_back(atmosphere::packAtmosphere(a.parameters, lambdaNm, solar));
+    try {
+      frame.techniques.push_back(section->pack(input));
+    } catch (const Error& e) {
+      throw Error(fmt::format("{}: {}", scene.file.string(), e.what()));
     }
-  } else {
-    frame.atmospheres.push_back(shared::GpuAtmosphere{});
   }
   return frame;
 }

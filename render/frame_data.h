@@ -17,12 +17,8 @@
 //   (Y in cd/m²). A camera observer is scaled so that its green of D65 equals D65's Y; the post
 //   pass maps camera RGB to XYZ with the fitted camera matrix. RGB mode integrates with the
 //   colour space's RGB → XYZ rows.
-// - Water: σs, σt = σa + σs and Kd at each wavelength (RGB mode: at 680, 550 and 440 nm, the
-//   wavelengths RGB renderers commonly stand R, G and B for).
-// - Atmosphere: its coefficients at each wavelength and the solar spectrum at the top of the
-//   atmosphere (RGB mode: at 680, 550 and 440 nm, with the sun's own RGB as its irradiance, so
-//   that the sun above the atmosphere is exactly its colour; the RGB-3 strategy of
-//   techniques/atmosphere/sky_strategy.h).
+// - Techniques (water, the sky, …): each section packs its own block (its constants and its
+//   per-batch data, techniques/technique_section.h), in the order of the scene's sections.
 #pragma once
 
 #include <cstdint>
@@ -35,7 +31,7 @@
 #include "scene/scene.h"
 #include "render/shadow_views.h"
 #include "render/shared_shading.h"
-#include "techniques/atmosphere/atmosphere_layout.h"
+#include "techniques/technique_section.h"
 #include "spectral/rgb_to_spectrum_table.h"
 
 namespace prism::render {
@@ -47,8 +43,14 @@ struct FrameData {
   std::vector<shared::GpuMaterial> materials;  // one per scene material, in scene order
   std::vector<glm::vec4> lightSpectra;         // (lightCount + 1) × batchCount
   std::vector<glm::vec4> materialSpectra;      // spectra × batchCount × 2 (at least one entry)
-  std::vector<glm::vec4> waterSpectra;         // batchCount × 3 under water, else one zero entry
-  std::vector<shared::GpuAtmosphere> atmospheres;  // one per batch with a sky, else one zero entry
+  std::vector<TechniqueBlock> techniques;      // one per technique section of the scene
+
+  // The block of the technique of that key; null when the scene has no such section.
+  const TechniqueBlock* technique(std::string_view key) const {
+    for (const TechniqueBlock& block : techniques)
+      if (block.key == key) return &block;
+    return nullptr;
+  }
 };
 
 // frameIndex seeds stochastic wavelength strategies (a new set every frame). camera is where the

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/procedural_mesh.h"
+#include "techniques/atmosphere/atmosphere_section.h"
 #include "render/upsampling_texture.h"
 #include "spectral/colour_space.h"
 #include "core/data_files.h"
@@ -52,8 +53,7 @@ void upload(gpu::Buffer& buffer, const std::vector<T>& values, const char* label
 // The scene's techniques as the lighting pass's #define variant, e.g. "PRISM_TECHNIQUE_WATER".
 std::vector<gpu::ShaderDefine> techniqueDefines(const Scene& scene) {
   std::vector<gpu::ShaderDefine> defines;
-  if (scene.water) defines.push_back({"PRISM_TECHNIQUE_WATER", ""});
-  if (scene.atmosphere) defines.push_back({"PRISM_TECHNIQUE_ATMOSPHERE", ""});
+  for (const auto& section : scene.techniques.all()) defines.push_back({std::string(section->shaderDefine()), ""});
   return defines;
 }
 
@@ -250,7 +250,7 @@ void Renderer::renderFrame() {
   shadowPass();
   hook("gbuffer");
   gbufferPass();
-  if (mScene.atmosphere) {
+  if (mScene.techniques.has(atmosphere::AtmosphereSection::kKey)) {
     hook("atmosphere");
     atmospherePass();
   }
@@ -273,7 +273,12 @@ void Renderer::uploadFrameData() {
   upload(mMaterials, mFrame.materials, "frame materials");
   upload(mLightSpectra, mFrame.lightSpectra, "frame light spectra");
   upload(mMaterialSpectra, mFrame.materialSpectra, "frame material spectra");
-  upload(mWaterSpectra, mFrame.waterSpectra, "frame water spectra");
+  // Each technique's block, in buffers kept per technique (replaced only when they must grow).
+  for (const TechniqueBlock& block : mFrame.techniques) {
+    TechniqueBuffers& buffers = mTechniqueBuffers[block.key];
+    upload(buffers.constants, block.constants, (block.key + " constants").c_str());
+    upload(buffers.data, block.data, (block.key + " data").c_str());
+  }
 }
 
 namespace {
@@ -348,14 +353,20 @@ void Renderer::gbufferPass() {
 // and the atmosphere can change live).
 void Renderer::atmospherePass() {
   if (!mAtmosphere) mAtmosphere = std::make_unique<AtmospherePass>();
+  const TechniqueBlock& block = *mFrame.technique(atmosphere::AtmosphereSection::kKey);
+  const auto sky = block.constantsAs<shared::SkyConstants>();
+  std::vector<shared::GpuAtmosphere> batches;
+  for (std::size_t b = 0; b < block.dataCount<shared::GpuAtmosphere>(); ++b) {
+    batches.push_back(block.dataAt<shared::GpuAtmosphere>(b));
+  }
   AtmosphereView view;
-  view.originKm = mFrame.constants.atmosphereOriginKm;
+  view.originKm = sky.originKm;
   view.cameraWorldM = mCameraTransform.position;
   view.inverseViewProjection = mCameraTransform.inverseViewProjection;
   // The sun light is the one source of the sun's direction (an editor may turn it).
-  const Light& sun = mScene.lights[static_cast<std::size_t>(mFrame.constants.atmosphereSunLight)];
+  const Light& sun = mScene.lights[static_cast<std::size_t>(sky.sunLight)];
   view.sun = -glm::normalize(sun.direction);
-  mAtmosphere->update(mFrame.atmospheres, view);
+  mAtmosphere->update(batches, view);
 }
 
 void Renderer::lightingPass() {
@@ -370,7 +381,11 @@ void Renderer::lightingPass() {
   mMaterials.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
   mLightSpectra.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   mMaterialSpectra.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
-  mWaterSpectra.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  for (const TechniqueBlock& block : mFrame.techniques) {
+    const TechniqueBuffers& buffers = mTechniqueBuffers.at(block.key);
+    if (block.constantsBinding >= 0) buffers.constants.bindBase(GL_UNIFORM_BUFFER, static_cast<GLuint>(block.constantsBinding));
+    if (block.dataBinding >= 0) buffers.data.bindBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(block.dataBinding));
+  }
   mTargets.albedoMetallic.bind(0);
   mTargets.normalRoughness.bind(1);
   mTargets.materialId.bind(2);
@@ -378,8 +393,7 @@ void Renderer::lightingPass() {
   mShadows.maps.bind(4);
   mUpsamplingTable.bind(5);
   if (mSettings.gbufferAlbedo == GBufferAlbedo::Coefficients) mTargets.coefficients.bind(6);
-  if (mFrame.constants.atmosphere != 0) {
-    mAtmosphere->atmospheres().bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+  if (mFrame.technique(atmosphere::AtmosphereSection::kKey)) {
     mAtmosphere->skyIrradiance().bindBase(GL_SHADER_STORAGE_BUFFER, 7);
     mAtmosphere->transmittance().bind(7);
     mAtmosphere->multipleScattering().bind(8);
@@ -482,10 +496,11 @@ std::size_t Renderer::gpuMemoryBytes() const {
                                   &mTargets.forwardDepth, &mTargets.display}) {
     bytes += t->sizeBytes();
   }
-  for (const gpu::Buffer* b : {&mBatches, &mLights, &mMaterials, &mLightSpectra, &mMaterialSpectra,
-                               &mWaterSpectra, &mNoSkyIrradiance}) {
+  for (const gpu::Buffer* b : {&mFrameConstants, &mBatches, &mLights, &mMaterials, &mLightSpectra,
+                               &mMaterialSpectra}) {
     bytes += b->sizeBytes();
   }
+  for (const auto& [key, buffers] : mTechniqueBuffers) bytes += buffers.constants.sizeBytes() + buffers.data.sizeBytes();
   if (mAtmosphere) {
     for (const gpu::Texture2DArray* t : {&mAtmosphere->transmittance(), &mAtmosphere->multipleScattering(),
                                          &mAtmosphere->skyView(), &mAtmosphere->aerialPerspective()}) {

@@ -135,7 +135,11 @@ class Renderer {
   GpuMesh mGizmo;  // a unit sphere
   Shadows mShadows;
   Targets mTargets;
-  gpu::Buffer mFrameConstants, mBatches, mLights, mMaterials, mLightSpectra, mMaterialSpectra, mWaterSpectra;
+  gpu::Buffer mFrameConstants, mBatches, mLights, mMaterials, mLightSpectra, mMaterialSpectra;
+  struct TechniqueBuffers {
+    gpu::Buffer constants, data;
+  };
+  std::map<std::string, TechniqueBuffers> mTechniqueBuffers;  // per technique key
   std::unique_ptr<AtmospherePass> mAtmosphere;  // made for the first frame with a sky
 };
 

@@ -4,8 +4,10 @@
 
 #include <cstddef>
 
+#include "frame_layout.h"
 #include "shared_cpp.h"
 #include "techniques/atmosphere/atmosphere_layout.h"  // atmosphere_model.glsl, once
+#include "techniques/underwater/underwater_layout.h"    // underwater.glsl, once
 
 namespace prism::shared {
 #include "sigmoid.glsl"
@@ -13,11 +15,9 @@ namespace prism::shared {
 #include "brdf.glsl"
 #include "lights.glsl"
 #include "shadow_filter.glsl"
-#include "frame_layout.glsl"
 #include "transfer.glsl"
 #include "post.glsl"
 #include "surface_inputs.glsl"
-#include "underwater.glsl"
 
 // std430 (storage buffers) and std140 (the constants' block) sizes and offsets: a vec3 takes 12
 // bytes and the scalar after it the last 4 of its 16, as glm lays them out in C++.
@@ -26,8 +26,7 @@ static_assert(sizeof(GpuLight) == 128 && offsetof(GpuLight, type) == 12 && offse
               offsetof(GpuLight, shadowLayer) == 40 && offsetof(GpuLight, shadowFromWorld) == 64);
 static_assert(sizeof(GpuMaterial) == 32 && offsetof(GpuMaterial, metallic) == 12 &&
               offsetof(GpuMaterial, lambertian) == 28);
-static_assert(sizeof(FrameConstants) == 144 && offsetof(FrameConstants, cameraPositionW) == 64 &&
+static_assert(sizeof(FrameConstants) == 112 && offsetof(FrameConstants, cameraPositionW) == 64 &&
               offsetof(FrameConstants, mode) == 76 && offsetof(FrameConstants, viewportSize) == 80 &&
-              offsetof(FrameConstants, batchCount) == 88 && offsetof(FrameConstants, water) == 112 &&
-              offsetof(FrameConstants, atmosphereOriginKm) == 132);
+              offsetof(FrameConstants, batchCount) == 88 && offsetof(FrameConstants, filteredLookup) == 108);
 }  // namespace prism::shared

@@ -19,7 +19,7 @@
 #include <glm/glm.hpp>
 
 #include "spectral/spectrum.h"
-#include "techniques/atmosphere/atmosphere_parameters.h"
+#include "techniques/technique_section.h"
 
 namespace prism {
 
@@ -45,9 +45,10 @@ struct Light {
   std::string spdLabel;                         // what the file said, e.g. "D65", "blackbody:2700"
   float intensity = 1.0f;                       // lux (directional) or candela (point, spot)
   bool castsShadows = true;                     // directional and spot only
-  bool atmosphereSun = false;  // the sun of the scene's atmosphere: its SPD is the solar spectrum
-                               // at the top of the atmosphere, attenuated per point by the sky's
-                               // transmittance table (added by the loader, kept by applySun)
+  // The technique that put it in the scene (the sky's sun: "atmosphere"; techniques/
+  // technique_section.h), kept in step with its section by applyTechniqueLights; empty for the
+  // scene file's own lights.
+  std::string technique;
 };
 
 // Spectral complex index of refraction of a conductor, relative to air.
@@ -115,36 +116,6 @@ struct HomogeneousMedium {
   std::optional<Bounds> region;  // none: everywhere
 };
 
-// The camera under water: a Jerlov water type (techniques/underwater/jerlov_water.h), the
-// camera's depth below the surface (which lies depthM above the camera: everything in the scene
-// moves down with it) and multipliers of each coefficient. The rasteriser applies Pérez García's
-// analytic model (shaders/shared/underwater.glsl); the reference traces the same water as a
-// medium below the surface.
-struct Water {
-  std::string type = "I";
-  std::string dataset = "jerlov";  // or "williamson2022"
-  float depthM = 5.0f;             // of the camera
-  float scatteringScale = 1.0f;
-  float absorptionScale = 1.0f;
-  float kdScale = 1.0f;
-  // Resolved from the above, multipliers applied: 1/m.
-  Spectrum sigmaA;
-  Spectrum sigmaS;
-  Spectrum kd;
-  float surfaceY(const Camera& camera) const { return camera.position.y + depthM; }
-};
-
-// A planet's atmosphere around the scene (techniques/atmosphere): the sky is the background,
-// the sun a directional light (Light::atmosphereSun), the sky lights the surfaces.
-struct Atmosphere {
-  atmosphere::AtmosphereParameters parameters;
-  float sunElevationDeg = 20.0f;  // above the horizon
-  float sunAzimuthDeg = 180.0f;   // 0: towards −z, 90: towards +x
-  float groundAltitudeM = 0.0f;   // height of the world's y = 0 above the ground
-  // Unit direction towards the sun (world, y up).
-  glm::vec3 sunDirection() const;
-};
-
 struct Scene {
   std::filesystem::path file;      // the scene file it was loaded from
   std::string colourSpace = "srgb";  // of every RGB value in the scene (spectral/colour_space.h)
@@ -155,8 +126,8 @@ struct Scene {
   std::vector<Image> textures;
   glm::vec3 background{0.0f};  // linear RGB radiance-like colour where no geometry is, as a light colour
   float backgroundLuminance = 0.0f;  // cd/m² of a white background
-  std::optional<Water> water;
-  std::optional<Atmosphere> atmosphere;  // not with water
+  // The techniques' sections (water, the sky, …), each owned and typed by its technique.
+  TechniqueSections techniques;
   // A participating medium other than water, traced by the reference (reference/path_tracer.h)
   // only; not in scene files. With water, the reference traces the water as its medium.
   std::optional<HomogeneousMedium> medium;

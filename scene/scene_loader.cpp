@@ -21,7 +21,7 @@
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/sigmoid_fit.h"
-#include "techniques/underwater/jerlov_water.h"
+#include "techniques/registry.h"
 
 namespace prism {
 
@@ -58,8 +58,10 @@ class SceneParser {
 
   Scene parse(const json& root) {
     Node top(root, "", mDocument);
-    top.expectObject({"$schema", "description", "colour_space", "camera", "lights", "materials",
-                      "objects", "background", "water", "atmosphere"});
+    std::vector<std::string_view> keys{"$schema", "description", "colour_space", "camera", "lights",
+                                       "materials", "objects", "background"};
+    for (const TechniqueSectionParser& technique : techniqueSectionParsers()) keys.emplace_back(technique.key);
+    top.expectObject(keys);
     for (const char* key : {"$schema", "description"})
       if (auto n = top.optionalChild(key); n && !n->json().is_string())
         n->fail("expected a string, got " + schema::describe(n->json()));
@@ -86,74 +88,14 @@ class SceneParser {
       mScene.background = bg->vec3("colour", glm::vec3(1.0f), Range::atLeast(0.0));
       mScene.backgroundLuminance = bg->child("luminance").numberF(Range::atLeast(0.0));
     }
-    if (auto w = top.optionalChild("water")) mScene.water = water(*w);
-    if (auto a = top.optionalChild("atmosphere")) {
-      if (mScene.water) a->fail("a scene has water or an atmosphere, not both");
-      mScene.atmosphere = atmosphere(*a);
-      addSun(mScene);
+    for (const TechniqueSectionParser& technique : techniqueSectionParsers()) {
+      if (auto n = top.optionalChild(technique.key)) mScene.techniques.add(technique.parse(*n, mScene.techniques));
     }
+    addTechniqueLights(mScene);
     return std::move(mScene);
   }
 
  private:
-  Water water(const Node& n) const {
-    n.expectObject({"type", "dataset", "depth", "scattering_scale", "absorption_scale", "kd_scale"});
-    Water w;
-    if (auto d = n.optionalChild("dataset")) w.dataset = d->string();
-    if (auto t = n.optionalChild("type")) w.type = t->string();
-    w.depthM = n.numberF("depth", w.depthM, Range::atLeast(0.0));
-    w.scatteringScale = n.numberF("scattering_scale", 1.0f, Range::atLeast(0.0));
-    w.absorptionScale = n.numberF("absorption_scale", 1.0f, Range::atLeast(0.0));
-    w.kdScale = n.numberF("kd_scale", 1.0f, Range::atLeast(0.0));
-    try {
-      underwater::jerlovDatasetFromName(w.dataset);
-    } catch (const Error& e) {
-      n.child("dataset").fail(e.what());
-    }
-    try {
-      resolveWater(w);
-    } catch (const Error& e) {
-      (n.has("type") ? n.child("type") : n).fail(e.what());
-    }
-    return w;
-  }
-
-  Atmosphere atmosphere(const Node& n) const {
-    n.expectObject({"sun", "ground_altitude", "planet_radius", "atmosphere_height", "rayleigh_scale_height",
-                    "aerosols", "turbidity", "angstrom_alpha", "mie_scale_height", "mie_albedo", "mie_g",
-                    "ozone", "ground_albedo", "multiple_scattering"});
-    Atmosphere a;
-    atmosphere::AtmosphereParameters& p = a.parameters;
-    if (auto sun = n.optionalChild("sun")) {
-      sun->expectObject({"elevation", "azimuth"});
-      a.sunElevationDeg = sun->numberF("elevation", a.sunElevationDeg, Range::closed(-90.0, 90.0));
-      a.sunAzimuthDeg = sun->numberF("azimuth", a.sunAzimuthDeg, Range::closed(-360.0, 360.0));
-    }
-    a.groundAltitudeM = n.numberF("ground_altitude", 0.0f, Range::closed(0.0, 50000.0));
-    p.bottomRadiusKm = n.number("planet_radius", p.bottomRadiusKm, Range::closed(1.0, 1e5));
-    p.topRadiusKm = p.bottomRadiusKm + n.number("atmosphere_height", p.topRadiusKm - 6360.0, Range::closed(1.0, 1000.0));
-    p.rayleighScaleHeightKm = n.number("rayleigh_scale_height", p.rayleighScaleHeightKm, Range::above(0.01));
-    p.aerosols = n.boolean("aerosols", p.aerosols);
-    p.mieAngstromBeta = n.number("turbidity", p.mieAngstromBeta, Range::closed(0.0, 5.0));
-    p.mieAngstromAlpha = n.number("angstrom_alpha", p.mieAngstromAlpha, Range::closed(-4.0, 4.0));
-    p.mieScaleHeightKm = n.number("mie_scale_height", p.mieScaleHeightKm, Range::above(0.01));
-    p.mieSingleScatteringAlbedo = n.number("mie_albedo", p.mieSingleScatteringAlbedo, Range::closed(0.0, 1.0));
-    p.miePhaseG = n.number("mie_g", p.miePhaseG, Range::open(-1.0, 1.0));
-    p.ozoneColumnDu = n.number("ozone", p.ozoneColumnDu, Range::closed(0.0, 1000.0));
-    p.groundAlbedo = n.number("ground_albedo", p.groundAlbedo, Range::closed(0.0, 1.0));
-    p.multipleScattering = n.boolean("multiple_scattering", p.multipleScattering);
-    try {
-      atmosphere::validate(p);
-    } catch (const Error& e) {
-      n.fail(e.what());
-    }
-    if (a.groundAltitudeM * 1e-3 >= p.topRadiusKm - p.bottomRadiusKm) {
-      n.child("ground_altitude").fail(fmt::format("{} m must be below the top of the atmosphere ({} km)",
-                                                  a.groundAltitudeM, p.topRadiusKm - p.bottomRadiusKm));
-    }
-    return a;
-  }
-
   // A file named by a string node: inside the scene's folder, existing.
   fs::path file(const Node& node) const {
     std::string relative = node.string();
@@ -474,36 +416,29 @@ Spectrum normalisedLightSpectrum(const Spectrum& spd) {
   return spd * (1.0 / luminous);
 }
 
-glm::vec3 Atmosphere::sunDirection() const {
-  float e = glm::radians(sunElevationDeg), a = glm::radians(sunAzimuthDeg);
-  return glm::vec3(std::cos(e) * std::sin(a), std::sin(e), -std::cos(e) * std::cos(a));
-}
-
-void addSun(Scene& scene) {
-  Light sun;
-  sun.type = LightType::Directional;
-  Spectrum solar = atmosphere::solarIrradianceSpectrum().toDense();
-  sun.intensity = static_cast<float>(luminousIntegral(solar));  // lux above the atmosphere
-  sun.spd = normalisedLightSpectrum(solar);
-  sun.spdLabel = "sun (top of the atmosphere)";
-  sun.atmosphereSun = true;
-  scene.lights.push_back(sun);
-  applySun(scene);
-}
-
-void applySun(Scene& scene) {
-  if (!scene.atmosphere) return;
-  for (Light& light : scene.lights) {
-    if (light.atmosphereSun) light.direction = -scene.atmosphere->sunDirection();
+void addTechniqueLights(Scene& scene) {
+  for (const auto& section : scene.techniques.all()) {
+    std::optional<TechniqueLight> added = section->light();
+    if (!added) continue;
+    Light light;
+    light.type = LightType::Directional;
+    light.intensity = static_cast<float>(luminousIntegral(added->spd));
+    light.spd = normalisedLightSpectrum(added->spd);
+    light.spdLabel = added->spdLabel;
+    light.castsShadows = added->castsShadows;
+    light.technique = std::string(section->key());
+    scene.lights.push_back(light);
   }
+  applyTechniqueLights(scene);
 }
 
-void resolveWater(Water& water) {
-  underwater::WaterProperties properties =
-      underwater::jerlovWater(water.type, underwater::jerlovDatasetFromName(water.dataset));
-  water.sigmaA = properties.sigmaA * water.absorptionScale;
-  water.sigmaS = properties.sigmaS * water.scatteringScale;
-  water.kd = properties.kd * water.kdScale;
+void applyTechniqueLights(Scene& scene) {
+  for (Light& light : scene.lights) {
+    if (light.technique.empty()) continue;
+    const TechniqueSection* section = scene.techniques.find(light.technique);
+    if (!section) continue;
+    if (std::optional<TechniqueLight> l = section->light()) light.direction = l->direction;
+  }
 }
 
 double luminousIntegral(const Spectrum& spd) {

@@ -36,14 +36,12 @@ double luminousIntegral(const Spectrum& spd);
 // Error when a value is negative or not finite, or when there is no luminous power.
 Spectrum normalisedLightSpectrum(const Spectrum& spd);
 
-// Fills water.sigmaA, sigmaS and kd from its type, data set and multipliers (the scene file's
-// "water", or an editor's changes to it). Error naming the type or data set when unknown.
-void resolveWater(Water& water);
-
-// The atmosphere's sun as a light (Light::atmosphereSun): the solar spectrum at the top of the
-// atmosphere, its illuminance there (about 133 klux), casting shadows; added on load.
-void addSun(Scene& scene);
-// Points the sun light along the atmosphere's sun angles again (after an editor changed them).
-void applySun(Scene& scene);
+// The lights the scene's technique sections add (the sky's sun: the solar spectrum at the top of
+// the atmosphere, its illuminance there, about 133 klux), normalised like every light and tagged
+// with their technique (Light::technique); added on load.
+void addTechniqueLights(Scene& scene);
+// Points each technique's light as its section says again (after an editor changed the section,
+// e.g. the sun's angles).
+void applyTechniqueLights(Scene& scene);
 
 }  // namespace prism

@@ -13,7 +13,9 @@
 #include "core/error.h"
 #include "core/error_test_support.h"
 #include "spectral/observer.h"
+#include "techniques/atmosphere/atmosphere_section.h"
 #include "techniques/underwater/jerlov_water.h"
+#include "techniques/underwater/water_section.h"
 
 namespace prism {
 namespace {
@@ -438,20 +440,21 @@ TEST_F(SceneFolder, WaterIsAJerlovTypeAtADepthWithItsMultipliers) {
   fs::path f = write("water.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "objects": [],
     "water": {"type": "3C", "depth": 12, "scattering_scale": 2, "absorption_scale": 0.5, "kd_scale": 1.5}})");
   Scene s = loadScene(f);
-  ASSERT_TRUE(s.water);
-  EXPECT_EQ(s.water->type, "3C");
-  EXPECT_FLOAT_EQ(s.water->depthM, 12.0f);
-  EXPECT_FLOAT_EQ(s.water->surfaceY(s.camera), 13.0f);
+  const auto* w = s.techniques.find<underwater::WaterSection>();
+  ASSERT_TRUE(w);
+  EXPECT_EQ(w->type, "3C");
+  EXPECT_FLOAT_EQ(w->depthM, 12.0f);
+  EXPECT_FLOAT_EQ(w->surfaceY(s.camera.position.y), 13.0f);
   underwater::WaterProperties water = underwater::jerlovWater("3C");
-  EXPECT_NEAR(s.water->sigmaS.at(500.0), 2.0 * water.sigmaS.at(500.0), 1e-12);
-  EXPECT_NEAR(s.water->sigmaA.at(500.0), 0.5 * water.sigmaA.at(500.0), 1e-12);
-  EXPECT_NEAR(s.water->kd.at(500.0), 1.5 * water.kd.at(500.0), 1e-12);
+  EXPECT_NEAR(w->sigmaS.at(500.0), 2.0 * water.sigmaS.at(500.0), 1e-12);
+  EXPECT_NEAR(w->sigmaA.at(500.0), 0.5 * water.sigmaA.at(500.0), 1e-12);
+  EXPECT_NEAR(w->kd.at(500.0), 1.5 * water.kd.at(500.0), 1e-12);
   // The command line changes it like any other value.
   EXPECT_EQ(errorOf([&] { loadScene(f, {"water.type=9C", "water.dataset=williamson2022"}); }),
             f.string() + ": /water/type: unknown water type \"9C\" in the williamson2022 data (known: IB, II, "
                          "III, 1C, 3C, 5C)");
   Scene t = loadScene(f, {"water.type=5C", "water.depth=20", "water.dataset=williamson2022"});
-  EXPECT_FLOAT_EQ(t.water->depthM, 20.0f);
+  EXPECT_FLOAT_EQ(t.techniques.find<underwater::WaterSection>()->depthM, 20.0f);
   EXPECT_EQ(errorOf([&] { loadScene(f, {"water.type=IV"}); }),
             f.string() + ": /water/type: unknown water type \"IV\" in the jerlov data (known: I, IA, IB, II, III, "
                          "1C, 3C, 5C, 7C, 9C)");
@@ -465,13 +468,14 @@ TEST_F(SceneFolder, AtmosphereAddsTheSunAsALightAndChecksItsParameters) {
   fs::path f = write("sky.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "objects": [],
     "atmosphere": {"sun": {"elevation": 30, "azimuth": 90}, "turbidity": 0.02, "ozone": 350, "ground_altitude": 500}})");
   Scene s = loadScene(f);
-  ASSERT_TRUE(s.atmosphere);
-  EXPECT_DOUBLE_EQ(s.atmosphere->parameters.mieAngstromBeta, 0.02);
-  EXPECT_DOUBLE_EQ(s.atmosphere->parameters.ozoneColumnDu, 350.0);
-  EXPECT_FLOAT_EQ(s.atmosphere->groundAltitudeM, 500.0f);
+  auto* sky = s.techniques.find<atmosphere::AtmosphereSection>();
+  ASSERT_TRUE(sky);
+  EXPECT_DOUBLE_EQ(sky->parameters.mieAngstromBeta, 0.02);
+  EXPECT_DOUBLE_EQ(sky->parameters.ozoneColumnDu, 350.0);
+  EXPECT_FLOAT_EQ(sky->groundAltitudeM, 500.0f);
   ASSERT_EQ(s.lights.size(), 1u);
   const Light& sun = s.lights[0];
-  EXPECT_TRUE(sun.atmosphereSun);
+  EXPECT_EQ(sun.technique, "atmosphere");
   // Towards +x (azimuth 90°), 30° up; the light travels the other way.
   EXPECT_NEAR(sun.direction.x, -std::cos(glm::radians(30.0f)), 1e-6);
   EXPECT_NEAR(sun.direction.y, -0.5f, 1e-6);
@@ -479,9 +483,12 @@ TEST_F(SceneFolder, AtmosphereAddsTheSunAsALightAndChecksItsParameters) {
   // The solar constant's visible part: ASTM G-173's extraterrestrial spectrum gives about 133 klux.
   EXPECT_NEAR(sun.intensity, 1.33e5f, 0.03e5f);
   EXPECT_NEAR(luminousIntegral(sun.spd), 1.0, 1e-9);
-  // applySun follows edits of the angles.
-  s.atmosphere->sunElevationDeg = 90.0f;
-  applySun(s);
+  // applyTechniqueLights follows edits of the angles, and a copy of the scene has its own section.
+  Scene copy = s;
+  sky->sunElevationDeg = 90.0f;
+  applyTechniqueLights(s);
+  applyTechniqueLights(copy);
+  EXPECT_NEAR(copy.lights[0].direction.y, -0.5f, 1e-6);
   EXPECT_NEAR(s.lights[0].direction.y, -1.0f, 1e-6);
 
   EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.sun.elevation=95"}); }),

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <glm/glm.hpp>
 
 #include "spectral/observer.h"
 
@@ -78,6 +79,10 @@ class WavelengthSampler {
 // model.h): where an RGB mode needs a per-channel physical coefficient (water, the sky), it is
 // evaluated at these.
 inline constexpr std::array<float, 3> kRgbStandInWavelengthsNm{680.0f, 550.0f, 440.0f};
+// As an RGB mode's batch of "wavelengths": R, G, B and a fourth channel of the caller's choice.
+inline glm::vec4 rgbStandInWavelengths(float fourthNm) {
+  return {kRgbStandInWavelengthsNm[0], kRgbStandInWavelengthsNm[1], kRgbStandInWavelengthsNm[2], fourthNm};
+}
 
 using IntegrationMatrix = Eigen::Matrix<double, 3, 4>;
 // M[c][j] = curve_c(λ_j) / (n·pdf_j): tristimulus += M · (L(λ_0..3)).

@@ -5,6 +5,7 @@
 
 #include "scene/scene_loader.h"
 #include "core/error.h"
+#include "techniques/atmosphere/atmosphere_section.h"
 #include "viewer/panels.h"
 
 namespace prism::viewer {
@@ -21,10 +22,12 @@ bool slider(const char* label, double& value, float lo, float hi, const char* fo
 class SkyPanel final : public Panel {
  public:
   const char* title() const override { return "Sky"; }
-  bool applies(const Scene& scene) const override { return scene.atmosphere.has_value(); }
+  bool applies(const Scene& scene) const override {
+    return scene.techniques.has(atmosphere::AtmosphereSection::kKey);
+  }
 
   void draw(PanelContext& context) override {
-    Atmosphere& a = *context.scene.atmosphere;
+    atmosphere::AtmosphereSection& a = *context.scene.techniques.find<atmosphere::AtmosphereSection>();
     atmosphere::AtmosphereParameters& p = a.parameters;
     bool changed = ImGui::SliderFloat("sun elevation deg", &a.sunElevationDeg, -10.0f, 90.0f, "%.1f");
     changed |= ImGui::SliderFloat("sun azimuth deg", &a.sunAzimuthDeg, -180.0f, 180.0f, "%.0f");
@@ -58,7 +61,7 @@ class SkyPanel final : public Panel {
       context.actionError = e.what();
       return;
     }
-    applySun(context.scene);
+    applyTechniqueLights(context.scene);
     context.changes.scene = true;
   }
 };

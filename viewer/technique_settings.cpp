@@ -7,23 +7,27 @@
 
 #include "scene/scene_loader.h"
 #include "core/error.h"
+#include "techniques/atmosphere/atmosphere_section.h"
+#include "techniques/underwater/water_section.h"
 #include "viewer/viewer_settings.h"
 
 namespace prism::viewer {
 
 bool setWaterKey(Scene& scene, const std::string& key, const std::string& value) {
   if (key != "water.type" && key != "water.depth") return false;
-  if (!scene.water) throw Error("the scene has no water");
-  if (key == "water.type") scene.water->type = value;
-  else scene.water->depthM = std::max(0.0f, parseFloat(key, value));
-  resolveWater(*scene.water);
+  auto* water = scene.techniques.find<underwater::WaterSection>();
+  if (!water) throw Error("the scene has no water");
+  if (key == "water.type") water->type = value;
+  else water->depthM = std::max(0.0f, parseFloat(key, value));
+  water->resolve();
   return true;
 }
 
 bool setSkyKey(Scene& scene, const std::string& key, const std::string& value) {
   if (key.rfind("sky.", 0) != 0) return false;
-  if (!scene.atmosphere) throw Error("the scene has no atmosphere");
-  Atmosphere& a = *scene.atmosphere;
+  auto* sky = scene.techniques.find<atmosphere::AtmosphereSection>();
+  if (!sky) throw Error("the scene has no atmosphere");
+  atmosphere::AtmosphereSection& a = *sky;
   atmosphere::AtmosphereParameters p = a.parameters;
   std::string_view k = std::string_view(key).substr(4);
   if (k == "elevation") a.sunElevationDeg = std::clamp(parseFloat(key, value), -90.0f, 90.0f);
@@ -38,7 +42,7 @@ bool setSkyKey(Scene& scene, const std::string& key, const std::string& value) {
                                "multiple-scattering)", key));
   atmosphere::validate(p);  // nothing changes on an error
   a.parameters = p;
-  applySun(scene);
+  applyTechniqueLights(scene);
   return true;
 }
 

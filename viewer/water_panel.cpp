@@ -2,9 +2,9 @@
 // depth and the multipliers of each coefficient. Sees only the PanelContext.
 #include <imgui.h>
 
-#include "scene/scene_loader.h"
 #include "core/error.h"
 #include "techniques/underwater/jerlov_water.h"
+#include "techniques/underwater/water_section.h"
 #include "viewer/panel_widgets.h"
 #include "viewer/panels.h"
 
@@ -14,10 +14,10 @@ namespace {
 class WaterPanel final : public Panel {
  public:
   const char* title() const override { return "Water"; }
-  bool applies(const Scene& scene) const override { return scene.water.has_value(); }
+  bool applies(const Scene& scene) const override { return scene.techniques.has(underwater::WaterSection::kKey); }
 
   void draw(PanelContext& context) override {
-    Water& w = *context.scene.water;
+    underwater::WaterSection& w = *context.scene.techniques.find<underwater::WaterSection>();
     if (mTypesOf != w.dataset) {  // read from data/ when the data set changes, not every frame
       mTypes = underwater::listJerlovTypes(underwater::jerlovDatasetFromName(w.dataset));
       mTypesOf = w.dataset;
@@ -33,12 +33,12 @@ class WaterPanel final : public Panel {
 
  private:
   static void apply(PanelContext& context) {
-    Water& w = *context.scene.water;
+    underwater::WaterSection& w = *context.scene.techniques.find<underwater::WaterSection>();
     try {
-      resolveWater(w);
+      w.resolve();
     } catch (const Error& e) {  // a type the other data set lacks: back to its first
       w.type = underwater::listJerlovTypes(underwater::jerlovDatasetFromName(w.dataset)).front();
-      resolveWater(w);
+      w.resolve();
       context.actionError = e.what();
     }
     context.changes.scene = true;

@@ -26,11 +26,14 @@ layout(std430, binding = 1) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
 layout(std430, binding = 3) readonly buffer LightSpectra { vec4 lightSpectra[]; };
 layout(std430, binding = 4) readonly buffer MaterialSpectra { vec4 materialSpectra[]; };
+// Each technique's block, where its shared header says.
 #ifdef PRISM_TECHNIQUE_WATER
-layout(std430, binding = 5) readonly buffer WaterSpectra { vec4 waterSpectra[]; };
+layout(std140, binding = kWaterConstantsBinding) uniform Water { WaterConstants water; };
+layout(std430, binding = kWaterSpectraBinding) readonly buffer WaterSpectra { vec4 waterSpectra[]; };
 #endif
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
-layout(std430, binding = 6) readonly buffer Atmospheres { GpuAtmosphere atmospheres[]; };
+layout(std140, binding = kSkyConstantsBinding) uniform Sky { SkyConstants sky; };
+layout(std430, binding = kSkyAtmospheresBinding) readonly buffer Atmospheres { GpuAtmosphere atmospheres[]; };
 layout(std430, binding = 7) readonly buffer SkyIrradiance { vec4 skyIrradianceSh[]; };
 #endif
 
@@ -59,9 +62,11 @@ vec4 frameMaterialSpectrum(int s, int b, int j) {
   return materialSpectra[materialSpectrumIndex(s, b, j, frame.batchCount)];
 }
 #ifdef PRISM_TECHNIQUE_WATER
+WaterConstants frameWater() { return water; }
 vec4 frameWaterSpectrum(int b, int j) { return waterSpectra[waterSpectrumIndex(b, j)]; }
 #endif
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
+SkyConstants frameSky() { return sky; }
 GpuAtmosphere frameAtmosphere(int b) { return atmospheres[b]; }
 vec4 transmittanceLutTexel(int b, int x, int y) { return texelFetch(uTransmittanceLut, ivec3(x, y, b), 0); }
 vec4 multipleScatteringLutTexel(int b, int x, int y) {

@@ -47,6 +47,18 @@ struct GpuAtmosphere {
   vec4 options;             // x 1: multiple scattering on; y sun angular radius (rad); zw unused
 };
 
+// The sky's block of the lighting pass (techniques/atmosphere/atmosphere_section.h packs it): its
+// constants in a std140 uniform block, one GpuAtmosphere per batch in a storage buffer (which
+// the tables' compute passes read as well).
+const int kSkyConstantsBinding = 2;
+const int kSkyAtmospheresBinding = 6;
+struct SkyConstants {
+  float originKm;  // distance of the world's origin from the planet's centre
+  int sunLight;    // index of the light that is the sun
+  float pad0;
+  float pad1;
+};
+
 struct AtmosphereDensity {
   float rayleigh;
   float mie;

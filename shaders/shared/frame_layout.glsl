@@ -12,8 +12,11 @@
 //
 // Spectra. Flat arrays of vec4 (one batch each), indexed by the helpers below, which both sides
 // call: a light's normalised SPD (the light after the last, lightCount, is the background's
-// radiance); a material's measured reflectance (j = 0) or its conductor n (j = 0) and k (j = 1);
-// the water's σs (j = 0), σt (j = 1) and Kd (j = 2) in 1/m (in RGB mode at 680, 550 and 440 nm).
+// radiance); a material's measured reflectance (j = 0) or its conductor n (j = 0) and k (j = 1).
+//
+// Techniques. Each technique declares its own block (constants and per-batch data) in its own
+// shared header (underwater.glsl, atmosphere_model.glsl) and packs it on the CPU
+// (techniques/technique_section.h): nothing of theirs is here.
 
 const int kModeRgb = 0;
 const int kModeNaive = 1;        // box upsampling (495 / 570 nm)
@@ -71,14 +74,6 @@ struct FrameConstants {
   int gbufferCoefficients;     // 1: the G-buffer holds Jakob–Hanika coefficients (upsamplingCoefficients reads them)
   int upsamplingResolution;    // of the Jakob–Hanika table, per side
   int filteredLookup;          // 1: one filtered fetch of the table; 0: the manual blend
-  int water;                   // 1: the camera is under water (underwater.glsl; the water spectra)
-  float waterDepthM;           // the camera's depth below the water surface
-  float waterSurfaceY;         // world height of the water surface (m)
-  int atmosphere;              // 1: the scene has a sky (atmosphere_lighting.glsl; frameAtmosphere(b))
-  int atmosphereSunLight;      // index of the light that is the atmosphere's sun
-  float atmosphereOriginKm;    // distance of the world's origin from the planet's centre
-  float pad0;
-  float pad1;
 };
 
 PRISM_INLINE int lightSpectrumIndex(int light, int batch, int batchCount) {
@@ -87,7 +82,6 @@ PRISM_INLINE int lightSpectrumIndex(int light, int batch, int batchCount) {
 PRISM_INLINE int materialSpectrumIndex(int spectra, int batch, int j, int batchCount) {
   return (spectra * batchCount + batch) * 2 + j;
 }
-PRISM_INLINE int waterSpectrumIndex(int batch, int j) { return batch * 3 + j; }
 
 // One G-buffer sample.
 

@@ -8,9 +8,11 @@
 //   vec4 frameMaterialSpectrum(int s, int b, int j);
 //   float shadowDepthAt(int layer, int x, int y);    (x, y already clamped to the map)
 //   vec3 upsamplingCoefficients(vec3 rgb);           (Jakob–Hanika table lookup)
-//   vec4 frameWaterSpectrum(int b, int j);           (σs, σt, Kd; variants with water)
-//   GpuAtmosphere frameAtmosphere(int b);            (variants with a sky), and the tables'
-//   accessors of atmosphere_luts.glsl and atmosphere_lighting.glsl
+//   WaterConstants frameWater();  vec4 frameWaterSpectrum(int b, int j);   (variants with water:
+//     its block, underwater.glsl)
+//   SkyConstants frameSky();  GpuAtmosphere frameAtmosphere(int b);        (variants with a sky:
+//     its block, atmosphere_model.glsl), and the tables' accessors of atmosphere_luts.glsl and
+//     atmosphere_lighting.glsl
 //
 // Techniques specialise the file at compile time, never by a run-time test per pixel: the
 // includer defines PRISM_TECHNIQUE_<NAME> for each technique of the scene (the renderer compiles
@@ -97,18 +99,16 @@ PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, 
   vec4 sigmaS = frameWaterSpectrum(b, 0);
   vec4 sigmaT = frameWaterSpectrum(b, 1);
   vec4 kd = frameWaterSpectrum(b, 2);
-  float inWaterM = viewDir.y > 0.0f ? min(distanceM, fc.waterDepthM / viewDir.y) : distanceM;
+  float inWaterM = viewDir.y > 0.0f ? min(distanceM, frameWater().depthM / viewDir.y) : distanceM;
   return radiance * waterTransmittance(sigmaT, inWaterM) +
-         waterInScattering(sigmaS, sigmaT, kd, fc.waterDepthM, -viewDir.y, inWaterM) *
+         waterInScattering(sigmaS, sigmaT, kd, frameWater().depthM, -viewDir.y, inWaterM) *
              sunIrradianceAtSurface(fc, b);
 }
 #endif
 
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
 // Unit direction towards the atmosphere's sun.
-PRISM_INLINE vec3 atmosphereSun(IN(FrameConstants) fc) {
-  return -frameLight(fc.atmosphereSunLight).direction;
-}
+PRISM_INLINE vec3 atmosphereSun() { return -frameLight(frameSky().sunLight).direction; }
 #endif
 
 // Tristimulus of the background (pixels where no geometry is), seen towards farPoint (a point
@@ -130,8 +130,8 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
   float distanceM = 1e30f;  // throughWater stops it at the surface when it looks up
 #endif
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
-  vec3 cameraKm = planetPosition(fc.atmosphereOriginKm, cameraPosition);
-  vec3 toSun = atmosphereSun(fc);
+  vec3 cameraKm = planetPosition(frameSky().originKm, cameraPosition);
+  vec3 toSun = atmosphereSun();
 #endif
   vec3 tristimulus = vec3(0.0f);
   for (int b = 0; b < fc.batchCount; ++b) {
@@ -174,7 +174,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
                         : 0.0f;
 #ifdef PRISM_TECHNIQUE_WATER
     waterPathM[l] = light.type == kLightDirectional
-                        ? fc.waterSurfaceY - s.position.y
+                        ? frameWater().surfaceY - s.position.y
                         : li.distance;
 #endif
   }
@@ -186,8 +186,8 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
   // The sky's per-pixel geometry, once for every batch.
-  vec3 pointKm = planetPosition(fc.atmosphereOriginKm, s.position);
-  vec3 toSun = atmosphereSun(fc);
+  vec3 pointKm = planetPosition(frameSky().originKm, s.position);
+  vec3 toSun = atmosphereSun();
   float distanceKm = length(s.position - cameraPosition) * 1e-3f;
 #endif
 
@@ -214,7 +214,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
       vec4 reflection = surfaceReflection(terms[l], spectralConductor, albedo, conductorK, metallic);
       vec4 arriving = frameLightSpectrum(l, b) * irradiance[l];
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
-      if (l == fc.atmosphereSunLight && irradiance[l] > 0.0f) {
+      if (l == frameSky().sunLight && irradiance[l] > 0.0f) {
         arriving *= sunTransmittanceTo(frameAtmosphere(b), b, pointKm, toSun);
       }
 #endif

@@ -20,6 +20,19 @@
 // quotient (1 − e^(−xS))/x is its series S·(1 − xS/2 + (xS)²/6), which keeps it exact as x → 0
 // (looking up where Kd > σt, as in clear water beyond 675 nm), where the closed form is 0/0.
 
+// The water's block of the lighting pass (techniques/underwater/water_section.h packs it): its
+// constants in a std140 uniform block, and per batch σs (j = 0), σt = σa + σs (j = 1) and Kd
+// (j = 2), 1/m, in a storage buffer at waterSpectrumIndex(b, j).
+const int kWaterConstantsBinding = 1;
+const int kWaterSpectraBinding = 5;
+struct WaterConstants {
+  float surfaceY;  // world height of the water surface (m)
+  float depthM;    // the camera's depth below it
+  float pad0;
+  float pad1;
+};
+PRISM_INLINE int waterSpectrumIndex(int batch, int j) { return batch * 3 + j; }
+
 // The single-scattered radiance reaching the camera over S metres of the ray, per unit of
 // downwelling irradiance at the surface (multiply by E(0)).
 PRISM_INLINE vec4 waterInScattering(IN(vec4) sigmaS, IN(vec4) sigmaT, IN(vec4) kd, float cameraDepthM,

@@ -4,12 +4,8 @@
 
 #include <cmath>
 
-#include "shared_cpp.h"
 #include "techniques/underwater/jerlov_water.h"
-
-namespace prism::shared {
-#include "underwater.glsl"
-}  // namespace prism::shared
+#include "techniques/underwater/underwater_layout.h"
 
 namespace prism::underwater {
 namespace {

@@ -9,7 +9,9 @@ vec4 frameLightSpectrum(int l, int b) { return vec4(l + b); }
 vec4 frameMaterialSpectrum(int s, int b, int j) { return vec4(s + b + j); }
 float shadowDepthAt(int layer, int x, int y) { return float(layer + x + y); }
 vec3 upsamplingCoefficients(vec3 rgb) { return rgb; }
+WaterConstants frameWater() { return WaterConstants(1.0, 2.0, 0.0, 0.0); }
 vec4 frameWaterSpectrum(int b, int j) { return vec4(b + j); }
+SkyConstants frameSky() { return SkyConstants(6360.0, 0, 0.0, 0.0); }
 GpuAtmosphere frameAtmosphere(int b) {
   return GpuAtmosphere(vec4(b), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
 }

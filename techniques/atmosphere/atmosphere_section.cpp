@@ -1,0 +1,90 @@
+#include "techniques/atmosphere/atmosphere_section.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "spectral/sampling.h"
+
+namespace prism::atmosphere {
+
+glm::vec3 AtmosphereSection::sunDirection() const {
+  float e = glm::radians(sunElevationDeg), a = glm::radians(sunAzimuthDeg);
+  return glm::vec3(std::cos(e) * std::sin(a), std::sin(e), -std::cos(e) * std::cos(a));
+}
+
+std::optional<TechniqueLight> AtmosphereSection::light() const {
+  TechniqueLight sun;
+  sun.direction = -sunDirection();
+  sun.spd = solarIrradianceSpectrum().toDense();
+  sun.spdLabel = "sun (top of the atmosphere)";
+  sun.castsShadows = true;
+  return sun;
+}
+
+TechniqueBlock AtmosphereSection::pack(const FramePackInput& input) const {
+  if (input.ownLight < 0) throw Error("the atmosphere has no sun light (the scene loader adds it)");
+  TechniqueBlock block;
+  block.key = kKey;
+  shared::SkyConstants constants{};
+  constants.originKm = static_cast<float>(originKm());
+  constants.sunLight = input.ownLight;
+  block.constantsBinding = shared::kSkyConstantsBinding;
+  block.setConstants(constants);
+  block.dataBinding = shared::kSkyAtmospheresBinding;
+  const int batchCount = static_cast<int>(input.batches.size());
+  for (int b = 0; b < batchCount; ++b) {
+    glm::vec4 solar =
+        input.lightSpectra[static_cast<std::size_t>(shared::lightSpectrumIndex(input.ownLight, b, batchCount))] *
+        input.ownLightIntensity;
+    glm::vec4 lambdaNm = input.batches[static_cast<std::size_t>(b)].lambdaNm;
+    if (input.rgbMode) {
+      solar.w = 0.0f;
+      lambdaNm = rgbStandInWavelengths(0.0f);  // no fourth channel: the sky's coefficients there are 0
+    }
+    block.appendData(packAtmosphere(parameters, lambdaNm, solar));
+  }
+  return block;
+}
+
+std::unique_ptr<TechniqueSection> AtmosphereSection::parse(const schema::Node& n,
+                                                           const TechniqueSections& earlier) {
+  using schema::Range;
+  if (earlier.has("water")) n.fail("a scene has water or an atmosphere, not both");
+  n.expectObject({"sun", "ground_altitude", "planet_radius", "atmosphere_height", "rayleigh_scale_height",
+                  "aerosols", "turbidity", "angstrom_alpha", "mie_scale_height", "mie_albedo", "mie_g",
+                  "ozone", "ground_albedo", "multiple_scattering"});
+  auto a = std::make_unique<AtmosphereSection>();
+  AtmosphereParameters& p = a->parameters;
+  if (auto sun = n.optionalChild("sun")) {
+    sun->expectObject({"elevation", "azimuth"});
+    a->sunElevationDeg = sun->numberF("elevation", a->sunElevationDeg, Range::closed(-90.0, 90.0));
+    a->sunAzimuthDeg = sun->numberF("azimuth", a->sunAzimuthDeg, Range::closed(-360.0, 360.0));
+  }
+  a->groundAltitudeM = n.numberF("ground_altitude", 0.0f, Range::closed(0.0, 50000.0));
+  p.bottomRadiusKm = n.number("planet_radius", p.bottomRadiusKm, Range::closed(1.0, 1e5));
+  p.topRadiusKm = p.bottomRadiusKm + n.number("atmosphere_height", p.topRadiusKm - 6360.0, Range::closed(1.0, 1000.0));
+  p.rayleighScaleHeightKm = n.number("rayleigh_scale_height", p.rayleighScaleHeightKm, Range::above(0.01));
+  p.aerosols = n.boolean("aerosols", p.aerosols);
+  p.mieAngstromBeta = n.number("turbidity", p.mieAngstromBeta, Range::closed(0.0, 5.0));
+  p.mieAngstromAlpha = n.number("angstrom_alpha", p.mieAngstromAlpha, Range::closed(-4.0, 4.0));
+  p.mieScaleHeightKm = n.number("mie_scale_height", p.mieScaleHeightKm, Range::above(0.01));
+  p.mieSingleScatteringAlbedo = n.number("mie_albedo", p.mieSingleScatteringAlbedo, Range::closed(0.0, 1.0));
+  p.miePhaseG = n.number("mie_g", p.miePhaseG, Range::open(-1.0, 1.0));
+  p.ozoneColumnDu = n.number("ozone", p.ozoneColumnDu, Range::closed(0.0, 1000.0));
+  p.groundAlbedo = n.number("ground_albedo", p.groundAlbedo, Range::closed(0.0, 1.0));
+  p.multipleScattering = n.boolean("multiple_scattering", p.multipleScattering);
+  try {
+    validate(p);
+  } catch (const Error& e) {
+    n.fail(e.what());
+  }
+  if (a->groundAltitudeM * 1e-3 >= p.topRadiusKm - p.bottomRadiusKm) {
+    n.child("ground_altitude").fail(fmt::format("{} m must be below the top of the atmosphere ({} km)",
+                                                a->groundAltitudeM, p.topRadiusKm - p.bottomRadiusKm));
+  }
+  return a;
+}
+
+}  // namespace prism::atmosphere

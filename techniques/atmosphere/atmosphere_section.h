@@ -1,0 +1,43 @@
+// The scene file's "atmosphere" section (docs/scene-format.md): a planet's atmosphere around the
+// scene. The sky is the background, the sun a directional light the section adds to the scene
+// (the measured solar spectrum above the atmosphere, attenuated per point by the sky's
+// transmittance), and the sky lights the surfaces (shaders/shared/atmosphere_lighting.glsl,
+// under PRISM_TECHNIQUE_ATMOSPHERE). A scene has water or an atmosphere, not both.
+#pragma once
+
+#include <memory>
+
+#include "techniques/atmosphere/atmosphere_parameters.h"
+#include "techniques/technique_section.h"
+
+namespace prism::atmosphere {
+
+struct AtmosphereSection final : TechniqueSection {
+  static constexpr std::string_view kKey = "atmosphere";
+
+  AtmosphereParameters parameters;
+  float sunElevationDeg = 20.0f;  // above the horizon
+  float sunAzimuthDeg = 180.0f;   // 0: towards −z, 90: towards +x
+  float groundAltitudeM = 0.0f;   // height of the world's y = 0 above the ground
+
+  // Unit direction towards the sun (world, y up).
+  glm::vec3 sunDirection() const;
+  // Distance of the world's origin from the planet's centre.
+  double originKm() const { return parameters.bottomRadiusKm + groundAltitudeM * 1e-3; }
+
+  std::string_view key() const override { return kKey; }
+  std::string_view shaderDefine() const override { return "PRISM_TECHNIQUE_ATMOSPHERE"; }
+  std::unique_ptr<TechniqueSection> clone() const override { return std::make_unique<AtmosphereSection>(*this); }
+  // The sun: the solar spectrum at the top of the atmosphere, casting shadows.
+  std::optional<TechniqueLight> light() const override;
+  // SkyConstants (the origin's distance from the planet's centre, the sun light's index) and, per
+  // batch, the GpuAtmosphere of atmosphere_model.glsl. The sun's irradiance above the atmosphere
+  // is the sun light's own (its SPD × intensity: the measured solar spectrum unless edited; in
+  // RGB mode its RGB, at 680, 550 and 440 nm, the RGB-3 strategy of sky_strategy.h), so that the
+  // sky follows the light. Error when the scene lost its sun light.
+  TechniqueBlock pack(const FramePackInput& input) const override;
+
+  static std::unique_ptr<TechniqueSection> parse(const schema::Node& node, const TechniqueSections& earlier);
+};
+
+}  // namespace prism::atmosphere

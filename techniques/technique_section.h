@@ -1,0 +1,147 @@
+// The technique seam: each technique (techniques/<name>/) owns a section of the scene file — its
+// data, parsed and validated by the technique — and the scene holds it as a TechniqueSection
+// without including the technique's headers. The scene loader reads the sections of the
+// techniques listed in techniques/registry.h, the one place a new technique is registered. Per
+// frame the renderer asks each section for its block (pack: its constants and its per-batch
+// data, laid out by the technique's shared GLSL header), uploads and binds it where that header
+// says, and compiles the lighting pass with each section's shader define.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstring>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/json_schema.h"
+#include "frame_layout.h"
+#include "spectral/spectrum.h"
+
+namespace prism {
+
+// A directional light a technique puts into the scene (the sky's sun). The scene loader adds it
+// to the scene's lights like any other, normalised photometrically (spd is absolute, W/m²/nm;
+// its luminous integral becomes the light's intensity in lux), and tags it with the technique's
+// key; the technique keeps its direction in step when the section changes (applyTechniqueLights).
+struct TechniqueLight {
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // of travel, unit
+  Spectrum spd;
+  std::string spdLabel;
+  bool castsShadows = true;
+};
+
+// What a technique's block is packed from: the frame's wavelength batches (in RGB mode one batch
+// whose channels are R, G, B), where the frame is seen from and where the scene file put the
+// camera (which anchors e.g. the water's surface), and the light the technique added (its
+// index among the frame's lights and its intensity, −1 and 0 when it added none) with the
+// frame's light spectra (frame_layout.glsl's lightSpectrumIndex).
+struct FramePackInput {
+  std::span<const shared::GpuBatch> batches;
+  bool rgbMode = false;
+  glm::vec3 cameraPositionW{0.0f};
+  glm::vec3 sceneCameraPositionW{0.0f};
+  std::span<const glm::vec4> lightSpectra;
+  int ownLight = -1;
+  float ownLightIntensity = 0.0f;
+};
+
+// A technique's part of one frame, as the GPU reads it: `constants` for a std140 uniform block at
+// constantsBinding, `data` for a std430 storage buffer at dataBinding (bindings and layouts from
+// the technique's shared GLSL header). The CPU twin reads the same bytes.
+struct TechniqueBlock {
+  std::string key;
+  int constantsBinding = -1;
+  std::vector<std::byte> constants;
+  int dataBinding = -1;
+  std::vector<std::byte> data;
+
+  template <class T>
+  void setConstants(const T& value) {
+    constants.resize(sizeof(T));
+    std::memcpy(constants.data(), &value, sizeof(T));
+  }
+  template <class T>
+  void appendData(const T& value) {
+    std::size_t at = data.size();
+    data.resize(at + sizeof(T));
+    std::memcpy(data.data() + at, &value, sizeof(T));
+  }
+  template <class T>
+  T constantsAs() const {
+    T value{};
+    std::memcpy(&value, constants.data(), std::min(sizeof(T), constants.size()));
+    return value;
+  }
+  template <class T>
+  T dataAt(std::size_t index) const {
+    T value{};
+    std::memcpy(&value, data.data() + index * sizeof(T), sizeof(T));
+    return value;
+  }
+  template <class T>
+  std::size_t dataCount() const { return data.size() / sizeof(T); }
+};
+
+class TechniqueSection {
+ public:
+  virtual ~TechniqueSection() = default;
+  // The section's key in a scene file ("water", "atmosphere"), and the technique's name.
+  virtual std::string_view key() const = 0;
+  // The #define that specialises the lighting pass for it (PRISM_TECHNIQUE_<NAME>, see
+  // shaders/shared/pixel_shading.glsl).
+  virtual std::string_view shaderDefine() const = 0;
+  virtual std::unique_ptr<TechniqueSection> clone() const = 0;
+  // The light the technique adds to the scene, if any.
+  virtual std::optional<TechniqueLight> light() const { return std::nullopt; }
+  // Its block for one frame.
+  virtual TechniqueBlock pack(const FramePackInput& input) const = 0;
+};
+
+// A scene's sections, at most one per technique, in registration order; copied deeply (a scene
+// is a value: an editor changes its copy).
+class TechniqueSections {
+ public:
+  TechniqueSections() = default;
+  TechniqueSections(const TechniqueSections& other);
+  TechniqueSections& operator=(const TechniqueSections& other);
+  TechniqueSections(TechniqueSections&&) noexcept = default;
+  TechniqueSections& operator=(TechniqueSections&&) noexcept = default;
+
+  void add(std::unique_ptr<TechniqueSection> section);  // replaces a section of the same key
+  void remove(std::string_view key);
+  bool has(std::string_view key) const { return find(key) != nullptr; }
+  const TechniqueSection* find(std::string_view key) const;
+  TechniqueSection* find(std::string_view key);
+  template <class T>
+  const T* find() const {
+    for (const auto& s : mSections)
+      if (auto* t = dynamic_cast<const T*>(s.get())) return t;
+    return nullptr;
+  }
+  template <class T>
+  T* find() {
+    for (auto& s : mSections)
+      if (auto* t = dynamic_cast<T*>(s.get())) return t;
+    return nullptr;
+  }
+  const std::vector<std::unique_ptr<TechniqueSection>>& all() const { return mSections; }
+
+ private:
+  std::vector<std::unique_ptr<TechniqueSection>> mSections;
+};
+
+// How the scene loader reads one technique's section: `parse` checks the node (errors through
+// schema::Node::fail, so that they name the scene file and the JSON pointer) and may refuse
+// sections parsed before it (`earlier`), as the sky refuses water.
+struct TechniqueSectionParser {
+  std::string_view key;
+  std::unique_ptr<TechniqueSection> (*parse)(const schema::Node& node, const TechniqueSections& earlier);
+};
+
+}  // namespace prism

@@ -1,0 +1,71 @@
+#include "techniques/underwater/water_section.h"
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "spectral/sampling.h"
+#include "techniques/underwater/jerlov_water.h"
+#include "techniques/underwater/underwater_layout.h"
+
+namespace prism::underwater {
+
+void WaterSection::resolve() {
+  WaterProperties properties = jerlovWater(type, jerlovDatasetFromName(dataset));
+  sigmaA = properties.sigmaA * absorptionScale;
+  sigmaS = properties.sigmaS * scatteringScale;
+  kd = properties.kd * kdScale;
+}
+
+namespace {
+
+glm::vec4 at4(const Spectrum& s, const glm::vec4& lambdaNm) {
+  glm::vec4 v;
+  for (int j = 0; j < 4; ++j) v[j] = static_cast<float>(s.at(lambdaNm[j]));
+  return v;
+}
+
+}  // namespace
+
+TechniqueBlock WaterSection::pack(const FramePackInput& input) const {
+  TechniqueBlock block;
+  block.key = kKey;
+  shared::WaterConstants constants{};
+  constants.surfaceY = surfaceY(input.sceneCameraPositionW.y);
+  constants.depthM = std::max(constants.surfaceY - input.cameraPositionW.y, 0.0f);
+  block.constantsBinding = shared::kWaterConstantsBinding;
+  block.setConstants(constants);
+  block.dataBinding = shared::kWaterSpectraBinding;
+  for (const shared::GpuBatch& batch : input.batches) {
+    glm::vec4 lambdaNm = input.rgbMode ? rgbStandInWavelengths(kRgbStandInWavelengthsNm[1]) : batch.lambdaNm;
+    glm::vec4 s = at4(sigmaS, lambdaNm), a = at4(sigmaA, lambdaNm);
+    block.appendData(s);
+    block.appendData(a + s);
+    block.appendData(at4(kd, lambdaNm));
+  }
+  return block;
+}
+
+std::unique_ptr<TechniqueSection> WaterSection::parse(const schema::Node& n, const TechniqueSections&) {
+  using schema::Range;
+  n.expectObject({"type", "dataset", "depth", "scattering_scale", "absorption_scale", "kd_scale"});
+  auto w = std::make_unique<WaterSection>();
+  if (auto d = n.optionalChild("dataset")) w->dataset = d->string();
+  if (auto t = n.optionalChild("type")) w->type = t->string();
+  w->depthM = n.numberF("depth", w->depthM, Range::atLeast(0.0));
+  w->scatteringScale = n.numberF("scattering_scale", 1.0f, Range::atLeast(0.0));
+  w->absorptionScale = n.numberF("absorption_scale", 1.0f, Range::atLeast(0.0));
+  w->kdScale = n.numberF("kd_scale", 1.0f, Range::atLeast(0.0));
+  try {
+    jerlovDatasetFromName(w->dataset);
+  } catch (const Error& e) {
+    n.child("dataset").fail(e.what());
+  }
+  try {
+    w->resolve();
+  } catch (const Error& e) {
+    (n.has("type") ? n.child("type") : n).fail(e.what());
+  }
+  return w;
+}
+
+}  // namespace prism::underwater

@@ -3,6 +3,7 @@
 #include <span>
 
 #include "gpu/compute.h"
+#include "techniques/atmosphere/atmosphere_section.h"
 #include "core/data_files.h"
 
 namespace prism::render {
@@ -98,6 +99,38 @@ void AtmospherePass::update(const std::vector<shared::GpuAtmosphere>& batches, c
   mAerialPerspectiveProgram.setUniform("uSun", view.sun);
   gpu::runCompute(mAerialPerspectiveProgram,
                   {groups(shared::kAerialPerspectiveSize), groups(shared::kAerialPerspectiveSize), layers}, barriers);
+}
+
+void AtmospherePass::run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera) {
+  const auto sky = block.constantsAs<shared::SkyConstants>();
+  std::vector<shared::GpuAtmosphere> batches;
+  for (std::size_t b = 0; b < block.dataCount<shared::GpuAtmosphere>(); ++b) {
+    batches.push_back(block.dataAt<shared::GpuAtmosphere>(b));
+  }
+  AtmosphereView view;
+  view.originKm = sky.originKm;
+  view.cameraWorldM = camera.position;
+  view.inverseViewProjection = camera.inverseViewProjection;
+  // The sun light is the one source of the sun's direction (an editor may turn it).
+  view.sun = -glm::normalize(scene.lights.at(static_cast<std::size_t>(sky.sunLight)).direction);
+  update(batches, view);
+}
+
+// Bindings of lighting.frag's sky section.
+void AtmospherePass::bindForLighting() const {
+  mSkyIrradiance.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+  mTransmittance.bind(7);
+  mMultipleScattering.bind(8);
+  mSkyView.bind(9);
+  mAerialPerspective.bind(10);
+}
+
+std::size_t AtmospherePass::gpuMemoryBytes() const {
+  std::size_t bytes = mSkyIrradiance.sizeBytes() + mAtmospheres.sizeBytes();
+  for (const gpu::Texture2DArray* t : {&mTransmittance, &mMultipleScattering, &mSkyView, &mAerialPerspective}) {
+    bytes += t->sizeBytes();
+  }
+  return bytes;
 }
 
 }  // namespace prism::render

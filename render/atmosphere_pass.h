@@ -16,6 +16,7 @@
 #include "gpu/buffer.h"
 #include "gpu/program.h"
 #include "gpu/texture.h"
+#include "render/technique_pass.h"
 #include "techniques/atmosphere/atmosphere_layout.h"
 
 namespace prism::render {
@@ -29,13 +30,19 @@ struct AtmosphereView {
   float cameraRadiusKm() const;
 };
 
-class AtmospherePass {
+class AtmospherePass final : public TechniquePass {
  public:
   AtmospherePass();  // compiles the passes (a context must be current)
 
   // Every table for these batches and this view. Textures are reallocated when the batch count
   // changes.
   void update(const std::vector<shared::GpuAtmosphere>& batches, const AtmosphereView& view);
+
+  // The seam: update() from the sky's block (its batches, origin and sun light) and the camera;
+  // the lighting pass reads the sky irradiance and the tables.
+  void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera) override;
+  void bindForLighting() const override;
+  std::size_t gpuMemoryBytes() const override;
 
   const gpu::Texture2DArray& transmittance() const { return mTransmittance; }  // optical depth
   const gpu::Texture2DArray& multipleScattering() const { return mMultipleScattering; }

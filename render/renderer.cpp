@@ -9,7 +9,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/procedural_mesh.h"
-#include "techniques/atmosphere/atmosphere_section.h"
 #include "render/upsampling_texture.h"
 #include "spectral/colour_space.h"
 #include "core/data_files.h"
@@ -163,8 +162,9 @@ void Renderer::reloadShaders() {
   gpu::Program lighting = lightingProgram(mScene);
   gpu::Program forward = passProgram("forward.vert", "forward.frag", "forward pass");
   gpu::Program post = passProgram("fullscreen.vert", "post.frag", "post pass");
-  // The sky's passes share shaders/shared with the lighting pass: reloaded together.
-  std::unique_ptr<AtmospherePass> atmosphere = mAtmosphere ? std::make_unique<AtmospherePass>() : nullptr;
+  // The techniques' passes share shaders/shared with the lighting pass: reloaded together.
+  std::map<std::string, std::unique_ptr<TechniquePass>> passes;
+  for (const auto& [key, pass] : mTechniquePasses) passes.emplace(key, makeTechniquePass(key));
   mShadowProgram = std::move(shadow);
   mGBufferProgram = std::move(gbuffer);
   mGBufferCoefficientsProgram = std::move(gbufferCoefficients);
@@ -172,7 +172,7 @@ void Renderer::reloadShaders() {
   mLightingPrograms.emplace(lightingVariant(mScene), std::move(lighting));
   mForwardProgram = std::move(forward);
   mPostProgram = std::move(post);
-  if (atmosphere) mAtmosphere = std::move(atmosphere);
+  mTechniquePasses = std::move(passes);
   mAccumulated = 0;
 }
 
@@ -250,10 +250,7 @@ void Renderer::renderFrame() {
   shadowPass();
   hook("gbuffer");
   gbufferPass();
-  if (mScene.techniques.has(atmosphere::AtmosphereSection::kKey)) {
-    hook("atmosphere");
-    atmospherePass();
-  }
+  techniquePasses();
   hook("lighting");
   lightingPass();
   if (mSettings.lightGizmos) {
@@ -349,24 +346,16 @@ void Renderer::gbufferPass() {
   }
 }
 
-// The sky's tables for this frame's batches, sun and camera (recomputed every frame, so the sun
-// and the atmosphere can change live).
-void Renderer::atmospherePass() {
-  if (!mAtmosphere) mAtmosphere = std::make_unique<AtmospherePass>();
-  const TechniqueBlock& block = *mFrame.technique(atmosphere::AtmosphereSection::kKey);
-  const auto sky = block.constantsAs<shared::SkyConstants>();
-  std::vector<shared::GpuAtmosphere> batches;
-  for (std::size_t b = 0; b < block.dataCount<shared::GpuAtmosphere>(); ++b) {
-    batches.push_back(block.dataAt<shared::GpuAtmosphere>(b));
+// Each technique's GPU work for this frame (the sky's tables, recomputed every frame so that the
+// sun and the atmosphere can change live), timed under the technique's key; made on first use.
+void Renderer::techniquePasses() {
+  for (const TechniqueBlock& block : mFrame.techniques) {
+    auto pass = mTechniquePasses.find(block.key);
+    if (pass == mTechniquePasses.end()) pass = mTechniquePasses.emplace(block.key, makeTechniquePass(block.key)).first;
+    if (!pass->second) continue;
+    hook(block.key);
+    pass->second->run(block, mScene, mCameraTransform);
   }
-  AtmosphereView view;
-  view.originKm = sky.originKm;
-  view.cameraWorldM = mCameraTransform.position;
-  view.inverseViewProjection = mCameraTransform.inverseViewProjection;
-  // The sun light is the one source of the sun's direction (an editor may turn it).
-  const Light& sun = mScene.lights[static_cast<std::size_t>(sky.sunLight)];
-  view.sun = -glm::normalize(sun.direction);
-  mAtmosphere->update(batches, view);
 }
 
 void Renderer::lightingPass() {
@@ -393,12 +382,8 @@ void Renderer::lightingPass() {
   mShadows.maps.bind(4);
   mUpsamplingTable.bind(5);
   if (mSettings.gbufferAlbedo == GBufferAlbedo::Coefficients) mTargets.coefficients.bind(6);
-  if (mFrame.technique(atmosphere::AtmosphereSection::kKey)) {
-    mAtmosphere->skyIrradiance().bindBase(GL_SHADER_STORAGE_BUFFER, 7);
-    mAtmosphere->transmittance().bind(7);
-    mAtmosphere->multipleScattering().bind(8);
-    mAtmosphere->skyView().bind(9);
-    mAtmosphere->aerialPerspective().bind(10);
+  for (const TechniqueBlock& block : mFrame.techniques) {
+    if (const TechniquePass* pass = techniquePass(block.key)) pass->bindForLighting();
   }
   // The variant of the scene's techniques, compiled the first time it is needed (an editor may
   // add or remove a technique's section between frames).
@@ -501,14 +486,13 @@ std::size_t Renderer::gpuMemoryBytes() const {
     bytes += b->sizeBytes();
   }
   for (const auto& [key, buffers] : mTechniqueBuffers) bytes += buffers.constants.sizeBytes() + buffers.data.sizeBytes();
-  if (mAtmosphere) {
-    for (const gpu::Texture2DArray* t : {&mAtmosphere->transmittance(), &mAtmosphere->multipleScattering(),
-                                         &mAtmosphere->skyView(), &mAtmosphere->aerialPerspective()}) {
-      bytes += t->sizeBytes();
-    }
-    bytes += mAtmosphere->skyIrradiance().sizeBytes() + mAtmosphere->atmospheres().sizeBytes();
-  }
+  for (const auto& [key, pass] : mTechniquePasses) bytes += pass ? pass->gpuMemoryBytes() : 0;
   return bytes;
+}
+
+const TechniquePass* Renderer::techniquePass(std::string_view key) const {
+  auto pass = mTechniquePasses.find(std::string(key));
+  return pass == mTechniquePasses.end() ? nullptr : pass->second.get();
 }
 
 }  // namespace prism::render

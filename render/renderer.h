@@ -22,7 +22,7 @@
 #include "gpu/texture.h"
 #include "gpu/vertex_array.h"
 #include "scene/camera_transform.h"
-#include "render/atmosphere_pass.h"
+#include "render/technique_pass.h"
 #include "render/display_transform.h"
 #include "render/frame_data.h"
 #include "render/frame_settings.h"
@@ -87,8 +87,9 @@ class Renderer {
   const gpu::Texture2DArray& shadowMaps() const { return mShadows.maps; }
   const gpu::Texture2D& accumulation() const { return mTargets.accumulation; }
   const gpu::Framebuffer& displayFramebuffer() const { return mTargets.displayTarget; }
-  // The sky's tables of the last frame; null without an atmosphere.
-  const AtmospherePass* atmospherePass() const { return mAtmosphere.get(); }
+  // The passes of the technique of that key (the sky's tables) as of the last frame; null when
+  // the scene has no such technique or it has no GPU passes.
+  const TechniquePass* techniquePass(std::string_view key) const;
 
  private:
   // Everything sized by the image: built whole, then swapped in.
@@ -112,7 +113,7 @@ class Renderer {
   void lightingPass();
   void forwardPass();
   void postPass();
-  void atmospherePass();
+  void techniquePasses();
   void uploadFrameData();
 
   const Scene& mScene;
@@ -140,7 +141,8 @@ class Renderer {
     gpu::Buffer constants, data;
   };
   std::map<std::string, TechniqueBuffers> mTechniqueBuffers;  // per technique key
-  std::unique_ptr<AtmospherePass> mAtmosphere;  // made for the first frame with a sky
+  // Per technique key, made for the first frame with its section (null: no GPU passes).
+  std::map<std::string, std::unique_ptr<TechniquePass>> mTechniquePasses;
 };
 
 }  // namespace prism::render

@@ -1,0 +1,31 @@
+// The GPU side of the technique seam: a technique's passes before the lighting pass (the sky's
+// tables) and what they give the lighting pass beyond the technique's block. The renderer makes
+// one per section whose technique has GPU passes (makeTechniquePass, one registration line per
+// technique in technique_pass.cpp), runs it each frame and binds it for the lighting pass.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string_view>
+
+#include "scene/camera_transform.h"
+#include "scene/scene.h"
+#include "techniques/technique_section.h"
+
+namespace prism::render {
+
+class TechniquePass {
+ public:
+  virtual ~TechniquePass() = default;
+  // This frame's work, from the technique's block, the scene (its lights) and the camera.
+  virtual void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera) = 0;
+  // Binds what the lighting pass reads of it (the bindings its shared GLSL header declares).
+  virtual void bindForLighting() const = 0;
+  virtual std::size_t gpuMemoryBytes() const = 0;
+};
+
+// The passes of the technique of that key (an OpenGL context must be current; compiles their
+// shaders); null for a technique without GPU passes.
+std::unique_ptr<TechniquePass> makeTechniquePass(std::string_view key);
+
+}  // namespace prism::render

@@ -483,7 +483,7 @@ std::size_t Renderer::gpuMemoryBytes() const {
     bytes += t->sizeBytes();
   }
   for (const gpu::Buffer* b : {&mBatches, &mLights, &mMaterials, &mLightSpectra, &mMaterialSpectra,
-                               &mWaterSpectra, &mNoSkyIrradiance}) {
+                               &mWaterSpectra}) {
     bytes += b->sizeBytes();
   }
   if (mAtmosphere) {

@@ -205,7 +205,7 @@ TEST(Cli, RenderChecksItsInputBeforeRendering) {
   const std::string scenes = PRISM_SCENES_DIR;
   expectOneLineError("render " + scenes + "/missing.json -o x.png", "missing.json");
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.jpg", "x.jpg: the output must be a .png or an .exr");
-  expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --mode rainbow", "unknown mode \"rainbow\"");
+  expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --mode rainbow", "mode: expected rgb, naive, jakob-hanika, reference or optimised4, got \"rainbow\"");
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --wavelengths 6", "multiple of 4");
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --set lights.7.intensity=1", "/lights/7");
   std::filesystem::path bad = writeTemp("malformed_scene.json", "{\"camera\": {,}}");

@@ -7,7 +7,7 @@
 
 #include "scene/scene_loader.h"
 #include "core/error.h"
-#include "viewer/viewer_settings.h"
+#include "render/setting_keys.h"
 
 namespace prism::viewer {
 
@@ -15,7 +15,7 @@ bool setWaterKey(Scene& scene, const std::string& key, const std::string& value)
   if (key != "water.type" && key != "water.depth") return false;
   if (!scene.water) throw Error("the scene has no water");
   if (key == "water.type") scene.water->type = value;
-  else scene.water->depthM = std::max(0.0f, parseFloat(key, value));
+  else scene.water->depthM = std::max(0.0f, render::parseFloat(key, value));
   resolveWater(*scene.water);
   return true;
 }
@@ -26,10 +26,10 @@ bool setSkyKey(Scene& scene, const std::string& key, const std::string& value) {
   Atmosphere& a = *scene.atmosphere;
   atmosphere::AtmosphereParameters p = a.parameters;
   std::string_view k = std::string_view(key).substr(4);
-  if (k == "elevation") a.sunElevationDeg = std::clamp(parseFloat(key, value), -90.0f, 90.0f);
-  else if (k == "azimuth") a.sunAzimuthDeg = parseFloat(key, value);
-  else if (k == "turbidity") p.mieAngstromBeta = parseFloat(key, value);
-  else if (k == "ozone") p.ozoneColumnDu = parseFloat(key, value);
+  if (k == "elevation") a.sunElevationDeg = std::clamp(render::parseFloat(key, value), -90.0f, 90.0f);
+  else if (k == "azimuth") a.sunAzimuthDeg = render::parseFloat(key, value);
+  else if (k == "turbidity") p.mieAngstromBeta = render::parseFloat(key, value);
+  else if (k == "ozone") p.ozoneColumnDu = render::parseFloat(key, value);
   else if (k == "aerosols" || k == "multiple-scattering") {
     if (value != "on" && value != "off") throw Error(fmt::format("{}: expected on or off, got \"{}\"", key, value));
     (k == "aerosols" ? p.aerosols : p.multipleScattering) = value == "on";

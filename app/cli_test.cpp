@@ -1,47 +1,19 @@
 // The prism executable as users meet it: exit codes, one-line errors, outputs.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
+#include "app/cli_test_support.h"
 #include "imaging/exr_file.h"
 
 namespace {
 
-struct Result {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Runs `prism ARGS` through the shell (ARGS quoted by the caller) with an optional environment
-// prefix; a crash (signal) shows up as exitCode -1.
-Result run(const std::string& args, const std::string& env = "") {
-  // One file per test: ctest runs tests of this binary in parallel processes.
-  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::filesystem::path errFile = std::filesystem::path(::testing::TempDir()) /
-                                  (std::string("prism_stderr_") + test->name() + ".txt");
-  std::string command = env + " " + PRISM_EXECUTABLE + " " + args + " 2>" + errFile.string();
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) r.out.append(buffer, n);
-  int status = pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = slurp(errFile);
-  return r;
-}
+using prism::app::test::Result;
+using prism::app::test::run;
+using prism::app::test::slurp;
 
 // A user error: non-zero exit (not a crash), nothing on stdout, exactly one line on stderr
 // that contains `needle`.
@@ -205,7 +177,7 @@ TEST(Cli, RenderChecksItsInputBeforeRendering) {
   const std::string scenes = PRISM_SCENES_DIR;
   expectOneLineError("render " + scenes + "/missing.json -o x.png", "missing.json");
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.jpg", "x.jpg: the output must be a .png or an .exr");
-  expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --mode rainbow", "unknown mode \"rainbow\"");
+  expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --mode rainbow", "mode: expected rgb, naive, jakob-hanika, reference or optimised4, got \"rainbow\"");
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --wavelengths 6", "multiple of 4");
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --set lights.7.intensity=1", "/lights/7");
   std::filesystem::path bad = writeTemp("malformed_scene.json", "{\"camera\": {,}}");

@@ -6,10 +6,12 @@
 
 #include <charconv>
 #include <cmath>
+#include <map>
 
 #include "app/colour_commands.h"
 #include "app/reference_commands.h"
 #include "app/render_commands.h"
+#include "app/settings_command.h"
 #include "app/upsampling_commands.h"
 #include "app/view_command.h"
 #include "gpu/error.h"
@@ -20,6 +22,7 @@
 #include "harness/sky_experiments.h"
 #include "harness/validate.h"
 #include "core/error.h"
+#include "render/setting_keys.h"
 
 namespace {
 
@@ -40,6 +43,46 @@ std::vector<double> parseNumbers(const std::string& text, const std::string& opt
   }
   return values;
 }
+
+const char* typeName(prism::render::SettingType type) {
+  using prism::render::SettingType;
+  return type == SettingType::Integer ? "INT" : type == SettingType::Number ? "NUMBER" : type == SettingType::Range ? "MIN,MAX" : "NAME";
+}
+
+// The frame keys of render/setting_keys.h as options of a command: names, help and defaults come
+// from the table; what was given is handed on as text, parsed by the table (frameSettings).
+class CliSettings {
+ public:
+  // Every key but `except` (a command that gives that option another meaning), and --camera.
+  void addTo(CLI::App* command, std::string_view except = {}) {
+    const prism::render::FrameSettings defaults;
+    for (const prism::render::SettingKey& key : prism::render::frameSettingKeys()) {
+      if (key.name == except) continue;
+      std::string& text = mTexts[key.name];  // a map: the references CLI11 keeps stay valid
+      std::string help = key.help + ": " + key.expects;
+      CLI::Option* option = key.type == prism::render::SettingType::Switch
+                                ? command->add_flag("--" + key.name + "{on}", text, help + " (--" + key.name + " is on)")
+                                : command->add_option("--" + key.name, text, help)->type_name(typeName(key.type));
+      option->default_str(key.print(defaults));
+      mOptions.emplace_back(key.name, option);
+    }
+    command->add_option("--camera", mCamera, "a camera as the observer (raw camera RGB, fitted matrix for display)");
+  }
+
+  prism::app::SettingsOptions given() const {
+    prism::app::SettingsOptions o;
+    for (const auto& [name, option] : mOptions) {
+      if (option->count() > 0) o.values.emplace_back(name, mTexts.at(name));
+    }
+    o.camera = mCamera;
+    return o;
+  }
+
+ private:
+  std::map<std::string, std::string> mTexts;
+  std::vector<std::pair<std::string, CLI::Option*>> mOptions;
+  std::string mCamera;
+};
 
 int runBenchmarks(std::vector<std::string> args) {
   std::vector<char*> argv{const_cast<char*>("prism bench")};
@@ -158,42 +201,22 @@ int main(int argc, char** argv) {
   upCmd->add_flag("--json", up.json, "JSON output");
 
   RenderOptions render;
-  std::string renderRange, renderEv;
+  CliSettings renderSettings;
   auto* renderCmd = app.add_subcommand("render", "render a scene headlessly to a PNG (display) or an EXR (linear XYZ)");
   renderCmd->add_option("scene", render.scene, "scene file (JSON, see docs/scene-format.md)")->required();
   renderCmd->add_option("-o,--output", render.output, "OUT.png or OUT.exr")->required();
   renderCmd->add_option("--frames", render.frames, "frames accumulated (stochastic strategies converge)")
       ->capture_default_str();
   renderCmd->add_option("--set", render.sets, "override a scene value: json.path=value (repeatable)");
-  auto addRenderSettings = [](CLI::App* cmd, RenderSettingsOptions& o, std::string& range, std::string& ev,
-                              std::string* wavelengthList) {
-    cmd->add_option("--width", o.width, "image width")->capture_default_str();
-    cmd->add_option("--height", o.height, "image height")->capture_default_str();
-    if (wavelengthList) {
-      cmd->add_option("--wavelengths", *wavelengthList,
-                      "wavelength counts, comma-separated (default 4,8,16,32,64,128,256)");
-    } else {
-      cmd->add_option("--wavelengths", o.wavelengths, "wavelengths per pixel (a multiple of 4, 4–1000)")
-          ->capture_default_str();
-    }
-    cmd->add_option("--range", range, "MIN,MAX nm of the sampled wavelengths (within 360–830)");
-    cmd->add_option("--strategy", o.strategy, "uniform, stratified, rotated or importance")->capture_default_str();
-    cmd->add_option("--mode", o.mode, "rgb, naive, jakob-hanika, reference or optimised4 (the sky's four wavelengths)")->capture_default_str();
-    cmd->add_option("--observer", o.observer, "cie1931, cie1964 or a camera")->capture_default_str();
-    cmd->add_option("--camera", o.camera, "a camera as the observer (raw camera RGB, fitted matrix for display)");
-    cmd->add_option("--lookup", o.lookup, "upsampling table lookup: filtered or manual")->capture_default_str();
-    cmd->add_option("--gbuffer", o.gbuffer, "what the G-buffer keeps of a base colour: rgb or coefficients")
-        ->capture_default_str();
-    cmd->add_option("--tonemap", o.toneMap, "none, reinhard or aces")->capture_default_str();
-    cmd->add_option("--display", o.display, "srgb, display-p3 or rec2020")->capture_default_str();
-    cmd->add_option("--white-balance", o.whiteBalance, "adapt this illuminant's white to the display white, or none")
-        ->capture_default_str();
-    cmd->add_option("--adaptation", o.adaptation, "bradford, cat02 or von-kries")->capture_default_str();
-    cmd->add_option("--ev", ev, "exposure EV100 (default: the scene camera's)");
-    cmd->add_option("--shadow-map-size", o.shadowMapSize, "texels per side")->capture_default_str();
-    cmd->add_flag("--gizmos", o.gizmos, "draw point and spot lights as glowing markers (forward pass)");
-  };
-  addRenderSettings(renderCmd, render.settings, renderRange, renderEv, nullptr);
+  renderSettings.addTo(renderCmd);
+
+  CliSettings settingsSettings;
+  bool settingKeys = false;
+  auto* settingsCmd = app.add_subcommand(
+      "settings", "print the frame settings these options give, a `KEY VALUE` line each: the keys of render, "
+                  "view and bench options, of the viewer's `set` and of its settings files");
+  settingsSettings.addTo(settingsCmd);
+  settingsCmd->add_flag("--keys", settingKeys, "print the table of keys instead (Markdown)");
 
   ReferenceOptions ref;
   std::string refRange, refEv;
@@ -245,16 +268,16 @@ int main(int argc, char** argv) {
   validateCmd->add_flag("--json", val.json, "JSON output");
 
   ViewOptions view;
-  std::string viewRange, viewEv;
+  CliSettings viewSettings;
   auto* viewCmd = app.add_subcommand("view", "the interactive viewer: a window with every spectral setting live");
   viewCmd->add_option("scene", view.scene, "scene file (JSON, see docs/scene-format.md)")->required();
   viewCmd->add_option("--script", view.script, "run these viewer commands (README), then close");
   viewCmd->add_option("--set", view.sets, "override a scene value: json.path=value (repeatable)");
-  addRenderSettings(viewCmd, view.settings, viewRange, viewEv, nullptr);
+  viewSettings.addTo(viewCmd);
 
   SceneBenchOptions sceneBench;
-  RenderSettingsOptions benchSettings;
-  std::string benchWavelengths, benchRange, benchEv;
+  CliSettings benchSettings;
+  std::string benchWavelengths;
   AtmosphereCommandOptions atm;
   auto* atmosphereCmd = app.add_subcommand("atmosphere", "the spectral sky: wavelength strategies against the reference");
   atmosphereCmd->require_subcommand(1);
@@ -279,7 +302,8 @@ int main(int argc, char** argv) {
                "micro-benchmarks (Google Benchmark flags pass through)");
   bench->allow_extras();
   bench->add_option("scene", sceneBench.scene, "scene file: time its passes in RGB and spectral modes");
-  addRenderSettings(bench, benchSettings, benchRange, benchEv, &benchWavelengths);
+  benchSettings.addTo(bench, "wavelengths");
+  bench->add_option("--wavelengths", benchWavelengths, "wavelength counts, comma-separated (default 4,8,16,32,64,128,256)");
   bench->add_option("--frames", sceneBench.frames, "timed frames per configuration, spread over the rounds")
       ->capture_default_str();
   bench->add_option("--rounds", sceneBench.rounds, "rounds over every configuration in turn (load drift cancels "
@@ -316,18 +340,14 @@ int main(int argc, char** argv) {
       if (!upWavelengths.empty()) up.wavelengths = parseNumbers(upWavelengths, "--wavelengths", ':');
       runUpsample(up);
     }
-    auto parseEv = [](const std::string& text) -> std::optional<float> {
-      if (text.empty()) return std::nullopt;
-      return static_cast<float>(parseNumbers(text, "--ev").at(0));
-    };
+    if (*settingsCmd) printSettings(settingsSettings.given(), settingKeys);
     if (*renderCmd) {
-      if (!renderRange.empty()) render.settings.range = parseNumbers(renderRange, "--range");
-      render.settings.ev100 = parseEv(renderEv);
+      render.settings = renderSettings.given();
       runRender(render);
     }
     if (*referenceCmd) {
       if (!refRange.empty()) ref.range = parseNumbers(refRange, "--range");
-      ref.ev100 = parseEv(refEv);
+      if (!refEv.empty()) ref.ev100 = static_cast<float>(parseNumbers(refEv, "--ev").at(0));
       runReference(ref);
     }
     if (*compareCmd) {
@@ -345,16 +365,13 @@ int main(int argc, char** argv) {
     }
     if (*validateCmd) return runValidate(val);
     if (*viewCmd) {
-      if (!viewRange.empty()) view.settings.range = parseNumbers(viewRange, "--range");
-      view.settings.ev100 = parseEv(viewEv);
+      view.settings = viewSettings.given();
       return runView(view);
     }
     if (*bench && !sceneBench.scene.empty()) {
       if (!bench->remaining().empty()) throw prism::Error("bench: unexpected '" + bench->remaining().front() + "'");
-      if (!benchRange.empty()) benchSettings.range = parseNumbers(benchRange, "--range");
-      benchSettings.ev100 = parseEv(benchEv);
-      benchSettings.mode = "rgb";  // the bench sets the mode per configuration
-      sceneBench.settings = frameSettings(benchSettings);
+      sceneBench.settings = frameSettings(benchSettings.given());
+      sceneBench.settings.mode = prism::render::RenderMode::Rgb;  // the bench sets the mode per configuration
       if (!benchWavelengths.empty()) {
         sceneBench.wavelengths.clear();
         for (double n : parseNumbers(benchWavelengths, "--wavelengths")) sceneBench.wavelengths.push_back(static_cast<int>(n));

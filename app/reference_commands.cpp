@@ -60,11 +60,9 @@ void runReference(const ReferenceOptions& o) {
   if (extension == ".exr") {
     imaging::writeExr(o.output, image.tristimulus, exr);
   } else {
-    render::FrameSettings display;
-    display.mode = render::RenderMode::JakobHanika;
-    display.observer = settings.observer;
+    render::DisplaySettings display;
     display.ev100 = ev100;
-    harness::displayImage(image.tristimulus, display, ev100).write(o.output);
+    harness::displayImage(image.tristimulus, display, observer(settings.observer), ev100).write(o.output);
   }
   // The variance is in squared units and no colour: not something compare should take for one.
   if (!o.variance.empty()) imaging::writeExr(o.variance, image.variance, {.colour = imaging::ColourMeaning::OtherRgb});

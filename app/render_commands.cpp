@@ -9,41 +9,24 @@
 #include "imaging/exr_file.h"
 #include "render/display_transform.h"
 #include "render/renderer.h"
+#include "render/setting_keys.h"
 #include "scene/scene_loader.h"
 #include "core/error.h"
 #include "spectral/observer.h"
 
 namespace prism::app {
 
-render::FrameSettings frameSettings(const RenderSettingsOptions& o) {
+render::FrameSettings frameSettings(const SettingsOptions& o) {
   render::FrameSettings s;
-  s.width = o.width;
-  s.height = o.height;
-  s.mode = render::renderModeFromName(o.mode);
-  s.sampling.count = o.wavelengths;
-  if (!o.range.empty()) {
-    if (o.range.size() != 2) throw Error("--range: expected MIN,MAX in nm");
-    s.sampling.minNm = o.range[0];
-    s.sampling.maxNm = o.range[1];
+  for (const auto& [key, value] : o.values) {
+    if (!render::applyFrameSetting(s, key, value)) throw Error(fmt::format("unknown setting \"{}\"", key));
   }
-  s.sampling.strategy = samplingStrategyFromName(o.strategy);
-  s.observer = o.camera.empty() ? o.observer : o.camera;
-  if (!o.camera.empty() && !observer(o.camera).isCamera) {
-    throw Error(fmt::format("--camera: \"{}\" is not a camera (see `prism colour list cameras`)", o.camera));
+  if (!o.camera.empty()) {
+    if (!observer(o.camera).isCamera) {
+      throw Error(fmt::format("--camera: \"{}\" is not a camera (see `prism colour list cameras`)", o.camera));
+    }
+    s.observer = o.camera;
   }
-  if (o.lookup == "manual") s.lookup = render::UpsamplingLookup::Manual;
-  else if (o.lookup == "filtered") s.lookup = render::UpsamplingLookup::Filtered;
-  else throw Error(fmt::format("--lookup: unknown \"{}\" (manual, filtered)", o.lookup));
-  if (o.gbuffer == "rgb") s.gbufferAlbedo = render::GBufferAlbedo::Rgb;
-  else if (o.gbuffer == "coefficients") s.gbufferAlbedo = render::GBufferAlbedo::Coefficients;
-  else throw Error(fmt::format("--gbuffer: unknown \"{}\" (rgb, coefficients)", o.gbuffer));
-  s.toneMap = render::toneMapFromName(o.toneMap);
-  s.display = o.display;
-  s.whiteBalance = o.whiteBalance;
-  s.adaptation = adaptationFromName(o.adaptation);
-  s.ev100 = o.ev100;
-  s.shadowMapSize = o.shadowMapSize;
-  s.lightGizmos = o.gizmos;
   render::validate(s);
   return s;
 }
@@ -74,7 +57,7 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
   imaging::writeExr(output, image,
                     {camera ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,
                      imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour,
-                     render::displayWhiteLuminance(settings.ev100.value_or(scene.camera.ev100))});
+                     render::displayWhiteLuminance(settings.display.ev100.value_or(scene.camera.ev100))});
 }
 
 void runRender(const RenderOptions& options) {

@@ -3,8 +3,8 @@
 #pragma once
 
 #include <filesystem>
-#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/frame_settings.h"
@@ -12,32 +12,19 @@
 
 namespace prism::app {
 
-// The options every command that renders shares (render, bench, demo).
-struct RenderSettingsOptions {
-  int width = 1280;
-  int height = 720;
-  int wavelengths = 16;
-  std::vector<double> range;  // min, max nm; empty: 360–830
-  std::string strategy = "uniform";
-  std::string mode = "jakob-hanika";
-  std::string observer = "cie1931";
-  std::string camera;  // a camera from data/cameras.csv as the observer (overrides observer)
-  std::string lookup = "filtered";
-  std::string gbuffer = "rgb";  // what the G-buffer keeps of a base colour: rgb or coefficients
-  std::string toneMap = "aces";
-  std::string display = "srgb";
-  std::string whiteBalance = "none";
-  std::string adaptation = "bradford";
-  std::optional<float> ev100;
-  int shadowMapSize = 2048;
-  bool gizmos = false;  // light gizmos in the forward pass
+// The frame settings a command line gave (render, view, bench, settings): each KEY VALUE as text,
+// in the table's order (render/setting_keys.h), and --camera (an observer that must be a camera).
+struct SettingsOptions {
+  std::vector<std::pair<std::string, std::string>> values;
+  std::string camera;
 };
-render::FrameSettings frameSettings(const RenderSettingsOptions& options);
+// The table's parse of each value over the defaults, then validate(); Error naming the key.
+render::FrameSettings frameSettings(const SettingsOptions& options);
 
 struct RenderOptions {
   std::filesystem::path scene;
   std::filesystem::path output;
-  RenderSettingsOptions settings;
+  SettingsOptions settings;
   int frames = 1;  // accumulated (stochastic strategies converge)
   std::vector<std::string> sets;  // scene overrides key=value
 };

@@ -14,7 +14,7 @@ struct ViewOptions {
   std::filesystem::path scene;
   std::filesystem::path script;
   std::vector<std::string> sets;
-  RenderSettingsOptions settings;
+  SettingsOptions settings;
 };
 int runView(const ViewOptions& options);
 

@@ -19,9 +19,10 @@ imaging::PngImage displayPng(const render::Renderer& renderer) {
   return image;
 }
 
-imaging::PngImage displayImage(const imaging::FloatImage& tristimulus,
-                               const render::FrameSettings& settings, float sceneEv100) {
-  render::DisplayTransform transform = render::displayTransform(settings, sceneEv100);
+imaging::PngImage displayImage(const imaging::FloatImage& tristimulus, const render::DisplaySettings& settings,
+                               const Observer& tristimulusObserver, float sceneEv100) {
+  render::DisplayTransform transform =
+      render::displayTransform(settings, render::resolveDisplay(settings, tristimulusObserver), sceneEv100);
   imaging::PngImage image(tristimulus.width, tristimulus.height, {});
   auto byte = [](float v) { return static_cast<std::uint8_t>(std::lround(v * 255.0f)); };
   for (int y = 0; y < tristimulus.height; ++y) {

@@ -118,8 +118,8 @@ class Experiment {
     render::FrameSettings base;
     base.width = mSizes.width;
     base.height = mSizes.height;
-    base.dither = false;
-    base.ev100 = ev100;
+    base.display.dither = false;
+    base.display.ev100 = ev100;
     render::Renderer renderer(scene, mTable, base);  // one renderer, its settings changed per mode
     for (const Mode& m : kModes) {
       render::FrameSettings settings = base;
@@ -130,7 +130,7 @@ class Experiment {
       for (int f = 0; f < m.frames; ++f) renderer.renderFrame();
       imaging::FloatImage image(mSizes.width, mSizes.height, 3);
       image.pixels = renderer.readMeanTristimulus();
-      displayImage(image, settings, ev100).write(mOutput / fmt::format("{}_{}.png", name, m.name));
+      displayImage(image, settings.display, observer(settings.observer), ev100).write(mOutput / fmt::format("{}_{}.png", name, m.name));
       imaging::DifferenceOptions options;
       options.keepMap = true;
       auto input = [&](const imaging::FloatImage& i) {
@@ -152,9 +152,9 @@ class Experiment {
  private:
   void step() { mBar.update(++mDone, mTotal); }
   void writeImages(const imaging::FloatImage& image, const std::string& stem, float ev100, double white) {
-    render::FrameSettings display;
+    render::DisplaySettings display;
     display.ev100 = ev100;
-    displayImage(image, display, ev100).write(mOutput / (stem + ".png"));
+    displayImage(image, display, observer("cie1931"), ev100).write(mOutput / (stem + ".png"));
     imaging::writeExr(mOutput / (stem + ".exr"), image, {.colour = imaging::ColourMeaning::Xyz, .displayWhite = white});
   }
 

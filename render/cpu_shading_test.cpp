@@ -70,7 +70,7 @@ struct UpFacing {
 
 glm::vec3 shadeOnce(const Scene& scene, const FrameSettings& settings, const UpFacing& p,
                     const RgbToSpectrumTable& lut = table()) {
-  FrameData frame = buildFrameData(scene, settings, lut, {}, 0,
+  FrameData frame = buildFrameData(scene, settings, frameContext(settings, scene), lut, {}, 0,
                                    cameraTransform(scene.camera, settings.width, settings.height));
   CpuShading shading(frame, lut, {});
   return shading.shade(p.texel, glm::vec2(0.5f), p.camera);
@@ -188,9 +188,9 @@ TEST(DisplayTransform, OutOfGamutColoursAreCompressedNotClippedToNaN) {
 }
 
 TEST(DisplayTransform, ExposureMapsTheSaturationLuminanceToWhite) {
-  FrameSettings settings;
+  DisplaySettings settings;
   settings.ev100 = 10.0f;
-  DisplayTransform t = displayTransform(settings, 0.0f);
+  DisplayTransform t = displayTransform(settings, resolveDisplay(settings, observer("cie1931")), 0.0f);
   // D65 white of luminance 1.2·2^10 cd/m² → display RGB (1, 1, 1).
   glm::vec3 d65(0.95047f, 1.0f, 1.08883f);
   glm::vec3 rgb = t.toDisplay * (d65 * 1.2f * 1024.0f);
@@ -200,10 +200,10 @@ TEST(DisplayTransform, ExposureMapsTheSaturationLuminanceToWhite) {
 }
 
 TEST(DisplayTransform, WhiteBalanceMakesTheIlluminantNeutral) {
-  FrameSettings settings;
+  DisplaySettings settings;
   settings.ev100 = 0.0f;
   settings.whiteBalance = "A";
-  DisplayTransform t = displayTransform(settings, 0.0f);
+  DisplayTransform t = displayTransform(settings, resolveDisplay(settings, observer("cie1931")), 0.0f);
   Eigen::Vector3d a = observer("cie1931").integrate(illuminant("A"));
   glm::vec3 xyz(static_cast<float>(a.x() / a.y()), 1.0f, static_cast<float>(a.z() / a.y()));
   glm::vec3 rgb = t.toDisplay * xyz;

@@ -17,23 +17,28 @@ glm::mat3 toGlm(const Eigen::Matrix3d& m) {
   return g;
 }
 
-Eigen::Matrix3d tristimulusToXyzD(const FrameSettings& settings) {
-  const Observer& obs = observer(settings.observer);
-  if (settings.mode == RenderMode::Rgb || !obs.isCamera) return Eigen::Matrix3d::Identity();
-  return fitCameraToXyz(obs, illuminant("D65"), observer("cie1931")).cameraToXyz;
-}
-
 }  // namespace
 
-DisplayTransform displayTransform(const FrameSettings& settings, float sceneEv100) {
-  const RgbColourSpace& display = colourSpace(settings.display);
-  Eigen::Matrix3d cameraToXyz = tristimulusToXyzD(settings);
-  Eigen::Matrix3d m = cameraToXyz;
+DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tristimulusObserver) {
+  DisplayInputs inputs;
+  inputs.colourSpace = &colourSpace(settings.colourSpace);
+  const Observer& cie = observer("cie1931");
   if (settings.whiteBalance != "none") {
-    const Observer& cie = observer("cie1931");
-    Eigen::Vector3d source = cie.integrate(illuminant(settings.whiteBalance));
-    source /= source.y();
-    m = chromaticAdaptation(settings.adaptation, source, display.whiteXyz()) * m;
+    Eigen::Vector3d white = cie.integrate(illuminant(settings.whiteBalance));
+    inputs.whiteBalanceXyz = white / white.y();
+  }
+  if (tristimulusObserver.isCamera) {
+    inputs.tristimulusToXyz = fitCameraToXyz(tristimulusObserver, illuminant("D65"), cie).cameraToXyz;
+  }
+  return inputs;
+}
+
+DisplayTransform displayTransform(const DisplaySettings& settings, const DisplayInputs& inputs, float sceneEv100) {
+  const RgbColourSpace& display = *inputs.colourSpace;
+  const Eigen::Matrix3d& cameraToXyz = inputs.tristimulusToXyz;
+  Eigen::Matrix3d m = cameraToXyz;
+  if (inputs.whiteBalanceXyz) {
+    m = chromaticAdaptation(settings.adaptation, *inputs.whiteBalanceXyz, display.whiteXyz()) * m;
   }
   float exposure = shared::exposureScale(settings.ev100.value_or(sceneEv100));
   DisplayTransform t;

@@ -1,13 +1,32 @@
 // The post pass's colour maths that is per frame rather than per pixel: one 3×3 from the
 // lighting pass's tristimulus to linear display RGB, folding in exposure, the camera matrix (for
-// a camera observer), white balance and the display's primaries.
+// a camera observer), white balance and the display's primaries. It needs only DisplaySettings
+// and the observer whose tristimulus it shows; the names in them are resolved once per change
+// (DisplayInputs), so an exposure change costs no look-up.
 #pragma once
 
+#include <optional>
+
+#include <Eigen/Core>
 #include <glm/glm.hpp>
 
 #include "render/frame_settings.h"
+#include "spectral/colour_space.h"
+#include "spectral/observer.h"
 
 namespace prism::render {
+
+// DisplaySettings' names resolved: the display's colour space, the white balance's white and the
+// camera matrix.
+struct DisplayInputs {
+  const RgbColourSpace* colourSpace = nullptr;
+  std::optional<Eigen::Vector3d> whiteBalanceXyz;  // the illuminant's white (CIE 1931, Y = 1); none: no balance
+  Eigen::Matrix3d tristimulusToXyz = Eigen::Matrix3d::Identity();  // a camera's fitted matrix, or identity
+};
+
+// `tristimulusObserver` is whose tristimulus is shown: XYZ (a CIE observer), or a camera's raw RGB,
+// which goes through its matrix fitted on the ColorChecker under D65. Error on unknown names.
+DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tristimulusObserver);
 
 struct DisplayTransform {
   glm::mat3 toDisplay{1.0f};        // tristimulus → linear display RGB, exposure included
@@ -16,7 +35,7 @@ struct DisplayTransform {
   glm::mat3 toXyz{1.0f};             // tristimulus → XYZ alone (the camera matrix, or identity)
 };
 
-DisplayTransform displayTransform(const FrameSettings& settings, float sceneEv100);
+DisplayTransform displayTransform(const DisplaySettings& settings, const DisplayInputs& inputs, float sceneEv100);
 
 // The luminance (cd/m²) an exposure of ev100 maps to display white: 1.2 · 2^ev100 (Lagarde &
 // de Rousiers 2014), the inverse of shaders/shared/post.glsl's exposureScale.

@@ -47,10 +47,10 @@ glm::vec4 at4(const Spectrum& s, const glm::vec4& lambdaNm, float scale = 1.0f) 
   return v;
 }
 
-void addBatches(FrameData& frame, const FrameSettings& settings, const Scene& scene,
+void addBatches(FrameData& frame, const FrameSettings& settings, const FrameContext& context, const Scene& scene,
                 std::uint32_t frameIndex) {
   if (settings.mode == RenderMode::Rgb) {
-    const Eigen::Matrix3d& m = colourSpace(scene.colourSpace).rgbToXyz;
+    const Eigen::Matrix3d& m = context.sceneColourSpace->rgbToXyz;
     shared::GpuBatch batch{};
     batch.toX = toVec4(m.row(0).transpose());
     batch.toY = toVec4(m.row(1).transpose());
@@ -58,7 +58,7 @@ void addBatches(FrameData& frame, const FrameSettings& settings, const Scene& sc
     frame.batches.push_back(batch);
     return;
   }
-  const Observer& obs = observer(settings.observer);
+  const Observer& obs = *context.observer;
   double scale = absoluteTristimulusScale(obs);
   if (settings.mode == RenderMode::Optimised4) {
     const auto* sky = scene.techniques.find<atmosphere::AtmosphereSection>();
@@ -94,17 +94,17 @@ void addBatches(FrameData& frame, const FrameSettings& settings, const Scene& sc
 
 }  // namespace
 
-FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
+FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, const FrameContext& context,
                          const RgbToSpectrumTable& table, const std::vector<ShadowView>& shadows,
                          std::uint32_t frameIndex, const CameraTransform& camera) {
   if (scene.lights.size() > static_cast<std::size_t>(shared::kMaxLights)) {
     throw Error(fmt::format("{}: {} lights; the renderer handles at most {}",
                             scene.file.string(), scene.lights.size(), shared::kMaxLights));
   }
-  const RgbColourSpace& space = colourSpace(scene.colourSpace);
+  const RgbColourSpace& space = *context.sceneColourSpace;
   const bool rgbMode = settings.mode == RenderMode::Rgb;
   FrameData frame;
-  addBatches(frame, settings, scene, frameIndex);
+  addBatches(frame, settings, context, scene, frameIndex);
   const int batchCount = static_cast<int>(frame.batches.size());
 
   frame.constants.mode = rgbMode                                   ? shared::kModeRgb

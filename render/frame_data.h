@@ -26,6 +26,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/frame_context.h"
 #include "render/frame_settings.h"
 #include "scene/camera_transform.h"
 #include "scene/scene.h"
@@ -53,9 +54,9 @@ struct FrameData {
   }
 };
 
-// frameIndex seeds stochastic wavelength strategies (a new set every frame). camera is where the
-// frame is seen from (the water's depth there; the surface stays where the scene put it).
-FrameData buildFrameData(const Scene& scene, const FrameSettings& settings,
+// context holds settings' names resolved (frameContext). frameIndex seeds stochastic wavelength
+// strategies (a new set every frame). camera is where the frame is seen from (the water's depth there; the surface stays where the scene put it).
+FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, const FrameContext& context,
                          const RgbToSpectrumTable& table, const std::vector<ShadowView>& shadows,
                          std::uint32_t frameIndex, const CameraTransform& camera);
 

@@ -10,15 +10,6 @@
 
 namespace prism::render {
 
-RenderMode renderModeFromName(std::string_view name) {
-  if (name == "rgb") return RenderMode::Rgb;
-  if (name == "naive") return RenderMode::Naive;
-  if (name == "jakob-hanika") return RenderMode::JakobHanika;
-  if (name == "reference") return RenderMode::Reference;
-  if (name == "optimised4") return RenderMode::Optimised4;
-  throw Error(fmt::format("unknown mode \"{}\" (rgb, naive, jakob-hanika, reference, optimised4)", name));
-}
-
 std::string_view renderModeName(RenderMode mode) {
   switch (mode) {
     case RenderMode::Rgb: return "rgb";
@@ -30,11 +21,21 @@ std::string_view renderModeName(RenderMode mode) {
   return "?";
 }
 
-ToneMap toneMapFromName(std::string_view name) {
-  if (name == "none") return ToneMap::None;
-  if (name == "reinhard") return ToneMap::Reinhard;
-  if (name == "aces") return ToneMap::Aces;
-  throw Error(fmt::format("unknown tone map \"{}\" (none, reinhard, aces)", name));
+std::string_view toneMapName(ToneMap toneMap) {
+  switch (toneMap) {
+    case ToneMap::None: return "none";
+    case ToneMap::Reinhard: return "reinhard";
+    case ToneMap::Aces: return "aces";
+  }
+  return "?";
+}
+
+std::string_view upsamplingLookupName(UpsamplingLookup lookup) {
+  return lookup == UpsamplingLookup::Manual ? "manual" : "filtered";
+}
+
+std::string_view gbufferAlbedoName(GBufferAlbedo albedo) {
+  return albedo == GBufferAlbedo::Rgb ? "rgb" : "coefficients";
 }
 
 void validate(const FrameSettings& settings) {
@@ -48,14 +49,18 @@ void validate(const FrameSettings& settings) {
   if (settings.shadowMapSize < 16 || settings.shadowMapSize > 8192) {
     throw Error(fmt::format("shadow map size {} must be within 16..8192", settings.shadowMapSize));
   }
+  validate(settings.display);
+}
+
+void validate(const DisplaySettings& settings) {
   if (settings.whiteBalance != "none") illuminant(settings.whiteBalance);  // Error when unknown
   if (settings.ev100 && !std::isfinite(*settings.ev100)) {
     throw Error("exposure (EV100) must be a finite number");
   }
-  if (settings.display != "srgb" && settings.display != "display-p3" &&
-      settings.display != "p3" && settings.display != "rec2020") {
+  if (settings.colourSpace != "srgb" && settings.colourSpace != "display-p3" &&
+      settings.colourSpace != "p3" && settings.colourSpace != "rec2020") {
     throw Error(fmt::format("unknown display \"{}\" (srgb, display-p3, rec2020)",
-                            settings.display));
+                            settings.colourSpace));
   }
 }
 

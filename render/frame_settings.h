@@ -1,6 +1,7 @@
 // Everything about how a frame is rendered that is not the scene: resolution, mode, wavelength
 // sampling, observer, display transform. All of it can change between frames without a restart
-// (the renderer rebuilds only what a change needs).
+// (the renderer rebuilds only what a change needs). The text form of every field users set
+// (names, parsing, printing, help) is render/setting_keys.h's table; each enum's names are here.
 #pragma once
 
 #include <optional>
@@ -18,22 +19,34 @@ namespace prism::render {
 // optimised4: Jakob–Hanika at the sky's four optimised wavelengths with their weights
 // (data/atmosphere_wavelengths.json, the set of the scene's atmosphere; García Liñán).
 enum class RenderMode { Rgb, Naive, JakobHanika, Reference, Optimised4 };
-RenderMode renderModeFromName(std::string_view name);  // rgb|naive|jakob-hanika|reference|optimised4
 std::string_view renderModeName(RenderMode mode);
 
 inline constexpr int kReferenceWavelengths = 472;  // ≈ 1 nm steps over 360–830 nm
 
 enum class ToneMap { None, Reinhard, Aces };
-ToneMap toneMapFromName(std::string_view name);  // none|reinhard|aces
+std::string_view toneMapName(ToneMap toneMap);
 
 // Where the Jakob–Hanika coefficients come from: the manual eight-fetch blend (bit-identical to
 // the CPU) or one hardware-filtered fetch (faster, an equally smooth interpolant).
 enum class UpsamplingLookup { Manual, Filtered };
+std::string_view upsamplingLookupName(UpsamplingLookup lookup);
 
 // What the G-buffer keeps of a base colour: its RGB (upsampled once per pixel by the lighting
 // pass) or its Jakob–Hanika coefficients (looked up per G-buffer fragment, one RGBA32F target
 // more). Issue #4 asked which is faster; `prism bench` measures both side by side.
 enum class GBufferAlbedo { Rgb, Coefficients };
+std::string_view gbufferAlbedoName(GBufferAlbedo albedo);
+
+// The display transform's settings: all a caller needs to show tristimulus values (a reference
+// image, say) the way the renderer's post pass would, without the rest of a frame's settings.
+struct DisplaySettings {
+  std::optional<float> ev100;            // overrides the scene camera's exposure
+  std::string whiteBalance = "none";     // an illuminant name (e.g. "A") adapted to the display white
+  Adaptation adaptation = Adaptation::Bradford;
+  ToneMap toneMap = ToneMap::Aces;
+  std::string colourSpace = "srgb";      // srgb | display-p3 | rec2020 (transfer included)
+  bool dither = true;                    // before 8-bit quantisation
+};
 
 struct FrameSettings {
   int width = 1280;
@@ -45,17 +58,12 @@ struct FrameSettings {
   GBufferAlbedo gbufferAlbedo = GBufferAlbedo::Rgb;
   int shadowMapSize = 2048;
   bool lightGizmos = false;  // forward pass: an emissive marker at each point and spot light
-  // Display transform.
-  std::optional<float> ev100;            // overrides the scene camera's exposure
-  std::string whiteBalance = "none";     // an illuminant name (e.g. "A") adapted to the display white
-  Adaptation adaptation = Adaptation::Bradford;
-  ToneMap toneMap = ToneMap::Aces;
-  std::string display = "srgb";          // srgb | display-p3 | rec2020 (transfer included)
-  bool dither = true;                    // before 8-bit quantisation
+  DisplaySettings display;
 };
 
 // Error naming the setting for sizes, counts and names out of range.
 void validate(const FrameSettings& settings);
+void validate(const DisplaySettings& settings);
 
 // The wavelength sampling the mode actually uses.
 SamplingSettings effectiveSampling(const FrameSettings& settings);

@@ -110,14 +110,16 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
                             scene.lights.size(), shared::kMaxLights));
   }
   mLightingPrograms.emplace(lightingVariant(scene), lightingProgram(scene));
-  mDisplayTransform = displayTransform(mSettings, mCamera.ev100);
+  mContext = frameContext(mSettings, mScene);
+  mDisplayTransform = displayTransform(mSettings.display, mContext.display, mCamera.ev100);
   mShadows = makeShadows(mScene, mSettings.shadowMapSize);
   mTargets = makeTargets(mSettings.width, mSettings.height, mSettings.gbufferAlbedo);
 }
 
 void Renderer::setSettings(const FrameSettings& settings) {
   validate(settings);
-  DisplayTransform display = displayTransform(settings, mCamera.ev100);
+  FrameContext context = frameContext(settings, mScene);
+  DisplayTransform display = displayTransform(settings.display, context.display, mCamera.ev100);
   bool resized = settings.width != mSettings.width || settings.height != mSettings.height ||
                  settings.gbufferAlbedo != mSettings.gbufferAlbedo;
   std::optional<Shadows> shadows;
@@ -138,6 +140,7 @@ void Renderer::setSettings(const FrameSettings& settings) {
   if (shadows) mShadows = std::move(*shadows);
   if (targets) mTargets = std::move(*targets);
   mSettings = settings;
+  mContext = context;
   mDisplayTransform = display;
   if (lightingChanged) mAccumulated = 0;
 }
@@ -177,7 +180,7 @@ void Renderer::reloadShaders() {
 }
 
 void Renderer::setCamera(const Camera& camera) {
-  mDisplayTransform = displayTransform(mSettings, camera.ev100);
+  mDisplayTransform = displayTransform(mSettings.display, mContext.display, camera.ev100);
   mCamera = camera;
   mAccumulated = 0;
 }
@@ -244,7 +247,7 @@ void Renderer::hook(std::string_view pass) const {
 void Renderer::renderFrame() {
   mCameraTransform = prism::cameraTransform(mCamera, mSettings.width, mSettings.height);
   // A new set of wavelengths every frame (only stochastic strategies differ between frames).
-  mFrame = buildFrameData(mScene, mSettings, mTable, mShadows.views, mFrameIndex++, mCameraTransform);
+  mFrame = buildFrameData(mScene, mSettings, mContext, mTable, mShadows.views, mFrameIndex++, mCameraTransform);
   uploadFrameData();
   hook("shadow");
   shadowPass();
@@ -410,12 +413,10 @@ void Renderer::forwardPass() {
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   float radius = std::max(0.01f * glm::length(mBounds.max - mBounds.min), 1e-3f);
-  float white = 1.2f * std::exp2(mSettings.ev100.value_or(mCamera.ev100));
+  float white = 1.2f * std::exp2(mSettings.display.ev100.value_or(mCamera.ev100));
   glm::mat3 fromXyz = glm::inverse(mDisplayTransform.toXyz);
   // The colour as the lighting pass's observer sees it (CIE 1931 behind a camera's matrix).
-  const Observer& seen = mSettings.mode == RenderMode::Rgb || observer(mSettings.observer).isCamera
-                             ? observer("cie1931")
-                             : observer(mSettings.observer);
+  const Observer& seen = mContext.tristimulusObserver->isCamera ? observer("cie1931") : *mContext.tristimulusObserver;
   mForwardProgram.use();
   mForwardProgram.setUniform("uViewProjection", mCameraTransform.viewProjection);
   for (const Light& light : mScene.lights) {
@@ -445,9 +446,9 @@ void Renderer::postPass() {
   static_assert(static_cast<int>(ToneMap::None) == shared::kToneMapNone &&
                 static_cast<int>(ToneMap::Reinhard) == shared::kToneMapReinhard &&
                 static_cast<int>(ToneMap::Aces) == shared::kToneMapAces);
-  p.setUniform("uToneMap", static_cast<GLint>(mSettings.toneMap));
+  p.setUniform("uToneMap", static_cast<GLint>(mSettings.display.toneMap));
   p.setUniform("uTransfer", t.transfer);
-  p.setUniform("uDither", mSettings.dither ? 1 : 0);
+  p.setUniform("uDither", mSettings.display.dither ? 1 : 0);
   p.setUniform("uSeed", static_cast<GLuint>(mFrameIndex * 2654435761u));
   mFullScreen.draw(3);
 }

@@ -24,6 +24,7 @@
 #include "scene/camera_transform.h"
 #include "render/technique_pass.h"
 #include "render/display_transform.h"
+#include "render/frame_context.h"
 #include "render/frame_data.h"
 #include "render/frame_settings.h"
 #include "render/gpu_scene.h"
@@ -124,6 +125,7 @@ class Renderer {
   Bounds mBounds;
   GpuScene mGpuScene;
   gpu::Texture3D mUpsamplingTable;
+  FrameContext mContext;               // mSettings' names, resolved
   DisplayTransform mDisplayTransform;  // of mSettings and the camera's exposure
   FrameData mFrame;
   int mAccumulated = 0;

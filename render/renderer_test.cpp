@@ -167,7 +167,7 @@ TEST_P(Golden, FrameStaysWithinDeltaE2000OfItsGolden) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kScenes / GetParam().scene);
   FrameSettings settings = smallFrame(GetParam().mode);
-  settings.dither = false;
+  settings.display.dither = false;
   Renderer renderer(scene, table(), settings);
   renderer.renderFrame();
   imaging::PngImage image = displayImage(renderer, settings);
@@ -287,13 +287,13 @@ TEST(Renderer, SettingsChangeWithoutRestartAndRestartAccumulation) {
   EXPECT_EQ(renderer.accumulation().height(), 64);
   EXPECT_EQ(renderer.readDisplayRgba8().size(), std::size_t{96 * 64 * 4});
   // A display-only change keeps what has accumulated; a failed change leaves all as it was.
-  bigger.toneMap = ToneMap::Reinhard;
+  bigger.display.toneMap = ToneMap::Reinhard;
   renderer.setSettings(bigger);
   EXPECT_EQ(renderer.accumulatedFrames(), 1);
   FrameSettings bad = bigger;
-  bad.whiteBalance = "no-such-lamp";
+  bad.display.whiteBalance = "no-such-lamp";
   EXPECT_THROW(renderer.setSettings(bad), Error);
-  EXPECT_EQ(renderer.settings().whiteBalance, "none");
+  EXPECT_EQ(renderer.settings().display.whiteBalance, "none");
   renderer.renderFrame();
   EXPECT_EQ(renderer.accumulatedFrames(), 2);
   EXPECT_EQ(renderer.frameData().batches.size(), std::size_t{8});

@@ -125,6 +125,15 @@ Adaptation adaptationFromName(std::string_view name) {
               "' (known: bradford, cat02, von-kries)");
 }
 
+std::string_view adaptationName(Adaptation adaptation) {
+  switch (adaptation) {
+    case Adaptation::Bradford: return "bradford";
+    case Adaptation::Cat02: return "cat02";
+    case Adaptation::VonKries: return "von-kries";
+  }
+  return "?";
+}
+
 Eigen::Matrix3d chromaticAdaptation(Adaptation method, const Eigen::Vector3d& sourceWhiteXyz,
                                     const Eigen::Vector3d& targetWhiteXyz) {
   Eigen::Matrix3d cone = coneMatrix(method);

@@ -50,6 +50,7 @@ std::vector<std::string> listColourSpaces();
 // whites there, back to XYZ (von Kries 1902 in the form of CIE 160:2004 §2).
 enum class Adaptation { Bradford, Cat02, VonKries };
 Adaptation adaptationFromName(std::string_view name);  // "bradford" | "cat02" | "von-kries"
+std::string_view adaptationName(Adaptation adaptation);
 Eigen::Matrix3d chromaticAdaptation(Adaptation method, const Eigen::Vector3d& sourceWhiteXyz,
                                     const Eigen::Vector3d& targetWhiteXyz);
 

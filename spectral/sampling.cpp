@@ -65,6 +65,16 @@ SamplingStrategy samplingStrategyFromName(std::string_view name) {
               "' (known: uniform, stratified, rotated, importance)");
 }
 
+std::string_view samplingStrategyName(SamplingStrategy strategy) {
+  switch (strategy) {
+    case SamplingStrategy::Uniform: return "uniform";
+    case SamplingStrategy::Stratified: return "stratified";
+    case SamplingStrategy::Rotated: return "rotated";
+    case SamplingStrategy::Importance: return "importance";
+  }
+  return "?";
+}
+
 void validate(const SamplingSettings& s) {
   if (s.count < 4 || s.count > 1000 || s.count % 4 != 0)
     throw Error("wavelength count must be a multiple of 4 within 4–1000, got " +

@@ -38,6 +38,7 @@ struct SampledWavelengths {
 
 enum class SamplingStrategy { Uniform, Stratified, Rotated, Importance };
 SamplingStrategy samplingStrategyFromName(std::string_view name);  // uniform|stratified|rotated|importance
+std::string_view samplingStrategyName(SamplingStrategy strategy);
 
 struct SamplingSettings {
   int count = 16;  // a multiple of 4, 4–1000

@@ -23,7 +23,7 @@ bool underCameraCurves(const render::FrameSettings& s) {
 
 // The luminance the view's exposure maps to display white.
 double whiteLuminance(const render::FrameSettings& s, const Camera& camera) {
-  return render::displayWhiteLuminance(s.ev100.value_or(camera.ev100));
+  return render::displayWhiteLuminance(s.display.ev100.value_or(camera.ev100));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-// The display panel: tone map, exposure (the scene camera's or EV100), white balance and display
-// colour space. One display for both halves of the split: the right view follows the left.
+// The display panel: tone map, exposure (the scene camera's or EV100), white balance, its
+// adaptation, the display colour space and dither. One display for both halves of the split:
+// the right view follows the left.
 #include <imgui.h>
 
 #include <optional>
@@ -17,24 +18,19 @@ class DisplayPanel final : public Panel {
   void draw(PanelContext& context) override {
     render::FrameSettings& s = context.view.left;
     bool& changed = context.changes.settings;
-    changed |= combo<render::ToneMap>("tone map", s.toneMap, {{render::ToneMap::None, "none"},
-                                                              {render::ToneMap::Reinhard, "reinhard"},
-                                                              {render::ToneMap::Aces, "aces"}});
-    bool sceneEv = !s.ev100.has_value();
+    render::DisplaySettings& d = s.display;
+    changed |= settingCombo(s, "tonemap");
+    bool sceneEv = !d.ev100.has_value();
     if (ImGui::Checkbox("the scene camera's exposure", &sceneEv)) {
-      s.ev100 = sceneEv ? std::nullopt : std::optional<float>(context.camera.camera().ev100);
+      d.ev100 = sceneEv ? std::nullopt : std::optional<float>(context.camera.camera().ev100);
       changed = true;
     }
-    if (s.ev100) changed |= ImGui::SliderFloat("EV100", &*s.ev100, -5.0f, 20.0f, "%.1f");
-    changed |= stringCombo("white balance", s.whiteBalance, mBalances);
-    changed |= stringCombo("display", s.display, {"srgb", "display-p3", "rec2020"});
-    if (changed) {  // any settings change this frame, the other panels' too
-      render::FrameSettings& right = context.view.right;
-      right.toneMap = s.toneMap;
-      right.ev100 = s.ev100;
-      right.whiteBalance = s.whiteBalance;
-      right.display = s.display;
-    }
+    if (d.ev100) changed |= ImGui::SliderFloat("ev", &*d.ev100, -5.0f, 20.0f, "%.1f");
+    changed |= stringCombo("white-balance", d.whiteBalance, mBalances);
+    changed |= settingCombo(s, "adaptation");
+    changed |= settingCombo(s, "display");
+    changed |= settingCombo(s, "dither");
+    if (changed) context.view.right.display = d;  // any settings change this frame, the other panels' too
   }
 
  private:

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/error.h"
+#include "render/setting_keys.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 
@@ -21,14 +23,19 @@ bool stringCombo(const char* label, std::string& value, const std::vector<std::s
   return changed;
 }
 
+bool settingCombo(render::FrameSettings& s, std::string_view key) {
+  const render::SettingKey* k = render::findFrameSettingKey(key);
+  PRISM_CHECK(k && !k->choices.empty());
+  std::string value = k->print(s);
+  bool changed = stringCombo(k->name.c_str(), value, k->choices);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", k->help.c_str());
+  if (changed) k->parse(s, value);
+  return changed;
+}
+
 bool frameSettingsControls(render::FrameSettings& s, const char* id, const std::vector<std::string>& observers) {
   ImGui::PushID(id);
-  bool changed = combo<render::RenderMode>("mode", s.mode,
-                                           {{render::RenderMode::Rgb, "rgb"},
-                                            {render::RenderMode::Naive, "naive"},
-                                            {render::RenderMode::JakobHanika, "jakob-hanika"},
-                                            {render::RenderMode::Reference, "reference (472 wavelengths)"},
-                                            {render::RenderMode::Optimised4, "optimised4 (sky's 4 wavelengths)"}});
+  bool changed = settingCombo(s, "mode");
   int count = s.sampling.count;
   if (ImGui::SliderInt("wavelengths", &count, 4, 256)) {
     s.sampling.count = std::max(4, count / 4 * 4);
@@ -40,11 +47,7 @@ bool frameSettingsControls(render::FrameSettings& s, const char* id, const std::
     s.sampling.maxNm = std::clamp<double>(range[1], s.sampling.minNm + 1.0, 830.0);
     changed = true;
   }
-  changed |= combo<SamplingStrategy>("strategy", s.sampling.strategy,
-                                     {{SamplingStrategy::Uniform, "uniform"},
-                                      {SamplingStrategy::Stratified, "stratified"},
-                                      {SamplingStrategy::Rotated, "rotated"},
-                                      {SamplingStrategy::Importance, "importance"}});
+  changed |= settingCombo(s, "strategy");
   changed |= stringCombo("observer", s.observer, observers);
   ImGui::PopID();
   return changed;

@@ -1,10 +1,11 @@
-// ImGui controls that several panels share: a combo over named values, one over strings, the
-// frame settings of one half of the split (the spectral and split panels), and the names they
-// offer.
+// ImGui controls that several panels share: a combo over strings, one over a frame key's values
+// (its names, choices and help from render/setting_keys.h, the same text as the command line and
+// the script), the frame settings of one half of the split (the spectral and split panels), and
+// the names they offer.
 #pragma once
 
 #include <string>
-#include <utility>
+#include <string_view>
 #include <vector>
 
 #include <imgui.h>
@@ -13,25 +14,10 @@
 
 namespace prism::viewer {
 
-// True when the user picked a value (then in `value`).
-template <typename T>
-bool combo(const char* label, T& value, const std::vector<std::pair<T, std::string>>& choices) {
-  std::string current;
-  for (const auto& [v, name] : choices) if (v == value) current = name;
-  bool changed = false;
-  if (ImGui::BeginCombo(label, current.c_str())) {
-    for (const auto& [v, name] : choices) {
-      if (ImGui::Selectable(name.c_str(), v == value)) {
-        value = v;
-        changed = true;
-      }
-    }
-    ImGui::EndCombo();
-  }
-  return changed;
-}
-
 bool stringCombo(const char* label, std::string& value, const std::vector<std::string>& choices);
+// The values of the frame key `key` (a Choice or Switch key), labelled with its name; true when
+// the user picked one.
+bool settingCombo(render::FrameSettings& s, std::string_view key);
 
 // Mode, wavelengths, range, strategy and observer of one view; `id` keeps the two views' apart.
 bool frameSettingsControls(render::FrameSettings& s, const char* id, const std::vector<std::string>& observers);

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "render/setting_keys.h"
 #include "viewer/light_spectrum.h"
 #include "viewer/soak.h"
 #include "viewer/technique_settings.h"
@@ -45,7 +46,7 @@ glm::vec3 parseVec3(const std::string& what, const std::string& text) {
   std::string part;
   for (int i = 0; i < 3; ++i) {
     if (!std::getline(in, part, ',')) throw Error(fmt::format("{}: expected X,Y,Z, got \"{}\"", what, text));
-    v[i] = parseFloat(what, part);
+    v[i] = render::parseFloat(what, part);
   }
   return v;
 }
@@ -55,10 +56,10 @@ void setLightKey(Scene& scene, const std::string& key, const std::vector<std::st
                  const std::string& value) {
   if (scene.lights.empty()) throw Error(fmt::format("{}: the scene has no lights", key));
   auto i = static_cast<std::size_t>(
-      parseInteger("light index", parts[1], 0, static_cast<long>(scene.lights.size()) - 1));
+      render::parseInteger("light index", parts[1], 0, static_cast<long>(scene.lights.size()) - 1));
   Light& light = scene.lights[i];
   if (parts[2] == "spd") setLightSpd(light, value);
-  else if (parts[2] == "intensity") light.intensity = std::max(0.0f, parseFloat(key, value));
+  else if (parts[2] == "intensity") light.intensity = std::max(0.0f, render::parseFloat(key, value));
   else if (parts[2] == "direction") {
     glm::vec3 d = parseVec3(key, value);
     if (!(glm::length(d) > 0.0f)) throw Error(fmt::format("{}: expected a non-zero direction", key));
@@ -75,32 +76,19 @@ void setMaterialKey(Scene& scene, const std::string& key, const std::vector<std:
                          [&](const Material& m) { return m.name == parts[1]; });
   if (it == scene.materials.end()) throw Error(fmt::format("{}: no material \"{}\"", key, parts[1]));
   if (parts[2] == "base-colour") it->baseColour = glm::clamp(parseVec3(key, value), glm::vec3(0.0f), glm::vec3(1.0f));
-  else if (parts[2] == "roughness") it->roughness = std::clamp(parseFloat(key, value), 0.0f, 1.0f);
-  else if (parts[2] == "metallic") it->metallic = std::clamp(parseFloat(key, value), 0.0f, 1.0f);
+  else if (parts[2] == "roughness") it->roughness = std::clamp(render::parseFloat(key, value), 0.0f, 1.0f);
+  else if (parts[2] == "metallic") it->metallic = std::clamp(render::parseFloat(key, value), 0.0f, 1.0f);
   else throw Error(fmt::format("unknown setting \"{}\" (material.NAME.base-colour, roughness, metallic)", key));
 }
 
 void set(Viewer& viewer, const std::string& key, const std::string& value) {
-  ViewSettings& view = viewer.view();
   Changes& changes = viewer.changes();
-  if (key.rfind("right.", 0) == 0) {
-    if (!applyFrameSetting(view.right, key.substr(6), value)) throw Error(fmt::format("unknown setting \"{}\"", key));
+  if (applyViewSetting(viewer.view(), key, value)) {
     changes.settings = true;
     return;
   }
-  if (applyFrameSetting(view.left, key, value)) {
-    changes.settings = true;
-    return;
-  }
-  auto onOff = [&](bool& flag) {
-    if (value != "on" && value != "off") throw Error(fmt::format("{}: expected on or off, got \"{}\"", key, value));
-    flag = value == "on";
-    changes.settings = true;
-  };
-  if (key == "split") return onOff(view.split);
-  if (key == "heat-map") return onOff(view.heatMap);
   if (key == "fov") {
-    viewer.camera().setFieldOfView(parseFloat(key, value));
+    viewer.camera().setFieldOfView(render::parseFloat(key, value));
     changes.camera = true;
     return;
   }
@@ -122,8 +110,8 @@ void set(Viewer& viewer, const std::string& key, const std::string& value) {
     changes.scene = true;
     return;
   }
-  throw Error(fmt::format("unknown setting \"{}\" (frame keys of viewer_settings.h, right.KEY, split, heat-map, "
-                          "fov, light.N.*, material.NAME.*, water.type, water.depth, sky.*)", key));
+  throw Error(fmt::format("unknown setting \"{}\" (the frame keys of `prism settings --keys`, right.KEY, split, "
+                          "heat-map, fov, light.N.*, material.NAME.*, water.type, water.depth, sky.*)", key));
 }
 
 void execute(Viewer& viewer, const std::vector<std::string>& w) {
@@ -140,16 +128,16 @@ void execute(Viewer& viewer, const std::vector<std::string>& w) {
     }
   } else if (verb == "frames") {
     need(1);
-    long n = parseInteger("frames", w[1], 0, 1000000);
+    long n = render::parseInteger("frames", w[1], 0, 1000000);
     for (long i = 0; i < n; ++i) viewer.frame();
     if (!viewer.renderError().empty()) throw Error(viewer.renderError());
   } else if (verb == "resize") {
     need(2);
-    viewer.resize(static_cast<int>(parseInteger("width", w[1], 16, 8192)),
-                  static_cast<int>(parseInteger("height", w[2], 16, 8192)));
+    viewer.resize(static_cast<int>(render::parseInteger("width", w[1], 16, 8192)),
+                  static_cast<int>(render::parseInteger("height", w[2], 16, 8192)));
   } else if (verb == "orbit") {
     need(2);
-    viewer.camera().orbit(parseFloat("yaw", w[1]) * kDegrees, parseFloat("pitch", w[2]) * kDegrees);
+    viewer.camera().orbit(render::parseFloat("yaw", w[1]) * kDegrees, render::parseFloat("pitch", w[2]) * kDegrees);
     viewer.changes().camera = true;
   } else if (verb == "screenshot") {
     need(1);
@@ -174,8 +162,8 @@ void execute(Viewer& viewer, const std::vector<std::string>& w) {
     viewer.reloadShaders();
   } else if (verb == "soak") {
     if (w.size() != 2 && w.size() != 3) throw Error("soak takes FRAMES and optionally MAX-GROWTH-MB");
-    soak(viewer, static_cast<int>(parseInteger("soak", w[1], 1, 1000000)),
-         w.size() == 3 ? std::optional<double>(parseFloat("soak's memory bound", w[2])) : std::nullopt);
+    soak(viewer, static_cast<int>(render::parseInteger("soak", w[1], 1, 1000000)),
+         w.size() == 3 ? std::optional<double>(render::parseFloat("soak's memory bound", w[2])) : std::nullopt);
   } else {
     throw Error(fmt::format("unknown command \"{}\" (set, frames, resize, orbit, screenshot, save-settings, "
                             "load-settings, reload-shaders, soak, heat-map-stats)", verb));

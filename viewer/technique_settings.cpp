@@ -7,9 +7,9 @@
 
 #include "scene/scene_loader.h"
 #include "core/error.h"
+#include "render/setting_keys.h"
 #include "techniques/atmosphere/atmosphere_section.h"
 #include "techniques/underwater/water_section.h"
-#include "viewer/viewer_settings.h"
 
 namespace prism::viewer {
 
@@ -18,7 +18,7 @@ bool setWaterKey(Scene& scene, const std::string& key, const std::string& value)
   auto* water = scene.techniques.find<underwater::WaterSection>();
   if (!water) throw Error("the scene has no water");
   if (key == "water.type") water->type = value;
-  else water->depthM = std::max(0.0f, parseFloat(key, value));
+  else water->depthM = std::max(0.0f, render::parseFloat(key, value));
   water->resolve();
   return true;
 }
@@ -30,10 +30,10 @@ bool setSkyKey(Scene& scene, const std::string& key, const std::string& value) {
   atmosphere::AtmosphereSection& a = *sky;
   atmosphere::AtmosphereParameters p = a.parameters;
   std::string_view k = std::string_view(key).substr(4);
-  if (k == "elevation") a.sunElevationDeg = std::clamp(parseFloat(key, value), -90.0f, 90.0f);
-  else if (k == "azimuth") a.sunAzimuthDeg = parseFloat(key, value);
-  else if (k == "turbidity") p.mieAngstromBeta = parseFloat(key, value);
-  else if (k == "ozone") p.ozoneColumnDu = parseFloat(key, value);
+  if (k == "elevation") a.sunElevationDeg = std::clamp(render::parseFloat(key, value), -90.0f, 90.0f);
+  else if (k == "azimuth") a.sunAzimuthDeg = render::parseFloat(key, value);
+  else if (k == "turbidity") p.mieAngstromBeta = render::parseFloat(key, value);
+  else if (k == "ozone") p.ozoneColumnDu = render::parseFloat(key, value);
   else if (k == "aerosols" || k == "multiple-scattering") {
     if (value != "on" && value != "off") throw Error(fmt::format("{}: expected on or off, got \"{}\"", key, value));
     (k == "aerosols" ? p.aerosols : p.multipleScattering) = value == "on";

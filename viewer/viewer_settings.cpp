@@ -1,7 +1,5 @@
 #include "viewer/viewer_settings.h"
 
-#include <charconv>
-#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -9,34 +7,11 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
-#include "spectral/colour_space.h"
 #include "core/error.h"
+#include "render/setting_keys.h"
 
 namespace prism::viewer {
 namespace {
-
-std::string strategyName(SamplingStrategy s) {
-  switch (s) {
-    case SamplingStrategy::Uniform: return "uniform";
-    case SamplingStrategy::Stratified: return "stratified";
-    case SamplingStrategy::Rotated: return "rotated";
-    case SamplingStrategy::Importance: return "importance";
-  }
-  return "uniform";
-}
-
-std::string adaptationName(Adaptation a) {
-  switch (a) {
-    case Adaptation::Bradford: return "bradford";
-    case Adaptation::Cat02: return "cat02";
-    case Adaptation::VonKries: return "von-kries";
-  }
-  return "bradford";
-}
-
-const char* toneMapName(render::ToneMap t) {
-  return t == render::ToneMap::None ? "none" : t == render::ToneMap::Reinhard ? "reinhard" : "aces";
-}
 
 glm::vec3 vec3Of(const nlohmann::json& j, const std::string& where) {
   if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number()) {
@@ -47,75 +22,24 @@ glm::vec3 vec3Of(const nlohmann::json& j, const std::string& where) {
 
 }  // namespace
 
-double parseNumber(std::string_view what, std::string_view text) {
-  double v = 0.0;
-  auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v)) {
-    throw Error(fmt::format("{}: expected a number, got \"{}\"", what, text));
+bool applyViewSetting(ViewSettings& view, std::string_view key, std::string_view value) {
+  if (key.starts_with("right.")) {
+    if (!render::applyFrameSetting(view.right, key.substr(6), value)) {
+      throw Error(fmt::format("unknown setting \"{}\"", key));
+    }
+    return true;
   }
-  return v;
-}
-
-long parseInteger(std::string_view what, std::string_view text, long min, long max) {
-  long v = 0;
-  auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || v < min || v > max) {
-    throw Error(fmt::format("{}: expected a whole number within {}–{}, got \"{}\"", what, min, max, text));
-  }
-  return v;
-}
-
-float parseFloat(std::string_view what, std::string_view text) {
-  return static_cast<float>(parseNumber(what, text));
-}
-
-bool applyFrameSetting(render::FrameSettings& s, std::string_view key, std::string_view value) {
-  std::string v(value);
-  if (key == "mode") s.mode = render::renderModeFromName(v);
-  else if (key == "wavelengths") s.sampling.count = static_cast<int>(parseInteger(key, v, 0, 100000));
-  else if (key == "range") {
-    std::size_t comma = v.find(',');
-    if (comma == std::string::npos) throw Error(fmt::format("range: expected MIN,MAX in nm, got \"{}\"", v));
-    s.sampling.minNm = parseNumber(key, std::string_view(v).substr(0, comma));
-    s.sampling.maxNm = parseNumber(key, std::string_view(v).substr(comma + 1));
-  } else if (key == "strategy") s.sampling.strategy = samplingStrategyFromName(v);
-  else if (key == "observer") s.observer = v;
-  else if (key == "lookup") {
-    if (v != "manual" && v != "filtered") throw Error(fmt::format("lookup: expected manual or filtered, got \"{}\"", v));
-    s.lookup = v == "manual" ? render::UpsamplingLookup::Manual : render::UpsamplingLookup::Filtered;
-  } else if (key == "gbuffer") {
-    if (v != "rgb" && v != "coefficients") throw Error(fmt::format("gbuffer: expected rgb or coefficients, got \"{}\"", v));
-    s.gbufferAlbedo = v == "rgb" ? render::GBufferAlbedo::Rgb : render::GBufferAlbedo::Coefficients;
-  } else if (key == "tonemap") s.toneMap = render::toneMapFromName(v);
-  else if (key == "display") s.display = v;
-  else if (key == "white-balance") s.whiteBalance = v;
-  else if (key == "adaptation") s.adaptation = adaptationFromName(v);
-  else if (key == "ev") s.ev100 = v == "scene" ? std::nullopt : std::optional<float>(static_cast<float>(parseNumber(key, v)));
-  else if (key == "shadow-map-size") s.shadowMapSize = static_cast<int>(parseInteger(key, v, 0, 100000));
-  else return false;
+  if (render::applyFrameSetting(view.left, key, value)) return true;
+  if (key != "split" && key != "heat-map") return false;
+  if (value != "on" && value != "off") throw Error(fmt::format("{}: expected on or off, got \"{}\"", key, value));
+  (key == "split" ? view.split : view.heatMap) = value == "on";
   return true;
-}
-
-std::map<std::string, std::string> frameSettingValues(const render::FrameSettings& s) {
-  return {{"mode", std::string(render::renderModeName(s.mode))},
-          {"wavelengths", std::to_string(s.sampling.count)},
-          {"range", fmt::format("{:g},{:g}", s.sampling.minNm, s.sampling.maxNm)},
-          {"strategy", strategyName(s.sampling.strategy)},
-          {"observer", s.observer},
-          {"lookup", s.lookup == render::UpsamplingLookup::Manual ? "manual" : "filtered"},
-          {"gbuffer", s.gbufferAlbedo == render::GBufferAlbedo::Rgb ? "rgb" : "coefficients"},
-          {"tonemap", toneMapName(s.toneMap)},
-          {"display", s.display},
-          {"white-balance", s.whiteBalance},
-          {"adaptation", adaptationName(s.adaptation)},
-          {"ev", s.ev100 ? fmt::format("{:g}", *s.ev100) : "scene"},
-          {"shadow-map-size", std::to_string(s.shadowMapSize)}};
 }
 
 void saveViewSettings(const std::filesystem::path& path, const ViewSettings& view, const Camera& camera) {
   nlohmann::json j;
-  j["left"] = frameSettingValues(view.left);
-  j["right"] = frameSettingValues(view.right);
+  for (const auto& [key, value] : render::frameSettingValues(view.left)) j["left"][key] = value;
+  for (const auto& [key, value] : render::frameSettingValues(view.right)) j["right"][key] = value;
   j["split"] = view.split;
   j["heat_map"] = view.heatMap;
   j["camera"] = {{"position", {camera.position.x, camera.position.y, camera.position.z}},
@@ -142,7 +66,7 @@ void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Cam
       for (const auto& [k, v] : value.items()) {
         if (!v.is_string()) throw Error(fmt::format("{}: /{}/{}: expected a string, got {}", file, key, k, v.dump()));
         try {
-          if (!applyFrameSetting(side, k, v.get<std::string>())) throw Error("unknown setting");
+          if (!render::applyFrameSetting(side, k, v.get<std::string>())) throw Error("unknown setting");
         } catch (const Error& e) {
           throw Error(fmt::format("{}: /{}/{}: {}", file, key, k, e.what()));
         }

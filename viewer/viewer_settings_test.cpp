@@ -5,28 +5,59 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "render/setting_keys.h"
 
 namespace prism::viewer {
 namespace {
 
 TEST(ViewerSettings, EveryFrameKeyReadsBackWhatItWrote) {
   render::FrameSettings s;
-  ASSERT_TRUE(applyFrameSetting(s, "mode", "naive"));
-  ASSERT_TRUE(applyFrameSetting(s, "wavelengths", "32"));
-  ASSERT_TRUE(applyFrameSetting(s, "range", "380,720"));
-  ASSERT_TRUE(applyFrameSetting(s, "strategy", "rotated"));
-  ASSERT_TRUE(applyFrameSetting(s, "gbuffer", "coefficients"));
-  ASSERT_TRUE(applyFrameSetting(s, "ev", "9.5"));
-  EXPECT_FALSE(applyFrameSetting(s, "colour", "red"));
+  for (const render::SettingKey& key : render::frameSettingKeys()) {
+    ASSERT_TRUE(render::applyFrameSetting(s, key.name, key.example)) << key.name;
+  }
+  EXPECT_FALSE(render::applyFrameSetting(s, "colour", "red"));
   render::FrameSettings again;
-  for (const auto& [key, value] : frameSettingValues(s)) ASSERT_TRUE(applyFrameSetting(again, key, value)) << key;
-  EXPECT_EQ(frameSettingValues(again), frameSettingValues(s));
+  for (const auto& [key, value] : render::frameSettingValues(s)) {
+    ASSERT_TRUE(render::applyFrameSetting(again, key, value)) << key;
+  }
+  EXPECT_EQ(render::frameSettingValues(again), render::frameSettingValues(s));
   EXPECT_EQ(again.sampling.count, 32);
   EXPECT_DOUBLE_EQ(again.sampling.minNm, 380.0);
-  ASSERT_TRUE(again.ev100);
-  EXPECT_FLOAT_EQ(*again.ev100, 9.5f);
-  EXPECT_THROW(applyFrameSetting(s, "wavelengths", "many"), Error);
-  EXPECT_THROW(applyFrameSetting(s, "mode", "sepia"), Error);
+  ASSERT_TRUE(again.display.ev100);
+  EXPECT_FLOAT_EQ(*again.display.ev100, 9.5f);
+  EXPECT_THROW(render::applyFrameSetting(s, "wavelengths", "many"), Error);
+  EXPECT_THROW(render::applyFrameSetting(s, "mode", "sepia"), Error);
+}
+
+TEST(ViewerSettings, BadValuesAreOneLineNamingTheKeyAndWhatItExpects) {
+  render::FrameSettings s;
+  auto message = [&](const char* key, const char* value) {
+    try {
+      render::applyFrameSetting(s, key, value);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("mode", "sepia"), "mode: expected rgb, naive, jakob-hanika, reference or optimised4, got \"sepia\"");
+  EXPECT_EQ(message("gizmos", "yes"), "gizmos: expected on or off, got \"yes\"");
+  EXPECT_EQ(message("shadow-map-size", "8"), "shadow-map-size: expected a whole number within 16–8192, got \"8\"");
+  EXPECT_EQ(message("observer", "cie1932"),
+            "observer: expected cie1931, cie1964 or a camera (see `prism colour list cameras`), got \"cie1932\"");
+  EXPECT_EQ(render::frameSettingValues(s), render::frameSettingValues(render::FrameSettings{})) << "nothing changed";
+}
+
+TEST(ViewerSettings, ViewKeysSetEitherHalfAndTheSplit) {
+  ViewSettings view;
+  EXPECT_TRUE(applyViewSetting(view, "mode", "rgb"));
+  EXPECT_TRUE(applyViewSetting(view, "right.tonemap", "none"));
+  EXPECT_TRUE(applyViewSetting(view, "split", "on"));
+  EXPECT_FALSE(applyViewSetting(view, "fov", "40"));
+  EXPECT_THROW(applyViewSetting(view, "right.fov", "40"), Error);
+  EXPECT_EQ(view.left.mode, render::RenderMode::Rgb);
+  EXPECT_EQ(view.right.mode, render::RenderMode::JakobHanika);
+  EXPECT_EQ(view.right.display.toneMap, render::ToneMap::None);
+  EXPECT_TRUE(view.split);
 }
 
 TEST(ViewerSettings, FilesRoundTripAndBadOnesChangeNothing) {

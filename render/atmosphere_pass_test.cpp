@@ -1,6 +1,6 @@
 // The sky's tables on the GPU (llvmpipe in CI) against the double-precision reference of the
 // same model (techniques/atmosphere/atmosphere_reference.h) and against their CPU twin.
-#include "render/atmosphere_pass.h"
+#include "techniques/atmosphere/gpu/atmosphere_pass.h"
 
 #include <gtest/gtest.h>
 
@@ -33,11 +33,11 @@ TEST(AtmospherePass, TablesMatchTheDoublePrecisionReference) {
   p.multipleScattering = false;  // the sky view is then single scattering alone
   shared::GpuAtmosphere batch = packAtmosphere(p, glm::vec4(360.0f, 440.0f, 550.0f, 680.0f));
   const float r = float(p.bottomRadiusKm) + 0.2f;
-  AtmospherePass pass;
+  atmosphere::AtmospherePass pass;
   AtmosphereTables cpu = computeTables(batch);
 
   // Transmittance: every 5th × 3rd texel.
-  AtmosphereView view;
+  atmosphere::AtmosphereView view;
   view.originKm = r;
   pass.update({batch}, view);
   std::vector<glm::vec4> depth = readAtmosphereTexels(pass).transmittance[0];
@@ -109,11 +109,11 @@ TEST(AtmospherePass, IrradianceAndAerialPerspectiveMatchIndependentIntegrals) {
   shared::GpuAtmosphere batch = packAtmosphere(p, glm::vec4(360.0f, 440.0f, 550.0f, 680.0f));
   const float r = float(p.bottomRadiusKm) + 0.2f;
   const double elevation = 10.0 * kPi / 180.0;
-  AtmosphereView view;
+  atmosphere::AtmosphereView view;
   view.originKm = r;
   view.sun = glm::vec3(std::cos(elevation), std::sin(elevation), 0.0f);
   view.inverseViewProjection = glm::mat4(1.0f);  // far points (ndc x, ndc y, 1): a 90° view along +z
-  AtmospherePass pass;
+  atmosphere::AtmospherePass pass;
   pass.update({batch}, view);
 
   // Irradiance coefficients.

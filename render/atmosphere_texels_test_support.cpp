@@ -16,7 +16,7 @@ std::vector<std::vector<glm::vec4>> readLayers(const gpu::Texture2DArray& t) {
 
 }  // namespace
 
-AtmosphereTexels readAtmosphereTexels(const AtmospherePass& pass) {
+AtmosphereTexels readAtmosphereTexels(const atmosphere::AtmospherePass& pass) {
   AtmosphereTexels a;
   a.transmittance = readLayers(pass.transmittance());
   a.multipleScattering = readLayers(pass.multipleScattering());

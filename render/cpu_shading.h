@@ -24,7 +24,7 @@ struct GBufferTexel {
   glm::vec3 coefficients{0.0f};  // Jakob–Hanika coefficients, when the G-buffer holds them
 };
 
-// The sky's tables as the GPU holds them (render/atmosphere_pass.h, read back), one entry per
+// The sky's tables as the GPU holds them (techniques/atmosphere/gpu/atmosphere_pass.h, read back), one entry per
 // texture-array layer, texels row by row from the bottom (the aerial-perspective volume's rows
 // hold every batch side by side); empty without a sky.
 struct AtmosphereTexels {

@@ -22,7 +22,7 @@
 #include "gpu/texture.h"
 #include "gpu/vertex_array.h"
 #include "scene/camera_transform.h"
-#include "render/technique_pass.h"
+#include "techniques/technique_pass.h"
 #include "render/display_transform.h"
 #include "render/frame_context.h"
 #include "render/frame_data.h"

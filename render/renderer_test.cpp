@@ -59,7 +59,7 @@ class GpuCpuParity : public testing::TestWithParam<ParityCase> {};
 
 // The sky's tables of the renderer's last frame, for the CPU twin (none without a sky).
 AtmosphereTexels readAtmosphere(const Renderer& renderer) {
-  const auto* pass = dynamic_cast<const AtmospherePass*>(renderer.techniquePass("atmosphere"));
+  const auto* pass = dynamic_cast<const atmosphere::AtmospherePass*>(renderer.techniquePass("atmosphere"));
   return pass ? readAtmosphereTexels(*pass) : AtmosphereTexels{};
 }
 

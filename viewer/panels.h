@@ -1,4 +1,5 @@
-// The viewer's panels, in the order the interface shows them: one file each, <name>_panel.cpp.
+// The viewer's panels, in the order the interface shows them: one file each, <name>_panel.cpp
+// (a technique's in its own folder, techniques/<name>/viewer/).
 #pragma once
 
 #include <memory>

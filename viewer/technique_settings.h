@@ -1,5 +1,6 @@
 // The script's `set` keys of the techniques, one function per technique, each the only place in
-// the script that knows its technique's part of the Scene. Each returns false when the key is not
+// the script that knows its technique's part of the Scene, and each defined in its technique's
+// folder (techniques/<name>/viewer/<name>_settings.cpp); this list is their registration. Each returns false when the key is not
 // its technique's, and throws Error (the scene unchanged) when the value is bad or the scene
 // lacks the technique; on success the scene's derived data is up to date and the renderers must
 // be told (Changes::scene).

@@ -1,3 +1,4 @@
+// The viewer script's `set sky.*` keys (viewer/technique_settings.h).
 #include "viewer/technique_settings.h"
 
 #include <algorithm>
@@ -5,23 +6,12 @@
 
 #include <fmt/format.h>
 
-#include "scene/scene_loader.h"
 #include "core/error.h"
 #include "render/setting_keys.h"
+#include "scene/scene_loader.h"
 #include "techniques/atmosphere/atmosphere_section.h"
-#include "techniques/underwater/water_section.h"
 
 namespace prism::viewer {
-
-bool setWaterKey(Scene& scene, const std::string& key, const std::string& value) {
-  if (key != "water.type" && key != "water.depth") return false;
-  auto* water = scene.techniques.find<underwater::WaterSection>();
-  if (!water) throw Error("the scene has no water");
-  if (key == "water.type") water->type = value;
-  else water->depthM = std::max(0.0f, render::parseFloat(key, value));
-  water->resolve();
-  return true;
-}
 
 bool setSkyKey(Scene& scene, const std::string& key, const std::string& value) {
   if (key.rfind("sky.", 0) != 0) return false;

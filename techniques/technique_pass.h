@@ -1,7 +1,8 @@
 // The GPU side of the technique seam: a technique's passes before the lighting pass (the sky's
-// tables) and what they give the lighting pass beyond the technique's block. The renderer makes
-// one per section whose technique has GPU passes (makeTechniquePass, one registration line per
-// technique in technique_pass.cpp), runs it each frame and binds it for the lighting pass.
+// tables) and what they give the lighting pass beyond the technique's block. Each technique with
+// GPU passes implements one in techniques/<name>/gpu/ (above prism::gpu and prism::scene, below
+// the renderer); the renderer makes one per section (makeTechniquePass, one registration line
+// per technique in technique_passes.cpp), runs it each frame and binds it for the lighting pass.
 #pragma once
 
 #include <cstddef>
@@ -12,7 +13,7 @@
 #include "scene/scene.h"
 #include "techniques/technique_section.h"
 
-namespace prism::render {
+namespace prism {
 
 class TechniquePass {
  public:
@@ -28,4 +29,4 @@ class TechniquePass {
 // shaders); null for a technique without GPU passes.
 std::unique_ptr<TechniquePass> makeTechniquePass(std::string_view key);
 
-}  // namespace prism::render
+}  // namespace prism

@@ -16,10 +16,10 @@
 #include "gpu/buffer.h"
 #include "gpu/program.h"
 #include "gpu/texture.h"
-#include "render/technique_pass.h"
+#include "techniques/technique_pass.h"
 #include "techniques/atmosphere/atmosphere_layout.h"
 
-namespace prism::render {
+namespace prism::atmosphere {
 
 // Where the frame is seen from (see shaders/shared/atmosphere_lighting.glsl for the frames).
 struct AtmosphereView {
@@ -59,4 +59,4 @@ class AtmospherePass final : public TechniquePass {
   int mBatches = 0;
 };
 
-}  // namespace prism::render
+}  // namespace prism::atmosphere

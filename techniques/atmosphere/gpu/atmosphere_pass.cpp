@@ -1,4 +1,4 @@
-#include "render/atmosphere_pass.h"
+#include "techniques/atmosphere/gpu/atmosphere_pass.h"
 
 #include <span>
 
@@ -6,7 +6,7 @@
 #include "techniques/atmosphere/atmosphere_section.h"
 #include "core/data_files.h"
 
-namespace prism::render {
+namespace prism::atmosphere {
 namespace {
 
 gpu::Program computeProgram(const char* file, const char* label) {
@@ -133,4 +133,4 @@ std::size_t AtmospherePass::gpuMemoryBytes() const {
   return bytes;
 }
 
-}  // namespace prism::render
+}  // namespace prism::atmosphere

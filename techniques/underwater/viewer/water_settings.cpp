@@ -1,0 +1,22 @@
+// The viewer script's `set water.*` keys (viewer/technique_settings.h).
+#include "viewer/technique_settings.h"
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "render/setting_keys.h"
+#include "techniques/underwater/water_section.h"
+
+namespace prism::viewer {
+
+bool setWaterKey(Scene& scene, const std::string& key, const std::string& value) {
+  if (key != "water.type" && key != "water.depth") return false;
+  auto* water = scene.techniques.find<underwater::WaterSection>();
+  if (!water) throw Error("the scene has no water");
+  if (key == "water.type") water->type = value;
+  else water->depthM = std::max(0.0f, render::parseFloat(key, value));
+  water->resolve();
+  return true;
+}
+
+}  // namespace prism::viewer

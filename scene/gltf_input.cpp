@@ -1,0 +1,280 @@
+#include "scene/gltf_input.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <limits>
+
+#include "core/error.h"
+#include "core/json_schema.h"
+
+namespace prism {
+
+namespace {
+
+namespace fs = std::filesystem;
+using schema::Node;
+
+// ---------------------------------------------------------------------------------------------
+// Images
+
+enum class ImageKind { Png, Jpeg, Exr, Hdr, Other };
+
+ImageKind sniffImage(std::span<const std::uint8_t> b) {
+  auto starts = [&](std::initializer_list<unsigned> magic) {
+    if (b.size() < magic.size()) return false;
+    std::size_t i = 0;
+    for (unsigned m : magic)
+      if (b[i++] != m) return false;
+    return true;
+  };
+  if (starts({0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A})) return ImageKind::Png;
+  if (starts({0xFF, 0xD8, 0xFF})) return ImageKind::Jpeg;
+  if (starts({0x76, 0x2F, 0x31, 0x01})) return ImageKind::Exr;
+  if (starts({'#', '?'})) return ImageKind::Hdr;  // "#?RADIANCE", "#?RGBE"
+  return ImageKind::Other;
+}
+
+// Empty when PNG or JPEG, else why not.
+std::string unsupportedImage(std::span<const std::uint8_t> bytes) {
+  switch (sniffImage(bytes)) {
+    case ImageKind::Png:
+    case ImageKind::Jpeg: return {};
+    case ImageKind::Exr: return "OpenEXR images are not supported (only PNG and JPEG)";
+    case ImageKind::Hdr: return "Radiance HDR images are not supported (only PNG and JPEG)";
+    case ImageKind::Other: break;
+  }
+  return "not a PNG or JPEG image (only PNG and JPEG are supported)";
+}
+
+std::string oneLine(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ';';
+  return text;
+}
+
+// tinygltf's decoded RGBA (8 or 16 bits per channel) as Prism's 8-bit RGBA.
+
+// ---------------------------------------------------------------------------------------------
+// tinygltf's file system, confined
+
+struct Guard {
+  fs::path root;
+  std::string refused;     // a path the callbacks refused (outside root)
+  int imageIndex = -1;     // an image the loader refused, and why
+  std::string imageError;
+};
+
+bool guardedFileExists(const std::string& path, void* user) {
+  auto* guard = static_cast<Guard*>(user);
+  if (!schema::isInside(guard->root, path)) {
+    guard->refused = path;
+    return false;
+  }
+  std::error_code ec;
+  return fs::is_regular_file(path, ec);
+}
+
+// No expansion of "~" or environment variables: a path means what it says.
+std::string identityPath(const std::string& path, void*) { return path; }
+
+bool guardedReadFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                     void* user) {
+  auto* guard = static_cast<Guard*>(user);
+  if (!schema::isInside(guard->root, path)) {
+    guard->refused = path;
+    if (err) *err += "refused to read " + path + ", outside " + guard->root.string();
+    return false;
+  }
+  try {
+    *out = schema::readBinaryFile(path);
+  } catch (const Error& e) {
+    if (err) *err += e.what();
+    return false;
+  }
+  return true;
+}
+
+bool refuseWrite(std::string* err, const std::string& path, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "refused to write " + path;
+  return false;
+}
+
+bool guardedImageLoader(tinygltf::Image* image, const int index, std::string* err,
+                        std::string* warn, int width, int height, const unsigned char* bytes,
+                        int size, void* user) {
+  auto* guard = static_cast<Guard*>(user);
+  std::string why = unsupportedImage({bytes, static_cast<std::size_t>(std::max(size, 0))});
+  if (!why.empty()) {
+    guard->imageIndex = index;
+    guard->imageError = why;
+    if (err) *err += why;
+    return false;
+  }
+  return tinygltf::LoadImageData(image, index, err, warn, width, height, bytes, size, nullptr);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Checks on the glTF's JSON before tinygltf reads anything
+
+// tinygltf's own URI decoding (dlib::urldecode: %XX escapes, and '+' as a space), so that the
+// path checked is the path it opens.
+std::string decodeUri(const std::string& uri) {
+  auto hex = [](char c) -> unsigned {
+    if (c >= '0' && c <= '9') return static_cast<unsigned>(c - '0');
+    if (c >= 'a' && c <= 'f') return static_cast<unsigned>(c - 'a' + 10);
+    if (c >= 'A' && c <= 'F') return static_cast<unsigned>(c - 'A' + 10);
+    return 0;
+  };
+  std::string out;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '+') {
+      out += ' ';
+    } else if (uri[i] == '%' && uri.size() > i + 2) {
+      out += static_cast<char>((hex(uri[i + 1]) << 4) | hex(uri[i + 2]));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+// RFC 3986 §3.1: scheme = ALPHA *( ALPHA / DIGIT / "+" / "-" / "." ) followed by ':'.
+bool hasScheme(const std::string& uri) {
+  std::size_t colon = uri.find(':');
+  if (colon == std::string::npos || colon == 0 || !std::isalpha(static_cast<unsigned char>(uri[0])))
+    return false;
+  for (std::size_t i = 1; i < colon; ++i) {
+    char c = uri[i];
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '+' && c != '-' && c != '.') return false;
+  }
+  return true;
+}
+
+void checkUris(const Node& top, const fs::path& root, const fs::path& base) {
+  for (const char* section : {"buffers", "images"}) {
+    auto list = top.optionalChild(section);
+    if (!list) continue;
+    for (std::size_t i = 0; i < list->arraySize(); ++i) {
+      Node item = list->element(i);
+      if (!item.json().is_object()) item.fail("expected an object, got " + schema::describe(item.json()));
+      auto uriNode = item.optionalChild("uri");
+      if (!uriNode) continue;
+      if (!uriNode->json().is_string())
+        uriNode->fail("expected a string, got " + schema::describe(uriNode->json()));
+      std::string uri = uriNode->json().get<std::string>();
+      if (uri.rfind("data:", 0) == 0) {
+        if (!tinygltf::IsDataURI(uri))
+          uriNode->fail("unsupported data URI (base64 data of type application/octet-stream, "
+                        "application/gltf-buffer, image/png or image/jpeg expected)");
+        continue;
+      }
+      if (hasScheme(uri))
+        uriNode->fail("'" + uri + "': only relative paths and data: URIs are allowed");
+      try {
+        schema::confinedFile(root, base, decodeUri(uri));
+      } catch (const Error& e) {
+        uriNode->fail(e.what());
+      }
+    }
+  }
+  if (auto required = top.optionalChild("extensionsRequired")) {
+    for (std::size_t i = 0; i < required->arraySize(); ++i) {
+      Node e = required->element(i);
+      e.fail("the file requires extension " + schema::describe(e.json()) + ", which Prism does not support");
+    }
+  }
+}
+
+// The JSON chunk of a binary glTF (glTF 2.0 §4.4: 12-byte header, then chunks of length,
+// type, data; the first chunk is JSON).
+std::string_view glbJson(const std::vector<unsigned char>& bytes, const std::string& name) {
+  auto u32 = [&](std::size_t at) {
+    std::uint32_t v;
+    std::memcpy(&v, bytes.data() + at, 4);
+    return v;
+  };
+  if (bytes.size() < 20) throw Error(name + ": truncated binary glTF (" + std::to_string(bytes.size()) + " bytes)");
+  if (u32(4) != 2) throw Error(name + ": binary glTF version " + std::to_string(u32(4)) + ", expected 2");
+  std::uint32_t length = u32(12);
+  if (u32(16) != 0x4E4F534Au || 20 + static_cast<std::size_t>(length) > bytes.size())
+    throw Error(name + ": binary glTF without a valid JSON chunk");
+  return {reinterpret_cast<const char*>(bytes.data()) + 20, length};
+}
+
+}  // namespace
+
+Image toImage(const tinygltf::Image& src, bool srgb, std::string source) {
+  if (src.width < 1 || src.height < 1 || src.component != 4 || (src.bits != 8 && src.bits != 16))
+    throw Error("image was not decoded to 8- or 16-bit RGBA");
+  Image image;
+  image.width = src.width;
+  image.height = src.height;
+  image.srgb = srgb;
+  image.source = std::move(source);
+  std::size_t count = static_cast<std::size_t>(src.width) * static_cast<std::size_t>(src.height) * 4;
+  if (src.image.size() != count * static_cast<std::size_t>(src.bits / 8))
+    throw Error("decoded image has the wrong size");
+  if (src.bits == 8) {
+    image.rgba = src.image;
+  } else {
+    image.rgba.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      std::uint16_t v;
+      std::memcpy(&v, &src.image[2 * i], 2);  // stb returns native-endian shorts
+      image.rgba[i] = static_cast<std::uint8_t>((static_cast<unsigned>(v) * 255u + 32767u) / 65535u);
+    }
+  }
+  return image;
+}
+
+Image decodeImage(std::span<const std::uint8_t> bytes, bool srgb, std::string source) {
+  if (std::string why = unsupportedImage(bytes); !why.empty()) throw Error(why);
+  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) throw Error("image file too large");
+  tinygltf::Image decoded;
+  std::string err, warn;
+  if (!tinygltf::LoadImageData(&decoded, 0, &err, &warn, 0, 0, bytes.data(), static_cast<int>(bytes.size()), nullptr))
+    throw Error("cannot decode the image (" + oneLine(err) + ")");
+  return toImage(decoded, srgb, std::move(source));
+}
+
+tinygltf::Model loadGltfModel(const fs::path& file, const fs::path& root) {
+  const std::string name = file.string();
+  std::vector<unsigned char> bytes = schema::readBinaryFile(file);
+  bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  std::string_view text = binary ? glbJson(bytes, name)
+                                 : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  if (bytes.size() > std::numeric_limits<unsigned>::max()) throw Error(name + ": file too large");
+
+  // Our own reading of the JSON first: every URI checked before anything is read, with the
+  // place of the offending one.
+  schema::Document document{name, {}};
+  nlohmann::json json = schema::parseJson(text, name);
+  Node top(json, "", document);
+  if (!json.is_object()) top.fail("expected an object, got " + schema::describe(json));
+  fs::path base = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+  checkUris(top, root, base);
+
+  Guard guard{root, {}, -1, {}};
+  tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks({&guardedFileExists, &identityPath, &guardedReadFile, &refuseWrite, &guard});
+  loader.SetImageLoader(&guardedImageLoader, &guard);
+  tinygltf::Model model;
+  std::string err, warn;
+  bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                                 static_cast<unsigned>(bytes.size()), base.string())
+                   : loader.LoadASCIIFromString(&model, &err, &warn, text.data(),
+                                                static_cast<unsigned>(text.size()), base.string());
+  if (guard.imageIndex >= 0)
+    throw Error(name + ": /images/" + std::to_string(guard.imageIndex) + ": " + guard.imageError);
+  if (!ok) {
+    if (!guard.refused.empty())
+      throw Error(name + ": refused to read " + guard.refused + " (outside " + root.string() + ")");
+    throw Error(name + ": " + oneLine(err.empty() ? "tinygltf could not load the file" : err));
+  }
+  return model;
+}
+
+}  // namespace prism

@@ -4,6 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
+# ccache keys on paths relative to the checkout, so that another clone (CI's) reuses the cache.
+export CCACHE_BASEDIR="$PWD"
 
 werror=OFF
 [ -n "${CI:-}" ] && werror=ON

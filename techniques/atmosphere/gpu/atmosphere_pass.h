@@ -49,7 +49,6 @@ class AtmospherePass final : public TechniquePass {
   const gpu::Texture2DArray& skyView() const { return mSkyView; }
   const gpu::Texture2DArray& aerialPerspective() const { return mAerialPerspective; }
   const gpu::Buffer& skyIrradiance() const { return mSkyIrradiance; }  // vec4 × 4 per batch
-  const gpu::Buffer& atmospheres() const { return mAtmospheres; }      // GpuAtmosphere per batch
 
  private:
   gpu::Program mTransmittanceProgram, mMultipleScatteringProgram, mSkyViewProgram,

@@ -12,12 +12,6 @@
 #include "shared/lights.glsl"
 #include "shared/shadow_filter.glsl"
 #include "shared/frame_layout.glsl"
-#ifdef PRISM_TECHNIQUE_WATER
-#include "shared/underwater.glsl"
-#endif
-#ifdef PRISM_TECHNIQUE_ATMOSPHERE
-#include "shared/atmosphere_model.glsl"
-#endif
 #include "common_upsampling.glsl"
 
 layout(std140, binding = kFrameConstantsBinding) uniform Frame { FrameConstants frame; };
@@ -26,16 +20,6 @@ layout(std430, binding = 1) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
 layout(std430, binding = 3) readonly buffer LightSpectra { vec4 lightSpectra[]; };
 layout(std430, binding = 4) readonly buffer MaterialSpectra { vec4 materialSpectra[]; };
-// Each technique's block, where its shared header says.
-#ifdef PRISM_TECHNIQUE_WATER
-layout(std140, binding = kWaterConstantsBinding) uniform Water { WaterConstants water; };
-layout(std430, binding = kWaterSpectraBinding) readonly buffer WaterSpectra { vec4 waterSpectra[]; };
-#endif
-#ifdef PRISM_TECHNIQUE_ATMOSPHERE
-layout(std140, binding = kSkyConstantsBinding) uniform Sky { SkyConstants sky; };
-layout(std430, binding = kSkyAtmospheresBinding) readonly buffer Atmospheres { GpuAtmosphere atmospheres[]; };
-layout(std430, binding = 7) readonly buffer SkyIrradiance { vec4 skyIrradianceSh[]; };
-#endif
 
 layout(binding = 0) uniform sampler2D gAlbedoMetallic;
 layout(binding = 1) uniform sampler2D gNormalRoughness;
@@ -44,13 +28,6 @@ layout(binding = 3) uniform sampler2D gDepth;
 layout(binding = 4) uniform sampler2DArray uShadowMaps;
 layout(binding = 5) uniform sampler3D uUpsamplingTable;
 layout(binding = 6) uniform sampler2D gCoefficients;  // read when frame.gbufferCoefficients != 0
-#ifdef PRISM_TECHNIQUE_ATMOSPHERE
-// The sky's tables (render/atmosphere_pass.h).
-layout(binding = 7) uniform sampler2DArray uTransmittanceLut;
-layout(binding = 8) uniform sampler2DArray uMultipleScatteringLut;
-layout(binding = 9) uniform sampler2DArray uSkyViewLut;
-layout(binding = 10) uniform sampler2DArray uAerialPerspective;
-#endif
 
 layout(location = 0) out vec4 oTristimulus;
 
@@ -61,25 +38,15 @@ vec4 frameLightSpectrum(int l, int b) { return lightSpectra[lightSpectrumIndex(l
 vec4 frameMaterialSpectrum(int s, int b, int j) {
   return materialSpectra[materialSpectrumIndex(s, b, j, frame.batchCount)];
 }
+// Each technique's block, tables and accessors (its common_<name>_lighting.glsl, bindings from its
+// shared header).
 #ifdef PRISM_TECHNIQUE_WATER
-WaterConstants frameWater() { return water; }
-vec4 frameWaterSpectrum(int b, int j) { return waterSpectra[waterSpectrumIndex(b, j)]; }
+#include "common_water_lighting.glsl"
 #endif
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
-SkyConstants frameSky() { return sky; }
-GpuAtmosphere frameAtmosphere(int b) { return atmospheres[b]; }
-vec4 transmittanceLutTexel(int b, int x, int y) { return texelFetch(uTransmittanceLut, ivec3(x, y, b), 0); }
-vec4 multipleScatteringLutTexel(int b, int x, int y) {
-  return texelFetch(uMultipleScatteringLut, ivec3(x, y, b), 0);
-}
-vec4 skyViewLutTexel(int b, int x, int y) { return texelFetch(uSkyViewLut, ivec3(x, y, b), 0); }
-vec4 aerialPerspectiveTexel(int b, int x, int y, int slice, int j) {
-  return texelFetch(uAerialPerspective, ivec3(b * kAerialPerspectiveSize + x, y, j * kAerialPerspectiveSlices + slice), 0);
-}
-vec4 skyIrradianceCoefficient(int b, int k) { return skyIrradianceSh[b * 4 + k]; }
-#include "shared/atmosphere_luts.glsl"
-#include "shared/atmosphere_lighting.glsl"
+#include "common_sky_lighting.glsl"
 #endif
+
 float shadowDepthAt(int layer, int x, int y) {
   return texelFetch(uShadowMaps, ivec3(x, y, layer), 0).r;
 }

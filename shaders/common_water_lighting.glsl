@@ -1,0 +1,9 @@
+// The lighting pass's side of the water (techniques/underwater): its block, at the bindings
+// shared/underwater.glsl declares, and the accessors shared/pixel_shading.glsl reads it through.
+#include "shared/underwater.glsl"
+
+layout(std140, binding = kWaterConstantsBinding) uniform Water { WaterConstants water; };
+layout(std430, binding = kWaterSpectraBinding) readonly buffer WaterSpectra { vec4 waterSpectra[]; };
+
+WaterConstants frameWater() { return water; }
+vec4 frameWaterSpectrum(int b, int j) { return waterSpectra[waterSpectrumIndex(b, j)]; }

@@ -7,7 +7,6 @@
 // says, and compiles the lighting pass with each section's shader define.
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <memory>
@@ -19,6 +18,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/error.h"
 #include "core/json_schema.h"
 #include "frame_layout.h"
 #include "spectral/spectrum.h"
@@ -74,12 +74,14 @@ struct TechniqueBlock {
   }
   template <class T>
   T constantsAs() const {
+    PRISM_CHECK(constants.size() == sizeof(T));
     T value{};
-    std::memcpy(&value, constants.data(), std::min(sizeof(T), constants.size()));
+    std::memcpy(&value, constants.data(), sizeof(T));
     return value;
   }
   template <class T>
   T dataAt(std::size_t index) const {
+    PRISM_CHECK((index + 1) * sizeof(T) <= data.size());
     T value{};
     std::memcpy(&value, data.data() + index * sizeof(T), sizeof(T));
     return value;

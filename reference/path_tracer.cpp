@@ -19,6 +19,7 @@
 #include "shared_cpp.h"
 #include "core/error.h"
 #include "spectral/observer.h"
+#include "techniques/atmosphere/atmosphere_section.h"
 #include "techniques/underwater/water_section.h"
 
 namespace prism::shared {
@@ -496,7 +497,7 @@ void validate(const ReferenceSettings& s) {
 ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& table,
                                const ReferenceSettings& settings, const ReferenceProgress& progress) {
   validate(settings);
-  if (scene.techniques.has("atmosphere")) {
+  if (scene.techniques.has(atmosphere::AtmosphereSection::kKey)) {
     throw Error(fmt::format("{}: the path tracer does not trace the atmosphere; its references are "
                             "`prism atmosphere evaluate` and `prism render --mode reference`",
                             scene.file.string()));

@@ -2,6 +2,9 @@
 
 #include <utility>
 
+#include "techniques/atmosphere/atmosphere_section.h"
+#include "techniques/underwater/water_section.h"
+
 namespace prism::shared {
 
 // The accessors pixel_shading.glsl reads, over the same FrameData the GPU reads, and the sky's
@@ -11,8 +14,8 @@ class CpuShadingAccessors {
   CpuShadingAccessors(const render::FrameData& frame, const RgbToSpectrumTable& table,
                       std::vector<std::vector<float>> shadowLayers, render::AtmosphereTexels atmosphere)
       : mFrame(frame), mTable(table), mShadowLayers(std::move(shadowLayers)), mAtmosphere(std::move(atmosphere)) {
-    if (const TechniqueBlock* water = mFrame.technique("water")) mWater = water;
-    if (const TechniqueBlock* sky = mFrame.technique("atmosphere")) mSky = sky;
+    if (const TechniqueBlock* water = mFrame.technique(underwater::WaterSection::kKey)) mWater = water;
+    if (const TechniqueBlock* sky = mFrame.technique(atmosphere::AtmosphereSection::kKey)) mSky = sky;
   }
   virtual ~CpuShadingAccessors() = default;
   virtual vec3 shade(const render::GBufferTexel& texel, vec2 uv, const CameraTransform& camera) = 0;
@@ -123,7 +126,7 @@ struct CpuShading::Kernel {
 CpuShading::CpuShading(const FrameData& frame, const RgbToSpectrumTable& table,
                        std::vector<std::vector<float>> shadowLayers, AtmosphereTexels atmosphere)
     : mKernel(std::make_unique<Kernel>()) {
-  const bool water = frame.technique("water") != nullptr, sky = frame.technique("atmosphere") != nullptr;
+  const bool water = frame.technique(underwater::WaterSection::kKey) != nullptr, sky = frame.technique(atmosphere::AtmosphereSection::kKey) != nullptr;
   auto make = [&]<class Variant>() -> std::unique_ptr<shared::CpuShadingAccessors> {
     return std::make_unique<Variant>(frame, table, std::move(shadowLayers), std::move(atmosphere));
   };

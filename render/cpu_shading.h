@@ -1,6 +1,7 @@
 // The CPU twin of the lighting pass: shaders/shared/pixel_shading.glsl compiled as C++, with
-// accessors over the same FrameData the GPU reads, the CPU upsampling lookup and shadow maps
-// read back from the GPU. Tests hold the GPU's lighting pass to it pixel by pixel.
+// accessors over the same FrameData the GPU reads, the CPU upsampling lookup, shadow maps read
+// back from the GPU and each technique's twin (techniques/technique_cpu_twin.h), once per
+// combination of techniques. Tests hold the GPU's lighting pass to it pixel by pixel.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include "scene/camera_transform.h"
 #include "render/frame_data.h"
 #include "spectral/rgb_to_spectrum_table.h"
+#include "techniques/technique_cpu_twin.h"
 
 namespace prism::render {
 
@@ -24,20 +26,14 @@ struct GBufferTexel {
   glm::vec3 coefficients{0.0f};  // Jakob–Hanika coefficients, when the G-buffer holds them
 };
 
-// The sky's tables as the GPU holds them (techniques/atmosphere/gpu/atmosphere_pass.h, read back), one entry per
-// texture-array layer, texels row by row from the bottom (the aerial-perspective volume's rows
-// hold every batch side by side); empty without a sky.
-struct AtmosphereTexels {
-  std::vector<std::vector<glm::vec4>> transmittance, multipleScattering, skyView, aerialPerspective;
-  std::vector<glm::vec4> skyIrradiance;  // four per batch
-};
-
 class CpuShading {
  public:
-  // shadowLayers: each layer's depths, size × size, row 0 at the bottom (GL order). The table
-  // is looked up with the manual (reference) path and must outlive this; the frame is copied.
+  // shadowLayers: each layer's depths, size × size, row 0 at the bottom (GL order); texels: what
+  // the techniques' passes hold for the lighting pass, read back (TechniquePass::readTexels), by
+  // technique key. The table is looked up with the manual (reference) path and must outlive
+  // this; the frame is copied.
   CpuShading(const FrameData& frame, const RgbToSpectrumTable& table,
-             std::vector<std::vector<float>> shadowLayers, AtmosphereTexels atmosphere = {});
+             std::vector<std::vector<float>> shadowLayers, TechniqueTexelsByKey texels = {});
   ~CpuShading();
   CpuShading(const CpuShading&) = delete;
   CpuShading& operator=(const CpuShading&) = delete;

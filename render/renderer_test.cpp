@@ -16,7 +16,7 @@
 #include "gpu/headless_context.h"
 #include "imaging/image_difference.h"
 #include "imaging/png_file.h"
-#include "render/atmosphere_texels_test_support.h"
+#include "techniques/technique_pass.h"
 #include "render/cpu_shading.h"
 #include "scene/scene_loader.h"
 #include "core/error.h"
@@ -57,10 +57,14 @@ void PrintTo(const ParityCase& c, std::ostream* os) {
 
 class GpuCpuParity : public testing::TestWithParam<ParityCase> {};
 
-// The sky's tables of the renderer's last frame, for the CPU twin (none without a sky).
-AtmosphereTexels readAtmosphere(const Renderer& renderer) {
-  const auto* pass = dynamic_cast<const atmosphere::AtmospherePass*>(renderer.techniquePass("atmosphere"));
-  return pass ? readAtmosphereTexels(*pass) : AtmosphereTexels{};
+// What the techniques' passes of the renderer's last frame hold for the lighting pass, for the CPU
+// twin.
+TechniqueTexelsByKey readTexels(const Renderer& renderer) {
+  TechniqueTexelsByKey texels;
+  for (const TechniqueBlock& block : renderer.frameData().techniques) {
+    if (const TechniquePass* pass = renderer.techniquePass(block.key)) texels[block.key] = pass->readTexels();
+  }
+  return texels;
 }
 
 TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {
@@ -83,7 +87,7 @@ TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {
   for (const ShadowView& view : renderer.shadowViews()) {
     shadowLayers.push_back(gpu::readTextureLayerFloat(renderer.shadowMaps(), view.layer));
   }
-  CpuShading cpu(renderer.frameData(), table(), std::move(shadowLayers), readAtmosphere(renderer));
+  CpuShading cpu(renderer.frameData(), table(), std::move(shadowLayers), readTexels(renderer));
 
   std::mt19937 rng(4);
   std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);

@@ -11,6 +11,7 @@
 
 #include "scene/camera_transform.h"
 #include "scene/scene.h"
+#include "techniques/technique_cpu_twin.h"
 #include "techniques/technique_section.h"
 
 namespace prism {
@@ -23,6 +24,9 @@ class TechniquePass {
   // Binds what the lighting pass reads of it (the bindings its shared GLSL header declares).
   virtual void bindForLighting() const = 0;
   virtual std::size_t gpuMemoryBytes() const = 0;
+  // What it holds for the lighting pass, read back for the technique's CPU twin
+  // (technique_cpu_twin.h); null when it holds nothing the twin reads. Stalls: for tests.
+  virtual std::shared_ptr<const TechniqueTexels> readTexels() const { return nullptr; }
 };
 
 // The passes of the technique of that key (an OpenGL context must be current; compiles their

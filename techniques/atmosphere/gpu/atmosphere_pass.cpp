@@ -1,13 +1,26 @@
 #include "techniques/atmosphere/gpu/atmosphere_pass.h"
 
 #include <span>
+#include <utility>
 
 #include "gpu/compute.h"
 #include "techniques/atmosphere/atmosphere_section.h"
+#include "techniques/atmosphere/atmosphere_texels.h"
 #include "core/data_files.h"
 
 namespace prism::atmosphere {
 namespace {
+
+std::vector<std::vector<glm::vec4>> readLayers(const gpu::Texture2DArray& t) {
+  std::vector<std::vector<glm::vec4>> layers;
+  for (GLint l = 0; l < t.layers(); ++l) {
+    std::vector<float> v = gpu::readTextureLayerFloat(t, l, 4);
+    std::vector<glm::vec4> texels(v.size() / 4);
+    for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = glm::vec4(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
+    layers.push_back(std::move(texels));
+  }
+  return layers;
+}
 
 gpu::Program computeProgram(const char* file, const char* label) {
   gpu::ProgramDesc desc;
@@ -123,6 +136,16 @@ void AtmospherePass::bindForLighting() const {
   mMultipleScattering.bind(8);
   mSkyView.bind(9);
   mAerialPerspective.bind(10);
+}
+
+std::shared_ptr<const TechniqueTexels> AtmospherePass::readTexels() const {
+  auto a = std::make_shared<AtmosphereTexels>();
+  a->transmittance = readLayers(mTransmittance);
+  a->multipleScattering = readLayers(mMultipleScattering);
+  a->skyView = readLayers(mSkyView);
+  a->aerialPerspective = readLayers(mAerialPerspective);
+  a->skyIrradiance = mSkyIrradiance.read<glm::vec4>();
+  return a;
 }
 
 std::size_t AtmospherePass::gpuMemoryBytes() const {

@@ -9,6 +9,7 @@
 // double-precision reference.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -43,6 +44,8 @@ class AtmospherePass final : public TechniquePass {
   void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera) override;
   void bindForLighting() const override;
   std::size_t gpuMemoryBytes() const override;
+  // The tables and the sky irradiance as AtmosphereTexels.
+  std::shared_ptr<const TechniqueTexels> readTexels() const override;
 
   const gpu::Texture2DArray& transmittance() const { return mTransmittance; }  // optical depth
   const gpu::Texture2DArray& multipleScattering() const { return mMultipleScattering; }

@@ -1,8 +1,9 @@
 #include "harness/scene_bench.h"
 
 #include <algorithm>
+#include <deque>
 #include <map>
-#include <optional>
+#include <memory>
 #include <string>
 
 #include <fmt/format.h>
@@ -14,12 +15,11 @@
 #include "harness/bench_statistics.h"
 #include "harness/progress_bar.h"
 #include "render/renderer.h"
+#include "render/setting_keys.h"
 #include "scene/scene_loader.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "spectral/rgb_to_spectrum_cache.h"
-#include "techniques/atmosphere/atmosphere_section.h"
-#include "techniques/underwater/water_section.h"
 
 namespace prism::harness {
 namespace {
@@ -154,31 +154,42 @@ void runSceneBench(const SceneBenchOptions& options) {
   const std::size_t coefficients16 = add("16 coefficients", renderer, coefficientAlbedo);
   const std::size_t rgbAlbedo16 = add("16 rgb albedo", renderer, rgbAlbedo);
 
-  // Under water: the water term's cost, the same frames with the scene's water taken out (RGB and
-  // 16 wavelengths).
-  Scene dryScene = scene;
-  dryScene.techniques.remove(underwater::WaterSection::kKey);
-  std::optional<render::Renderer> dryRenderer;
-  std::size_t dryRgb = 0, dry16 = 0, wet16 = 0;
-  if (scene.techniques.has(underwater::WaterSection::kKey)) {
-    dryRenderer.emplace(dryScene, table, settings);
-    dryRgb = add("rgb dry", *dryRenderer, settings);
-    dry16 = add("16 dry", *dryRenderer, spectralSettings(16));
-    wet16 = add("16 wet", renderer, spectralSettings(16));
-  }
-
-  // Under the sky (issue #8): García Liñán's four optimised wavelengths against RGB-3 (the rgb
-  // configuration) and against the reference, every table recomputed every frame; the reference
-  // (118 batches of tables per frame) is timed over one frame a round.
-  std::size_t optimised4 = 0, reference = 0;
-  if (scene.techniques.has(atmosphere::AtmosphereSection::kKey)) {
-    render::FrameSettings s = settings;
-    s.mode = render::RenderMode::Optimised4;
-    optimised4 = add("optimised4", renderer, s);
-    s.mode = render::RenderMode::Reference;
-    reference = add("reference", renderer, s);
-    configs[reference].warmup = std::min(options.warmup, 1);
-    configs[reference].frames = 1;
+  // What each technique of the scene measures of its own cost (TechniqueSection::bench): its
+  // configurations, on this renderer or on one whose scene lacks the technique.
+  struct TechniqueRun {
+    std::string key;
+    std::vector<TechniqueBenchRatio> ratios;
+    std::map<std::string, std::size_t> configs;  // label → index into configs, "rgb" included
+  };
+  std::vector<TechniqueRun> techniqueRuns;
+  std::vector<std::unique_ptr<render::Renderer>> renderersWithout;
+  std::deque<Scene> scenesWithout;  // the renderers' scenes: references stay valid as it grows
+  for (const auto& section : scene.techniques.all()) {
+    TechniqueBench bench = section->bench();
+    if (bench.configs.empty()) continue;
+    TechniqueRun& run = techniqueRuns.emplace_back();
+    run.key = section->key();
+    run.ratios = bench.ratios;
+    run.configs["rgb"] = rgb;
+    render::Renderer* without = nullptr;
+    for (const TechniqueBenchConfig& tc : bench.configs) {
+      if (tc.withoutTechnique && !without) {
+        Scene& s = scenesWithout.emplace_back(scene);
+        s.techniques.remove(section->key());
+        without = renderersWithout.emplace_back(std::make_unique<render::Renderer>(s, table, settings)).get();
+      }
+      render::FrameSettings s = settings;
+      for (const auto& [key, value] : tc.settings) PRISM_CHECK(render::applyFrameSetting(s, key, value));
+      render::validate(s);
+      const std::size_t i = add(tc.label, tc.withoutTechnique ? *without : renderer, s);
+      if (tc.framesPerRound > 0) {
+        configs[i].warmup = std::min(options.warmup, 1);
+        configs[i].frames = tc.framesPerRound;
+      }
+      run.configs[tc.label] = i;
+    }
+    for (const TechniqueBenchRatio& r : run.ratios)
+      PRISM_CHECK(run.configs.count(r.numerator) == 1 && run.configs.count(r.denominator) == 1);
   }
 
   std::size_t done = 0, total = 0;
@@ -244,21 +255,11 @@ void runSceneBench(const SceneBenchOptions& options) {
          {"rgb_median_ms", configs[rgbAlbedo16].medianMs()},
          {"coefficients_median_ms", configs[coefficients16].medianMs()}};
     putRatio(g, "ratio_coefficients_to_rgb", ratio(configs[coefficients16], configs[rgbAlbedo16]));
-    if (scene.techniques.has(underwater::WaterSection::kKey)) {
-      nlohmann::json& w = j["water"];
-      w = {{"dry_rgb_frame_ms", configs[dryRgb].frameMs()},
-           {"dry_spectral16_frame_ms", configs[dry16].frameMs()},
-           {"wet_spectral16_frame_ms", configs[wet16].frameMs()}};
-      putRatio(w, "rgb_ratio_wet_to_dry", ratio(configs[rgb], configs[dryRgb]));
-      putRatio(w, "spectral16_ratio_wet_to_dry", ratio(configs[wet16], configs[dry16]));
-    }
-    if (scene.techniques.has(atmosphere::AtmosphereSection::kKey)) {
-      nlohmann::json& s = j["sky"];
-      s = {{"optimised4_median_ms", configs[optimised4].medianMs()},
-           {"reference_median_ms", configs[reference].medianMs()},
-           {"reference_frames", rounds}};
-      putRatio(s, "ratio_optimised4_to_rgb3", ratio(configs[optimised4], configs[rgb]));
-      putRatio(s, "ratio_reference_to_optimised4", ratio(configs[reference], configs[optimised4]));
+    for (const TechniqueRun& run : techniqueRuns) {
+      nlohmann::json& t = j["techniques"][run.key];
+      for (const auto& [label, i] : run.configs) t["median_ms"][label] = configs[i].medianMs();
+      for (const TechniqueBenchRatio& r : run.ratios)
+        putRatio(t, r.name, ratio(configs[run.configs.at(r.numerator)], configs[run.configs.at(r.denominator)]));
     }
     fmt::print("{}\n", j.dump(2));
     return;
@@ -297,19 +298,18 @@ void runSceneBench(const SceneBenchOptions& options) {
              coefficients.frameMs(), rgbAlbedoConfig.frameMs(), spread(ratio(coefficients, rgbAlbedoConfig)),
              coefficients.passMs("gbuffer"), rgbAlbedoConfig.passMs("gbuffer"), coefficients.passMs("lighting"),
              rgbAlbedoConfig.passMs("lighting"));
-  if (scene.techniques.has(underwater::WaterSection::kKey)) {
-    fmt::print("water on / off: RGB {:.3f} / {:.3f} ms = {}; 16 wavelengths {:.3f} / {:.3f} ms = {}\n", rgbFrame,
-               configs[dryRgb].frameMs(), spread(ratio(configs[rgb], configs[dryRgb])), configs[wet16].frameMs(),
-               configs[dry16].frameMs(), spread(ratio(configs[wet16], configs[dry16])));
-  }
-  if (scene.techniques.has(atmosphere::AtmosphereSection::kKey)) {
-    const Config& o4 = configs[optimised4];
-    const Config& ref = configs[reference];
-    fmt::print("sky: optimised4 / RGB-3 frame {:.3f} / {:.3f} ms = {} (sky tables {:.3f} / {:.3f} ms); "
-               "reference (472 wavelengths, {} frames) {:.3f} ms = {} optimised4 (sky tables {:.3f} ms)\n",
-               o4.frameMs(), rgbFrame, spread(ratio(o4, configs[rgb])), o4.passMs("atmosphere"),
-               configs[rgb].passMs("atmosphere"), rounds, ref.frameMs(), spread(ratio(ref, o4)),
-               ref.passMs("atmosphere"));
+  // Per technique, each ratio with its frames and, when the technique has a pass of its own
+  // (named by its key), that pass's time in both.
+  for (const TechniqueRun& run : techniqueRuns) {
+    for (const TechniqueBenchRatio& r : run.ratios) {
+      const Config& n = configs[run.configs.at(r.numerator)];
+      const Config& d = configs[run.configs.at(r.denominator)];
+      std::string line = fmt::format("{}: {} / {} frame {:.3f} / {:.3f} ms = {}", run.key, n.label, d.label,
+                                     n.frameMs(), d.frameMs(), spread(ratio(n, d)));
+      const double np = n.passMs(run.key.c_str()), dp = d.passMs(run.key.c_str());
+      if (np > 0.0 || dp > 0.0) line += fmt::format(" ({} pass {:.3f} / {:.3f} ms)", run.key, np, dp);
+      fmt::print("{}\n", line);
+    }
   }
 }
 

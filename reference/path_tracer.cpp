@@ -19,8 +19,6 @@
 #include "shared_cpp.h"
 #include "core/error.h"
 #include "spectral/observer.h"
-#include "techniques/atmosphere/atmosphere_section.h"
-#include "techniques/underwater/water_section.h"
 
 namespace prism::shared {
 #include "random.glsl"
@@ -137,18 +135,15 @@ vec3 sampleHenyeyGreenstein(const vec3& travel, float g, float u1, float u2) {
 vec4 exp4(const vec4& v) { return vec4(std::exp(v.x), std::exp(v.y), std::exp(v.z), std::exp(v.w)); }
 float mean4(const vec4& v) { return 0.25f * (v.x + v.y + v.z + v.w); }
 
-// The medium the paths cross: the scene's water (everything below its surface, scattering
-// isotropically as the analytic model assumes), else the scene's medium, if any.
+// The medium the paths cross: a technique's (the water's: everything below its surface), else
+// the scene's, if any.
 std::optional<HomogeneousMedium> effectiveMedium(const Scene& scene) {
-  const auto* section = scene.techniques.find<underwater::WaterSection>();
-  if (!section) return scene.medium;
-  constexpr float kFar = 1e7f;  // the ocean has no sides or bottom
-  HomogeneousMedium water;
-  water.sigmaA = section->sigmaA;
-  water.sigmaS = section->sigmaS;
-  water.g = 0.0f;
-  water.region = Bounds{{-kFar, -kFar, -kFar}, {kFar, section->surfaceY(scene.camera.position.y), kFar}};
-  return water;
+  for (const auto& section : scene.techniques.all()) {
+    if (std::optional<TechniqueMedium> m = section->medium(scene.camera.position)) {
+      return HomogeneousMedium{m->sigmaA, m->sigmaS, m->g, Bounds{m->regionMin, m->regionMax}};
+    }
+  }
+  return scene.medium;
 }
 
 class PathTracer {
@@ -497,10 +492,9 @@ void validate(const ReferenceSettings& s) {
 ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& table,
                                const ReferenceSettings& settings, const ReferenceProgress& progress) {
   validate(settings);
-  if (scene.techniques.has(atmosphere::AtmosphereSection::kKey)) {
-    throw Error(fmt::format("{}: the path tracer does not trace the atmosphere; its references are "
-                            "`prism atmosphere evaluate` and `prism render --mode reference`",
-                            scene.file.string()));
+  for (const auto& section : scene.techniques.all()) {
+    if (std::string_view why = section->notTracedBecause(); !why.empty())
+      throw Error(fmt::format("{}: {}", scene.file.string(), why));
   }
   PathTracer tracer(scene, table, settings);
   const int width = settings.width, height = settings.height;

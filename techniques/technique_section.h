@@ -14,6 +14,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -34,6 +35,17 @@ struct TechniqueLight {
   Spectrum spd;
   std::string spdLabel;
   bool castsShadows = true;
+};
+
+// A homogeneous medium a technique fills part of the scene with, as the reference path tracer
+// (reference/path_tracer.h) traces it: absorption σa and scattering σs per wavelength in 1/m, a
+// Henyey–Greenstein asymmetry g, inside the box [regionMin, regionMax] (world space, m).
+struct TechniqueMedium {
+  Spectrum sigmaA;
+  Spectrum sigmaS;
+  float g = 0.0f;
+  glm::vec3 regionMin{0.0f};
+  glm::vec3 regionMax{0.0f};
 };
 
 // What a technique's block is packed from: the frame's wavelength batches (in RGB mode one batch
@@ -90,6 +102,26 @@ struct TechniqueBlock {
   std::size_t dataCount() const { return data.size() / sizeof(T); }
 };
 
+// A configuration the scene bench (harness/scene_bench.h) times for a technique, interleaved round
+// by round with its own: frame settings by their keys (render/setting_keys.h, e.g. "mode" →
+// "optimised4") over the run's, on the scene as it is or with the technique's section taken out.
+struct TechniqueBenchConfig {
+  std::string label;  // unique in the run, e.g. "16 dry"
+  std::vector<std::pair<std::string, std::string>> settings;
+  bool withoutTechnique = false;
+  int framesPerRound = 0;  // 0: the run's; else that many (and at most one warm-up frame)
+};
+// A ratio the bench reports for a technique: the frame time of configuration `numerator` over
+// that of `denominator` (labels of its configurations, or "rgb", the run's RGB frames).
+struct TechniqueBenchRatio {
+  std::string name;  // its key in the JSON report, e.g. "ratio_optimised4_to_rgb3"
+  std::string numerator, denominator;
+};
+struct TechniqueBench {
+  std::vector<TechniqueBenchConfig> configs;
+  std::vector<TechniqueBenchRatio> ratios;
+};
+
 class TechniqueSection {
  public:
   virtual ~TechniqueSection() = default;
@@ -103,6 +135,16 @@ class TechniqueSection {
   virtual std::optional<TechniqueLight> light() const { return std::nullopt; }
   // Its block for one frame.
   virtual TechniqueBlock pack(const FramePackInput& input) const = 0;
+  // The medium the reference traces for it, for a scene whose file puts the camera at
+  // sceneCameraPositionW; none when the technique adds no medium.
+  virtual std::optional<TechniqueMedium> medium(const glm::vec3& /*sceneCameraPositionW*/) const {
+    return std::nullopt;
+  }
+  // Why the reference path tracer cannot trace the technique, naming the technique's own
+  // references (it refuses such scenes with this); empty when it traces it.
+  virtual std::string_view notTracedBecause() const { return {}; }
+  // What the scene bench measures of its cost besides the run's own configurations.
+  virtual TechniqueBench bench() const { return {}; }
 };
 
 // A scene's sections, at most one per technique, in registration order; copied deeply (a scene

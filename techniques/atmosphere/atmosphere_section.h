@@ -36,6 +36,14 @@ struct AtmosphereSection final : TechniqueSection {
   // RGB mode its RGB, at 680, 550 and 440 nm, the RGB-3 strategy of sky_strategy.h), so that the
   // sky follows the light. Error when the scene lost its sun light.
   TechniqueBlock pack(const FramePackInput& input) const override;
+  // García Liñán's four optimised wavelengths against RGB-3 (the run's RGB frames) and against the
+  // reference (472 wavelengths, 118 batches of tables a frame: one frame a round), every table
+  // recomputed every frame.
+  TechniqueBench bench() const override;
+  std::string_view notTracedBecause() const override {
+    return "the path tracer does not trace the atmosphere; its references are `prism atmosphere evaluate` "
+           "and `prism render --mode reference`";
+  }
 
   static std::unique_ptr<TechniqueSection> parse(const schema::Node& node, const TechniqueSections& earlier);
 };

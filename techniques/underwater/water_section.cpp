@@ -45,6 +45,22 @@ TechniqueBlock WaterSection::pack(const FramePackInput& input) const {
   return block;
 }
 
+TechniqueBench WaterSection::bench() const {
+  const std::vector<std::pair<std::string, std::string>> spectral16 = {{"mode", "jakob-hanika"}, {"wavelengths", "16"}};
+  return {{{"rgb dry", {}, true}, {"16 dry", spectral16, true}, {"16 wet", spectral16, false}},
+          {{"rgb_ratio_wet_to_dry", "rgb", "rgb dry"}, {"spectral16_ratio_wet_to_dry", "16 wet", "16 dry"}}};
+}
+
+std::optional<TechniqueMedium> WaterSection::medium(const glm::vec3& sceneCameraPositionW) const {
+  constexpr float kFar = 1e7f;  // the ocean has no sides or bottom
+  TechniqueMedium water;
+  water.sigmaA = sigmaA;
+  water.sigmaS = sigmaS;
+  water.regionMin = glm::vec3(-kFar);
+  water.regionMax = glm::vec3(kFar, surfaceY(sceneCameraPositionW.y), kFar);
+  return water;
+}
+
 std::unique_ptr<TechniqueSection> WaterSection::parse(const schema::Node& n, const TechniqueSections&) {
   using schema::Range;
   n.expectObject({"type", "dataset", "depth", "scattering_scale", "absorption_scale", "kd_scale"});

@@ -1,4 +1,5 @@
 // The prism executable as users meet it: exit codes, one-line errors, outputs.
+#include <limits>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,6 +21,7 @@ using prism::app::test::slurp;
 void expectOneLineError(const std::string& args, const std::string& needle, const std::string& env = "") {
   Result r = run(args, env);
   EXPECT_GT(r.exitCode, 0) << args;
+  EXPECT_NE(r.exitCode, 70) << args << ": user input must not be an internal error";
   EXPECT_EQ(r.out, "") << args;
   ASSERT_FALSE(r.err.empty()) << args;
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "more than one line: " << r.err;
@@ -134,6 +136,7 @@ TEST(Cli, LutAndUpsampleCheckTheirInput) {
   expectOneLineError("lut --res 1 -o x.prismlut", "resolution must be within 2–256");
   expectOneLineError("upsample --rgb 0.5,0.5", "--rgb");
   expectOneLineError("upsample --rgb 0.5,0.5,0.5 --wavelengths 300:830:5", "--wavelengths");
+  expectOneLineError("upsample --rgb 0.5,0.5,0.5 --wavelengths 360:830:1e-9", "at most 47001 wavelengths");
   expectOneLineError("upsample --rgb 0.5,0.5,0.5 --intent emission", "'emission'");
   expectOneLineError("upsample --rgb 0.5,0.5,0.5 --method smits", "'smits'");
 }
@@ -283,6 +286,13 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("compare " + (dir / "w1.exr").string() + " " + (dir / "w2.exr").string(),
                      "different display whites (100 and 400 cd/m²)");
   EXPECT_EQ(run("compare " + (dir / "w1.exr").string() + " " + (dir / "w2.exr").string() + " --white 100").exitCode, 0);
+  expectOneLineError("compare " + dir.string() + " " + a, dir.string() + ": is a folder, not an image");
+  // An image holding NaN is refused, even against itself, rather than reported as "mean inf".
+  prism::imaging::FloatImage nan = small;
+  nan.pixels[3 * (4 * 2 + 1) + 1] = std::numeric_limits<float>::quiet_NaN();
+  prism::imaging::writeExr(dir / "nan.exr", nan, {.colour = prism::imaging::ColourMeaning::Xyz});
+  const std::string n = (dir / "nan.exr").string();
+  expectOneLineError("compare " + n + " " + n, n + ": pixel (1, 2) holds nan: compare takes finite images");
 }
 
 // The reference against the rasteriser through `compare`: the same scene and exposure, so the

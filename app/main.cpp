@@ -6,6 +6,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <map>
 
 #include "app/colour_commands.h"
@@ -397,6 +398,11 @@ int main(int argc, char** argv) {
     return 1;
   } catch (const prism::gpu::GpuError& e) {
     fmt::print(stderr, "prism: error: {}\n", e.what());
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // The environment, not a bug: an output folder that cannot be made, a folder where a file
+    // belongs, a path without permission.
+    fmt::print(stderr, "prism: error: {}: {}\n", prism::excerpt(e.path1().string()), e.code().message());
     return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "prism: internal error: {}\n", e.what());

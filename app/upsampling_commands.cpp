@@ -18,6 +18,9 @@
 namespace prism::app {
 namespace {
 
+// How many wavelengths `upsample` prints at most: every 0.01 nm over 360–830 nm.
+constexpr double kMaxUpsampledWavelengths = 47001;
+
 using nlohmann::json;
 
 json errorJson(const UpsamplingError& e) {
@@ -69,6 +72,9 @@ void runUpsample(const UpsampleOptions& o) {
   if (o.wavelengths.size() != 3 || !(o.wavelengths[2] > 0.0) || !(o.wavelengths[0] <= o.wavelengths[1]) ||
       o.wavelengths[0] < kLambdaMinNm || o.wavelengths[1] > kLambdaMaxNm)
     throw Error("--wavelengths: expected MIN:MAX:STEP in nm within 360–830 with MIN ≤ MAX and STEP > 0");
+  if ((o.wavelengths[1] - o.wavelengths[0]) / o.wavelengths[2] > kMaxUpsampledWavelengths)
+    throw Error(fmt::format("--wavelengths: at most {} wavelengths (a STEP of {} nm gives more)", kMaxUpsampledWavelengths,
+                            o.wavelengths[2]));
   if (o.intent != "albedo" && o.intent != "unbounded")
     throw Error("--intent: unknown intent '" + o.intent + "' (albedo, unbounded)");
   if (o.path != "manual" && o.path != "filtered")

@@ -93,6 +93,8 @@ double CsvTable::number(const CsvRow& row, int column) const {
 
 void checkIncreasingWavelengths(const std::string& path, std::span<const double> lambdasNm,
                                 std::span<const int> lines) {
+  if (!lambdasNm.empty() && !(lambdasNm[0] > 0.0))
+    throw Error(FileLocation{path, lines[0]}, "wavelengths must be positive (" + std::to_string(lambdasNm[0]) + " nm)");
   for (std::size_t i = 1; i < lambdasNm.size(); ++i)
     if (!(lambdasNm[i] > lambdasNm[i - 1]))
       throw Error(FileLocation{path, lines[i]}, "wavelengths must increase strictly (" +

@@ -37,8 +37,8 @@ class CsvTable {
   std::vector<CsvRow> mRows;
 };
 
-// Error "PATH:LINE: ..." at the first wavelength that does not increase strictly; `lines` holds
-// the source line of each wavelength.
+// Error "PATH:LINE: ..." at the first wavelength that is not positive or does not increase
+// strictly; `lines` holds the source line of each wavelength.
 void checkIncreasingWavelengths(const std::string& path, std::span<const double> lambdasNm,
                                 std::span<const int> lines);
 

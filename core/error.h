@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace prism {
 
@@ -30,6 +31,13 @@ struct FileLocation {
     return s;
   }
 };
+
+// A user's text as a message quotes it: whole up to `max` characters, else its first
+// characters and "..." (a 5 MB name is not echoed whole).
+inline std::string excerpt(std::string_view text, std::size_t max = 80) {
+  if (text.size() <= max) return std::string(text);
+  return std::string(text.substr(0, max - 3)) + "...";
+}
 
 class Error : public std::runtime_error {
  public:

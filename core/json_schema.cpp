@@ -24,9 +24,7 @@ std::string pointerToken(std::string_view key) {
 }
 
 std::string describe(const json& value) {
-  std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  return text;
+  return excerpt(value.dump(-1, ' ', false, json::error_handler_t::replace), 60);
 }
 
 TextPosition textPosition(std::string_view text, std::size_t offset) {
@@ -52,15 +50,18 @@ std::string formatNumber(double v) {
   return buffer;
 }
 
-// Tracks where the parser is, to name the place of a duplicate key.
-class DuplicateKeyCheck {
+// Tracks where the parser is, to name the place of a duplicate key or of too deep a nesting.
+class StructureCheck {
  public:
-  explicit DuplicateKeyCheck(const std::string& name) : mName(name) {}
+  explicit StructureCheck(const std::string& name) : mName(name) {}
 
-  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+  bool operator()(int depth, json::parse_event_t event, json& parsed) {
     switch (event) {
       case json::parse_event_t::object_start:
       case json::parse_event_t::array_start:
+        if (depth >= kMaxJsonDepth)
+          throw Error(mName + ": " + excerpt(pointer()) + ": nested deeper than " + std::to_string(kMaxJsonDepth) +
+                      " levels");
         mFrames.push_back({event == json::parse_event_t::object_start, childToken(), {}, {}, 0});
         break;
       case json::parse_event_t::object_end:
@@ -112,7 +113,7 @@ class DuplicateKeyCheck {
 
 json parseJson(std::string_view text, const std::string& name) {
   try {
-    DuplicateKeyCheck check(name);
+    StructureCheck check(name);
     return json::parse(text.begin(), text.end(), std::ref(check));
   } catch (const json::parse_error& e) {
     // nlohmann's message is "[json.exception.parse_error.N] parse error at line L, column C:
@@ -148,6 +149,13 @@ bool Range::contains(double v) const {
   if (minExclusive ? !(v > min) : !(v >= min)) return false;
   if (maxExclusive ? !(v < max) : !(v <= max)) return false;
   return true;
+}
+
+Range Range::forFloat() const {
+  Range r = *this;
+  if (!(r.min > -kFloatInputLimit)) r = {-kFloatInputLimit, r.max, false, r.maxExclusive};
+  if (!(r.max < kFloatInputLimit)) r = {r.min, kFloatInputLimit, r.minExclusive, false};
+  return r;
 }
 
 std::string Range::text() const {
@@ -256,12 +264,12 @@ std::vector<double> Node::numbers(std::size_t n, const Range& range) const {
 }
 
 glm::vec3 Node::vec3(const Range& range) const {
-  std::vector<double> v = numbers(3, range);
+  std::vector<double> v = numbers(3, range.forFloat());
   return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
 }
 
 glm::vec2 Node::vec2(const Range& range) const {
-  std::vector<double> v = numbers(2, range);
+  std::vector<double> v = numbers(2, range.forFloat());
   return {static_cast<float>(v[0]), static_cast<float>(v[1])};
 }
 
@@ -322,6 +330,7 @@ std::filesystem::path confinedFile(const std::filesystem::path& root,
 }
 
 std::vector<unsigned char> readBinaryFile(const std::filesystem::path& path) {
+  if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path.string() + ": cannot open file");
   std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

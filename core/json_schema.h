@@ -38,7 +38,7 @@ TextPosition textPosition(std::string_view text, std::size_t offset);
 
 // Parses a JSON document. Error "<name>:<line>:<column>: malformed JSON: …" when malformed, and
 // "<name>: <pointer>: duplicate key" when an object names a key twice (JSON allows it, but the
-// second would silently win).
+// second would silently win); "<name>: <pointer>: nested deeper than 64 levels" past kMaxJsonDepth.
 nlohmann::json parseJson(std::string_view text, const std::string& name);
 
 // The document errors are reported against.
@@ -62,7 +62,18 @@ struct Range {
   static Range open(double lo, double hi) { return {lo, hi, true, true}; }
   bool contains(double v) const;
   std::string text() const;  // "" for any finite number
+  // This range within ±kFloatInputLimit.
+  Range forFloat() const;
 };
+
+// What a number read as float (numberF, vec2, vec3) may reach in magnitude: a scene's lengths,
+// intensities, luminances and colours, which the float pipeline multiplies together (a spectrum
+// × an intensity × an exposure) without overflowing float's 3.4e38.
+inline constexpr double kFloatInputLimit = 1e12;
+
+// How deeply a JSON document may nest (arrays and objects): deeper is refused while parsing,
+// before anything walks the value recursively (Prism's files nest a few levels).
+inline constexpr int kMaxJsonDepth = 64;
 
 // A value inside a document with the pointer that leads to it. Cheap to copy; refers to the
 // json and the Document, which must outlive it.
@@ -90,7 +101,7 @@ class Node {
 
   // Values. Each checks the type (and range) and names what it expected and what it got.
   double number(const Range& range = Range::any()) const;
-  float numberF(const Range& range = Range::any()) const { return static_cast<float>(number(range)); }
+  float numberF(const Range& range = Range::any()) const { return static_cast<float>(number(range.forFloat())); }
   int integer(const Range& range = Range::any()) const;
   bool boolean() const;
   std::string string() const;  // non-empty

@@ -254,6 +254,8 @@ tinygltf::Model loadGltfModel(const fs::path& file, const fs::path& root) {
   nlohmann::json json = schema::parseJson(text, name);
   Node top(json, "", document);
   if (!json.is_object()) top.fail("expected an object, got " + schema::describe(json));
+  const Node version = top.child("asset").child("version");
+  if (!version.string().starts_with("2.")) version.fail("glTF " + excerpt(version.string()) + ": Prism reads glTF 2.x");
   fs::path base = file.parent_path().empty() ? fs::path(".") : file.parent_path();
   checkUris(top, root, base);
 

@@ -112,7 +112,7 @@ class SceneParser {
     c.position = n.vec3("position", c.position);
     c.target = n.vec3("target", c.target);
     c.up = n.vec3("up", c.up);
-    c.verticalFovDeg = n.numberF("fov_deg", c.verticalFovDeg, Range::open(0.0, 180.0));
+    c.verticalFovDeg = n.numberF("fov_deg", c.verticalFovDeg, Range{1e-3, 180.0, false, true});
     c.nearPlane = n.numberF("near", c.nearPlane, Range::above(0.0));
     c.farPlane = n.numberF("far", c.farPlane, Range::above(c.nearPlane));
     if (!n.has("far") && !(c.farPlane > c.nearPlane))
@@ -356,12 +356,19 @@ class SceneParser {
 // Applies one "PATH=VALUE" override to the parsed document (scene_loader.h).
 void applyOverride(json& root, const std::string& set, schema::Document& document) {
   auto failAt = [&](const std::string& pointer, const std::string& what) {
-    throw Error(document.name + ": " + (pointer.empty() ? "/" : pointer) + ": --set " + set + ": " + what);
+    throw Error(document.name + ": " + (pointer.empty() ? "/" : pointer) + ": --set " + excerpt(set) + ": " + what);
   };
   std::size_t eq = set.find('=');
   if (eq == std::string::npos || eq == 0) failAt("", "expected PATH=VALUE, e.g. camera.ev100=2");
   std::string path = set.substr(0, eq), text = set.substr(eq + 1);
-  json value = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  json value = json::parse(
+      text,
+      [&](int depth, json::parse_event_t, json&) {
+        if (depth >= schema::kMaxJsonDepth)
+          failAt("", "the value nests deeper than " + std::to_string(schema::kMaxJsonDepth) + " levels");
+        return true;
+      },
+      /*allow_exceptions=*/false);
   if (value.is_discarded()) value = text;
 
   std::vector<std::string> segments;
@@ -450,6 +457,7 @@ Scene loadScene(const fs::path& file) { return loadScene(file, {}); }
 Scene loadScene(const fs::path& file, const std::vector<std::string>& sets) {
   schema::Document document{file.string(), {}};
   std::error_code ec;
+  if (fs::is_directory(file, ec)) throw Error(document.name + ": is a folder, not a scene file");
   if (!fs::is_regular_file(file, ec)) throw Error(document.name + ": scene file not found");
   std::vector<unsigned char> bytes = schema::readBinaryFile(file);
   json root = schema::parseJson(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),

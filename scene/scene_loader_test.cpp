@@ -197,7 +197,7 @@ TEST(SceneLoader, OverrideOfAnUnknownPathFails) {
             f.string() + ": /: --set camera: expected PATH=VALUE, e.g. camera.ev100=2");
   // A value that is valid JSON but the wrong type is caught by validation.
   EXPECT_EQ(errorOf([&] { loadScene(f, {"lights.0.intensity=bright"}); }),
-            f.string() + ": /lights/0/intensity: expected a number > 0, got \"bright\"");
+            f.string() + ": /lights/0/intensity: expected a number in (0, 1e+12], got \"bright\"");
 }
 
 TEST_F(SceneFolder, MalformedJsonReportsLineAndColumn) {
@@ -223,7 +223,7 @@ TEST_F(SceneFolder, UnknownKeyListsTheAllowedOnes) {
 TEST_F(SceneFolder, WrongTypesAndRangesNameThePlace) {
   fs::path f = sceneWithLight(R"({"type": "point", "position": [0, 1, 0], "spd": "D65", "intensity": "bright"})");
   EXPECT_EQ(errorOf([&] { loadScene(f); }),
-            f.string() + ": /lights/0/intensity: expected a number > 0, got \"bright\"");
+            f.string() + ": /lights/0/intensity: expected a number in (0, 1e+12], got \"bright\"");
   f = sceneWithLight(R"({"type": "point", "position": [0, 1], "spd": "D65", "intensity": 1})");
   EXPECT_EQ(errorOf([&] { loadScene(f); }),
             f.string() + ": /lights/0/position: expected an array of 3 numbers, got [0,1]");
@@ -253,6 +253,36 @@ TEST_F(SceneFolder, WrongTypesAndRangesNameThePlace) {
             f.string() + ": /materials/m/metallic: expected a number in [0, 1], got true");
 }
 
+// Numbers the float pipeline cannot carry, and documents too deep to walk, are refused where they
+// are, before anything overflows or recurses.
+TEST_F(SceneFolder, NumbersBeyondFloatsReachAndDeepNestingAreRefused) {
+  fs::path f = sceneWithLight(R"({"type": "point", "position": [0, 1, 0], "spd": "D65", "intensity": 1e39})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /lights/0/intensity: expected a number in (0, 1e+12], got 1e+39");
+  f = sceneWithLight(R"({"type": "point", "position": [0, 1e39, 0], "spd": "D65", "intensity": 1})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /lights/0/position/1: expected a number in [-1e+12, 1e+12], got 1e+39");
+  f = sceneWithLight("");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"camera.position=[1e39, 0, 0]"}); }),
+            f.string() + ": /camera/position/0: expected a number in [-1e+12, 1e+12], got 1e+39");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"camera.fov_deg=1e-30"}); }),
+            f.string() + ": /camera/fov_deg: expected a number in [0.001, 180), got 1e-30");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"background={\"colour\": [1, 1, 1], \"luminance\": 1e39}"}); }),
+            f.string() + ": /background/luminance: expected a number in [0, 1e+12], got 1e+39");
+
+  // 100 000 nested arrays: refused at the 64th level, naming where (at most 80 characters of it).
+  std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  fs::path d = write("deep.json", R"({"$schema": )" + deep + "}");
+  const std::string nested = errorOf([&] { loadScene(d); });
+  EXPECT_TRUE(startsWith(nested, d.string() + ": /$schema/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0"));
+  EXPECT_TRUE(contains(nested, "/0/...: nested deeper than 64 levels"));
+  EXPECT_LT(nested.size(), d.string().size() + 120);
+  const std::string error = errorOf([&] { loadScene(f, {"camera.ev100=" + deep}); });
+  EXPECT_TRUE(startsWith(error, f.string() + ": /: --set camera.ev100=[[[[[[[[[["));
+  EXPECT_TRUE(contains(error, "...: the value nests deeper than 64 levels"));
+  EXPECT_LT(error.size(), 300u);
+}
+
 TEST_F(SceneFolder, ObjectsMustNameAKnownMaterialAndOneShape) {
   fs::path f = scene(R"("a": {}, "b": {})", "", R"({"sphere": {"centre": [0, 0, 0], "radius": 1}, "material": "c"})");
   EXPECT_EQ(errorOf([&] { loadScene(f); }), f.string() + ": /objects/0/material: unknown material 'c' (materials: a, b)");
@@ -260,7 +290,7 @@ TEST_F(SceneFolder, ObjectsMustNameAKnownMaterialAndOneShape) {
   EXPECT_EQ(errorOf([&] { loadScene(f); }),
             f.string() + ": /objects/0: expected only one of the keys sphere, plane, box, heightfield, gltf, got sphere, box");
   f = scene(R"("a": {})", "", R"({"sphere": {"centre": [0, 0, 0], "radius": 0}, "material": "a"})");
-  EXPECT_EQ(errorOf([&] { loadScene(f); }), f.string() + ": /objects/0/sphere/radius: expected a number > 0, got 0");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }), f.string() + ": /objects/0/sphere/radius: expected a number in (0, 1e+12], got 0");
 }
 
 TEST_F(SceneFolder, MissingTextureNamesTheResolvedPath) {
@@ -392,6 +422,21 @@ TEST_F(SceneFolder, GltfPrimitivesMustBeTriangles) {
   EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), "m.gltf: /meshes/0/primitives/0/mode: only triangles (mode 4) are supported, got 1"));
 }
 
+TEST_F(SceneFolder, GltfMustBeVersionTwo) {
+  std::string text;
+  {
+    std::ifstream in(kFixtures / "quad.gltf");
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  std::string key = "\"version\": \"2.0\"";
+  ASSERT_NE(text.find(key), std::string::npos);
+  write("m.gltf", std::string(text).replace(text.find(key), key.size(), "\"version\": \"1.0\""));
+  fs::path f = scene(R"("a": {})", "", R"({"gltf": "m.gltf"})");
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), "m.gltf: /asset/version: glTF 1.0: Prism reads glTF 2.x"));
+  write("m.gltf", "{}");
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), "m.gltf: /: missing required key 'asset'"));
+}
+
 TEST_F(SceneFolder, NonFiniteVertexDataIsAnErrorNotANaNPixel) {
   // glTF buffers are raw floats and may hold NaN: refused at load, naming the accessor element,
   // so that no NaN normal or position ever reaches the G-buffer.
@@ -459,7 +504,7 @@ TEST_F(SceneFolder, WaterIsAJerlovTypeAtADepthWithItsMultipliers) {
             f.string() + ": /water/type: unknown water type \"IV\" in the jerlov data (known: I, IA, IB, II, III, "
                          "1C, 3C, 5C, 7C, 9C)");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"water.depth=-1"}); }),
-            f.string() + ": /water/depth: expected a number >= 0, got -1");
+            f.string() + ": /water/depth: expected a number in [0, 1e+12], got -1");
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"water.salinity=35"}); }),
                          f.string() + ": /water/salinity: unknown key (set on the command line) (allowed: "));
 }

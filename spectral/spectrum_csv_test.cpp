@@ -30,6 +30,12 @@ TEST(SpectrumCsvTest, WavelengthsMustIncrease) {
             std::string::npos);
 }
 
+TEST(SpectrumCsvTest, WavelengthsMustBePositive) {
+  auto p = writeTempFile("negative.csv", "wavelength_nm,value\n-5,1\n410,1\n");
+  EXPECT_EQ(errorOf([&] { readSpectrumCsv(p, Extrapolation::Zero); }),
+            p.string() + ":2: wavelengths must be positive (-5.000000 nm)");
+}
+
 TEST(SpectrumCsvTest, MissingExpectedColumnIsNamed) {
   auto p = writeTempFile("columns.csv", "wavelength_nm,x_bar,y_bar\n400,1,1\n410,1,1\n");
   std::vector<std::string_view> expected{"x_bar", "y_bar", "z_bar"};

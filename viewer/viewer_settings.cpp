@@ -8,6 +8,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/json_schema.h"
 #include "render/setting_keys.h"
 
 namespace prism::viewer {
@@ -54,9 +55,9 @@ void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Cam
   if (!in) throw Error(fmt::format("{}: cannot read the settings file", path.string()));
   std::stringstream text;
   text << in.rdbuf();
-  nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
   const std::string file = path.string();
-  if (j.is_discarded() || !j.is_object()) throw Error(fmt::format("{}: not a JSON object", file));
+  nlohmann::json j = schema::parseJson(text.str(), file);
+  if (!j.is_object()) throw Error(fmt::format("{}: not a JSON object", file));
   ViewSettings next = view;
   Camera nextCamera = camera;
   for (const auto& [key, value] : j.items()) {

@@ -199,6 +199,18 @@ TEST(DisplayTransform, ExposureMapsTheSaturationLuminanceToWhite) {
   EXPECT_NEAR(rgb.z, 1.0f, 2e-3f);
 }
 
+// However overexposed, a bright neutral pixel shows white, never black: ACES's x² overflowed float to
+// ∞/∞ = NaN at EV −70, and an exposure whose product overflows is as bright as a pixel gets.
+TEST(DisplayTransform, ExtremeOverexposureShowsWhiteUnderEveryToneMap) {
+  const glm::vec3 weights(0.2126f, 0.7152f, 0.0722f);
+  for (int op : {shared::kToneMapNone, shared::kToneMapReinhard, shared::kToneMapAces}) {
+    for (float exposure : {std::exp2(70.0f), 1e30f}) {
+      glm::vec3 rgb = shared::encodeForDisplay(glm::mat3(exposure), weights, op, 0, glm::vec3(1e10f));
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(rgb[c], 1.0f, 1e-3f) << "tone map " << op << ", exposure " << exposure;
+    }
+  }
+}
+
 TEST(DisplayTransform, WhiteBalanceMakesTheIlluminantNeutral) {
   DisplaySettings settings;
   settings.ev100 = 0.0f;

@@ -31,7 +31,10 @@ PRISM_INLINE vec3 toneMapReinhard(IN(vec3) rgb, IN(vec3) luminanceWeights) {
   return rgb * (1.0f / (1.0f + y));
 }
 
+// Total: the fit passes 1 (white) near x = 7 and tends to 2.51/2.43 > 1; capping x at 1e4 keeps
+// x² finite in float however overexposed the pixel (2^70 would make ∞/∞ = NaN, i.e. black).
 PRISM_INLINE float acesFilmic(float x) {
+  x = min(x, 1e4f);
   return clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
 }
 
@@ -45,13 +48,16 @@ PRISM_INLINE vec3 toneMap(int op, IN(vec3) rgb, IN(vec3) luminanceWeights) {
 
 // Tristimulus → display, all of the post pass but the dither and the final clamp (the pass dithers
 // before it clamps): display RGB (exposure folded into toDisplay), gamut compression, tone map,
-// transfer (0 sRGB curve, 1 BT.2020). NaN or ∞, which nothing upstream should make, show black
-// rather than whatever a driver's clamp makes of them.
+// transfer (0 sRGB curve, 1 BT.2020). NaN or ∞ in, which nothing upstream should make, show black
+// rather than whatever a driver's clamp makes of them; a finite colour whose exposure overflows
+// float shows white, as the brightest colour does.
 PRISM_INLINE vec3 encodeForDisplay(IN(mat3) toDisplay, IN(vec3) luminanceWeights, int toneMapOp,
                                    int transfer, IN(vec3) tristimulus) {
   vec3 t = tristimulus;
   if (any(isnan(t)) || any(isinf(t))) t = vec3(0.0f);
-  vec3 rgb = compressToGamut(toDisplay * t, luminanceWeights);
+  vec3 exposed = toDisplay * t;
+  if (any(isnan(exposed)) || any(isinf(exposed))) exposed = vec3(1e30f);
+  vec3 rgb = compressToGamut(exposed, luminanceWeights);
   rgb = toneMap(toneMapOp, rgb, luminanceWeights);
   return transfer == 1 ? bt2020Encode3(rgb) : srgbEncode3(rgb);
 }

@@ -15,7 +15,7 @@ BackgroundRadiance::BackgroundRadiance(const Scene& scene, const RgbToSpectrumTa
     : mWhite(gamutWhiteIlluminant(colourSpace(scene.colourSpace))),
       mUpsampling(lookupUnbounded(table, scene.background)) {
   mWhite *= scene.backgroundLuminance /
-            (absoluteTristimulusScale(observer("cie1931")) * observer("cie1931").integrate(mWhite).y());
+            (absoluteTristimulusScale(cie1931Observer()) * cie1931Observer().integrate(mWhite).y());
 }
 
 double BackgroundRadiance::at(double lambdaNm) const {

@@ -82,6 +82,8 @@ const Observer& observer(std::string_view name) {
   throw Error("unknown observer '" + std::string(name) + "' (see `prism colour list observers`)");
 }
 
+const Observer& cie1931Observer() { return registry().cie1931; }
+
 std::vector<std::string> listObservers() {
   std::vector<std::string> names{"cie1931", "cie1964"};
   for (const std::string& camera : listCameras()) names.push_back(camera);

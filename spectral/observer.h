@@ -31,6 +31,9 @@ struct Observer {
 
 // Error naming the observer when unknown.
 const Observer& observer(std::string_view name);
+// CIE 1931 without a name lookup, for code that runs every frame (frame data, the forward pass):
+// the colour spaces' XYZ is its, so many computations want it whatever the chosen observer is.
+const Observer& cie1931Observer();
 std::vector<std::string> listObservers();
 std::vector<std::string> listCameras();
 

@@ -13,6 +13,7 @@
 #include "render/display_transform.h"
 #include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
+#include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 

@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "shared_cpp.h"
 #include "scene/conductors.h"
 #include "scene/gltf_loader.h"
 #include "scene/procedural_mesh.h"
@@ -439,10 +438,6 @@ void applyTechniqueLights(Scene& scene) {
     if (!section) continue;
     if (std::optional<TechniqueLight> l = section->light()) light.direction = l->direction;
   }
-}
-
-double luminousIntegral(const Spectrum& spd) {
-  return double(shared::kLumensPerWatt) * observer("cie1931").integrate(spd)[1];
 }
 
 Scene loadScene(const fs::path& file) { return loadScene(file, {}); }

@@ -126,4 +126,8 @@ double absoluteTristimulusScale(const Observer& obs) {
   return kLumensPerWatt * observer("cie1931").integrate(d65).y() / obs.integrate(d65).y();
 }
 
+double luminousIntegral(const Spectrum& spd) {
+  return double(shared::kLumensPerWatt) * cie1931Observer().integrate(spd)[1];
+}
+
 }  // namespace prism

@@ -54,4 +54,9 @@ std::vector<Eigen::Vector3d> reflectanceWeights(const Observer& obs, const Spect
 // does the rest). Every renderer multiplies its integration weights by it.
 double absoluteTristimulusScale(const Observer& obs);
 
+// 683 lm/W · ∫ S(λ) ȳ(λ) dλ over 360–830 nm (CIE 1931 ȳ, trapezoid at 1 nm): the luminous
+// quantity of one unit of S (luminance in cd/m² when S is radiance in W·sr⁻¹·m⁻²·nm⁻¹). A scene's
+// lights are divided by it on load, light colours and the background scaled by it.
+double luminousIntegral(const Spectrum& spd);
+
 }  // namespace prism

@@ -12,6 +12,7 @@
 #include "spectral/colour_space.h"
 #include "core/error.h"
 #include "spectral/observer.h"
+#include "spectral/rgb_intent.h"
 #include "spectral/sampling.h"
 #include "spectral/sigmoid_fit.h"
 
@@ -157,7 +158,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
   if (rgbMode) {
     frame.lightSpectra.push_back(glm::vec4(scene.background * scene.backgroundLuminance, 0.0f));
   } else {
-    BackgroundRadiance background(scene, table);
+    RgbIlluminantSpectrum background = backgroundRadiance(scene, space, table);
     for (const shared::GpuBatch& batch : frame.batches) {
       glm::vec4 v;
       for (int j = 0; j < 4; ++j) v[j] = static_cast<float>(background.at(batch.lambdaNm[j]));

@@ -23,10 +23,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979;
 
-const RgbToSpectrumTable& srgbTable() {
-  static const RgbToSpectrumTable table = cachedRgbToSpectrumTable("srgb", 64);
-  return table;
-}
+const RgbToSpectrumTable& srgbTable() { return rendererRgbToSpectrumTable("srgb"); }
 
 Light directionalD65(const glm::vec3& direction, float lux) {
   Light light;

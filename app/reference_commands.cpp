@@ -47,7 +47,7 @@ void runReference(const ReferenceOptions& o) {
   }
   Scene scene = loadScene(o.scene, o.sets);
   reference::ReferenceSettings settings = referenceSettings(o);
-  RgbToSpectrumTable table = harness::upsamplingTable(scene.colourSpace);
+  const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::ProgressBar bar("tracing " + o.output.filename().string());
   reference::ReferenceImage image = reference::renderReference(
       scene, table, settings, [&](std::size_t done, std::size_t total) { bar.update(done, total); });

@@ -38,7 +38,7 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
     throw Error(fmt::format("{}: the output must be a .png or an .exr file", output.string()));
   }
   if (frames < 1) throw Error("--frames: must be at least 1");
-  RgbToSpectrumTable table = harness::upsamplingTable(scene.colourSpace);
+  const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   gpu::HeadlessContext context;
   render::Renderer renderer(scene, table, settings);
   std::optional<harness::ProgressBar> bar;

@@ -10,6 +10,7 @@
 #include "harness/progress_bar.h"
 #include "spectral/colour_space.h"
 #include "core/error.h"
+#include "spectral/rgb_intent.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 #include "spectral/rgb_to_spectrum_quality.h"
@@ -97,8 +98,8 @@ void runUpsample(const UpsampleOptions& o) {
     RgbToSpectrumTable table = cachedRgbToSpectrumTable(
         gamut, o.resolution, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
     if (o.intent == "unbounded") {
-      UnboundedUpsampling u = lookupUnbounded(table, rgb);
-      coeffs = u.coeffs, scale = u.scale;
+      RgbUnboundedSpectrum u(table, rgb);
+      coeffs = u.coefficients(), scale = u.scale();
     } else {
       coeffs = o.path == "manual" ? table.lookup(rgb) : table.lookupFiltered(rgb);
     }

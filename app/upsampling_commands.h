@@ -5,11 +5,13 @@
 #include <string>
 #include <vector>
 
+#include "spectral/rgb_to_spectrum_cache.h"
+
 namespace prism::app {
 
 struct LutOptions {
   std::string gamut = "srgb";
-  int resolution = 64;
+  int resolution = kRendererTableResolution;
   std::string output;
   unsigned threads = 0;
   bool report = false;  // node and round-trip quality after building
@@ -20,7 +22,7 @@ void runLut(const LutOptions& options);
 struct UpsampleOptions {
   std::vector<double> rgb;
   std::string gamut = "srgb";
-  int resolution = 64;
+  int resolution = kRendererTableResolution;
   std::vector<double> wavelengths{360.0, 830.0, 5.0};  // min, max, step in nm
   std::string intent = "albedo";                       // albedo | unbounded
   std::string path = "manual";                         // manual | filtered

@@ -9,7 +9,7 @@ namespace prism::app {
 int runView(const ViewOptions& options) {
   Scene scene = loadScene(options.scene, options.sets);
   render::FrameSettings settings = frameSettings(options.settings);
-  RgbToSpectrumTable table = harness::upsamplingTable(scene.colourSpace);
+  const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   viewer::ViewerOptions v;
   v.width = settings.width;
   v.height = settings.height;

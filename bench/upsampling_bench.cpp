@@ -10,11 +10,6 @@
 namespace prism {
 namespace {
 
-const RgbToSpectrumTable& table() {
-  static const RgbToSpectrumTable instance = cachedRgbToSpectrumTable("srgb", 64);
-  return instance;
-}
-
 std::vector<glm::vec3> randomAlbedos() {
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -25,7 +20,7 @@ std::vector<glm::vec3> randomAlbedos() {
 
 template <bool kFiltered>
 void lookup(benchmark::State& state) {
-  const RgbToSpectrumTable& t = table();
+  const RgbToSpectrumTable& t = rendererRgbToSpectrumTable("srgb");
   std::vector<glm::vec3> rgbs = randomAlbedos();
   std::size_t i = 0;
   for (auto _ : state) {
@@ -44,7 +39,7 @@ void upsamplingTableBuild(benchmark::State& state) {
   for (auto _ : state)
     benchmark::DoNotOptimize(buildRgbToSpectrumTable({"srgb", static_cast<int>(state.range(0)), 0, {}}));
 }
-BENCHMARK(upsamplingTableBuild)->Arg(64)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK(upsamplingTableBuild)->Arg(kRendererTableResolution)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace
 }  // namespace prism

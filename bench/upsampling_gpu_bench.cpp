@@ -34,8 +34,7 @@ void upsamplingGpuLookup(benchmark::State& state) {
     gpu::ContextDesc contextDesc;
     contextDesc.debugContext = false;  // time what a release build runs, without validation
     context = std::make_unique<gpu::HeadlessContext>(contextDesc);
-    RgbToSpectrumTable table = cachedRgbToSpectrumTable("srgb", 64);
-    texture = std::make_unique<gpu::Texture3D>(render::uploadUpsamplingTable(table));
+    texture = std::make_unique<gpu::Texture3D>(render::uploadUpsamplingTable(rendererRgbToSpectrumTable("srgb")));
     gpu::ProgramDesc desc;
     desc.compute = shaderDirectory() / "bench" / "upsampling_cost.comp";
     desc.includeDirs = {shaderDirectory() / "shared", shaderDirectory()};

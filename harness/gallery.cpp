@@ -12,6 +12,7 @@
 #include "harness/display_png.h"
 #include "harness/html_report.h"
 #include "harness/progress_bar.h"
+#include "harness/upsampling_table.h"
 #include "imaging/image_difference.h"
 #include "imaging/png_file.h"
 #include "render/display_transform.h"
@@ -20,7 +21,6 @@
 #include "core/atomic_file.h"
 #include "core/data_files.h"
 #include "core/error.h"
-#include "spectral/rgb_to_spectrum_cache.h"
 #include "techniques/atmosphere/atmosphere_section.h"
 
 namespace prism::harness {
@@ -114,20 +114,16 @@ void runGallery(const GalleryOptions& o) {
   writeColourCheckerChart(chart);
 
   gpu::HeadlessContext context;
-  std::map<std::string, RgbToSpectrumTable> tables;
   ProgressBar bar("gallery");
   std::vector<Entry> entries;
   for (std::size_t i = 0; i < files.size(); ++i) {
     Scene scene = loadScene(files[i]);
-    if (!tables.contains(scene.colourSpace)) {
-      tables.emplace(scene.colourSpace, cachedRgbToSpectrumTable(scene.colourSpace, 64));
-    }
     render::FrameSettings settings;
     settings.width = o.width;
     settings.height = o.height;
     settings.mode = render::RenderMode::Rgb;
     settings.sampling.count = o.wavelengths;
-    render::Renderer renderer(scene, tables.at(scene.colourSpace), settings);
+    render::Renderer renderer(scene, upsamplingTable(scene), settings);
     renderer.renderFrame();
     imaging::PngImage rgb = displayPng(renderer);
     imaging::FloatImage rgbXyz = tristimulus(renderer, o.width, o.height);

@@ -14,12 +14,12 @@
 #include "harness/bench_plot.h"
 #include "harness/bench_statistics.h"
 #include "harness/progress_bar.h"
+#include "harness/upsampling_table.h"
 #include "render/renderer.h"
 #include "render/setting_keys.h"
 #include "scene/scene_loader.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
-#include "spectral/rgb_to_spectrum_cache.h"
 
 namespace prism::harness {
 namespace {
@@ -115,7 +115,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   const int rounds = std::min(options.rounds, options.frames);
   const int frames = (options.frames + rounds - 1) / rounds;  // per round
   Scene scene = loadScene(options.scene);
-  RgbToSpectrumTable table = cachedRgbToSpectrumTable(scene.colourSpace, 64);
+  const RgbToSpectrumTable& table = upsamplingTable(scene);
   gpu::HeadlessContext context;
   std::string device = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   render::Renderer renderer(scene, table, settings);

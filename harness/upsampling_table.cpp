@@ -5,10 +5,10 @@
 
 namespace prism::harness {
 
-RgbToSpectrumTable upsamplingTable(const std::string& colourSpace) {
-  ProgressBar bar("upsampling table for " + colourSpace);
-  return cachedRgbToSpectrumTable(colourSpace, 64,
-                                  [&](std::size_t done, std::size_t total) { bar.update(done, total); });
+const RgbToSpectrumTable& upsamplingTable(const Scene& scene) {
+  ProgressBar bar("upsampling table for " + scene.colourSpace);
+  return rendererRgbToSpectrumTable(scene.colourSpace,
+                                    [&](std::size_t done, std::size_t total) { bar.update(done, total); });
 }
 
 }  // namespace prism::harness

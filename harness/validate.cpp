@@ -21,7 +21,6 @@
 #include "scene/scene_loader.h"
 #include "core/atomic_file.h"
 #include "core/data_files.h"
-#include "core/error.h"
 
 namespace prism::harness {
 namespace {
@@ -83,20 +82,20 @@ constexpr double kHeatScale = 5.0;  // ΔE00 at the top of the heat maps and his
 // One experiment: a scene's references and every mode of the rasteriser compared with them.
 class Experiment {
  public:
-  Experiment(const std::filesystem::path& output, const RgbToSpectrumTable& table, const Sizes& sizes,
-             ProgressBar& bar, std::size_t total)
-      : mOutput(output), mTable(table), mSizes(sizes), mBar(bar), mTotal(total) {}
+  Experiment(const std::filesystem::path& output, const Sizes& sizes, ProgressBar& bar, std::size_t total)
+      : mOutput(output), mSizes(sizes), mBar(bar), mTotal(total) {}
 
   // Renders and compares `scene` as `name`. whiteFromReference: set the exposure so that the
   // reference's mean luminance is middle grey (0.18 of white) instead of the scene camera's.
   void run(const Scene& scene, const std::string& name, bool whiteFromReference, int spp, int globalSpp,
            std::vector<Result>& results) {
+    const RgbToSpectrumTable& table = upsamplingTable(scene);
     reference::ReferenceSettings rs;
     rs.width = mSizes.width;
     rs.height = mSizes.height;
     rs.samplesPerPixel = spp;
     rs.filter = reference::PixelFilter::Centre;
-    imaging::FloatImage direct = reference::renderReference(scene, mTable, rs).tristimulus;
+    imaging::FloatImage direct = reference::renderReference(scene, table, rs).tristimulus;
     step();
     double white = render::displayWhiteLuminance(scene.camera.ev100);
     if (whiteFromReference) {
@@ -109,7 +108,7 @@ class Experiment {
     if (globalSpp > 0) {
       rs.samplesPerPixel = globalSpp;
       rs.transport = reference::LightTransport::Global;
-      global = reference::renderReference(scene, mTable, rs).tristimulus;
+      global = reference::renderReference(scene, table, rs).tristimulus;
       writeImages(global, fmt::format("{}_reference_global", name), ev100, white);
       step();
     }
@@ -120,7 +119,7 @@ class Experiment {
     base.height = mSizes.height;
     base.display.dither = false;
     base.display.ev100 = ev100;
-    render::Renderer renderer(scene, mTable, base);  // one renderer, its settings changed per mode
+    render::Renderer renderer(scene, table, base);  // one renderer, its settings changed per mode
     for (const Mode& m : kModes) {
       render::FrameSettings settings = base;
       settings.mode = m.mode;
@@ -159,7 +158,6 @@ class Experiment {
   }
 
   const std::filesystem::path& mOutput;
-  const RgbToSpectrumTable& mTable;
   Sizes mSizes;
   ProgressBar& mBar;
   std::size_t mTotal;
@@ -247,18 +245,15 @@ int runValidate(const ValidateOptions& o) {
   const Sizes sizes = o.quick ? Sizes{240, 135, 64, 32, 8} : Sizes{640, 360, 256, 128, 64};
   const std::filesystem::path sceneDir = o.scenes.empty() ? exampleSceneDirectory() : o.scenes;
   std::filesystem::create_directories(o.output);
-  RgbToSpectrumTable table = upsamplingTable("srgb");
   gpu::HeadlessContext context;
 
   std::vector<Result> results;
   ProgressBar bar("validate");
   const std::size_t total = std::size(kSphereScenes) * (1 + std::size(kModes)) +
                             std::size(kReefDepthsM) * (2 + std::size(kModes));
-  Experiment experiment(o.output, table, sizes, bar, total);
+  Experiment experiment(o.output, sizes, bar, total);
   auto load = [&](const std::string& name, const std::vector<std::string>& sets) {
-    Scene scene = loadScene(sceneDir / (name + ".json"), sets);
-    if (scene.colourSpace != "srgb") throw Error(fmt::format("{}: validate expects an sRGB scene", name));
-    return scene;
+    return loadScene(sceneDir / (name + ".json"), sets);
   };
   for (const SphereScene& e : kSphereScenes) {
     experiment.run(load(e.scene, {}), e.scene, false, sizes.spheresSpp, 0, results);

@@ -18,7 +18,9 @@
 #include "scene/scene_spectra.h"
 #include "shared_cpp.h"
 #include "core/error.h"
+#include "spectral/colour_space.h"
 #include "spectral/observer.h"
+#include "spectral/rgb_intent.h"
 
 namespace prism::shared {
 #include "random.glsl"
@@ -156,7 +158,7 @@ class PathTracer {
         mScale(absoluteTristimulusScale(mObserver)),
         mSampler(settings.wavelengths, mObserver),
         mRays(scene),
-        mBackground(scene, table),
+        mBackground(backgroundRadiance(scene, colourSpace(scene.colourSpace), table)),
         mCamera(cameraTransform(scene.camera, settings.width, settings.height)),
         mMedium(effectiveMedium(scene)) {
     for (const Light& light : scene.lights) {
@@ -168,7 +170,7 @@ class PathTracer {
                          std::cos(glm::radians(light.outerConeDeg)), light.castsShadows});
     }
     for (const Material& m : scene.materials) {
-      mMaterials.push_back({&m, table.lookup(m.baseColour)});
+      mMaterials.push_back({&m, RgbAlbedoSpectrum(table, m.baseColour).coefficients()});
     }
   }
 
@@ -233,7 +235,8 @@ class PathTracer {
     } else if (m.reflectance) {
       for (int j = 0; j < 4; ++j) albedoOrN[j] = static_cast<float>(m.reflectance->at(lambdaNm[j]));
     } else {
-      vec3 coefficients = m.baseColourTexture >= 0 ? mTable.lookup(hit.albedo) : input.coefficients;
+      vec3 coefficients = m.baseColourTexture >= 0 ? RgbAlbedoSpectrum(mTable, hit.albedo).coefficients()
+                                                   : input.coefficients;
       albedoOrN = shared::upsampledReflectance4(coefficients, lambdaNm);
     }
   }
@@ -452,7 +455,7 @@ class PathTracer {
   double mScale;
   WavelengthSampler mSampler;
   RayScene mRays;
-  BackgroundRadiance mBackground;
+  RgbIlluminantSpectrum mBackground;
   CameraTransform mCamera;
   std::vector<LightInput> mLights;
   std::vector<MaterialInput> mMaterials;

@@ -12,6 +12,7 @@
 #include "scene/scene_loader.h"
 #include "scene/scene_spectra.h"
 #include "core/error.h"
+#include "spectral/colour_space.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_cache.h"
@@ -22,10 +23,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979;
 
-const RgbToSpectrumTable& srgbTable() {
-  static const RgbToSpectrumTable table = cachedRgbToSpectrumTable("srgb", 64);
-  return table;
-}
+const RgbToSpectrumTable& srgbTable() { return rendererRgbToSpectrumTable("srgb"); }
 
 Light directionalD65(const glm::vec3& direction, float lux) {
   Light light;
@@ -148,7 +146,7 @@ TEST(PathTracer, WhiteFurnaceReturnsTheSurroundingRadianceEverywhere) {
   settings.filter = PixelFilter::Box;
   ReferenceImage image = renderReference(scene, srgbTable(), settings);
 
-  BackgroundRadiance background(scene, srgbTable());
+  RgbIlluminantSpectrum background = backgroundRadiance(scene, colourSpace(scene.colourSpace), srgbTable());
   Spectrum b = Spectrum::fromFunction([&](double l) { return background.at(l); });
   Eigen::Vector3d expected = absoluteTristimulusScale(observer("cie1931")) * observer("cie1931").integrate(b);
   ASSERT_NEAR(expected.y(), 100.0, 0.1);

@@ -13,6 +13,7 @@
 #include "render/display_transform.h"
 #include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
+#include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 
@@ -25,12 +26,9 @@ const RgbToSpectrumTable& table() {
   return t;
 }
 
-const RgbToSpectrumTable& productionTable() {
-  // Built once per build folder (PRISM_CACHE_DIR): RGB and spectral agree under the gamut's
-  // white only as well as the table reproduces its colours.
-  static const RgbToSpectrumTable t = cachedRgbToSpectrumTable("srgb", 64);
-  return t;
-}
+// Built once per build folder (PRISM_CACHE_DIR): RGB and spectral agree under the gamut's white
+// only as well as the table reproduces its colours.
+const RgbToSpectrumTable& productionTable() { return rendererRgbToSpectrumTable("srgb"); }
 
 Scene oneLightScene(const std::string& spd, float lux) {
   Scene scene;

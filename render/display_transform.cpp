@@ -22,7 +22,7 @@ glm::mat3 toGlm(const Eigen::Matrix3d& m) {
 DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tristimulusObserver) {
   DisplayInputs inputs;
   inputs.colourSpace = &colourSpace(settings.colourSpace);
-  const Observer& cie = observer("cie1931");
+  const Observer& cie = cie1931Observer();
   if (settings.whiteBalance != "none") {
     Eigen::Vector3d white = cie.integrate(illuminant(settings.whiteBalance));
     inputs.whiteBalanceXyz = white / white.y();

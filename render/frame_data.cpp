@@ -12,6 +12,7 @@
 #include "spectral/colour_space.h"
 #include "core/error.h"
 #include "spectral/observer.h"
+#include "spectral/rgb_intent.h"
 #include "spectral/sampling.h"
 #include "spectral/sigmoid_fit.h"
 
@@ -26,7 +27,7 @@ glm::vec4 toVec4(const Eigen::Vector3d& v) {
 // upsampling table is fitted under), clamped to [0, 1].
 glm::vec4 reflectanceRgb(const Spectrum& reflectance, const RgbColourSpace& space) {
   Eigen::Vector3d xyz =
-      reflectanceTristimulus(observer("cie1931"), reflectance, gamutWhiteIlluminant(space));
+      reflectanceTristimulus(cie1931Observer(), reflectance, gamutWhiteIlluminant(space));
   Eigen::Vector3d rgb = (space.xyzToRgb * xyz).cwiseMax(0.0).cwiseMin(1.0);
   return toVec4(rgb);
 }
@@ -144,7 +145,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
     }
     frame.lights.push_back(g);
     if (rgbMode) {
-      Eigen::Vector3d xyz = double(shared::kLumensPerWatt) * observer("cie1931").integrate(light.spd);
+      Eigen::Vector3d xyz = double(shared::kLumensPerWatt) * cie1931Observer().integrate(light.spd);
       frame.lightSpectra.push_back(toVec4(space.xyzToRgb * xyz));
     } else {
       for (const shared::GpuBatch& batch : frame.batches) {
@@ -157,7 +158,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
   if (rgbMode) {
     frame.lightSpectra.push_back(glm::vec4(scene.background * scene.backgroundLuminance, 0.0f));
   } else {
-    BackgroundRadiance background(scene, table);
+    RgbIlluminantSpectrum background = backgroundRadiance(scene, space, table);
     for (const shared::GpuBatch& batch : frame.batches) {
       glm::vec4 v;
       for (int j = 0; j < 4; ++j) v[j] = static_cast<float>(background.at(batch.lambdaNm[j]));

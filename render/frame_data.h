@@ -10,9 +10,9 @@
 //   space's white, the light its upsampling table is fitted under: D65, or D60 for ACES);
 //   conductors n and k at each wavelength, never upsampled (RGB mode: F0 = the normal-incidence
 //   reflectance's colour under that white, rendered with Schlick).
-// - Background: a light colour (RGB mode: rgb × luminance; spectral: the colour space's white
-//   times the unbounded upsampling of the colour, so a white background is that white, not a
-//   flat spectrum).
+// - Background: a light colour (RGB mode: rgb × luminance; spectral: its RgbIlluminantSpectrum,
+//   scene/scene_spectra.h: the colour space's white times the unbounded upsampling of the
+//   colour, so a white background is that white, not a flat spectrum).
 // - Integration: the observer's curves over n·pdf, times 683 lm/W, so tristimulus is absolute
 //   (Y in cd/m²). A camera observer is scaled so that its green of D65 equals D65's Y; the post
 //   pass maps camera RGB to XYZ with the fitted camera matrix. RGB mode integrates with the

@@ -416,7 +416,7 @@ void Renderer::forwardPass() {
   float white = 1.2f * std::exp2(mSettings.display.ev100.value_or(mCamera.ev100));
   glm::mat3 fromXyz = glm::inverse(mDisplayTransform.toXyz);
   // The colour as the lighting pass's observer sees it (CIE 1931 behind a camera's matrix).
-  const Observer& seen = mContext.tristimulusObserver->isCamera ? observer("cie1931") : *mContext.tristimulusObserver;
+  const Observer& seen = mContext.tristimulusObserver->isCamera ? cie1931Observer() : *mContext.tristimulusObserver;
   mForwardProgram.use();
   mForwardProgram.setUniform("uViewProjection", mCameraTransform.viewProjection);
   for (const Light& light : mScene.lights) {

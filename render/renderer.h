@@ -43,6 +43,7 @@ class Renderer {
   Renderer(const Scene&, RgbToSpectrumTable&&, const FrameSettings&) = delete;
 
   const FrameSettings& settings() const { return mSettings; }
+  const FrameContext& context() const { return mContext; }  // the settings' names, resolved
   // Validated first; on any failure the renderer is left as it was. Accumulation restarts
   // unless only the display transform changed (exposure, tone map, white balance, display).
   void setSettings(const FrameSettings& settings);

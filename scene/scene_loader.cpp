@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "shared_cpp.h"
 #include "scene/conductors.h"
 #include "scene/gltf_loader.h"
 #include "scene/procedural_mesh.h"
@@ -20,7 +19,7 @@
 #include "core/error.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
-#include "spectral/sigmoid_fit.h"
+#include "spectral/rgb_intent.h"
 #include "techniques/registry.h"
 
 namespace prism {
@@ -36,17 +35,6 @@ std::string joined(const std::vector<std::string>& items) {
   std::string out;
   for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
   return out;
-}
-
-// pbrt-v4's RGBIlluminantSpectrum (src/pbrt/util/spectrum.h; Jakob & Hanika 2019 §5): the
-// colour's reflectance at half its largest channel, lit by the colour space's white; only the
-// chromaticity matters here, the photometric normalisation sets the level.
-Spectrum rgbLightSpectrum(const glm::vec3& rgb, const RgbColourSpace& space) {
-  float m = std::max({rgb.r, rgb.g, rgb.b});
-  Eigen::Vector3d albedo(rgb.r / (2.0 * m), rgb.g / (2.0 * m), rgb.b / (2.0 * m));
-  Spectrum white = gamutWhiteIlluminant(space);
-  SigmoidFitter fitter(space, white, observer("cie1931"));
-  return white * upsampledReflectanceSpectrum(fitter.fit(albedo).coeffs);
 }
 
 class SceneParser {
@@ -152,7 +140,8 @@ class SceneParser {
         glm::vec3 rgb = rgbNode.vec3(Range::atLeast(0.0));
         if (!(std::max({rgb.r, rgb.g, rgb.b}) > 0.0f)) rgbNode.fail("expected a colour that is not black");
         label = "rgb:" + schema::describe(rgbNode.json());
-        s = rgbLightSpectrum(rgb, colourSpace(mScene.colourSpace));
+        // A light colour, fitted exactly (no table at load); the normalisation below sets its level.
+        s = RgbIlluminantSpectrum::fitted(colourSpace(mScene.colourSpace), rgb).toDense();
       }
     }
     try {
@@ -446,10 +435,6 @@ void applyTechniqueLights(Scene& scene) {
     if (!section) continue;
     if (std::optional<TechniqueLight> l = section->light()) light.direction = l->direction;
   }
-}
-
-double luminousIntegral(const Spectrum& spd) {
-  return double(shared::kLumensPerWatt) * observer("cie1931").integrate(spd)[1];
 }
 
 Scene loadScene(const fs::path& file) { return loadScene(file, {}); }

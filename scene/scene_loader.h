@@ -28,11 +28,8 @@ Scene loadScene(const std::filesystem::path& file);
 // "<scene file>: <pointer>: --set <PATH=VALUE>: <what>" for a path that leads nowhere.
 Scene loadScene(const std::filesystem::path& file, const std::vector<std::string>& sets);
 
-// 683 lm/W · ∫ S(λ) ȳ(λ) dλ over 360–830 nm (CIE 1931 ȳ, trapezoid at 1 nm): the luminous
-// quantity of one unit of S. Every light's SPD is divided by it on load, so that it is 1.
-double luminousIntegral(const Spectrum& spd);
-
-// A light's SPD divided by its luminousIntegral, as every light in a Scene is (scene/scene.h).
+// A light's SPD divided by its luminousIntegral (spectral/observer.h), so that it is 1, as every
+// light in a Scene is (scene/scene.h).
 // Error when a value is negative or not finite, or when there is no luminous power.
 Spectrum normalisedLightSpectrum(const Spectrum& spd);
 

@@ -2,24 +2,17 @@
 #pragma once
 
 #include "scene/scene.h"
+#include "spectral/colour_space.h"
+#include "spectral/rgb_intent.h"
 #include "spectral/rgb_to_spectrum_table.h"
 
 namespace prism {
 
-// The background: an unbounded RGB light colour of Scene::backgroundLuminance cd/m² (for
-// white). Spectrally it is the colour space's white illuminant (D65, or D60 for ACES) times the
-// unbounded upsampling of the colour (rgb_to_spectrum_table.h), the white normalised so that
-// 683 lm/W · ∫ white·ȳ = 1: a white background is that illuminant, not a flat spectrum.
-class BackgroundRadiance {
- public:
-  // `table` is the scene colour space's Jakob–Hanika table; it is read here only.
-  BackgroundRadiance(const Scene& scene, const RgbToSpectrumTable& table);
-  // Spectral radiance in W·sr⁻¹·m⁻²·nm⁻¹.
-  double at(double lambdaNm) const;
-
- private:
-  Spectrum mWhite;  // normalised white × luminance
-  UnboundedUpsampling mUpsampling;
-};
+// The background's spectral radiance in W·sr⁻¹·m⁻²·nm⁻¹: its colour as a light colour
+// (RgbIlluminantSpectrum), so a white background is the colour space's white illuminant (D65, or
+// D60 for ACES) of Scene::backgroundLuminance cd/m², not a flat spectrum. `space` is the scene's
+// colour space and `table` its Jakob–Hanika table.
+RgbIlluminantSpectrum backgroundRadiance(const Scene& scene, const RgbColourSpace& space,
+                                         const RgbToSpectrumTable& table);
 
 }  // namespace prism

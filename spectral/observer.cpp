@@ -82,6 +82,8 @@ const Observer& observer(std::string_view name) {
   throw Error("unknown observer '" + std::string(name) + "' (see `prism colour list observers`)");
 }
 
+const Observer& cie1931Observer() { return registry().cie1931; }
+
 std::vector<std::string> listObservers() {
   std::vector<std::string> names{"cie1931", "cie1964"};
   for (const std::string& camera : listCameras()) names.push_back(camera);
@@ -122,6 +124,10 @@ double absoluteTristimulusScale(const Observer& obs) {
   if (!obs.isCamera) return kLumensPerWatt;
   static const Spectrum d65 = illuminant("D65");
   return kLumensPerWatt * observer("cie1931").integrate(d65).y() / obs.integrate(d65).y();
+}
+
+double luminousIntegral(const Spectrum& spd) {
+  return double(shared::kLumensPerWatt) * cie1931Observer().integrate(spd)[1];
 }
 
 }  // namespace prism

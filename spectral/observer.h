@@ -31,6 +31,9 @@ struct Observer {
 
 // Error naming the observer when unknown.
 const Observer& observer(std::string_view name);
+// CIE 1931 without a name lookup, for code that runs every frame (frame data, the forward pass):
+// the colour spaces' XYZ is its, so many computations want it whatever the chosen observer is.
+const Observer& cie1931Observer();
 std::vector<std::string> listObservers();
 std::vector<std::string> listCameras();
 
@@ -50,5 +53,10 @@ std::vector<Eigen::Vector3d> reflectanceWeights(const Observer& obs, const Spect
 // its green of D65 the Y of D65 (raw camera RGB on the luminance scale; its fitted camera matrix
 // does the rest). Every renderer multiplies its integration weights by it.
 double absoluteTristimulusScale(const Observer& obs);
+
+// 683 lm/W · ∫ S(λ) ȳ(λ) dλ over 360–830 nm (CIE 1931 ȳ, trapezoid at 1 nm): the luminous
+// quantity of one unit of S (luminance in cd/m² when S is radiance in W·sr⁻¹·m⁻²·nm⁻¹). A scene's
+// lights are divided by it on load, light colours and the background scaled by it.
+double luminousIntegral(const Spectrum& spd);
 
 }  // namespace prism

@@ -4,6 +4,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <map>
+#include <mutex>
 
 #include "shared_cpp.h"
 #include "spectral/colour_space.h"
@@ -69,6 +71,17 @@ RgbToSpectrumTable cachedRgbToSpectrumTable(
   RgbToSpectrumTable table = buildRgbToSpectrumTable({gamut, resolution, 0, progress});
   table.save(path);
   return table;
+}
+
+const RgbToSpectrumTable& rendererRgbToSpectrumTable(
+    const std::string& gamut, const std::function<void(std::size_t, std::size_t)>& progress) {
+  static std::mutex mutex;
+  static std::map<std::string, RgbToSpectrumTable, std::less<>> tables;  // nodes never move
+  std::lock_guard lock(mutex);
+  auto it = tables.find(gamut);
+  if (it == tables.end())
+    it = tables.emplace(gamut, cachedRgbToSpectrumTable(gamut, kRendererTableResolution, progress)).first;
+  return it->second;
 }
 
 }  // namespace prism

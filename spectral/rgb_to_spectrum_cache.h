@@ -22,4 +22,12 @@ RgbToSpectrumTable cachedRgbToSpectrumTable(
     const std::string& gamut, int resolution,
     const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 
+// The resolution of the table every renderer uses (the README's measured quality is this table's).
+inline constexpr int kRendererTableResolution = 64;
+
+// The renderers' table of a gamut: cachedRgbToSpectrumTable at kRendererTableResolution, read (or
+// built) once per process and kept, since renderers hold it by reference and it never changes.
+const RgbToSpectrumTable& rendererRgbToSpectrumTable(
+    const std::string& gamut, const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+
 }  // namespace prism

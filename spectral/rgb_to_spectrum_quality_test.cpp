@@ -1,5 +1,6 @@
-// Table quality at 64³, the resolution Prism renders with. Tables come from the cache
-// (PRISM_CACHE_DIR is the build tree's cache/), so each is optimised once per build tree.
+// Table quality at the resolution Prism renders with (kRendererTableResolution, 64³). Tables come
+// from the cache (PRISM_CACHE_DIR is the build tree's cache/), so each is optimised once per build
+// tree.
 #include "spectral/rgb_to_spectrum_quality.h"
 
 #include <gtest/gtest.h>
@@ -14,8 +15,6 @@
 namespace prism {
 namespace {
 
-constexpr int kResolution = 64;
-
 void print(const char* what, const std::string& gamut, const UpsamplingError& e) {
   std::printf("%-10s %-22s RMS ΔE00 %.5f  max %.4f  within ΔE00 1: %.4f %%  reflectance [%g, %g]\n",
               gamut.c_str(), what, e.rmsDeltaE2000, e.maxDeltaE2000, 100.0 * e.fractionWithin1,
@@ -23,10 +22,11 @@ void print(const char* what, const std::string& gamut, const UpsamplingError& e)
 }
 
 TEST(UpsamplingQuality, SrgbNodesMatchTheBestPublicOptimiser) {
-  RgbToSpectrumTable table = cachedRgbToSpectrumTable("srgb", kResolution);
+  const RgbToSpectrumTable& table = rendererRgbToSpectrumTable("srgb");
   UpsamplingError e = nodeError(table);
   print("nodes", "srgb", e);
-  EXPECT_EQ(e.count, 3u * 64 * 64 * 64);
+  const std::size_t n = kRendererTableResolution;
+  EXPECT_EQ(e.count, 3 * n * n * n);
   EXPECT_LE(e.rmsDeltaE2000, 0.003);
   EXPECT_LE(e.maxDeltaE2000, 0.05);
   EXPECT_GE(e.minReflectance, 0.0);
@@ -36,7 +36,7 @@ TEST(UpsamplingQuality, SrgbNodesMatchTheBestPublicOptimiser) {
 // The hardware-filtered path is kept only because it meets the bounds even with the 8-bit
 // blend weights GPUs use.
 TEST(UpsamplingQuality, SrgbRoundTripThroughEveryRunTimePath) {
-  RgbToSpectrumTable table = cachedRgbToSpectrumTable("srgb", kResolution);
+  const RgbToSpectrumTable& table = rendererRgbToSpectrumTable("srgb");
   for (LookupPath path : {LookupPath::Manual, LookupPath::Filtered, LookupPath::Filtered8Bit}) {
     UpsamplingError e = roundTripError(table, path, 100000, 7);
     print(path == LookupPath::Manual     ? "round trip, manual"
@@ -64,7 +64,7 @@ class WideGamut : public ::testing::TestWithParam<WideGamutFloors> {};
 
 TEST_P(WideGamut, ReportsReachabilityAndStaysPhysical) {
   const WideGamutFloors floors = GetParam();
-  RgbToSpectrumTable table = cachedRgbToSpectrumTable(floors.gamut, kResolution);
+  const RgbToSpectrumTable& table = rendererRgbToSpectrumTable(floors.gamut);
   UpsamplingError nodes = nodeError(table);
   print("nodes", floors.gamut, nodes);
   EXPECT_GE(nodes.minReflectance, 0.0);

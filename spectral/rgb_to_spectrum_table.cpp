@@ -7,7 +7,6 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
-#include <limits>
 
 #include "shared_cpp.h"
 #include "core/atomic_file.h"
@@ -173,15 +172,6 @@ RgbToSpectrumTable RgbToSpectrumTable::load(const std::filesystem::path& path) {
   for (float v : table.mData)
     if (!std::isfinite(v)) throw Error(where + "non-finite coefficient in upsampling table");
   return table;
-}
-
-UnboundedUpsampling lookupUnbounded(const RgbToSpectrumTable& table, const glm::vec3& rgb) {
-  glm::vec3 c;
-  for (int i = 0; i < 3; ++i) c[i] = std::isfinite(rgb[i]) ? std::max(rgb[i], 0.0f) : 0.0f;
-  float m = std::max({c.x, c.y, c.z});
-  if (m <= 0.0f) return {table.lookup(glm::vec3(0.0f)), 0.0f};
-  float scale = std::min(2.0f * m, std::numeric_limits<float>::max());
-  return {table.lookup(c / scale), scale};
 }
 
 }  // namespace prism

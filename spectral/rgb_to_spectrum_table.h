@@ -57,14 +57,4 @@ class RgbToSpectrumTable {
   std::vector<float> mData;
 };
 
-// An unbounded RGB (emission, or any value above 1): spectrum = scale · reflectance(coeffs),
-// with scale = 2·max(r, g, b) and coefficients of rgb / scale, whose largest channel is ½
-// (pbrt-v4's RGBUnboundedSpectrum: ½ keeps the fit away from the unreachable pure white).
-// Black, negative, NaN and infinite channels are read as 0; never NaN or Inf out.
-struct UnboundedUpsampling {
-  glm::vec3 coeffs{0.0f};
-  float scale = 0.0f;
-};
-UnboundedUpsampling lookupUnbounded(const RgbToSpectrumTable& table, const glm::vec3& rgb);
-
 }  // namespace prism

@@ -146,18 +146,6 @@ TEST(RgbToSpectrumTable, NonFiniteAndOutOfRangeAlbedosAreSanitised) {
   EXPECT_EQ(t.lookup(glm::vec3(INFINITY, -INFINITY, 0.25f)), clamped);
 }
 
-TEST(RgbToSpectrumTable, UnboundedColoursAreScaledByTwiceTheirMaximum) {
-  const RgbToSpectrumTable& t = smallTable();
-  UnboundedUpsampling u = lookupUnbounded(t, glm::vec3(2.0f, 1.0f, 0.5f));
-  EXPECT_FLOAT_EQ(u.scale, 4.0f);
-  EXPECT_EQ(u.coeffs, t.lookup(glm::vec3(0.5f, 0.25f, 0.125f)));
-  EXPECT_EQ(lookupUnbounded(t, glm::vec3(0.0f)).scale, 0.0f);
-  UnboundedUpsampling bad = lookupUnbounded(t, glm::vec3(NAN, INFINITY, -3.0f));
-  EXPECT_EQ(bad.scale, 0.0f);
-  UnboundedUpsampling huge = lookupUnbounded(t, glm::vec3(3e38f, 1.0f, 0.0f));
-  EXPECT_TRUE(std::isfinite(huge.scale));
-}
-
 TEST(RgbToSpectrumTable, TailsBeyondTheConstrainedBandStayFlat) {
   // The raw polynomial is unconstrained beyond 730 nm and climbs for some colours; Prism's
   // upsampled reflectance holds its 730 nm value there (and its 380 nm value below).

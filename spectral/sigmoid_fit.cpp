@@ -40,9 +40,10 @@ Eigen::Matrix3d labJacobian(const Eigen::Vector3d& xyz, const Eigen::Vector3d& w
 
 }  // namespace
 
-Spectrum gamutWhiteIlluminant(const RgbColourSpace& gamut) {
-  if (gamut.name == "acescg" || gamut.name == "aces2065-1") return daylight(6000.0);
-  return illuminant("D65");
+const Spectrum& gamutWhiteIlluminant(const RgbColourSpace& gamut) {
+  static const Spectrum d65 = illuminant("D65");
+  static const Spectrum d60 = daylight(6000.0);
+  return gamut.name == "acescg" || gamut.name == "aces2065-1" ? d60 : d65;
 }
 
 SigmoidFitter::SigmoidFitter(const RgbColourSpace& gamut, const Spectrum& illuminant,

@@ -26,8 +26,9 @@ struct SigmoidFit {
   int iterations = 0;
 };
 
-// The illuminant an RGB space's white stands for: D65, or CIE daylight at 6000 K for ACES.
-Spectrum gamutWhiteIlluminant(const RgbColourSpace& gamut);
+// The illuminant an RGB space's white stands for: D65, or CIE daylight at 6000 K for ACES. Built
+// once; frame assembly asks for it every frame.
+const Spectrum& gamutWhiteIlluminant(const RgbColourSpace& gamut);
 
 class SigmoidFitter {
  public:

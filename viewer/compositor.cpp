@@ -17,8 +17,8 @@ namespace prism::viewer {
 namespace {
 
 // Camera RGB is not XYZ: what the heat map compares and the EXR's colour meaning depend on it.
-bool underCameraCurves(const render::FrameSettings& s) {
-  return s.mode != render::RenderMode::Rgb && observer(s.observer).isCamera;
+bool underCameraCurves(const render::Renderer& renderer) {
+  return renderer.context().tristimulusObserver->isCamera;
 }
 
 // The luminance the view's exposure maps to display white.
@@ -99,7 +99,7 @@ void Compositor::updateHeatMap(const Camera& camera) {
   mFramesSinceHeatMap = 0;
   const render::FrameSettings& s = mLeft->settings();
   const render::FrameSettings& t = mRight->settings();
-  if (underCameraCurves(s) || underCameraCurves(t)) {
+  if (underCameraCurves(*mLeft) || underCameraCurves(*mRight)) {
     throw Error("the heat map compares XYZ: choose a CIE observer on both sides");
   }
   imaging::FloatImage a(s.width, s.height, 3), b(t.width, t.height, 3);
@@ -127,7 +127,7 @@ void Compositor::writeLeftExr(const std::filesystem::path& path, const Camera& c
   imaging::FloatImage image(s.width, s.height, 3);
   image.pixels = mLeft->readMeanTristimulus();
   imaging::writeExr(path, image,
-                    {underCameraCurves(s) ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,
+                    {underCameraCurves(*mLeft) ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,
                      imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour, whiteLuminance(s, camera)});
 }
 

@@ -6,6 +6,7 @@
 
 #include "render/shared_shading.h"
 #include "scene/conductors.h"
+#include "spectral/rgb_intent.h"
 #include "viewer/panel_widgets.h"
 #include "viewer/panels.h"
 
@@ -56,7 +57,7 @@ class MaterialsPanel final : public Panel {
     float width = std::max(200.0f, ImGui::GetContentRegionAvail().x);
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(20, 20, 24, 255));
-    Spectrum r = m.reflectance ? *m.reflectance : upsampledReflectanceSpectrum(table.lookup(m.baseColour));
+    Spectrum r = m.reflectance ? *m.reflectance : RgbAlbedoSpectrum(table, m.baseColour).toDense();
     for (int l = 360; l < 830; l += 2) {
       auto at = [&](int lambda) {
         return ImVec2(origin.x + static_cast<float>(lambda - 360) / 470.0f * width,

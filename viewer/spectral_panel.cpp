@@ -37,19 +37,21 @@ class SpectralPanel final : public Panel {
     auto curve = [&](const std::function<double(double)>& f, double scale, ImU32 colour) {
       for (int l = 360; l < 830; l += 2) draw->AddLine(at(l, f(l) * scale), at(l + 2, f(l + 2) * scale), colour, 1.5f);
     };
-    const Observer& obs = observer(context.view.left.observer);
-    double peak = 0.0;
-    for (int c = 0; c < 3; ++c) peak = std::max(peak, obs.curves[static_cast<std::size_t>(c)].maxValue());
-    const ImU32 colours[3] = {IM_COL32(230, 80, 80, 255), IM_COL32(80, 200, 90, 255), IM_COL32(90, 130, 240, 255)};
-    for (int c = 0; c < 3; ++c) {
-      const Spectrum& s = obs.curves[static_cast<std::size_t>(c)];
-      curve([&](double l) { return s.at(l); }, 1.0 / std::max(peak, 1e-12), colours[c]);
+    const render::Renderer* left = context.views.left();
+    if (left) {  // the observer the view renders with, resolved when its settings changed
+      const Observer& obs = *left->context().observer;
+      double peak = 0.0;
+      for (int c = 0; c < 3; ++c) peak = std::max(peak, obs.curves[static_cast<std::size_t>(c)].maxValue());
+      const ImU32 colours[3] = {IM_COL32(230, 80, 80, 255), IM_COL32(80, 200, 90, 255), IM_COL32(90, 130, 240, 255)};
+      for (int c = 0; c < 3; ++c) {
+        const Spectrum& s = obs.curves[static_cast<std::size_t>(c)];
+        curve([&](double l) { return s.at(l); }, 1.0 / std::max(peak, 1e-12), colours[c]);
+      }
     }
     for (const Light& light : context.scene.lights) {
       curve([&](double l) { return light.spd.at(l); }, 1.0 / std::max(light.spd.maxValue(), 1e-12),
             IM_COL32(250, 230, 120, 255));
     }
-    const render::Renderer* left = context.views.left();
     if (left && left->settings().mode != render::RenderMode::Rgb) {
       for (const auto& batch : left->frameData().batches) {
         for (int j = 0; j < 4; ++j) {

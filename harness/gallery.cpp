@@ -21,7 +21,6 @@
 #include "core/atomic_file.h"
 #include "core/data_files.h"
 #include "core/error.h"
-#include "techniques/atmosphere/atmosphere_section.h"
 
 namespace prism::harness {
 namespace {
@@ -30,7 +29,8 @@ struct Entry {
   std::string name;
   std::string description;
   imaging::DifferenceStats difference;  // RGB vs spectral (sky scenes: RGB-3 vs the reference)
-  // Scenes with a sky: RGB-3, optimised-4 and the reference side by side.
+  // Scenes with a technique of their own optimised wavelengths (the sky): RGB-3, optimised-4 and
+  // the reference side by side.
   bool sky = false;
   imaging::DifferenceStats optimisedDifference;  // optimised-4 vs the reference
 };
@@ -138,7 +138,7 @@ void runGallery(const GalleryOptions& o) {
                                     imaging::linearInput(reference, imaging::ColourMeaning::Xyz, white))
           .stats;
     };
-    if (scene.techniques.has(atmosphere::AtmosphereSection::kKey)) {
+    if (std::ranges::any_of(scene.techniques.all(), [](const auto& t) { return t->optimisedWavelengths().has_value(); })) {
       e.sky = true;
       settings.mode = render::RenderMode::Optimised4;
       renderer.setSettings(settings);

@@ -1,8 +1,5 @@
 #include "render/frame_data.h"
 
-#include "techniques/atmosphere/atmosphere_section.h"
-#include "techniques/atmosphere/sky_strategy.h"
-
 #include <algorithm>
 #include <cmath>
 
@@ -15,6 +12,7 @@
 #include "spectral/rgb_intent.h"
 #include "spectral/sampling.h"
 #include "spectral/sigmoid_fit.h"
+#include "techniques/registry.h"
 
 namespace prism::render {
 namespace {
@@ -62,9 +60,7 @@ void addBatches(FrameData& frame, const FrameSettings& settings, const FrameCont
   const Observer& obs = *context.observer;
   double scale = absoluteTristimulusScale(obs);
   if (settings.mode == RenderMode::Optimised4) {
-    const auto* sky = scene.techniques.find<atmosphere::AtmosphereSection>();
-    bool aerosols = !sky || sky->parameters.aerosols;
-    atmosphere::OptimisedWavelengths set = atmosphere::loadOptimisedWavelengths(aerosols ? "aerosols" : "rayleigh-ozone");
+    const TechniqueWavelengths set = optimisedWavelengths(scene.techniques);
     shared::GpuBatch batch{};
     for (int j = 0; j < 4; ++j) {
       double lambda = set.lambdaNm[static_cast<std::size_t>(j)];

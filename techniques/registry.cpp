@@ -1,6 +1,7 @@
 #include "techniques/registry.h"
 
 #include "techniques/atmosphere/atmosphere_section.h"
+#include "techniques/atmosphere/sky_strategy.h"
 #include "techniques/underwater/water_section.h"
 
 namespace prism {
@@ -11,6 +12,14 @@ std::span<const TechniqueSectionParser> techniqueSectionParsers() {
       {atmosphere::AtmosphereSection::kKey, &atmosphere::AtmosphereSection::parse},
   };
   return kParsers;
+}
+
+TechniqueWavelengths optimisedWavelengths(const TechniqueSections& sections) {
+  for (const auto& section : sections.all()) {
+    if (std::optional<TechniqueWavelengths> own = section->optimisedWavelengths()) return *own;
+  }
+  atmosphere::OptimisedWavelengths set = atmosphere::loadOptimisedWavelengths("aerosols");
+  return {set.lambdaNm, set.weights};
 }
 
 }  // namespace prism

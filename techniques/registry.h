@@ -11,4 +11,8 @@ namespace prism {
 
 std::span<const TechniqueSectionParser> techniqueSectionParsers();
 
+// The optimised4 mode's wavelengths for a scene with these sections: the first technique's own
+// (TechniqueSection::optimisedWavelengths), else the sky's set with aerosols, the mode's default.
+TechniqueWavelengths optimisedWavelengths(const TechniqueSections& sections);
+
 }  // namespace prism

@@ -7,6 +7,7 @@
 // says, and compiles the lighting pass with each section's shader define.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstring>
 #include <memory>
@@ -122,6 +123,13 @@ struct TechniqueBench {
   std::vector<TechniqueBenchRatio> ratios;
 };
 
+// Four wavelengths and their weights fitted for a technique (García Liñán's, for the sky): what
+// the optimised4 mode renders its scenes with; weights in nm (the batch's row c is c̄(λᵢ)·wᵢ).
+struct TechniqueWavelengths {
+  std::array<double, 4> lambdaNm{};
+  std::array<double, 4> weights{};
+};
+
 class TechniqueSection {
  public:
   virtual ~TechniqueSection() = default;
@@ -145,6 +153,9 @@ class TechniqueSection {
   virtual std::string_view notTracedBecause() const { return {}; }
   // What the scene bench measures of its cost besides the run's own configurations.
   virtual TechniqueBench bench() const { return {}; }
+  // Its own optimised wavelengths, if it has them (scenes with such a technique are compared in
+  // optimised4 mode against the reference in the gallery).
+  virtual std::optional<TechniqueWavelengths> optimisedWavelengths() const { return std::nullopt; }
 };
 
 // A scene's sections, at most one per technique, in registration order; copied deeply (a scene

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "spectral/sampling.h"
+#include "techniques/atmosphere/sky_strategy.h"
 
 namespace prism::atmosphere {
 
@@ -90,6 +91,11 @@ std::unique_ptr<TechniqueSection> AtmosphereSection::parse(const schema::Node& n
 TechniqueBench AtmosphereSection::bench() const {
   return {{{"optimised4", {{"mode", "optimised4"}}}, {"reference", {{"mode", "reference"}}, false, 1}},
           {{"ratio_optimised4_to_rgb3", "optimised4", "rgb"}, {"ratio_reference_to_optimised4", "reference", "optimised4"}}};
+}
+
+std::optional<TechniqueWavelengths> AtmosphereSection::optimisedWavelengths() const {
+  OptimisedWavelengths set = loadOptimisedWavelengths(parameters.aerosols ? "aerosols" : "rayleigh-ozone");
+  return TechniqueWavelengths{set.lambdaNm, set.weights};
 }
 
 }  // namespace prism::atmosphere

@@ -40,6 +40,9 @@ struct AtmosphereSection final : TechniqueSection {
   // reference (472 wavelengths, 118 batches of tables a frame: one frame a round), every table
   // recomputed every frame.
   TechniqueBench bench() const override;
+  // García Liñán's four for its atmosphere (data/atmosphere_wavelengths.json: with aerosols or
+  // Rayleigh and ozone alone).
+  std::optional<TechniqueWavelengths> optimisedWavelengths() const override;
   std::string_view notTracedBecause() const override {
     return "the path tracer does not trace the atmosphere; its references are `prism atmosphere evaluate` "
            "and `prism render --mode reference`";

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <map>
 #include <mutex>
+#include <utility>
 
 #include "shared_cpp.h"
 #include "spectral/colour_space.h"
@@ -24,6 +25,10 @@ namespace {
 // Bump when the optimiser or the table's meaning changes.
 constexpr int kOptimiserVersion = 1;
 
+// How much worse than a fresh fit a stored node may reproduce its colour (CIE76) and be trusted:
+// the builder seeds each fit from its neighbour, which lands within hundredths of a fresh fit.
+constexpr double kTrustedNodeDeltaE = 0.5;
+
 std::uint32_t inputHash(const std::string& gamutName, int resolution) {
   const RgbColourSpace& gamut = colourSpace(gamutName);
   std::vector<double> key{static_cast<double>(kOptimiserVersion), static_cast<double>(resolution),
@@ -37,6 +42,37 @@ std::uint32_t inputHash(const std::string& gamutName, int resolution) {
   uLong crc = crc32(0L, reinterpret_cast<const Bytef*>(gamutName.data()), static_cast<uInt>(gamutName.size()));
   crc = crc32(crc, reinterpret_cast<const Bytef*>(key.data()), static_cast<uInt>(key.size() * sizeof(double)));
   return static_cast<std::uint32_t>(crc);
+}
+
+template <class... Args>
+std::string formatted(const char* format, Args... args) {
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, format, args...);
+  return buffer;
+}
+
+// Why a loaded table cannot be trusted, or empty when it can: a checksum only proves the bytes
+// are the ones written. A few nodes spread over the three blocks and the brightness range must
+// reproduce their colours about as well as a fresh fit does (a forged or stale table that is
+// consistent with its checksum reproduces nothing).
+std::string untrustworthy(const RgbToSpectrumTable& table) {
+  const RgbColourSpace& gamut = colourSpace(table.gamut());
+  const SigmoidFitter fitter(gamut, gamutWhiteIlluminant(gamut), cie1931Observer());
+  const int n = table.resolution(), mid = n / 2;
+  for (int block = 0; block < 3; ++block) {
+    for (int zi : {n - 1, mid, n / 4}) {
+      for (auto [yi, xi] : {std::pair{0, 0}, std::pair{mid, mid}, std::pair{n - 1, 0}}) {
+        glm::vec3 rgb = table.nodeRgb(block, zi, yi, xi);
+        Eigen::Vector3d target(rgb.x, rgb.y, rgb.z);
+        double stored = fitter.deltaE76(target, table.coefficients(block, zi, yi, xi));
+        double fresh = fitter.fit(target).deltaE76;
+        if (!(stored <= fresh + kTrustedNodeDeltaE))
+          return formatted("node (%d, %d, %d, %d) is ΔE76 %.3g from its colour, a fresh fit %.3g", block, zi, yi,
+                           xi, stored, fresh);
+      }
+    }
+  }
+  return {};
 }
 
 }  // namespace
@@ -61,12 +97,20 @@ RgbToSpectrumTable cachedRgbToSpectrumTable(
     const std::function<void(std::size_t, std::size_t)>& progress) {
   std::filesystem::path path = rgbToSpectrumCachePath(gamut, resolution);
   if (std::filesystem::exists(path)) {
+    // A damaged entry is said so, in one line, and rebuilt below; never trusted.
+    std::string damage;
     try {
       RgbToSpectrumTable table = RgbToSpectrumTable::load(path);
-      if (table.gamut() == gamut && table.resolution() == resolution) return table;
-    } catch (const Error&) {
-      // A damaged cache entry is rebuilt below, never trusted.
+      if (table.gamut() != gamut || table.resolution() != resolution)
+        damage = formatted("holds %s at %d³", table.gamut().c_str(), table.resolution());
+      else
+        damage = untrustworthy(table);
+      if (damage.empty()) return table;
+    } catch (const Error& e) {
+      damage = e.what();
     }
+    std::fprintf(stderr, "prism: cache entry %s is damaged (%s): rebuilding\n", path.string().c_str(),
+                 excerpt(damage, 160).c_str());
   }
   RgbToSpectrumTable table = buildRgbToSpectrumTable({gamut, resolution, 0, progress});
   table.save(path);

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <algorithm>
 #include <fstream>
 #include <string>
 
@@ -53,6 +54,32 @@ TEST_F(CacheTest, RebuildsADamagedEntry) {
   EXPECT_GT(progressCalls, 0);
   EXPECT_TRUE(std::equal(first.data().begin(), first.data().end(), rebuilt.data().begin()));
   EXPECT_NO_THROW(RgbToSpectrumTable::load(path));
+}
+
+// A table consistent with its checksum but whose coefficients are not the fits of their nodes
+// (forged, or written by a broken build) is caught at load, said so in one line, and rebuilt.
+TEST_F(CacheTest, RebuildsAnEntryWhoseCoefficientsDoNotReproduceTheirColours) {
+  RgbToSpectrumTable first = cachedRgbToSpectrumTable("srgb", 6);
+  RgbToSpectrumTable forged = first;
+  for (int block = 0; block < 3; ++block)
+    for (int z = 0; z < 6; ++z)
+      for (int y = 0; y < 6; ++y)
+        for (int x = 0; x < 6; ++x) forged.setCoefficients(block, z, y, x, first.coefficients(block, z, y, x) * 1.5f);
+  const std::filesystem::path path = rgbToSpectrumCachePath("srgb", 6);
+  forged.save(path);
+  ASSERT_NO_THROW(RgbToSpectrumTable::load(path));  // the checksum holds
+
+  ::testing::internal::CaptureStderr();
+  RgbToSpectrumTable rebuilt = cachedRgbToSpectrumTable("srgb", 6);
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  EXPECT_TRUE(std::equal(first.data().begin(), first.data().end(), rebuilt.data().begin()));
+  EXPECT_NE(said.find("prism: cache entry " + path.string() + " is damaged (node ("), std::string::npos) << said;
+  EXPECT_NE(said.find("): rebuilding\n"), std::string::npos) << said;
+  EXPECT_EQ(said.find('\n'), said.size() - 1) << said;
+
+  ::testing::internal::CaptureStderr();
+  cachedRgbToSpectrumTable("srgb", 6);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << "the rebuilt entry is trusted";
 }
 
 TEST_F(CacheTest, KeysDifferByGamutAndResolution) {

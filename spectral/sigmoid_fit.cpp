@@ -120,4 +120,14 @@ SigmoidFit SigmoidFitter::fit(const Eigen::Vector3d& linearRgb, const Eigen::Vec
   return result;
 }
 
+double SigmoidFitter::deltaE76(const Eigen::Vector3d& linearRgb, const glm::vec3& coeffs) const {
+  Eigen::Vector3d rgb = linearRgb.cwiseMax(0.0).cwiseMin(1.0);
+  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < mT.size(); ++i) {
+    auto lambdaNm = static_cast<float>(kLambdaMinNm + mT[i] * kSpanNm);
+    xyz += mWeights[i] * static_cast<double>(shared::sigmoid((coeffs[0] * lambdaNm + coeffs[1]) * lambdaNm + coeffs[2]));
+  }
+  return (lab(xyz, mWhiteXyz) - lab(mGamut.rgbToXyz * rgb, mWhiteXyz)).norm();
+}
+
 }  // namespace prism

@@ -37,6 +37,9 @@ class SigmoidFitter {
   // linearRgb is an albedo: each channel clamped to [0, 1] first.
   SigmoidFit fit(const Eigen::Vector3d& linearRgb,
                  const Eigen::Vector3d& seed = Eigen::Vector3d::Zero()) const;
+  // The CIE76 distance from linearRgb (clamped likewise) of given coefficients (λ in nm, as
+  // SigmoidFit::coeffs): how well a stored fit still reproduces its colour.
+  double deltaE76(const Eigen::Vector3d& linearRgb, const glm::vec3& coeffs) const;
 
  private:
   RgbColourSpace mGamut;

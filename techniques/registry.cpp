@@ -1,17 +1,12 @@
 #include "techniques/registry.h"
 
-#include "techniques/atmosphere/atmosphere_section.h"
+#include "technique_sections.h"
 #include "techniques/atmosphere/sky_strategy.h"
-#include "techniques/underwater/water_section.h"
 
 namespace prism {
 
 std::span<const TechniqueSectionParser> techniqueSectionParsers() {
-  static const TechniqueSectionParser kParsers[] = {
-      {underwater::WaterSection::kKey, &underwater::WaterSection::parse},
-      {atmosphere::AtmosphereSection::kKey, &atmosphere::AtmosphereSection::parse},
-  };
-  return kParsers;
+  return kTechniqueSectionParsers;
 }
 
 TechniqueWavelengths optimisedWavelengths(const TechniqueSections& sections) {

@@ -1,6 +1,6 @@
-// The techniques Prism knows, in the order their sections are read: the one place a new
-// technique is registered (one line in registry.cpp). The scene loader reads each technique's
-// section through it.
+// The techniques Prism knows, in the order their sections are read: each registered by the
+// prism_technique() call in its own CMakeLists.txt (cmake/PrismTechniques.cmake), from which
+// the list is generated. The scene loader reads each technique's section through it.
 #pragma once
 
 #include <span>

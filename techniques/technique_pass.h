@@ -1,8 +1,9 @@
 // The GPU side of the technique seam: a technique's passes before the lighting pass (the sky's
 // tables) and what they give the lighting pass beyond the technique's block. Each technique with
 // GPU passes implements one in techniques/<name>/gpu/ (above prism::gpu and prism::scene, below
-// the renderer); the renderer makes one per section (makeTechniquePass, one registration line
-// per technique in technique_passes.cpp), runs it each frame and binds it for the lighting pass.
+// the renderer); the renderer makes one per section (makeTechniquePass, over the passes the
+// techniques' prism_technique() calls register), runs it each frame and binds it for the
+// lighting pass.
 #pragma once
 
 #include <cstddef>

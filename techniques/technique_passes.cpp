@@ -1,13 +1,9 @@
 #include "techniques/technique_pass.h"
 
-#include "techniques/atmosphere/gpu/atmosphere_pass.h"
-#include "techniques/atmosphere/atmosphere_section.h"
+#include "technique_passes.h"
 
 namespace prism {
 
-std::unique_ptr<TechniquePass> makeTechniquePass(std::string_view key) {
-  if (key == atmosphere::AtmosphereSection::kKey) return std::make_unique<atmosphere::AtmospherePass>();
-  return nullptr;
-}
+std::unique_ptr<TechniquePass> makeTechniquePass(std::string_view key) { return makeRegisteredTechniquePass(key); }
 
 }  // namespace prism

@@ -93,9 +93,11 @@ void set(Viewer& viewer, const std::string& key, const std::string& value) {
     return;
   }
   Scene& scene = viewer.scene();
-  if (setWaterKey(scene, key, value) || setSkyKey(scene, key, value)) {
-    changes.scene = true;
-    return;
+  for (TechniqueSetKey set : techniqueSetKeys()) {
+    if (set(scene, key, value)) {
+      changes.scene = true;
+      return;
+    }
   }
   std::vector<std::string> parts;
   std::stringstream in(key);

@@ -47,8 +47,7 @@ Viewer::Viewer(gpu::WindowContext& window, Scene& scene, const RgbToSpectrumTabl
   mPanels.push_back(makeSplitPanel());
   mPanels.push_back(makeLightsPanel());
   mPanels.push_back(makeMaterialsPanel());
-  mPanels.push_back(makeWaterPanel());
-  mPanels.push_back(makeSkyPanel());
+  for (std::unique_ptr<Panel>& panel : makeTechniquePanels()) mPanels.push_back(std::move(panel));
   mPanels.push_back(makeDisplayPanel());
   mPanels.push_back(makeFilesPanel(*this));
 }

@@ -6,7 +6,7 @@
 #include "scene/scene_loader.h"
 #include "core/error.h"
 #include "techniques/atmosphere/atmosphere_section.h"
-#include "viewer/panels.h"
+#include "techniques/atmosphere/viewer/sky_viewer.h"
 
 namespace prism::viewer {
 namespace {

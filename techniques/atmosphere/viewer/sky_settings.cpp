@@ -1,5 +1,5 @@
 // The viewer script's `set sky.*` keys (viewer/technique_settings.h).
-#include "viewer/technique_settings.h"
+#include "techniques/atmosphere/viewer/sky_viewer.h"
 
 #include <algorithm>
 #include <string_view>

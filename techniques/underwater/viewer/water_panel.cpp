@@ -6,7 +6,7 @@
 #include "techniques/underwater/jerlov_water.h"
 #include "techniques/underwater/water_section.h"
 #include "viewer/panel_widgets.h"
-#include "viewer/panels.h"
+#include "techniques/underwater/viewer/water_viewer.h"
 
 namespace prism::viewer {
 namespace {

@@ -1,5 +1,5 @@
 // The viewer script's `set water.*` keys (viewer/technique_settings.h).
-#include "viewer/technique_settings.h"
+#include "techniques/underwater/viewer/water_viewer.h"
 
 #include <algorithm>
 

@@ -16,11 +16,16 @@
 //               Uniform. For renderers accumulating frames while nothing moves.
 //   Importance  stratified in the CDF of the observer's summed response x̄+ȳ+z̄ (piecewise
 //               constant per 1 nm bin, floored at 1e-3 of its mean so no wavelength has pdf 0).
+//   Lights      the rotated grid (Rotated's offset per frame) in the CDF of the scene's emission
+//               × the observer's response, with 10 % of Importance's pdf mixed in
+//               (spectral/wavelength_pdf.h): the samples go where the lamps emit what the observer
+//               sees, one frame is close, and frames accumulate at the rotated grid's rate. The
+//               sampler is built once per change of the lights (the emission is its input).
 #pragma once
 
 #include <array>
 #include <cstdint>
-#include <memory>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -28,6 +33,8 @@
 #include <glm/glm.hpp>
 
 #include "spectral/observer.h"
+#include "spectral/spectrum.h"
+#include "spectral/wavelength_pdf.h"
 
 namespace prism {
 
@@ -36,8 +43,8 @@ struct SampledWavelengths {
   std::array<double, 4> pdf{};  // per nm
 };
 
-enum class SamplingStrategy { Uniform, Stratified, Rotated, Importance };
-SamplingStrategy samplingStrategyFromName(std::string_view name);  // uniform|stratified|rotated|importance
+enum class SamplingStrategy { Uniform, Stratified, Rotated, Importance, Lights };
+SamplingStrategy samplingStrategyFromName(std::string_view name);  // uniform|stratified|rotated|importance|lights
 std::string_view samplingStrategyName(SamplingStrategy strategy);
 
 struct SamplingSettings {
@@ -51,29 +58,34 @@ struct SamplingSettings {
 void validate(const SamplingSettings& settings);
 
 // The batches for one pixel and frame (seed unused by Uniform). `importance` is the observer
-// whose response Importance follows.
+// whose response Importance follows. Not for Lights, which needs the lights: WavelengthSampler.
 std::vector<SampledWavelengths> sampleWavelengths(const SamplingSettings& settings,
                                                   std::uint32_t seed, const Observer& importance);
 
-// The same, for callers that draw many sets (a path tracer: one per path): the settings are
-// validated and Importance's pdf is tabulated once, at construction.
+// The same, for callers that draw many sets (a path tracer: one per path; a renderer: one per
+// frame): the settings are validated and Importance's or Lights' pdf is tabulated once, at
+// construction.
 class WavelengthSampler {
  public:
+  // Every strategy but Lights.
   WavelengthSampler(const SamplingSettings& settings, const Observer& importance);
-  ~WavelengthSampler();
-  WavelengthSampler(WavelengthSampler&&) noexcept;
-  WavelengthSampler& operator=(WavelengthSampler&&) noexcept;
+  // Every strategy; Lights follows `emission`, what the scene emits (scene/scene_emission.h: its
+  // lights and background, summed), the others ignore it.
+  WavelengthSampler(const SamplingSettings& settings, const Observer& importance, const Spectrum& emission);
+  const SamplingSettings& settings() const { return mSettings; }
+  // The pdf Importance and Lights draw from; null for the other strategies.
+  const WavelengthPdf* pdf() const { return mPdf ? &*mPdf : nullptr; }
   std::vector<SampledWavelengths> sample(std::uint32_t seed) const;
-  // Stratified and Importance, subdivided: wavelength i lies in part `part` of `parts` equal
-  // parts (in the CDF) of its stratum. Sets drawn for part = 0..parts−1, each weighted as usual,
-  // average to the stratified estimate over n·parts strata (how a path tracer spreads a pixel's
-  // paths over the spectrum). Uniform takes the part's midpoint; Rotated ignores parts.
+  // Stratified, Importance and Lights, subdivided: wavelength i lies in part `part` of `parts`
+  // equal parts (in the CDF) of its stratum. Sets drawn for part = 0..parts−1, each weighted as
+  // usual, average to the stratified estimate over n·parts strata (how a path tracer spreads a
+  // pixel's paths over the spectrum). Uniform takes the part's midpoint; Rotated ignores parts;
+  // Lights offsets the part by the seed's rotation.
   std::vector<SampledWavelengths> sample(std::uint32_t seed, int part, int parts) const;
 
  private:
-  struct ResponsePdf;
   SamplingSettings mSettings;
-  std::unique_ptr<ResponsePdf> mPdf;  // Importance only
+  std::optional<WavelengthPdf> mPdf;  // Importance and Lights
 };
 
 // The wavelengths RGB renderers commonly stand R, G and B for (e.g. Bruneton's atmosphere,

@@ -1,0 +1,32 @@
+// What a scene emits, as one spectrum: the weight the Lights wavelength strategy follows
+// (spectral/sampling.h, spectral/wavelength_pdf.h), for the rasteriser's frames and the reference's
+// hero wavelengths alike, so that both sample the same pdf.
+//
+//   E(λ) = Σ_lights intensity·SPD(λ) + π·L_background(λ)
+//
+// Each light's SPD is normalised photometrically (scene.h), so intensity·SPD is the spectral
+// illuminance it gives a surface facing it (directional: lux) or at 1 m (point, spot: candela):
+// lights are weighed without their distance, which the scene does not fix per pixel. π·L is the
+// illuminance a uniform surround of radiance L gives. A technique's own light is a scene light
+// (the sky's sun, at the top of the atmosphere); what a technique scatters (the sky's blue) has
+// no spectrum of its own here — the pdf's defensive share covers it.
+#pragma once
+
+#include "scene/scene.h"
+#include "spectral/colour_space.h"
+#include "spectral/observer.h"
+#include "spectral/rgb_to_spectrum_table.h"
+#include "spectral/sampling.h"
+
+namespace prism {
+
+// `space` is the scene's colour space and `table` its Jakob–Hanika table (the background's colour).
+Spectrum sceneEmission(const Scene& scene, const RgbColourSpace& space, const RgbToSpectrumTable& table);
+
+// The sampler of `settings` for this scene: Lights follows sceneEmission; the other strategies
+// do not need it (and it is not computed for them).
+WavelengthSampler sceneWavelengthSampler(const SamplingSettings& settings, const Observer& importance,
+                                         const Scene& scene, const RgbColourSpace& space,
+                                         const RgbToSpectrumTable& table);
+
+}  // namespace prism

@@ -1,0 +1,57 @@
+#include "scene/scene_emission.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "scene/scene_loader.h"
+#include "spectral/illuminant.h"
+#include "spectral/rgb_to_spectrum_optimiser.h"
+
+namespace prism {
+namespace {
+
+const RgbToSpectrumTable& table() {
+  // Only the background's white is looked up: a coarse table fits it as well as a fine one.
+  static const RgbToSpectrumTable t = buildRgbToSpectrumTable({"srgb", 16, 0, {}});
+  return t;
+}
+
+Light light(LightType type, const char* spd, float intensity) {
+  Light l;
+  l.type = type;
+  l.spd = normalisedLightSpectrum(illuminant(spd));
+  l.intensity = intensity;
+  return l;
+}
+
+TEST(SceneEmission, SumsTheLightsByIntensityAndTheBackgroundAsTheIlluminanceItGives) {
+  // Every SPD is photometrically normalised, so the emission's luminous integral is the sum of
+  // the intensities (lux, candela) plus π × the background's luminance (cd/m²).
+  Scene scene;
+  scene.lights.push_back(light(LightType::Directional, "D65", 1000.0f));
+  scene.lights.push_back(light(LightType::Point, "A", 50.0f));
+  EXPECT_NEAR(luminousIntegral(sceneEmission(scene, colourSpace("srgb"), table())) / 1050.0, 1.0, 1e-9);
+  Spectrum lightsOnly = sceneEmission(scene, colourSpace("srgb"), table());
+  EXPECT_DOUBLE_EQ(lightsOnly.at(450.0), 1000.0 * scene.lights[0].spd.at(450.0) + 50.0 * scene.lights[1].spd.at(450.0));
+  scene.background = glm::vec3(1.0f);
+  scene.backgroundLuminance = 100.0f;
+  // The white background is the colour space's white (D65) through the table's fit of (1, 1, 1).
+  EXPECT_NEAR(luminousIntegral(sceneEmission(scene, colourSpace("srgb"), table())) / (1050.0 + 100.0 * std::numbers::pi), 1.0, 1e-3);
+}
+
+TEST(SceneEmission, OnlyTheLightsStrategyFollowsIt) {
+  Scene scene;
+  scene.lights.push_back(light(LightType::Directional, "led:450:20", 1000.0f));
+  const Observer& cie = observer("cie1931");
+  WavelengthSampler lights = sceneWavelengthSampler({16, 360, 830, SamplingStrategy::Lights}, cie, scene, colourSpace("srgb"), table());
+  WavelengthSampler importance =
+      sceneWavelengthSampler({16, 360, 830, SamplingStrategy::Importance}, cie, scene, colourSpace("srgb"), table());
+  ASSERT_NE(lights.pdf(), nullptr);
+  ASSERT_NE(importance.pdf(), nullptr);
+  EXPECT_GT(lights.pdf()->density(450.5), 4.0 * importance.pdf()->density(450.5));
+  EXPECT_EQ(sceneWavelengthSampler({16, 360, 830, SamplingStrategy::Rotated}, cie, scene, colourSpace("srgb"), table()).pdf(), nullptr);
+}
+
+}  // namespace
+}  // namespace prism

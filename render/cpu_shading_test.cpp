@@ -68,7 +68,7 @@ struct UpFacing {
 
 glm::vec3 shadeOnce(const Scene& scene, const FrameSettings& settings, const UpFacing& p,
                     const RgbToSpectrumTable& lut = table()) {
-  FrameData frame = buildFrameData(scene, settings, frameContext(settings, scene), lut, {}, 0,
+  FrameData frame = buildFrameData(scene, settings, frameContext(settings, scene, lut), lut, {}, 0,
                                    cameraTransform(scene.camera, settings.width, settings.height));
   CpuShading shading(frame, lut, {});
   return shading.shade(p.texel, glm::vec2(0.5f), p.camera);

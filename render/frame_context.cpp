@@ -1,13 +1,17 @@
 #include "render/frame_context.h"
 
+#include "scene/scene_emission.h"
+
 namespace prism::render {
 
-FrameContext frameContext(const FrameSettings& settings, const Scene& scene) {
+FrameContext frameContext(const FrameSettings& settings, const Scene& scene, const RgbToSpectrumTable& table) {
   FrameContext c;
   c.observer = &observer(settings.observer);
   c.tristimulusObserver = settings.mode == RenderMode::Rgb ? &cie1931Observer() : c.observer;
   c.sceneColourSpace = &colourSpace(scene.colourSpace);
   c.display = resolveDisplay(settings.display, *c.tristimulusObserver);
+  c.wavelengths = std::make_shared<const WavelengthSampler>(
+      sceneWavelengthSampler(effectiveSampling(settings), *c.observer, scene, *c.sceneColourSpace, table));
   return c;
 }
 

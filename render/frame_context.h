@@ -1,14 +1,19 @@
-// What a frame's settings name, resolved: the observer, the scene's colour space and the display
-// transform's inputs. Built once whenever the settings change (Renderer's constructor and
-// setSettings) and handed to frame assembly and the display transform, so no frame looks a name
-// up again.
+// What a frame's settings name, resolved: the observer, the scene's colour space, the display
+// transform's inputs and the wavelength sampler. Built once whenever the settings change
+// (Renderer's constructor and setSettings) or the scene's lights do (Renderer::sceneChanged: the
+// Lights strategy's pdf follows them) and handed to frame assembly and the display transform, so
+// no frame looks a name up or tabulates a pdf again.
 #pragma once
+
+#include <memory>
 
 #include "render/display_transform.h"
 #include "render/frame_settings.h"
 #include "scene/scene.h"
 #include "spectral/colour_space.h"
 #include "spectral/observer.h"
+#include "spectral/rgb_to_spectrum_table.h"
+#include "spectral/sampling.h"
 
 namespace prism::render {
 
@@ -18,9 +23,13 @@ struct FrameContext {
                                                   // CIE 1931 in RGB mode, else `observer`
   const RgbColourSpace* sceneColourSpace = nullptr;
   DisplayInputs display;
+  // Draws each frame's wavelengths (effectiveSampling(settings); Lights follows the scene's
+  // emission, scene/scene_emission.h). Shared: copies of a context share one pdf.
+  std::shared_ptr<const WavelengthSampler> wavelengths;
 };
 
-// Error on an unknown name. The pointers are to data that lives as long as the program.
-FrameContext frameContext(const FrameSettings& settings, const Scene& scene);
+// Error on an unknown name. The pointers are to data that lives as long as the program. `table` is
+// the scene colour space's Jakob–Hanika table (the background's emission).
+FrameContext frameContext(const FrameSettings& settings, const Scene& scene, const RgbToSpectrumTable& table);
 
 }  // namespace prism::render

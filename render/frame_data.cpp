@@ -73,9 +73,7 @@ void addBatches(FrameData& frame, const FrameSettings& settings, const FrameCont
     frame.batches.push_back(batch);
     return;
   }
-  SamplingSettings sampling = effectiveSampling(settings);
-  std::vector<SampledWavelengths> sampled =
-      sampleWavelengths(sampling, frameIndex, obs);
+  std::vector<SampledWavelengths> sampled = context.wavelengths->sample(frameIndex);
   std::vector<IntegrationMatrix> matrices = integrationMatrices(sampled, obs);
   for (std::size_t b = 0; b < sampled.size(); ++b) {
     shared::GpuBatch batch{};

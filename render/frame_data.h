@@ -54,8 +54,9 @@ struct FrameData {
   }
 };
 
-// context holds settings' names resolved (frameContext). frameIndex seeds stochastic wavelength
-// strategies (a new set every frame). camera is where the frame is seen from (the water's depth there; the surface stays where the scene put it).
+// context holds settings' names resolved and the wavelength sampler (frameContext). frameIndex
+// seeds the wavelength strategies that change between frames (a new set every frame). camera is
+// where the frame is seen from (the water's depth there; the surface stays where the scene put it).
 FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, const FrameContext& context,
                          const RgbToSpectrumTable& table, const std::vector<ShadowView>& shadows,
                          std::uint32_t frameIndex, const CameraTransform& camera);

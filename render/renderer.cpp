@@ -110,7 +110,7 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
                             scene.lights.size(), shared::kMaxLights));
   }
   mLightingPrograms.emplace(lightingVariant(scene), lightingProgram(scene));
-  mContext = frameContext(mSettings, mScene);
+  mContext = frameContext(mSettings, mScene, mTable);
   mDisplayTransform = displayTransform(mSettings.display, mContext.display, mCamera.ev100);
   mShadows = makeShadows(mScene, mSettings.shadowMapSize);
   mTargets = makeTargets(mSettings.width, mSettings.height, mSettings.gbufferAlbedo);
@@ -118,7 +118,7 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
 
 void Renderer::setSettings(const FrameSettings& settings) {
   validate(settings);
-  FrameContext context = frameContext(settings, mScene);
+  FrameContext context = frameContext(settings, mScene, mTable);
   DisplayTransform display = displayTransform(settings.display, context.display, mCamera.ev100);
   bool resized = settings.width != mSettings.width || settings.height != mSettings.height ||
                  settings.gbufferAlbedo != mSettings.gbufferAlbedo;
@@ -146,6 +146,8 @@ void Renderer::setSettings(const FrameSettings& settings) {
 }
 
 void Renderer::sceneChanged() {
+  // The wavelengths' pdf follows the lights (Lights strategy); made before anything changes.
+  FrameContext context = frameContext(mSettings, mScene, mTable);
   // The views follow the lights; the maps are made again only when their number changes.
   std::vector<ShadowView> views = planShadowViews(mScene, mSettings.shadowMapSize);
   if (views.size() == mShadows.views.size()) {
@@ -153,6 +155,7 @@ void Renderer::sceneChanged() {
   } else {
     mShadows = makeShadows(mScene, mSettings.shadowMapSize);
   }
+  mContext = std::move(context);
   mAccumulated = 0;
 }
 
@@ -246,7 +249,7 @@ void Renderer::hook(std::string_view pass) const {
 
 void Renderer::renderFrame() {
   mCameraTransform = prism::cameraTransform(mCamera, mSettings.width, mSettings.height);
-  // A new set of wavelengths every frame (only stochastic strategies differ between frames).
+  // A new set of wavelengths every frame (every strategy but Uniform moves between frames).
   mFrame = buildFrameData(mScene, mSettings, mContext, mTable, mShadows.views, mFrameIndex++, mCameraTransform);
   uploadFrameData();
   hook("shadow");

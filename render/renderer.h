@@ -49,7 +49,8 @@ class Renderer {
   void setSettings(const FrameSettings& settings);
   void setCamera(const Camera& camera);  // restarts accumulation
   // The scene held by reference was edited (lights, materials, water: not its meshes or
-  // textures): shadow views are planned again and accumulation restarts.
+  // textures): shadow views are planned again, the Lights strategy's pdf follows the lights and
+  // accumulation restarts.
   void sceneChanged();
   // Compiles every pass's shaders again from their files (shaderDirectory()); on failure throws
   // gpu::GpuError with the first error as FILE:LINE and keeps the programs it had.

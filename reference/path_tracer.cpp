@@ -15,6 +15,7 @@
 #include "reference/ray_scene.h"
 #include "reference/surface_hit.h"
 #include "scene/camera_transform.h"
+#include "scene/scene_emission.h"
 #include "scene/scene_spectra.h"
 #include "shared_cpp.h"
 #include "core/error.h"
@@ -156,7 +157,8 @@ class PathTracer {
         mSettings(settings),
         mObserver(observer(settings.observer)),
         mScale(absoluteTristimulusScale(mObserver)),
-        mSampler(settings.wavelengths, mObserver),
+        mSampler(
+            sceneWavelengthSampler(settings.wavelengths, mObserver, scene, colourSpace(scene.colourSpace), table)),
         mRays(scene),
         mBackground(backgroundRadiance(scene, colourSpace(scene.colourSpace), table)),
         mCamera(cameraTransform(scene.camera, settings.width, settings.height)),

@@ -77,7 +77,8 @@ void colourXyz(const XyzOptions& o) {
     if (o.rangeNm.size() != 2) throw Error("--range: expected MIN,MAX in nm");
     SamplingSettings settings{o.wavelengthCount, o.rangeNm[0], o.rangeNm[1],
                               samplingStrategyFromName(o.strategy)};
-    std::vector<SampledWavelengths> batches = sampleWavelengths(settings, o.seed, obs);
+    // Lights follows the illuminant, the only light here.
+    std::vector<SampledWavelengths> batches = WavelengthSampler(settings, obs, light).sample(o.seed);
     std::vector<IntegrationMatrix> matrices = integrationMatrices(batches, obs);
     Eigen::Vector3d sampled = Eigen::Vector3d::Zero();
     for (std::size_t b = 0; b < batches.size(); ++b) {

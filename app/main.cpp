@@ -140,8 +140,10 @@ int main(int argc, char** argv) {
   auto* wavelengthsOpt = xyzCmd->add_option("--wavelengths", xyz.wavelengthCount,
                      "also estimate from N sampled wavelengths (a multiple of 4, 4–1000)");
   xyzCmd->add_option("--range", rangeText, "MIN,MAX nm of the sampled wavelengths (within 360–830)");
-  xyzCmd->add_option("--strategy", xyz.strategy, "uniform, stratified, rotated or importance")->capture_default_str();
-  xyzCmd->add_option("--seed", xyz.seed, "seed of stratified and importance sampling");
+  xyzCmd->add_option("--strategy", xyz.strategy,
+                     "uniform, stratified, rotated, importance (the observer's response) or lights (the "
+                     "illuminant × that response)")->capture_default_str();
+  xyzCmd->add_option("--seed", xyz.seed, "seed of stratified, rotated, importance and lights sampling");
   xyzCmd->add_flag("--json", xyz.json, "JSON output");
 
   DeltaEOptions de;
@@ -240,7 +242,9 @@ int main(int argc, char** argv) {
   referenceCmd->add_option("--observer", ref.observer, "cie1931, cie1964 or a camera")->capture_default_str();
   referenceCmd->add_option("--camera", ref.camera, "a camera as the observer (raw camera RGB)");
   referenceCmd->add_option("--range", refRange, "MIN,MAX nm of the hero wavelengths (within 360–830)");
-  referenceCmd->add_option("--strategy", ref.strategy, "importance (observer response), stratified or uniform")
+  referenceCmd->add_option("--strategy", ref.strategy,
+                           "importance (observer response), lights (the scene's emission × that response), "
+                           "stratified or uniform")
       ->capture_default_str();
   referenceCmd->add_option("--seed", ref.seed, "random seed (the image depends on it alone)")->capture_default_str();
   referenceCmd->add_option("--threads", ref.threads, "worker threads (0: all)");

@@ -63,13 +63,13 @@ void soak(Viewer& viewer, int frames, std::optional<double> maxGrowthMb) {
                                       render::RenderMode::Naive};
   const int counts[] = {4, 8, 16, 12};
   const SamplingStrategy strategies[] = {SamplingStrategy::Uniform, SamplingStrategy::Rotated,
-                                         SamplingStrategy::Stratified};
+                                         SamplingStrategy::Stratified, SamplingStrategy::Lights};
   for (int i = 1; i <= frames; ++i) {
     if (i % 10 == 0) {
       int k = i / 10;
       view.left.mode = modes[k % 3];
       view.left.sampling.count = counts[k % 4];
-      view.left.sampling.strategy = strategies[k % 3];
+      view.left.sampling.strategy = strategies[k % 4];
       view.left.gbufferAlbedo = k % 7 == 0 ? render::GBufferAlbedo::Coefficients : render::GBufferAlbedo::Rgb;
       if (!lights.empty()) {
         lights[0].intensity *= k % 2 ? 1.25f : 0.8f;

@@ -4,8 +4,8 @@
 //
 // Estimator. Each path carries four hero wavelengths (Wilkie et al. 2014) drawn as one
 // stratified batch over [λmin, λmax] (by default importance-sampled by the observer's
-// x̄ + ȳ + z̄; with the Lights strategy by the scene's emission × that response, the rasteriser's
-// pdf: spectral/sampling.h, scene/scene_emission.h) with their pdfs, path s of a pixel's N in part s of each of
+// x̄ + ȳ + z̄; with the Lights strategy by the scene's emission × the observer's curves, the
+// rasteriser's pdf: spectral/sampling.h, scene/scene_emission.h) with their pdfs, path s of a pixel's N in part s of each of
 // the four strata (so the N paths together stratify the spectrum 4·N ways); its radiance at them goes to tristimulus
 // through that batch's integration matrix (observer or camera curves / (4·pdf), times
 // absoluteTristimulusScale), so every path is an unbiased estimate of the pixel's XYZ in cd/m².

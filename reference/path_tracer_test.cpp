@@ -107,9 +107,9 @@ TEST(PathTracer, LambertianPlaneUnderADirectionalLightIsRhoECosOverPi) {
 
 TEST(PathTracer, TheLightsPdfIsUnbiasedAndQuieterUnderASpikyLamp) {
   // The same plane under F11, hero wavelengths drawn from the lights' pdf (the rasteriser's):
-  // still ρ·E·cos θ/π, and with the pdf ∝ F11·(x̄+ȳ+z̄) only the smooth c̄/(x̄+ȳ+z̄) is left
-  // to the samples, so the variance falls far below Importance's, which must find F11's lines
-  // (measured 67× below; ask for 10×).
+  // still ρ·E·cos θ/π, and with the pdf ∝ F11·Σ c̄/∫F11·c̄ only the smooth ratio of c̄ to that
+  // sum is left to the samples, so the variance falls far below Importance's, which must find
+  // F11's lines (measured 27× below; ask for 10×).
   Scene scene = litPlane(0.5, 1000.0f, "F11");
   const Eigen::Vector3d expected = perLuminance("F11") * (0.5 * 1000.0 * 0.6 / kPi);
   ReferenceSettings settings = small(16);

@@ -17,10 +17,11 @@
 //   Importance  stratified in the CDF of the observer's summed response x̄+ȳ+z̄ (piecewise
 //               constant per 1 nm bin, floored at 1e-3 of its mean so no wavelength has pdf 0).
 //   Lights      the rotated grid (Rotated's offset per frame) in the CDF of the scene's emission
-//               × the observer's response, with 10 % of Importance's pdf mixed in
-//               (spectral/wavelength_pdf.h): the samples go where the lamps emit what the observer
-//               sees, one frame is close, and frames accumulate at the rotated grid's rate. The
-//               sampler is built once per change of the lights (the emission is its input).
+//               × the observer's curves (each an equal share), with 10 % of Importance's pdf
+//               mixed in (spectral/wavelength_pdf.h): the samples go where the lamps emit what
+//               the observer sees, one frame is close under narrow or spiky lamps, and frames
+//               accumulate at the rotated grid's rate. The sampler is built once per change of
+//               the lights (the emission is its input).
 #pragma once
 
 #include <array>

@@ -53,20 +53,32 @@ WavelengthPdf WavelengthPdf::lightsAndObserver(const Spectrum& emission, const O
                                                double maxNm) {
   WavelengthPdf observerPdf = observerResponse(obs, minNm, maxNm);
   const std::vector<double>& edges = observerPdf.mEdgesNm;
-  // ∫ E·r over each bin by Simpson's rule: exact where the bin lies between two 1 nm nodes, on
-  // which E and r are both linear.
-  auto product = [&](double lambdaNm) { return std::max(emission.at(lambdaNm), 0.0) * obs.at(lambdaNm).sum(); };
-  std::vector<double> lightMass;
-  double total = 0.0;
+  // ∫ E·c̄ over each bin, per curve, by Simpson's rule: exact where the bin lies between two 1 nm
+  // nodes, on which E and c̄ are both linear.
+  auto product = [&](double lambdaNm) -> Eigen::Vector3d {
+    return std::max(emission.at(lambdaNm), 0.0) * obs.at(lambdaNm);
+  };
+  std::vector<Eigen::Vector3d> curveMass;
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
     const double a = edges[i], b = edges[i + 1];
-    lightMass.push_back((b - a) * (product(a) + 4.0 * product(0.5 * (a + b)) + product(b)) / 6.0);
-    total += lightMass.back();
+    const Eigen::Vector3d atA = product(a), atMid = product(0.5 * (a + b)), atB = product(b);
+    Eigen::Vector3d mass = (b - a) / 6.0 * (atA + 4.0 * atMid + atB);
+    curveMass.push_back(mass);
+    total += mass;
   }
-  if (!(total > 0.0) || !std::isfinite(total)) return observerPdf;
+  // Each curve the lights reach gets an equal share: Σ_c E·c̄_c / ∫E·c̄_c.
+  std::vector<double> lightMass(curveMass.size(), 0.0);
+  int curves = 0;
+  for (int c = 0; c < 3; ++c) {
+    if (!(total[c] > 0.0) || !std::isfinite(total[c])) continue;
+    ++curves;
+    for (std::size_t i = 0; i < curveMass.size(); ++i) lightMass[i] += curveMass[i][c] / total[c];
+  }
+  if (curves == 0) return observerPdf;
   std::vector<double> density;
   for (std::size_t i = 0; i < lightMass.size(); ++i) {
-    density.push_back((1.0 - kLightsDefensiveFraction) * lightMass[i] / (total * (edges[i + 1] - edges[i])) +
+    density.push_back((1.0 - kLightsDefensiveFraction) * lightMass[i] / (curves * (edges[i + 1] - edges[i])) +
                       kLightsDefensiveFraction * observerPdf.mDensity[i]);
   }
   return WavelengthPdf(edges, std::move(density));

@@ -62,10 +62,10 @@ TEST(WavelengthPdf, LightsKeepTheDefensiveShareWhereverTheObserverResponds) {
     EXPECT_DOUBLE_EQ(dark.density(lambda), observerPdf.density(lambda)) << lambda;
 }
 
-TEST(WavelengthPdf, LightsFollowTheEmissionTimesTheResponse) {
-  // Where the defensive share is negligible, p ∝ E·(x̄+ȳ+z̄): the ratio of two wavelengths'
-  // densities is that of the product (on bins of 1 nm from an integer, Simpson's rule is exact
-  // for the piecewise-linear product, which is what the bin holds).
+TEST(WavelengthPdf, LightsFollowTheEmissionTimesEachCurveInEqualShares) {
+  // Where the defensive share is negligible, p ∝ Σ_c E·c̄_c / ∫E·c̄_c: the ratio of two
+  // wavelengths' densities is that of this sum (on bins of 1 nm from an integer, Simpson's rule
+  // is exact for the piecewise-linear products, which is what each bin holds).
   const Observer& cie = observer("cie1931");
   Spectrum led = illuminant("led:450:20");
   WavelengthPdf pdf = WavelengthPdf::lightsAndObserver(led, cie, 360.0, 830.0);
@@ -73,12 +73,16 @@ TEST(WavelengthPdf, LightsFollowTheEmissionTimesTheResponse) {
   auto lightPart = [&](double lambda) {
     return pdf.density(lambda) - kLightsDefensiveFraction * observerPdf.density(lambda);
   };
-  auto binMean = [&](double a) {  // mean of E·r over [a, a + 1], both linear there
-    auto f = [&](double l) { return led.at(l) * cie.at(l).sum(); };
-    return (f(a) + 4.0 * f(a + 0.5) + f(a + 1.0)) / 6.0;
+  auto binMass = [&](double a) -> Eigen::Vector3d {  // ∫ E·c̄ over [a, a + 1], both linear there
+    auto f = [&](double l) -> Eigen::Vector3d { return led.at(l) * cie.at(l); };
+    Eigen::Vector3d sum = f(a) + 4.0 * f(a + 0.5) + f(a + 1.0);
+    return sum / 6.0;
   };
-  EXPECT_NEAR(lightPart(440.5) / lightPart(450.5), binMean(440.0) / binMean(450.0), 1e-12);
-  EXPECT_NEAR(lightPart(462.5) / lightPart(450.5), binMean(462.0) / binMean(450.0), 1e-12);
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  for (double a = 360.0; a < 830.0; a += 1.0) total += binMass(a);
+  auto balanced = [&](double a) { return binMass(a).cwiseQuotient(total).sum(); };
+  EXPECT_NEAR(lightPart(440.5) / lightPart(450.5), balanced(440.0) / balanced(450.0), 1e-12);
+  EXPECT_NEAR(lightPart(462.5) / lightPart(450.5), balanced(462.0) / balanced(450.0), 1e-12);
 }
 
 TEST(WavelengthPdf, AnObserverBlindToTheRangeIsAnError) {

@@ -40,22 +40,52 @@ constexpr SphereScene kSphereScenes[] = {
 constexpr float kReefDepthsM[] = {1.0f, 5.0f, 10.0f, 20.0f, 50.0f};
 
 // The thesis's three modes at 200 wavelengths (one frame of the uniform grid), and the real-time
-// setting, 16 wavelengths a frame: as a still camera sees it (the uniform grid rotated every
-// frame, 32 frames accumulated) and as one frame alone.
+// setting, 16 wavelengths a frame: as a still camera sees it (the uniform grid, or the lights'
+// pdf, rotated every frame, 32 frames accumulated) and as one frame alone (uniform grid, the
+// observer's importance, the lights' pdf). A strategy whose wavelengths move between frames has
+// a good and a bad frame, as a moving camera sees them one after another: its single frames are
+// measured `singles` times in a row, each alone, and their statistics averaged.
 struct Mode {
   const char* name;
   render::RenderMode mode;
   int wavelengths;
   SamplingStrategy strategy;
   int frames;
+  int singles = 1;
 };
+constexpr int kSingleFrames = 8;
 constexpr Mode kModes[] = {
     {"rgb", render::RenderMode::Rgb, 16, SamplingStrategy::Uniform, 1},
     {"naive-200", render::RenderMode::Naive, 200, SamplingStrategy::Uniform, 1},
     {"jakob-hanika-200", render::RenderMode::JakobHanika, 200, SamplingStrategy::Uniform, 1},
     {"jakob-hanika-16", render::RenderMode::JakobHanika, 16, SamplingStrategy::Rotated, 32},
+    {"jakob-hanika-16-lights", render::RenderMode::JakobHanika, 16, SamplingStrategy::Lights, 32},
     {"jakob-hanika-16-1frame", render::RenderMode::JakobHanika, 16, SamplingStrategy::Uniform, 1},
+    {"jakob-hanika-16-1frame-importance", render::RenderMode::JakobHanika, 16, SamplingStrategy::Importance, 1,
+     kSingleFrames},
+    {"jakob-hanika-16-1frame-lights", render::RenderMode::JakobHanika, 16, SamplingStrategy::Lights, 1,
+     kSingleFrames},
 };
+
+// Single frames' statistics, averaged field by field: added up into `sum`, then divided by the runs.
+void addStats(imaging::DifferenceStats& sum, const imaging::DifferenceStats& d) {
+  sum.pixelCount = d.pixelCount;
+  sum.meanDeltaE += d.meanDeltaE;
+  sum.medianDeltaE += d.medianDeltaE;
+  sum.p95DeltaE += d.p95DeltaE;
+  sum.p99DeltaE += d.p99DeltaE;
+  sum.maxDeltaE += d.maxDeltaE;
+  sum.thresholdDeltaE = d.thresholdDeltaE;
+  sum.fractionAbove += d.fractionAbove;
+  sum.mae8 += d.mae8;
+  sum.relativeError += d.relativeError;
+}
+imaging::DifferenceStats averaged(imaging::DifferenceStats sum, int runs) {
+  for (double* v : {&sum.meanDeltaE, &sum.medianDeltaE, &sum.p95DeltaE, &sum.p99DeltaE, &sum.maxDeltaE,
+                    &sum.fractionAbove, &sum.mae8, &sum.relativeError})
+    *v /= runs;
+  return sum;
+}
 
 struct Bound {
   const char* scene;
@@ -126,23 +156,30 @@ class Experiment {
       settings.sampling.count = m.wavelengths;
       settings.sampling.strategy = m.strategy;
       renderer.setSettings(settings);
-      for (int f = 0; f < m.frames; ++f) renderer.renderFrame();
-      imaging::FloatImage image(mSizes.width, mSizes.height, 3);
-      image.pixels = renderer.readMeanTristimulus();
-      displayImage(image, settings.display, observer(settings.observer), ev100).write(mOutput / fmt::format("{}_{}.png", name, m.name));
-      imaging::DifferenceOptions options;
-      options.keepMap = true;
       auto input = [&](const imaging::FloatImage& i) {
         return imaging::linearInput(i, imaging::ColourMeaning::Xyz, white);
       };
-      imaging::ImageDifference d = imaging::compareImages(input(direct), input(image), options);
-      imaging::heatMap(d.deltaEMap, {.maxDeltaE = kHeatScale, .legend = true})
-          .write(mOutput / fmt::format("{}_{}_heatmap.png", name, m.name));
-      imaging::HistogramOptions histogram;
-      histogram.maxDeltaE = kHeatScale;
-      imaging::deltaEHistogram(d.deltaEMap, histogram).write(mOutput / fmt::format("{}_{}_histogram.png", name, m.name));
-      Result r{name, m.name, d.stats};
-      if (globalSpp > 0) r.meanVsGlobal = imaging::compareImages(input(global), input(image)).stats.meanDeltaE;
+      imaging::DifferenceStats sum, sumVsGlobal;
+      for (int k = 0; k < m.singles; ++k) {
+        renderer.resetAccumulation();
+        for (int f = 0; f < m.frames; ++f) renderer.renderFrame();
+        imaging::FloatImage image(mSizes.width, mSizes.height, 3);
+        image.pixels = renderer.readMeanTristimulus();
+        imaging::DifferenceOptions options;
+        options.keepMap = k == 0;
+        imaging::ImageDifference d = imaging::compareImages(input(direct), input(image), options);
+        addStats(sum, d.stats);
+        if (globalSpp > 0) addStats(sumVsGlobal, imaging::compareImages(input(global), input(image)).stats);
+        if (k > 0) continue;  // the images shown are the first frame's
+        displayImage(image, settings.display, observer(settings.observer), ev100).write(mOutput / fmt::format("{}_{}.png", name, m.name));
+        imaging::heatMap(d.deltaEMap, {.maxDeltaE = kHeatScale, .legend = true})
+            .write(mOutput / fmt::format("{}_{}_heatmap.png", name, m.name));
+        imaging::HistogramOptions histogram;
+        histogram.maxDeltaE = kHeatScale;
+        imaging::deltaEHistogram(d.deltaEMap, histogram).write(mOutput / fmt::format("{}_{}_histogram.png", name, m.name));
+      }
+      Result r{name, m.name, averaged(sum, m.singles)};
+      if (globalSpp > 0) r.meanVsGlobal = averaged(sumVsGlobal, m.singles).meanDeltaE;
       results.push_back(r);
       step();
     }
@@ -168,10 +205,10 @@ std::string reefName(float depthM) { return fmt::format("reef_{:g}m", depthM); }
 
 std::string resultTable(const std::vector<Result>& results) {
   std::ostringstream out;
-  out << fmt::format("{:<18} {:<24} {:>9} {:>8} {:>8} {:>8} {:>8} {:>11}\n", "scene", "mode", "mean ΔE00",
+  out << fmt::format("{:<18} {:<34} {:>9} {:>8} {:>8} {:>8} {:>8} {:>11}\n", "scene", "mode", "mean ΔE00",
                      "median", "p95", "max", "MAE 8b", "vs global");
   for (const Result& r : results) {
-    out << fmt::format("{:<18} {:<24} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.2f} {:>8.3f} {:>11}\n", r.scene, r.mode,
+    out << fmt::format("{:<18} {:<34} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.2f} {:>8.3f} {:>11}\n", r.scene, r.mode,
                        r.stats.meanDeltaE, r.stats.medianDeltaE, r.stats.p95DeltaE, r.stats.maxDeltaE,
                        r.stats.mae8, std::isnan(r.meanVsGlobal) ? "" : fmt::format("{:.3f}", r.meanVsGlobal));
   }
@@ -187,8 +224,10 @@ std::string indexHtml(const std::vector<Result>& results, const std::vector<std:
       "reef) and, for the reef, multiple scattering ({} paths; the last column). ΔE00 is CIEDE2000 in XYZ "
       "before the display transform relative to the exposure's white (the scene camera's for the spheres; "
       "for the reef, the one that makes the reference's mean luminance middle grey); MAE is on 8-bit sRGB "
-      "after it. Heat maps and histograms span ΔE00 0–{}.",
-      sizes.width, sizes.height, sizes.spheresSpp, sizes.reefSpp, sizes.reefGlobalSpp, kHeatScale));
+      "after it. Heat maps and histograms span ΔE00 0–{}. The single frames of a strategy whose wavelengths "
+      "move between frames (importance, lights) are {} frames in a row, each alone: their statistics are "
+      "averaged, their images are the first's.",
+      sizes.width, sizes.height, sizes.spheresSpp, sizes.reefSpp, sizes.reefGlobalSpp, kHeatScale, kSingleFrames));
   if (failures.empty()) {
     page.paragraph("Every bound holds.");
   } else {

@@ -1,8 +1,10 @@
 // `prism validate`: Pérez García's experiments, reproduced against Prism's own ground truth.
 // The thesis's 15 spheres under D65, under its LED lamp and under a narrow blue LED, rendered by
 // the rasteriser in RGB, naive (box) and Jakob–Hanika modes with 200 wavelengths, and in
-// Jakob–Hanika mode with 16 wavelengths a frame (the real-time setting: the uniform grid rotated
-// each frame and 32 frames accumulated, as a still camera gets it, and one frame alone), each
+// Jakob–Hanika mode with 16 wavelengths a frame (the real-time setting: the uniform grid or the
+// lights' pdf rotated each frame and 32 frames accumulated, as a still camera gets it, and one
+// frame alone by the uniform grid, the observer's importance and the lights' pdf, the latter two
+// averaged over 8 frames in a row since their wavelengths move from frame to frame), each
 // compared in CIEDE2000 and MAE with the reference path tracer (direct lighting, pixel centres:
 // what the rasteriser computes, exactly).
 // Writes DIR/index.html (images side by side, heat maps, histograms, the table) and

@@ -1,5 +1,6 @@
 // `prism validate`: Pérez García's experiments, reproduced against Prism's own ground truth.
-// The thesis's 15 spheres under D65, under its LED lamp and under a narrow blue LED, rendered by
+// The thesis's 15 spheres under D65, under its LED lamp, under a narrow blue LED and under F11
+// (its D65 scene with the lamp changed), rendered by
 // the rasteriser in RGB, naive (box) and Jakob–Hanika modes with 200 wavelengths, and in
 // Jakob–Hanika mode with 16 wavelengths a frame (the real-time setting: the uniform grid or the
 // lights' pdf rotated each frame and 32 frames accumulated, as a still camera gets it, and one

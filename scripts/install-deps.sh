@@ -11,6 +11,9 @@ packages=(
   libepoxy-dev libegl-dev libgl-dev libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri libglfw3-dev
   libimgui-dev xvfb xauth
 )
+# Tools only some scripts need (scripts/fuzz.sh: clang and its libFuzzer runtime).
+read -r -a extra <<<"${PRISM_EXTRA_PACKAGES:-}"
+packages+=("${extra[@]}")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -33,7 +33,7 @@ double parameter(std::string_view name, std::string_view text) {
   double value = 0.0;
   auto result = std::from_chars(text.data(), text.data() + text.size(), value);
   if (result.ec != std::errc() || result.ptr != text.data() + text.size() || !std::isfinite(value))
-    throw Error("illuminant '" + std::string(name) + "': '" + std::string(text) +
+    throw Error("illuminant '" + excerpt(name) + "': '" + excerpt(text) +
                 "' is not a number");
   return value;
 }
@@ -95,7 +95,7 @@ Spectrum illuminant(std::string_view name) {
   };
   if (std::string_view lamp = suffix("nist:"); !lamp.empty()) {
     if (!t.nist.contains(lamp))
-      throw Error("unknown illuminant '" + std::string(name) +
+      throw Error("unknown illuminant '" + excerpt(name) +
                   "' (no such lamp in the NIST set; see `prism colour list illuminants`)");
     return t.nist.spectrum(lamp, Extrapolation::Zero).toDense();
   }
@@ -105,10 +105,10 @@ Spectrum illuminant(std::string_view name) {
   if (std::string_view led = suffix("led:"); !led.empty()) {
     std::size_t colon = led.find(':');
     if (colon == std::string_view::npos)
-      throw Error("illuminant '" + std::string(name) + "': expected led:<peak nm>:<width nm>");
+      throw Error("illuminant '" + excerpt(name) + "': expected led:<peak nm>:<width nm>");
     return narrowbandLed(parameter(name, led.substr(0, colon)), parameter(name, led.substr(colon + 1)));
   }
-  throw Error("unknown illuminant '" + std::string(name) + "' (see `prism colour list illuminants`)");
+  throw Error("unknown illuminant '" + excerpt(name) + "' (see `prism colour list illuminants`)");
 }
 
 std::vector<IlluminantInfo> listIlluminants() {

@@ -300,7 +300,7 @@ int main(int argc, char** argv) {
   atmEvaluate->add_flag("!--no-aerosols", atm.aerosols, "Rayleigh + ozone only (and its optimised set)");
   atmEvaluate->add_option("--wavelengths", atm.wavelengths, "an optimised wavelength file (default: data/atmosphere_wavelengths.json)");
   atmEvaluate->add_flag("--json", atm.json, "JSON output");
-  atmOptimise->add_option("-o,--output", atm.output, "where to write (default: data/atmosphere_wavelengths.json)");
+  atmOptimise->add_option("-o,--output", atm.output, "where to write (the shipped fit is data/atmosphere_wavelengths.json: name it to replace it)")->required();
 
   auto* bench = app.add_subcommand(
       "bench", "GPU frame times of a scene (prism bench SCENE.json), or, without a scene, Prism's "
@@ -364,7 +364,6 @@ int main(int argc, char** argv) {
       return runAtmosphereEvaluate(atm);
     }
     if (*atmOptimise) {
-      if (atm.quick && atm.output.empty()) throw prism::Error("optimise --quick needs -o FILE: a quick fit must not replace data/atmosphere_wavelengths.json");
       if (atm.zeniths < 1 || atm.zeniths > 512 || atm.azimuths < 1 || atm.azimuths > 1024) throw prism::Error("--zeniths must be within 1..512 and --azimuths within 1..1024");
       runAtmosphereOptimise(atm);
     }

@@ -57,6 +57,7 @@ void runReference(const ReferenceOptions& o) {
   imaging::ExrWriteOptions exr{camera ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,
                                imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour,
                                render::displayWhiteLuminance(ev100)};
+  imaging::requireFiniteOutput(image.tristimulus, o.output.string());
   if (extension == ".exr") {
     imaging::writeExr(o.output, image.tristimulus, exr);
   } else {

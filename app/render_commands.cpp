@@ -47,12 +47,13 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
     renderer.renderFrame();
     if (bar) bar->update(static_cast<std::size_t>(f + 1), static_cast<std::size_t>(frames));
   }
+  imaging::FloatImage image(settings.width, settings.height, 3);
+  image.pixels = renderer.readMeanTristimulus();
+  imaging::requireFiniteOutput(image, output.string());
   if (extension == ".png") {
     harness::displayPng(renderer).write(output);
     return;
   }
-  imaging::FloatImage image(settings.width, settings.height, 3);
-  image.pixels = renderer.readMeanTristimulus();
   bool camera = settings.mode != render::RenderMode::Rgb && observer(settings.observer).isCamera;
   imaging::writeExr(output, image,
                     {camera ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,

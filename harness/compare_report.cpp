@@ -38,13 +38,9 @@ Loaded load(const std::filesystem::path& path, const std::optional<double>& whit
                               path.string(), imaging::colourMeaningName(l.exr.colour)));
     }
     if (white) l.exr.displayWhite = *white;
-    const imaging::FloatImage& image = l.exr.image;
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-      if (std::isfinite(image.pixels[i])) continue;
-      const std::size_t pixel = i / static_cast<std::size_t>(image.channels);
-      throw Error(fmt::format("{}: pixel ({}, {}) holds {}: compare takes finite images", path.string(),
-                              pixel % static_cast<std::size_t>(image.width), pixel / static_cast<std::size_t>(image.width),
-                              image.pixels[i]));
+    if (imaging::NonFinitePixels bad = imaging::nonFinitePixels(l.exr.image); bad.count > 0) {
+      throw Error(fmt::format("{}: pixel ({}, {}) holds {}: compare takes finite images", path.string(), bad.firstX,
+                              bad.firstY, bad.firstValue));
     }
   } else {
     l.png = imaging::readPng8(path);

@@ -7,7 +7,7 @@
 
 #include "harness/progress_bar.h"
 #include "core/atomic_file.h"
-#include "core/data_files.h"
+#include "core/error.h"
 #include "techniques/atmosphere/sky_evaluation.h"
 #include "techniques/atmosphere/wavelength_optimiser.h"
 
@@ -89,7 +89,8 @@ int runAtmosphereEvaluate(const AtmosphereCommandOptions& raw) {
 
 void runAtmosphereOptimise(const AtmosphereCommandOptions& raw) {
   AtmosphereCommandOptions o = effective(raw);
-  std::filesystem::path output = o.output.empty() ? dataDirectory() / "atmosphere_wavelengths.json" : o.output;
+  PRISM_CHECK(!o.output.empty());  // the command line requires -o: the shipped fit is replaced only by name
+  const std::filesystem::path& output = o.output;
   SkySamples samples = makeSkySamples(kFitElevations, o.zeniths, o.azimuths);
   OptimiserSettings settings;
   nlohmann::json file;

@@ -17,7 +17,7 @@ struct AtmosphereCommandOptions {
   bool json = false;
   bool quick = false;    // 10 nm reference, 8 × 16 directions (seconds, for tests)
   std::filesystem::path wavelengths;  // evaluate: a wavelength file other than data/'s
-  std::filesystem::path output;       // optimise: where to write (default: data/atmosphere_wavelengths.json)
+  std::filesystem::path output;       // optimise: where to write (required; the shipped fit is data/atmosphere_wavelengths.json)
 };
 
 // Exit status 1 when the optimised set's mean ΔE00 exceeds 1.0 at some elevation (the goal).

@@ -43,4 +43,20 @@ struct FloatImage {
   float at(int x, int y, int c) const { return pixels[index(x, y, c)]; }
 };
 
+// The pixels of an image that hold a NaN or an infinity in any channel: how many, and the first
+// (row-major) with its first such value. What refuses to write a render (app/render_commands.cpp)
+// or to compare an image (harness/compare_report.cpp) that the float pipeline did not carry.
+struct NonFinitePixels {
+  std::size_t count = 0;
+  int firstX = -1;
+  int firstY = -1;
+  float firstValue = 0.0f;
+};
+NonFinitePixels nonFinitePixels(const FloatImage& image);
+
+// Every input is checked finite and within what floats carry (core/json_schema.h); a frame that
+// still overflows is refused rather than written with holes in it: Error "OUTPUT: not written: N
+// of M pixels came out non-finite (the first, (X, Y), holds V)…" when the image holds any.
+void requireFiniteOutput(const FloatImage& image, std::string_view output);
+
 }  // namespace prism::imaging

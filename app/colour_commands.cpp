@@ -52,13 +52,17 @@ void colourXyz(const XyzOptions& o) {
     out["reflectance"] = o.reflectanceFile;
   } else if (!o.rgb.empty()) {
     requireThree(o.rgb, "--rgb");
+    for (double channel : o.rgb) {
+      if (!(channel >= 0.0 && channel <= 1.0))
+        throw Error(fmt::format("--rgb: an albedo's channels lie within [0, 1], got {}", channel));
+    }
     const RgbColourSpace& gamut = colourSpace(o.gamut);
     Eigen::Vector3d rgb(o.rgb[0], o.rgb[1], o.rgb[2]);
     if (o.encoded) rgb = gamut.decode(rgb);
     SigmoidFitter fitter(gamut, gamutWhiteIlluminant(gamut), observer("cie1931"));
     SigmoidFit fit = fitter.fit(rgb);
     reflectance = upsampledReflectanceSpectrum(fit.coeffs);
-    out["rgb"] = {{"gamut", o.gamut}, {"linear", toJson(Eigen::Vector3d(rgb.cwiseMax(0.0).cwiseMin(1.0)))}};
+    out["rgb"] = {{"gamut", o.gamut}, {"linear", toJson(rgb)}};
     out["upsampling"] = {{"model", "jakob-hanika-2019"},
                          {"coefficients", {fit.coeffs.x, fit.coeffs.y, fit.coeffs.z}},
                          {"fitDeltaE76", fit.deltaE76}};

@@ -8,6 +8,7 @@
 #include "imaging/exr_file.h"
 #include "render/display_transform.h"
 #include "scene/scene_loader.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "spectral/observer.h"
 
@@ -47,6 +48,8 @@ void runReference(const ReferenceOptions& o) {
   }
   Scene scene = loadScene(o.scene, o.sets);
   reference::ReferenceSettings settings = referenceSettings(o);
+  requireWritable(o.output);
+  if (!o.variance.empty()) requireWritable(o.variance);
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::ProgressBar bar("tracing " + o.output.filename().string());
   reference::ReferenceImage image = reference::renderReference(

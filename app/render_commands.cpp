@@ -11,6 +11,7 @@
 #include "render/renderer.h"
 #include "render/setting_keys.h"
 #include "scene/scene_loader.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "spectral/observer.h"
 
@@ -38,6 +39,7 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
     throw Error(fmt::format("{}: the output must be a .png or an .exr file", output.string()));
   }
   if (frames < 1) throw Error("--frames: must be at least 1");
+  requireWritable(output);
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   gpu::HeadlessContext context;
   render::Renderer renderer(scene, table, settings);

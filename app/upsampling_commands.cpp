@@ -9,6 +9,7 @@
 
 #include "harness/progress_bar.h"
 #include "spectral/colour_space.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "spectral/rgb_intent.h"
 #include "spectral/rgb_to_spectrum_cache.h"
@@ -44,6 +45,7 @@ void printError(const char* what, const UpsamplingError& e) {
 void runLut(const LutOptions& o) {
   const std::string gamut = colourSpace(o.gamut).name;  // unknown names fail before any work
   if (o.output.empty()) throw Error("lut: give the output file with -o");
+  requireWritable(o.output);
   harness::ProgressBar bar("lut " + gamut + " " + std::to_string(o.resolution) + "³");
   auto start = std::chrono::steady_clock::now();
   RgbToSpectrumTable table = buildRgbToSpectrumTable(

@@ -31,4 +31,18 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
   }
 }
 
+void requireWritable(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw Error(path.string() + ": is a folder");
+  std::filesystem::path folder = std::filesystem::absolute(path, ec).parent_path();
+  while (!std::filesystem::exists(folder, ec) && folder.has_relative_path()) folder = folder.parent_path();
+  if (!std::filesystem::is_directory(folder, ec))
+    throw Error(path.string() + ": cannot write: " + folder.string() + " is not a folder");
+  std::filesystem::path probe = folder / (".prism-probe" + std::to_string(::getpid()));
+  std::FILE* f = std::fopen(probe.c_str(), "wb");
+  if (!f) throw Error(path.string() + ": cannot write: " + std::strerror(errno));
+  std::fclose(f);
+  std::filesystem::remove(probe, ec);
+}
+
 }  // namespace prism

@@ -11,4 +11,10 @@ namespace prism {
 // file is removed then.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
+// Before long work whose result goes to `path` (a table, a render): Error "PATH: cannot write:
+// why" (or "PATH: is a folder") unless a file can be created where it goes — in its folder, or
+// in the nearest existing folder above when folders are still to be made (made by
+// writeFileAtomically, not here). Leaves nothing behind.
+void requireWritable(const std::filesystem::path& path);
+
 }  // namespace prism

@@ -38,5 +38,30 @@ TEST(AtomicFile, UnwritablePlaceIsAnErrorAndTargetIsUntouched) {
     EXPECT_EQ(entry.path().string().find("atomic_dir_target.tmp"), std::string::npos);
 }
 
+TEST(RequireWritable, AcceptsNewFilesAndFoldersToBeMadeAndLeavesNothing) {
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "require_writable";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  EXPECT_NO_THROW(requireWritable(dir / "out.png"));
+  EXPECT_NO_THROW(requireWritable(dir / "not" / "yet" / "made" / "out.png"));
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+TEST(RequireWritable, RefusesAFolderAFileAsAFolderAndAPlaceWithoutFiles) {
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "require_writable_bad";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  writeFileAtomically(dir / "plain", "x");
+  EXPECT_THROW(requireWritable(dir), Error);
+  try {
+    requireWritable(dir / "plain" / "out.png");
+    FAIL() << "a file used as a folder was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("plain is not a folder"), std::string::npos) << e.what();
+  }
+  // /proc takes no new files, even from root.
+  EXPECT_THROW(requireWritable("/proc/prism-out.png"), Error);
+}
+
 }  // namespace
 }  // namespace prism

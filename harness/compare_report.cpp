@@ -54,6 +54,10 @@ void runCompare(const CompareOptions& o) {
   if (o.white && !(*o.white > 0.0)) throw Error("--white: must be a positive luminance");
   if (!(o.threshold >= 0.0)) throw Error("--threshold: must be ≥ 0");
   if (!(o.scaleMax > 0.0)) throw Error("--scale-max: must be > 0");
+  for (const auto& [option, path] : {std::pair{"--heatmap", &o.heatmap}, std::pair{"--histogram", &o.histogram}}) {
+    if (!path->empty() && path->extension() != ".png")
+      throw Error(fmt::format("{} {}: the picture is written as a .png file", option, path->string()));
+  }
   Loaded reference = load(o.reference, o.white);
   Loaded test = load(o.test, o.white);
   // Both linear sides must be put into CIELAB against one white: the one they agree on, the one

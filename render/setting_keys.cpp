@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/json_schema.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 
@@ -233,7 +234,7 @@ double parseNumber(std::string_view what, std::string_view text) {
   double v = 0.0;
   auto r = std::from_chars(text.data(), text.data() + text.size(), v);
   if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v)) {
-    throw Error(fmt::format("{}: expected a number, got \"{}\"", what, text));
+    throw Error(fmt::format("{}: expected a number, got \"{}\"", what, excerpt(text)));
   }
   return v;
 }
@@ -248,7 +249,12 @@ long parseInteger(std::string_view what, std::string_view text, long min, long m
 }
 
 float parseFloat(std::string_view what, std::string_view text) {
-  return static_cast<float>(parseNumber(what, text));
+  const double v = parseNumber(what, text);
+  if (!(std::abs(v) <= schema::kFloatInputLimit)) {
+    throw Error(fmt::format("{}: expected a number within ±{:g} (what floats carry through a frame), got \"{}\"", what,
+                            schema::kFloatInputLimit, excerpt(text)));
+  }
+  return static_cast<float>(v);
 }
 
 }  // namespace prism::render

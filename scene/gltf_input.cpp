@@ -51,7 +51,8 @@ std::string oneLine(std::string text) {
   while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
   for (char& c : text)
     if (c == '\n' || c == '\r') c = ';';
-  return text;
+  // tinygltf quotes what it failed on whole, e.g. a data: URI of megabytes.
+  return excerpt(text, 160);
 }
 
 // tinygltf's decoded RGBA (8 or 16 bits per channel) as Prism's 8-bit RGBA.

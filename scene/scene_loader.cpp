@@ -443,6 +443,8 @@ Scene loadScene(const fs::path& file, const std::vector<std::string>& sets) {
   schema::Document document{file.string(), {}};
   std::error_code ec;
   if (fs::is_directory(file, ec)) throw Error(document.name + ": is a folder, not a scene file");
+  if (fs::exists(file, ec) && !fs::is_regular_file(file, ec))
+    throw Error(document.name + ": not a regular file (a device, a pipe or a socket), not a scene file");
   if (!fs::is_regular_file(file, ec)) throw Error(document.name + ": scene file not found");
   std::vector<unsigned char> bytes = schema::readBinaryFile(file);
   json root = schema::parseJson(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),

@@ -67,7 +67,13 @@ Spectrum daylight(double cctK) {
   return TabulatedSpectrum(std::move(lambdas), std::move(values), Extrapolation::Zero).toDense();
 }
 
-Spectrum blackbodyIlluminant(double temperatureK) { return scaledTo100At560(blackbody(temperatureK)); }
+Spectrum blackbodyIlluminant(double temperatureK) {
+  // Below 500 K a body gives no light that 360–830 nm carries in floats once scaled at 560 nm
+  // (at 1 K its 560 nm radiance underflows to 0); above 10⁶ K its shape no longer changes.
+  if (!(temperatureK >= 500.0 && temperatureK <= 1e6))
+    throw Error("blackbody: temperature must be within 500–1000000 K, got " + excerpt(std::to_string(temperatureK)));
+  return scaledTo100At560(blackbody(temperatureK));
+}
 
 Spectrum narrowbandLed(double peakNm, double widthNm) {
   if (!(peakNm >= kLambdaMinNm && peakNm <= kLambdaMaxNm))

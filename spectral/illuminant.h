@@ -7,7 +7,7 @@
 //   led-globe-a19                  the thesis's domestic LED lamp (LSPDD)
 //   nist:<lamp>                    NIST CQS / RIT lamp set, e.g. "nist:Cool White FL"
 //   daylight:<K>                   CIE daylight D-series at a correlated colour temperature
-//   blackbody:<K>                  Planckian radiator
+//   blackbody:<K>                  Planckian radiator, 500–10⁶ K
 //   led:<peak nm>:<width nm>       parametric narrow-band LED (Ohno 2005)
 // Each SPD keeps the normalisation stated in its IlluminantInfo: Prism never renormalises a
 // published table silently; renderers scale lights by their own physical intensity.
@@ -33,7 +33,7 @@ std::vector<IlluminantInfo> listIlluminants();
 // S0, S1, S2 components; 100 at 560 nm.
 Spectrum daylight(double cctK);
 
-// Blackbody scaled to 100 at 560 nm (the CIE convention for illuminant A).
+// Blackbody scaled to 100 at 560 nm (the CIE convention for illuminant A); Error outside 500–10⁶ K.
 Spectrum blackbodyIlluminant(double temperatureK);
 
 // A single-colour LED after Ohno 2005, "Spectral design considerations for white LED color

@@ -10,6 +10,7 @@
 
 #include "shared_cpp.h"
 #include "spectral/colour_space.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
@@ -112,6 +113,7 @@ RgbToSpectrumTable cachedRgbToSpectrumTable(
     std::fprintf(stderr, "prism: cache entry %s is damaged (%s): rebuilding\n", path.string().c_str(),
                  excerpt(damage, 160).c_str());
   }
+  requireWritable(path);  // before a minute of work, not after
   RgbToSpectrumTable table = buildRgbToSpectrumTable({gamut, resolution, 0, progress});
   table.save(path);
   return table;

@@ -123,8 +123,9 @@ json parseJson(std::string_view text, const std::string& name) {
     std::size_t colon = what.find(": ", bracket == std::string::npos ? 0 : bracket);
     if (colon != std::string::npos) what = what.substr(colon + 2);
     TextPosition p = textPosition(text, e.byte == 0 ? 0 : e.byte - 1);
+    // nlohmann quotes the token it failed in ("last read: '…'") whole: a string of megabytes.
     throw Error(name + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) +
-                ": malformed JSON: " + what);
+                ": malformed JSON: " + excerpt(what, 200));
   } catch (const json::out_of_range& e) {
     // A number beyond double's range ("number overflow parsing '1e999'"): nlohmann gives no
     // position, so find the token it quotes.
@@ -140,7 +141,7 @@ json parseJson(std::string_view text, const std::string& name) {
         where += ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
       }
     }
-    throw Error(where + ": malformed JSON: " + what);
+    throw Error(where + ": malformed JSON: " + excerpt(what, 200));
   }
 }
 

@@ -200,12 +200,44 @@ TEST(DisplayTransform, ExposureMapsTheSaturationLuminanceToWhite) {
 // However overexposed, a bright neutral pixel shows white, never black: ACES's x² overflowed float to
 // ∞/∞ = NaN at EV −70, and an exposure whose product overflows is as bright as a pixel gets.
 TEST(DisplayTransform, ExtremeOverexposureShowsWhiteUnderEveryToneMap) {
-  const glm::vec3 weights(0.2126f, 0.7152f, 0.0722f);
+  DisplaySettings settings;
+  const DisplayTransform srgb = displayTransform(settings, resolveDisplay(settings, cie1931Observer()), 0.0f);
   for (int op : {shared::kToneMapNone, shared::kToneMapReinhard, shared::kToneMapAces}) {
     for (float exposure : {std::exp2(70.0f), 1e30f}) {
-      glm::vec3 rgb = shared::encodeForDisplay(glm::mat3(exposure), weights, op, 0, glm::vec3(1e10f));
+      glm::vec3 rgb = shared::encodeForDisplay(glm::mat3(exposure), srgb.displayToXyz, srgb.xyzToDisplay, op, 0,
+                                               glm::vec3(1e10f));
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(rgb[c], 1.0f, 1e-3f) << "tone map " << op << ", exposure " << exposure;
     }
+  }
+}
+
+// Issue 16: the blue LED's wall (scenes/spheres_blue_led.json) showed magenta once its blue
+// clipped under ACES while its red kept growing. Its displayed CIELAB hue — an 8-bit sRGB pixel
+// decoded again — stays within 10° of the light's own from 4 EV under to 4 EV over the exposure
+// that puts it at display white; per channel it drifted 20° (307.5° to 327.9°, the light 316.7°).
+TEST(DisplayTransform, OverexposedNarrowBandLightKeepsItsHue) {
+  const Eigen::Vector3d led = cie1931Observer().integrate(illuminant("led:450:20"));
+  const glm::vec3 xyz = glm::vec3(static_cast<float>(led.x()), static_cast<float>(led.y()),
+                                  static_cast<float>(led.z())) /
+                        static_cast<float>(led.y());
+  DisplaySettings settings;
+  const DisplayTransform srgb = displayTransform(settings, resolveDisplay(settings, cie1931Observer()), 0.0f);
+  const glm::vec3 white = srgb.displayToXyz * glm::vec3(1.0f);
+  auto hueDeg = [&](const glm::vec3& xyzValue) {
+    glm::vec3 lab = shared::xyzToLab(xyzValue, white);
+    return std::atan2(lab.z, lab.y) * 180.0f / 3.14159265f;
+  };
+  const float own = hueDeg(xyz);
+  for (int offset = -4; offset <= 4; ++offset) {
+    settings.ev100 = static_cast<float>(-offset);  // one EV less of exposure value: twice the light
+    DisplayTransform t = displayTransform(settings, resolveDisplay(settings, cie1931Observer()), 0.0f);
+    glm::vec3 scene = xyz * static_cast<float>(displayWhiteLuminance(0.0f));  // display white at offset 0
+    glm::vec3 encoded = encodeForDisplay(t, ToneMap::Aces, scene);
+    glm::vec3 shown = glm::round(encoded * 255.0f) / 255.0f;
+    float hue = hueDeg(srgb.displayToXyz * shared::srgbDecode3(shown));
+    float difference = std::abs(std::remainder(hue - own, 360.0f));
+    EXPECT_LE(difference, 10.0f) << "at " << offset << " EV: hue " << hue << "°, the light's " << own << "°, shown "
+                                 << shown.x * 255 << ", " << shown.y * 255 << ", " << shown.z * 255;
   }
 }
 

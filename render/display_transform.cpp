@@ -43,9 +43,8 @@ DisplayTransform displayTransform(const DisplaySettings& settings, const Display
   float exposure = shared::exposureScale(settings.ev100.value_or(sceneEv100));
   DisplayTransform t;
   t.toDisplay = toGlm(display.xyzToRgb * m) * exposure;
-  t.luminanceWeights = glm::vec3(static_cast<float>(display.rgbToXyz(1, 0)),
-                                 static_cast<float>(display.rgbToXyz(1, 1)),
-                                 static_cast<float>(display.rgbToXyz(1, 2)));
+  t.displayToXyz = toGlm(display.rgbToXyz);
+  t.xyzToDisplay = toGlm(display.xyzToRgb);
   t.transfer = display.transfer == Transfer::Bt2020 ? 1 : 0;
   t.toXyz = toGlm(cameraToXyz);
   return t;
@@ -55,7 +54,7 @@ double displayWhiteLuminance(float ev100) { return 1.0 / shared::exposureScale(e
 
 glm::vec3 encodeForDisplay(const DisplayTransform& transform, ToneMap toneMap,
                            const glm::vec3& tristimulus) {
-  glm::vec3 rgb = shared::encodeForDisplay(transform.toDisplay, transform.luminanceWeights,
+  glm::vec3 rgb = shared::encodeForDisplay(transform.toDisplay, transform.displayToXyz, transform.xyzToDisplay,
                                            static_cast<int>(toneMap), transform.transfer, tristimulus);
   return glm::clamp(rgb, glm::vec3(0.0f), glm::vec3(1.0f));
 }

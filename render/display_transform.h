@@ -30,7 +30,8 @@ DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tr
 
 struct DisplayTransform {
   glm::mat3 toDisplay{1.0f};        // tristimulus → linear display RGB, exposure included
-  glm::vec3 luminanceWeights{0.0f};  // the display's Y row: luminance of a linear RGB
+  glm::mat3 displayToXyz{1.0f};      // the display's primaries: linear RGB → XYZ (white Y = 1)
+  glm::mat3 xyzToDisplay{1.0f};      // and back (no exposure, no white balance)
   int transfer = 0;                  // 0 sRGB curve (sRGB, Display P3), 1 BT.2020
   glm::mat3 toXyz{1.0f};             // tristimulus → XYZ alone (the camera matrix, or identity)
 };
@@ -42,7 +43,8 @@ DisplayTransform displayTransform(const DisplaySettings& settings, const Display
 double displayWhiteLuminance(float ev100);
 
 // The post pass on the CPU for one pixel (shaders/passes/post.frag without the dither): tristimulus
-// → display RGB → gamut compression → tone map → transfer, clamped to [0, 1]. NaN or ∞ give black.
+// → display RGB → gamut compression → tone map → hue kept → transfer, clamped to [0, 1]. NaN or ∞
+// give black.
 glm::vec3 encodeForDisplay(const DisplayTransform& transform, ToneMap toneMap,
                            const glm::vec3& tristimulus);
 

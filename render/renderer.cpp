@@ -445,7 +445,8 @@ void Renderer::postPass() {
   const gpu::Program& p = mPostProgram;
   p.use();
   p.setUniform("uToDisplay", t.toDisplay);
-  p.setUniform("uLuminanceWeights", t.luminanceWeights);
+  p.setUniform("uDisplayToXyz", t.displayToXyz);
+  p.setUniform("uXyzToDisplay", t.xyzToDisplay);
   static_assert(static_cast<int>(ToneMap::None) == shared::kToneMapNone &&
                 static_cast<int>(ToneMap::Reinhard) == shared::kToneMapReinhard &&
                 static_cast<int>(ToneMap::Aces) == shared::kToneMapAces);

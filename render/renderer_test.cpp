@@ -18,9 +18,11 @@
 #include "imaging/png_file.h"
 #include "techniques/technique_pass.h"
 #include "render/cpu_shading.h"
+#include "render/display_transform.h"
 #include "scene/scene_loader.h"
 #include "core/error.h"
 #include "spectral/illuminant.h"
+#include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 
 namespace prism::render {
@@ -229,6 +231,32 @@ double relativeError(const Renderer& renderer, const std::vector<float>& truth) 
     norm += std::abs(truth[i]);
   }
   return e / norm;
+}
+
+// The post pass (post.frag) against its CPU twin (encodeForDisplay) over a whole frame of the
+// blue LED, whose over-range wall goes through keepHue's bisection: within 2 of 255 everywhere.
+TEST(Renderer, PostPassMatchesItsCpuTwin) {
+  gpu::HeadlessContext context;
+  Scene scene = loadScene(kScenes / "spheres_blue_led.json");
+  FrameSettings settings = smallFrame(RenderMode::JakobHanika);
+  settings.display.dither = false;
+  Renderer renderer(scene, table(), settings);
+  renderer.renderFrame();
+  std::vector<std::uint8_t> gpu = renderer.readDisplayRgba8();
+  std::vector<float> tristimulus = renderer.readMeanTristimulus();
+  DisplayTransform transform =
+      displayTransform(settings.display, resolveDisplay(settings.display, cie1931Observer()), scene.camera.ev100);
+  int worst = 0;
+  for (std::size_t p = 0; p * 3 < tristimulus.size(); ++p) {
+    glm::vec3 t(tristimulus[3 * p], tristimulus[3 * p + 1], tristimulus[3 * p + 2]);
+    glm::vec3 cpu = encodeForDisplay(transform, settings.display.toneMap, t);
+    for (int c = 0; c < 3; ++c) {
+      int cpuByte = static_cast<int>(std::lround(cpu[c] * 255.0f));
+      worst = std::max(worst, std::abs(cpuByte - static_cast<int>(gpu[4 * p + static_cast<std::size_t>(c)])));
+    }
+  }
+  std::printf("post pass vs CPU twin: at most %d of 255 apart\n", worst);
+  EXPECT_LE(worst, 2);
 }
 
 TEST(Renderer, StratifiedAccumulationConvergesToTheReference) {

@@ -16,6 +16,7 @@ namespace prism::shared {
 #include "lights.glsl"
 #include "shadow_filter.glsl"
 #include "transfer.glsl"
+#include "cielab.glsl"
 #include "post.glsl"
 #include "surface_inputs.glsl"
 

@@ -1,15 +1,18 @@
 #version 450
 // Post pass: the accumulated tristimulus (mean of the frames so far) → exposure → display RGB
 // (white balance and, for a camera observer, the camera matrix folded into one 3×3) → gamut
-// compression → tone map → the display's transfer function → dither → 8-bit target.
+// compression → tone map → the light's hue kept → the display's transfer function → dither →
+// 8-bit target.
 #include "shared/prelude.glsl"
 #include "shared/transfer.glsl"
+#include "shared/cielab.glsl"
 #include "shared/random.glsl"
 #include "shared/post.glsl"
 
 layout(binding = 0) uniform sampler2D uAccumulation;
 uniform mat3 uToDisplay;          // tristimulus → linear display RGB, exposure included
-uniform vec3 uLuminanceWeights;   // the display's Y row
+uniform mat3 uDisplayToXyz;       // the display's primaries: linear RGB → XYZ (white Y = 1)
+uniform mat3 uXyzToDisplay;       // and back
 uniform int uToneMap;
 uniform int uTransfer;            // 0 sRGB curve (sRGB, Display P3), 1 BT.2020
 uniform int uDither;
@@ -21,7 +24,7 @@ void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   vec4 acc = texelFetch(uAccumulation, p, 0);
   vec3 tristimulus = acc.a > 0.0 ? acc.rgb / acc.a : vec3(0.0);
-  vec3 rgb = encodeForDisplay(uToDisplay, uLuminanceWeights, uToneMap, uTransfer, tristimulus);
+  vec3 rgb = encodeForDisplay(uToDisplay, uDisplayToXyz, uXyzToDisplay, uToneMap, uTransfer, tristimulus);
   if (uDither != 0) {
     uint seed = pcgHash(uint(p.x) + 65536u * uint(p.y)) ^ uSeed;
     rgb += vec3(ditherOffset(randomFloat(seed, 0u), randomFloat(seed, 1u)),

@@ -1,7 +1,7 @@
 // Display transform of the post pass, after exposure and the XYZ → display-RGB matrix (which
-// includes white balance): out-of-gamut compression, then a tone map. The encode to the
-// display's transfer function is transfer.glsl's.
-// Requires: transfer.glsl
+// includes white balance): out-of-gamut compression, a tone map, then the colour's own hue given
+// back. The encode to the display's transfer function is transfer.glsl's.
+// Requires: transfer.glsl cielab.glsl
 
 const int kToneMapNone = 0;      // clip to [0, 1]
 const int kToneMapReinhard = 1;  // x / (1 + x) on luminance, hue and saturation kept
@@ -46,19 +46,62 @@ PRISM_INLINE vec3 toneMap(int op, IN(vec3) rgb, IN(vec3) luminanceWeights) {
   return clamp(rgb, vec3(0.0f), vec3(1.0f));
 }
 
+PRISM_INLINE bool insideDisplay(IN(vec3) rgb) {
+  const float slack = 1e-4f;
+  return min(rgb.x, min(rgb.y, rgb.z)) >= -slack && max(rgb.x, max(rgb.y, rgb.z)) <= 1.0f + slack;
+}
+
+// A tone map per channel (ACES), or a clip, turns the hue of a colour whose channels reach the
+// display's top at different exposures: a 450 nm light's blue stops at 1 while its red keeps
+// growing, and the light shows magenta. Rule: keep the mapped colour's CIELAB lightness and
+// chroma, give it the hue angle of `light` (the exposed colour before gamut compression and tone
+// map: the hue the spectrum has), and lower the chroma at that lightness and hue until the colour
+// fits the display (bisection, 14 steps; grey always fits). So an over-exposed colour goes towards
+// the display white along its own CIELAB hue. CIELAB is taken relative to the display white
+// (displayToXyz · (1, 1, 1)); a colour without chroma is returned as mapped.
+PRISM_INLINE vec3 keepHue(IN(vec3) mapped, IN(vec3) light, IN(mat3) displayToXyz, IN(mat3) xyzToDisplay) {
+  vec3 white = displayToXyz * vec3(1.0f);
+  vec3 lightLab = xyzToLab(displayToXyz * light, white);
+  vec3 lab = xyzToLab(displayToXyz * mapped, white);
+  float lightChroma = length(vec2(lightLab.y, lightLab.z));
+  float chroma = length(vec2(lab.y, lab.z));
+  if (!(lightChroma > 1e-3f) || !(chroma > 1e-3f)) return mapped;
+  vec2 hue = vec2(lightLab.y, lightLab.z) / lightChroma;
+  vec3 best = xyzToDisplay * labToXyz(vec3(lab.x, 0.0f, 0.0f), white);
+  float lo = 0.0f;
+  float hi = chroma;
+  for (int i = 0; i < 15; ++i) {
+    float c = i == 0 ? hi : 0.5f * (lo + hi);
+    vec3 rgb = xyzToDisplay * labToXyz(vec3(lab.x, c * hue.x, c * hue.y), white);
+    if (insideDisplay(rgb)) {
+      best = rgb;
+      lo = c;
+      if (i == 0) break;
+    } else {
+      hi = c;
+    }
+  }
+  return clamp(best, vec3(0.0f), vec3(1.0f));
+}
+
 // Tristimulus → display, all of the post pass but the dither and the final clamp (the pass dithers
 // before it clamps): display RGB (exposure folded into toDisplay), gamut compression, tone map,
-// transfer (0 sRGB curve, 1 BT.2020). NaN or ∞ in, which nothing upstream should make, show black
-// rather than whatever a driver's clamp makes of them; a finite colour whose exposure overflows
-// float shows white, as the brightest colour does.
-PRISM_INLINE vec3 encodeForDisplay(IN(mat3) toDisplay, IN(vec3) luminanceWeights, int toneMapOp,
-                                   int transfer, IN(vec3) tristimulus) {
+// the light's hue kept (keepHue), transfer (0 sRGB curve, 1 BT.2020). displayToXyz and
+// xyzToDisplay are the display's primaries alone (no exposure); its second row weighs luminance.
+// NaN or ∞ in, which nothing upstream should make, show black rather than whatever a driver's
+// clamp makes of them; a finite colour whose exposure overflows float shows white, as the
+// brightest colour does.
+PRISM_INLINE vec3 encodeForDisplay(IN(mat3) toDisplay, IN(mat3) displayToXyz, IN(mat3) xyzToDisplay,
+                                   int toneMapOp, int transfer, IN(vec3) tristimulus) {
+  vec3 luminanceWeights = vec3(displayToXyz[0][1], displayToXyz[1][1], displayToXyz[2][1]);
   vec3 t = tristimulus;
   if (any(isnan(t)) || any(isinf(t))) t = vec3(0.0f);
   vec3 exposed = toDisplay * t;
-  if (any(isnan(exposed)) || any(isinf(exposed))) exposed = vec3(1e30f);
+  bool overflow = any(isnan(exposed)) || any(isinf(exposed));
+  if (overflow) exposed = vec3(1e30f);
   vec3 rgb = compressToGamut(exposed, luminanceWeights);
   rgb = toneMap(toneMapOp, rgb, luminanceWeights);
+  if (!overflow) rgb = keepHue(rgb, exposed, displayToXyz, xyzToDisplay);
   return transfer == 1 ? bt2020Encode3(rgb) : srgbEncode3(rgb);
 }
 

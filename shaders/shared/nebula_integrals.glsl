@@ -39,16 +39,22 @@ PRISM_INLINE NEBULA_REAL nebulaE1(NEBULA_REAL u) {
   return exp(-u) / (u + 1.0f - f);
 }
 
-// x·E₁(x/λ), x ≥ 0, λ > 0: 0 at x = 0 (its limit).
+// e^(−x/λ), x ≥ 0, λ ≥ 0: 1 at x = 0 even where λ = 0 (the paper's domain starts there), where
+// x/λ would be 0/0.
+PRISM_INLINE NEBULA_REAL nebulaAttenuation(NEBULA_REAL x, NEBULA_REAL lambdaUm) {
+  return x > 0.0f ? exp(-x / lambdaUm) : NEBULA_REAL(1.0f);
+}
+
+// x·E₁(x/λ), x ≥ 0, λ ≥ 0: 0 at x = 0 (its limit) and at λ = 0.
 PRISM_INLINE NEBULA_REAL nebulaXE1(NEBULA_REAL x, NEBULA_REAL lambdaUm) {
-  return x > 0.0f ? x * nebulaE1(x / lambdaUm) : NEBULA_REAL(0.0f);
+  return x > 0.0f && lambdaUm > 0.0f ? x * nebulaE1(x / lambdaUm) : NEBULA_REAL(0.0f);
 }
 
 // I₀…I₇ at λ (µm) for optical depth x (µm): antiderivatives of λⁿ·e^(−x/λ), n = 0…3 in lo and
 // 4…7 in hi.
 PRISM_INLINE void nebulaPowerExpAntiderivatives(NEBULA_REAL x, NEBULA_REAL lambdaUm, OUT(NEBULA_VEC4) lo,
                                                 OUT(NEBULA_VEC4) hi) {
-  NEBULA_REAL beta = lambdaUm * exp(-x / lambdaUm);
+  NEBULA_REAL beta = lambdaUm * nebulaAttenuation(x, lambdaUm);
   NEBULA_REAL gamma = -nebulaXE1(x, lambdaUm);
   lo[0] = beta + gamma;
   for (int n = 1; n < 8; ++n) {
@@ -90,8 +96,8 @@ PRISM_INLINE NEBULA_REAL nebulaPolyExpIntegral(IN(NEBULA_VEC4) cLo, IN(NEBULA_VE
 // ∫_λ₀^λ₁ e^(−x/λ) dλ = I₀(λ₁) − I₀(λ₀): the inner product of two exponentials e^(−a/λ) and
 // e^(−b/λ) with x = a + b, which is all the projection on an exp(−a/λ) basis needs.
 PRISM_INLINE NEBULA_REAL nebulaExpIntegral(NEBULA_REAL x, NEBULA_REAL lambda0Um, NEBULA_REAL lambda1Um) {
-  NEBULA_REAL i1 = lambda1Um * exp(-x / lambda1Um) - nebulaXE1(x, lambda1Um);
-  NEBULA_REAL i0 = lambda0Um * exp(-x / lambda0Um) - nebulaXE1(x, lambda0Um);
+  NEBULA_REAL i1 = lambda1Um * nebulaAttenuation(x, lambda1Um) - nebulaXE1(x, lambda1Um);
+  NEBULA_REAL i0 = lambda0Um * nebulaAttenuation(x, lambda0Um) - nebulaXE1(x, lambda0Um);
   return i1 - i0;
 }
 

@@ -13,7 +13,8 @@
 namespace prism::nebula {
 
 GreedyResult greedyBasis(const Eigen::MatrixXd& family, const Eigen::MatrixXd& candidates,
-                         const Eigen::VectorXd& weights, int count, const std::vector<int>& initial, int minSeparation) {
+                         const Eigen::VectorXd& weights, int count, const std::vector<int>& initial,
+                         const std::vector<double>& keys, double minKeySeparation, double minNewDirection) {
   Eigen::VectorXd sw = weights.cwiseSqrt();
   Eigen::MatrixXd F = sw.asDiagonal() * family, C = sw.asDiagonal() * candidates;
   Eigen::VectorXd norms = F.colwise().norm().transpose();
@@ -36,11 +37,14 @@ GreedyResult greedyBasis(const Eigen::MatrixXd& family, const Eigen::MatrixXd& c
     double bestError = std::numeric_limits<double>::infinity();
     for (int c = 0; c < C.cols(); ++c) {
       bool near = false;
-      for (int k : result.chosen) near = near || std::abs(c - k) < minSeparation;
+      if (!keys.empty())
+        for (int k : result.chosen)
+          near = near || std::abs(keys[static_cast<std::size_t>(c)] - keys[static_cast<std::size_t>(k)]) <
+                             minKeySeparation - 1e-12;
       if (near) continue;
       Eigen::VectorXd u = C.col(c) - basis * (basis.transpose() * C.col(c));
       double n = u.norm();
-      if (n < 1e-10 * C.col(c).norm()) continue;
+      if (n < minNewDirection * C.col(c).norm()) continue;
       u /= n;
       Eigen::RowVectorXd proj = u.transpose() * residual;
       Eigen::ArrayXd err2 = residual.colwise().squaredNorm().array() - proj.array().square().transpose();
@@ -59,7 +63,6 @@ double ExpBasis::at(int k, double lambdaUm) const {
   return v;
 }
 
-namespace {
 Eigen::MatrixXd orthonormaliser(const std::vector<double>& a, double l0, double l1) {
   auto n = static_cast<Eigen::Index>(a.size());
   // By 256-node Gauss–Legendre rather than nebulaExpIntegral: the Gram matrix of near-collinear
@@ -77,7 +80,6 @@ Eigen::MatrixXd orthonormaliser(const std::vector<double>& a, double l0, double 
   Eigen::MatrixXd l = llt.matrixL();
   return l.triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(n, n));
 }
-}  // namespace
 
 ExpBasis findExpBasis(double lambda0Um, double lambda1Um, double gMaxUm, double aMaxUm, int count,
                       double minSpacingUm) {
@@ -88,13 +90,15 @@ ExpBasis findExpBasis(double lambda0Um, double lambda1Um, double gMaxUm, double 
   auto q = static_cast<Eigen::Index>(nodes.size());
   const int familySize = 64, candidateCount = 401;
   Eigen::MatrixXd family(q, familySize), candidates(q, candidateCount);
+  std::vector<double> keys;
+  for (int c = 0; c < candidateCount; ++c) keys.push_back(aMaxUm * c / (candidateCount - 1));
   for (Eigen::Index i = 0; i < q; ++i) {
     double l = nodes[static_cast<std::size_t>(i)];
     for (int f = 0; f < familySize; ++f) family(i, f) = std::exp(-gMaxUm * f / (familySize - 1) / l);
     for (int c = 0; c < candidateCount; ++c) candidates(i, c) = std::exp(-aMaxUm * c / (candidateCount - 1) / l);
   }
-  GreedyResult g = greedyBasis(family, candidates, Eigen::Map<Eigen::VectorXd>(weights.data(), q), count, {0},
-                                static_cast<int>(std::lround(minSpacingUm / aMaxUm * (candidateCount - 1))));
+  GreedyResult g = greedyBasis(family, candidates, Eigen::Map<Eigen::VectorXd>(weights.data(), q), count, {0}, keys,
+                                minSpacingUm);
   ExpBasis basis;
   basis.lambda0Um = lambda0Um;
   basis.lambda1Um = lambda1Um;

@@ -16,9 +16,13 @@ struct GreedyResult {
   std::vector<int> chosen;         // candidate indices, in the order added
   std::vector<double> maxError;    // the worst relative projection error after each addition
 };
+// A candidate whose key (its exponent a) is within minKeySeparation of a chosen one's is skipped,
+// and so is one whose part orthogonal to the basis is below minNewDirection of its norm (which
+// bounds the Gram matrix's conditioning); the result may then hold fewer than `count` elements.
 GreedyResult greedyBasis(const Eigen::MatrixXd& family, const Eigen::MatrixXd& candidates,
                          const Eigen::VectorXd& weights, int count, const std::vector<int>& initial,
-                         int minSeparation = 0);
+                         const std::vector<double>& keys = {}, double minKeySeparation = 0.0,
+                         double minNewDirection = 1e-10);
 
 // The 1D basis {e^(−aⱼ/λ)} on [λ₀, λ₁] (µm): its exponents and the matrix M whose row k gives the
 // k-th orthonormal function as Σⱼ M(k,j)·e^(−aⱼ/λ) (the inverse Cholesky factor of the exact Gram
@@ -38,6 +42,8 @@ struct ExpBasis {
 // larger error per element (README, "Spectral nebulae", gives both tables).
 ExpBasis findExpBasis(double lambda0Um, double lambda1Um, double gMaxUm, double aMaxUm, int count,
                       double minSpacingUm = 0.0);
+// M for exponents a on [l0, l1] (Error when their Gram matrix is singular in double).
+Eigen::MatrixXd orthonormaliser(const std::vector<double>& a, double l0, double l1);
 // The same elements, re-orthonormalised on another interval (the first `count` of them).
 ExpBasis restrictExpBasis(const ExpBasis& basis, int count);
 

@@ -82,7 +82,7 @@ Eigen::MatrixXd orthonormaliser(const std::vector<double>& a, double l0, double 
 }
 
 ExpBasis findExpBasis(double lambda0Um, double lambda1Um, double gMaxUm, double aMaxUm, int count,
-                      double minSpacingUm) {
+                      double minSpacingUm, bool orthonormalise) {
   std::vector<double> nodes, weights;
   // 256 Gauss–Legendre nodes: e^(−a/λ) is smooth on the interval, to λ → 0 where it vanishes
   // with all its derivatives.
@@ -104,7 +104,7 @@ ExpBasis findExpBasis(double lambda0Um, double lambda1Um, double gMaxUm, double 
   basis.lambda1Um = lambda1Um;
   for (int c : g.chosen) basis.a.push_back(aMaxUm * c / (candidateCount - 1));
   basis.maxError = g.maxError;
-  basis.m = orthonormaliser(basis.a, lambda0Um, lambda1Um);
+  if (orthonormalise) basis.m = orthonormaliser(basis.a, lambda0Um, lambda1Um);
   return basis;
 }
 

@@ -40,8 +40,10 @@ struct ExpBasis {
 // reduces the error most): the elements approach 1, 1/λ, 1/λ², … and the matrix M grows beyond
 // float's reach. A minimum spacing between exponents keeps M usable on the GPU at the price of a
 // larger error per element (README, "Spectral nebulae", gives both tables).
+// With orthonormalise = false, M is left empty (the table alone: the free greedy's M is singular
+// in double beyond about 4 elements).
 ExpBasis findExpBasis(double lambda0Um, double lambda1Um, double gMaxUm, double aMaxUm, int count,
-                      double minSpacingUm = 0.0);
+                      double minSpacingUm = 0.0, bool orthonormalise = true);
 // M for exponents a on [l0, l1] (Error when their Gram matrix is singular in double).
 Eigen::MatrixXd orthonormaliser(const std::vector<double>& a, double l0, double l1);
 // The same elements, re-orthonormalised on another interval (the first `count` of them).

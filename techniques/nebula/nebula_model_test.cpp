@@ -116,13 +116,7 @@ TEST(NebulaDensity, BadFilesAreRefusedInOneLine) {
 // here takes exponents next to each other instead (see nebula_basis.h); printed for the README.
 TEST(NebulaBasis, GreedyOnThePapersDomain) {
   for (double spacing : {0.0, 0.1}) {
-    ExpBasis b;
-    try {
-      b = findExpBasis(0.0, 1.0, 1.0, 1.0, 6, spacing);
-    } catch (const Error& e) {
-      std::printf("spacing %.2f: %s\n", spacing, e.what());
-      continue;
-    }
+    ExpBasis b = findExpBasis(0.0, 1.0, 1.0, 1.0, 6, spacing, /*orthonormalise=*/false);
     for (std::size_t k = 0; k < b.a.size(); ++k)
       std::printf("paper domain, spacing %.2f, element %zu: a = %.4f um, max relative error %.3e\n", spacing, k + 1,
                   b.a[k], b.maxError[k]);

@@ -85,6 +85,28 @@ bool clipToCube(const glm::dvec3& p, const glm::dvec3& d, double& t0, double& t1
 
 }  // namespace
 
+// mⱼ(x) for the basis's exponents, tabulated over x ∈ [0, kMomentTableMaxUm].
+constexpr int kMomentTableSize = 4096;
+constexpr double kMomentTableMaxUm = 16.0;
+struct MomentTable {
+  std::vector<glm::vec4> lo, hi;  // kMomentTableSize + 3 entries: one before 0, two after the end
+  double step = kMomentTableMaxUm / (kMomentTableSize - 1);
+  // Catmull–Rom between entries; false beyond the table.
+  bool lookup(double x, glm::vec4& mLo, glm::vec4& mHi, bool withHi) const {
+    double u = x / step;
+    if (!(u < kMomentTableSize - 1)) return false;
+    int i = static_cast<int>(u);
+    auto t = static_cast<float>(u - i);
+    float t2 = t * t, t3 = t2 * t;
+    float w0 = 0.5f * (-t3 + 2.0f * t2 - t), w1 = 0.5f * (3.0f * t3 - 5.0f * t2 + 2.0f);
+    float w2 = 0.5f * (-3.0f * t3 + 4.0f * t2 + t), w3 = 0.5f * (t3 - t2);
+    auto at = static_cast<std::size_t>(i);  // entry i + 1 holds x = i·step
+    mLo = w0 * lo[at] + w1 * lo[at + 1] + w2 * lo[at + 2] + w3 * lo[at + 3];
+    if (withHi) mHi = w0 * hi[at] + w1 * hi[at + 1] + w2 * hi[at + 2] + w3 * hi[at + 3];
+    return true;
+  }
+};
+
 struct NebulaPrecomputed {
   NebulaModel model;
   FilterSet filters;
@@ -107,6 +129,7 @@ struct NebulaPrecomputed {
   // Projection: the 1D basis and, per star and channel, W'ⱼ = Σₖ (∫ P_S S_s bₖ dλ)·M(k,j).
   ExpBasis basis;
   glm::vec4 basisLo{0.0f}, basisHi{0.0f};  // exponents a₀…a₇ (unused ones are never read)
+  MomentTable moments;
   std::vector<std::array<std::array<double, 8>, 3>> projectionWeights;
   // Light–density: the 2D basis, its per-voxel coefficients, and U(c, k, j) = Σₘ (∫ P_S fₖ bₘ)·M(m,j).
   GreedyResult lightGreedy;
@@ -212,6 +235,11 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
   pre.basis = findExpBasis(kBandLoUm, kBandHiUm, s.basisMaxDepthUm, 2.0, s.basisSize, s.basisSpacingUm);
   auto card = static_cast<int>(pre.basis.a.size());
   for (int j = 0; j < card; ++j) (j < 4 ? pre.basisLo[j] : pre.basisHi[j - 4]) = static_cast<float>(pre.basis.a[static_cast<std::size_t>(j)]);
+  for (int e = -1; e <= kMomentTableSize + 1; ++e) {
+    double x = std::abs(e * pre.moments.step);  // the entry before 0 mirrors (mⱼ is smooth there)
+    pre.moments.lo.push_back(glm::vec4(shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm)));
+    pre.moments.hi.push_back(glm::vec4(shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm)));
+  }
   for (std::size_t st = 0; st < pre.spectra.size(); ++st) {
     std::array<std::array<double, 8>, 3> w{};
     for (std::size_t c = 0; c < 3; ++c)
@@ -406,9 +434,13 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
             if (pre.lightCount == 0) continue;
             pre.lightCoefficients.sample(p, lightD.data());
             glm::dvec4 mLo, mHi(0.0);
+            glm::vec4 tLo, tHi;
             if (s.doublePrecision) {
               mLo = shared::f64::nebulaExpMoments(g, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm);
               if (card > 4) mHi = shared::f64::nebulaExpMoments(g, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm);
+            } else if (s.momentTable && pre.moments.lookup(g, tLo, tHi, card > 4)) {
+              mLo = tLo;
+              if (card > 4) mHi = tHi;
             } else {
               mLo = shared::nebulaExpMoments(static_cast<float>(g), pre.basisLo, l0, l1);
               if (card > 4) mHi = shared::nebulaExpMoments(static_cast<float>(g), pre.basisHi, l0, l1);
@@ -449,9 +481,13 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
                 break;
               case Method::Projection: {
                 glm::dvec4 mLo, mHi(0.0);
+                glm::vec4 tLo, tHi;
                 if (s.doublePrecision) {
                   mLo = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm);
                   if (card > 4) mHi = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm);
+                } else if (s.momentTable && pre.moments.lookup(x, tLo, tHi, card > 4)) {
+                  mLo = tLo;
+                  if (card > 4) mHi = tHi;
                 } else {
                   mLo = shared::nebulaExpMoments(static_cast<float>(x), pre.basisLo, l0, l1);
                   if (card > 4) mHi = shared::nebulaExpMoments(static_cast<float>(x), pre.basisHi, l0, l1);

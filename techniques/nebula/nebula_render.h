@@ -77,6 +77,11 @@ struct RenderSettings {
   // The shared formulas in double (their f64 instantiation) instead of float, the GPU's
   // precision; the ray's accumulators are double either way.
   bool doublePrecision = false;
+  // Projection and light–density: read the raw moments mⱼ(x) = ∫ e^(−(x+aⱼ)/λ) dλ from a table
+  // over x (4096 entries on [0, 16] µm, Catmull–Rom, float: what a GPU keeps in a 1D texture),
+  // built per frame from the same shared closed form in double, instead of evaluating E₁ per
+  // sample; beyond the table, the closed form.
+  bool momentTable = true;
   unsigned threads = 0;
 };
 

@@ -321,6 +321,7 @@ int main(int argc, char** argv) {
   nebRenderCmd->add_option("-o,--output", nebRender.output, "OUT.exr or OUT.png")->required();
   nebRenderCmd->add_option("--method", nebRender.method, "reference, analytic, projection or light-density")->capture_default_str();
   nebRenderCmd->add_option("--steps", nebRender.steps, "ray steps (default: the scene's)");
+  nebRenderCmd->add_option("--filters", nebRender.filters, "hubble or cie1931 (default: the scene's)");
   nebRenderCmd->add_option("--basis", nebRender.basisSize, "elements of the exp(-a/λ) basis (1..8)")->capture_default_str();
   nebRenderCmd->add_option("--light-basis", nebRender.lightBasisSize, "elements of the 2D light basis")->capture_default_str();
   nebRenderCmd->add_option("--reference-intervals", nebRender.referenceIntervals, "reference: Simpson intervals per filter piece")->capture_default_str();

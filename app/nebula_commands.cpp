@@ -93,6 +93,11 @@ void runNebulaRender(const NebulaRenderOptions& o) {
     throw Error(fmt::format("{}: the output must be .exr or .png", o.output.string()));
   nebula::Method method = nebula::methodFromName(o.method);
   nebula::NebulaScene scene = nebula::loadNebulaScene(o.scene, o.threads);
+  if (!o.filters.empty()) {
+    if (o.filters != "hubble" && o.filters != "cie1931")
+      throw Error(fmt::format("--filters: '{}' is not hubble or cie1931", excerpt(o.filters)));
+    scene.model.filters = o.filters;
+  }
   nebula::RenderSettings s;
   s.method = method;
   s.steps = o.steps > 0 ? o.steps : scene.steps;

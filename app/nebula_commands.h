@@ -23,6 +23,7 @@ struct NebulaRenderOptions {
   std::filesystem::path scene;
   std::filesystem::path output;  // .exr or .png
   std::string method = "projection";
+  std::string filters;           // empty: the scene's ("hubble" or "cie1931")
   int steps = 0;                 // 0: the scene's
   int basisSize = 4;
   int lightBasisSize = 8;

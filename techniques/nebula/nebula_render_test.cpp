@@ -110,3 +110,38 @@ TEST(NebulaRender, DistantStars) {
 }
 }  // namespace
 }  // namespace prism::nebula
+
+namespace prism::nebula {
+namespace {
+
+// The projection's error against the basis size (the paper's plot, as a table): it must fall with
+// every element up to the 4 the renderer uses, in double (float's rounding sets a floor below).
+TEST(NebulaRender, ProjectionErrorFallsWithTheBasisSize) {
+  RenderSettings s;
+  s.emissionLines = false;
+  s.doublePrecision = true;
+  NebulaModel model = smallNebula("cie1931", 1);
+  double previous = 1e30;
+  NebulaImage reference;
+  for (int size = 1; size <= 5; ++size) {
+    s.basisSize = size;
+    NebulaRenderer r(model, s);
+    if (size == 1) {
+      s.method = Method::Reference;
+      reference = r.render(s);
+    }
+    s.method = Method::Projection;
+    double d = maxRelativeError(r.render(s), reference);
+    s.doublePrecision = false;
+    double f = maxRelativeError(r.render(s), reference);
+    s.doublePrecision = true;
+    std::printf("basis size %d: max relative error per pixel, double %.3g, float %.3g\n", size, d, f);
+    if (size <= 4) {
+      EXPECT_LT(d, previous);
+    }
+    previous = d;
+  }
+}
+
+}  // namespace
+}  // namespace prism::nebula

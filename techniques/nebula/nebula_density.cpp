@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -115,7 +114,11 @@ DensityGrid readDensityFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::string file = path.string();
   if (!in) throw Error(FileLocation{file}, "cannot open the density file");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The header first (two short lines), so that a file too long for its sizes is refused
+  // before it is read whole.
+  std::string bytes(64, '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
   std::size_t eol1 = bytes.find('\n');
   if (eol1 == std::string::npos || bytes.compare(0, eol1, "prism-density 1") != 0)
     throw Error(FileLocation{file, 1}, "not a Prism density file (expected the line 'prism-density 1')");
@@ -128,12 +131,19 @@ DensityGrid readDensityFile(const std::filesystem::path& path) {
       nz > 1024)
     throw Error(FileLocation{file, 2}, "the size line must be three integers 1…1024, 'NX NY NZ'");
   std::size_t count = static_cast<std::size_t>(nx * ny * nz), offset = eol2 + 1;
-  std::size_t expected = count * sizeof(float), found = bytes.size() - offset;
+  std::size_t expected = count * sizeof(float);
+  std::error_code ec;
+  auto fileSize = static_cast<std::size_t>(std::filesystem::file_size(path, ec));
+  if (ec) throw Error(FileLocation{file}, "cannot read the density file's size");
+  std::size_t found = fileSize - offset;
   if (found != expected)
     throw Error(FileLocation{file}, fmt::format("byte {}: expected {} bytes of float32 data ({}×{}×{}), found {}",
                                                 offset, expected, nx, ny, nz, found));
   DensityGrid grid{static_cast<int>(nx), static_cast<int>(ny), static_cast<int>(nz), std::vector<float>(count)};
-  std::memcpy(grid.values.data(), bytes.data() + offset, expected);
+  in.clear();
+  in.seekg(static_cast<std::streamoff>(offset));
+  in.read(reinterpret_cast<char*>(grid.values.data()), static_cast<std::streamsize>(expected));
+  if (in.gcount() != static_cast<std::streamsize>(expected)) throw Error(FileLocation{file}, "the density file changed while read");
   for (std::size_t v = 0; v < count; ++v)
     if (!std::isfinite(grid.values[v]) || grid.values[v] < 0.0f)
       throw Error(FileLocation{file},

@@ -66,10 +66,11 @@ struct VoxelField {
   }
 };
 
-// The segment of p + t·d inside the unit cube, t ∈ [t0, t1]; false when it misses.
-bool clipToCube(const glm::dvec3& p, const glm::dvec3& d, double& t0, double& t1) {
+// The part of the segment p + t·d, t ∈ [0, tMax], inside the unit cube, as [t0, t1]; false when
+// it misses.
+bool clipToCube(const glm::dvec3& p, const glm::dvec3& d, double tMax, double& t0, double& t1) {
   t0 = 0.0;
-  t1 = t1 <= 0.0 ? 1e30 : t1;
+  t1 = tMax;
   for (int i = 0; i < 3; ++i) {
     if (std::abs(d[i]) < 1e-15) {
       if (p[i] < 0.0 || p[i] > 1.0) return false;
@@ -162,8 +163,8 @@ VoxelField opticalDepthToStar(const DensityGrid& density, const NebulaStar& star
       for (int i = 0; i < density.nx; ++i) {
         glm::dvec3 p((i + 0.5) / density.nx, (j + 0.5) / density.ny, (static_cast<double>(k) + 0.5) / density.nz);
         glm::dvec3 d = star.position - p;
-        double length = glm::length(d), t0 = 0.0, t1 = 1.0, column = 0.0;
-        if (length > 0.0 && clipToCube(p, d, t0, t1)) {
+        double length = glm::length(d), t0 = 0.0, t1 = 0.0, column = 0.0;
+        if (length > 0.0 && clipToCube(p, d, 1.0, t0, t1)) {  // up to the star
           double segment = (t1 - t0) * length;
           int n = std::max(1, static_cast<int>(std::ceil(segment / step)));
           double dt = (t1 - t0) / n;
@@ -417,7 +418,7 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
       glm::dvec3 colour(0.0);
       std::fill(moments.begin(), moments.end(), 0.0f);
       std::fill(lightAcc.begin(), lightAcc.end(), 0.0f);
-      if (clipToCube(cam.position, dir, t0, t1)) {
+      if (clipToCube(cam.position, dir, 1e30, t0, t1)) {
         double dt = (t1 - t0) / s.steps, gCam = 0.0;
         for (int i = 0; i < s.steps; ++i) {
           glm::dvec3 p = cam.position + dir * (t0 + (i + 0.5) * dt);

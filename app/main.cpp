@@ -319,7 +319,7 @@ int main(int argc, char** argv) {
   auto* nebRenderCmd = nebulaCmd->add_subcommand("render", "march a nebula scene on the CPU to an EXR (linear) or PNG");
   nebRenderCmd->add_option("scene", nebRender.scene, "nebula scene file (JSON with a 'nebula' section)")->required();
   nebRenderCmd->add_option("-o,--output", nebRender.output, "OUT.exr or OUT.png")->required();
-  nebRenderCmd->add_option("--method", nebRender.method, "reference, analytic, projection or light-density")->capture_default_str();
+  nebRenderCmd->add_option("--method", nebRender.method, "reference, analytic, projection, light-density or pre-integration")->capture_default_str();
   nebRenderCmd->add_option("--steps", nebRender.steps, "ray steps (default: the scene's)");
   nebRenderCmd->add_option("--filters", nebRender.filters, "hubble or cie1931 (default: the scene's)");
   nebRenderCmd->add_option("--basis", nebRender.basisSize, "elements of the exp(-a/λ) basis (1..8)")->capture_default_str();

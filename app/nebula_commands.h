@@ -1,6 +1,6 @@
 // `prism nebula`: spectral nebulae after Barrès 2023 (techniques/nebula/) on the CPU —
 // `basis` prints the greedy exp(−a/λ) basis and its error after each element; `render` marches a
-// nebula scene with one of the four methods to an EXR (linear channels) or a PNG; `density`
+// nebula scene with one of the five methods to an EXR (linear channels) or a PNG; `density`
 // writes a scene's density grid as a prism-density file.
 #pragma once
 

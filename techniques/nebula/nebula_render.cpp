@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <numbers>
 
 #include <Eigen/Dense>
@@ -21,14 +22,15 @@ const char* methodName(Method m) {
     case Method::Analytic: return "analytic";
     case Method::Projection: return "projection";
     case Method::LightDensity: return "light-density";
+    case Method::PreIntegration: return "pre-integration";
   }
   return "?";
 }
 
 Method methodFromName(std::string_view name) {
-  for (Method m : {Method::Reference, Method::Analytic, Method::Projection, Method::LightDensity})
+  for (Method m : {Method::Reference, Method::Analytic, Method::Projection, Method::LightDensity, Method::PreIntegration})
     if (name == methodName(m)) return m;
-  throw Error(fmt::format("unknown nebula method '{}' (reference, analytic, projection, light-density)", excerpt(name)));
+  throw Error(fmt::format("unknown nebula method '{}' (reference, analytic, projection, light-density, pre-integration)", excerpt(name)));
 }
 
 namespace {
@@ -90,12 +92,13 @@ bool clipToCube(const glm::dvec3& p, const glm::dvec3& d, double tMax, double& t
 constexpr int kMomentTableSize = 4096;
 constexpr double kMomentTableMaxUm = 16.0;
 struct MomentTable {
-  std::vector<glm::vec4> lo, hi;  // kMomentTableSize + 3 entries: one before 0, two after the end
+  std::vector<glm::vec4> lo, hi;  // size + 3 entries: one before 0, two after the end
+  int size = kMomentTableSize;
   double step = kMomentTableMaxUm / (kMomentTableSize - 1);
   // Catmull–Rom between entries; false beyond the table.
   bool lookup(double x, glm::vec4& mLo, glm::vec4& mHi, bool withHi) const {
     double u = x / step;
-    if (!(u < kMomentTableSize - 1)) return false;
+    if (!(u < size - 1)) return false;
     int i = static_cast<int>(u);
     auto t = static_cast<float>(u - i);
     float t2 = t * t, t3 = t2 * t;
@@ -131,6 +134,10 @@ struct NebulaPrecomputed {
   ExpBasis basis;
   glm::vec4 basisLo{0.0f}, basisHi{0.0f};  // exponents a₀…a₇ (unused ones are never read)
   MomentTable moments;
+  // Pre-integration: per star, the three channels' ∫ P_S S_s e^(−x/λ) dλ over x (in lo.xyz),
+  // 4096 entries; built at its first render.
+  std::once_flag preIntegratedOnce;
+  std::vector<MomentTable> preIntegrated;
   std::vector<std::array<std::array<double, 8>, 3>> projectionWeights;
   // Light–density: the 2D basis, its per-voxel coefficients, and U(c, k, j) = Σₘ (∫ P_S fₖ bₘ)·M(m,j).
   GreedyResult lightGreedy;
@@ -144,11 +151,18 @@ namespace {
 // ∫ f over each piece of a passband by Gauss–Legendre (16 nodes per piece).
 template <class F>
 double integratePassband(const Passband& band, F f) {
-  static thread_local std::vector<double> nodes, weights;
+  static const auto unit = [] {  // on [0, 1], mapped onto each piece
+    std::pair<std::vector<double>, std::vector<double>> nw;
+    gaussLegendre(16, 0.0, 1.0, nw.first, nw.second);
+    return nw;
+  }();
   double sum = 0.0;
   for (const auto& piece : band.response.pieces) {
-    gaussLegendre(16, piece.lambda0Um, piece.lambda1Um, nodes, weights);
-    for (std::size_t q = 0; q < nodes.size(); ++q) sum += weights[q] * piece.at(nodes[q]) * f(nodes[q]);
+    double width = piece.lambda1Um - piece.lambda0Um;
+    for (std::size_t q = 0; q < unit.first.size(); ++q) {
+      double l = piece.lambda0Um + width * unit.first[q];
+      sum += width * unit.second[q] * piece.at(l) * f(l);
+    }
   }
   return sum;
 }
@@ -354,8 +368,28 @@ const ExpBasis& NebulaRenderer::basis() const { return mPre->basis; }
 const GreedyResult& NebulaRenderer::lightBasis() const { return mPre->lightGreedy; }
 const NebulaModel& NebulaRenderer::model() const { return mPre->model; }
 
+namespace {
+void buildPreIntegration(NebulaPrecomputed& pre) {
+  for (std::size_t st = 0; st < pre.spectra.size(); ++st) {
+    MomentTable table;
+    table.size = 4096;
+    table.step = kMomentTableMaxUm / (table.size - 1);
+    for (int e = -1; e <= table.size + 1; ++e) {
+      double x = std::abs(e * table.step);
+      glm::dvec4 v(0.0);
+      for (std::size_t c = 0; c < 3; ++c)
+        v[static_cast<int>(c)] = integratePassband(pre.filters.channels[c], [&](double l) { return pre.spectra[st].at(l) * std::exp(-x / l); });
+      table.lo.push_back(glm::vec4(v));
+      table.hi.push_back(glm::vec4(0.0f));
+    }
+    pre.preIntegrated.push_back(std::move(table));
+  }
+}
+}  // namespace
+
 NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
   const NebulaPrecomputed& pre = *mPre;
+  if (s.method == Method::PreIntegration) std::call_once(mPre->preIntegratedOnce, [this] { buildPreIntegration(*mPre); });
   const NebulaModel& m = pre.model;
   if (s.steps < 1) throw Error("nebula: steps must be ≥ 1");
   if (s.referenceIntervals < 2 || s.referenceIntervals % 2) throw Error("nebula: reference intervals must be even and ≥ 2");
@@ -494,6 +528,16 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
                   if (card > 4) mHi = shared::nebulaExpMoments(static_cast<float>(x), pre.basisHi, l0, l1);
                 }
                 for (int j = 0; j < card; ++j) moments[st * 8 + static_cast<std::size_t>(j)] += w * (j < 4 ? mLo[j] : mHi[j - 4]);
+                break;
+              }
+              case Method::PreIntegration: {
+                glm::vec4 table, unused;
+                if (pre.preIntegrated[st].lookup(x, table, unused, false)) {
+                  colour += w * glm::dvec3(table.x, table.y, table.z);
+                } else {  // beyond the table (x > 16 µm: e^(−x/λ) < 1e-9 over the band)
+                  for (std::size_t c = 0; c < 3; ++c)
+                    colour[static_cast<int>(c)] += w * integratePassband(pre.filters.channels[c], [&](double l) { return pre.spectra[st].at(l) * std::exp(-x / l); });
+                }
                 break;
               }
               case Method::LightDensity: break;

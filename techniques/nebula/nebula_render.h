@@ -8,6 +8,8 @@
 //                 finish the pixel, so filters change without a new march
 //   lightDensity  the 2D basis P_T(λ)e^(−a/λ): per voxel, the sum over stars of their light's
 //                 projection (precomputed), so the march's cost does not depend on the star count
+//   preIntegration the paper's rejected alternative: per star and channel, ∫ P_S S e^(−x/λ) dλ
+//                 tabulated over x once (Catmull–Rom lookups); a filter change rebuilds the tables
 // The model: density ρ on the unit cube; extinction τ = κ·∫ρ ds (τ(λ) = τ·C_T/λ, so the
 // transmittance is e^(−g/λ) with g = τ·C_T in µm); scattering σ₁ρ with an isotropic phase
 // function (P_σ = 1); stars as points of luminosity L and temperature T lighting each point
@@ -60,7 +62,7 @@ struct NebulaModel {
   std::string filters = "hubble";  // "hubble" or "cie1931"
 };
 
-enum class Method { Reference, Analytic, Projection, LightDensity };
+enum class Method { Reference, Analytic, Projection, LightDensity, PreIntegration };
 const char* methodName(Method m);
 Method methodFromName(std::string_view name);  // Error naming it when unknown
 

@@ -333,3 +333,22 @@ TEST(Cli, ReferenceWritesWhatCompareReads) {
   ASSERT_EQ(same.exitCode, 0) << same.err;
   EXPECT_NE(same.out.find("mean 0.0000"), std::string::npos) << same.out;
 }
+
+TEST(Cli, NebulaBasisRenderAndTheirErrors) {
+  Result basis = run("nebula basis --spacing 0.2 --count 3");
+  ASSERT_EQ(basis.exitCode, 0) << basis.err;
+  EXPECT_NE(basis.out.find("0.2000"), std::string::npos) << basis.out;
+  expectOneLineError("nebula basis --count 9", "1 ≤ count ≤ 8");
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "nebula_cli";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "tiny.json") << R"({"nebula": {"density": {"noise": {"resolution": 8}},
+    "stars": [{"position": [0.5, 0.5, 0.5], "temperature": 9000}], "camera": {"width": 8, "height": 8}}})";
+  std::ofstream(dir / "bad.json") << R"({"nebula": {"density": {"noise": {}}, "stars": [{"position": [0, 0]}]}})";
+  const std::string tiny = (dir / "tiny.json").string();
+  Result render = run("nebula render " + tiny + " --method projection --steps 10 -o " + (dir / "tiny.png").string());
+  ASSERT_EQ(render.exitCode, 0) << render.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "tiny.png"));
+  expectOneLineError("nebula render " + tiny + " --method spline -o x.png", "unknown nebula method 'spline'");
+  expectOneLineError("nebula render " + tiny + " -o x.jpg", "x.jpg: the output must be .exr or .png");
+  expectOneLineError("nebula render " + (dir / "bad.json").string() + " -o x.png", "bad.json: /nebula/stars/0/position");
+}

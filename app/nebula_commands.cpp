@@ -1,0 +1,139 @@
+#include "app/nebula_commands.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "harness/progress_bar.h"
+#include "imaging/exr_file.h"
+#include "imaging/float_image.h"
+#include "imaging/png_file.h"
+#include "spectral/colour_space.h"
+#include "techniques/nebula/nebula_basis.h"
+#include "techniques/nebula/nebula_scene.h"
+
+namespace prism::app {
+
+void runNebulaBasis(const NebulaBasisOptions& o) {
+  if (!(o.lambda0Um >= 0.0 && o.lambda1Um > o.lambda0Um) || o.count < 1 || o.count > 8 || o.maxDepthUm <= 0.0 ||
+      o.maxExponentUm <= 0.0 || o.spacingUm < 0.0)
+    throw Error("nebula basis: need 0 ≤ λ0 < λ1, 1 ≤ count ≤ 8, max depth and max exponent > 0, spacing ≥ 0");
+  nebula::ExpBasis b = nebula::findExpBasis(o.lambda0Um, o.lambda1Um, o.maxDepthUm, o.maxExponentUm, o.count,
+                                            o.spacingUm, /*orthonormalise=*/false);
+  if (o.json) {
+    fmt::print("{{\"lambda_um\": [{}, {}], \"max_depth_um\": {}, \"spacing_um\": {}, \"elements\": [", o.lambda0Um,
+               o.lambda1Um, o.maxDepthUm, o.spacingUm);
+    for (std::size_t k = 0; k < b.a.size(); ++k)
+      fmt::print("{}{{\"a_um\": {:.4f}, \"max_relative_error\": {:.4e}}}", k ? ", " : "", b.a[k], b.maxError[k]);
+    fmt::print("]}}\n");
+    return;
+  }
+  fmt::print("greedy exp(-a/lambda) basis on [{}, {}] um, family exp(-g/lambda) for g in [0, {}] um, "
+             "exponents in [0, {}] um, minimum spacing {} um\n",
+             o.lambda0Um, o.lambda1Um, o.maxDepthUm, o.maxExponentUm, o.spacingUm);
+  fmt::print("{:>8} {:>10} {:>22}\n", "element", "a (um)", "max relative L2 error");
+  for (std::size_t k = 0; k < b.a.size(); ++k) fmt::print("{:>8} {:>10.4f} {:>22.4e}\n", k + 1, b.a[k], b.maxError[k]);
+}
+
+namespace {
+
+// A channel's level that maps to white: its 99.5th percentile (the brightest 0.5 % clip).
+double whiteLevel(const std::vector<double>& values) {
+  std::vector<double> v = values;
+  if (v.empty()) return 1.0;
+  std::size_t at = std::min(v.size() - 1, static_cast<std::size_t>(0.995 * static_cast<double>(v.size())));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(at), v.end());
+  return v[at] > 0.0 ? v[at] : 1.0;
+}
+
+void writeImage(const nebula::NebulaImage& image, const std::string& filters, const std::filesystem::path& out) {
+  std::string ext = out.extension().string();
+  bool hubble = filters == "hubble";
+  if (ext == ".exr") {
+    imaging::FloatImage f(image.width, image.height, 3);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+      for (int c = 0; c < 3; ++c) f.pixels[i * 3 + static_cast<std::size_t>(c)] = image.pixels[i][c];
+    imaging::ExrWriteOptions options;
+    options.colour = hubble ? imaging::ColourMeaning::OtherRgb : imaging::ColourMeaning::Xyz;
+    imaging::writeExr(out, f, options);
+    return;
+  }
+  if (ext != ".png") throw Error(fmt::format("{}: the output must be .exr or .png", out.string()));
+  // PNG: the Hubble palette stretches each channel to its own white level (as its images are
+  // made); natural colour maps XYZ to sRGB and exposes by Y's white level.
+  const RgbColourSpace& srgb = colourSpace("srgb");
+  std::vector<Eigen::Vector3d> rgb;
+  std::array<std::vector<double>, 3> channels;
+  for (const auto& p : image.pixels) {
+    Eigen::Vector3d v(p.x, p.y, p.z);
+    if (!hubble) v = srgb.xyzToRgb * v;
+    rgb.push_back(v);
+    for (int c = 0; c < 3; ++c) channels[static_cast<std::size_t>(c)].push_back(hubble ? v[c] : p.y);
+  }
+  Eigen::Vector3d white(whiteLevel(channels[0]), whiteLevel(channels[1]), whiteLevel(channels[2]));
+  imaging::PngImage png(image.width, image.height, {0, 0, 0});
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      Eigen::Vector3d v = rgb[static_cast<std::size_t>(y * image.width + x)].cwiseQuotient(white).cwiseMax(0.0).cwiseMin(1.0);
+      Eigen::Vector3d e = srgb.encode(v);
+      auto q = [](double u) { return static_cast<std::uint8_t>(std::lround(std::clamp(u, 0.0, 1.0) * 255.0)); };
+      png.setPixel(x, y, {q(e[0]), q(e[1]), q(e[2])});
+    }
+  png.write(out);
+}
+
+}  // namespace
+
+void runNebulaRender(const NebulaRenderOptions& o) {
+  if (o.output.extension() != ".exr" && o.output.extension() != ".png")
+    throw Error(fmt::format("{}: the output must be .exr or .png", o.output.string()));
+  nebula::Method method = nebula::methodFromName(o.method);
+  nebula::NebulaScene scene = nebula::loadNebulaScene(o.scene, o.threads);
+  if (!o.filters.empty()) {
+    if (o.filters != "hubble" && o.filters != "cie1931")
+      throw Error(fmt::format("--filters: '{}' is not hubble or cie1931", excerpt(o.filters)));
+    scene.model.filters = o.filters;
+  }
+  nebula::RenderSettings s;
+  s.method = method;
+  s.steps = o.steps > 0 ? o.steps : scene.steps;
+  s.basisSize = o.basisSize;
+  s.lightBasisSize = o.lightBasisSize;
+  s.referenceIntervals = o.referenceIntervals;
+  s.uniformSamples = o.uniformSamples;
+  s.emissionLines = !o.noLines;
+  s.threads = o.threads;
+  std::string filters = scene.model.filters;
+  harness::ProgressBar bar("nebula: optical depth to each star, bases");
+  auto t0 = std::chrono::steady_clock::now();
+  nebula::NebulaRenderer renderer(std::move(scene.model), s, [&bar](std::size_t d, std::size_t n) { bar.update(d, n); });
+  auto t1 = std::chrono::steady_clock::now();
+  nebula::NebulaImage image = renderer.render(s);
+  auto t2 = std::chrono::steady_clock::now();
+  auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+  fmt::print("{}: {}x{}, {} steps, {} star(s), precomputation {:.0f} ms, render {:.0f} ms\n", nebula::methodName(method),
+             image.width, image.height, s.steps, renderer.model().stars.size(), ms(t0, t1), ms(t1, t2));
+  if (o.compare && method != nebula::Method::Reference) {
+    nebula::RenderSettings r = s;
+    r.method = nebula::Method::Reference;
+    r.uniformSamples = 0;
+    nebula::NebulaImage reference = renderer.render(r);
+    fmt::print("max relative error per pixel against the reference (pixels ≥ 1 % of their channel's maximum): {:.4g}\n",
+               nebula::maxRelativeError(image, reference));
+  }
+  writeImage(image, filters, o.output);
+  fmt::print("wrote {}\n", o.output.string());
+}
+
+void runNebulaDensity(const std::filesystem::path& scenePath, const std::filesystem::path& output) {
+  nebula::NebulaScene scene = nebula::loadNebulaScene(scenePath);
+  nebula::writeDensityFile(output, scene.model.density);
+  fmt::print("wrote {} ({}x{}x{})\n", output.string(), scene.model.density.nx, scene.model.density.ny,
+             scene.model.density.nz);
+}
+
+}  // namespace prism::app

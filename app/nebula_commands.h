@@ -1,0 +1,40 @@
+// `prism nebula`: spectral nebulae after Barrès 2023 (techniques/nebula/) on the CPU —
+// `basis` prints the greedy exp(−a/λ) basis and its error after each element; `render` marches a
+// nebula scene with one of the five methods to an EXR (linear channels) or a PNG; `density`
+// writes a scene's density grid as a prism-density file.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace prism::app {
+
+struct NebulaBasisOptions {
+  double lambda0Um = 0.38, lambda1Um = 0.78;
+  double maxDepthUm = 1.0;  // the family: e^(−g/λ), g ∈ [0, this]
+  double maxExponentUm = 2.0;
+  double spacingUm = 0.0;   // minimum spacing of the exponents (0: the free greedy)
+  int count = 6;
+  bool json = false;
+};
+void runNebulaBasis(const NebulaBasisOptions& options);
+
+struct NebulaRenderOptions {
+  std::filesystem::path scene;
+  std::filesystem::path output;  // .exr or .png
+  std::string method = "projection";
+  std::string filters;           // empty: the scene's ("hubble" or "cie1931")
+  int steps = 0;                 // 0: the scene's
+  int basisSize = 4;
+  int lightBasisSize = 8;
+  int referenceIntervals = 16;
+  int uniformSamples = 0;
+  bool compare = false;          // also render the reference and print the error against it
+  bool noLines = false;
+  unsigned threads = 0;
+};
+void runNebulaRender(const NebulaRenderOptions& options);
+
+void runNebulaDensity(const std::filesystem::path& scene, const std::filesystem::path& output);
+
+}  // namespace prism::app

@@ -1,0 +1,52 @@
+// The nebula's density: a grid of non-negative values over the unit cube [0,1]³ (the volume's
+// box), from fractional Brownian motion over Perlin noise or from a file of Prism's own format.
+//
+// File format ("prism-density", version 1): an ASCII header of two lines, then raw data:
+//   prism-density 1\n
+//   NX NY NZ\n                      each 1…1024
+//   NX·NY·NZ little-endian float32 densities, x fastest, then y, then z (voxel centres at
+//   ((i+½)/NX, (j+½)/NY, (k+½)/NZ) of the box), each finite and ≥ 0; nothing after them.
+// A bad file is refused in one line naming the file and the place (line, or byte offset).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace prism::nebula {
+
+struct DensityGrid {
+  int nx = 0, ny = 0, nz = 0;
+  std::vector<float> values;  // x fastest
+
+  float at(int i, int j, int k) const {
+    return values[static_cast<std::size_t>((k * ny + j) * nx + i)];
+  }
+  // Trilinear between voxel centres, clamped at the faces; 0 outside the unit cube.
+  double sample(const glm::dvec3& p) const;
+};
+
+// fBm over Perlin's improved noise (Perlin 2002): Σ_{o<octaves} gainᵒ·noise(frequency·2ᵒ·p),
+// scaled by `amplitude`, plus `bias`, shaped by a radial falloff so that the cloud fades before
+// the box's faces (1 inside radius 0.25 of the centre, 0 beyond 0.5, smoothstep between), and
+// clamped at 0. Deterministic: the permutation comes from `seed` through splitmix64.
+struct NoiseParameters {
+  int resolution = 128;
+  int octaves = 5;
+  double frequency = 3.0;
+  double amplitude = 1.6;
+  double gain = 0.5;
+  double bias = 0.35;
+  std::uint64_t seed = 1;
+};
+DensityGrid generateFbm(const NoiseParameters& p, unsigned threads = 0);
+
+// Perlin's improved noise at p, for the permutation of a seed, in about [−1, 1].
+double perlinNoise(const glm::dvec3& p, std::uint64_t seed);
+
+DensityGrid readDensityFile(const std::filesystem::path& path);
+void writeDensityFile(const std::filesystem::path& path, const DensityGrid& grid);  // atomically
+
+}  // namespace prism::nebula

@@ -1,0 +1,26 @@
+// The nebula's shared integrals (shaders/shared/nebula_integrals.glsl) compiled as C++ twice: in
+// float inside prism::shared (what the GPU runs; the CPU renderer's per-sample path) and in double
+// inside prism::shared::f64 (the basis search and the per-frame tables, which need the digits).
+#pragma once
+
+#include <cmath>
+
+#include "shared_cpp.h"
+
+namespace prism::shared {
+using glm::log;
+#include "nebula_integrals.glsl"
+#undef NEBULA_REAL
+#undef NEBULA_VEC4
+
+namespace f64 {
+using vec4 = glm::dvec4;
+using std::exp;
+using std::log;
+#define NEBULA_REAL double
+#define NEBULA_VEC4 vec4
+#include "nebula_integrals.glsl"
+#undef NEBULA_REAL
+#undef NEBULA_VEC4
+}  // namespace f64
+}  // namespace prism::shared

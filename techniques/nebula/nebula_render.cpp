@@ -1,0 +1,580 @@
+#include "techniques/nebula/nebula_render.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <numbers>
+
+#include <Eigen/Dense>
+#include <fmt/format.h>
+
+#include "core/data_files.h"
+#include "core/error.h"
+#include "core/parallel_for.h"
+#include "techniques/nebula/nebula_integrals.h"
+
+namespace prism::nebula {
+
+const char* methodName(Method m) {
+  switch (m) {
+    case Method::Reference: return "reference";
+    case Method::Analytic: return "analytic";
+    case Method::Projection: return "projection";
+    case Method::LightDensity: return "light-density";
+    case Method::PreIntegration: return "pre-integration";
+  }
+  return "?";
+}
+
+Method methodFromName(std::string_view name) {
+  for (Method m : {Method::Reference, Method::Analytic, Method::Projection, Method::LightDensity, Method::PreIntegration})
+    if (name == methodName(m)) return m;
+  throw Error(fmt::format("unknown nebula method '{}' (reference, analytic, projection, light-density, pre-integration)", excerpt(name)));
+}
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kLightNodes = 48;  // Gauss–Legendre nodes over the band for the 2D basis's projections
+
+// A grid of per-voxel values at the density's resolution (voxel centres), `width` values each.
+struct VoxelField {
+  int nx = 0, ny = 0, nz = 0, width = 1;
+  std::vector<float> values;
+  // Trilinear between voxel centres, clamped at the faces, into out[0..width).
+  void sample(const glm::dvec3& p, float* out) const {
+    auto axis = [](double u, int n, int& i0, int& i1, double& f) {
+      double x = std::clamp(u * n - 0.5, 0.0, n - 1.0);
+      i0 = std::min(static_cast<int>(x), n - 1);
+      i1 = std::min(i0 + 1, n - 1);
+      f = x - i0;
+    };
+    int x0, x1, y0, y1, z0, z1;
+    double fx, fy, fz;
+    axis(p.x, nx, x0, x1, fx);
+    axis(p.y, ny, y0, y1, fy);
+    axis(p.z, nz, z0, z1, fz);
+    for (int c = 0; c < width; ++c) out[c] = 0.0f;
+    const int xs[2] = {x0, x1}, ys[2] = {y0, y1}, zs[2] = {z0, z1};
+    const double wx[2] = {1 - fx, fx}, wy[2] = {1 - fy, fy}, wz[2] = {1 - fz, fz};
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b)
+        for (int d = 0; d < 2; ++d) {
+          auto w = static_cast<float>(wx[a] * wy[b] * wz[d]);
+          std::size_t at = (static_cast<std::size_t>((zs[d] * ny + ys[b]) * nx + xs[a])) * static_cast<std::size_t>(width);
+          for (int c = 0; c < width; ++c) out[c] += w * values[at + static_cast<std::size_t>(c)];
+        }
+  }
+};
+
+// The part of the segment p + t·d, t ∈ [0, tMax], inside the unit cube, as [t0, t1]; false when
+// it misses.
+bool clipToCube(const glm::dvec3& p, const glm::dvec3& d, double tMax, double& t0, double& t1) {
+  t0 = 0.0;
+  t1 = tMax;
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(d[i]) < 1e-15) {
+      if (p[i] < 0.0 || p[i] > 1.0) return false;
+      continue;
+    }
+    double a = (0.0 - p[i]) / d[i], b = (1.0 - p[i]) / d[i];
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  return t1 > t0;
+}
+
+}  // namespace
+
+// mⱼ(x) for the basis's exponents, tabulated over x ∈ [0, kMomentTableMaxUm].
+constexpr int kMomentTableSize = 4096;
+constexpr double kMomentTableMaxUm = 16.0;
+struct MomentTable {
+  std::vector<glm::vec4> lo, hi;  // size + 3 entries: one before 0, two after the end
+  int size = kMomentTableSize;
+  double step = kMomentTableMaxUm / (kMomentTableSize - 1);
+  // Catmull–Rom between entries; false beyond the table.
+  bool lookup(double x, glm::vec4& mLo, glm::vec4& mHi, bool withHi) const {
+    double u = x / step;
+    if (!(u < size - 1)) return false;
+    int i = static_cast<int>(u);
+    auto t = static_cast<float>(u - i);
+    float t2 = t * t, t3 = t2 * t;
+    float w0 = 0.5f * (-t3 + 2.0f * t2 - t), w1 = 0.5f * (3.0f * t3 - 5.0f * t2 + 2.0f);
+    float w2 = 0.5f * (-3.0f * t3 + 4.0f * t2 + t), w3 = 0.5f * (t3 - t2);
+    auto at = static_cast<std::size_t>(i);  // entry i + 1 holds x = i·step
+    mLo = w0 * lo[at] + w1 * lo[at + 1] + w2 * lo[at + 2] + w3 * lo[at + 3];
+    if (withHi) mHi = w0 * hi[at] + w1 * hi[at + 1] + w2 * hi[at + 2] + w3 * hi[at + 3];
+    return true;
+  }
+};
+
+struct NebulaPrecomputed {
+  NebulaModel model;
+  FilterSet filters;
+  std::vector<StarSpectrum> spectra;
+  std::vector<VoxelField> starDepth;  // g_s per voxel (µm), one field per star
+  // Emission lines: each line's λ and its response per channel (P_S(λₗ)·weight).
+  std::vector<double> lineLambdaUm;
+  std::vector<glm::dvec3> lineResponse;
+  // Analytic: per star, per channel, the pieces of P_S × P_L as float coefficients.
+  struct FloatPiece {
+    float l0, l1;
+    glm::vec4 lo, hi;
+  };
+  std::vector<std::array<std::vector<FloatPiece>, 3>> analyticPieces;
+  struct DoublePiece {
+    double l0, l1;
+    glm::dvec4 lo, hi;
+  };
+  std::vector<std::array<std::vector<DoublePiece>, 3>> analyticPiecesF64;
+  // Projection: the 1D basis and, per star and channel, W'ⱼ = Σₖ (∫ P_S S_s bₖ dλ)·M(k,j).
+  ExpBasis basis;
+  glm::vec4 basisLo{0.0f}, basisHi{0.0f};  // exponents a₀…a₇ (unused ones are never read)
+  MomentTable moments;
+  // Pre-integration: per star, the three channels' ∫ P_S S_s e^(−x/λ) dλ over x (in lo.xyz),
+  // 4096 entries; built at its first render.
+  std::once_flag preIntegratedOnce;
+  std::vector<MomentTable> preIntegrated;
+  std::vector<std::array<std::array<double, 8>, 3>> projectionWeights;
+  // Light–density: the 2D basis, its per-voxel coefficients, and U(c, k, j) = Σₘ (∫ P_S fₖ bₘ)·M(m,j).
+  GreedyResult lightGreedy;
+  VoxelField lightCoefficients;
+  std::vector<double> lightU;  // [c][k][j], k < lightCount, j < card(B)
+  int lightCount = 0;
+};
+
+namespace {
+
+// ∫ f over each piece of a passband by Gauss–Legendre (16 nodes per piece).
+template <class F>
+double integratePassband(const Passband& band, F f) {
+  static const auto unit = [] {  // on [0, 1], mapped onto each piece
+    std::pair<std::vector<double>, std::vector<double>> nw;
+    gaussLegendre(16, 0.0, 1.0, nw.first, nw.second);
+    return nw;
+  }();
+  double sum = 0.0;
+  for (const auto& piece : band.response.pieces) {
+    double width = piece.lambda1Um - piece.lambda0Um;
+    for (std::size_t q = 0; q < unit.first.size(); ++q) {
+      double l = piece.lambda0Um + width * unit.first[q];
+      sum += width * unit.second[q] * piece.at(l) * f(l);
+    }
+  }
+  return sum;
+}
+
+VoxelField opticalDepthToStar(const DensityGrid& density, const NebulaStar& star, double extinction,
+                              unsigned threads) {
+  VoxelField field{density.nx, density.ny, density.nz, 1,
+                   std::vector<float>(static_cast<std::size_t>(density.nx) * density.ny * density.nz)};
+  double step = 0.5 / std::max({density.nx, density.ny, density.nz});
+  parallelFor(static_cast<std::size_t>(density.nz), threads, [&](std::size_t k) {
+    for (int j = 0; j < density.ny; ++j)
+      for (int i = 0; i < density.nx; ++i) {
+        glm::dvec3 p((i + 0.5) / density.nx, (j + 0.5) / density.ny, (static_cast<double>(k) + 0.5) / density.nz);
+        glm::dvec3 d = star.position - p;
+        double length = glm::length(d), t0 = 0.0, t1 = 0.0, column = 0.0;
+        if (length > 0.0 && clipToCube(p, d, 1.0, t0, t1)) {  // up to the star
+          double segment = (t1 - t0) * length;
+          int n = std::max(1, static_cast<int>(std::ceil(segment / step)));
+          double dt = (t1 - t0) / n;
+          for (int s = 0; s < n; ++s) column += density.sample(p + d * (t0 + (s + 0.5) * dt));
+          column *= dt * length;
+        }
+        field.values[(k * static_cast<std::size_t>(density.ny) + static_cast<std::size_t>(j)) *
+                         static_cast<std::size_t>(density.nx) + static_cast<std::size_t>(i)] =
+            static_cast<float>(kCtUm * extinction * column);
+      }
+  });
+  return field;
+}
+
+}  // namespace
+
+NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
+                               const std::function<void(std::size_t, std::size_t)>& progress)
+    : mPre(std::make_unique<NebulaPrecomputed>()) {
+  NebulaPrecomputed& pre = *mPre;
+  pre.model = std::move(model);
+  const NebulaModel& m = pre.model;
+  if (m.density.values.empty()) throw Error("nebula: no density");
+  if (s.basisSize < 1 || s.basisSize > 8) throw Error("nebula: the basis size must be 1…8");
+  pre.filters = filterSet(m.filters);
+  std::size_t stages = m.stars.size() + 2, done = 0;
+  auto tick = [&] {
+    if (progress) progress(++done, stages);
+  };
+  for (const auto& star : m.stars) {
+    pre.spectra.push_back(makeStarSpectrum(star.temperatureK, m.starModel));
+    pre.starDepth.push_back(opticalDepthToStar(m.density, star, m.extinction, s.threads));
+    tick();
+  }
+  // Emission lines: weight = the group's strength × the line's ratio within it.
+  for (const auto& line : readEmissionLines(dataFile("nebula_lines.csv"))) {
+    double strength = 0.0;
+    for (const auto& g : m.lineGroups)
+      if (g.group == line.group) strength = g.strength;
+    if (strength == 0.0) continue;
+    pre.lineLambdaUm.push_back(line.lambdaUm);
+    glm::dvec3 r;
+    for (int c = 0; c < 3; ++c) r[c] = pre.filters.channels[static_cast<std::size_t>(c)].response.at(line.lambdaUm) * strength * line.ratio;
+    pre.lineResponse.push_back(r);
+  }
+  // Analytic: P_S × P_L per star and channel, in float for the shared integrals.
+  for (const auto& spectrum : pre.spectra) {
+    std::array<std::vector<NebulaPrecomputed::FloatPiece>, 3> perChannel;
+    std::array<std::vector<NebulaPrecomputed::DoublePiece>, 3> perChannelF64;
+    for (std::size_t c = 0; c < 3; ++c)
+      for (const auto& piece : multiply(pre.filters.channels[c].response, spectrum.fit).pieces) {
+        NebulaPrecomputed::DoublePiece d{piece.lambda0Um, piece.lambda1Um, {}, {}};
+        for (int n = 0; n < 4; ++n) {
+          d.lo[n] = piece.coeffs[static_cast<std::size_t>(n)];
+          d.hi[n] = piece.coeffs[static_cast<std::size_t>(n + 4)];
+        }
+        perChannelF64[c].push_back(d);
+        NebulaPrecomputed::FloatPiece f{static_cast<float>(piece.lambda0Um), static_cast<float>(piece.lambda1Um), {}, {}};
+        for (int n = 0; n < 4; ++n) {
+          f.lo[n] = static_cast<float>(piece.coeffs[static_cast<std::size_t>(n)]);
+          f.hi[n] = static_cast<float>(piece.coeffs[static_cast<std::size_t>(n + 4)]);
+        }
+        perChannel[c].push_back(f);
+      }
+    pre.analyticPieces.push_back(std::move(perChannel));
+    pre.analyticPiecesF64.push_back(std::move(perChannelF64));
+  }
+  // Projection: the 1D basis on the band and each star's filter integrals of it.
+  pre.basis = findExpBasis(kBandLoUm, kBandHiUm, s.basisMaxDepthUm, 2.0, s.basisSize, s.basisSpacingUm);
+  auto card = static_cast<int>(pre.basis.a.size());
+  for (int j = 0; j < card; ++j) (j < 4 ? pre.basisLo[j] : pre.basisHi[j - 4]) = static_cast<float>(pre.basis.a[static_cast<std::size_t>(j)]);
+  for (int e = -1; e <= kMomentTableSize + 1; ++e) {
+    double x = std::abs(e * pre.moments.step);  // the entry before 0 mirrors (mⱼ is smooth there)
+    pre.moments.lo.push_back(glm::vec4(shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm)));
+    pre.moments.hi.push_back(glm::vec4(shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm)));
+  }
+  for (std::size_t st = 0; st < pre.spectra.size(); ++st) {
+    std::array<std::array<double, 8>, 3> w{};
+    for (std::size_t c = 0; c < 3; ++c)
+      for (int k = 0; k < card; ++k) {
+        double wk = integratePassband(pre.filters.channels[c], [&](double l) { return pre.spectra[st].at(l) * pre.basis.at(k, l); });
+        for (int j = 0; j <= k; ++j) w[c][static_cast<std::size_t>(j)] += wk * pre.basis.m(k, j);
+      }
+    pre.projectionWeights.push_back(w);
+  }
+  tick();
+  // Light–density: the 2D basis over the stars' temperature range.
+  if (!m.stars.empty()) {
+    double tMin = 1e30, tMax = 0.0;
+    for (const auto& st : m.stars) tMin = std::min(tMin, st.temperatureK), tMax = std::max(tMax, st.temperatureK);
+    StarSpectrum s0 = makeStarSpectrum(tMin, m.starModel), s1 = makeStarSpectrum(tMax, m.starModel);
+    std::vector<double> nodes, weights;
+    gaussLegendre(kLightNodes, kBandLoUm, kBandHiUm, nodes, weights);
+    const int aCount = 41, tCount = 5, gCount = 24, familyTemps = tMax > tMin ? 8 : 1;
+    const double aMax = 2.0;
+    Eigen::MatrixXd family(kLightNodes, gCount * familyTemps), candidates(kLightNodes, aCount * tCount);
+    for (int q = 0; q < kLightNodes; ++q) {
+      double l = nodes[static_cast<std::size_t>(q)];
+      for (int t = 0; t < familyTemps; ++t) {
+        double temp = familyTemps == 1 ? tMin : tMin * std::pow(tMax / tMin, t / (familyTemps - 1.0));
+        StarSpectrum st = makeStarSpectrum(temp, m.starModel);
+        for (int g = 0; g < gCount; ++g) family(q, t * gCount + g) = st.at(l) * std::exp(-s.basisMaxDepthUm * g / (gCount - 1) / l);
+      }
+      for (int t = 0; t < tCount; ++t)
+        for (int a = 0; a < aCount; ++a) {
+          double mix = t / (tCount - 1.0);
+          candidates(q, t * aCount + a) = ((1 - mix) * s0.at(l) + mix * s1.at(l)) * std::exp(-aMax * a / (aCount - 1) / l);
+        }
+    }
+    Eigen::Map<Eigen::VectorXd> wq(weights.data(), kLightNodes);
+    // Conditioning: a candidate must add a new direction of at least 1e-4 of its norm (the Gram
+    // matrix then stays within double's reach: its Cholesky pivots are ≥ 1e-8 relative).
+    pre.lightGreedy = greedyBasis(family, candidates, wq, s.lightBasisSize, {}, {}, 0.0, 1e-4);
+    pre.lightCount = static_cast<int>(pre.lightGreedy.chosen.size());
+    int kCount = pre.lightCount;
+    // Orthonormal fₖ = Σⱼ M2(k,j)·rawⱼ by the Cholesky factor of the raw Gram matrix (256 nodes).
+    auto raw = [&](int j, double l) {
+      int c = pre.lightGreedy.chosen[static_cast<std::size_t>(j)];
+      int t = c / aCount, a = c % aCount;
+      double mix = t / (tCount - 1.0);
+      return ((1 - mix) * s0.at(l) + mix * s1.at(l)) * std::exp(-aMax * a / (aCount - 1) / l);
+    };
+    std::vector<double> fineNodes, fineWeights;
+    gaussLegendre(256, kBandLoUm, kBandHiUm, fineNodes, fineWeights);
+    Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(kCount, kCount);
+    for (std::size_t q = 0; q < fineNodes.size(); ++q)
+      for (int i = 0; i < kCount; ++i)
+        for (int j = 0; j < kCount; ++j) gram(i, j) += fineWeights[q] * raw(i, fineNodes[q]) * raw(j, fineNodes[q]);
+    Eigen::LLT<Eigen::MatrixXd> llt(gram);
+    if (llt.info() != Eigen::Success) throw Error("nebula: the light basis's Gram matrix is singular in double");
+    Eigen::MatrixXd lower = llt.matrixL();
+    Eigen::MatrixXd m2 = lower.triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(kCount, kCount));
+    auto f = [&](int k, double l) {
+      double v = 0.0;
+      for (int j = 0; j <= k; ++j) v += m2(k, j) * raw(j, l);
+      return v;
+    };
+    // U(c, k, j) = Σₘ ∫ P_S,c fₖ bₘ dλ · M(m, j).
+    pre.lightU.assign(static_cast<std::size_t>(3 * kCount * 8), 0.0);
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < kCount; ++k)
+        for (int mm = 0; mm < card; ++mm) {
+          double t = integratePassband(pre.filters.channels[static_cast<std::size_t>(c)], [&](double l) { return f(k, l) * pre.basis.at(mm, l); });
+          for (int j = 0; j <= mm; ++j) pre.lightU[static_cast<std::size_t>((c * kCount + k) * 8 + j)] += t * pre.basis.m(mm, j);
+        }
+    // Per voxel: dₖ = Σ_s σ₁L_s/(16π²d²)·⟨S_s e^(−g_s/λ), fₖ⟩ (Gauss–Legendre, 48 nodes).
+    std::vector<double> fAtNodes(static_cast<std::size_t>(kCount * kLightNodes));
+    for (int k = 0; k < kCount; ++k)
+      for (int q = 0; q < kLightNodes; ++q)
+        fAtNodes[static_cast<std::size_t>(k * kLightNodes + q)] = weights[static_cast<std::size_t>(q)] * f(k, nodes[static_cast<std::size_t>(q)]);
+    std::vector<std::vector<double>> spectraAtNodes;
+    for (const auto& sp : pre.spectra) {
+      std::vector<double> v;
+      for (double l : nodes) v.push_back(sp.at(l));
+      spectraAtNodes.push_back(v);
+    }
+    const DensityGrid& dg = m.density;
+    VoxelField& lc = pre.lightCoefficients;
+    lc = {dg.nx, dg.ny, dg.nz, kCount, std::vector<float>(static_cast<std::size_t>(dg.nx) * dg.ny * dg.nz * kCount)};
+    parallelFor(static_cast<std::size_t>(dg.nz), s.threads, [&](std::size_t k) {
+      std::vector<double> light(kLightNodes);
+      for (int j = 0; j < dg.ny; ++j)
+        for (int i = 0; i < dg.nx; ++i) {
+          std::size_t voxel = (k * static_cast<std::size_t>(dg.ny) + static_cast<std::size_t>(j)) * static_cast<std::size_t>(dg.nx) + static_cast<std::size_t>(i);
+          glm::dvec3 p((i + 0.5) / dg.nx, (j + 0.5) / dg.ny, (static_cast<double>(k) + 0.5) / dg.nz);
+          std::fill(light.begin(), light.end(), 0.0);
+          for (std::size_t st = 0; st < m.stars.size(); ++st) {
+            double d2 = std::max(glm::dot(m.stars[st].position - p, m.stars[st].position - p), 1e-4);
+            double w = m.scattering * m.stars[st].luminosity / (16.0 * kPi * kPi * d2);
+            double g = pre.starDepth[st].values[voxel];
+            for (int q = 0; q < kLightNodes; ++q)
+              light[static_cast<std::size_t>(q)] += w * spectraAtNodes[st][static_cast<std::size_t>(q)] * std::exp(-g / nodes[static_cast<std::size_t>(q)]);
+          }
+          for (int kk = 0; kk < kCount; ++kk) {
+            double dk = 0.0;
+            for (int q = 0; q < kLightNodes; ++q) dk += fAtNodes[static_cast<std::size_t>(kk * kLightNodes + q)] * light[static_cast<std::size_t>(q)];
+            lc.values[voxel * static_cast<std::size_t>(kCount) + static_cast<std::size_t>(kk)] = static_cast<float>(dk);
+          }
+        }
+    });
+  }
+  tick();
+}
+
+NebulaRenderer::~NebulaRenderer() = default;
+const ExpBasis& NebulaRenderer::basis() const { return mPre->basis; }
+const GreedyResult& NebulaRenderer::lightBasis() const { return mPre->lightGreedy; }
+const NebulaModel& NebulaRenderer::model() const { return mPre->model; }
+
+namespace {
+void buildPreIntegration(NebulaPrecomputed& pre) {
+  for (std::size_t st = 0; st < pre.spectra.size(); ++st) {
+    MomentTable table;
+    table.size = 4096;
+    table.step = kMomentTableMaxUm / (table.size - 1);
+    for (int e = -1; e <= table.size + 1; ++e) {
+      double x = std::abs(e * table.step);
+      glm::dvec4 v(0.0);
+      for (std::size_t c = 0; c < 3; ++c)
+        v[static_cast<int>(c)] = integratePassband(pre.filters.channels[c], [&](double l) { return pre.spectra[st].at(l) * std::exp(-x / l); });
+      table.lo.push_back(glm::vec4(v));
+      table.hi.push_back(glm::vec4(0.0f));
+    }
+    pre.preIntegrated.push_back(std::move(table));
+  }
+}
+}  // namespace
+
+NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
+  const NebulaPrecomputed& pre = *mPre;
+  if (s.method == Method::PreIntegration) std::call_once(mPre->preIntegratedOnce, [this] { buildPreIntegration(*mPre); });
+  const NebulaModel& m = pre.model;
+  if (s.steps < 1) throw Error("nebula: steps must be ≥ 1");
+  if (s.referenceIntervals < 2 || s.referenceIntervals % 2) throw Error("nebula: reference intervals must be even and ≥ 2");
+  const int card = static_cast<int>(pre.basis.a.size());
+  if (s.basisSize != card && (s.method == Method::Projection || s.method == Method::LightDensity))
+    throw Error(fmt::format("nebula: the renderer was built for a basis of {} elements, not {}", card, s.basisSize));
+  const std::size_t starCount = m.stars.size();
+  const float l0 = static_cast<float>(kBandLoUm), l1 = static_cast<float>(kBandHiUm);
+
+  // Reference: per channel, nodes and weights P_S(λ)·w (Simpson per piece, or uniform trapezoid),
+  // and per star the node weights times the star's exact spectrum.
+  std::array<std::vector<double>, 3> refLambda;
+  std::vector<std::array<std::vector<double>, 3>> refWeight(starCount);
+  if (s.method == Method::Reference) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      const Passband& band = pre.filters.channels[c];
+      std::vector<double> w;
+      if (s.uniformSamples > 0) {
+        int n = std::max(2, s.uniformSamples);
+        double a = band.response.lambdaMinUm(), b = band.response.lambdaMaxUm(), h = (b - a) / (n - 1);
+        for (int i = 0; i < n; ++i) {
+          double l = a + h * i;
+          refLambda[c].push_back(l);
+          w.push_back((i == 0 || i == n - 1 ? 0.5 : 1.0) * h * band.response.at(l));
+        }
+      } else {
+        for (const auto& piece : band.response.pieces) {
+          int n = s.referenceIntervals;
+          double h = (piece.lambda1Um - piece.lambda0Um) / n;
+          for (int i = 0; i <= n; ++i) {
+            double l = piece.lambda0Um + h * i;
+            refLambda[c].push_back(l);
+            w.push_back((i == 0 || i == n ? 1.0 : (i % 2 ? 4.0 : 2.0)) * h / 3.0 * piece.at(l));
+          }
+        }
+      }
+      for (std::size_t st = 0; st < starCount; ++st) {
+        std::vector<double> ws(w.size());
+        for (std::size_t i = 0; i < w.size(); ++i) ws[i] = w[i] * pre.spectra[st].at(refLambda[c][i]);
+        refWeight[st][c] = std::move(ws);
+      }
+    }
+  }
+
+  const NebulaCamera& cam = m.camera;
+  glm::dvec3 forward = glm::normalize(cam.target - cam.position);
+  glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
+  glm::dvec3 up = glm::cross(right, forward);
+  double tanHalf = std::tan(cam.fovYDeg * kPi / 360.0), aspect = static_cast<double>(cam.width) / cam.height;
+
+  NebulaImage image{cam.width, cam.height, std::vector<glm::vec3>(static_cast<std::size_t>(cam.width) * cam.height)};
+  parallelFor(static_cast<std::size_t>(cam.height), s.threads, [&](std::size_t row) {
+    std::vector<float> depths(starCount), lightD(static_cast<std::size_t>(std::max(pre.lightCount, 1)));
+    std::vector<double> moments(starCount * 8), lightAcc(static_cast<std::size_t>(std::max(pre.lightCount, 1)) * 8);
+    for (int px = 0; px < cam.width; ++px) {
+      double u = (2.0 * (px + 0.5) / cam.width - 1.0) * tanHalf * aspect;
+      double v = (1.0 - 2.0 * (static_cast<double>(row) + 0.5) / cam.height) * tanHalf;
+      glm::dvec3 dir = glm::normalize(forward + u * right + v * up);
+      double t0 = 0.0, t1 = 0.0;
+      glm::dvec3 colour(0.0);
+      std::fill(moments.begin(), moments.end(), 0.0f);
+      std::fill(lightAcc.begin(), lightAcc.end(), 0.0f);
+      if (clipToCube(cam.position, dir, 1e30, t0, t1)) {
+        double dt = (t1 - t0) / s.steps, gCam = 0.0;
+        for (int i = 0; i < s.steps; ++i) {
+          glm::dvec3 p = cam.position + dir * (t0 + (i + 0.5) * dt);
+          double rho = m.density.sample(p);
+          if (rho <= 0.0) continue;
+          double dg = kCtUm * m.extinction * rho * dt;
+          double g = gCam + 0.5 * dg;  // the sample sees half of its own step's extinction
+          gCam += dg;
+          if (s.emissionLines)
+            for (std::size_t l = 0; l < pre.lineLambdaUm.size(); ++l)
+              colour += m.emission * rho * dt * std::exp(-g / pre.lineLambdaUm[l]) * pre.lineResponse[l];
+          double scatter = m.scattering * rho * dt / (16.0 * kPi * kPi);
+          if (s.method == Method::LightDensity) {
+            if (pre.lightCount == 0) continue;
+            pre.lightCoefficients.sample(p, lightD.data());
+            glm::dvec4 mLo, mHi(0.0);
+            glm::vec4 tLo, tHi;
+            if (s.doublePrecision) {
+              mLo = shared::f64::nebulaExpMoments(g, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm);
+              if (card > 4) mHi = shared::f64::nebulaExpMoments(g, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm);
+            } else if (s.momentTable && pre.moments.lookup(g, tLo, tHi, card > 4)) {
+              mLo = tLo;
+              if (card > 4) mHi = tHi;
+            } else {
+              mLo = shared::nebulaExpMoments(static_cast<float>(g), pre.basisLo, l0, l1);
+              if (card > 4) mHi = shared::nebulaExpMoments(static_cast<float>(g), pre.basisHi, l0, l1);
+            }
+            double w = rho * dt;
+            for (int k = 0; k < pre.lightCount; ++k)
+              for (int j = 0; j < card; ++j)
+                lightAcc[static_cast<std::size_t>(k * 8 + j)] += w * lightD[static_cast<std::size_t>(k)] * (j < 4 ? mLo[j] : mHi[j - 4]);
+            continue;
+          }
+          for (std::size_t st = 0; st < starCount; ++st) {
+            float gs = 0.0f;
+            pre.starDepth[st].sample(p, &gs);
+            glm::dvec3 toStar = m.stars[st].position - p;
+            double w = scatter * m.stars[st].luminosity / std::max(glm::dot(toStar, toStar), 1e-4);
+            double x = g + gs;
+            switch (s.method) {
+              case Method::Reference:
+                for (std::size_t c = 0; c < 3; ++c) {
+                  double sum = 0.0;
+                  const auto& lambdas = refLambda[c];
+                  const auto& weights = refWeight[st][c];
+                  for (std::size_t n = 0; n < lambdas.size(); ++n) sum += weights[n] * std::exp(-x / lambdas[n]);
+                  colour[static_cast<int>(c)] += w * sum;
+                }
+                break;
+              case Method::Analytic:
+                for (std::size_t c = 0; c < 3; ++c) {
+                  double sum = 0.0;
+                  if (s.doublePrecision)
+                    for (const auto& piece : pre.analyticPiecesF64[st][c])
+                      sum += shared::f64::nebulaPolyExpIntegral(piece.lo, piece.hi, x, piece.l0, piece.l1);
+                  else
+                    for (const auto& piece : pre.analyticPieces[st][c])
+                      sum += shared::nebulaPolyExpIntegral(piece.lo, piece.hi, static_cast<float>(x), piece.l0, piece.l1);
+                  colour[static_cast<int>(c)] += w * sum;
+                }
+                break;
+              case Method::Projection: {
+                glm::dvec4 mLo, mHi(0.0);
+                glm::vec4 tLo, tHi;
+                if (s.doublePrecision) {
+                  mLo = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm);
+                  if (card > 4) mHi = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm);
+                } else if (s.momentTable && pre.moments.lookup(x, tLo, tHi, card > 4)) {
+                  mLo = tLo;
+                  if (card > 4) mHi = tHi;
+                } else {
+                  mLo = shared::nebulaExpMoments(static_cast<float>(x), pre.basisLo, l0, l1);
+                  if (card > 4) mHi = shared::nebulaExpMoments(static_cast<float>(x), pre.basisHi, l0, l1);
+                }
+                for (int j = 0; j < card; ++j) moments[st * 8 + static_cast<std::size_t>(j)] += w * (j < 4 ? mLo[j] : mHi[j - 4]);
+                break;
+              }
+              case Method::PreIntegration: {
+                glm::vec4 table, unused;
+                if (pre.preIntegrated[st].lookup(x, table, unused, false)) {
+                  colour += w * glm::dvec3(table.x, table.y, table.z);
+                } else {  // beyond the table (x > 16 µm: e^(−x/λ) < 1e-9 over the band)
+                  for (std::size_t c = 0; c < 3; ++c)
+                    colour[static_cast<int>(c)] += w * integratePassband(pre.filters.channels[c], [&](double l) { return pre.spectra[st].at(l) * std::exp(-x / l); });
+                }
+                break;
+              }
+              case Method::LightDensity: break;
+            }
+          }
+        }
+      }
+      // Finishing the pixel: card(B) filter integrals per star (projection) or per 2D element.
+      if (s.method == Method::Projection)
+        for (std::size_t st = 0; st < starCount; ++st)
+          for (std::size_t c = 0; c < 3; ++c)
+            for (int j = 0; j < card; ++j)
+              colour[static_cast<int>(c)] += pre.projectionWeights[st][c][static_cast<std::size_t>(j)] * moments[st * 8 + static_cast<std::size_t>(j)];
+      if (s.method == Method::LightDensity)
+        for (int c = 0; c < 3; ++c)
+          for (int k = 0; k < pre.lightCount; ++k)
+            for (int j = 0; j < card; ++j)
+              colour[c] += pre.lightU[static_cast<std::size_t>((c * pre.lightCount + k) * 8 + j)] * lightAcc[static_cast<std::size_t>(k * 8 + j)];
+      image.pixels[row * static_cast<std::size_t>(cam.width) + static_cast<std::size_t>(px)] = glm::vec3(colour);
+    }
+  });
+  return image;
+}
+
+double maxRelativeError(const NebulaImage& image, const NebulaImage& reference, double floorOfMax) {
+  PRISM_CHECK(image.pixels.size() == reference.pixels.size());
+  double worst = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    double peak = 0.0;
+    for (const auto& p : reference.pixels) peak = std::max(peak, static_cast<double>(p[c]));
+    for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
+      double r = reference.pixels[i][c];
+      if (r <= 0.0 || r < floorOfMax * peak) continue;
+      worst = std::max(worst, std::abs(image.pixels[i][c] - r) / r);
+    }
+  }
+  return worst;
+}
+
+}  // namespace prism::nebula

@@ -1,0 +1,119 @@
+// A CPU ray marcher of a nebula (Barrès 2023) with the paper's four ways of integrating over
+// wavelength, on the same ray samples so that only the spectral integration differs:
+//   reference     Newton–Cotes over λ at every step (composite Simpson per filter piece, double)
+//   analytic      the closed form per step: Σ over filter pieces × P_L of ∫ P(λ)e^(−g/λ) dλ
+//                 (nebula_integrals.glsl, float), once per star
+//   projection    e^(−g/λ) projected on the greedy exp(−a/λ) basis: the ray accumulates the raw
+//                 moments ∫ e^(−(g+aⱼ)/λ) dλ per star (float); card(B) filter integrals per star
+//                 finish the pixel, so filters change without a new march
+//   lightDensity  the 2D basis P_T(λ)e^(−a/λ): per voxel, the sum over stars of their light's
+//                 projection (precomputed), so the march's cost does not depend on the star count
+//   preIntegration the paper's rejected alternative: per star and channel, ∫ P_S S e^(−x/λ) dλ
+//                 tabulated over x once (Catmull–Rom lookups); a filter change rebuilds the tables
+// The model: density ρ on the unit cube; extinction τ = κ·∫ρ ds (τ(λ) = τ·C_T/λ, so the
+// transmittance is e^(−g/λ) with g = τ·C_T in µm); scattering σ₁ρ with an isotropic phase
+// function (P_σ = 1); stars as points of luminosity L and temperature T lighting each point
+// through their own optical depth g_s (per voxel, precomputed); emission lines ε·ρ·Σ wₗ δ(λ−λₗ)
+// (exact in every method). A channel is ∫ P_S(λ)·L(λ) dλ through its fitted passband P_S.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "techniques/nebula/nebula_basis.h"
+#include "techniques/nebula/nebula_density.h"
+#include "techniques/nebula/nebula_spectra.h"
+
+namespace prism::nebula {
+
+struct NebulaStar {
+  glm::dvec3 position{0.5};    // in the unit cube's coordinates (may lie outside it)
+  double temperatureK = 10000.0;
+  double luminosity = 1.0;
+};
+
+struct NebulaCamera {
+  glm::dvec3 position{0.5, 0.5, -1.0};
+  glm::dvec3 target{0.5, 0.5, 0.5};
+  double fovYDeg = 45.0;
+  int width = 128;
+  int height = 128;
+};
+
+// An emission-line group ("H I Balmer (case B)", "[O III] doublet", …, as in nebula_lines.csv)
+// and the strength of its reference line (the one its ratios are relative to).
+struct LineGroupStrength {
+  std::string group;
+  double strength = 0.0;
+};
+
+struct NebulaModel {
+  DensityGrid density;
+  double extinction = 4.0;   // κ: optical depth per unit length at ρ = 1
+  double scattering = 1.0;   // σ₁: scattering per unit length at ρ = 1
+  double emission = 0.0;     // ε: emission per unit length at ρ = 1, times each group's strength
+  std::vector<LineGroupStrength> lineGroups;
+  std::vector<NebulaStar> stars;
+  StarModel starModel = StarModel::Planck;
+  NebulaCamera camera;
+  std::string filters = "hubble";  // "hubble" or "cie1931"
+};
+
+enum class Method { Reference, Analytic, Projection, LightDensity, PreIntegration };
+const char* methodName(Method m);
+Method methodFromName(std::string_view name);  // Error naming it when unknown
+
+struct RenderSettings {
+  Method method = Method::Reference;
+  int steps = 100;               // ray samples between the cube's faces
+  int referenceIntervals = 16;   // reference: Simpson intervals per filter piece (even)
+  int uniformSamples = 0;        // reference: if > 0, that many λ per channel instead (trapezoid)
+  int basisSize = 4;             // projection / lightDensity: card(B) of the 1D basis
+  double basisSpacingUm = 0.2;   // its exponents' minimum spacing (nebula_basis.h; README)
+  double basisMaxDepthUm = 2.0;  // its family: attenuations g ∈ [0, this]
+  int lightBasisSize = 8;        // lightDensity: card of the 2D basis
+  bool emissionLines = true;
+  // The shared formulas in double (their f64 instantiation) instead of float, the GPU's
+  // precision; the ray's accumulators are double either way.
+  bool doublePrecision = false;
+  // Projection and light–density: read the raw moments mⱼ(x) = ∫ e^(−(x+aⱼ)/λ) dλ from a table
+  // over x (4096 entries on [0, 16] µm, Catmull–Rom, float: what a GPU keeps in a 1D texture),
+  // built per frame from the same shared closed form in double, instead of evaluating E₁ per
+  // sample; beyond the table, the closed form.
+  bool momentTable = true;
+  unsigned threads = 0;
+};
+
+struct NebulaImage {
+  int width = 0, height = 0;
+  std::vector<glm::vec3> pixels;  // the filter set's three channels, row 0 at the top
+};
+
+// What a render precomputes from the model, independent of the method: filters, stars' spectra,
+// per-star optical depth grids, the lines' responses. Built once, rendered with any method.
+struct NebulaPrecomputed;
+class NebulaRenderer {
+ public:
+  NebulaRenderer(NebulaModel model, const RenderSettings& basisSettings,
+                 const std::function<void(std::size_t, std::size_t)>& progress = {});
+  ~NebulaRenderer();
+  NebulaRenderer(const NebulaRenderer&) = delete;
+  NebulaRenderer& operator=(const NebulaRenderer&) = delete;
+
+  NebulaImage render(const RenderSettings& settings) const;
+  const ExpBasis& basis() const;
+  const GreedyResult& lightBasis() const;
+  const NebulaModel& model() const;
+
+ private:
+  std::unique_ptr<NebulaPrecomputed> mPre;
+};
+
+// Per channel, over pixels whose reference value is at least `floorOfMax` × that channel's
+// maximum: the largest |image − reference| / reference.
+double maxRelativeError(const NebulaImage& image, const NebulaImage& reference, double floorOfMax = 0.01);
+
+}  // namespace prism::nebula

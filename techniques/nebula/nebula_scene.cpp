@@ -1,0 +1,103 @@
+#include "techniques/nebula/nebula_scene.h"
+
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/json_schema.h"
+
+namespace prism::nebula {
+
+namespace {
+
+glm::dvec3 dvec3(const schema::Node& n, const schema::Range& range = schema::Range::any()) {
+  auto v = n.numbers(3, range);
+  return {v[0], v[1], v[2]};
+}
+
+}  // namespace
+
+NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(FileLocation{path.string()}, "cannot open the scene file");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  schema::Document doc{path.string(), {}};
+  nlohmann::json json = schema::parseJson(text, doc.name);
+  schema::Node root(json, "", doc);
+  root.expectObject({"nebula"});
+  schema::Node n = root.child("nebula");
+  n.expectObject({"density", "extinction", "scattering", "emission", "lines", "stars", "star_model", "filters",
+                  "camera", "steps"});
+  NebulaScene scene;
+  NebulaModel& m = scene.model;
+
+  schema::Node density = n.child("density");
+  density.expectObject({"noise", "file"});
+  if (density.has("noise") == density.has("file")) density.fail("give exactly one of 'noise' and 'file'");
+  if (auto noise = density.optionalChild("noise")) {
+    noise->expectObject({"resolution", "octaves", "frequency", "amplitude", "gain", "bias", "seed"});
+    NoiseParameters p;
+    if (noise->has("resolution")) p.resolution = noise->child("resolution").integer(schema::Range::closed(2, 512));
+    if (noise->has("octaves")) p.octaves = noise->child("octaves").integer(schema::Range::closed(1, 16));
+    p.frequency = noise->number("frequency", p.frequency, schema::Range::above(0.0));
+    p.amplitude = noise->number("amplitude", p.amplitude, schema::Range::atLeast(0.0));
+    p.gain = noise->number("gain", p.gain, schema::Range::closed(0.0, 1.0));
+    p.bias = noise->number("bias", p.bias, schema::Range::closed(-10.0, 10.0));
+    if (noise->has("seed")) p.seed = static_cast<std::uint64_t>(noise->child("seed").integer(schema::Range::atLeast(0)));
+    m.density = generateFbm(p, threads);
+  } else {
+    schema::Node file = density.child("file");
+    std::filesystem::path dir = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+    std::filesystem::path resolved;
+    try {
+      resolved = schema::confinedFile(dir, dir, file.string());
+    } catch (const Error& e) {
+      file.fail(e.what());
+    }
+    m.density = readDensityFile(resolved);
+  }
+  m.extinction = n.number("extinction", m.extinction, schema::Range::atLeast(0.0));
+  m.scattering = n.number("scattering", m.scattering, schema::Range::atLeast(0.0));
+  m.emission = n.number("emission", m.emission, schema::Range::atLeast(0.0));
+  if (auto lines = n.optionalChild("lines")) {
+    static const char* const kGroups[] = {"H I Balmer (case B)", "He I (case B)", "[O III] doublet", "[N II] doublet",
+                                          "[S II] doublet", "[O II] doublet", "[O I] doublet"};
+    std::vector<std::string_view> allowed(std::begin(kGroups), std::end(kGroups));
+    lines->expectObject(allowed);
+    for (const std::string& key : lines->keys())
+      m.lineGroups.push_back({key, lines->child(key).number(schema::Range::atLeast(0.0))});
+  }
+  schema::Node stars = n.child("stars");
+  for (std::size_t i = 0; i < stars.arraySize(); ++i) {
+    schema::Node s = stars.element(i);
+    s.expectObject({"position", "temperature", "luminosity"});
+    m.stars.push_back({dvec3(s.child("position"), schema::Range::closed(-100.0, 100.0)),
+                       s.child("temperature").number(schema::Range::closed(1000.0, 100000.0)),
+                       s.number("luminosity", 1.0, schema::Range::atLeast(0.0))});
+  }
+  if (n.has("star_model")) {
+    std::string model = n.child("star_model").string();
+    if (model == "planck") m.starModel = StarModel::Planck;
+    else if (model == "wien") m.starModel = StarModel::Wien;
+    else n.child("star_model").fail("must be 'planck' or 'wien', not '" + excerpt(model) + "'");
+  }
+  if (n.has("filters")) {
+    m.filters = n.child("filters").string();
+    if (m.filters != "hubble" && m.filters != "cie1931")
+      n.child("filters").fail("must be 'hubble' or 'cie1931', not '" + excerpt(m.filters) + "'");
+  }
+  if (auto cam = n.optionalChild("camera")) {
+    cam->expectObject({"position", "target", "fov", "width", "height"});
+    if (cam->has("position")) m.camera.position = dvec3(cam->child("position"), schema::Range::closed(-100.0, 100.0));
+    if (cam->has("target")) m.camera.target = dvec3(cam->child("target"), schema::Range::closed(-100.0, 100.0));
+    m.camera.fovYDeg = cam->number("fov", m.camera.fovYDeg, schema::Range::open(0.0, 180.0));
+    if (cam->has("width")) m.camera.width = cam->child("width").integer(schema::Range::closed(1, 8192));
+    if (cam->has("height")) m.camera.height = cam->child("height").integer(schema::Range::closed(1, 8192));
+    if (glm::length(m.camera.target - m.camera.position) <= 0.0) cam->fail("position and target must differ");
+  }
+  if (n.has("steps")) scene.steps = n.child("steps").integer(schema::Range::closed(1, 100000));
+  return scene;
+}
+
+}  // namespace prism::nebula

@@ -1,0 +1,54 @@
+// Nebula scene files: the example loads; bad values are refused in one line naming the file and
+// the JSON pointer; a density file is read beside the scene.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/data_files.h"
+#include "core/error_test_support.h"
+#include "core/temp_file_test_support.h"
+#include "techniques/nebula/nebula_scene.h"
+
+namespace prism::nebula {
+namespace {
+
+TEST(NebulaScene, TheExampleLoads) {
+  NebulaScene s = loadNebulaScene(exampleSceneDirectory() / "nebula" / "nebula.json");
+  EXPECT_EQ(s.model.density.nx, 64);
+  EXPECT_EQ(s.model.stars.size(), 3u);
+  EXPECT_EQ(s.model.filters, "hubble");
+  EXPECT_EQ(s.steps, 100);
+}
+
+TEST(NebulaScene, BadValuesNameTheirPlace) {
+  auto check = [](const std::string& name, const std::string& text, const std::string& expected) {
+    auto path = writeTempFile(name, text);
+    std::string e = errorOf([&] { loadNebulaScene(path); });
+    EXPECT_EQ(e, path.string() + ": " + expected);
+    EXPECT_EQ(e.find('\n'), std::string::npos);
+  };
+  const std::string noise = R"("density": {"noise": {"resolution": 4}})";
+  check("n1.json", R"({"nebula": {)" + noise + R"(, "stars": [{"position": [0, 0, 0], "temperature": 50}]}})",
+        "/nebula/stars/0/temperature: expected a number in [1000, 100000], got 50");
+  check("n2.json", R"({"nebula": {)" + noise + R"(, "stars": [], "filters": "jwst"}})",
+        "/nebula/filters: must be 'hubble' or 'cie1931', not 'jwst'");
+  check("n3.json", R"({"nebula": {"density": {}, "stars": []}})",
+        "/nebula/density: give exactly one of 'noise' and 'file'");
+  check("n4.json", R"({"nebula": {)" + noise + R"(, "stars": [], "colour": 1}})",
+        "/nebula/colour: unknown key (allowed: density, extinction, scattering, emission, lines, stars, "
+        "star_model, filters, camera, steps)");
+}
+
+TEST(NebulaScene, ADensityFileBesideTheScene) {
+  DensityGrid g{2, 2, 2, std::vector<float>(8, 0.5f)};
+  auto dir = std::filesystem::path(::testing::TempDir());
+  writeDensityFile(dir / "cloud.density", g);
+  auto path = writeTempFile("with_file.json", R"({"nebula": {"density": {"file": "cloud.density"}, "stars": []}})");
+  EXPECT_EQ(loadNebulaScene(path).model.density.values, g.values);
+  auto bad = writeTempFile("with_bad_file.json", R"({"nebula": {"density": {"file": "../x.density"}, "stars": []}})");
+  std::string e = errorOf([&] { loadNebulaScene(bad); });
+  EXPECT_EQ(e.rfind(bad.string() + ": /nebula/density/file: ", 0), 0u) << e;
+}
+
+}  // namespace
+}  // namespace prism::nebula

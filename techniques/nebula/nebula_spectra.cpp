@@ -1,0 +1,214 @@
+#include "techniques/nebula/nebula_spectra.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Dense>
+#include <fmt/format.h>
+
+#include "core/csv.h"
+#include "core/data_files.h"
+#include "core/error.h"
+#include "spectral/observer.h"
+
+namespace prism::nebula {
+
+double PolynomialPiece::at(double lambdaUm) const {
+  if (lambdaUm < lambda0Um || lambdaUm > lambda1Um) return 0.0;
+  double v = 0.0;
+  for (int n = kMaxDegree; n >= 0; --n) v = v * lambdaUm + coeffs[static_cast<std::size_t>(n)];
+  return v;
+}
+
+double PiecewisePolynomial::at(double lambdaUm) const {
+  for (const auto& p : pieces)
+    if (lambdaUm >= p.lambda0Um && lambdaUm <= p.lambda1Um) return p.at(lambdaUm);
+  return 0.0;
+}
+
+PiecewisePolynomial fitPiecewisePolynomial(std::span<const double> lambdaUm, std::span<const double> values,
+                                           double loUm, double hiUm, int pieceCount, int degree) {
+  PRISM_CHECK(lambdaUm.size() == values.size() && pieceCount >= 1 && degree >= 0 && degree <= kMaxDegree);
+  PiecewisePolynomial result;
+  for (int p = 0; p < pieceCount; ++p) {
+    double a = loUm + (hiUm - loUm) * p / pieceCount, b = loUm + (hiUm - loUm) * (p + 1) / pieceCount;
+    double c = 0.5 * (a + b), h = 0.5 * (b - a);
+    std::vector<std::pair<double, double>> rows;
+    for (std::size_t i = 0; i < lambdaUm.size(); ++i)
+      if (lambdaUm[i] >= a && lambdaUm[i] <= b) rows.emplace_back((lambdaUm[i] - c) / h, values[i]);
+    PRISM_CHECK(static_cast<int>(rows.size()) > degree);
+    Eigen::MatrixXd A(static_cast<Eigen::Index>(rows.size()), degree + 1);
+    Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      double s = 1.0;
+      for (int k = 0; k <= degree; ++k, s *= rows[r].first) A(static_cast<Eigen::Index>(r), k) = s;
+      y(static_cast<Eigen::Index>(r)) = rows[r].second;
+    }
+    Eigen::VectorXd q = A.colPivHouseholderQr().solve(y);
+    // q in s = (λ − c)/h; expand Σ q_k (λ − c)^k / h^k into powers of λ.
+    PolynomialPiece piece{a, b, {}};
+    for (int k = 0; k <= degree; ++k) {
+      double scale = q(k) / std::pow(h, k);
+      double binom = 1.0;
+      for (int j = 0; j <= k; ++j) {  // (λ − c)^k = Σ_j C(k,j) λ^j (−c)^(k−j)
+        piece.coeffs[static_cast<std::size_t>(j)] += scale * binom * std::pow(-c, k - j);
+        binom = binom * (k - j) / (j + 1);
+      }
+    }
+    result.pieces.push_back(piece);
+  }
+  return result;
+}
+
+PolynomialPiece multiply(const PolynomialPiece& a, const PolynomialPiece& b) {
+  PolynomialPiece r{a.lambda0Um, a.lambda1Um, {}};
+  for (std::size_t i = 0; i <= kMaxDegree; ++i)
+    for (std::size_t j = 0; j <= kMaxDegree; ++j) {
+      if (a.coeffs[i] == 0.0 || b.coeffs[j] == 0.0) continue;
+      PRISM_CHECK(i + j <= kMaxDegree);
+      r.coeffs[i + j] += a.coeffs[i] * b.coeffs[j];
+    }
+  return r;
+}
+
+PiecewisePolynomial multiply(const PiecewisePolynomial& a, const PiecewisePolynomial& b) {
+  PiecewisePolynomial r;
+  for (const auto& pa : a.pieces)
+    for (const auto& pb : b.pieces) {
+      double lo = std::max(pa.lambda0Um, pb.lambda0Um), hi = std::min(pa.lambda1Um, pb.lambda1Um);
+      if (hi <= lo) continue;
+      PolynomialPiece piece = multiply(pa, pb);
+      piece.lambda0Um = lo;
+      piece.lambda1Um = hi;
+      r.pieces.push_back(piece);
+    }
+  return r;
+}
+
+namespace {
+
+Passband fitPassband(std::string name, const std::vector<double>& lambdaUm, const std::vector<double>& values,
+                     double loUm, double hiUm, int pieces) {
+  Passband band{std::move(name), fitPiecewisePolynomial(lambdaUm, values, loUm, hiUm, pieces, 2), 0.0};
+  double peak = *std::max_element(values.begin(), values.end()), worst = 0.0;
+  for (std::size_t i = 0; i < lambdaUm.size(); ++i)
+    if (lambdaUm[i] >= loUm && lambdaUm[i] <= hiUm)
+      worst = std::max(worst, std::abs(band.response.at(lambdaUm[i]) - values[i]));
+  band.fitMaxErrorOfPeak = worst / peak;
+  return band;
+}
+
+}  // namespace
+
+FilterSet hubblePalette(const std::filesystem::path& hstCsv) {
+  CsvTable table = CsvTable::read(hstCsv);
+  int lambdaCol = table.column("wavelength_nm"), filterCol = table.column("filter"),
+      valueCol = table.column("throughput");
+  FilterSet set{"hubble", {}};
+  const char* names[3] = {"FQ672N", "F656N", "F502N"};
+  for (std::size_t c = 0; c < 3; ++c) {
+    std::vector<double> lambdaUm, values;
+    for (const auto& row : table.rows()) {
+      if (row.fields[static_cast<std::size_t>(filterCol)] != names[c]) continue;
+      lambdaUm.push_back(table.number(row, lambdaCol) * 1e-3);
+      values.push_back(table.number(row, valueCol));
+    }
+    if (lambdaUm.size() < 12)
+      throw Error(FileLocation{table.path()}, fmt::format("filter {}: {} samples, need at least 12", names[c], lambdaUm.size()));
+    set.channels[c] = fitPassband(names[c], lambdaUm, values, lambdaUm.front(), lambdaUm.back(),
+                                  std::min(12, static_cast<int>(lambdaUm.size()) / 4));
+  }
+  return set;
+}
+
+FilterSet cieFilterSet() {
+  const Observer& obs = cie1931Observer();
+  FilterSet set{"cie1931", {}};
+  const char* names[3] = {"x_bar", "y_bar", "z_bar"};
+  std::vector<double> lambdaUm;
+  for (int nm = 380; nm <= 780; ++nm) lambdaUm.push_back(nm * 1e-3);
+  for (std::size_t c = 0; c < 3; ++c) {
+    std::vector<double> values;
+    for (double l : lambdaUm) values.push_back(obs.at(l * 1e3)[static_cast<Eigen::Index>(c)]);
+    set.channels[c] = fitPassband(names[c], lambdaUm, values, kBandLoUm, kBandHiUm, 16);
+  }
+  return set;
+}
+
+FilterSet filterSet(std::string_view name) {
+  if (name == "hubble") return hubblePalette(dataFile("hst_wfc3_uvis_filters.csv"));
+  if (name == "cie1931") return cieFilterSet();
+  throw Error(fmt::format("unknown filter set '{}' (hubble, cie1931)", excerpt(name)));
+}
+
+namespace {
+constexpr double kHcOverKUmK = 14387.768775;  // hc/k in µm·K (CODATA 2018)
+}
+
+double planck(double lambdaUm, double temperatureK) {
+  return std::pow(lambdaUm, -5.0) / std::expm1(kHcOverKUmK / (lambdaUm * temperatureK));
+}
+
+double wien(double lambdaUm, double temperatureK) {
+  return std::pow(lambdaUm, -5.0) * std::exp(-kHcOverKUmK / (lambdaUm * temperatureK));
+}
+
+double StarSpectrum::at(double lambdaUm) const {
+  return normalisation * (model == StarModel::Planck ? planck(lambdaUm, temperatureK) : wien(lambdaUm, temperatureK));
+}
+
+StarSpectrum makeStarSpectrum(double temperatureK, StarModel model) {
+  StarSpectrum s;
+  s.temperatureK = temperatureK;
+  s.model = model;
+  std::vector<double> nodes, weights;
+  gaussLegendre(48, kBandLoUm, kBandHiUm, nodes, weights);
+  double integral = 0.0;
+  for (std::size_t i = 0; i < nodes.size(); ++i) integral += weights[i] * s.at(nodes[i]);
+  s.normalisation = 1.0 / integral;
+  std::vector<double> lambdaUm, values;
+  for (int i = 0; i <= 400; ++i) {
+    lambdaUm.push_back(kBandLoUm + (kBandHiUm - kBandLoUm) * i / 400.0);
+    values.push_back(s.at(lambdaUm.back()));
+  }
+  s.fit = fitPiecewisePolynomial(lambdaUm, values, kBandLoUm, kBandHiUm, 2, 5);
+  for (std::size_t i = 0; i < lambdaUm.size(); ++i)
+    s.fitMaxRelativeError = std::max(s.fitMaxRelativeError, std::abs(s.fit.at(lambdaUm[i]) / values[i] - 1.0));
+  return s;
+}
+
+std::vector<EmissionLine> readEmissionLines(const std::filesystem::path& csv) {
+  CsvTable table = CsvTable::read(csv);
+  int lambdaCol = table.column("wavelength_nm"), nameCol = table.column("line"), groupCol = table.column("group"),
+      ratioCol = table.column("ratio");
+  std::vector<EmissionLine> lines;
+  for (const auto& row : table.rows())
+    lines.push_back({row.fields[static_cast<std::size_t>(nameCol)], row.fields[static_cast<std::size_t>(groupCol)],
+                     table.number(row, lambdaCol) * 1e-3, table.number(row, ratioCol)});
+  return lines;
+}
+
+void gaussLegendre(int n, double a, double b, std::vector<double>& nodes, std::vector<double>& weights) {
+  nodes.assign(static_cast<std::size_t>(n), 0.0);
+  weights.assign(static_cast<std::size_t>(n), 0.0);
+  for (int i = 0; i < n; ++i) {  // Newton on Pₙ from Chebyshev's guess (Numerical Recipes §4.6)
+    double x = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 0.0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1.0, p1 = 0.0;
+      for (int k = 1; k <= n; ++k) {
+        double p2 = p1;
+        p1 = p0;
+        p0 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p2) / k;
+      }
+      dp = n * (x * p0 - p1) / (x * x - 1.0);
+      double dx = p0 / dp;
+      x -= dx;
+      if (std::abs(dx) < 1e-15) break;
+    }
+    nodes[static_cast<std::size_t>(i)] = 0.5 * (a + b) - 0.5 * (b - a) * x;
+    weights[static_cast<std::size_t>(i)] = (b - a) / ((1.0 - x * x) * dp * dp);
+  }
+}
+
+}  // namespace prism::nebula

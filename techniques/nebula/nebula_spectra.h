@@ -1,0 +1,104 @@
+// The spectral inputs of the nebula model (Barrès 2023, §3): stars' spectra, emission lines,
+// passbands and their polynomial fits. Wavelengths are in µm throughout (the model's C_T and its
+// exponent e^(−g/λ) are in µm); the files give nm.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace prism::nebula {
+
+// The attenuation's wavelength scale: τ(λ) = τ·C_T/λ (Barrès 2023, Eq. 2; valid above 0.25 µm).
+inline constexpr double kCtUm = 0.56;
+// The band a render integrates over (the visible; the filters and CIE curves live inside it).
+inline constexpr double kBandLoUm = 0.38;
+inline constexpr double kBandHiUm = 0.78;
+// The highest polynomial degree the shared integrals take (nebula_integrals.glsl: 8 coefficients).
+inline constexpr int kMaxDegree = 7;
+
+// A polynomial Σ cₙλⁿ (λ in µm) on [lambda0Um, lambda1Um], zero outside.
+struct PolynomialPiece {
+  double lambda0Um = 0.0;
+  double lambda1Um = 0.0;
+  std::array<double, kMaxDegree + 1> coeffs{};
+  double at(double lambdaUm) const;
+};
+
+// Pieces on adjacent intervals; zero outside them.
+struct PiecewisePolynomial {
+  std::vector<PolynomialPiece> pieces;
+  double at(double lambdaUm) const;
+  double lambdaMinUm() const { return pieces.front().lambda0Um; }
+  double lambdaMaxUm() const { return pieces.back().lambda1Um; }
+};
+
+// Least-squares fit of samples (λ in µm, value) over [loUm, hiUm] by `pieceCount` equal pieces of
+// degree `degree`, each solved in the piece's own variable s ∈ [−1, 1] (well conditioned) and
+// expanded to powers of λ in double.
+PiecewisePolynomial fitPiecewisePolynomial(std::span<const double> lambdaUm, std::span<const double> values,
+                                           double loUm, double hiUm, int pieceCount, int degree);
+
+// The product of two polynomials (degrees adding up to ≤ kMaxDegree), on a's interval; and of two
+// piecewise ones, on the intersections of their pieces.
+PolynomialPiece multiply(const PolynomialPiece& a, const PolynomialPiece& b);
+PiecewisePolynomial multiply(const PiecewisePolynomial& a, const PiecewisePolynomial& b);
+
+// A passband fitted by a piecewise polynomial P_S, and the fit's worst error (fraction of peak).
+struct Passband {
+  std::string name;
+  PiecewisePolynomial response;
+  double fitMaxErrorOfPeak = 0.0;
+};
+
+// Three passbands that make a pixel's three channels.
+struct FilterSet {
+  std::string name;  // "hubble" or "cie1931"
+  std::array<Passband, 3> channels;
+};
+
+// The Hubble palette from data/hst_wfc3_uvis_filters.csv: [S II] → R (FQ672N: F673N is not in
+// the data), Hα → G (F656N), [O III] → B (F502N); each fitted by quadratic pieces over its band (12, or one per 4 samples if fewer).
+FilterSet hubblePalette(const std::filesystem::path& hstCsv);
+// CIE 1931 x̄ ȳ z̄ (prism::cie1931Observer) over the band, each by 16 quadratic pieces.
+FilterSet cieFilterSet();
+// By name ("hubble", "cie1931"); Error naming it when unknown.
+FilterSet filterSet(std::string_view name);
+
+// Spectral radiance shapes of a star of temperature T (K) at λ (µm), up to a constant:
+// Planck's B(λ,T) ∝ λ⁻⁵/(e^(hc/λkT) − 1), and Wien's approximation A/λ⁵·e^(−B/λ), B = hc/kT.
+double planck(double lambdaUm, double temperatureK);
+double wien(double lambdaUm, double temperatureK);
+
+enum class StarModel { Planck, Wien };
+
+// A star's spectrum over the band, normalised to ∫ S dλ = 1 over [kBandLoUm, kBandHiUm] (µm⁻¹),
+// and its fit P_L: two quintic pieces (a quadratic filter piece times one stays within the shared
+// integrals' degree 7), which the analytic method integrates.
+struct StarSpectrum {
+  double temperatureK = 5800.0;
+  StarModel model = StarModel::Planck;
+  double normalisation = 1.0;  // 1 / ∫ shape dλ
+  PiecewisePolynomial fit;
+  double fitMaxRelativeError = 0.0;
+  double at(double lambdaUm) const;
+};
+StarSpectrum makeStarSpectrum(double temperatureK, StarModel model);
+
+// An emission line of ionised gas: a Dirac at λ (vacuum, µm) with a weight.
+struct EmissionLine {
+  std::string name;
+  std::string group;
+  double lambdaUm = 0.0;
+  double ratio = 1.0;  // within its group, from the data
+};
+// data/nebula_lines.csv.
+std::vector<EmissionLine> readEmissionLines(const std::filesystem::path& csv);
+
+// Gauss–Legendre nodes and weights on [a, b].
+void gaussLegendre(int n, double a, double b, std::vector<double>& nodes, std::vector<double>& weights);
+
+}  // namespace prism::nebula

@@ -33,10 +33,13 @@ struct FileLocation {
 };
 
 // A user's text as a message quotes it: whole up to `max` characters, else its first
-// characters and "..." (a 5 MB name is not echoed whole).
+// characters and "..." (a 5 MB name is not echoed whole); control characters (a file's bytes
+// quoted by a decoder, a line break) become '?', so the message stays one line.
 inline std::string excerpt(std::string_view text, std::size_t max = 80) {
-  if (text.size() <= max) return std::string(text);
-  return std::string(text.substr(0, max - 3)) + "...";
+  std::string quoted(text.size() <= max ? text : text.substr(0, max - 3));
+  for (char& c : quoted)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  return text.size() <= max ? quoted : quoted + "...";
 }
 
 class Error : public std::runtime_error {

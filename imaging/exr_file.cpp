@@ -15,6 +15,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -45,7 +48,43 @@ bool sameChromaticities(const Imf::Chromaticities& a, const Imf::Chromaticities&
 
 std::string oneLine(std::string text) {
   std::replace(text.begin(), text.end(), '\n', ' ');
-  return text;
+  return excerpt(text, 200);
+}
+
+// OpenEXR trusts an attribute's stated size: a 793-byte file claiming a 1.6 GB attribute kept it
+// busy for seconds (found by fuzzing). The first header's attributes (name, type, size, value;
+// an empty name ends it) must each fit in what is left of the file.
+void checkHeaderSizes(const std::filesystem::path& path) {
+  std::vector<unsigned char> bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return;  // OpenEXR reports it
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  std::size_t at = 8;  // magic number and version
+  auto readString = [&](const char* what) {
+    std::size_t end = at;
+    while (end < bytes.size() && bytes[end] != 0 && end - at < 256) ++end;
+    if (end >= bytes.size() || bytes[end] != 0)
+      throw Error(path.string() + ": malformed EXR header: an attribute's " + what + " does not end");
+    std::string text(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.begin() + static_cast<std::ptrdiff_t>(end));
+    at = end + 1;
+    return text;
+  };
+  while (at < bytes.size()) {
+    std::string name = readString("name");
+    if (name.empty()) return;
+    readString("type");
+    if (bytes.size() - at < 4) throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' has no size");
+    std::int64_t size = static_cast<std::int32_t>(bytes[at] | bytes[at + 1] << 8 | bytes[at + 2] << 16 |
+                                                  static_cast<std::uint32_t>(bytes[at + 3]) << 24);
+    at += 4;
+    if (size < 0 || static_cast<std::uint64_t>(size) > bytes.size() - at) {
+      throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' claims " +
+                  std::to_string(size) + " bytes, " + std::to_string(bytes.size() - at) + " are left");
+    }
+    at += static_cast<std::size_t>(size);
+  }
 }
 
 std::vector<std::string> channelNamesToWrite(const FloatImage& image, const ExrWriteOptions& options) {
@@ -116,6 +155,7 @@ void writeExr(const std::filesystem::path& path, const FloatImage& image, const 
 
 ExrImage readExr(const std::filesystem::path& path) {
   try {
+    checkHeaderSizes(path);
     Imf::InputFile file(path.c_str());
     const Imf::Header& header = file.header();
     const Imf::ChannelList& channels = header.channels();
@@ -138,8 +178,14 @@ ExrImage readExr(const std::filesystem::path& path) {
     if (names.size() == 3 && has("A")) names.push_back("A");
 
     const Imath::Box2i dataWindow = header.dataWindow();
-    const int width = dataWindow.max.x - dataWindow.min.x + 1;
-    const int height = dataWindow.max.y - dataWindow.min.y + 1;
+    const std::int64_t wide = std::int64_t{dataWindow.max.x} - dataWindow.min.x + 1;
+    const std::int64_t high = std::int64_t{dataWindow.max.y} - dataWindow.min.y + 1;
+    if (wide < 1 || high < 1 || wide > kMaxExrSide || high > kMaxExrSide) {
+      throw Error(path.string() + ": an image of " + std::to_string(wide) + " × " + std::to_string(high) +
+                  " pixels; Prism reads 1 to " + std::to_string(kMaxExrSide) + " on each side");
+    }
+    const int width = static_cast<int>(wide);
+    const int height = static_cast<int>(high);
     ExrImage out;
     out.image = FloatImage(width, height, static_cast<int>(names.size()));
     const std::size_t xStride = sizeof(float) * names.size();

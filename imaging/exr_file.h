@@ -45,11 +45,15 @@ struct ExrImage {
   std::optional<double> displayWhite;  // kDisplayWhiteAttribute, when the file has it
 };
 
+// The largest side readExr takes (what `prism render` can write: its --width/--height limit).
+inline constexpr int kMaxExrSide = 16384;
+
 // Reads R, G, B (+ A), else X, Y, Z (+ A), else Y alone as one channel, in any pixel type, as
 // float. The meaning is "prism:colour" when present, else told by the chromaticities (Rec. 709
 // with D65 → linear-srgb; the XYZ convention → xyz; anything else → other-rgb), else xyz for X,
 // Y, Z channels, else linear-srgb (OpenEXR's default for files without chromaticities).
-// Error naming the file, on one line, when it cannot.
+// Error naming the file, on one line, when it cannot: also for a header attribute larger than the
+// file and for an image wider or higher than kMaxExrSide.
 ExrImage readExr(const std::filesystem::path& path);
 
 }  // namespace prism::imaging

@@ -107,7 +107,8 @@ PngImage readPng8(const std::filesystem::path& path) {
   int width = 0, height = 0, fileChannels = 0;
   stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                                           static_cast<int>(bytes.size()), &width, &height, &fileChannels, 4);
-  if (!pixels) throw Error(path.string() + ": not a readable image: " + stbi_failure_reason());
+  // stb's reason may quote the file's bytes (an unknown chunk's type).
+  if (!pixels) throw Error(path.string() + ": not a readable image: " + excerpt(stbi_failure_reason()));
   PngImage image;
   image.mWidth = width;
   image.mHeight = height;

@@ -30,7 +30,7 @@ parallel=()
 # More than one job: libFuzzer's workers, each logging to build/fuzz/fuzz-N.log.
 [ "$jobs" -gt 1 ] && parallel=(-jobs="$jobs" -workers="$jobs")
 # Every loader's limits (core/json_schema.h, the README's "Limits and errors") keep one input's
-# work small; 2 GB of memory and 10 s an input are libFuzzer's signs of unbounded work.
+# work small; 4 GB of memory and 10 s an input are libFuzzer's signs of unbounded work.
 exec "build/fuzz/fuzz/${target}_fuzz" "$work" "fuzz/corpus/$target" "${dict[@]}" "${parallel[@]}" \
-  -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 \
+  -max_total_time="$seconds" -rss_limit_mb=4096 -timeout=10 \
   -max_len=65536 -artifact_prefix=build/fuzz/crashes/ -print_final_stats=1

@@ -333,3 +333,43 @@ TEST(Cli, ReferenceWritesWhatCompareReads) {
   ASSERT_EQ(same.exitCode, 0) << same.err;
   EXPECT_NE(same.out.find("mean 0.0000"), std::string::npos) << same.out;
 }
+
+TEST(Cli, PrtCommandsCheckTheirInput) {
+  std::filesystem::path text = writeTemp("model.txt", "not a model");
+  expectOneLineError("prt bake " + (std::filesystem::path(::testing::TempDir()) / "missing.json").string(), "missing.json");
+  expectOneLineError("prt bake " + text.string(), "model.txt");
+  expectOneLineError("prt bake " + std::string(PRISM_SCENES_DIR) + "/spheres_d65.json --samples 0", "samples");
+  expectOneLineError("prt report --environment cloudy", "--environment");
+  expectOneLineError("prt report --illuminant F99", "F99");
+  expectOneLineError("colour metamer --reflectance 'no such patch'", "no such patch");
+}
+
+TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
+  // Small sizes: the commands' plumbing, not the numbers (prt_test holds those).
+  std::string cache = "PRISM_CACHE_DIR=" + (std::filesystem::path(::testing::TempDir()) / "prt_cli_cache").string();
+  std::filesystem::remove_all(std::filesystem::path(::testing::TempDir()) / "prt_cli_cache");
+  std::string scene = std::string(PRISM_SCENES_DIR) + "/spheres_d65.json";
+  Result first = run("prt bake " + scene + " --samples 16", cache);
+  ASSERT_EQ(first.exitCode, 0) << first.err;
+  EXPECT_NE(first.out.find("rays/s"), std::string::npos) << first.out;
+  Result second = run("prt bake " + scene + " --samples 16", cache);
+  ASSERT_EQ(second.exitCode, 0) << second.err;
+  EXPECT_NE(second.out.find("from the cache"), std::string::npos) << second.out;
+
+  std::filesystem::path ply = std::filesystem::path(::testing::TempDir()) / "prt" / "checker.ply";
+  Result report = run("prt report --patch-vertices 4 --samples 32 --json --colours " + ply.string(), cache);
+  ASSERT_EQ(report.exitCode, 0) << report.err;
+  auto json = nlohmann::json::parse(report.out);
+  EXPECT_EQ(json["spectral"].size(), 16u);
+  EXPECT_GT(json["rgb_prt"]["mean_de94"].get<double>(), 0.0);
+  EXPECT_EQ(slurp(ply).rfind("ply\n", 0), 0u);
+}
+
+TEST(Cli, ColourMetamerMatchesUnderD65AndNotUnderA) {
+  Result r = run("colour metamer --reflectance 'dark skin' --under D65,A,F2 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto json = nlohmann::json::parse(r.out);
+  EXPECT_LE(json["delta_e2000"]["D65"].get<double>(), 0.5);
+  EXPECT_GE(json["delta_e2000"]["A"].get<double>(), 5.0);
+  EXPECT_TRUE(json["delta_e2000"].contains("F2"));
+}

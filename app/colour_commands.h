@@ -57,6 +57,20 @@ struct CameraMatrixOptions {
 };
 void colourCameraMatrix(const CameraMatrixOptions& options);
 
+// A metamer of a reflectance (a ColorChecker patch by name, or a spectral CSV): the same colour
+// under `match`, as different as possible under `target` (techniques/prt/metamer.h); prints its
+// CIEDE2000 from the original under each illuminant of `under`, and writes it as CSV when asked.
+struct MetamerOptions {
+  std::string reflectance;
+  std::string match = "D65";
+  std::string target = "A";
+  std::vector<std::string> under{"D65", "A", "F2"};
+  std::string observer = "cie1931";
+  std::string output;  // CSV wavelength_nm,reflectance at 1 nm (360–830)
+  bool json = false;
+};
+void colourMetamer(const MetamerOptions& options);
+
 // what: illuminants | observers | cameras | spaces
 void colourList(const std::string& what, bool json);
 

@@ -1,0 +1,31 @@
+// `prism prt …`: spectral precomputed radiance transfer (techniques/prt). Each command writes its
+// result to stdout and throws prism::Error on bad input; files are written atomically.
+#pragma once
+
+#include <string>
+
+namespace prism::app {
+
+struct PrtBakeOptions {
+  std::string input;       // a scene (.json) or a glTF model (.gltf, .glb)
+  int samples = 1024;      // directions per vertex
+  bool shadows = true;
+  std::string cacheDir;    // default: Prism's cache folder
+};
+// Bakes (or reads from the cache) the SH-5 transfer of every vertex of the input's meshes, all
+// meshes occluding each other; prints what it did and the rays per second.
+void runPrtBake(const PrtBakeOptions& options);
+
+struct PrtReportOptions {
+  std::string illuminant = "F4";
+  std::string environment = "sky";  // sky | uniform
+  int patchVertices = 16;           // vertices along each side of a ColorChecker patch
+  int samples = 1024;
+  std::string coloursFile;          // optional: the reference's per-vertex display colours as a PLY
+  bool json = false;
+};
+// The ColorChecker object under a spectral environment: spectral PRT for m = 1..16 and RGB-PRT
+// against the 5 nm reference, mean and max ΔE94 and ΔE00 over the vertices.
+void runPrtReport(const PrtReportOptions& options);
+
+}  // namespace prism::app

@@ -74,6 +74,42 @@ SpectralEnvironment skyGradientEnvironment(std::string name, const Spectrum& spd
           {{spd, zonal([ground](double z) { return z >= 0.0 ? (1.0 + 2.0 * z) / 3.0 : ground; })}}};
 }
 
+SpectralEnvironment equirectangularEnvironment(std::string name, int width, int height,
+                                               const std::vector<float>& linearRgb,
+                                               const std::function<Spectrum(const glm::vec3& rgb)>& toSpectrum) {
+  if (width < 1 || height < 1 || linearRgb.size() != 3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+    throw Error(fmt::format("{}: {} values for a {} × {} RGB map", name, linearRgb.size(), width, height));
+  const double pi = std::numbers::pi;
+  Eigen::MatrixXd grid = Eigen::MatrixXd::Zero(kGridWavelengths, 25);
+  for (int y = 0; y < height; ++y) {
+    double theta0 = pi * y / height, theta1 = pi * (y + 1) / height, theta = 0.5 * (theta0 + theta1);
+    double solidAngle = 2.0 * pi / width * (std::cos(theta0) - std::cos(theta1));
+    for (int x = 0; x < width; ++x) {
+      std::size_t at = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x));
+      glm::vec3 rgb(linearRgb[at], linearRgb[at + 1], linearRgb[at + 2]);
+      for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(rgb[c]) || rgb[c] < 0.0f)
+          throw Error(fmt::format("{}: texel ({}, {}): channel {} is {}, not a finite non-negative radiance", name, x, y, c,
+                                  rgb[c]));
+      if (rgb == glm::vec3(0.0f)) continue;
+      double phi = 2.0 * pi * (x + 0.5) / width;
+      glm::dvec3 dir(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+      grid += sampleOnGrid(toSpectrum(rgb)) * (solidAngle * evaluateSh(dir)).transpose();
+    }
+  }
+  SpectralEnvironment environment{std::move(name), {}};
+  for (int k = 0; k < 25; ++k) {
+    Eigen::VectorXd column = grid.col(k);
+    Spectrum s = Spectrum::fromFunction([&column](double lambdaNm) {
+      double t = std::clamp((lambdaNm - kGridMinNm) / kGridStepNm, 0.0, kGridWavelengths - 1.0);
+      int i = std::min(static_cast<int>(t), kGridWavelengths - 2);
+      return (1.0 - (t - i)) * column[i] + (t - i) * column[i + 1];
+    });
+    environment.terms.push_back({s, ShVector::Unit(k)});
+  }
+  return environment;
+}
+
 SpectralEnvironment rotateEnvironment(const SpectralEnvironment& environment, const glm::dmat3& rotation) {
   ShRotation d = shRotation(rotation);
   SpectralEnvironment turned = environment;

@@ -13,6 +13,7 @@
 // unshadowed. For display, Bradford adaptation from that white to the display's.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,15 @@ SpectralEnvironment uniformEnvironment(std::string name, const Spectrum& spd);
 // 2 cos θ)/3) above the horizon, with L_z = spd, and below it a grey ground of albedo
 // `groundAlbedo` lit by that sky (radiance albedo·E_h/π, E_h = 7π/9·L_z).
 SpectralEnvironment skyGradientEnvironment(std::string name, const Spectrum& spd, double groundAlbedo = 0.2);
+// An equirectangular map (row 0 at the zenith +z, u = φ/2π from +x towards +y), linear RGB per
+// texel as `width × height` triples, each texel upsampled by `toSpectrum` (Prism's unbounded RGB
+// intent: RgbUnboundedSpectrum(table, rgb).toDense()) and projected with its exact solid angle
+// (2π/width)·(cos θ0 − cos θ1). Held as 25 terms, the spectrum of each SH coefficient on the 5 nm
+// grid (linear between grid wavelengths), so rotation and the basis's columns work as for the
+// analytic environments. Error "SOURCE: texel (x, y): …" for a negative or non-finite value.
+SpectralEnvironment equirectangularEnvironment(std::string name, int width, int height,
+                                               const std::vector<float>& linearRgb,
+                                               const std::function<Spectrum(const glm::vec3& rgb)>& toSpectrum);
 // Turned by R (orthonormal, det +1) through the SH rotation: no projection again.
 SpectralEnvironment rotateEnvironment(const SpectralEnvironment& environment, const glm::dmat3& rotation);
 // L_ik = Σ_t S_t(λ_i) g_tk on the 5 nm grid: 81 × 25.

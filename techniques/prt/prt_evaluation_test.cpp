@@ -1,5 +1,8 @@
 // Spectral PRT against its 5 nm reference and RGB-PRT, the environments, the spectral basis.
 #include <cmath>
+#include <array>
+#include <limits>
+#include <map>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -7,6 +10,7 @@
 #include "core/error.h"
 #include "spectral/illuminant.h"
 #include "spectral/colour_checker.h"
+#include "spectral/rgb_intent.h"
 #include "techniques/prt/metamer.h"
 #include "techniques/prt/prt_evaluation.h"
 
@@ -128,6 +132,35 @@ TEST(Environment, RotationTurnsTheSkyWithoutProjectingAgain) {
   SpectralEnvironment uniform = uniformEnvironment("E", Spectrum::constant(1.0));
   ShVector u = rotateEnvironment(uniform, glm::dmat3(0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0)).terms[0].directional;
   EXPECT_LT((u - uniform.terms[0].directional).cwiseAbs().maxCoeff(), 1e-6);
+}
+
+TEST(Environment, AConstantEquirectangularMapIsUniform) {
+  // Every texel the same colour: the DC coefficient's spectrum is 4π·Y_00·S = 2√π·S (the texels'
+  // solid angles sum to 4π exactly; float basis, 1e-6), the higher bands vanish but for the
+  // midpoint rule in θ (32 rows: ~1e-3 of the DC).
+  const glm::vec3 colour(0.5f, 0.3f, 0.2f);
+  std::map<std::array<float, 3>, Spectrum> memo;
+  auto toSpectrum = [&memo](const glm::vec3& rgb) {
+    auto key = std::array<float, 3>{rgb.x, rgb.y, rgb.z};
+    auto it = memo.find(key);
+    if (it == memo.end()) it = memo.emplace(key, RgbUnboundedSpectrum::fitted(colourSpace("srgb"), rgb).toDense()).first;
+    return it->second;
+  };
+  std::vector<float> rgb;
+  for (int i = 0; i < 64 * 32; ++i) rgb.insert(rgb.end(), {colour.x, colour.y, colour.z});
+  SpectralEnvironment map = equirectangularEnvironment("constant.exr", 64, 32, rgb, toSpectrum);
+  Eigen::MatrixXd grid = environmentOnGrid(map);
+  Eigen::VectorXd expect = 2.0 * std::sqrt(std::numbers::pi) * sampleOnGrid(toSpectrum(colour));
+  EXPECT_LT((grid.col(0) - expect).cwiseAbs().maxCoeff(), 1e-6 * expect.cwiseAbs().maxCoeff());
+  for (int k = 1; k < 25; ++k) EXPECT_LT(grid.col(k).cwiseAbs().maxCoeff(), 2e-3 * expect.cwiseAbs().maxCoeff()) << k;
+  // A broken texel is named.
+  rgb[3 * (5 * 64 + 7) + 1] = std::numeric_limits<float>::quiet_NaN();
+  try {
+    equirectangularEnvironment("bad.exr", 64, 32, rgb, toSpectrum);
+    ADD_FAILURE() << "a NaN texel was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.exr: texel (7, 5)"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Display, SceneWhiteBecomesTheDisplaysWhite) {

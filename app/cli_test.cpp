@@ -373,3 +373,29 @@ TEST(Cli, ColourMetamerMatchesUnderD65AndNotUnderA) {
   EXPECT_GE(json["delta_e2000"]["A"].get<double>(), 5.0);
   EXPECT_TRUE(json["delta_e2000"].contains("F2"));
 }
+
+TEST(Cli, PrtReportTakesAnEquirectangularExr) {
+  // A sky-like map (bright bluish top, dark warm bottom); the renderers' sRGB table from the
+  // tests' shared cache. A NaN texel and an XYZ file are one-line errors naming them.
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "prt_exr";
+  prism::imaging::FloatImage map(32, 16, 3);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 32; ++x) {
+      bool sky = y < 8;
+      map.at(x, y, 0) = sky ? 0.6f : 0.2f;
+      map.at(x, y, 1) = sky ? 0.8f : 0.15f;
+      map.at(x, y, 2) = sky ? 1.2f : 0.1f;
+    }
+  prism::imaging::writeExr(dir / "sky.exr", map);
+  Result r = run("prt report --patch-vertices 4 --samples 32 --json --exr " + (dir / "sky.exr").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto json = nlohmann::json::parse(r.out);
+  EXPECT_EQ(json["spectral"].size(), 16u);
+  EXPECT_NE(json["environment"].get<std::string>().find("sky.exr"), std::string::npos);
+
+  map.at(3, 2, 1) = std::numeric_limits<float>::quiet_NaN();
+  prism::imaging::writeExr(dir / "nan.exr", map);
+  expectOneLineError("prt report --exr " + (dir / "nan.exr").string(), "nan.exr: texel (3, 2)");
+  prism::imaging::writeExr(dir / "xyz.exr", map, {.colour = prism::imaging::ColourMeaning::Xyz});
+  expectOneLineError("prt report --exr " + (dir / "xyz.exr").string(), "linear sRGB");
+}

@@ -9,9 +9,11 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "harness/progress_bar.h"
+#include "imaging/exr_file.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
+#include "spectral/rgb_intent.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 #include "techniques/prt/prt_evaluation.h"
 
@@ -103,7 +105,23 @@ void runPrtReport(const PrtReportOptions& o) {
   checkSamples(o.samples);
   Spectrum spd = illuminant(o.illuminant);
   prt::SpectralEnvironment environment;
-  if (o.environment == "sky") {
+  if (!o.exr.empty()) {
+    imaging::ExrImage map = imaging::readExr(o.exr);
+    if (map.colour != imaging::ColourMeaning::LinearSrgb || map.image.channels < 3)
+      throw Error(o.exr + ": an environment map must be linear sRGB (Rec. 709, D65) RGB, not " +
+                  std::string(imaging::colourMeaningName(map.colour)) + " with " + std::to_string(map.image.channels) +
+                  " channel(s)");
+    std::vector<float> rgb;
+    rgb.reserve(3 * map.image.pixelCount());
+    for (int y = 0; y < map.image.height; ++y)
+      for (int x = 0; x < map.image.width; ++x)
+        for (int c = 0; c < 3; ++c) rgb.push_back(map.image.at(x, y, c));
+    harness::ProgressBar bar("RGB → spectrum table (first use)");
+    const RgbToSpectrumTable& table =
+        rendererRgbToSpectrumTable("srgb", [&bar](std::size_t done, std::size_t total) { bar.update(done, total); });
+    environment = prt::equirectangularEnvironment(o.exr, map.image.width, map.image.height, rgb,
+                                                  [&table](const glm::vec3& c) { return RgbUnboundedSpectrum(table, c).toDense(); });
+  } else if (o.environment == "sky") {
     environment = prt::skyGradientEnvironment(o.illuminant + " sky", spd);
   } else if (o.environment == "uniform") {
     environment = prt::uniformEnvironment(o.illuminant + " uniform", spd);
@@ -124,7 +142,7 @@ void runPrtReport(const PrtReportOptions& o) {
     writeFileAtomically(o.coloursFile, plyText(object, colours));
   }
   if (o.json) {
-    nlohmann::json out = {{"illuminant", o.illuminant}, {"environment", o.environment}, {"vertices", report.vertices},
+    nlohmann::json out = {{"environment", environment.name}, {"vertices", report.vertices},
                           {"samples", o.samples}, {"rgb_prt", statisticsJson(report.rgbError)}};
     for (const prt::BasisSweepRow& row : report.sweep) {
       nlohmann::json r = statisticsJson(row.error);
@@ -135,9 +153,9 @@ void runPrtReport(const PrtReportOptions& o) {
     fmt::print("{}\n", out.dump(2));
     return;
   }
-  fmt::print("ColorChecker height field, {} vertices, {} directions, {} environment of {}; against 5 nm "
-             "point sampling (81 λ) through the same transfer\n",
-             report.vertices, o.samples, o.environment, o.illuminant);
+  fmt::print("ColorChecker height field, {} vertices, {} directions, environment {}; against 5 nm point sampling "
+             "(81 λ) through the same transfer\n",
+             report.vertices, o.samples, environment.name);
   fmt::print("{:>8} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "m", "energy", "mean ΔE94", "max ΔE94", "mean ΔE00", "max ΔE00");
   for (const prt::BasisSweepRow& row : report.sweep)
     fmt::print("{:>8} {:>10.6f} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f}\n", row.m, row.capturedEnergy, row.error.mean94,

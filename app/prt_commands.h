@@ -19,6 +19,7 @@ void runPrtBake(const PrtBakeOptions& options);
 struct PrtReportOptions {
   std::string illuminant = "F4";
   std::string environment = "sky";  // sky | uniform
+  std::string exr;                  // or an equirectangular linear-sRGB EXR (row 0 at the zenith)
   int patchVertices = 16;           // vertices along each side of a ColorChecker patch
   int samples = 1024;
   std::string coloursFile;          // optional: the reference's per-vertex display colours as a PLY

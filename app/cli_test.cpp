@@ -357,12 +357,19 @@ TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
   EXPECT_NE(second.out.find("from the cache"), std::string::npos) << second.out;
 
   std::filesystem::path ply = std::filesystem::path(::testing::TempDir()) / "prt" / "checker.ply";
-  Result report = run("prt report --patch-vertices 4 --samples 32 --json --colours " + ply.string(), cache);
+  std::filesystem::path svg = std::filesystem::path(::testing::TempDir()) / "prt" / "sweep.svg";
+  Result report = run("prt report --patch-vertices 4 --samples 32 --json --colours " + ply.string() + " --plot " + svg.string(),
+                      cache);
   ASSERT_EQ(report.exitCode, 0) << report.err;
   auto json = nlohmann::json::parse(report.out);
   EXPECT_EQ(json["spectral"].size(), 16u);
   EXPECT_GT(json["rgb_prt"]["mean_de94"].get<double>(), 0.0);
   EXPECT_EQ(slurp(ply).rfind("ply\n", 0), 0u);
+  std::string plot = slurp(svg);
+  EXPECT_EQ(plot.rfind("<svg", 0), 0u);
+  std::size_t lines = 0;
+  for (std::size_t at = plot.find("<polyline"); at != std::string::npos; at = plot.find("<polyline", at + 1)) ++lines;
+  EXPECT_EQ(lines, 4u);  // mean and max ΔE94 and ΔE00 against m
 }
 
 TEST(Cli, ColourMetamerMatchesUnderD65AndNotUnderA) {

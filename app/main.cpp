@@ -207,6 +207,7 @@ int main(int argc, char** argv) {
   prtReportCmd->add_option("--exr", prtReport.exr, "an equirectangular linear-sRGB EXR instead (row 0 at the zenith)");
   prtReportCmd->add_option("--patch-vertices", prtReport.patchVertices, "vertices along each side of a patch")->capture_default_str();
   prtReportCmd->add_option("--samples", prtReport.samples, "directions per vertex")->capture_default_str();
+  prtReportCmd->add_option("--plot", prtReport.plotFile, "SVG of the error against m to write");
   prtReportCmd->add_option("--colours", prtReport.coloursFile, "PLY of the reference's per-vertex sRGB colours to write");
   prtReportCmd->add_flag("--json", prtReport.json, "JSON output");
 

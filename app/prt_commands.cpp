@@ -9,6 +9,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "harness/progress_bar.h"
+#include "harness/prt_plot.h"
 #include "imaging/exr_file.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_loader.h"
@@ -135,6 +136,15 @@ void runPrtReport(const PrtReportOptions& o) {
   const Observer& obs = cie1931Observer();
   prt::PrtReport report = prt::basisSweep(object, transfer.transfer, environment, obs);
 
+  if (!o.plotFile.empty()) {
+    auto point = [](int m, const prt::DeltaEStatistics& e) {
+      return harness::BasisSweepPoint{m, e.mean94, e.max94, e.mean2000, e.max2000};
+    };
+    std::vector<harness::BasisSweepPoint> points;
+    for (const prt::BasisSweepRow& row : report.sweep) points.push_back(point(row.m, row.error));
+    writeFileAtomically(o.plotFile, harness::basisSweepPlotSvg(points, point(0, report.rgbError), 1.0,
+                                                               "Spectral PRT vs 5 nm sampling: " + environment.name));
+  }
   if (!o.coloursFile.empty()) {
     Eigen::MatrixXd grid = prt::environmentOnGrid(environment);
     Eigen::Vector3d white = prt::sceneWhite(grid, obs);

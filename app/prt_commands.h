@@ -22,6 +22,7 @@ struct PrtReportOptions {
   std::string exr;                  // or an equirectangular linear-sRGB EXR (row 0 at the zenith)
   int patchVertices = 16;           // vertices along each side of a ColorChecker patch
   int samples = 1024;
+  std::string plotFile;             // optional: the sweep as an SVG
   std::string coloursFile;          // optional: the reference's per-vertex display colours as a PLY
   bool json = false;
 };

@@ -355,6 +355,12 @@ TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
   Result second = run("prt bake " + scene + " --samples 16", cache);
   ASSERT_EQ(second.exitCode, 0) << second.err;
   EXPECT_NE(second.out.find("from the cache"), std::string::npos) << second.out;
+  // The scene's own materials (base colours upsampled by the renderers' table, from the tests'
+  // shared cache: a fresh cache would build it for 20 s) under the sky.
+  Result sceneReport = run("prt report " + scene + " --samples 16 --json");
+  ASSERT_EQ(sceneReport.exitCode, 0) << sceneReport.err;
+  EXPECT_FALSE(nlohmann::json::parse(sceneReport.out)["spectral"].empty());
+  expectOneLineError("prt report --patch-vertices 4 --samples 16 --colours-m 99 --colours x.ply", "--colours-m", cache);
 
   std::filesystem::path ply = std::filesystem::path(::testing::TempDir()) / "prt" / "checker.ply";
   std::filesystem::path svg = std::filesystem::path(::testing::TempDir()) / "prt" / "sweep.svg";

@@ -202,13 +202,15 @@ int main(int argc, char** argv) {
   prtBakeCmd->add_option("--cache", prtBake.cacheDir, "cache folder (default: Prism's cache)");
   PrtReportOptions prtReport;
   auto* prtReportCmd = prtCmd->add_subcommand("report", "the ColorChecker object: spectral PRT (m = 1..16) and RGB-PRT against 5 nm sampling");
+  prtReportCmd->add_option("input", prtReport.input, "a scene (.json) or glTF model instead of the ColorChecker height field");
   prtReportCmd->add_option("--illuminant", prtReport.illuminant, "illuminant of the environment")->capture_default_str();
   prtReportCmd->add_option("--environment", prtReport.environment, "sky (overcast gradient) or uniform")->capture_default_str();
   prtReportCmd->add_option("--exr", prtReport.exr, "an equirectangular linear-sRGB EXR instead (row 0 at the zenith)");
   prtReportCmd->add_option("--patch-vertices", prtReport.patchVertices, "vertices along each side of a patch")->capture_default_str();
   prtReportCmd->add_option("--samples", prtReport.samples, "directions per vertex")->capture_default_str();
   prtReportCmd->add_option("--plot", prtReport.plotFile, "SVG of the error against m to write");
-  prtReportCmd->add_option("--colours", prtReport.coloursFile, "PLY of the reference's per-vertex sRGB colours to write");
+  prtReportCmd->add_option("--colours", prtReport.coloursFile, "PLY of per-vertex display sRGB colours to write");
+  prtReportCmd->add_option("--colours-m", prtReport.coloursM, "basis size of those colours (0: the 5 nm reference)")->capture_default_str();
   prtReportCmd->add_flag("--json", prtReport.json, "JSON output");
 
   LutOptions lut;

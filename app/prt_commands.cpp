@@ -21,8 +21,10 @@
 namespace prism::app {
 namespace {
 
-// Every mesh of the input as one PRT mesh (world space).
-prt::PrtMesh loadPrtMesh(const std::filesystem::path& input) {
+// Every mesh of the input as one PRT object (world space, turned from y-up to PRT's z-up): each scene material's measured
+// reflectance, else its base colour upsampled by the renderers' sRGB table (Jakob–Hanika, the
+// albedo intent; textures and conductors are not read: PRT here is diffuse and per vertex).
+prt::PrtObject loadPrtObject(const std::filesystem::path& input, bool withReflectances) {
   if (!std::filesystem::is_regular_file(input)) throw Error(input.string() + ": no such file");
   std::string ext = input.extension().string();
   Scene scene;
@@ -33,18 +35,39 @@ prt::PrtMesh loadPrtMesh(const std::filesystem::path& input) {
   } else {
     throw Error(input.string() + ": expected a scene (.json) or a glTF model (.gltf, .glb)");
   }
-  prt::PrtMesh mesh;
+  prt::PrtObject object;
+  prt::PrtMesh& mesh = object.mesh;
   for (const Mesh& m : scene.meshes) {
     auto base = static_cast<std::uint32_t>(mesh.positions.size());
     for (const Vertex& v : m.vertices) {
-      mesh.positions.push_back(v.position);
+      // Scenes are y-up (glTF's convention); PRT's environments have their zenith at +z.
+      auto zUp = [](const glm::vec3& p) { return glm::vec3(p.x, -p.z, p.y); };
+      mesh.positions.push_back(zUp(v.position));
       float length = glm::length(v.normal);
-      mesh.normals.push_back(length > 0.0f ? v.normal / length : glm::vec3(0.0f, 0.0f, 1.0f));
+      mesh.normals.push_back(length > 0.0f ? zUp(v.normal / length) : glm::vec3(0.0f, 0.0f, 1.0f));
+      object.vertexMaterial.push_back(std::max(m.material, 0));
     }
     for (std::uint32_t i : m.indices) mesh.indices.push_back(base + i);
   }
   if (mesh.indices.empty()) throw Error(input.string() + ": no triangles to bake");
-  return mesh;
+  if (withReflectances) {
+    const RgbToSpectrumTable* table = nullptr;
+    for (const Material& material : scene.materials) {
+      if (material.reflectance) {
+        object.reflectances.push_back(*material.reflectance);
+      } else {
+        if (!table) table = &rendererRgbToSpectrumTable("srgb");
+        object.reflectances.push_back(RgbAlbedoSpectrum(*table, material.baseColour).toDense());
+      }
+      object.materialNames.push_back(material.name);
+    }
+    if (object.reflectances.empty()) {
+      object.reflectances.push_back(Spectrum::constant(0.8));
+      object.materialNames.push_back("default");
+    }
+    for (int& m : object.vertexMaterial) m = std::min(m, static_cast<int>(object.reflectances.size()) - 1);
+  }
+  return object;
 }
 
 void checkSamples(int samples) {
@@ -87,7 +110,7 @@ std::string plyText(const prt::PrtObject& object, const std::vector<Eigen::Vecto
 
 void runPrtBake(const PrtBakeOptions& o) {
   checkSamples(o.samples);
-  prt::PrtMesh mesh = loadPrtMesh(o.input);
+  prt::PrtMesh mesh = loadPrtObject(o.input, false).mesh;
   prt::BakeSettings settings{o.samples, o.shadows};
   auto start = std::chrono::steady_clock::now();
   prt::CachedTransfer result = transferFor(mesh, settings, o.cacheDir);
@@ -131,7 +154,11 @@ void runPrtReport(const PrtReportOptions& o) {
   }
   if (o.patchVertices < 2 || o.patchVertices > 256)
     throw Error(fmt::format("--patch-vertices: {} out of range 2..256", o.patchVertices));
-  prt::PrtObject object = prt::makeColourCheckerObject(o.patchVertices);
+  prt::PrtObject object = o.input.empty() ? prt::makeColourCheckerObject(o.patchVertices) : loadPrtObject(o.input, true);
+  // Checked before the bake: the basis has at most one function per spectrum of the scene.
+  int mMax = std::min(static_cast<int>(object.reflectances.size() + environment.terms.size()), 16);
+  if (!o.coloursFile.empty() && (o.coloursM < 0 || o.coloursM > mMax))
+    throw Error(fmt::format("--colours-m: {} out of range 0..{}", o.coloursM, mMax));
   prt::CachedTransfer transfer = transferFor(object.mesh, {o.samples, true}, "");
   const Observer& obs = cie1931Observer();
   prt::PrtReport report = prt::basisSweep(object, transfer.transfer, environment, obs);
@@ -148,7 +175,13 @@ void runPrtReport(const PrtReportOptions& o) {
   if (!o.coloursFile.empty()) {
     Eigen::MatrixXd grid = prt::environmentOnGrid(environment);
     Eigen::Vector3d white = prt::sceneWhite(grid, obs);
-    auto colours = prt::displayColours(prt::shadeReference(object, transfer.transfer, grid, obs), white, colourSpace("srgb"));
+    std::vector<Eigen::VectorXd> spectra;  // as basisSweep builds its basis
+    for (const Spectrum& r : object.reflectances) spectra.push_back(prt::sampleOnGrid(r));
+    for (const prt::EnvironmentTerm& t : environment.terms) spectra.push_back(prt::sampleOnGrid(t.spectrum));
+    prt::SpectralBasis basis(spectra);
+    auto xyz = o.coloursM == 0 ? prt::shadeReference(object, transfer.transfer, grid, obs)
+                               : prt::shadeSpectral(object, transfer.transfer, grid, obs, basis.leading(o.coloursM));
+    auto colours = prt::displayColours(xyz, white, colourSpace("srgb"));
     writeFileAtomically(o.coloursFile, plyText(object, colours));
   }
   if (o.json) {
@@ -163,9 +196,9 @@ void runPrtReport(const PrtReportOptions& o) {
     fmt::print("{}\n", out.dump(2));
     return;
   }
-  fmt::print("ColorChecker height field, {} vertices, {} directions, environment {}; against 5 nm point sampling "
+  fmt::print("{}, {} vertices, {} directions, environment {}; against 5 nm point sampling "
              "(81 λ) through the same transfer\n",
-             report.vertices, o.samples, environment.name);
+             o.input.empty() ? "ColorChecker height field" : o.input, report.vertices, o.samples, environment.name);
   fmt::print("{:>8} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "m", "energy", "mean ΔE94", "max ΔE94", "mean ΔE00", "max ΔE00");
   for (const prt::BasisSweepRow& row : report.sweep)
     fmt::print("{:>8} {:>10.6f} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f}\n", row.m, row.capturedEnergy, row.error.mean94,

@@ -17,16 +17,18 @@ struct PrtBakeOptions {
 void runPrtBake(const PrtBakeOptions& options);
 
 struct PrtReportOptions {
+  std::string input;                // a scene or glTF model; empty: the ColorChecker height field
   std::string illuminant = "F4";
   std::string environment = "sky";  // sky | uniform
   std::string exr;                  // or an equirectangular linear-sRGB EXR (row 0 at the zenith)
   int patchVertices = 16;           // vertices along each side of a ColorChecker patch
   int samples = 1024;
   std::string plotFile;             // optional: the sweep as an SVG
-  std::string coloursFile;          // optional: the reference's per-vertex display colours as a PLY
+  std::string coloursFile;          // optional: per-vertex display colours as a PLY
+  int coloursM = 8;                 // of spectral PRT with this many functions; 0: the 5 nm reference
   bool json = false;
 };
-// The ColorChecker object under a spectral environment: spectral PRT for m = 1..16 and RGB-PRT
+// The ColorChecker object (or a scene's meshes) under a spectral environment: spectral PRT for m = 1..16 and RGB-PRT
 // against the 5 nm reference, mean and max ΔE94 and ΔE00 over the vertices.
 void runPrtReport(const PrtReportOptions& options);
 

@@ -1,6 +1,8 @@
 // The only translation unit that instantiates Eigen's SVD in prism::prt (≈ 40 s to compile).
 #include "techniques/prt/prt_spectra.h"
 
+#include <cmath>
+
 #include <Eigen/SVD>
 #include <fmt/format.h>
 

@@ -4,7 +4,6 @@
 // again (Sloan et al. 2002, §6; Green 2003, "Spherical Harmonic Lighting: The Gritty Details", §6).
 #pragma once
 
-#include <array>
 #include <functional>
 
 #include <Eigen/Core>

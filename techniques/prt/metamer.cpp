@@ -142,6 +142,7 @@ Metamer findMetamer(const Spectrum& reflectance, const Spectrum& matchIlluminant
   Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(kGridWavelengths, kGridWavelengths);
   p.null = q.rightCols(kGridWavelengths - 3);
   Eigen::MatrixXd targetWeights = gridWeights(observer, targetIlluminant);
+  if (!targetWeights.allFinite() || targetWeights.norm() == 0.0) throw Error("metamer: the target illuminant gives no colour");
   p.target = targetWeights * p.null;
   p.rTarget = targetWeights * p.r;
   p.whiteTarget = whiteTristimulus(observer, targetIlluminant);

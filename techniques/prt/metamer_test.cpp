@@ -33,6 +33,10 @@ TEST(Metamer, MatchesUnderD65AndDiffersUnderA) {
 
 TEST(Metamer, RefusesANonReflectance) {
   EXPECT_THROW(findMetamer(Spectrum::constant(1.5), illuminant("D65"), illuminant("A"), cie1931Observer()), Error);
+  // A dark illuminant has no colour to match or to differ.
+  Spectrum grey = Spectrum::constant(0.5), dark;
+  EXPECT_THROW(findMetamer(grey, dark, illuminant("A"), cie1931Observer()), Error);
+  EXPECT_THROW(findMetamer(grey, illuminant("D65"), dark, cie1931Observer()), Error);
 }
 
 }  // namespace

@@ -268,4 +268,27 @@ PrtReport basisSweep(const PrtObject& object, const std::vector<shared::Sh25>& t
   return report;
 }
 
+std::vector<DeltaEStatistics> metamerHalves(const PrtObject& object, const std::vector<shared::Sh25>& transfer,
+                                            const Spectrum& a, const Spectrum& b,
+                                            const std::vector<SpectralEnvironment>& environments,
+                                            const Observer& observer, int maxBasis) {
+  PrtObject first = object, second = object;
+  first.reflectances = {a};
+  second.reflectances = {b};
+  first.vertexMaterial.assign(object.mesh.positions.size(), 0);
+  second.vertexMaterial = first.vertexMaterial;
+  std::vector<Eigen::VectorXd> spectra = {sampleOnGrid(a), sampleOnGrid(b)};
+  for (const SpectralEnvironment& e : environments)
+    for (const EnvironmentTerm& t : e.terms) spectra.push_back(sampleOnGrid(t.spectrum));
+  SpectralBasis basis(spectra);
+  Eigen::MatrixXd phi = basis.leading(std::min({maxBasis, basis.available(), shared::kPrtMaxBasis}));
+  std::vector<DeltaEStatistics> result;
+  for (const SpectralEnvironment& e : environments) {
+    Eigen::MatrixXd grid = environmentOnGrid(e);
+    result.push_back(compareShading(shadeSpectral(second, transfer, grid, observer, phi),
+                                    shadeSpectral(first, transfer, grid, observer, phi), sceneWhite(grid, observer)));
+  }
+  return result;
+}
+
 }  // namespace prism::prt

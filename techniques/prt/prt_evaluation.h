@@ -112,4 +112,13 @@ struct PrtReport {
 PrtReport basisSweep(const PrtObject& object, const std::vector<shared::Sh25>& transfer,
                      const SpectralEnvironment& environment, const Observer& observer, int maxBasis = 16);
 
+// The paper's metamer scene ("Metacow"): two reflectances (a patch and its metamer) on the same
+// object, rendered by spectral PRT with the basis of both reflectances and every environment's
+// spectra (m = min(maxBasis, that many)); per environment, ΔE between the two shadings at each
+// vertex (the two halves of the object, compared where the light is the same).
+std::vector<DeltaEStatistics> metamerHalves(const PrtObject& object, const std::vector<shared::Sh25>& transfer,
+                                            const Spectrum& a, const Spectrum& b,
+                                            const std::vector<SpectralEnvironment>& environments,
+                                            const Observer& observer, int maxBasis = 8);
+
 }  // namespace prism::prt

@@ -385,6 +385,15 @@ TEST(Cli, ColourMetamerMatchesUnderD65AndNotUnderA) {
   EXPECT_LE(json["delta_e2000"]["D65"].get<double>(), 0.5);
   EXPECT_GE(json["delta_e2000"]["A"].get<double>(), 5.0);
   EXPECT_TRUE(json["delta_e2000"].contains("F2"));
+
+  // A pair on an object through spectral PRT (small: 4 vertices a patch, 32 directions). Light
+  // skin, as prt_test: dark skin's halves sit at the D65 bound (README, "Spectral PRT").
+  Result halves = run("prt metamers --reflectance 'light skin' --patch-vertices 4 --samples 32 --json");
+  ASSERT_EQ(halves.exitCode, 0) << halves.err;
+  auto h = nlohmann::json::parse(halves.out);
+  EXPECT_LE(h["halves"]["D65"]["max_de2000"].get<double>(), 0.5);
+  EXPECT_GE(h["halves"]["A"]["mean_de2000"].get<double>(), 5.0);
+  expectOneLineError("prt metamers --reflectance nothing", "nothing");
 }
 
 TEST(Cli, PrtReportTakesAnEquirectangularExr) {

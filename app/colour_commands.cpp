@@ -217,21 +217,17 @@ void colourList(const std::string& what, bool jsonOut) {
       fmt::print("{}\n", item.get<std::string>());
 }
 
+Spectrum patchOrFileReflectance(const std::string& text, const std::string& option) {
+  for (const ColourCheckerPatch& p : colourChecker())
+    if (p.name == text) return p.reflectance;
+  if (!std::filesystem::is_regular_file(text))
+    throw Error(option + ": '" + text + "' is neither a ColorChecker patch name nor a file");
+  return readSpectrumCsv(text, Extrapolation::Clamp).toDense();
+}
+
 void colourMetamer(const MetamerOptions& o) {
   const Observer& obs = observer(o.observer);
-  Spectrum original;
-  bool found = false;
-  for (const ColourCheckerPatch& p : colourChecker()) {
-    if (p.name == o.reflectance) {
-      original = p.reflectance;
-      found = true;
-    }
-  }
-  if (!found) {
-    if (!std::filesystem::is_regular_file(o.reflectance))
-      throw Error("--reflectance: '" + o.reflectance + "' is neither a ColorChecker patch name nor a file");
-    original = readSpectrumCsv(o.reflectance, Extrapolation::Clamp).toDense();
-  }
+  Spectrum original = patchOrFileReflectance(o.reflectance, "--reflectance");
   std::vector<std::pair<std::string, Spectrum>> lights;
   for (const std::string& name : o.under) lights.emplace_back(name, illuminant(name));
   prt::Metamer m = prt::findMetamer(original, illuminant(o.match), illuminant(o.target), obs);

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "spectral/spectrum.h"
+
 namespace prism::app {
 
 struct XyzOptions {
@@ -70,6 +72,8 @@ struct MetamerOptions {
   bool json = false;
 };
 void colourMetamer(const MetamerOptions& options);
+// A ColorChecker patch by name, else a spectral CSV (Error naming `option` when neither).
+Spectrum patchOrFileReflectance(const std::string& text, const std::string& option);
 
 // what: illuminants | observers | cameras | spaces
 void colourList(const std::string& what, bool json);

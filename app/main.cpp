@@ -212,6 +212,15 @@ int main(int argc, char** argv) {
   prtReportCmd->add_option("--colours", prtReport.coloursFile, "PLY of per-vertex display sRGB colours to write");
   prtReportCmd->add_option("--colours-m", prtReport.coloursM, "basis size of those colours (0: the 5 nm reference)")->capture_default_str();
   prtReportCmd->add_flag("--json", prtReport.json, "JSON output");
+  PrtMetamersOptions prtMetamers;
+  auto* prtMetamersCmd = prtCmd->add_subcommand("metamers", "a reflectance and its metamer on one object, rendered by spectral PRT under several skies");
+  prtMetamersCmd->add_option("--reflectance", prtMetamers.reflectance, "a ColorChecker patch name or a spectral CSV")->capture_default_str();
+  prtMetamersCmd->add_option("--match", prtMetamers.match, "illuminant under which the two match")->capture_default_str();
+  prtMetamersCmd->add_option("--target", prtMetamers.target, "illuminant under which they differ most")->capture_default_str();
+  prtMetamersCmd->add_option("--under", prtMetamers.under, "illuminants of the skies to render under")->delimiter(',')->capture_default_str();
+  prtMetamersCmd->add_option("--patch-vertices", prtMetamers.patchVertices, "vertices along each side of a patch")->capture_default_str();
+  prtMetamersCmd->add_option("--samples", prtMetamers.samples, "directions per vertex")->capture_default_str();
+  prtMetamersCmd->add_flag("--json", prtMetamers.json, "JSON output");
 
   LutOptions lut;
   auto* lutCmd = app.add_subcommand("lut", "build a Jakob–Hanika upsampling table with Prism's optimiser");
@@ -374,6 +383,7 @@ int main(int argc, char** argv) {
     if (*metamerCmd) colourMetamer(metamer);
     if (*prtBakeCmd) runPrtBake(prtBake);
     if (*prtReportCmd) runPrtReport(prtReport);
+    if (*prtMetamersCmd) runPrtMetamers(prtMetamers);
     if (*lutCmd) runLut(lut);
     if (*upCmd) {
       up.rgb = parseNumbers(upRgb, "--rgb");

@@ -1,5 +1,7 @@
 #include "app/prt_commands.h"
 
+#include "app/colour_commands.h"
+
 #include <chrono>
 #include <filesystem>
 
@@ -16,6 +18,7 @@
 #include "spectral/illuminant.h"
 #include "spectral/rgb_intent.h"
 #include "spectral/rgb_to_spectrum_cache.h"
+#include "techniques/prt/metamer.h"
 #include "techniques/prt/prt_evaluation.h"
 
 namespace prism::app {
@@ -205,6 +208,34 @@ void runPrtReport(const PrtReportOptions& o) {
                row.error.max94, row.error.mean2000, row.error.max2000);
   fmt::print("{:>8} {:>10} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f}\n", "RGB-PRT", "", report.rgbError.mean94,
              report.rgbError.max94, report.rgbError.mean2000, report.rgbError.max2000);
+}
+
+void runPrtMetamers(const PrtMetamersOptions& o) {
+  checkSamples(o.samples);
+  if (o.patchVertices < 2 || o.patchVertices > 256)
+    throw Error(fmt::format("--patch-vertices: {} out of range 2..256", o.patchVertices));
+  Spectrum original = patchOrFileReflectance(o.reflectance, "--reflectance");
+  std::vector<prt::SpectralEnvironment> skies;
+  for (const std::string& name : o.under) skies.push_back(prt::skyGradientEnvironment(name, illuminant(name)));
+  const Observer& obs = cie1931Observer();
+  prt::Metamer metamer = prt::findMetamer(original, illuminant(o.match), illuminant(o.target), obs);
+  prt::PrtObject object = prt::makeColourCheckerObject(o.patchVertices);
+  prt::CachedTransfer transfer = transferFor(object.mesh, {o.samples, true}, "");
+  std::vector<prt::DeltaEStatistics> halves =
+      prt::metamerHalves(object, transfer.transfer, original, metamer.reflectance, skies, obs);
+  if (o.json) {
+    nlohmann::json out = {{"reflectance", o.reflectance}, {"match", o.match}, {"target", o.target},
+                          {"vertices", object.mesh.positions.size()}};
+    for (std::size_t i = 0; i < skies.size(); ++i)
+      out["halves"][o.under[i]] = {{"mean_de2000", halves[i].mean2000}, {"max_de2000", halves[i].max2000}};
+    fmt::print("{}\n", out.dump(2));
+    return;
+  }
+  fmt::print("{} and its metamer (matching under {}, most different under {}) on the ColorChecker height field, "
+             "{} vertices, spectral PRT (m ≤ 8):\n",
+             o.reflectance, o.match, o.target, object.mesh.positions.size());
+  for (std::size_t i = 0; i < skies.size(); ++i)
+    fmt::print("  {} sky: halves ΔE00 mean {:.4f}, max {:.4f}\n", o.under[i], halves[i].mean2000, halves[i].max2000);
 }
 
 }  // namespace prism::app

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace prism::app {
 
@@ -31,5 +32,19 @@ struct PrtReportOptions {
 // The ColorChecker object (or a scene's meshes) under a spectral environment: spectral PRT for m = 1..16 and RGB-PRT
 // against the 5 nm reference, mean and max ΔE94 and ΔE00 over the vertices.
 void runPrtReport(const PrtReportOptions& options);
+
+struct PrtMetamersOptions {
+  std::string reflectance = "light skin";  // a ColorChecker patch name or a spectral CSV
+  std::string match = "D65";
+  std::string target = "A";
+  std::vector<std::string> under{"D65", "A", "F2"};
+  int patchVertices = 16;
+  int samples = 1024;
+  bool json = false;
+};
+// The paper's metamer scene: the reflectance and its metamer (same colour under `match`, most
+// different under `target`) on the ColorChecker height field, rendered by spectral PRT (m ≤ 8)
+// under each illuminant's overcast sky; prints the two halves' mean and max ΔE00 per illuminant.
+void runPrtMetamers(const PrtMetamersOptions& options);
 
 }  // namespace prism::app

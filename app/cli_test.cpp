@@ -396,6 +396,21 @@ TEST(Cli, ColourMetamerMatchesUnderD65AndNotUnderA) {
   expectOneLineError("prt metamers --reflectance nothing", "nothing");
 }
 
+TEST(Cli, PrtReportTurnsTheEnvironment) {
+  // The overcast sky is symmetric about its zenith (+z): turned about z it gives the same errors;
+  // turned upside down (the ground now above) it does not. A zero axis is refused.
+  std::string base = "prt report --patch-vertices 4 --samples 32 --json";
+  auto rgbMean = [](const Result& r) { return nlohmann::json::parse(r.out)["rgb_prt"]["mean_de94"].get<double>(); };
+  Result plain = run(base), aboutZ = run(base + " --rotate 0,0,1,90"), flipped = run(base + " --rotate 1,0,0,180");
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  ASSERT_EQ(aboutZ.exitCode, 0) << aboutZ.err;
+  ASSERT_EQ(flipped.exitCode, 0) << flipped.err;
+  EXPECT_NEAR(rgbMean(aboutZ), rgbMean(plain), 1e-3 * rgbMean(plain));
+  EXPECT_GT(std::abs(rgbMean(flipped) - rgbMean(plain)), 1e-2 * rgbMean(plain));
+  expectOneLineError("prt report --rotate 0,0,0,90", "--rotate");
+  expectOneLineError("prt report --rotate 1,2", "--rotate");
+}
+
 TEST(Cli, PrtReportTakesAnEquirectangularExr) {
   // A sky-like map (bright bluish top, dark warm bottom); the renderers' sRGB table from the
   // tests' shared cache. A NaN texel and an XYZ file are one-line errors naming them.

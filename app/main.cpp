@@ -206,6 +206,8 @@ int main(int argc, char** argv) {
   prtReportCmd->add_option("--illuminant", prtReport.illuminant, "illuminant of the environment")->capture_default_str();
   prtReportCmd->add_option("--environment", prtReport.environment, "sky (overcast gradient) or uniform")->capture_default_str();
   prtReportCmd->add_option("--exr", prtReport.exr, "an equirectangular linear-sRGB EXR instead (row 0 at the zenith)");
+  std::string prtRotate;
+  prtReportCmd->add_option("--rotate", prtRotate, "X,Y,Z,DEGREES: turn the environment (SH rotation, no re-projection)");
   prtReportCmd->add_option("--patch-vertices", prtReport.patchVertices, "vertices along each side of a patch")->capture_default_str();
   prtReportCmd->add_option("--samples", prtReport.samples, "directions per vertex")->capture_default_str();
   prtReportCmd->add_option("--plot", prtReport.plotFile, "SVG of the error against m to write");
@@ -382,7 +384,10 @@ int main(int argc, char** argv) {
     if (*listCmd) colourList(listWhat, listJson);
     if (*metamerCmd) colourMetamer(metamer);
     if (*prtBakeCmd) runPrtBake(prtBake);
-    if (*prtReportCmd) runPrtReport(prtReport);
+    if (*prtReportCmd) {
+      if (!prtRotate.empty()) prtReport.rotate = parseNumbers(prtRotate, "--rotate");
+      runPrtReport(prtReport);
+    }
     if (*prtMetamersCmd) runPrtMetamers(prtMetamers);
     if (*lutCmd) runLut(lut);
     if (*upCmd) {

@@ -3,9 +3,11 @@
 #include "app/colour_commands.h"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 
 #include <fmt/core.h>
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
@@ -154,6 +156,14 @@ void runPrtReport(const PrtReportOptions& o) {
     environment = prt::uniformEnvironment(o.illuminant + " uniform", spd);
   } else {
     throw Error("--environment: '" + o.environment + "' is not sky or uniform");
+  }
+  if (!o.rotate.empty()) {  // the environment turned by its SH rotation, not projected again
+    glm::dvec3 axis = o.rotate.size() == 4 ? glm::dvec3(o.rotate[0], o.rotate[1], o.rotate[2]) : glm::dvec3(0.0);
+    if (!(glm::length(axis) > 0.0) || !std::isfinite(glm::length(axis)))
+      throw Error("--rotate: expected X,Y,Z,DEGREES with a non-zero axis");
+    glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(o.rotate[3]), glm::normalize(axis)));
+    environment = prt::rotateEnvironment(environment, rotation);
+    environment.name += fmt::format(" turned {}° about ({}, {}, {})", o.rotate[3], axis.x, axis.y, axis.z);
   }
   if (o.patchVertices < 2 || o.patchVertices > 256)
     throw Error(fmt::format("--patch-vertices: {} out of range 2..256", o.patchVertices));

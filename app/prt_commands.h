@@ -22,6 +22,7 @@ struct PrtReportOptions {
   std::string illuminant = "F4";
   std::string environment = "sky";  // sky | uniform
   std::string exr;                  // or an equirectangular linear-sRGB EXR (row 0 at the zenith)
+  std::vector<double> rotate;       // X, Y, Z, degrees: the environment turned (empty: not)
   int patchVertices = 16;           // vertices along each side of a ColorChecker patch
   int samples = 1024;
   std::string plotFile;             // optional: the sweep as an SVG

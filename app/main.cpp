@@ -201,7 +201,7 @@ int main(int argc, char** argv) {
   prtBakeCmd->add_flag("!--shadows", prtBake.shadows, "unshadowed transfer (--no-shadows)");
   prtBakeCmd->add_option("--cache", prtBake.cacheDir, "cache folder (default: Prism's cache)");
   PrtReportOptions prtReport;
-  auto* prtReportCmd = prtCmd->add_subcommand("report", "the ColorChecker object: spectral PRT (m = 1..16) and RGB-PRT against 5 nm sampling");
+  auto* prtReportCmd = prtCmd->add_subcommand("report", "the ColorChecker object (or a scene): spectral PRT (m = 1..16) and RGB-PRT against 5 nm sampling");
   prtReportCmd->add_option("input", prtReport.input, "a scene (.json) or glTF model instead of the ColorChecker height field");
   prtReportCmd->add_option("--illuminant", prtReport.illuminant, "illuminant of the environment")->capture_default_str();
   prtReportCmd->add_option("--environment", prtReport.environment, "sky (overcast gradient) or uniform")->capture_default_str();

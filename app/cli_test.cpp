@@ -352,3 +352,106 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   expectOneLineError("nebula render " + tiny + " -o x.jpg", "x.jpg: the output must be .exr or .png");
   expectOneLineError("nebula render " + (dir / "bad.json").string() + " -o x.png", "bad.json: /nebula/stars/0/position");
 }
+
+TEST(Cli, PrtCommandsCheckTheirInput) {
+  std::filesystem::path text = writeTemp("model.txt", "not a model");
+  expectOneLineError("prt bake " + (std::filesystem::path(::testing::TempDir()) / "missing.json").string(), "missing.json");
+  expectOneLineError("prt bake " + text.string(), "model.txt");
+  expectOneLineError("prt bake " + std::string(PRISM_SCENES_DIR) + "/spheres_d65.json --samples 0", "samples");
+  expectOneLineError("prt report --environment cloudy", "--environment");
+  expectOneLineError("prt report --illuminant F99", "F99");
+  expectOneLineError("colour metamer --reflectance 'no such patch'", "no such patch");
+}
+
+TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
+  // Small sizes: the commands' plumbing, not the numbers (prt_test holds those).
+  std::string cache = "PRISM_CACHE_DIR=" + (std::filesystem::path(::testing::TempDir()) / "prt_cli_cache").string();
+  std::filesystem::remove_all(std::filesystem::path(::testing::TempDir()) / "prt_cli_cache");
+  std::string scene = std::string(PRISM_SCENES_DIR) + "/spheres_d65.json";
+  Result first = run("prt bake " + scene + " --samples 16", cache);
+  ASSERT_EQ(first.exitCode, 0) << first.err;
+  EXPECT_NE(first.out.find("rays/s"), std::string::npos) << first.out;
+  Result second = run("prt bake " + scene + " --samples 16", cache);
+  ASSERT_EQ(second.exitCode, 0) << second.err;
+  EXPECT_NE(second.out.find("from the cache"), std::string::npos) << second.out;
+  // The scene's own materials (base colours upsampled by the renderers' table, from the tests'
+  // shared cache: a fresh cache would build it for 20 s) under the sky.
+  Result sceneReport = run("prt report " + scene + " --samples 16 --json");
+  ASSERT_EQ(sceneReport.exitCode, 0) << sceneReport.err;
+  EXPECT_FALSE(nlohmann::json::parse(sceneReport.out)["spectral"].empty());
+  expectOneLineError("prt report --patch-vertices 4 --samples 16 --colours-m 99 --colours x.ply", "--colours-m", cache);
+
+  std::filesystem::path ply = std::filesystem::path(::testing::TempDir()) / "prt" / "checker.ply";
+  std::filesystem::path svg = std::filesystem::path(::testing::TempDir()) / "prt" / "sweep.svg";
+  Result report = run("prt report --patch-vertices 4 --samples 32 --json --colours " + ply.string() + " --plot " + svg.string(),
+                      cache);
+  ASSERT_EQ(report.exitCode, 0) << report.err;
+  auto json = nlohmann::json::parse(report.out);
+  EXPECT_EQ(json["spectral"].size(), 16u);
+  EXPECT_GT(json["rgb_prt"]["mean_de94"].get<double>(), 0.0);
+  EXPECT_EQ(slurp(ply).rfind("ply\n", 0), 0u);
+  std::string plot = slurp(svg);
+  EXPECT_EQ(plot.rfind("<svg", 0), 0u);
+  std::size_t lines = 0;
+  for (std::size_t at = plot.find("<polyline"); at != std::string::npos; at = plot.find("<polyline", at + 1)) ++lines;
+  EXPECT_EQ(lines, 4u);  // mean and max ΔE94 and ΔE00 against m
+}
+
+TEST(Cli, ColourMetamerMatchesUnderD65AndNotUnderA) {
+  Result r = run("colour metamer --reflectance 'dark skin' --under D65,A,F2 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto json = nlohmann::json::parse(r.out);
+  EXPECT_LE(json["delta_e2000"]["D65"].get<double>(), 0.5);
+  EXPECT_GE(json["delta_e2000"]["A"].get<double>(), 5.0);
+  EXPECT_TRUE(json["delta_e2000"].contains("F2"));
+
+  // A pair on an object through spectral PRT (small: 4 vertices a patch, 32 directions). Light
+  // skin, as prt_test: dark skin's halves sit at the D65 bound (README, "Spectral PRT").
+  Result halves = run("prt metamers --reflectance 'light skin' --patch-vertices 4 --samples 32 --json");
+  ASSERT_EQ(halves.exitCode, 0) << halves.err;
+  auto h = nlohmann::json::parse(halves.out);
+  EXPECT_LE(h["halves"]["D65"]["max_de2000"].get<double>(), 0.5);
+  EXPECT_GE(h["halves"]["A"]["mean_de2000"].get<double>(), 5.0);
+  expectOneLineError("prt metamers --reflectance nothing", "nothing");
+}
+
+TEST(Cli, PrtReportTurnsTheEnvironment) {
+  // The overcast sky is symmetric about its zenith (+z): turned about z it gives the same errors;
+  // turned upside down (the ground now above) it does not. A zero axis is refused.
+  std::string base = "prt report --patch-vertices 4 --samples 32 --json";
+  auto rgbMean = [](const Result& r) { return nlohmann::json::parse(r.out)["rgb_prt"]["mean_de94"].get<double>(); };
+  Result plain = run(base), aboutZ = run(base + " --rotate 0,0,1,90"), flipped = run(base + " --rotate 1,0,0,180");
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  ASSERT_EQ(aboutZ.exitCode, 0) << aboutZ.err;
+  ASSERT_EQ(flipped.exitCode, 0) << flipped.err;
+  EXPECT_NEAR(rgbMean(aboutZ), rgbMean(plain), 1e-3 * rgbMean(plain));
+  EXPECT_GT(std::abs(rgbMean(flipped) - rgbMean(plain)), 1e-2 * rgbMean(plain));
+  expectOneLineError("prt report --rotate 0,0,0,90", "--rotate");
+  expectOneLineError("prt report --rotate 1,2", "--rotate");
+}
+
+TEST(Cli, PrtReportTakesAnEquirectangularExr) {
+  // A sky-like map (bright bluish top, dark warm bottom); the renderers' sRGB table from the
+  // tests' shared cache. A NaN texel and an XYZ file are one-line errors naming them.
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "prt_exr";
+  prism::imaging::FloatImage map(32, 16, 3);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 32; ++x) {
+      bool sky = y < 8;
+      map.at(x, y, 0) = sky ? 0.6f : 0.2f;
+      map.at(x, y, 1) = sky ? 0.8f : 0.15f;
+      map.at(x, y, 2) = sky ? 1.2f : 0.1f;
+    }
+  prism::imaging::writeExr(dir / "sky.exr", map);
+  Result r = run("prt report --patch-vertices 4 --samples 32 --json --exr " + (dir / "sky.exr").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto json = nlohmann::json::parse(r.out);
+  EXPECT_EQ(json["spectral"].size(), 16u);
+  EXPECT_NE(json["environment"].get<std::string>().find("sky.exr"), std::string::npos);
+
+  map.at(3, 2, 1) = std::numeric_limits<float>::quiet_NaN();
+  prism::imaging::writeExr(dir / "nan.exr", map);
+  expectOneLineError("prt report --exr " + (dir / "nan.exr").string(), "nan.exr: texel (3, 2)");
+  prism::imaging::writeExr(dir / "xyz.exr", map, {.colour = prism::imaging::ColourMeaning::Xyz});
+  expectOneLineError("prt report --exr " + (dir / "xyz.exr").string(), "linear sRGB");
+}

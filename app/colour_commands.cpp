@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <filesystem>
 #include <sstream>
 
 #include "core/atomic_file.h"
@@ -17,6 +18,8 @@
 #include "spectral/observer.h"
 #include "spectral/sampling.h"
 #include "spectral/sigmoid_fit.h"
+#include "spectral/colour_checker.h"
+#include "techniques/prt/metamer.h"
 
 namespace prism::app {
 namespace {
@@ -216,6 +219,41 @@ void colourList(const std::string& what, bool jsonOut) {
       fmt::print("{:<34} {}\n", item["name"].get<std::string>(), item["normalisation"].get<std::string>());
     else
       fmt::print("{}\n", item.get<std::string>());
+}
+
+Spectrum patchOrFileReflectance(const std::string& text, const std::string& option) {
+  for (const ColourCheckerPatch& p : colourChecker())
+    if (p.name == text) return p.reflectance;
+  if (!std::filesystem::is_regular_file(text))
+    throw Error(option + ": '" + text + "' is neither a ColorChecker patch name nor a file");
+  return readSpectrumCsv(text, Extrapolation::Clamp).toDense();
+}
+
+void colourMetamer(const MetamerOptions& o) {
+  const Observer& obs = observer(o.observer);
+  Spectrum original = patchOrFileReflectance(o.reflectance, "--reflectance");
+  std::vector<std::pair<std::string, Spectrum>> lights;
+  for (const std::string& name : o.under) lights.emplace_back(name, illuminant(name));
+  prt::Metamer m = prt::findMetamer(original, illuminant(o.match), illuminant(o.target), obs);
+  json out = {{"reflectance", o.reflectance}, {"match", o.match}, {"target", o.target}};
+  for (const auto& [name, spd] : lights) out["delta_e2000"][name] = prt::reflectanceDeltaE2000(original, m.reflectance, spd, obs);
+  if (!o.output.empty()) {
+    std::string csv = "wavelength_nm,reflectance\n";
+    for (int i = 0; i < kSpectrumSamples; ++i) csv += fmt::format("{},{:.6f}\n", kLambdaMinNm + i, m.reflectance[i]);
+    writeFileAtomically(o.output, csv);
+    out["output"] = o.output;
+  }
+  if (o.json) {
+    out["metamer_5nm"] = std::vector<double>(m.gridValues.data(), m.gridValues.data() + m.gridValues.size());
+    fmt::print("{}\n", out.dump(2));
+    return;
+  }
+  fmt::print("metamer of {} under {} (maximising the difference under {}), 380–780 nm at 5 nm:\n", o.reflectance,
+             o.match, o.target);
+  for (Eigen::Index i = 0; i < m.gridValues.size(); ++i)
+    fmt::print("{:.4f}{}", m.gridValues[i], (i + 1) % 9 == 0 || i + 1 == m.gridValues.size() ? "\n" : " ");
+  for (const auto& [name, spd] : lights)
+    fmt::print("ΔE00 under {}: {:.4f}\n", name, out["delta_e2000"][name].get<double>());
 }
 
 }  // namespace prism::app

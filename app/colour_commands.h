@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "spectral/spectrum.h"
+
 namespace prism::app {
 
 struct XyzOptions {
@@ -56,6 +58,22 @@ struct CameraMatrixOptions {
   bool json = false;
 };
 void colourCameraMatrix(const CameraMatrixOptions& options);
+
+// A metamer of a reflectance (a ColorChecker patch by name, or a spectral CSV): the same colour
+// under `match`, as different as possible under `target` (techniques/prt/metamer.h); prints its
+// CIEDE2000 from the original under each illuminant of `under`, and writes it as CSV when asked.
+struct MetamerOptions {
+  std::string reflectance;
+  std::string match = "D65";
+  std::string target = "A";
+  std::vector<std::string> under{"D65", "A", "F2"};
+  std::string observer = "cie1931";
+  std::string output;  // CSV wavelength_nm,reflectance at 1 nm (360–830)
+  bool json = false;
+};
+void colourMetamer(const MetamerOptions& options);
+// A ColorChecker patch by name, else a spectral CSV (Error naming `option` when neither).
+Spectrum patchOrFileReflectance(const std::string& text, const std::string& option);
 
 // what: illuminants | observers | cameras | spaces
 void colourList(const std::string& what, bool json);

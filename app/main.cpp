@@ -11,6 +11,7 @@
 
 #include "app/colour_commands.h"
 #include "app/nebula_commands.h"
+#include "app/prt_commands.h"
 #include "app/reference_commands.h"
 #include "app/render_commands.h"
 #include "app/settings_command.h"
@@ -181,6 +182,48 @@ int main(int argc, char** argv) {
   auto* listCmd = colour->add_subcommand("list", "list known names");
   listCmd->add_option("what", listWhat, "illuminants, observers, cameras or spaces")->required();
   listCmd->add_flag("--json", listJson, "JSON output");
+
+  MetamerOptions metamer;
+  auto* metamerCmd = colour->add_subcommand("metamer", "a metamer: the same colour under one illuminant, as different as possible under another");
+  metamerCmd->add_option("--reflectance", metamer.reflectance, "a ColorChecker patch name or a spectral CSV")->required();
+  metamerCmd->add_option("--match", metamer.match, "illuminant under which the colours match")->capture_default_str();
+  metamerCmd->add_option("--target", metamer.target, "illuminant under which they differ most")->capture_default_str();
+  metamerCmd->add_option("--under", metamer.under, "illuminants to report ΔE00 under")->delimiter(',')->capture_default_str();
+  metamerCmd->add_option("--observer", metamer.observer, "cie1931 or cie1964")->capture_default_str();
+  metamerCmd->add_option("-o,--output", metamer.output, "CSV of the metamer to write");
+  metamerCmd->add_flag("--json", metamer.json, "JSON output");
+
+  auto* prtCmd = app.add_subcommand("prt", "spectral precomputed radiance transfer (SH-5 × SVD basis)");
+  prtCmd->require_subcommand(1);
+  PrtBakeOptions prtBake;
+  auto* prtBakeCmd = prtCmd->add_subcommand("bake", "bake (or read from the cache) the SH-5 transfer of a scene's or model's vertices");
+  prtBakeCmd->add_option("input", prtBake.input, "scene (.json) or glTF model (.gltf, .glb)")->required();
+  prtBakeCmd->add_option("--samples", prtBake.samples, "directions per vertex")->capture_default_str();
+  prtBakeCmd->add_flag("!--shadows", prtBake.shadows, "unshadowed transfer (--no-shadows)");
+  prtBakeCmd->add_option("--cache", prtBake.cacheDir, "cache folder (default: Prism's cache)");
+  PrtReportOptions prtReport;
+  auto* prtReportCmd = prtCmd->add_subcommand("report", "the ColorChecker object (or a scene): spectral PRT (m = 1..16) and RGB-PRT against 5 nm sampling");
+  prtReportCmd->add_option("input", prtReport.input, "a scene (.json) or glTF model instead of the ColorChecker height field");
+  prtReportCmd->add_option("--illuminant", prtReport.illuminant, "illuminant of the environment")->capture_default_str();
+  prtReportCmd->add_option("--environment", prtReport.environment, "sky (overcast gradient) or uniform")->capture_default_str();
+  prtReportCmd->add_option("--exr", prtReport.exr, "an equirectangular linear-sRGB EXR instead (row 0 at the zenith)");
+  std::string prtRotate;
+  prtReportCmd->add_option("--rotate", prtRotate, "X,Y,Z,DEGREES: turn the environment (SH rotation, no re-projection)");
+  prtReportCmd->add_option("--patch-vertices", prtReport.patchVertices, "vertices along each side of a patch")->capture_default_str();
+  prtReportCmd->add_option("--samples", prtReport.samples, "directions per vertex")->capture_default_str();
+  prtReportCmd->add_option("--plot", prtReport.plotFile, "SVG of the error against m to write");
+  prtReportCmd->add_option("--colours", prtReport.coloursFile, "PLY of per-vertex display sRGB colours to write");
+  prtReportCmd->add_option("--colours-m", prtReport.coloursM, "basis size of those colours (0: the 5 nm reference)")->capture_default_str();
+  prtReportCmd->add_flag("--json", prtReport.json, "JSON output");
+  PrtMetamersOptions prtMetamers;
+  auto* prtMetamersCmd = prtCmd->add_subcommand("metamers", "a reflectance and its metamer on one object, rendered by spectral PRT under several skies");
+  prtMetamersCmd->add_option("--reflectance", prtMetamers.reflectance, "a ColorChecker patch name or a spectral CSV")->capture_default_str();
+  prtMetamersCmd->add_option("--match", prtMetamers.match, "illuminant under which the two match")->capture_default_str();
+  prtMetamersCmd->add_option("--target", prtMetamers.target, "illuminant under which they differ most")->capture_default_str();
+  prtMetamersCmd->add_option("--under", prtMetamers.under, "illuminants of the skies to render under")->delimiter(',')->capture_default_str();
+  prtMetamersCmd->add_option("--patch-vertices", prtMetamers.patchVertices, "vertices along each side of a patch")->capture_default_str();
+  prtMetamersCmd->add_option("--samples", prtMetamers.samples, "directions per vertex")->capture_default_str();
+  prtMetamersCmd->add_flag("--json", prtMetamers.json, "JSON output");
 
   LutOptions lut;
   auto* lutCmd = app.add_subcommand("lut", "build a Jakob–Hanika upsampling table with Prism's optimiser");
@@ -370,6 +413,13 @@ int main(int argc, char** argv) {
     }
     if (*camCmd) colourCameraMatrix(cam);
     if (*listCmd) colourList(listWhat, listJson);
+    if (*metamerCmd) colourMetamer(metamer);
+    if (*prtBakeCmd) runPrtBake(prtBake);
+    if (*prtReportCmd) {
+      if (!prtRotate.empty()) prtReport.rotate = parseNumbers(prtRotate, "--rotate");
+      runPrtReport(prtReport);
+    }
+    if (*prtMetamersCmd) runPrtMetamers(prtMetamers);
     if (*lutCmd) runLut(lut);
     if (*upCmd) {
       up.rgb = parseNumbers(upRgb, "--rgb");

@@ -1,0 +1,251 @@
+#include "app/prt_commands.h"
+
+#include "app/colour_commands.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/core.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "harness/progress_bar.h"
+#include "harness/prt_plot.h"
+#include "imaging/exr_file.h"
+#include "scene/gltf_loader.h"
+#include "scene/scene_loader.h"
+#include "spectral/illuminant.h"
+#include "spectral/rgb_intent.h"
+#include "spectral/rgb_to_spectrum_cache.h"
+#include "techniques/prt/metamer.h"
+#include "techniques/prt/prt_evaluation.h"
+
+namespace prism::app {
+namespace {
+
+// Every mesh of the input as one PRT object (world space, turned from y-up to PRT's z-up): each scene material's measured
+// reflectance, else its base colour upsampled by the renderers' sRGB table (Jakob–Hanika, the
+// albedo intent; textures and conductors are not read: PRT here is diffuse and per vertex).
+prt::PrtObject loadPrtObject(const std::filesystem::path& input, bool withReflectances) {
+  if (!std::filesystem::is_regular_file(input)) throw Error(input.string() + ": no such file");
+  std::string ext = input.extension().string();
+  Scene scene;
+  if (ext == ".json") {
+    scene = loadScene(input);
+  } else if (ext == ".gltf" || ext == ".glb") {
+    appendGltf(input, input.parent_path(), {}, scene);
+  } else {
+    throw Error(input.string() + ": expected a scene (.json) or a glTF model (.gltf, .glb)");
+  }
+  prt::PrtObject object;
+  prt::PrtMesh& mesh = object.mesh;
+  for (const Mesh& m : scene.meshes) {
+    auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    for (const Vertex& v : m.vertices) {
+      // Scenes are y-up (glTF's convention); PRT's environments have their zenith at +z.
+      auto zUp = [](const glm::vec3& p) { return glm::vec3(p.x, -p.z, p.y); };
+      mesh.positions.push_back(zUp(v.position));
+      float length = glm::length(v.normal);
+      mesh.normals.push_back(length > 0.0f ? zUp(v.normal / length) : glm::vec3(0.0f, 0.0f, 1.0f));
+      object.vertexMaterial.push_back(std::max(m.material, 0));
+    }
+    for (std::uint32_t i : m.indices) mesh.indices.push_back(base + i);
+  }
+  if (mesh.indices.empty()) throw Error(input.string() + ": no triangles to bake");
+  if (withReflectances) {
+    const RgbToSpectrumTable* table = nullptr;
+    for (const Material& material : scene.materials) {
+      if (material.reflectance) {
+        object.reflectances.push_back(*material.reflectance);
+      } else {
+        if (!table) table = &rendererRgbToSpectrumTable("srgb");
+        object.reflectances.push_back(RgbAlbedoSpectrum(*table, material.baseColour).toDense());
+      }
+      object.materialNames.push_back(material.name);
+    }
+    if (object.reflectances.empty()) {
+      object.reflectances.push_back(Spectrum::constant(0.8));
+      object.materialNames.push_back("default");
+    }
+    for (int& m : object.vertexMaterial) m = std::min(m, static_cast<int>(object.reflectances.size()) - 1);
+  }
+  return object;
+}
+
+void checkSamples(int samples) {
+  if (samples < 1 || samples > (1 << 20)) throw Error(fmt::format("--samples: {} out of range 1..{}", samples, 1 << 20));
+}
+
+std::filesystem::path cacheFolder(const std::string& given) {
+  return given.empty() ? cacheDirectory() : std::filesystem::path(given);
+}
+
+prt::CachedTransfer transferFor(const prt::PrtMesh& mesh, const prt::BakeSettings& settings, const std::string& cache) {
+  harness::ProgressBar bar("PRT transfer bake");
+  return prt::cachedTransfer(
+      mesh, settings, cacheFolder(cache), [&bar](std::size_t done, std::size_t total) { bar.update(done, total); },
+      [](const std::string& note) { fmt::print(stderr, "prism: {}\n", note); });
+}
+
+nlohmann::json statisticsJson(const prt::DeltaEStatistics& s) {
+  return {{"mean_de94", s.mean94}, {"max_de94", s.max94}, {"mean_de2000", s.mean2000}, {"max_de2000", s.max2000}};
+}
+
+// An ASCII PLY of the object with per-vertex sRGB colours.
+std::string plyText(const prt::PrtObject& object, const std::vector<Eigen::Vector3d>& rgb) {
+  std::string text = fmt::format(
+      "ply\nformat ascii 1.0\ncomment prism prt report: display sRGB, Bradford to D65\nelement vertex {}\n"
+      "property float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar green\n"
+      "property uchar blue\nelement face {}\nproperty list uchar int vertex_indices\nend_header\n",
+      object.mesh.positions.size(), object.mesh.indices.size() / 3);
+  for (std::size_t v = 0; v < rgb.size(); ++v) {
+    const glm::vec3& p = object.mesh.positions[v];
+    auto byte = [](double c) { return static_cast<int>(std::lround(255.0 * c)); };
+    text += fmt::format("{} {} {} {} {} {}\n", p.x, p.y, p.z, byte(rgb[v].x()), byte(rgb[v].y()), byte(rgb[v].z()));
+  }
+  for (std::size_t i = 0; i < object.mesh.indices.size(); i += 3)
+    text += fmt::format("3 {} {} {}\n", object.mesh.indices[i], object.mesh.indices[i + 1], object.mesh.indices[i + 2]);
+  return text;
+}
+
+}  // namespace
+
+void runPrtBake(const PrtBakeOptions& o) {
+  checkSamples(o.samples);
+  prt::PrtMesh mesh = loadPrtObject(o.input, false).mesh;
+  prt::BakeSettings settings{o.samples, o.shadows};
+  auto start = std::chrono::steady_clock::now();
+  prt::CachedTransfer result = transferFor(mesh, settings, o.cacheDir);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  fmt::print("{}: {} vertices, {} directions each{}\n", o.input, mesh.positions.size(), o.samples,
+             o.shadows ? "" : " (unshadowed)");
+  if (result.fromCache) {
+    fmt::print("transfer read from the cache: {}\n", result.file.string());
+  } else {
+    double rays = static_cast<double>(mesh.positions.size()) * o.samples;
+    fmt::print("baked in {:.2f} s ({:.3g} rays/s), cached: {}\n", seconds, rays / seconds, result.file.string());
+  }
+}
+
+void runPrtReport(const PrtReportOptions& o) {
+  checkSamples(o.samples);
+  Spectrum spd = illuminant(o.illuminant);
+  prt::SpectralEnvironment environment;
+  if (!o.exr.empty()) {
+    imaging::ExrImage map = imaging::readExr(o.exr);
+    if (map.colour != imaging::ColourMeaning::LinearSrgb || map.image.channels < 3)
+      throw Error(o.exr + ": an environment map must be linear sRGB (Rec. 709, D65) RGB, not " +
+                  std::string(imaging::colourMeaningName(map.colour)) + " with " + std::to_string(map.image.channels) +
+                  " channel(s)");
+    std::vector<float> rgb;
+    rgb.reserve(3 * map.image.pixelCount());
+    for (int y = 0; y < map.image.height; ++y)
+      for (int x = 0; x < map.image.width; ++x)
+        for (int c = 0; c < 3; ++c) rgb.push_back(map.image.at(x, y, c));
+    harness::ProgressBar bar("RGB → spectrum table (first use)");
+    const RgbToSpectrumTable& table =
+        rendererRgbToSpectrumTable("srgb", [&bar](std::size_t done, std::size_t total) { bar.update(done, total); });
+    environment = prt::equirectangularEnvironment(o.exr, map.image.width, map.image.height, rgb,
+                                                  [&table](const glm::vec3& c) { return RgbUnboundedSpectrum(table, c).toDense(); });
+  } else if (o.environment == "sky") {
+    environment = prt::skyGradientEnvironment(o.illuminant + " sky", spd);
+  } else if (o.environment == "uniform") {
+    environment = prt::uniformEnvironment(o.illuminant + " uniform", spd);
+  } else {
+    throw Error("--environment: '" + o.environment + "' is not sky or uniform");
+  }
+  if (!o.rotate.empty()) {  // the environment turned by its SH rotation, not projected again
+    glm::dvec3 axis = o.rotate.size() == 4 ? glm::dvec3(o.rotate[0], o.rotate[1], o.rotate[2]) : glm::dvec3(0.0);
+    if (!(glm::length(axis) > 0.0) || !std::isfinite(glm::length(axis)))
+      throw Error("--rotate: expected X,Y,Z,DEGREES with a non-zero axis");
+    glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(o.rotate[3]), glm::normalize(axis)));
+    environment = prt::rotateEnvironment(environment, rotation);
+    environment.name += fmt::format(" turned {}° about ({}, {}, {})", o.rotate[3], axis.x, axis.y, axis.z);
+  }
+  if (o.patchVertices < 2 || o.patchVertices > 256)
+    throw Error(fmt::format("--patch-vertices: {} out of range 2..256", o.patchVertices));
+  prt::PrtObject object = o.input.empty() ? prt::makeColourCheckerObject(o.patchVertices) : loadPrtObject(o.input, true);
+  // Checked before the bake: the basis has at most one function per spectrum of the scene.
+  int mMax = std::min(static_cast<int>(object.reflectances.size() + environment.terms.size()), 16);
+  if (!o.coloursFile.empty() && (o.coloursM < 0 || o.coloursM > mMax))
+    throw Error(fmt::format("--colours-m: {} out of range 0..{}", o.coloursM, mMax));
+  prt::CachedTransfer transfer = transferFor(object.mesh, {o.samples, true}, "");
+  const Observer& obs = cie1931Observer();
+  prt::PrtReport report = prt::basisSweep(object, transfer.transfer, environment, obs);
+
+  if (!o.plotFile.empty()) {
+    auto point = [](int m, const prt::DeltaEStatistics& e) {
+      return harness::BasisSweepPoint{m, e.mean94, e.max94, e.mean2000, e.max2000};
+    };
+    std::vector<harness::BasisSweepPoint> points;
+    for (const prt::BasisSweepRow& row : report.sweep) points.push_back(point(row.m, row.error));
+    writeFileAtomically(o.plotFile, harness::basisSweepPlotSvg(points, point(0, report.rgbError), 1.0,
+                                                               "Spectral PRT vs 5 nm sampling: " + environment.name));
+  }
+  if (!o.coloursFile.empty()) {
+    Eigen::MatrixXd grid = prt::environmentOnGrid(environment);
+    Eigen::Vector3d white = prt::sceneWhite(grid, obs);
+    std::vector<Eigen::VectorXd> spectra;  // as basisSweep builds its basis
+    for (const Spectrum& r : object.reflectances) spectra.push_back(prt::sampleOnGrid(r));
+    for (const prt::EnvironmentTerm& t : environment.terms) spectra.push_back(prt::sampleOnGrid(t.spectrum));
+    prt::SpectralBasis basis(spectra);
+    auto xyz = o.coloursM == 0 ? prt::shadeReference(object, transfer.transfer, grid, obs)
+                               : prt::shadeSpectral(object, transfer.transfer, grid, obs, basis.leading(o.coloursM));
+    auto colours = prt::displayColours(xyz, white, colourSpace("srgb"));
+    writeFileAtomically(o.coloursFile, plyText(object, colours));
+  }
+  if (o.json) {
+    nlohmann::json out = {{"environment", environment.name}, {"vertices", report.vertices},
+                          {"samples", o.samples}, {"rgb_prt", statisticsJson(report.rgbError)}};
+    for (const prt::BasisSweepRow& row : report.sweep) {
+      nlohmann::json r = statisticsJson(row.error);
+      r["m"] = row.m;
+      r["captured_energy"] = row.capturedEnergy;
+      out["spectral"].push_back(r);
+    }
+    fmt::print("{}\n", out.dump(2));
+    return;
+  }
+  fmt::print("{}, {} vertices, {} directions, environment {}; against 5 nm point sampling "
+             "(81 λ) through the same transfer\n",
+             o.input.empty() ? "ColorChecker height field" : o.input, report.vertices, o.samples, environment.name);
+  fmt::print("{:>8} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "m", "energy", "mean ΔE94", "max ΔE94", "mean ΔE00", "max ΔE00");
+  for (const prt::BasisSweepRow& row : report.sweep)
+    fmt::print("{:>8} {:>10.6f} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f}\n", row.m, row.capturedEnergy, row.error.mean94,
+               row.error.max94, row.error.mean2000, row.error.max2000);
+  fmt::print("{:>8} {:>10} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f}\n", "RGB-PRT", "", report.rgbError.mean94,
+             report.rgbError.max94, report.rgbError.mean2000, report.rgbError.max2000);
+}
+
+void runPrtMetamers(const PrtMetamersOptions& o) {
+  checkSamples(o.samples);
+  if (o.patchVertices < 2 || o.patchVertices > 256)
+    throw Error(fmt::format("--patch-vertices: {} out of range 2..256", o.patchVertices));
+  Spectrum original = patchOrFileReflectance(o.reflectance, "--reflectance");
+  std::vector<prt::SpectralEnvironment> skies;
+  for (const std::string& name : o.under) skies.push_back(prt::skyGradientEnvironment(name, illuminant(name)));
+  const Observer& obs = cie1931Observer();
+  prt::Metamer metamer = prt::findMetamer(original, illuminant(o.match), illuminant(o.target), obs);
+  prt::PrtObject object = prt::makeColourCheckerObject(o.patchVertices);
+  prt::CachedTransfer transfer = transferFor(object.mesh, {o.samples, true}, "");
+  std::vector<prt::DeltaEStatistics> halves =
+      prt::metamerHalves(object, transfer.transfer, original, metamer.reflectance, skies, obs);
+  if (o.json) {
+    nlohmann::json out = {{"reflectance", o.reflectance}, {"match", o.match}, {"target", o.target},
+                          {"vertices", object.mesh.positions.size()}};
+    for (std::size_t i = 0; i < skies.size(); ++i)
+      out["halves"][o.under[i]] = {{"mean_de2000", halves[i].mean2000}, {"max_de2000", halves[i].max2000}};
+    fmt::print("{}\n", out.dump(2));
+    return;
+  }
+  fmt::print("{} and its metamer (matching under {}, most different under {}) on the ColorChecker height field, "
+             "{} vertices, spectral PRT (m ≤ 8):\n",
+             o.reflectance, o.match, o.target, object.mesh.positions.size());
+  for (std::size_t i = 0; i < skies.size(); ++i)
+    fmt::print("  {} sky: halves ΔE00 mean {:.4f}, max {:.4f}\n", o.under[i], halves[i].mean2000, halves[i].max2000);
+}
+
+}  // namespace prism::app

@@ -1,0 +1,51 @@
+// `prism prt …`: spectral precomputed radiance transfer (techniques/prt). Each command writes its
+// result to stdout and throws prism::Error on bad input; files are written atomically.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace prism::app {
+
+struct PrtBakeOptions {
+  std::string input;       // a scene (.json) or a glTF model (.gltf, .glb)
+  int samples = 1024;      // directions per vertex
+  bool shadows = true;
+  std::string cacheDir;    // default: Prism's cache folder
+};
+// Bakes (or reads from the cache) the SH-5 transfer of every vertex of the input's meshes, all
+// meshes occluding each other; prints what it did and the rays per second.
+void runPrtBake(const PrtBakeOptions& options);
+
+struct PrtReportOptions {
+  std::string input;                // a scene or glTF model; empty: the ColorChecker height field
+  std::string illuminant = "F4";
+  std::string environment = "sky";  // sky | uniform
+  std::string exr;                  // or an equirectangular linear-sRGB EXR (row 0 at the zenith)
+  std::vector<double> rotate;       // X, Y, Z, degrees: the environment turned (empty: not)
+  int patchVertices = 16;           // vertices along each side of a ColorChecker patch
+  int samples = 1024;
+  std::string plotFile;             // optional: the sweep as an SVG
+  std::string coloursFile;          // optional: per-vertex display colours as a PLY
+  int coloursM = 8;                 // of spectral PRT with this many functions; 0: the 5 nm reference
+  bool json = false;
+};
+// The ColorChecker object (or a scene's meshes) under a spectral environment: spectral PRT for m = 1..16 and RGB-PRT
+// against the 5 nm reference, mean and max ΔE94 and ΔE00 over the vertices.
+void runPrtReport(const PrtReportOptions& options);
+
+struct PrtMetamersOptions {
+  std::string reflectance = "light skin";  // a ColorChecker patch name or a spectral CSV
+  std::string match = "D65";
+  std::string target = "A";
+  std::vector<std::string> under{"D65", "A", "F2"};
+  int patchVertices = 16;
+  int samples = 1024;
+  bool json = false;
+};
+// The paper's metamer scene: the reflectance and its metamer (same colour under `match`, most
+// different under `target`) on the ColorChecker height field, rendered by spectral PRT (m ≤ 8)
+// under each illuminant's overcast sky; prints the two halves' mean and max ΔE00 per illuminant.
+void runPrtMetamers(const PrtMetamersOptions& options);
+
+}  // namespace prism::app

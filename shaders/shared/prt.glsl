@@ -1,0 +1,50 @@
+// Requires: spherical_harmonics.glsl
+// Spectral precomputed radiance transfer at run time (Schwenk, Kuijper & Bockholt, "Spectral
+// precomputed radiance transfer", Fraunhofer IGD): two orthonormal bases turn the shading
+// integral XYZ = ∫∫ L(ω, λ) T(ω) f_r(λ) c̄(λ) dω dλ into two sums of products.
+//
+//  - light transport: T(ω) = V(ω)·max(cos θ, 0) projected on 25 real SH (spherical_harmonics.glsl);
+//  - wavelength: basis functions φ_j(λ), j < m, from the SVD of the scene's spectra (Peercy 1993,
+//    "Linear color representations for full spectral rendering"); the environment is
+//    L(ω, λ) ≈ Σ_j Σ_k L̃_jk φ_j(λ) ψ_k(ω), and each reflectance premultiplied by a colour-matching
+//    function is projected, R̂_j,c = ∫ φ_j f_r c̄ dλ.
+//
+// Per vertex Ê_j = Σ_k L̃_jk T̃_k (the vertex's irradiance spectrum in the basis); per fragment
+// XYZ = Σ_j Ê_j R̂_j. Both sums are here, once, for the GPU and for the CPU twin in
+// techniques/prt, which also runs its two baselines through them: RGB-PRT (m = 3 "basis
+// functions", the three display primaries, R̂_c = ρ_c · the primary's XYZ) and the 5 nm point
+// sampling reference (a basis of 81 deltas, in chunks of kPrtMaxBasis).
+
+const int kPrtMaxBasis = 16;
+
+// L̃: the environment's SH coefficients per spectral basis function (basis[j].c[k] = L̃_jk).
+struct PrtEnvironment {
+  Sh25 basis[16];
+};
+
+// Ê: a vertex's irradiance per spectral basis function.
+struct PrtBasisIrradiance {
+  float e[16];
+};
+
+// R̂: a reflectance × (x̄, ȳ, z̄) per spectral basis function (one vec3 per j).
+struct PrtReflectance {
+  vec3 r[16];
+};
+
+// Ê_j = Σ_k L̃_jk T̃_k for j < basisCount (≤ kPrtMaxBasis); the rest are 0.
+PRISM_INLINE PrtBasisIrradiance prtVertexIrradiance(IN(PrtEnvironment) environment, IN(Sh25) transfer,
+                                                    int basisCount) {
+  PrtBasisIrradiance irradiance;
+  for (int j = 0; j < kPrtMaxBasis; ++j) {
+    irradiance.e[j] = j < basisCount ? shDot(environment.basis[j], transfer) : 0.0f;
+  }
+  return irradiance;
+}
+
+// XYZ = Σ_j Ê_j R̂_j over j < basisCount.
+PRISM_INLINE vec3 prtXyz(IN(PrtBasisIrradiance) irradiance, IN(PrtReflectance) reflectance, int basisCount) {
+  vec3 xyz = vec3(0.0f);
+  for (int j = 0; j < basisCount; ++j) xyz += irradiance.e[j] * reflectance.r[j];
+  return xyz;
+}

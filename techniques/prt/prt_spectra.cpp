@@ -1,0 +1,53 @@
+// The only translation unit that instantiates Eigen's SVD in prism::prt (≈ 40 s to compile).
+#include "techniques/prt/prt_spectra.h"
+
+#include <cmath>
+
+#include <Eigen/SVD>
+#include <fmt/format.h>
+
+#include "core/error.h"
+
+namespace prism::prt {
+
+double gridWavelengthNm(int i) { return kGridMinNm + kGridStepNm * i; }
+
+Eigen::VectorXd sampleOnGrid(const Spectrum& spectrum) {
+  Eigen::VectorXd v(kGridWavelengths);
+  for (int i = 0; i < kGridWavelengths; ++i) v[i] = spectrum.at(gridWavelengthNm(i));
+  return v;
+}
+
+Eigen::MatrixXd observerOnGrid(const Observer& observer) {
+  Eigen::MatrixXd cmf(kGridWavelengths, 3);
+  for (int i = 0; i < kGridWavelengths; ++i) cmf.row(i) = observer.at(gridWavelengthNm(i)).transpose();
+  return cmf;
+}
+
+SpectralBasis::SpectralBasis(const std::vector<Eigen::VectorXd>& spectra) {
+  Eigen::MatrixXd columns(kGridWavelengths, static_cast<Eigen::Index>(spectra.size()));
+  Eigen::Index used = 0;
+  for (const Eigen::VectorXd& s : spectra) {
+    PRISM_CHECK(s.size() == kGridWavelengths);
+    double norm = s.norm();
+    if (!(norm > 0.0) || !std::isfinite(norm)) continue;  // a black or broken spectrum adds nothing
+    columns.col(used++) = s / norm;
+  }
+  if (used == 0) throw Error("spectral basis: no non-zero spectrum to decompose");
+  Eigen::BDCSVD<Eigen::MatrixXd> svd(columns.leftCols(used), Eigen::ComputeThinU);
+  mVectors = svd.matrixU();
+  mSingularValues = svd.singularValues();
+}
+
+Eigen::MatrixXd SpectralBasis::leading(int m) const {
+  if (m < 1 || m > available())
+    throw Error(fmt::format("spectral basis: size {} out of range 1..{}", m, available()));
+  return mVectors.leftCols(m);
+}
+
+double SpectralBasis::capturedEnergy(int m) const {
+  double total = mSingularValues.squaredNorm();
+  return mSingularValues.head(std::min(m, available())).squaredNorm() / total;
+}
+
+}  // namespace prism::prt

@@ -61,6 +61,8 @@ void checkHeaderSizes(const std::filesystem::path& path) {
     if (!in) return;  // OpenEXR reports it
     bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
+  const unsigned char magic[4] = {0x76, 0x2f, 0x31, 0x01};
+  if (bytes.size() < 8 || !std::equal(magic, magic + 4, bytes.begin())) return;  // OpenEXR says what it is not
   std::size_t at = 8;  // magic number and version
   auto readString = [&](const char* what) {
     std::size_t end = at;

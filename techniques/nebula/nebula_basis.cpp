@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include "core/error.h"
+#include "core/gauss_legendre.h"
 #include "techniques/nebula/nebula_integrals.h"
 #include "techniques/nebula/nebula_spectra.h"
 

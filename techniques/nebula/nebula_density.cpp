@@ -19,19 +19,20 @@ namespace prism::nebula {
 
 static_assert(std::endian::native == std::endian::little, "density files are little-endian float32");
 
+TrilinearAxis trilinearAxis(double u, int n) {
+  TrilinearAxis axis;
+  double x = std::clamp(u * n - 0.5, 0.0, n - 1.0);
+  axis.i0 = std::min(static_cast<int>(x), n - 1);
+  axis.i1 = std::min(axis.i0 + 1, n - 1);
+  axis.f = x - axis.i0;
+  return axis;
+}
+
 double DensityGrid::sample(const glm::dvec3& p) const {
   if (p.x < 0.0 || p.y < 0.0 || p.z < 0.0 || p.x > 1.0 || p.y > 1.0 || p.z > 1.0) return 0.0;
-  auto axis = [](double u, int n, int& i0, int& i1, double& f) {
-    double x = std::clamp(u * n - 0.5, 0.0, n - 1.0);
-    i0 = std::min(static_cast<int>(x), n - 1);
-    i1 = std::min(i0 + 1, n - 1);
-    f = x - i0;
-  };
-  int x0, x1, y0, y1, z0, z1;
-  double fx, fy, fz;
-  axis(p.x, nx, x0, x1, fx);
-  axis(p.y, ny, y0, y1, fy);
-  axis(p.z, nz, z0, z1, fz);
+  const TrilinearAxis ax = trilinearAxis(p.x, nx), ay = trilinearAxis(p.y, ny), az = trilinearAxis(p.z, nz);
+  const int x0 = ax.i0, x1 = ax.i1, y0 = ay.i0, y1 = ay.i1, z0 = az.i0, z1 = az.i1;
+  const double fx = ax.f, fy = ay.f, fz = az.f;
   auto lerp = [](double a, double b, double t) { return a + (b - a) * t; };
   double c00 = lerp(at(x0, y0, z0), at(x1, y0, z0), fx), c10 = lerp(at(x0, y1, z0), at(x1, y1, z0), fx);
   double c01 = lerp(at(x0, y0, z1), at(x1, y0, z1), fx), c11 = lerp(at(x0, y1, z1), at(x1, y1, z1), fx);

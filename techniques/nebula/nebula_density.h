@@ -17,6 +17,15 @@
 
 namespace prism::nebula {
 
+// One axis of a trilinear lookup between voxel centres, clamped at the faces: the voxels i0 and i1
+// around u ∈ [0, 1] on an axis of n voxels, and i1's weight f. What every grid over the unit cube
+// (the density, the per-voxel fields of the renderer) samples with.
+struct TrilinearAxis {
+  int i0 = 0, i1 = 0;
+  double f = 0.0;
+};
+TrilinearAxis trilinearAxis(double u, int n);
+
 struct DensityGrid {
   int nx = 0, ny = 0, nz = 0;
   std::vector<float> values;  // x fastest

@@ -11,6 +11,7 @@
 
 #include "core/data_files.h"
 #include "core/error.h"
+#include "core/gauss_legendre.h"
 #include "core/parallel_for.h"
 #include "techniques/nebula/nebula_integrals.h"
 
@@ -44,17 +45,9 @@ struct VoxelField {
   std::vector<float> values;
   // Trilinear between voxel centres, clamped at the faces, into out[0..width).
   void sample(const glm::dvec3& p, float* out) const {
-    auto axis = [](double u, int n, int& i0, int& i1, double& f) {
-      double x = std::clamp(u * n - 0.5, 0.0, n - 1.0);
-      i0 = std::min(static_cast<int>(x), n - 1);
-      i1 = std::min(i0 + 1, n - 1);
-      f = x - i0;
-    };
-    int x0, x1, y0, y1, z0, z1;
-    double fx, fy, fz;
-    axis(p.x, nx, x0, x1, fx);
-    axis(p.y, ny, y0, y1, fy);
-    axis(p.z, nz, z0, z1, fz);
+    const TrilinearAxis ax = trilinearAxis(p.x, nx), ay = trilinearAxis(p.y, ny), az = trilinearAxis(p.z, nz);
+    const int x0 = ax.i0, x1 = ax.i1, y0 = ay.i0, y1 = ay.i1, z0 = az.i0, z1 = az.i1;
+    const double fx = ax.f, fy = ay.f, fz = az.f;
     for (int c = 0; c < width; ++c) out[c] = 0.0f;
     const int xs[2] = {x0, x1}, ys[2] = {y0, y1}, zs[2] = {z0, z1};
     const double wx[2] = {1 - fx, fx}, wy[2] = {1 - fy, fy}, wz[2] = {1 - fz, fz};

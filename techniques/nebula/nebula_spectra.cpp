@@ -10,6 +10,7 @@
 #include "core/csv.h"
 #include "core/data_files.h"
 #include "core/error.h"
+#include "core/gauss_legendre.h"
 #include "spectral/observer.h"
 
 namespace prism::nebula {
@@ -187,28 +188,6 @@ std::vector<EmissionLine> readEmissionLines(const std::filesystem::path& csv) {
     lines.push_back({row.fields[static_cast<std::size_t>(nameCol)], row.fields[static_cast<std::size_t>(groupCol)],
                      table.number(row, lambdaCol) * 1e-3, table.number(row, ratioCol)});
   return lines;
-}
-
-void gaussLegendre(int n, double a, double b, std::vector<double>& nodes, std::vector<double>& weights) {
-  nodes.assign(static_cast<std::size_t>(n), 0.0);
-  weights.assign(static_cast<std::size_t>(n), 0.0);
-  for (int i = 0; i < n; ++i) {  // Newton on Pₙ from Chebyshev's guess (Numerical Recipes §4.6)
-    double x = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 0.0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1.0, p1 = 0.0;
-      for (int k = 1; k <= n; ++k) {
-        double p2 = p1;
-        p1 = p0;
-        p0 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p2) / k;
-      }
-      dp = n * (x * p0 - p1) / (x * x - 1.0);
-      double dx = p0 / dp;
-      x -= dx;
-      if (std::abs(dx) < 1e-15) break;
-    }
-    nodes[static_cast<std::size_t>(i)] = 0.5 * (a + b) - 0.5 * (b - a) * x;
-    weights[static_cast<std::size_t>(i)] = (b - a) / ((1.0 - x * x) * dp * dp);
-  }
 }
 
 }  // namespace prism::nebula

@@ -98,7 +98,5 @@ struct EmissionLine {
 // data/nebula_lines.csv.
 std::vector<EmissionLine> readEmissionLines(const std::filesystem::path& csv);
 
-// Gauss–Legendre nodes and weights on [a, b].
-void gaussLegendre(int n, double a, double b, std::vector<double>& nodes, std::vector<double>& weights);
 
 }  // namespace prism::nebula

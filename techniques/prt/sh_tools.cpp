@@ -7,35 +7,10 @@
 #include <Eigen/QR>
 
 #include "core/error.h"
+#include "core/gauss_legendre.h"
 
 namespace prism::prt {
 namespace {
-
-// Gauss–Legendre nodes and weights on [−1, 1] (Newton on P_n; Press et al., Numerical Recipes
-// 3rd ed., §4.6.1).
-void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weights) {
-  nodes.assign(static_cast<std::size_t>(n), 0.0);
-  weights.assign(static_cast<std::size_t>(n), 0.0);
-  for (int i = 0; i < (n + 1) / 2; ++i) {
-    double z = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5));
-    double pp = 0.0;
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      double p1 = 1.0, p2 = 0.0;
-      for (int j = 1; j <= n; ++j) {
-        double p3 = p2;
-        p2 = p1;
-        p1 = ((2.0 * j - 1.0) * z * p2 - (j - 1.0) * p3) / j;
-      }
-      pp = n * (z * p1 - p2) / (z * z - 1.0);
-      double z1 = z;
-      z = z1 - p1 / pp;
-      if (std::abs(z - z1) < 1e-15) break;
-    }
-    nodes[static_cast<std::size_t>(i)] = -z;
-    nodes[static_cast<std::size_t>(n - 1 - i)] = z;
-    weights[static_cast<std::size_t>(i)] = weights[static_cast<std::size_t>(n - 1 - i)] = 2.0 / ((1.0 - z * z) * pp * pp);
-  }
-}
 
 // Spherical Fibonacci points (González 2010): well spread, deterministic.
 glm::dvec3 fibonacciDirection(int i, int count) {
@@ -69,7 +44,7 @@ ShVector evaluateSh(const glm::dvec3& d) {
 ShVector projectOnSh(const std::function<double(const glm::dvec3&)>& f, int zNodes, int phiSteps) {
   PRISM_CHECK(zNodes > 0 && phiSteps > 0);
   std::vector<double> nodes, weights;
-  gaussLegendre(zNodes, nodes, weights);
+  gaussLegendre(zNodes, -1.0, 1.0, nodes, weights);
   ShVector sum = ShVector::Zero();
   double dPhi = 2.0 * std::numbers::pi / phiSteps;
   for (int hemisphere = 0; hemisphere < 2; ++hemisphere) {

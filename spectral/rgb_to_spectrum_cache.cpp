@@ -104,6 +104,9 @@ RgbToSpectrumTable cachedRgbToSpectrumTable(
       RgbToSpectrumTable table = RgbToSpectrumTable::load(path);
       if (table.gamut() != gamut || table.resolution() != resolution)
         damage = formatted("holds %s at %d³", table.gamut().c_str(), table.resolution());
+      else if (table.inputsHash() != inputHash(gamut, resolution))
+        damage = formatted("made from other inputs: hash %08x, this build's %08x", table.inputsHash(),
+                           inputHash(gamut, resolution));
       else
         damage = untrustworthy(table);
       if (damage.empty()) return table;
@@ -115,6 +118,7 @@ RgbToSpectrumTable cachedRgbToSpectrumTable(
   }
   requireWritable(path);  // before a minute of work, not after
   RgbToSpectrumTable table = buildRgbToSpectrumTable({gamut, resolution, 0, progress});
+  table.setInputsHash(inputHash(gamut, resolution));
   table.save(path);
   return table;
 }

@@ -82,6 +82,25 @@ TEST_F(CacheTest, RebuildsAnEntryWhoseCoefficientsDoNotReproduceTheirColours) {
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << "the rebuilt entry is trusted";
 }
 
+// The header records the hash of the inputs the table was made from, under the checksum: a sound
+// table moved under another key (another optimiser version, observer or white) is not trusted.
+TEST_F(CacheTest, RebuildsAnEntryMadeFromOtherInputs) {
+  RgbToSpectrumTable first = cachedRgbToSpectrumTable("srgb", 6);
+  EXPECT_NE(first.inputsHash(), 0u);
+  RgbToSpectrumTable moved = first;
+  moved.setInputsHash(first.inputsHash() ^ 0x5a5a5a5au);
+  const std::filesystem::path path = rgbToSpectrumCachePath("srgb", 6);
+  moved.save(path);
+  EXPECT_EQ(RgbToSpectrumTable::load(path).inputsHash(), moved.inputsHash());
+
+  ::testing::internal::CaptureStderr();
+  RgbToSpectrumTable rebuilt = cachedRgbToSpectrumTable("srgb", 6);
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(rebuilt.inputsHash(), first.inputsHash());
+  EXPECT_NE(said.find("is damaged (made from other inputs: hash "), std::string::npos) << said;
+  EXPECT_EQ(said.find('\n'), said.size() - 1) << said;
+}
+
 TEST_F(CacheTest, KeysDifferByGamutAndResolution) {
   EXPECT_NE(rgbToSpectrumCachePath("srgb", 6), rgbToSpectrumCachePath("srgb", 7));
   EXPECT_NE(rgbToSpectrumCachePath("srgb", 6), rgbToSpectrumCachePath("rec2020", 6));

@@ -131,7 +131,7 @@ void RgbToSpectrumTable::save(const std::filesystem::path& path) const {
   std::copy(mGamut.begin(), mGamut.end(), gamut);
   bytes.append(gamut, kGamutBytes);
   append(bytes, kNodeLayout);
-  append(bytes, std::uint32_t{0});
+  append(bytes, mInputsHash);
   for (int k = 0; k < mResolution; ++k) append(bytes, brightnessNode(k));
   bytes.append(reinterpret_cast<const char*>(mData.data()), mData.size() * sizeof(float));
   append(bytes, crc(bytes.data(), bytes.size()));
@@ -164,6 +164,7 @@ RgbToSpectrumTable RgbToSpectrumTable::load(const std::filesystem::path& path) {
   if (readAt<std::uint32_t>(bytes, expected - 4) != crc(bytes.data(), expected - 4))
     throw Error(where + "corrupt upsampling table (checksum mismatch)");
   RgbToSpectrumTable table(gamut, static_cast<int>(res));
+  table.mInputsHash = readAt<std::uint32_t>(bytes, 36);
   for (int k = 0; k < table.mResolution; ++k)
     if (readAt<float>(bytes, kHeaderBytes + 4 * static_cast<std::size_t>(k)) != table.brightnessNode(k))
       throw Error(where + "brightness node " + std::to_string(k) +

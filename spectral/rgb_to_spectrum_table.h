@@ -9,7 +9,9 @@
 //   16      16 char[16]   gamut name, zero-padded (e.g. "srgb")
 //   32      4  u32        node layout: 1 = brightness smoothstep(smoothstep(k/(n−1))),
 //                         ratios smoothstep(i/(n−1)) (shaders/shared/upsampling.glsl)
-//   36      4  u32        reserved, 0
+//   36      4  u32        inputs hash: the cache's key of what shaped the table (optimiser,
+//                         gamut, resolution, observer, white; rgb_to_spectrum_cache.h), so
+//                         that the checksum covers it; 0 when unrecorded (`prism lut`)
 //   40      4n f32[n]     brightness node values
 //   ...     36n³ f32[]    coefficients [block 0–2][z][y][x][c0 c1 c2], λ in nm
 //   end−4   4  u32        CRC-32 (zlib) of every byte before it
@@ -17,6 +19,7 @@
 // file and the field that is wrong.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -32,6 +35,9 @@ class RgbToSpectrumTable {
 
   const std::string& gamut() const { return mGamut; }
   int resolution() const { return mResolution; }
+  // The hash of the inputs that shaped it, saved in the header (0: unrecorded).
+  std::uint32_t inputsHash() const { return mInputsHash; }
+  void setInputsHash(std::uint32_t hash) { mInputsHash = hash; }
   // Brightness of node k, from the shared formula.
   float brightnessNode(int k) const;
   glm::vec3 coefficients(int block, int zi, int yi, int xi) const;
@@ -54,6 +60,7 @@ class RgbToSpectrumTable {
 
   std::string mGamut;
   int mResolution;
+  std::uint32_t mInputsHash = 0;
   std::vector<float> mData;
 };
 

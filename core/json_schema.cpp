@@ -72,7 +72,7 @@ class StructureCheck {
         Frame& frame = mFrames.back();
         frame.key = parsed.get<std::string>();
         if (!frame.keys.insert(frame.key).second)
-          throw Error(mName + ": " + pointer() + "/" + pointerToken(frame.key) + ": duplicate key");
+          throw Error(mName + ": " + excerpt(pointer() + "/" + pointerToken(frame.key), 160) + ": duplicate key");
         break;
       }
       case json::parse_event_t::value:
@@ -173,7 +173,8 @@ Node::Node(const nlohmann::json& value, std::string pointer, const Document& doc
     : mValue(&value), mPointer(std::move(pointer)), mDocument(&document) {}
 
 void Node::fail(const std::string& what) const {
-  throw Error(mDocument->name + ": " + (mPointer.empty() ? "/" : mPointer) + ": " + what);
+  // A pointer quotes the document's keys, which may be megabytes long.
+  throw Error(mDocument->name + ": " + (mPointer.empty() ? "/" : excerpt(mPointer, 160)) + ": " + what);
 }
 
 void Node::expectObject(std::initializer_list<std::string_view> allowed) const {

@@ -63,10 +63,14 @@ void checkHeaderSizes(const std::filesystem::path& path) {
   }
   const unsigned char magic[4] = {0x76, 0x2f, 0x31, 0x01};
   if (bytes.size() < 8 || !std::equal(magic, magic + 4, bytes.begin())) return;  // OpenEXR says what it is not
-  std::size_t at = 8;  // magic number and version
+  // Names and type names are at most 31 bytes, or 255 with the long-names flag (OpenEXR's file
+  // layout, "Version Field"); OpenEXR reads past a longer one as if it had ended there.
+  const std::uint32_t version = bytes[4] | bytes[5] << 8 | bytes[6] << 16 | static_cast<std::uint32_t>(bytes[7]) << 24;
+  const std::size_t longest = (version & 0x400u) != 0 ? 255 : 31;
+  std::size_t at = 8;
   auto readString = [&](const char* what) {
     std::size_t end = at;
-    while (end < bytes.size() && bytes[end] != 0 && end - at < 256) ++end;
+    while (end < bytes.size() && bytes[end] != 0 && end - at <= longest) ++end;
     if (end >= bytes.size() || bytes[end] != 0)
       throw Error(path.string() + ": malformed EXR header: an attribute's " + what + " does not end");
     std::string text(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.begin() + static_cast<std::ptrdiff_t>(end));

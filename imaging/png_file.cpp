@@ -96,6 +96,33 @@ void PngImage::write(const std::filesystem::path& path) const {
   writeFileAtomically(path, bytes);
 }
 
+void checkPngBeforeDecoding(const std::string& name, std::span<const std::uint8_t> bytes) {
+  const std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+  if (bytes.size() < 8 || !std::equal(signature, signature + 8, bytes.begin()))
+    throw Error(name + ": not a PNG file (no PNG signature)");
+  // The first chunk is IHDR: width and height, big-endian (PNG specification, §11.2.2).
+  const std::uint8_t ihdr[4] = {'I', 'H', 'D', 'R'};
+  if (bytes.size() < 24 || !std::equal(ihdr, ihdr + 4, bytes.begin() + 12))
+    throw Error(name + ": not a readable image: no IHDR chunk first");
+  auto bigEndian = [&](std::size_t at) {
+    return static_cast<std::uint32_t>(bytes[at]) << 24 | static_cast<std::uint32_t>(bytes[at + 1]) << 16 |
+           static_cast<std::uint32_t>(bytes[at + 2]) << 8 | bytes[at + 3];
+  };
+  const std::uint32_t width = bigEndian(16), height = bigEndian(20);
+  if (width < 1 || height < 1 || width > kMaxPngSide || height > kMaxPngSide) {
+    throw Error(name + ": an image of " + std::to_string(width) + " × " + std::to_string(height) +
+                " pixels; Prism reads 1 to " + std::to_string(kMaxPngSide) + " on each side");
+  }
+  // Deflate packs at most 1032 bytes into one: fewer bytes than a byte a pixel over 1032 cannot
+  // hold the image, however uniform (stb would allocate all of it before finding that out).
+  const double needed = static_cast<double>(width) * static_cast<double>(height) / 1032.0;
+  if (static_cast<double>(bytes.size()) < needed) {
+    throw Error(name + ": truncated: a " + std::to_string(width) + " × " + std::to_string(height) +
+                " PNG needs at least " + std::to_string(static_cast<long long>(needed)) + " bytes, it has " +
+                std::to_string(bytes.size()));
+  }
+}
+
 PngImage readPng8(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a folder, not an image");
   std::ifstream in(path, std::ios::binary);
@@ -104,6 +131,7 @@ PngImage readPng8(const std::filesystem::path& path) {
   if (in.bad()) throw Error(path.string() + ": cannot read: " + std::strerror(errno));
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw Error(path.string() + ": too large for stb_image (over 2 GiB)");
+  checkPngBeforeDecoding(path.string(), {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
   int width = 0, height = 0, fileChannels = 0;
   stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                                           static_cast<int>(bytes.size()), &width, &height, &fileChannels, 4);

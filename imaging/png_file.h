@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -52,8 +54,17 @@ class PngImage {
 // Width in pixels of `text` drawn by PngImage::drawText at `scale` (its widest line).
 int textWidth(std::string_view text, int scale);
 
-// Any image stb_image reads (PNG of any bit depth, also JPEG, BMP, TGA), as 8-bit RGBA; grey
-// and RGB files come back opaque. Error naming the file when it is missing or not an image.
+// A PNG of any bit depth (stb_image) as 8-bit RGBA; grey and RGB files come back opaque. Error
+// naming the file when it is missing, not a PNG (stb's other formats, TGA above all, have no
+// signature: any 17 bytes may claim a huge TGA), or fails checkPngBeforeDecoding.
 PngImage readPng8(const std::filesystem::path& path);
+
+// The largest side Prism decodes (what `prism render` can write: its --width/--height limit).
+inline constexpr int kMaxPngSide = 16384;
+
+// Before a PNG is decoded: its signature, its size from the header (1 to kMaxPngSide a side), and
+// enough bytes to hold that many pixels. Error "NAME: …" otherwise, so that a 17-byte file cannot
+// make the decoder allocate gigabytes. readPng8 and the glTF textures' decoder check with it.
+void checkPngBeforeDecoding(const std::string& name, std::span<const std::uint8_t> bytes);
 
 }  // namespace prism::imaging

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "imaging/png_file.h"
 #include "core/json_schema.h"
 
 namespace prism {
@@ -234,6 +235,7 @@ Image toImage(const tinygltf::Image& src, bool srgb, std::string source) {
 Image decodeImage(std::span<const std::uint8_t> bytes, bool srgb, std::string source) {
   if (std::string why = unsupportedImage(bytes); !why.empty()) throw Error(why);
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) throw Error("image file too large");
+  if (sniffImage(bytes) == ImageKind::Png) imaging::checkPngBeforeDecoding(source, bytes);
   tinygltf::Image decoded;
   std::string err, warn;
   if (!tinygltf::LoadImageData(&decoded, 0, &err, &warn, 0, 0, bytes.data(), static_cast<int>(bytes.size()), nullptr))

@@ -30,7 +30,9 @@ GreedyResult greedyBasis(const Eigen::MatrixXd& family, const Eigen::MatrixXd& c
     basis.col(basis.cols() - 1) = u;
     residual -= u * (u.transpose() * residual);
     result.chosen.push_back(c);
-    result.maxError.push_back((residual.colwise().norm().transpose().array() / norms.array()).maxCoeff());
+    double worst = 0.0;
+    for (Eigen::Index j = 0; j < residual.cols(); ++j) worst = std::max(worst, residual.col(j).norm() / norms(j));
+    result.maxError.push_back(worst);
   };
   for (int c : initial) add(c);
   while (static_cast<int>(result.chosen.size()) < count) {
@@ -47,9 +49,14 @@ GreedyResult greedyBasis(const Eigen::MatrixXd& family, const Eigen::MatrixXd& c
       double n = u.norm();
       if (n < minNewDirection * C.col(c).norm()) continue;
       u /= n;
+      // Element by element: the row-minus-column array expression this was read past its end
+      // under ASan.
       Eigen::RowVectorXd proj = u.transpose() * residual;
-      Eigen::ArrayXd err2 = residual.colwise().squaredNorm().array() - proj.array().square().transpose();
-      double worst = (err2.max(0.0).sqrt() / norms.array()).maxCoeff();
+      double worst = 0.0;
+      for (Eigen::Index j = 0; j < residual.cols(); ++j) {
+        double err2 = residual.col(j).squaredNorm() - proj(j) * proj(j);
+        worst = std::max(worst, std::sqrt(std::max(err2, 0.0)) / norms(j));
+      }
       if (worst < bestError) bestError = worst, best = c;
     }
     if (best < 0) break;

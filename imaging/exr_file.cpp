@@ -17,7 +17,6 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -55,41 +54,41 @@ std::string oneLine(std::string text) {
 // busy for seconds (found by fuzzing). The first header's attributes (name, type, size, value;
 // an empty name ends it) must each fit in what is left of the file.
 void checkHeaderSizes(const std::filesystem::path& path) {
-  std::vector<unsigned char> bytes;
-  {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return;  // OpenEXR reports it
-    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  }
+  // The header only, read as it is walked: an EXR's pixels may be gigabytes that OpenEXR reads next.
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return;  // OpenEXR reports it
+  const std::uint64_t fileSize = static_cast<std::uint64_t>(in.tellg());
+  in.seekg(0);
+  unsigned char head[8] = {};
   const unsigned char magic[4] = {0x76, 0x2f, 0x31, 0x01};
-  if (bytes.size() < 8 || !std::equal(magic, magic + 4, bytes.begin())) return;  // OpenEXR says what it is not
+  if (!in.read(reinterpret_cast<char*>(head), 8) || !std::equal(magic, magic + 4, head)) return;  // OpenEXR says what it is not
   // Names and type names are at most 31 bytes, or 255 with the long-names flag (OpenEXR's file
   // layout, "Version Field"); OpenEXR reads past a longer one as if it had ended there.
-  const std::uint32_t version = bytes[4] | bytes[5] << 8 | bytes[6] << 16 | static_cast<std::uint32_t>(bytes[7]) << 24;
+  const std::uint32_t version = head[4] | head[5] << 8 | head[6] << 16 | static_cast<std::uint32_t>(head[7]) << 24;
   const std::size_t longest = (version & 0x400u) != 0 ? 255 : 31;
-  std::size_t at = 8;
   auto readString = [&](const char* what) {
-    std::size_t end = at;
-    while (end < bytes.size() && bytes[end] != 0 && end - at <= longest) ++end;
-    if (end >= bytes.size() || bytes[end] != 0)
+    std::string text;
+    char c = 0;
+    while (in.get(c) && c != 0 && text.size() <= longest) text.push_back(c);
+    if (!in || c != 0)
       throw Error(path.string() + ": malformed EXR header: an attribute's " + what + " does not end");
-    std::string text(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.begin() + static_cast<std::ptrdiff_t>(end));
-    at = end + 1;
     return text;
   };
-  while (at < bytes.size()) {
+  while (true) {
     std::string name = readString("name");
     if (name.empty()) return;
     readString("type");
-    if (bytes.size() - at < 4) throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' has no size");
-    std::int64_t size = static_cast<std::int32_t>(bytes[at] | bytes[at + 1] << 8 | bytes[at + 2] << 16 |
-                                                  static_cast<std::uint32_t>(bytes[at + 3]) << 24);
-    at += 4;
-    if (size < 0 || static_cast<std::uint64_t>(size) > bytes.size() - at) {
+    unsigned char size4[4] = {};
+    if (!in.read(reinterpret_cast<char*>(size4), 4))
+      throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' has no size");
+    const std::int64_t size = static_cast<std::int32_t>(size4[0] | size4[1] << 8 | size4[2] << 16 |
+                                                        static_cast<std::uint32_t>(size4[3]) << 24);
+    const std::uint64_t left = fileSize - static_cast<std::uint64_t>(in.tellg());
+    if (size < 0 || static_cast<std::uint64_t>(size) > left) {
       throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' claims " +
-                  std::to_string(size) + " bytes, " + std::to_string(bytes.size() - at) + " are left");
+                  std::to_string(size) + " bytes, " + std::to_string(left) + " are left");
     }
-    at += static_cast<std::size_t>(size);
+    in.seekg(size, std::ios::cur);
   }
 }
 

@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
+#include "spectral/rgb_to_spectrum_cache.h"
 #include "spectral/sampling.h"
 #include "spectral/sigmoid_fit.h"
 #include "spectral/colour_checker.h"
@@ -84,9 +85,17 @@ void colourXyz(const XyzOptions& o) {
     if (o.rangeNm.size() != 2) throw Error("--range: expected MIN,MAX in nm");
     SamplingSettings settings{o.wavelengthCount, o.rangeNm[0], o.rangeNm[1],
                               samplingStrategyFromName(o.strategy)};
-    // Lights follows the illuminant, the only light here.
-    std::vector<SampledWavelengths> batches = WavelengthSampler(settings, obs, light).sample(o.seed);
-    std::vector<IntegrationMatrix> matrices = integrationMatrices(batches, obs);
+    // Lights follows the illuminant, the only light here; Optimised is fitted under it alone, on
+    // the standard training set (sRGB's gamut).
+    const WavelengthSampler sampler =
+        settings.strategy == SamplingStrategy::Optimised
+            ? WavelengthSampler(settings, cachedFitWavelengths({{light},
+                                                                standardTrainingReflectances(rendererRgbToSpectrumTable("srgb")),
+                                                                settings.count, settings.minNm, settings.maxNm},
+                                                               obs))
+            : WavelengthSampler(settings, obs, light);
+    std::vector<SampledWavelengths> batches = sampler.sample(o.seed);
+    std::vector<IntegrationMatrix> matrices = sampler.matrices(batches, obs);
     Eigen::Vector3d sampled = Eigen::Vector3d::Zero();
     for (std::size_t b = 0; b < batches.size(); ++b) {
       Eigen::Vector4d radiance;

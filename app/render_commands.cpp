@@ -4,6 +4,7 @@
 
 #include "gpu/headless_context.h"
 #include "harness/display_png.h"
+#include "harness/optimised_wavelengths.h"
 #include "harness/progress_bar.h"
 #include "harness/upsampling_table.h"
 #include "imaging/exr_file.h"
@@ -41,6 +42,7 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
   if (frames < 1) throw Error("--frames: must be at least 1");
   requireWritable(output);
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
+  harness::fitOptimisedWavelengths(scene, settings, table);
   gpu::HeadlessContext context;
   render::Renderer renderer(scene, table, settings);
   std::optional<harness::ProgressBar> bar;

@@ -46,9 +46,10 @@ constexpr float kReefDepthsM[] = {1.0f, 5.0f, 10.0f, 20.0f, 50.0f};
 // The thesis's three modes at 200 wavelengths (one frame of the uniform grid), and the real-time
 // setting, 16 wavelengths a frame: as a still camera sees it (the uniform grid, or the lights'
 // pdf, rotated every frame, 32 frames accumulated) and as one frame alone (uniform grid, the
-// observer's importance, the lights' pdf). A strategy whose wavelengths move between frames has
-// a good and a bad frame, as a moving camera sees them one after another: its single frames are
-// measured `singles` times in a row, each alone, and their statistics averaged.
+// observer's importance, the lights' pdf, the set fitted for the scene's lights). A strategy
+// whose wavelengths move between frames has a good and a bad frame, as a moving camera sees them
+// one after another: its single frames are measured `singles` times in a row, each alone, and
+// their statistics averaged.
 struct Mode {
   const char* name;
   render::RenderMode mode;
@@ -69,6 +70,7 @@ constexpr Mode kModes[] = {
      kSingleFrames},
     {"jakob-hanika-16-1frame-lights", render::RenderMode::JakobHanika, 16, SamplingStrategy::Lights, 1,
      kSingleFrames},
+    {"jakob-hanika-16-1frame-optimised", render::RenderMode::JakobHanika, 16, SamplingStrategy::Optimised, 1},
 };
 
 // Single frames' statistics, averaged field by field: added up into `sum`, then divided by the runs.

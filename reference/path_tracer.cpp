@@ -206,7 +206,7 @@ class PathTracer {
     }
     vec4 radiance = trace(mCamera.position, direction, lambdaNm, medium, random);
 
-    IntegrationMatrix m = integrationMatrices({wavelengths}, mObserver).front();
+    IntegrationMatrix m = mSampler.matrices({wavelengths}, mObserver).front();
     Eigen::Vector4d l(radiance.x, radiance.y, radiance.z, radiance.w);
     return mScale * (m * l);
   }
@@ -489,6 +489,10 @@ void validate(const ReferenceSettings& s) {
   if (s.threads > 1024) throw Error(fmt::format("--threads must be at most 1024 (0: all cores), got {}", s.threads));
   if (s.wavelengths.count != 4) {
     throw Error(fmt::format("the reference traces 4 hero wavelengths per path, got {}", s.wavelengths.count));
+  }
+  if (s.wavelengths.strategy == SamplingStrategy::Optimised) {
+    throw Error("--strategy optimised is a fitted, biased set for real-time frames; the reference needs an "
+                "unbiased one (uniform, stratified, rotated, importance or lights)");
   }
   prism::validate(s.wavelengths);
   observer(s.observer);  // throws naming it when unknown

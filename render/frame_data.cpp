@@ -30,16 +30,6 @@ glm::vec4 reflectanceRgb(const Spectrum& reflectance, const RgbColourSpace& spac
   return toVec4(rgb);
 }
 
-// Reflectance of a conductor at normal incidence, by the spectral path's own Fresnel formula.
-Spectrum normalIncidenceReflectance(const ConductorIor& ior) {
-  Spectrum r;
-  for (int i = 0; i < kSpectrumSamples; ++i) {
-    glm::vec4 n(static_cast<float>(ior.n[i])), k(static_cast<float>(ior.k[i]));
-    r[i] = shared::conductorFresnel(n, k, 1.0f).x;
-  }
-  return r;
-}
-
 glm::vec4 at4(const Spectrum& s, const glm::vec4& lambdaNm, float scale = 1.0f) {
   glm::vec4 v;
   for (int j = 0; j < 4; ++j) v[j] = static_cast<float>(s.at(lambdaNm[j])) * scale;
@@ -74,7 +64,7 @@ void addBatches(FrameData& frame, const FrameSettings& settings, const FrameCont
     return;
   }
   std::vector<SampledWavelengths> sampled = context.wavelengths->sample(frameIndex);
-  std::vector<IntegrationMatrix> matrices = integrationMatrices(sampled, obs);
+  std::vector<IntegrationMatrix> matrices = context.wavelengths->matrices(sampled, obs);
   for (std::size_t b = 0; b < sampled.size(); ++b) {
     shared::GpuBatch batch{};
     for (int j = 0; j < 4; ++j) {

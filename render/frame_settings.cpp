@@ -65,6 +65,11 @@ void validate(const DisplaySettings& settings) {
 }
 
 SamplingSettings effectiveSampling(const FrameSettings& settings) {
+  if (settings.mode == RenderMode::Rgb || settings.mode == RenderMode::Optimised4) {
+    SamplingSettings unused = settings.sampling;  // neither mode samples: nothing to build or fit
+    unused.strategy = SamplingStrategy::Uniform;
+    return unused;
+  }
   if (settings.mode != RenderMode::Reference) return settings.sampling;
   SamplingSettings reference;
   reference.count = kReferenceWavelengths;

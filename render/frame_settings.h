@@ -65,7 +65,7 @@ struct FrameSettings {
 void validate(const FrameSettings& settings);
 void validate(const DisplaySettings& settings);
 
-// The wavelength sampling the mode actually uses.
+// The wavelength sampling the mode actually uses (RGB and optimised4 use none: uniform, unused).
 SamplingSettings effectiveSampling(const FrameSettings& settings);
 
 }  // namespace prism::render

@@ -149,7 +149,10 @@ INSTANTIATE_TEST_SUITE_P(
                     ParityCase{"spheres_blue_led.json", RenderMode::JakobHanika, GBufferAlbedo::Rgb,
                                SamplingStrategy::Lights},
                     ParityCase{"conductors_f11.json", RenderMode::JakobHanika, GBufferAlbedo::Rgb,
-                               SamplingStrategy::Lights}),
+                               SamplingStrategy::Lights},
+                    // A fitted set: whole-nm wavelengths and a full 3 × n matrix, not c̄/(n·pdf).
+                    ParityCase{"conductors_f11.json", RenderMode::JakobHanika, GBufferAlbedo::Rgb,
+                               SamplingStrategy::Optimised}),
     [](const testing::TestParamInfo<ParityCase>& param) {
       std::string name = std::filesystem::path(param.param.scene).stem().string() + "_" +
                          std::string(renderModeName(param.param.mode)) +

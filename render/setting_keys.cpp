@@ -166,7 +166,7 @@ std::vector<SettingKey> makeKeys() {
   keys.push_back(choiceKey<SamplingStrategy>(
       "strategy", "how the wavelengths are drawn", "rotated",
       {SamplingStrategy::Uniform, SamplingStrategy::Stratified, SamplingStrategy::Rotated, SamplingStrategy::Importance,
-       SamplingStrategy::Lights},
+       SamplingStrategy::Lights, SamplingStrategy::Optimised},
       samplingStrategyName, [](S s) -> SamplingStrategy& { return s.sampling.strategy; }));
   keys.push_back(nameKey("observer", "the colour matching functions, or a camera's curves (raw camera RGB)", "cie1964",
                          "cie1931, cie1964 or a camera (see `prism colour list cameras`)",

@@ -3,6 +3,8 @@
 #include <numbers>
 
 #include "scene/scene_spectra.h"
+#include "spectral/rgb_intent.h"
+#include "spectral/wavelength_fit.h"
 
 namespace prism {
 
@@ -13,11 +15,39 @@ Spectrum sceneEmission(const Scene& scene, const RgbColourSpace& space, const Rg
   return emission;
 }
 
+WavelengthFitProblem sceneWavelengthFitProblem(const SamplingSettings& settings, const Scene& scene,
+                                               const RgbColourSpace& space, const RgbToSpectrumTable& table) {
+  WavelengthFitProblem problem;
+  problem.count = settings.count;
+  problem.minNm = settings.minNm;
+  problem.maxNm = settings.maxNm;
+  auto addLight = [&](const Spectrum& spd) {
+    for (const Spectrum& known : problem.lights)
+      if (known == spd) return;
+    problem.lights.push_back(spd);
+  };
+  for (const Light& light : scene.lights) addLight(light.spd);
+  if (scene.backgroundLuminance > 0.0f) addLight(std::numbers::pi * backgroundRadiance(scene, space, table).toDense());
+  problem.reflectances = standardTrainingReflectances(table);
+  for (const Material& m : scene.materials) {
+    if (m.conductor) problem.reflectances.push_back(normalIncidenceReflectance(*m.conductor));
+    else if (m.reflectance) problem.reflectances.push_back(*m.reflectance);
+    else problem.reflectances.push_back(RgbAlbedoSpectrum(table, m.baseColour).toDense());
+  }
+  return problem;
+}
+
 WavelengthSampler sceneWavelengthSampler(const SamplingSettings& settings, const Observer& importance,
                                          const Scene& scene, const RgbColourSpace& space,
-                                         const RgbToSpectrumTable& table) {
-  if (settings.strategy != SamplingStrategy::Lights) return WavelengthSampler(settings, importance);
-  return WavelengthSampler(settings, importance, sceneEmission(scene, space, table));
+                                         const RgbToSpectrumTable& table, const FitProgress& progress) {
+  switch (settings.strategy) {
+    case SamplingStrategy::Lights: return WavelengthSampler(settings, importance, sceneEmission(scene, space, table));
+    case SamplingStrategy::Optimised:
+      validate(settings);
+      return WavelengthSampler(
+          settings, cachedFitWavelengths(sceneWavelengthFitProblem(settings, scene, space, table), importance, progress));
+    default: return WavelengthSampler(settings, importance);
+  }
 }
 
 }  // namespace prism

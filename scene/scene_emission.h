@@ -23,10 +23,18 @@ namespace prism {
 // `space` is the scene's colour space and `table` its Jakob–Hanika table (the background's colour).
 Spectrum sceneEmission(const Scene& scene, const RgbColourSpace& space, const RgbToSpectrumTable& table);
 
-// The sampler of `settings` for this scene: Lights follows sceneEmission; the other strategies
-// do not need it (and it is not computed for them).
+// What the Optimised strategy fits for this scene (spectral/wavelength_fit.h): its lights, each
+// alone (distinct spectra once), and the background's π·L; the standard training reflectances
+// plus the scene's own (materials' upsampled base colours, measured reflectances, conductors at
+// normal incidence); the settings' count and range.
+WavelengthFitProblem sceneWavelengthFitProblem(const SamplingSettings& settings, const Scene& scene,
+                                               const RgbColourSpace& space, const RgbToSpectrumTable& table);
+
+// The sampler of `settings` for this scene: Lights follows sceneEmission, Optimised fits
+// sceneWavelengthFitProblem for `importance` (cached: cachedFitWavelengths; `progress` is called
+// only while fitting); the other strategies need neither (and they are not computed for them).
 WavelengthSampler sceneWavelengthSampler(const SamplingSettings& settings, const Observer& importance,
                                          const Scene& scene, const RgbColourSpace& space,
-                                         const RgbToSpectrumTable& table);
+                                         const RgbToSpectrumTable& table, const FitProgress& progress = {});
 
 }  // namespace prism

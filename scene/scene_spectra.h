@@ -15,4 +15,8 @@ namespace prism {
 RgbIlluminantSpectrum backgroundRadiance(const Scene& scene, const RgbColourSpace& space,
                                          const RgbToSpectrumTable& table);
 
+// A conductor's reflectance at normal incidence, by the spectral path's own Fresnel formula
+// (shaders/shared/brdf.glsl): what RGB mode shows of it, and what a wavelength fit trains on.
+Spectrum normalIncidenceReflectance(const ConductorIor& ior);
+
 }  // namespace prism

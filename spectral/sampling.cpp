@@ -1,6 +1,7 @@
 #include "spectral/sampling.h"
 
 #include <cmath>
+#include <utility>
 #include <string>
 
 #include "shared_cpp.h"
@@ -18,8 +19,9 @@ SamplingStrategy samplingStrategyFromName(std::string_view name) {
   if (name == "rotated") return SamplingStrategy::Rotated;
   if (name == "importance") return SamplingStrategy::Importance;
   if (name == "lights") return SamplingStrategy::Lights;
+  if (name == "optimised") return SamplingStrategy::Optimised;
   throw Error("unknown sampling strategy '" + std::string(name) +
-              "' (known: uniform, stratified, rotated, importance, lights)");
+              "' (known: uniform, stratified, rotated, importance, lights, optimised)");
 }
 
 std::string_view samplingStrategyName(SamplingStrategy strategy) {
@@ -29,6 +31,7 @@ std::string_view samplingStrategyName(SamplingStrategy strategy) {
     case SamplingStrategy::Rotated: return "rotated";
     case SamplingStrategy::Importance: return "importance";
     case SamplingStrategy::Lights: return "lights";
+    case SamplingStrategy::Optimised: return "optimised";
   }
   return "?";
 }
@@ -44,7 +47,8 @@ void validate(const SamplingSettings& s) {
 
 WavelengthSampler::WavelengthSampler(const SamplingSettings& settings, const Observer& importance)
     : mSettings(settings) {
-  PRISM_CHECK(settings.strategy != SamplingStrategy::Lights);  // it needs the lights' emission
+  // Lights needs the lights' emission, Optimised its fitted set.
+  PRISM_CHECK(settings.strategy != SamplingStrategy::Lights && settings.strategy != SamplingStrategy::Optimised);
   validate(settings);
   if (settings.strategy == SamplingStrategy::Importance) {
     mPdf = WavelengthPdf::observerResponse(importance, settings.minNm, settings.maxNm);
@@ -54,12 +58,21 @@ WavelengthSampler::WavelengthSampler(const SamplingSettings& settings, const Obs
 WavelengthSampler::WavelengthSampler(const SamplingSettings& settings, const Observer& importance,
                                      const Spectrum& emission)
     : mSettings(settings) {
+  PRISM_CHECK(settings.strategy != SamplingStrategy::Optimised);
   validate(settings);
   if (settings.strategy == SamplingStrategy::Importance) {
     mPdf = WavelengthPdf::observerResponse(importance, settings.minNm, settings.maxNm);
   } else if (settings.strategy == SamplingStrategy::Lights) {
     mPdf = WavelengthPdf::lightsAndObserver(emission, importance, settings.minNm, settings.maxNm);
   }
+}
+
+WavelengthSampler::WavelengthSampler(const SamplingSettings& settings, FittedWavelengths fitted)
+    : mSettings(settings), mFitted(std::move(fitted)) {
+  PRISM_CHECK(settings.strategy == SamplingStrategy::Optimised);
+  validate(settings);
+  PRISM_CHECK(mFitted->lambdaNm.size() == static_cast<std::size_t>(settings.count) &&
+              mFitted->weights.cols() == settings.count);
 }
 
 std::vector<SampledWavelengths> sampleWavelengths(const SamplingSettings& settings,
@@ -88,6 +101,10 @@ std::vector<SampledWavelengths> WavelengthSampler::sample(std::uint32_t seed, in
   auto jitter = [&](int i) {
     return static_cast<double>(shared::randomFloat(seed, static_cast<std::uint32_t>(i)));
   };
+  if (mFitted) {
+    for (int i = 0; i < n; ++i) set(i, mFitted->lambdaNm[static_cast<std::size_t>(i)], 0.0);
+    return batches;
+  }
   if (mPdf) {
     for (int i = 0; i < n; ++i) {
       double offset = s.strategy == SamplingStrategy::Lights ? rotation : jitter(i);
@@ -116,6 +133,16 @@ std::vector<IntegrationMatrix> integrationMatrices(const std::vector<SampledWave
     matrices.push_back(m);
   }
   return matrices;
+}
+
+std::vector<IntegrationMatrix> WavelengthSampler::matrices(const std::vector<SampledWavelengths>& batches,
+                                                         const Observer& obs) const {
+  if (!mFitted) return integrationMatrices(batches, obs);
+  PRISM_CHECK(batches.size() * 4 == static_cast<std::size_t>(mFitted->weights.cols()));
+  std::vector<IntegrationMatrix> out;
+  for (std::size_t b = 0; b < batches.size(); ++b)
+    out.push_back(mFitted->weights.middleCols(static_cast<Eigen::Index>(4 * b), 4));
+  return out;
 }
 
 }  // namespace prism

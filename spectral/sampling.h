@@ -22,6 +22,10 @@
 //               the observer sees, one frame is close under narrow or spiky lamps, and frames
 //               accumulate at the rotated grid's rate. The sampler is built once per change of
 //               the lights (the emission is its input).
+//   Optimised   n fixed wavelengths and a full 3 × n matrix fitted for the scene's lights
+//               (spectral/wavelength_fit.h): deterministic, the same every frame, closest in one
+//               frame but biased (accumulating does not converge beyond it). Its matrix is the
+//               fit's, not c̄(λ)/(n·pdf): callers take matrices from WavelengthSampler::matrices.
 #pragma once
 
 #include <array>
@@ -35,17 +39,21 @@
 
 #include "spectral/observer.h"
 #include "spectral/spectrum.h"
+#include "spectral/wavelength_fit.h"
 #include "spectral/wavelength_pdf.h"
 
 namespace prism {
+
+using IntegrationMatrix = Eigen::Matrix<double, 3, 4>;
 
 struct SampledWavelengths {
   std::array<double, 4> lambdaNm{};
   std::array<double, 4> pdf{};  // per nm
 };
 
-enum class SamplingStrategy { Uniform, Stratified, Rotated, Importance, Lights };
-SamplingStrategy samplingStrategyFromName(std::string_view name);  // uniform|stratified|rotated|importance|lights
+enum class SamplingStrategy { Uniform, Stratified, Rotated, Importance, Lights, Optimised };
+// uniform|stratified|rotated|importance|lights|optimised
+SamplingStrategy samplingStrategyFromName(std::string_view name);
 std::string_view samplingStrategyName(SamplingStrategy strategy);
 
 struct SamplingSettings {
@@ -59,7 +67,8 @@ struct SamplingSettings {
 void validate(const SamplingSettings& settings);
 
 // The batches for one pixel and frame (seed unused by Uniform). `importance` is the observer
-// whose response Importance follows. Not for Lights, which needs the lights: WavelengthSampler.
+// whose response Importance follows. Not for Lights or Optimised, which need the lights:
+// WavelengthSampler.
 std::vector<SampledWavelengths> sampleWavelengths(const SamplingSettings& settings,
                                                   std::uint32_t seed, const Observer& importance);
 
@@ -68,11 +77,14 @@ std::vector<SampledWavelengths> sampleWavelengths(const SamplingSettings& settin
 // construction.
 class WavelengthSampler {
  public:
-  // Every strategy but Lights.
+  // Every strategy but Lights and Optimised.
   WavelengthSampler(const SamplingSettings& settings, const Observer& importance);
-  // Every strategy; Lights follows `emission`, what the scene emits (scene/scene_emission.h: its
-  // lights and background, summed), the others ignore it.
+  // Every strategy but Optimised; Lights follows `emission`, what the scene emits
+  // (scene/scene_emission.h: its lights and background, summed), the others ignore it.
   WavelengthSampler(const SamplingSettings& settings, const Observer& importance, const Spectrum& emission);
+  // Optimised: the fitted set (settings.count wavelengths, fitted for the observer the caller's
+  // matrices are for).
+  WavelengthSampler(const SamplingSettings& settings, FittedWavelengths fitted);
   const SamplingSettings& settings() const { return mSettings; }
   // The pdf Importance and Lights draw from; null for the other strategies.
   const WavelengthPdf* pdf() const { return mPdf ? &*mPdf : nullptr; }
@@ -82,11 +94,18 @@ class WavelengthSampler {
   // usual, average to the stratified estimate over n·parts strata (how a path tracer spreads a
   // pixel's paths over the spectrum). Uniform takes the part's midpoint; Rotated ignores parts;
   // Lights offsets the part by the seed's rotation.
+  // Optimised: the fitted wavelengths whatever the seed and part (pdf 0: not a density).
   std::vector<SampledWavelengths> sample(std::uint32_t seed, int part, int parts) const;
+  // Each batch's integration matrix: integrationMatrices(batches, obs), or the fitted matrix's
+  // columns for Optimised.
+  std::vector<IntegrationMatrix> matrices(const std::vector<SampledWavelengths>& batches, const Observer& obs) const;
+  // Optimised's set; null for the other strategies.
+  const FittedWavelengths* fitted() const { return mFitted ? &*mFitted : nullptr; }
 
  private:
   SamplingSettings mSettings;
   std::optional<WavelengthPdf> mPdf;  // Importance and Lights
+  std::optional<FittedWavelengths> mFitted;  // Optimised
 };
 
 // The wavelengths RGB renderers commonly stand R, G and B for (e.g. Bruneton's atmosphere,
@@ -98,7 +117,6 @@ inline glm::vec4 rgbStandInWavelengths(float fourthNm) {
   return {kRgbStandInWavelengthsNm[0], kRgbStandInWavelengthsNm[1], kRgbStandInWavelengthsNm[2], fourthNm};
 }
 
-using IntegrationMatrix = Eigen::Matrix<double, 3, 4>;
 // M[c][j] = curve_c(λ_j) / (n·pdf_j): tristimulus += M · (L(λ_0..3)).
 std::vector<IntegrationMatrix> integrationMatrices(const std::vector<SampledWavelengths>& batches,
                                                    const Observer& obs);

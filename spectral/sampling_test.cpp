@@ -101,7 +101,7 @@ TEST(Sampling, ImportanceSamplingFollowsTheObserver) {
 Eigen::Vector3d estimateUnderLights(const WavelengthSampler& sampler, std::uint32_t seed, const Spectrum& radiance,
                                     const Observer& obs) {
   std::vector<SampledWavelengths> batches = sampler.sample(seed);
-  std::vector<IntegrationMatrix> m = integrationMatrices(batches, obs);
+  std::vector<IntegrationMatrix> m = sampler.matrices(batches, obs);
   Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
   for (std::size_t b = 0; b < batches.size(); ++b) {
     Eigen::Vector4d l;

@@ -50,6 +50,7 @@ class Spectrum {
   friend Spectrum operator*(Spectrum a, double factor) { return a *= factor; }
   friend Spectrum operator*(double factor, Spectrum a) { return a *= factor; }
   friend Spectrum operator+(Spectrum a, const Spectrum& b) { return a += b; }
+  friend bool operator==(const Spectrum& a, const Spectrum& b) = default;
 
  private:
   std::array<double, kSpectrumSamples> mValues;

@@ -1,5 +1,6 @@
 // The spectral panel: the left (or only) view's mode, wavelengths and observer, and a plot of the
-// observer's curves, each light's SPD and the frame's wavelengths (issue #5, the thesis's Fig. 4.9).
+// observer's curves, each light's SPD, the pdf the wavelengths are drawn from and the frame's
+// wavelengths (issue #5, the thesis's Fig. 4.9; issue 16).
 #include <imgui.h>
 
 #include <algorithm>
@@ -53,6 +54,12 @@ class SpectralPanel final : public Panel {
             IM_COL32(250, 230, 120, 255));
     }
     if (left && left->settings().mode != render::RenderMode::Rgb) {
+      // The pdf the frame's wavelengths are drawn from (importance, lights), scaled to its peak.
+      if (const WavelengthPdf* pdf = left->context().wavelengths->pdf()) {
+        double peak = 0.0;
+        for (int l = 360; l <= 830; ++l) peak = std::max(peak, pdf->density(l));
+        curve([&](double l) { return pdf->density(l); }, 1.0 / std::max(peak, 1e-12), IM_COL32(90, 220, 230, 255));
+      }
       for (const auto& batch : left->frameData().batches) {
         for (int j = 0; j < 4; ++j) {
           ImVec2 x = at(batch.lambdaNm[j], 0.0);
@@ -61,7 +68,9 @@ class SpectralPanel final : public Panel {
       }
     }
     ImGui::Dummy(ImVec2(width, height));
-    ImGui::TextDisabled("observer curves (r g b), light SPDs (yellow), this frame's wavelengths (ticks); 360-830 nm");
+    ImGui::TextDisabled(
+        "observer curves (r g b), light SPDs (yellow), the wavelengths' pdf (cyan: importance, lights), this "
+        "frame's wavelengths (ticks; optimised: the fitted set); 360-830 nm");
   }
 
   std::vector<std::string> mObservers = observerChoices();

@@ -234,7 +234,7 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
   EXPECT_GT(j["gpu_memory_mb"]["rgb"].get<double>(), 9.0);
   EXPECT_NE(slurp(dir / "plot.svg").find("<svg"), std::string::npos);
 
-  Result demo = run("demo -o " + (dir / "gallery").string() + " --width 64 --height 36 --frames 2");
+  Result demo = run("demo -o " + (dir / "gallery").string() + " --width 64 --height 36");
   ASSERT_EQ(demo.exitCode, 0) << demo.err;
   std::string index = slurp(dir / "gallery" / "index.html");
   EXPECT_NE(index.find("spheres_d65_spectral.png"), std::string::npos);

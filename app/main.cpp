@@ -114,9 +114,8 @@ int main(int argc, char** argv) {
   demoCmd->add_option("--scenes", gallery.scenes, "folder of scene files (default: the example scenes)");
   demoCmd->add_option("--width", gallery.width, "image width")->capture_default_str();
   demoCmd->add_option("--height", gallery.height, "image height")->capture_default_str();
-  demoCmd->add_option("--wavelengths", gallery.wavelengths, "wavelengths per frame of the spectral images")
-      ->capture_default_str();
-  demoCmd->add_option("--frames", gallery.frames, "frames accumulated for the spectral images (rotated wavelength grids)")
+  demoCmd->add_option("--wavelengths", gallery.wavelengths,
+                      "wavelengths of the spectral images (fitted for each scene's lights; 4–64)")
       ->capture_default_str();
 
   DemoOptions demo;
@@ -382,7 +381,8 @@ int main(int argc, char** argv) {
   bench->allow_extras();
   bench->add_option("scene", sceneBench.scene, "scene file: time its passes in RGB and spectral modes");
   benchSettings.addTo(bench, "wavelengths");
-  bench->add_option("--wavelengths", benchWavelengths, "wavelength counts, comma-separated (default 4,8,16,32,64,128,256)");
+  bench->add_option("--wavelengths", benchWavelengths, "wavelength counts, comma-separated (default 4,8,16,32,64,128,256; "
+                                                        "up to 64 with the optimised strategy)");
   bench->add_option("--frames", sceneBench.frames, "timed frames per configuration, spread over the rounds")
       ->capture_default_str();
   bench->add_option("--rounds", sceneBench.rounds, "rounds over every configuration in turn (load drift cancels "
@@ -470,6 +470,9 @@ int main(int argc, char** argv) {
       if (!benchWavelengths.empty()) {
         sceneBench.wavelengths.clear();
         for (double n : parseNumbers(benchWavelengths, "--wavelengths")) sceneBench.wavelengths.push_back(static_cast<int>(n));
+      } else if (sceneBench.settings.sampling.strategy == prism::SamplingStrategy::Optimised) {
+        // A fitted set has at most 64 wavelengths: the default sweep stops there.
+        std::erase_if(sceneBench.wavelengths, [](int n) { return n > prism::kMaxFittedWavelengths; });
       }
       runSceneBench(sceneBench);
     } else if (*bench) {

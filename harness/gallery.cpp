@@ -53,10 +53,11 @@ std::string indexHtml(const std::vector<Entry>& entries, const GalleryOptions& o
   HtmlPage page("Prism gallery");
   page.paragraph(fmt::format(
       "Each scene rendered by <code>prism demo</code> at {}×{} in RGB mode (three channels, the common "
-      "practice) and in spectral mode (Jakob–Hanika upsampling, {} wavelengths per frame on a uniform grid "
-      "rotated each frame (golden-ratio offsets), {} frames accumulated, CIE 1931). ΔE00 is CIEDE2000 between "
-      "the two, in XYZ before the display transform, relative to the exposure's white (1.2·2^EV100 cd/m²).",
-      o.width, o.height, o.wavelengths, o.frames));
+      "practice) and in spectral mode (Jakob–Hanika upsampling, one frame of {} wavelengths and a 3×{} matrix "
+      "fitted for the scene's lights — the optimised strategy, the renderer's default — CIE 1931). ΔE00 is "
+      "CIEDE2000 between the two, in XYZ before the display transform, relative to the exposure's white "
+      "(1.2·2^EV100 cd/m²).",
+      o.width, o.height, o.wavelengths, o.wavelengths));
   page.paragraph("Scenes under the spectral sky are rendered three ways instead: RGB-3 (680, 550, 440 nm as R, G, "
                  "B), the four optimised wavelengths (optimised4) and the reference (472 wavelengths), one frame each "
                  "(all deterministic), with ΔE00 of the first two against the reference.");
@@ -160,9 +161,8 @@ void runGallery(const GalleryOptions& o) {
       continue;
     }
     settings.mode = render::RenderMode::JakobHanika;
-    settings.sampling.strategy = SamplingStrategy::Rotated;
     renderer.setSettings(settings);
-    for (int f = 0; f < o.frames; ++f) renderer.renderFrame();
+    renderer.renderFrame();
     imaging::PngImage spectral = displayPng(renderer);
     imaging::FloatImage spectralXyz = tristimulus(renderer, o.width, o.height);
     e.difference = difference(spectralXyz, rgbXyz);

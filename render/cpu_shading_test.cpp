@@ -82,7 +82,7 @@ TEST(CpuShading, WhiteLambertianUnderDaylightHasLuminanceEOverPi) {
                           RenderMode::Reference}) {
     FrameSettings settings;
     settings.mode = mode;
-    settings.sampling.count = 64;
+    settings.sampling = {64, kLambdaMinNm, kLambdaMaxNm, SamplingStrategy::Uniform};
     glm::vec3 xyz = shadeOnce(scene, settings, p);
     // RGB: exact by construction. Spectral: the upsampled white is 1 within the table's fit,
     // 64 midpoint samples of ∫ D65·ȳ are within 0.5 %, the reference's 472 within 0.1 %.
@@ -117,7 +117,7 @@ TEST(CpuShading, NaiveUpsamplingOfGreyIsFlat) {
   UpFacing p(glm::vec3(0.25f), 0.0f, 1.0f);
   FrameSettings settings;
   settings.mode = RenderMode::Naive;
-  settings.sampling.count = 400;
+  settings.sampling = {400, kLambdaMinNm, kLambdaMaxNm, SamplingStrategy::Uniform};
   EXPECT_NEAR(shadeOnce(scene, settings, p).y, 0.25 * 500.0 / 3.14159265358979, 0.02);
 }
 

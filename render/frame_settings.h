@@ -52,7 +52,10 @@ struct FrameSettings {
   int width = 1280;
   int height = 720;
   RenderMode mode = RenderMode::JakobHanika;
-  SamplingSettings sampling;          // spectral modes other than reference
+  // Spectral modes other than reference. The default, 16 wavelengths fitted for the scene's
+  // lights (spectral/wavelength_fit.h), is the best one frame measured in every example scene
+  // (README, "Optimised wavelength sets"): as close as 200 uniform wavelengths.
+  SamplingSettings sampling{16, kLambdaMinNm, kLambdaMaxNm, SamplingStrategy::Optimised};
   std::string observer = "cie1931";   // or a camera from data/cameras.csv: raw camera RGB
   UpsamplingLookup lookup = UpsamplingLookup::Filtered;
   GBufferAlbedo gbufferAlbedo = GBufferAlbedo::Rgb;

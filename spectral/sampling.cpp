@@ -43,6 +43,9 @@ void validate(const SamplingSettings& s) {
   if (!(s.minNm >= kLambdaMinNm && s.maxNm <= kLambdaMaxNm && s.minNm < s.maxNm))
     throw Error("wavelength range must lie within 360–830 nm with min < max, got " +
                 std::to_string(s.minNm) + "–" + std::to_string(s.maxNm) + " nm");
+  if (s.strategy == SamplingStrategy::Optimised && s.count > kMaxFittedWavelengths)
+    throw Error("the optimised strategy fits 4–" + std::to_string(kMaxFittedWavelengths) + " wavelengths, got " +
+                std::to_string(s.count) + " (uniform, rotated or lights take more)");
 }
 
 WavelengthSampler::WavelengthSampler(const SamplingSettings& settings, const Observer& importance)

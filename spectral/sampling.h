@@ -63,7 +63,7 @@ struct SamplingSettings {
   SamplingStrategy strategy = SamplingStrategy::Uniform;
 };
 
-// Error naming the setting when count or range is invalid.
+// Error naming the setting when count or range is invalid (Optimised: count ≤ kMaxFittedWavelengths).
 void validate(const SamplingSettings& settings);
 
 // The batches for one pixel and frame (seed unused by Uniform). `importance` is the observer

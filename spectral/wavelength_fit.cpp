@@ -187,8 +187,9 @@ std::vector<int> gridSeed(const FitData& data, int n) {
 }
 
 void validateProblem(const WavelengthFitProblem& problem) {
-  if (problem.count < 4 || problem.count > 64 || problem.count % 4 != 0)
-    throw Error("wavelength fit: count must be a multiple of 4 within 4–64, got " + std::to_string(problem.count));
+  if (problem.count < 4 || problem.count > kMaxFittedWavelengths || problem.count % 4 != 0)
+    throw Error("wavelength fit: count must be a multiple of 4 within 4–" + std::to_string(kMaxFittedWavelengths) +
+                ", got " + std::to_string(problem.count));
   if (!(problem.minNm >= kLambdaMinNm && problem.maxNm <= kLambdaMaxNm && problem.maxNm - problem.minNm >= problem.count))
     throw Error("wavelength fit: range must lie within 360–830 nm and hold a whole nm per wavelength");
   if (problem.lights.empty()) throw Error("wavelength fit: no light");

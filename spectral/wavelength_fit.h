@@ -37,10 +37,12 @@ struct FittedWavelengths {
   Eigen::Matrix<double, 3, Eigen::Dynamic> weights;  // 3 × n, nm: tristimulus += weights · L
 };
 
+inline constexpr int kMaxFittedWavelengths = 64;  // beyond it a uniform grid is as close, and fits slow down
+
 struct WavelengthFitProblem {
   std::vector<Spectrum> lights;        // each light's SPD (any scale), fitted alone
   std::vector<Spectrum> reflectances;  // the training surfaces
-  int count = 16;                      // n, a multiple of 4 within 4–64
+  int count = 16;                      // n, a multiple of 4 within 4–kMaxFittedWavelengths
   double minNm = kLambdaMinNm;
   double maxNm = kLambdaMaxNm;
 };

@@ -37,7 +37,8 @@ bool frameSettingsControls(render::FrameSettings& s, const char* id, const std::
   ImGui::PushID(id);
   bool changed = settingCombo(s, "mode");
   int count = s.sampling.count;
-  if (ImGui::SliderInt("wavelengths", &count, 4, 256)) {
+  const int maxCount = s.sampling.strategy == SamplingStrategy::Optimised ? kMaxFittedWavelengths : 256;
+  if (ImGui::SliderInt("wavelengths", &count, 4, maxCount)) {
     s.sampling.count = std::max(4, count / 4 * 4);
     changed = true;
   }
@@ -47,7 +48,11 @@ bool frameSettingsControls(render::FrameSettings& s, const char* id, const std::
     s.sampling.maxNm = std::clamp<double>(range[1], s.sampling.minNm + 1.0, 830.0);
     changed = true;
   }
-  changed |= settingCombo(s, "strategy");
+  if (settingCombo(s, "strategy")) {
+    if (s.sampling.strategy == SamplingStrategy::Optimised)  // a fitted set has at most 64
+      s.sampling.count = std::min(s.sampling.count, kMaxFittedWavelengths);
+    changed = true;
+  }
   changed |= stringCombo("observer", s.observer, observers);
   ImGui::PopID();
   return changed;

@@ -189,6 +189,26 @@ TEST(Cli, RenderChecksItsInputBeforeRendering) {
   expectOneLineError("render " + unknown.string() + " -o x.png", "/lihgts: unknown key");
 }
 
+// `wavelengths optimise`: the set fitted for the blue LED beats one uniform frame over the chart,
+// and is what the cache holds (a second run reads it).
+TEST(Cli, WavelengthsOptimiseFitsAndReports) {
+  const std::string scenes = PRISM_SCENES_DIR;
+  expectOneLineError("wavelengths optimise " + scenes + "/spheres_d65.json --wavelengths 128",
+                     "the optimised strategy fits 4–64 wavelengths, got 128");
+  Result r = run("wavelengths optimise " + scenes + "/spheres_blue_led.json --wavelengths 8 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["wavelengths_nm"].size(), 8u);
+  ASSERT_EQ(j["weights_nm"].size(), 3u);
+  EXPECT_TRUE(std::filesystem::exists(j["cache"].get<std::string>()));
+  const nlohmann::json& errors = j["lights"][0]["delta_e2000"];
+  EXPECT_LT(errors["optimised"]["colour_checker"]["mean"].get<double>(), 0.1);
+  EXPECT_GT(errors["uniform"]["colour_checker"]["mean"].get<double>(), 1.0);
+  Result again = run("wavelengths optimise " + scenes + "/spheres_blue_led.json --wavelengths 8 --json");
+  ASSERT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_EQ(nlohmann::json::parse(again.out)["wavelengths_nm"], j["wavelengths_nm"]);
+}
+
 // One test for everything that needs the 64³ upsampling table (built once per build folder,
 // PRISM_CACHE_DIR), rendering small images.
 TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {

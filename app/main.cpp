@@ -17,6 +17,7 @@
 #include "app/settings_command.h"
 #include "app/upsampling_commands.h"
 #include "app/view_command.h"
+#include "app/wavelength_commands.h"
 #include "gpu/error.h"
 #include "harness/colour_checker_chart.h"
 #include "harness/compare_report.h"
@@ -256,6 +257,17 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--set", render.sets, "override a scene value: json.path=value (repeatable)");
   renderSettings.addTo(renderCmd);
 
+  auto* wavelengthsCmd = app.add_subcommand("wavelengths", "the optimised strategy's wavelengths for a scene's lights");
+  wavelengthsCmd->require_subcommand(1);
+  WavelengthsOptimiseOptions wavelengthsOptimise;
+  CliSettings wavelengthsSettings;
+  auto* wavelengthsOptimiseCmd = wavelengthsCmd->add_subcommand(
+      "optimise", "fit (or read from the cache) n wavelengths and a 3×n matrix for a scene's lights, with a report");
+  wavelengthsOptimiseCmd->add_option("scene", wavelengthsOptimise.scene, "scene file (JSON)")->required();
+  wavelengthsOptimiseCmd->add_option("--set", wavelengthsOptimise.sets, "override a scene value: json.path=value (repeatable)");
+  wavelengthsOptimiseCmd->add_flag("--json", wavelengthsOptimise.json, "JSON output");
+  wavelengthsSettings.addTo(wavelengthsOptimiseCmd);
+
   CliSettings settingsSettings;
   bool settingKeys = false;
   auto* settingsCmd = app.add_subcommand(
@@ -427,6 +439,10 @@ int main(int argc, char** argv) {
       runUpsample(up);
     }
     if (*settingsCmd) printSettings(settingsSettings.given(), settingKeys);
+    if (*wavelengthsOptimiseCmd) {
+      wavelengthsOptimise.settings = wavelengthsSettings.given();
+      runWavelengthsOptimise(wavelengthsOptimise);
+    }
     if (*renderCmd) {
       render.settings = renderSettings.given();
       runRender(render);

@@ -1,0 +1,98 @@
+#include "harness/wavelength_report.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "harness/optimised_wavelengths.h"
+#include "scene/scene_emission.h"
+#include "spectral/colour_checker.h"
+#include "spectral/colour_difference.h"
+#include "spectral/colour_space.h"
+#include "spectral/observer.h"
+#include "spectral/rgb_to_spectrum_cache.h"
+
+namespace prism::harness {
+namespace {
+
+constexpr int kSingleFrames = 32;  // a moving strategy's single frames, each alone, averaged
+
+// One frame's tristimulus estimate of a radiance, as frame assembly builds it.
+Eigen::Vector3d estimate(const WavelengthSampler& sampler, std::uint32_t frame, const Spectrum& radiance,
+                         const Observer& obs) {
+  const std::vector<SampledWavelengths> batches = sampler.sample(frame);
+  const std::vector<IntegrationMatrix> m = sampler.matrices(batches, obs);
+  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
+  for (std::size_t b = 0; b < batches.size(); ++b) {
+    Eigen::Vector4d l;
+    for (int j = 0; j < 4; ++j) l[j] = radiance.at(batches[b].lambdaNm[static_cast<std::size_t>(j)]);
+    xyz += m[b] * l;
+  }
+  return xyz;
+}
+
+FitError errors(const WavelengthSampler& sampler, int frames, const Spectrum& light,
+                const std::vector<Spectrum>& reflectances, const Observer& obs) {
+  const Eigen::Vector3d white = obs.integrate(light);
+  FitError e;
+  for (const Spectrum& r : reflectances) {
+    const Spectrum radiance = light * r;
+    const Eigen::Vector3d truth = xyzToLab(obs.integrate(radiance), white);
+    double sum = 0.0;
+    for (int f = 0; f < frames; ++f)
+      sum += deltaE(xyzToLab(estimate(sampler, static_cast<std::uint32_t>(f), radiance, obs), white), truth,
+                    DeltaEFormula::Ciede2000);
+    e.mean += sum / frames;
+    e.max = std::max(e.max, sum / frames);
+  }
+  e.mean /= static_cast<double>(reflectances.size());
+  return e;
+}
+
+}  // namespace
+
+WavelengthReport wavelengthReport(const Scene& scene, const render::FrameSettings& settings,
+                                  const RgbToSpectrumTable& table) {
+  SamplingSettings sampling = settings.sampling;
+  sampling.strategy = SamplingStrategy::Optimised;
+  validate(sampling);
+  const Observer& obs = observer(settings.observer);
+  const RgbColourSpace& space = colourSpace(scene.colourSpace);
+  const WavelengthFitProblem problem = sceneWavelengthFitProblem(sampling, scene, space, table);
+
+  WavelengthReport report;
+  report.cacheFile = cacheDirectory() / "wavelengths" / (std::to_string(fitKey(problem, obs)) + ".txt");
+  report.reflectances = problem.reflectances.size();
+  render::FrameSettings optimisedSettings = settings;
+  optimisedSettings.sampling = sampling;
+  fitOptimisedWavelengths(scene, optimisedSettings, table);  // with a progress bar, into the cache
+  const WavelengthSampler optimised = sceneWavelengthSampler(sampling, obs, scene, space, table);
+  report.set = *optimised.fitted();
+
+  std::vector<Spectrum> chart;
+  for (const ColourCheckerPatch& patch : colourChecker()) chart.push_back(patch.reflectance);
+  const SamplingSettings uniform{sampling.count, sampling.minNm, sampling.maxNm, SamplingStrategy::Uniform};
+  const SamplingSettings lights{sampling.count, sampling.minNm, sampling.maxNm, SamplingStrategy::Lights};
+  const WavelengthSampler uniformSampler(uniform, obs);
+  const WavelengthSampler lightsSampler(lights, obs, sceneEmission(scene, space, table));
+  for (const Spectrum& light : problem.lights) {
+    LightErrors l;
+    l.light = "background";
+    for (const Light& sceneLight : scene.lights)
+      if (sceneLight.spd == light) {
+        l.light = sceneLight.spdLabel;
+        break;
+      }
+    auto add = [&](std::string name, const WavelengthSampler& sampler, int frames) {
+      l.strategies.push_back({std::move(name), errors(sampler, frames, light, chart, obs),
+                              errors(sampler, frames, light, problem.reflectances, obs)});
+    };
+    add("optimised", optimised, 1);
+    add("uniform", uniformSampler, 1);
+    add(fmt::format("lights (mean of {} single frames)", kSingleFrames), lightsSampler, kSingleFrames);
+    report.lights.push_back(std::move(l));
+  }
+  return report;
+}
+
+}  // namespace prism::harness

@@ -17,20 +17,6 @@ namespace {
 
 constexpr int kSingleFrames = 32;  // a moving strategy's single frames, each alone, averaged
 
-// One frame's tristimulus estimate of a radiance, as frame assembly builds it.
-Eigen::Vector3d estimate(const WavelengthSampler& sampler, std::uint32_t frame, const Spectrum& radiance,
-                         const Observer& obs) {
-  const std::vector<SampledWavelengths> batches = sampler.sample(frame);
-  const std::vector<IntegrationMatrix> m = sampler.matrices(batches, obs);
-  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
-  for (std::size_t b = 0; b < batches.size(); ++b) {
-    Eigen::Vector4d l;
-    for (int j = 0; j < 4; ++j) l[j] = radiance.at(batches[b].lambdaNm[static_cast<std::size_t>(j)]);
-    xyz += m[b] * l;
-  }
-  return xyz;
-}
-
 FitError errors(const WavelengthSampler& sampler, int frames, const Spectrum& light,
                 const std::vector<Spectrum>& reflectances, const Observer& obs) {
   const Eigen::Vector3d white = obs.integrate(light);
@@ -40,7 +26,7 @@ FitError errors(const WavelengthSampler& sampler, int frames, const Spectrum& li
     const Eigen::Vector3d truth = xyzToLab(obs.integrate(radiance), white);
     double sum = 0.0;
     for (int f = 0; f < frames; ++f)
-      sum += deltaE(xyzToLab(estimate(sampler, static_cast<std::uint32_t>(f), radiance, obs), white), truth,
+      sum += deltaE(xyzToLab(sampler.estimate(static_cast<std::uint32_t>(f), radiance, obs), white), truth,
                     DeltaEFormula::Ciede2000);
     e.mean += sum / frames;
     e.max = std::max(e.max, sum / frames);

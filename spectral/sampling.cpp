@@ -148,4 +148,16 @@ std::vector<IntegrationMatrix> WavelengthSampler::matrices(const std::vector<Sam
   return out;
 }
 
+Eigen::Vector3d WavelengthSampler::estimate(std::uint32_t seed, const Spectrum& radiance, const Observer& obs) const {
+  const std::vector<SampledWavelengths> batches = sample(seed);
+  const std::vector<IntegrationMatrix> m = matrices(batches, obs);
+  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
+  for (std::size_t b = 0; b < batches.size(); ++b) {
+    Eigen::Vector4d l;
+    for (int j = 0; j < 4; ++j) l[j] = radiance.at(batches[b].lambdaNm[static_cast<std::size_t>(j)]);
+    xyz += m[b] * l;
+  }
+  return xyz;
+}
+
 }  // namespace prism

@@ -99,6 +99,9 @@ class WavelengthSampler {
   // Each batch's integration matrix: integrationMatrices(batches, obs), or the fitted matrix's
   // columns for Optimised.
   std::vector<IntegrationMatrix> matrices(const std::vector<SampledWavelengths>& batches, const Observer& obs) const;
+  // One frame's tristimulus estimate of a spectral radiance (the frame's set for `seed`, through
+  // matrices()): what a renderer's frame sums for it. For tests and reports.
+  Eigen::Vector3d estimate(std::uint32_t seed, const Spectrum& radiance, const Observer& obs) const;
   // Optimised's set; null for the other strategies.
   const FittedWavelengths* fitted() const { return mFitted ? &*mFitted : nullptr; }
 

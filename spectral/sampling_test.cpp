@@ -14,17 +14,8 @@ namespace prism {
 namespace {
 
 // XYZ of an emitter through the sampled estimator.
-Eigen::Vector3d estimate(const SamplingSettings& s, std::uint32_t seed, const Spectrum& spd,
-                         const Observer& obs) {
-  std::vector<SampledWavelengths> batches = sampleWavelengths(s, seed, obs);
-  std::vector<IntegrationMatrix> m = integrationMatrices(batches, obs);
-  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
-  for (std::size_t b = 0; b < batches.size(); ++b) {
-    Eigen::Vector4d radiance;
-    for (int j = 0; j < 4; ++j) radiance[j] = spd.at(batches[b].lambdaNm[static_cast<std::size_t>(j)]);
-    xyz += m[b] * radiance;
-  }
-  return xyz;
+Eigen::Vector3d estimate(const SamplingSettings& s, std::uint32_t seed, const Spectrum& spd, const Observer& obs) {
+  return WavelengthSampler(s, obs).estimate(seed, spd, obs);
 }
 
 TEST(Sampling, Uniform400ReproducesThe1nmIntegralsOfD65) {
@@ -100,15 +91,7 @@ TEST(Sampling, ImportanceSamplingFollowsTheObserver) {
 // XYZ of `light` × `reflectance` through a Lights sampler following `light`, one frame (seed).
 Eigen::Vector3d estimateUnderLights(const WavelengthSampler& sampler, std::uint32_t seed, const Spectrum& radiance,
                                     const Observer& obs) {
-  std::vector<SampledWavelengths> batches = sampler.sample(seed);
-  std::vector<IntegrationMatrix> m = sampler.matrices(batches, obs);
-  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
-  for (std::size_t b = 0; b < batches.size(); ++b) {
-    Eigen::Vector4d l;
-    for (int j = 0; j < 4; ++j) l[j] = radiance.at(batches[b].lambdaNm[static_cast<std::size_t>(j)]);
-    xyz += m[b] * l;
-  }
-  return xyz;
+  return sampler.estimate(seed, radiance, obs);
 }
 
 // ∫ s·c̄ exactly for s and c̄ piecewise linear between the 1 nm nodes, which is what a sampled

@@ -83,15 +83,7 @@ TEST(WavelengthFit, ColourCheckerSpheresUnderF11AndF2HoldTheirChromaticity) {
     const WavelengthSampler lights({16, kLambdaMinNm, kLambdaMaxNm, SamplingStrategy::Lights}, cie, light);
     auto estimate = [&](const WavelengthSampler& sampler, int frames, const Spectrum& radiance) {
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-      for (int f = 0; f < frames; ++f) {
-        const std::vector<SampledWavelengths> batches = sampler.sample(static_cast<std::uint32_t>(f));
-        const std::vector<IntegrationMatrix> m = sampler.matrices(batches, cie);
-        for (std::size_t b = 0; b < batches.size(); ++b) {
-          Eigen::Vector4d l;
-          for (int j = 0; j < 4; ++j) l[j] = radiance.at(batches[b].lambdaNm[static_cast<std::size_t>(j)]);
-          sum += m[b] * l;
-        }
-      }
+      for (int f = 0; f < frames; ++f) sum += sampler.estimate(static_cast<std::uint32_t>(f), radiance, cie);
       return Eigen::Vector3d(sum / frames);
     };
     double worstXy[2] = {0.0, 0.0}, worstY[2] = {0.0, 0.0};

@@ -59,8 +59,8 @@ class Renderer {
   void resetAccumulation() { mAccumulated = 0; }
 
   // Pass boundaries for timing (e.g. gpu timer scopes): called with "shadow", "gbuffer",
-  // "atmosphere" (scenes with a sky), "lighting", "forward", "post" before each pass and with ""
-  // after the last.
+  // "atmosphere" (scenes with a sky), "lighting", "prt" (the forward pass of scenes with PRT
+  // objects), "forward", "post" before each pass and with "" after the last.
   using PassHook = std::function<void(std::string_view pass)>;
   void setPassHook(PassHook hook) { mPassHook = std::move(hook); }
 
@@ -115,6 +115,7 @@ class Renderer {
   void gbufferPass();
   void lightingPass();
   void forwardPass();
+  void forwardTechniques();
   void postPass();
   void techniquePasses();
   void uploadFrameData();

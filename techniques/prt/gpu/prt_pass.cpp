@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <numbers>
 #include <span>
 
@@ -24,9 +25,13 @@ struct GpuVertex {  // prt.vert's attributes
 };
 static_assert(sizeof(GpuVertex) == 16);
 
+// An immutable buffer of the values, at least 16 bytes (a zero-sized buffer cannot be bound),
+// padded with zeros rather than read past the values' end.
 template <class T>
 gpu::Buffer bufferOf(std::span<const T> values, const char* label) {
-  return gpu::Buffer({std::max<std::size_t>(values.size_bytes(), 16), values.data(), 0, label});
+  std::vector<std::byte> bytes(std::max<std::size_t>(values.size_bytes(), 16));
+  if (!values.empty()) std::memcpy(bytes.data(), values.data(), values.size_bytes());
+  return gpu::Buffer({bytes.size(), bytes.data(), 0, label});
 }
 
 // Scenes are y-up (glTF's convention); PRT's environments have their zenith at +z (as prism prt

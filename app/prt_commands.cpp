@@ -2,6 +2,7 @@
 
 #include "app/colour_commands.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -26,7 +27,8 @@
 namespace prism::app {
 namespace {
 
-// Every mesh of the input as one PRT object (world space, turned from y-up to PRT's z-up): each scene material's measured
+// Every mesh of the input as one PRT object (world space, turned from y-up to PRT's z-up; in a
+// scene with PRT objects, only those, as the renderer bakes them): each scene material's measured
 // reflectance, else its base colour upsampled by the renderers' sRGB table (Jakob–Hanika, the
 // albedo intent; textures and conductors are not read: PRT here is diffuse and per vertex).
 prt::PrtObject loadPrtObject(const std::filesystem::path& input, bool withReflectances) {
@@ -42,7 +44,10 @@ prt::PrtObject loadPrtObject(const std::filesystem::path& input, bool withReflec
   }
   prt::PrtObject object;
   prt::PrtMesh& mesh = object.mesh;
+  // A scene with PRT objects: those alone, as the renderer bakes them (the same cache key).
+  const bool onlyPrt = std::ranges::any_of(scene.meshes, [](const Mesh& m) { return m.technique == "prt"; });
   for (const Mesh& m : scene.meshes) {
+    if (onlyPrt && m.technique != "prt") continue;
     auto base = static_cast<std::uint32_t>(mesh.positions.size());
     for (const Vertex& v : m.vertices) {
       // Scenes are y-up (glTF's convention); PRT's environments have their zenith at +z.

@@ -176,7 +176,8 @@ void runSceneBench(const SceneBenchOptions& options) {
   };
   std::vector<TechniqueRun> techniqueRuns;
   std::vector<std::unique_ptr<render::Renderer>> renderersWithout;
-  std::deque<Scene> scenesWithout;  // the renderers' scenes: references stay valid as it grows
+  std::deque<Scene> scenesWithout;  // the renderers' scenes (without a technique, or with another
+                                    // version of its section): references stay valid as it grows
   for (const auto& section : scene.techniques.all()) {
     TechniqueBench bench = section->bench();
     if (bench.configs.empty()) continue;
@@ -191,10 +192,16 @@ void runSceneBench(const SceneBenchOptions& options) {
         s.techniques.remove(section->key());
         without = renderersWithout.emplace_back(std::make_unique<render::Renderer>(s, table, settings)).get();
       }
+      render::Renderer* on = tc.withoutTechnique ? without : &renderer;
+      if (tc.section) {  // the scene with another version of the technique's section
+        Scene& other = scenesWithout.emplace_back(scene);
+        other.techniques.add(tc.section->clone());
+        on = renderersWithout.emplace_back(std::make_unique<render::Renderer>(other, table, settings)).get();
+      }
       render::FrameSettings s = settings;
       for (const auto& [key, value] : tc.settings) PRISM_CHECK(render::applyFrameSetting(s, key, value));
       render::validate(s);
-      const std::size_t i = add(tc.label, tc.withoutTechnique ? *without : renderer, s);
+      const std::size_t i = add(tc.label, *on, s);
       if (tc.framesPerRound > 0) {
         configs[i].warmup = std::min(options.warmup, 1);
         configs[i].frames = tc.framesPerRound;

@@ -62,6 +62,7 @@ class CpuShadingCore {
       return shadeBackground(mIn.frame.constants, worldFromDepth(camera.inverseViewProjection, uv, 1.0f), \
                              camera.position);                                                     \
     }                                                                                              \
+    if (texel.materialId == kTechniqueShadedMaterialId) return vec3(0.0f);                         \
     SurfaceSample s;                                                                               \
     s.position = worldFromDepth(camera.inverseViewProjection, uv, texel.depth);                    \
     s.normal = normalize(vec3(texel.normalRoughness));                                             \

@@ -259,6 +259,7 @@ void Renderer::renderFrame() {
   techniquePasses();
   hook("lighting");
   lightingPass();
+  forwardTechniques();
   if (mSettings.lightGizmos) {
     hook("forward");
     forwardPass();
@@ -328,7 +329,8 @@ void Renderer::gbufferPass() {
     program.setUniform("uUpsamplingResolution", mTable.resolution());
     program.setUniform("uFilteredLookup", mSettings.lookup == UpsamplingLookup::Filtered ? 1 : 0);
   }
-  for (const GpuMesh& mesh : mGpuScene.meshes()) {
+  for (std::size_t i = 0; i < mGpuScene.meshes().size(); ++i) {
+    const GpuMesh& mesh = mGpuScene.meshes()[i];
     const Material& m = mScene.materials.at(static_cast<std::size_t>(mesh.material));
     int textures = 0;
     if (m.baseColourTexture >= 0) {
@@ -346,7 +348,9 @@ void Renderer::gbufferPass() {
     program.setUniform("uBaseColour", m.baseColour);
     program.setUniform("uMetallic", m.metallic);
     program.setUniform("uRoughness", m.roughness);
-    program.setUniform("uMaterialId", static_cast<GLuint>(mesh.material + 1));
+    // A technique's object keeps only its depth here; its technique shades it (forwardTechniques).
+    program.setUniform("uMaterialId", mScene.meshes[i].technique.empty() ? static_cast<GLuint>(mesh.material + 1)
+                                                                          : shared::kTechniqueShadedMaterialId);
     program.setUniform("uTextures", textures);
     mesh.vertexArray.draw();
   }
@@ -359,8 +363,35 @@ void Renderer::techniquePasses() {
     auto pass = mTechniquePasses.find(block.key);
     if (pass == mTechniquePasses.end()) pass = mTechniquePasses.emplace(block.key, makeTechniquePass(block.key)).first;
     if (!pass->second) continue;
-    hook(block.key);
+    if (!pass->second->drawsForward()) hook(block.key);  // else its forward pass is what is timed
     pass->second->run(block, mScene, mCameraTransform);
+  }
+}
+
+// The objects techniques shade themselves (PRT's), over the G-buffer's depth, added to the
+// accumulation where the lighting pass left them black (technique_pass.h, ForwardDrawInput).
+void Renderer::forwardTechniques() {
+  bool depthCopied = false;
+  for (const TechniqueBlock& block : mFrame.techniques) {
+    auto pass = mTechniquePasses.find(block.key);
+    if (pass == mTechniquePasses.end() || !pass->second || !pass->second->drawsForward()) continue;
+    if (!depthCopied) {
+      mTargets.gbuffer.blitDepthTo(mTargets.forwardTarget);
+      depthCopied = true;
+    }
+    hook(block.key);
+    mTargets.forwardTarget.bind();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    pass->second->drawForward({mScene, mCameraTransform, *mContext.tristimulusObserver, mTable,
+                               mSettings.mode == RenderMode::Rgb, mSettings.mode == RenderMode::Reference});
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_BLEND);
   }
 }
 

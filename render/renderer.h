@@ -1,7 +1,7 @@
 // The deferred spectral rasteriser: for each frame, shadow maps for the lights that cast them,
-// the G-buffer, the spectral lighting pass (accumulating into a tristimulus target), a forward
-// pass over the G-buffer's copied depth (light gizmos) and the post pass to an 8-bit display
-// image. Settings change between frames without a restart;
+// the G-buffer, the techniques' passes, the spectral lighting pass (accumulating into a
+// tristimulus target), the forward passes of objects techniques shade themselves (PRT's) and of
+// light gizmos over the G-buffer's copied depth, and the post pass to an 8-bit display image. Settings change between frames without a restart;
 // accumulation restarts whenever they (or the camera) change.
 //
 // The per-frame CPU work is small (wavelengths, integration matrices and spectra at them:
@@ -59,8 +59,8 @@ class Renderer {
   void resetAccumulation() { mAccumulated = 0; }
 
   // Pass boundaries for timing (e.g. gpu timer scopes): called with "shadow", "gbuffer",
-  // "atmosphere" (scenes with a sky), "lighting", "forward", "post" before each pass and with ""
-  // after the last.
+  // "atmosphere" (scenes with a sky), "lighting", "prt" (the forward pass of scenes with PRT
+  // objects), "forward", "post" before each pass and with "" after the last.
   using PassHook = std::function<void(std::string_view pass)>;
   void setPassHook(PassHook hook) { mPassHook = std::move(hook); }
 
@@ -115,6 +115,7 @@ class Renderer {
   void gbufferPass();
   void lightingPass();
   void forwardPass();
+  void forwardTechniques();
   void postPass();
   void techniquePasses();
   void uploadFrameData();

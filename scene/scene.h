@@ -97,6 +97,9 @@ struct Mesh {
   std::vector<Vertex> vertices;
   std::vector<std::uint32_t> indices;  // three per triangle
   int material = 0;                    // index into Scene::materials
+  // The technique that shades it itself (its forward pass: PRT objects), by key; empty for the
+  // deferred pipeline. Its depth still goes through the G-buffer and it still casts shadows.
+  std::string technique;
 };
 
 // Axis-aligned bounds (min, max).

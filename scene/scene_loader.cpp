@@ -79,6 +79,13 @@ class SceneParser {
     for (const TechniqueSectionParser& technique : techniqueSectionParsers()) {
       if (auto n = top.optionalChild(technique.key)) mScene.techniques.add(technique.parse(*n, mScene.techniques));
     }
+    // Objects shaded by a technique: it must be in the scene and shade objects (its section is
+    // read after the objects, so this is checked last).
+    for (const auto& [node, key] : mObjectTechniques) {
+      const TechniqueSection* section = mScene.techniques.find(key);
+      if (!section) node.fail("the scene has no '" + key + "' section to shade this object");
+      if (!section->shadesObjects()) node.fail("'" + key + "' does not shade objects");
+    }
     addTechniqueLights(mScene);
     return std::move(mScene);
   }
@@ -288,23 +295,30 @@ class SceneParser {
                            : "expected only one of the keys sphere, plane, box, heightfield, gltf, got " + joined(kinds));
     const std::string& kind = kinds[0];
     std::string name = o.has("name") ? o.child("name").string() : o.pointer();
+    std::string technique;
+    if (auto t = o.optionalChild("technique")) {
+      technique = t->string();
+      mObjectTechniques.emplace_back(*t, technique);
+    }
 
     if (kind == "gltf") {
-      o.expectObject({"gltf", "transform", "material", "name"});
+      o.expectObject({"gltf", "transform", "material", "name", "technique"});
       Node g = o.child("gltf");
       fs::path path = file(g);
       GltfPlacement placement;
       if (auto t = o.optionalChild("transform")) placement.transform = transform(*t);
       if (auto m = o.optionalChild("material")) placement.materialOverride = materialReference(*m);
       try {
+        std::size_t first = mScene.meshes.size();
         appendGltf(path, mFolder, placement, mScene);
+        for (std::size_t i = first; i < mScene.meshes.size(); ++i) mScene.meshes[i].technique = technique;
       } catch (const Error& e) {
         g.fail(e.what());
       }
       return;
     }
 
-    o.expectObject({kind, "material", "name"});
+    o.expectObject({kind, "material", "name", "technique"});
     Node shape = o.child(kind);
     Mesh mesh;
     if (kind == "sphere") {
@@ -331,6 +345,7 @@ class SceneParser {
                      shape.vec3("rotation_deg", glm::vec3(0.0f)));
     }
     mesh.name = name;
+    mesh.technique = technique;
     mesh.material = materialReference(o.child("material"));
     mScene.meshes.push_back(std::move(mesh));
   }
@@ -340,6 +355,7 @@ class SceneParser {
   Scene mScene;
   std::map<std::string, int> mMaterialIndex;
   std::map<std::string, int> mTextureIndex;
+  std::vector<std::pair<Node, std::string>> mObjectTechniques;  // an object's `technique` and its node
 };
 
 // Applies one "PATH=VALUE" override to the parsed document (scene_loader.h).

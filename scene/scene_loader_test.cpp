@@ -15,6 +15,7 @@
 #include "spectral/observer.h"
 #include "techniques/atmosphere/atmosphere_section.h"
 #include "techniques/underwater/jerlov_water.h"
+#include "techniques/prt/prt_section.h"
 #include "techniques/underwater/water_section.h"
 
 namespace prism {
@@ -549,6 +550,60 @@ TEST_F(SceneFolder, AtmosphereAddsTheSunAsALightAndChecksItsParameters) {
   fs::path both = write("both.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "objects": [],
     "water": {"type": "I"}, "atmosphere": {}})");
   EXPECT_EQ(errorOf([&] { loadScene(both); }), both.string() + ": /atmosphere: a scene has water or an atmosphere, not both");
+}
+
+TEST_F(SceneFolder, PrtObjectsNameTheTechniqueAndItsSectionIsChecked) {
+  fs::path f = write("prt.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]},
+    "materials": {"m": {}},
+    "objects": [{"sphere": {"centre": [0, 0, 0], "radius": 1}, "material": "m", "technique": "prt"},
+                {"box": {"centre": [2, 0, 0], "size": [1, 1, 1]}, "material": "m"}],
+    "prt": {"environment": {"illuminant": "F4", "shape": "uniform", "luminance": 500, "rotation_deg": 30},
+            "basis": 6, "mode": "rgb-prt", "samples": 64, "shadows": false}})");
+  Scene s = loadScene(f);
+  EXPECT_EQ(s.meshes[0].technique, "prt");
+  EXPECT_EQ(s.meshes[1].technique, "");
+  const auto* prt = s.techniques.find<prt::PrtSection>();
+  ASSERT_TRUE(prt);
+  EXPECT_TRUE(prt->shadesObjects());
+  EXPECT_EQ(prt->illuminant, "F4");
+  EXPECT_EQ(prt->shape, "uniform");
+  EXPECT_FLOAT_EQ(prt->luminanceCdM2, 500.0f);
+  EXPECT_FLOAT_EQ(prt->rotationDeg, 30.0f);
+  EXPECT_EQ(prt->basis, 6);
+  EXPECT_EQ(prt->mode, prt::PrtMode::RgbPrt);
+  EXPECT_EQ(prt->samples, 64);
+  EXPECT_FALSE(prt->shadows);
+  // Defaults: a D65 sky of 1000 cd/m², m = 8, spectral.
+  Scene d = loadScene(f, {"prt={}"});
+  const auto* defaults = d.techniques.find<prt::PrtSection>();
+  EXPECT_EQ(defaults->illuminant, "D65");
+  EXPECT_EQ(defaults->shape, "sky");
+  EXPECT_EQ(defaults->basis, 8);
+  EXPECT_EQ(defaults->mode, prt::PrtMode::Spectral);
+
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"prt.basis=17"}); }),
+            f.string() + ": /prt/basis: expected an integer in [1, 16], got 17");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"prt.mode=rgb"}); }),
+            f.string() + ": /prt/mode: expected \"spectral\", \"rgb-prt\" or \"reference-5nm\", got \"rgb\"");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"prt.environment.shape=dome"}); }),
+            f.string() + ": /prt/environment/shape: expected \"sky\" or \"uniform\", got \"dome\"");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment.illuminant=F99"}); }),
+                         f.string() + ": /prt/environment/illuminant: "));
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment.map=sky.exr"}); }),
+                         f.string() + ": /prt/environment/illuminant: give a map or an illuminant and shape, not both"));
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment={\"map\": \"missing.exr\"}"}); }),
+                         f.string() + ": /prt/environment/map: "));
+  write("bad.exr", "not an exr");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment={\"map\": \"bad.exr\"}"}); }),
+                         f.string() + ": /prt/environment/map: "));
+  // An object naming a technique the scene lacks, or one that does not shade objects.
+  fs::path orphan = write("orphan.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]},
+    "materials": {"m": {}}, "water": {},
+    "objects": [{"sphere": {"centre": [0, 0, 0], "radius": 1}, "material": "m", "technique": "prt"}]})");
+  EXPECT_EQ(errorOf([&] { loadScene(orphan); }),
+            orphan.string() + ": /objects/0/technique: the scene has no 'prt' section to shade this object");
+  EXPECT_EQ(errorOf([&] { loadScene(orphan, {"objects.0.technique=water"}); }),
+            orphan.string() + ": /objects/0/technique: 'water' does not shade objects");
 }
 
 }  // namespace

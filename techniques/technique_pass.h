@@ -1,5 +1,7 @@
 // The GPU side of the technique seam: a technique's passes before the lighting pass (the sky's
-// tables) and what they give the lighting pass beyond the technique's block. Each technique with
+// tables), what they give the lighting pass beyond the technique's block, and a forward pass of
+// the objects the technique shades itself (PRT's), drawn after the lighting pass into the same
+// tristimulus target. Each technique with
 // GPU passes implements one in techniques/<name>/gpu/ (above prism::gpu and prism::scene, below
 // the renderer); the renderer makes one per section (makeTechniquePass, over the passes the
 // techniques' prism_technique() calls register), runs it each frame and binds it for the
@@ -11,11 +13,31 @@
 #include <string_view>
 
 #include "scene/camera_transform.h"
+#include "spectral/observer.h"
+#include "spectral/rgb_to_spectrum_table.h"
 #include "scene/scene.h"
 #include "techniques/technique_cpu_twin.h"
 #include "techniques/technique_section.h"
 
 namespace prism {
+
+// What a technique's forward pass draws with. The renderer has bound the accumulation target with
+// the G-buffer's depth (in which the technique's objects were drawn, the lighting pass leaving
+// their pixels black), depth test LEQUAL without depth writes, additive blending; the pass adds
+// (tristimulus, 0) per fragment, alpha 0 so that the lighting pass's frame count stays the mean's
+// denominator. Tristimulus is the lighting pass's: XYZ of `observer`, or a camera's RGB when
+// `observer` is a camera's curves. Its vertex shader must declare `invariant gl_Position` and
+// compute it as gbuffer.vert does (viewProjection × world position) for the depths to be equal.
+struct ForwardDrawInput {
+  const Scene& scene;
+  const CameraTransform& camera;
+  const Observer& observer;
+  const RgbToSpectrumTable& table;  // the scene's colour space's (albedo upsampling)
+  // The frame's mode, for a technique with baselines of its own: RGB (PRT draws RGB-PRT) or the
+  // many-wavelength reference (PRT draws its 5 nm reference); otherwise the section decides.
+  bool rgbMode = false;
+  bool referenceMode = false;
+};
 
 class TechniquePass {
  public:
@@ -28,6 +50,13 @@ class TechniquePass {
   // What it holds for the lighting pass, read back for the technique's CPU twin
   // (technique_cpu_twin.h); null when it holds nothing the twin reads. Stalls: for tests.
   virtual std::shared_ptr<const TechniqueTexels> readTexels() const { return nullptr; }
+  // Whether it draws objects itself (the scene's meshes whose `technique` is its key): the
+  // renderer then calls drawForward after the lighting pass and times that, not run(), under the
+  // technique's key.
+  virtual bool drawsForward() const { return false; }
+  // Draws the technique's objects (see ForwardDrawInput); may prepare on first use (PRT: the
+  // transfer from its cache or a bake, the basis and projections) and when its section changed.
+  virtual void drawForward(const ForwardDrawInput& /*input*/) {}
 };
 
 // The passes of the technique of that key (an OpenGL context must be current; compiles their

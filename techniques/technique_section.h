@@ -103,6 +103,8 @@ struct TechniqueBlock {
   std::size_t dataCount() const { return data.size() / sizeof(T); }
 };
 
+class TechniqueSection;
+
 // A configuration the scene bench (harness/scene_bench.h) times for a technique, interleaved round
 // by round with its own: frame settings by their keys (render/setting_keys.h, e.g. "mode" →
 // "optimised4") over the run's, on the scene as it is or with the technique's section taken out.
@@ -111,6 +113,9 @@ struct TechniqueBenchConfig {
   std::vector<std::pair<std::string, std::string>> settings;
   bool withoutTechnique = false;
   int framesPerRound = 0;  // 0: the run's; else that many (and at most one warm-up frame)
+  // Non-null: on a copy of the scene whose section is this one instead (PRT's RGB-PRT baseline
+  // against its spectral basis: the same objects, another mode of the technique).
+  std::shared_ptr<const TechniqueSection> section = nullptr;
 };
 // A ratio the bench reports for a technique: the frame time of configuration `numerator` over
 // that of `denominator` (labels of its configurations, or "rgb", the run's RGB frames).
@@ -156,6 +161,11 @@ class TechniqueSection {
   // Its own optimised wavelengths, if it has them (scenes with such a technique are compared in
   // optimised4 mode against the reference in the gallery).
   virtual std::optional<TechniqueWavelengths> optimisedWavelengths() const { return std::nullopt; }
+  // Whether scene objects may name it as their `technique`: it then shades them itself, in a
+  // forward pass of its own after the lighting pass (TechniquePass::drawForward; PRT objects),
+  // and the deferred pipeline only keeps their depth. The scene loader refuses an object naming a
+  // technique that is absent from the scene or does not shade objects.
+  virtual bool shadesObjects() const { return false; }
 };
 
 // A scene's sections, at most one per technique, in registration order; copied deeply (a scene

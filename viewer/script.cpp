@@ -113,7 +113,7 @@ void set(Viewer& viewer, const std::string& key, const std::string& value) {
     return;
   }
   throw Error(fmt::format("unknown setting \"{}\" (the frame keys of `prism settings --keys`, right.KEY, split, "
-                          "heat-map, fov, light.N.*, material.NAME.*, water.type, water.depth, sky.*)", key));
+                          "heat-map, fov, light.N.*, material.NAME.*, water.type, water.depth, sky.*, prt.*)", key));
 }
 
 void execute(Viewer& viewer, const std::vector<std::string>& w) {

@@ -9,7 +9,8 @@
 //                        right.KEY for the right one, or: split on|off, heat-map on|off, fov DEG,
 //                        light.N.spd NAME, light.N.intensity X, light.N.direction X,Y,Z,
 //                        material.NAME.base-colour R,G,B, material.NAME.roughness X,
-//                        material.NAME.metallic X, water.type T, water.depth M
+//                        material.NAME.metallic X, water.type T, water.depth M, sky.*,
+//                        prt.mode M, prt.basis N, prt.illuminant NAME, prt.rotation DEG
 //   frames N             render N frames (the window shows them)
 //   resize W H           resize the window
 //   orbit YAW PITCH      degrees

@@ -9,6 +9,9 @@ out vec3 vPosition;
 out vec3 vNormal;
 out vec2 vUv;
 out vec4 vTangent;
+// Techniques' forward passes draw their objects again over this depth with LEQUAL
+// (techniques/technique_pass.h): the same expression, invariant, gives the same depth.
+invariant gl_Position;
 
 void main() {
   vPosition = aPosition;

@@ -68,6 +68,11 @@ void main() {
     oTristimulus = vec4(shadeBackground(frame, farPoint, frame.cameraPositionW), 1.0);
     return;
   }
+  if (id == kTechniqueShadedMaterialId) {
+    // A technique's object: its forward pass adds its colour (frame_layout.glsl).
+    oTristimulus = vec4(0.0, 0.0, 0.0, 1.0);
+    return;
+  }
   vec4 am = texelFetch(gAlbedoMetallic, p, 0);
   vec4 nr = texelFetch(gNormalRoughness, p, 0);
   SurfaceSample s;

@@ -28,6 +28,12 @@ const int kMaterialConductor = 2;   // n, k per wavelength (in RGB mode: Schlick
 
 const int kMaxLights = 16;
 
+// The G-buffer's material id where the object is one a technique shades itself, in its forward
+// pass after the lighting pass (techniques/technique_pass.h, drawForward: PRT objects): the
+// lighting pass adds nothing there but its frame count. Elsewhere the id is the material's index
+// + 1, and 0 where no geometry is.
+const uint kTechniqueShadedMaterialId = 0xFFFFFFFFu;
+
 struct GpuBatch {
   vec4 lambdaNm;
   vec4 toX;

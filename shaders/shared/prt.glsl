@@ -48,3 +48,28 @@ PRISM_INLINE vec3 prtXyz(IN(PrtBasisIrradiance) irradiance, IN(PrtReflectance) r
   for (int j = 0; j < basisCount; ++j) xyz += irradiance.e[j] * reflectance.r[j];
   return xyz;
 }
+
+// The renderer's PRT forward pass (techniques/prt/gpu/prt_pass.cpp, shaders/passes/prt.*): three
+// std430 storage buffers, laid out here for both sides — per vertex its Sh25 transfer (100 bytes,
+// std430's float-array stride is 4 as in C++), the PrtEnvironment (1600 bytes) and per material
+// a PrtGpuMaterial: R̂ with each vec3 in a vec4, since std430 strides a vec3 array by 16 bytes
+// and C++ by 12 (prt_layout.h checks the sizes).
+const int kPrtTransferBinding = 7;
+const int kPrtEnvironmentBinding = 8;
+const int kPrtMaterialsBinding = 9;
+
+struct PrtGpuMaterial {
+  vec4 r[16];  // .xyz = R̂_j, .w = 0
+};
+
+PRISM_INLINE PrtGpuMaterial prtGpuMaterial(IN(PrtReflectance) reflectance) {
+  PrtGpuMaterial m;
+  for (int j = 0; j < kPrtMaxBasis; ++j) m.r[j] = vec4(reflectance.r[j], 0.0f);
+  return m;
+}
+
+PRISM_INLINE PrtReflectance prtReflectance(IN(PrtGpuMaterial) material) {
+  PrtReflectance r;
+  for (int j = 0; j < kPrtMaxBasis; ++j) r.r[j] = vec3(material.r[j]);
+  return r;
+}

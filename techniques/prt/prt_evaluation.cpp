@@ -37,18 +37,14 @@ shared::PrtEnvironment environmentBlock(const Eigen::MatrixXd& rows) {  // n × 
   return e;
 }
 
-// XYZ per vertex for one chunk of "basis functions": environment rows (n × 25) and, per material,
-// reflectance columns (3 × n), through the shared run-time sums.
-void accumulate(const PrtObject& object, const std::vector<shared::Sh25>& transfer, const Eigen::MatrixXd& environment,
-                const std::vector<Eigen::MatrixXd>& reflectances, std::vector<Eigen::Vector3d>& xyz) {
-  PRISM_CHECK(environment.rows() <= shared::kPrtMaxBasis);
-  int n = static_cast<int>(environment.rows());
-  shared::PrtEnvironment env = environmentBlock(environment);
-  std::vector<shared::PrtReflectance> blocks;
-  for (const Eigen::MatrixXd& r : reflectances) blocks.push_back(reflectanceBlock(r));
+// XYZ per vertex for one projection, through the shared run-time sums.
+void accumulate(const PrtObject& object, const std::vector<shared::Sh25>& transfer, const PrtProjection& projection,
+                std::vector<Eigen::Vector3d>& xyz) {
+  PRISM_CHECK(projection.basisCount >= 1 && projection.basisCount <= shared::kPrtMaxBasis);
   for (std::size_t v = 0; v < transfer.size(); ++v) {
-    shared::PrtBasisIrradiance e = shared::prtVertexIrradiance(env, transfer[v], n);
-    glm::vec3 c = shared::prtXyz(e, blocks[static_cast<std::size_t>(object.vertexMaterial[v])], n);
+    shared::PrtBasisIrradiance e = shared::prtVertexIrradiance(projection.environment, transfer[v], projection.basisCount);
+    glm::vec3 c = shared::prtXyz(e, projection.reflectances[static_cast<std::size_t>(object.vertexMaterial[v])],
+                                 projection.basisCount);
     xyz[v] += Eigen::Vector3d(c.x, c.y, c.z);
   }
 }
@@ -158,21 +154,62 @@ PrtObject makeColourCheckerObject(int verticesPerPatch) {
   return object;
 }
 
+PrtProjection projectSpectral(const std::vector<Spectrum>& reflectances, const Eigen::MatrixXd& environmentGrid,
+                              const Observer& observer, const Eigen::MatrixXd& basis) {
+  PRISM_CHECK(basis.rows() == kGridWavelengths && basis.cols() >= 1 && basis.cols() <= shared::kPrtMaxBasis);
+  Eigen::MatrixXd cmf = observerOnGrid(observer);
+  PrtProjection p;
+  p.basisCount = static_cast<int>(basis.cols());
+  p.environment = environmentBlock(basis.transpose() * environmentGrid);  // L̃ = Φᵀ L
+  for (const Spectrum& s : reflectances) {  // R̂ (3 × m): Σ_i φ_j(λ_i) f_r(λ_i) c̄(λ_i) · 5 nm
+    Eigen::VectorXd rho = sampleOnGrid(s);
+    p.reflectances.push_back(
+        reflectanceBlock((cmf.array().colwise() * rho.array()).matrix().transpose() * basis * kGridStepNm));
+  }
+  return p;
+}
+
+PrtProjection projectRgb(const std::vector<Spectrum>& reflectances, const Eigen::MatrixXd& environmentGrid,
+                         const Observer& observer, const RgbColourSpace& space) {
+  Eigen::MatrixXd cmf = observerOnGrid(observer);
+  PrtProjection p;
+  p.basisCount = 3;
+  // The environment's RGB per SH coefficient (3 × 25; linear, so per coefficient is exact).
+  p.environment = environmentBlock(space.xyzToRgb * (cmf.transpose() * environmentGrid) * kGridStepNm);
+  // Albedos as an artist authors them: the reflectance's colour under CIE D65, the white of
+  // sRGB, Display P3 and Rec.2020 (the spaces RGB-PRT is meant for).
+  const Spectrum white = illuminant("D65");
+  for (const Spectrum& s : reflectances) {  // R̂_c = albedo_c · (primary c's XYZ)
+    Eigen::Vector3d albedo = space.xyzToRgb * reflectanceTristimulus(observer, s, white);
+    p.reflectances.push_back(reflectanceBlock(space.rgbToXyz * albedo.asDiagonal()));
+  }
+  return p;
+}
+
+std::vector<PrtProjection> projectReference(const std::vector<Spectrum>& reflectances,
+                                            const Eigen::MatrixXd& environmentGrid, const Observer& observer) {
+  Eigen::MatrixXd cmf = observerOnGrid(observer);
+  std::vector<PrtProjection> chunks;
+  // 81 delta "basis functions" in chunks of 16: R̂_i = f_r(λ_i)·c̄(λ_i)·5 nm.
+  for (int first = 0; first < kGridWavelengths; first += shared::kPrtMaxBasis) {
+    PrtProjection& p = chunks.emplace_back();
+    p.basisCount = std::min(shared::kPrtMaxBasis, kGridWavelengths - first);
+    p.environment = environmentBlock(environmentGrid.middleRows(first, p.basisCount));
+    for (const Spectrum& s : reflectances) {
+      Eigen::VectorXd rho = sampleOnGrid(s).segment(first, p.basisCount);
+      p.reflectances.push_back(reflectanceBlock(
+          (cmf.middleRows(first, p.basisCount).array().colwise() * rho.array()).matrix().transpose() * kGridStepNm));
+    }
+  }
+  return chunks;
+}
+
 std::vector<Eigen::Vector3d> shadeReference(const PrtObject& object, const std::vector<shared::Sh25>& transfer,
                                             const Eigen::MatrixXd& environmentGrid, const Observer& observer) {
   checkObject(object, transfer);
-  Eigen::MatrixXd cmf = observerOnGrid(observer);
   std::vector<Eigen::Vector3d> xyz(transfer.size(), Eigen::Vector3d::Zero());
-  // 81 delta "basis functions" in chunks of 16: R̂_i = f_r(λ_i)·c̄(λ_i)·5 nm.
-  for (int first = 0; first < kGridWavelengths; first += shared::kPrtMaxBasis) {
-    int n = std::min(shared::kPrtMaxBasis, kGridWavelengths - first);
-    std::vector<Eigen::MatrixXd> reflectances;
-    for (const Spectrum& s : object.reflectances) {
-      Eigen::VectorXd rho = sampleOnGrid(s).segment(first, n);
-      reflectances.push_back((cmf.middleRows(first, n).array().colwise() * rho.array()).matrix().transpose() * kGridStepNm);
-    }
-    accumulate(object, transfer, environmentGrid.middleRows(first, n), reflectances, xyz);
-  }
+  for (const PrtProjection& chunk : projectReference(object.reflectances, environmentGrid, observer))
+    accumulate(object, transfer, chunk, xyz);
   return xyz;
 }
 
@@ -180,15 +217,8 @@ std::vector<Eigen::Vector3d> shadeSpectral(const PrtObject& object, const std::v
                                            const Eigen::MatrixXd& environmentGrid, const Observer& observer,
                                            const Eigen::MatrixXd& basis) {
   checkObject(object, transfer);
-  PRISM_CHECK(basis.rows() == kGridWavelengths && basis.cols() >= 1 && basis.cols() <= shared::kPrtMaxBasis);
-  Eigen::MatrixXd cmf = observerOnGrid(observer);
-  std::vector<Eigen::MatrixXd> reflectances;  // R̂ (3 × m): Σ_i φ_j(λ_i) f_r(λ_i) c̄(λ_i) · 5 nm
-  for (const Spectrum& s : object.reflectances) {
-    Eigen::VectorXd rho = sampleOnGrid(s);
-    reflectances.push_back((cmf.array().colwise() * rho.array()).matrix().transpose() * basis * kGridStepNm);
-  }
   std::vector<Eigen::Vector3d> xyz(transfer.size(), Eigen::Vector3d::Zero());
-  accumulate(object, transfer, basis.transpose() * environmentGrid, reflectances, xyz);  // L̃ = Φᵀ L
+  accumulate(object, transfer, projectSpectral(object.reflectances, environmentGrid, observer, basis), xyz);
   return xyz;
 }
 
@@ -196,19 +226,8 @@ std::vector<Eigen::Vector3d> shadeRgb(const PrtObject& object, const std::vector
                                       const Eigen::MatrixXd& environmentGrid, const Observer& observer,
                                       const RgbColourSpace& space) {
   checkObject(object, transfer);
-  Eigen::MatrixXd cmf = observerOnGrid(observer);
-  // The environment's RGB per SH coefficient (3 × 25; linear, so per coefficient is exact).
-  Eigen::MatrixXd environmentRgb = space.xyzToRgb * (cmf.transpose() * environmentGrid) * kGridStepNm;
-  // Albedos as an artist authors them: the reflectance's colour under CIE D65, the white of
-  // sRGB, Display P3 and Rec.2020 (the spaces RGB-PRT is meant for).
-  const Spectrum white = illuminant("D65");
-  std::vector<Eigen::MatrixXd> reflectances;  // R̂_c = albedo_c · (primary c's XYZ)
-  for (const Spectrum& s : object.reflectances) {
-    Eigen::Vector3d albedo = space.xyzToRgb * reflectanceTristimulus(observer, s, white);
-    reflectances.push_back(space.rgbToXyz * albedo.asDiagonal());
-  }
   std::vector<Eigen::Vector3d> xyz(transfer.size(), Eigen::Vector3d::Zero());
-  accumulate(object, transfer, environmentRgb, reflectances, xyz);
+  accumulate(object, transfer, projectRgb(object.reflectances, environmentGrid, observer, space), xyz);
   return xyz;
 }
 

@@ -72,6 +72,26 @@ struct PrtObject {
 // order, so that each bump shades its neighbours' feet. verticesPerPatch along each side (≥ 2).
 PrtObject makeColourCheckerObject(int verticesPerPatch = 16);
 
+// What the run-time sums take, as the GPU takes it (shaders/shared/prt.glsl): the environment's
+// rows L̃ (basisCount × 25) and, per reflectance, R̂ (3 × basisCount), basisCount ≤ 16. A mode is
+// one or more of them, summed: spectral PRT and RGB-PRT one, the 5 nm reference six chunks of at
+// most 16 deltas. The CPU shading below and the renderer's forward pass both draw from these.
+struct PrtProjection {
+  int basisCount = 0;
+  shared::PrtEnvironment environment{};
+  std::vector<shared::PrtReflectance> reflectances;
+};
+// Spectral PRT: L̃ = Φᵀ L, R̂_j = Σ_i φ_j(λ_i) f_r(λ_i) c̄(λ_i) · 5 nm; basis 81 × m, m ≤ 16.
+PrtProjection projectSpectral(const std::vector<Spectrum>& reflectances, const Eigen::MatrixXd& environmentGrid,
+                              const Observer& observer, const Eigen::MatrixXd& basis);
+// RGB-PRT in `space`: L̃ the environment's linear RGB per SH coefficient, R̂_c = albedo_c · primary
+// c's XYZ, albedos the reflectances' colours under CIE D65.
+PrtProjection projectRgb(const std::vector<Spectrum>& reflectances, const Eigen::MatrixXd& environmentGrid,
+                         const Observer& observer, const RgbColourSpace& space);
+// The 5 nm reference: 81 deltas, R̂_i = f_r(λ_i) c̄(λ_i) · 5 nm, in chunks of 16.
+std::vector<PrtProjection> projectReference(const std::vector<Spectrum>& reflectances,
+                                            const Eigen::MatrixXd& environmentGrid, const Observer& observer);
+
 // Per-vertex XYZ, each through prtVertexIrradiance and prtXyz.
 std::vector<Eigen::Vector3d> shadeReference(const PrtObject& object, const std::vector<shared::Sh25>& transfer,
                                             const Eigen::MatrixXd& environmentGrid, const Observer& observer);

@@ -7,4 +7,9 @@
 namespace prism::shared {
 #include "spherical_harmonics.glsl"
 #include "prt.glsl"
+
+// The forward pass's std430 buffers (prt.glsl): sizes as the GPU lays them out.
+static_assert(sizeof(Sh25) == 100);
+static_assert(sizeof(PrtEnvironment) == 16 * 100);
+static_assert(sizeof(PrtGpuMaterial) == 16 * 16);
 }  // namespace prism::shared

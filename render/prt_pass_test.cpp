@@ -1,0 +1,160 @@
+// The PRT forward pass on the GPU (llvmpipe in CI) against its CPU twin: at random pixels of a
+// PRT scene, the accumulated tristimulus against shaders/shared/prt.glsl compiled as C++ over the
+// very data the pass uploaded (PrtPass::readTexels: transfer, L̃, R̂). The CPU finds the pixel's
+// triangle by a ray through the pixel's centre and interpolates the vertices' Ê with the hit's
+// barycentrics (perspective-correct interpolation is interpolation on the triangle in space),
+// then sums prtXyz as the fragment shader does.
+#include "render/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <random>
+
+#include "gpu/headless_context.h"
+#include "gpu/texture.h"
+#include "scene/scene_loader.h"
+#include "spectral/rgb_to_spectrum_optimiser.h"
+#include "techniques/prt/gpu/prt_pass.h"
+#include "techniques/prt/prt_section.h"
+
+namespace prism::render {
+namespace {
+
+const std::filesystem::path kScenes = PRISM_SCENES_DIR;
+
+const RgbToSpectrumTable& table() {
+  static const RgbToSpectrumTable t = buildRgbToSpectrumTable({"srgb", 16, 0, {}});
+  return t;
+}
+
+struct Hit {
+  std::size_t triangle = 0;
+  glm::dvec3 barycentric{0.0};
+  double distance = 0.0;
+};
+
+// The nearest triangle along the ray (Möller & Trumbore 1997), in double.
+std::optional<Hit> intersect(const prt::PrtDrawData& d, const glm::dvec3& origin, const glm::dvec3& dir) {
+  std::optional<Hit> best;
+  for (std::size_t t = 0; t + 2 < d.indices.size(); t += 3) {
+    glm::dvec3 a(d.positionsW[d.indices[t]]), b(d.positionsW[d.indices[t + 1]]), c(d.positionsW[d.indices[t + 2]]);
+    glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(dir, e2);
+    double det = glm::dot(e1, p);
+    if (std::abs(det) < 1e-14) continue;
+    glm::dvec3 s = origin - a;
+    double u = glm::dot(s, p) / det;
+    if (u < 0.0 || u > 1.0) continue;
+    glm::dvec3 q = glm::cross(s, e1);
+    double v = glm::dot(dir, q) / det;
+    if (v < 0.0 || u + v > 1.0) continue;
+    double distance = glm::dot(e2, q) / det;
+    if (distance <= 0.0 || (best && distance >= best->distance)) continue;
+    best = Hit{t, glm::dvec3(1.0 - u - v, u, v), distance};
+  }
+  return best;
+}
+
+// The ray through window position (x, y) (GL's: y up, pixel centres at +0.5).
+std::pair<glm::dvec3, glm::dvec3> pixelRay(const CameraTransform& camera, double x, double y, int w, int h) {
+  glm::dvec2 ndc(2.0 * x / w - 1.0, 2.0 * y / h - 1.0);
+  glm::dmat4 inverse(camera.inverseViewProjection);
+  glm::dvec4 nearPoint = inverse * glm::dvec4(ndc, -1.0, 1.0), farPoint = inverse * glm::dvec4(ndc, 1.0, 1.0);
+  glm::dvec3 n = glm::dvec3(nearPoint) / nearPoint.w, f = glm::dvec3(farPoint) / farPoint.w;
+  return {n, glm::normalize(f - n)};
+}
+
+// The fragment shader's sum on the CPU: Ê interpolated with the hit's barycentrics, then prtXyz,
+// for every projection (the 5 nm reference has six).
+glm::dvec3 cpuTristimulus(const prt::PrtDrawData& d, const Hit& hit) {
+  glm::dvec3 sum(0.0);
+  const int material = d.vertexMaterial[d.indices[hit.triangle]];
+  for (const prt::PrtProjection& p : d.projections) {
+    shared::PrtBasisIrradiance e{};
+    for (int k = 0; k < 3; ++k) {
+      std::uint32_t v = d.indices[hit.triangle + static_cast<std::size_t>(k)];
+      shared::PrtBasisIrradiance ev = shared::prtVertexIrradiance(p.environment, d.transfer[v], p.basisCount);
+      for (int j = 0; j < p.basisCount; ++j) e.e[j] += static_cast<float>(hit.barycentric[k]) * ev.e[j];
+    }
+    sum += glm::dvec3(shared::prtXyz(e, p.reflectances[static_cast<std::size_t>(material)], p.basisCount));
+  }
+  return sum;
+}
+
+struct PrtParityCase {
+  prt::PrtMode mode;
+  RenderMode frameMode;
+};
+
+class PrtGpuCpuParity : public testing::TestWithParam<PrtParityCase> {};
+
+TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSums) {
+  gpu::HeadlessContext context;
+  Scene scene = loadScene(kScenes / "prt_metamers.json");
+  scene.techniques.find<prt::PrtSection>()->mode = GetParam().mode;
+  FrameSettings settings;
+  settings.width = 160;
+  settings.height = 90;
+  settings.mode = GetParam().frameMode;
+  settings.shadowMapSize = 256;
+  settings.display.dither = false;
+  Renderer renderer(scene, table(), settings);
+  renderer.renderFrame();
+  const TechniquePass* pass = renderer.techniquePass(prt::PrtSection::kKey);
+  ASSERT_TRUE(pass);
+  auto data = std::dynamic_pointer_cast<const prt::PrtDrawData>(pass->readTexels());
+  ASSERT_TRUE(data);
+  ASSERT_FALSE(data->projections.empty());
+  std::vector<float> lit = gpu::readTexture2DFloat(renderer.accumulation(), 4);
+
+  const int w = settings.width, h = settings.height;
+  std::mt19937 rng(14);
+  std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
+  double worst = 0.0, sum = 0.0;
+  int compared = 0;
+  for (int n = 0; n < 400; ++n) {
+    int x = px(rng), y = py(rng);  // GL rows
+    auto [origin, dir] = pixelRay(renderer.cameraTransform(), x + 0.5, y + 0.5, w, h);
+    std::optional<Hit> hit = intersect(*data, origin, dir);
+    if (!hit) continue;
+    // Inside one object: its silhouette's pixels may take another triangle's colour.
+    bool interior = true;
+    for (glm::dvec2 o : {glm::dvec2(-0.5, 0.0), glm::dvec2(0.5, 0.0), glm::dvec2(0.0, -0.5), glm::dvec2(0.0, 0.5)}) {
+      auto [o2, d2] = pixelRay(renderer.cameraTransform(), x + 0.5 + o.x, y + 0.5 + o.y, w, h);
+      std::optional<Hit> h2 = intersect(*data, o2, d2);
+      interior = interior && h2 && data->vertexMaterial[data->indices[h2->triangle]] ==
+                                       data->vertexMaterial[data->indices[hit->triangle]];
+    }
+    if (!interior) continue;
+    glm::dvec3 expected = cpuTristimulus(*data, *hit);
+    std::size_t i = static_cast<std::size_t>(y * w + x);
+    glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
+    double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
+    double error = glm::length(actual - expected) / scale;
+    worst = std::max(worst, error);
+    sum += error;
+    ++compared;
+  }
+  std::printf("PRT %s (frame %s): %d pixels compared; relative error mean %.3g, max %.3g\n",
+              std::string(prt::prtModeName(GetParam().mode)).c_str(),
+              std::string(renderModeName(GetParam().frameMode)).c_str(), compared, sum / std::max(compared, 1), worst);
+  EXPECT_GT(compared, 100);
+  EXPECT_LE(worst, 1e-4);
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, PrtGpuCpuParity,
+                         testing::Values(PrtParityCase{prt::PrtMode::Spectral, RenderMode::JakobHanika},
+                                         PrtParityCase{prt::PrtMode::Reference5nm, RenderMode::JakobHanika},
+                                         PrtParityCase{prt::PrtMode::Spectral, RenderMode::Rgb}),
+                         [](const testing::TestParamInfo<PrtParityCase>& param) {
+                           std::string name = std::string(prt::prtModeName(param.param.mode)) + "_frame_" +
+                                              std::string(renderModeName(param.param.frameMode));
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+}  // namespace
+}  // namespace prism::render

@@ -1,0 +1,210 @@
+#include "techniques/prt/gpu/prt_pass.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <numbers>
+#include <span>
+
+#include <fmt/format.h>
+
+#include "core/data_files.h"
+#include "core/error.h"
+#include "spectral/colour_space.h"
+#include "spectral/rgb_intent.h"
+#include "spectral/rgb_to_spectrum_cache.h"
+#include "techniques/prt/prt_section.h"
+#include "techniques/prt/transfer_bake.h"
+
+namespace prism::prt {
+namespace {
+
+struct GpuVertex {  // prt.vert's attributes
+  glm::vec3 positionW;
+  std::uint32_t material;
+};
+static_assert(sizeof(GpuVertex) == 16);
+
+// An immutable buffer of the values, at least 16 bytes (a zero-sized buffer cannot be bound),
+// padded with zeros rather than read past the values' end.
+template <class T>
+gpu::Buffer bufferOf(std::span<const T> values, const char* label) {
+  std::vector<std::byte> bytes(std::max<std::size_t>(values.size_bytes(), 16));
+  if (!values.empty()) std::memcpy(bytes.data(), values.data(), values.size_bytes());
+  return gpu::Buffer({bytes.size(), bytes.data(), 0, label});
+}
+
+// Scenes are y-up (glTF's convention); PRT's environments have their zenith at +z (as prism prt
+// bake turns a scene).
+glm::vec3 zUp(const glm::vec3& p) { return {p.x, -p.z, p.y}; }
+
+const PrtSection& sectionOf(const Scene& scene) {
+  const PrtSection* section = scene.techniques.find<PrtSection>();
+  PRISM_CHECK(section != nullptr);
+  return *section;
+}
+
+}  // namespace
+
+PrtPass::PrtPass() : mData(std::make_shared<PrtDrawData>()) {}
+
+void PrtPass::run(const TechniqueBlock&, const Scene&, const CameraTransform&) {}
+
+const gpu::Program& PrtPass::program(int basisCount) {
+  auto it = mPrograms.find(basisCount);
+  if (it != mPrograms.end()) return it->second;
+  gpu::ProgramDesc desc;
+  desc.vertex = shaderDirectory() / "passes" / "prt.vert";
+  desc.fragment = shaderDirectory() / "passes" / "prt.frag";
+  desc.includeDirs = {shaderDirectory()};
+  desc.defines = {{"PRISM_PRT_BASIS_COUNT", std::to_string(basisCount)}};
+  desc.label = fmt::format("PRT forward pass (m = {})", basisCount);
+  return mPrograms.emplace(basisCount, gpu::Program(desc)).first->second;
+}
+
+void PrtPass::prepareGeometry(const Scene& scene) {
+  const PrtSection& section = sectionOf(scene);
+  PrtDrawData& d = *mData;
+  PrtMesh bake;
+  std::vector<GpuVertex> vertices;
+  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+    const Mesh& mesh = scene.meshes[i];
+    if (mesh.technique != PrtSection::kKey) continue;
+    d.meshes.push_back(i);
+    auto slot = std::find(d.materials.begin(), d.materials.end(), mesh.material);
+    if (slot == d.materials.end()) slot = d.materials.insert(d.materials.end(), mesh.material);
+    const int material = static_cast<int>(slot - d.materials.begin());
+    const auto base = static_cast<std::uint32_t>(d.positionsW.size());
+    for (const Vertex& v : mesh.vertices) {
+      d.positionsW.push_back(v.position);
+      d.vertexMaterial.push_back(material);
+      vertices.push_back({v.position, static_cast<std::uint32_t>(material)});
+      bake.positions.push_back(zUp(v.position));
+      float length = glm::length(v.normal);
+      bake.normals.push_back(length > 0.0f ? zUp(v.normal / length) : glm::vec3(0.0f, 0.0f, 1.0f));
+    }
+    for (std::uint32_t index : mesh.indices) d.indices.push_back(base + index);
+  }
+  bake.indices = d.indices;
+  if (d.indices.empty()) return;
+  // The transfer: from the cache when this geometry was baked before with these settings.
+  const auto start = std::chrono::steady_clock::now();
+  int lastDecile = -1;
+  CachedTransfer cached = cachedTransfer(
+      bake, {section.samples, section.shadows}, cacheDirectory(),
+      [&](std::size_t done, std::size_t total) {
+        int decile = total == 0 ? 10 : static_cast<int>(10 * done / total);
+        if (decile != lastDecile) fmt::print(stderr, "\rPRT transfer bake {:3d} %", 10 * decile);
+        lastDecile = decile;
+      },
+      [](const std::string& note) { fmt::print(stderr, "prism: {}\n", note); });
+  if (!cached.fromCache) {
+    fmt::print(stderr, "\rPRT transfer bake: {} vertices × {} directions in {:.2f} s → {}\n", bake.positions.size(),
+               section.samples, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+               cached.file.string());
+  }
+  d.transfer = std::move(cached.transfer);
+  mVertices = bufferOf(std::span<const GpuVertex>(vertices), "PRT vertices");
+  mIndices = bufferOf(std::span<const std::uint32_t>(d.indices), "PRT indices");
+  mTransfer = bufferOf(std::span<const shared::Sh25>(d.transfer), "PRT transfer");
+  gpu::VertexArrayDesc vao;
+  vao.attributes = {{0, 3, GL_FLOAT, false, false, 0}, {1, 1, GL_UNSIGNED_INT, false, true, 12}};
+  vao.vertices = &mVertices;
+  vao.strideBytes = sizeof(GpuVertex);
+  vao.indices = &mIndices;
+  vao.label = "PRT objects";
+  mVertexArray = gpu::VertexArray(vao);
+}
+
+void PrtPass::prepareProjections(const ForwardDrawInput& input) {
+  const PrtSection& section = sectionOf(input.scene);
+  PrtDrawData& d = *mData;
+  // What the projections depend on, as text: the section, the observer, the materials.
+  // The frame's RGB and reference modes draw PRT's own baselines (technique_pass.h).
+  const PrtMode mode = input.rgbMode ? PrtMode::RgbPrt : input.referenceMode ? PrtMode::Reference5nm : section.mode;
+  std::string key = fmt::format("{}|{}|{}|{}|{}|{}|{}|{}|{}", section.illuminant, section.shape,
+                                static_cast<const void*>(section.map.get()), section.luminanceCdM2,
+                                section.rotationDeg, section.basis, prtModeName(mode), input.observer.name,
+                                input.scene.colourSpace);
+  for (int m : d.materials) {
+    const Material& material = input.scene.materials.at(static_cast<std::size_t>(m));
+    double measured = -1.0;  // a fingerprint of a measured reflectance on the grid
+    if (material.reflectance) {
+      Eigen::VectorXd rho = sampleOnGrid(*material.reflectance);
+      measured = rho.dot(Eigen::VectorXd::LinSpaced(rho.size(), 1.0, static_cast<double>(rho.size())));
+    }
+    key += fmt::format("|{},{},{},{}", material.baseColour.x, material.baseColour.y, material.baseColour.z, measured);
+  }
+  if (key == mProjectionKey) return;
+  std::vector<Spectrum> reflectances;
+  for (int m : d.materials) {
+    const Material& material = input.scene.materials.at(static_cast<std::size_t>(m));
+    reflectances.push_back(material.reflectance ? *material.reflectance
+                                                : RgbAlbedoSpectrum(input.table, material.baseColour).toDense());
+  }
+  const RgbToSpectrumTable& srgb =
+      input.table.gamut() == colourSpace("srgb").name ? input.table : rendererRgbToSpectrumTable("srgb");
+  SpectralEnvironment environment = sectionEnvironment(section, srgb);
+  // Radiance leaving a Lambertian surface is ρ/π times its irradiance: the 1/π that PRT's sums
+  // leave out (prt_evaluation.h's XYZ are irradiance × reflectance), so that Y is luminance.
+  Eigen::MatrixXd grid = environmentOnGrid(environment) / std::numbers::pi;
+  std::vector<PrtProjection> projections;
+  int basisCount = 0;
+  double energy = 0.0;
+  if (mode == PrtMode::Spectral) {
+    // The basis of every reflectance of the PRT objects and every spectrum of the environment.
+    std::vector<Eigen::VectorXd> spectra;
+    for (const Spectrum& s : reflectances) spectra.push_back(sampleOnGrid(s));
+    for (const EnvironmentTerm& t : environment.terms) spectra.push_back(sampleOnGrid(t.spectrum));
+    SpectralBasis basis(spectra);
+    basisCount = std::min(section.basis, basis.available());
+    energy = basis.capturedEnergy(basisCount);
+    projections.push_back(projectSpectral(reflectances, grid, input.observer, basis.leading(basisCount)));
+  } else if (mode == PrtMode::RgbPrt) {
+    basisCount = 3;
+    projections.push_back(projectRgb(reflectances, grid, input.observer, colourSpace(input.scene.colourSpace)));
+  } else {
+    projections = projectReference(reflectances, grid, input.observer);
+  }
+  // Built whole before anything is replaced.
+  std::vector<gpu::Buffer> environments, materials;
+  for (const PrtProjection& p : projections) {
+    environments.push_back(bufferOf(std::span<const shared::PrtEnvironment>(&p.environment, 1), "PRT environment"));
+    std::vector<shared::PrtGpuMaterial> packed;
+    for (const shared::PrtReflectance& r : p.reflectances) packed.push_back(shared::prtGpuMaterial(r));
+    materials.push_back(bufferOf(std::span<const shared::PrtGpuMaterial>(packed), "PRT materials"));
+  }
+  mEnvironments = std::move(environments);
+  mMaterials = std::move(materials);
+  d.projections = std::move(projections);
+  d.basisCount = basisCount;
+  d.capturedEnergy = energy;
+  mProjectionKey = std::move(key);
+}
+
+void PrtPass::drawForward(const ForwardDrawInput& input) {
+  if (!mGeometryReady) {
+    prepareGeometry(input.scene);
+    mGeometryReady = true;
+  }
+  if (mData->indices.empty()) return;  // no PRT objects
+  prepareProjections(input);
+  mTransfer.bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtTransferBinding);
+  for (std::size_t c = 0; c < mData->projections.size(); ++c) {
+    const gpu::Program& p = program(mData->projections[c].basisCount);
+    p.use();
+    p.setUniform("uViewProjection", input.camera.viewProjection);
+    mEnvironments[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtEnvironmentBinding);
+    mMaterials[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtMaterialsBinding);
+    mVertexArray.draw();
+  }
+}
+
+std::size_t PrtPass::gpuMemoryBytes() const {
+  std::size_t bytes = mVertices.sizeBytes() + mIndices.sizeBytes() + mTransfer.sizeBytes();
+  for (const gpu::Buffer& b : mEnvironments) bytes += b.sizeBytes();
+  for (const gpu::Buffer& b : mMaterials) bytes += b.sizeBytes();
+  return bytes;
+}
+
+}  // namespace prism::prt

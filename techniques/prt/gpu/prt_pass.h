@@ -1,0 +1,71 @@
+// The PRT technique's GPU half: a forward pass drawing the scene's PRT objects (meshes whose
+// `technique` is "prt") after the lighting pass, into the same tristimulus target, so that the
+// post pass (exposure, adaptation, tone map) finishes them with the rest (technique_pass.h).
+//
+// Per vertex its 25 SH transfer coefficients (an SSBO indexed by gl_VertexID); the environment's
+// m × 25 rows L̃ and each material's R̂ in two more SSBOs (layouts in shaders/shared/prt.glsl).
+// The vertex shader computes Ê_j = Σ_k L̃_jk T̃_k (prtVertexIrradiance), the fragment shader
+// XYZ = Σ_j Ê_j R̂_j (prtXyz), each program compiled for its basis count m (#define
+// PRISM_PRT_BASIS_COUNT: m interpolated varyings, loops of constant length). Spectral PRT and
+// RGB-PRT are one draw each; the 5 nm reference six, one per chunk of ≤ 16 wavelengths, summed by
+// the blending.
+//
+// Prepared on first use: the transfer from the cache (prism prt bake's, keyed by the meshes and
+// the bake settings) or baked (every PRT object occluding the others); the basis and projections
+// again whenever the section, the observer or the objects' materials change.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gpu/buffer.h"
+#include "gpu/program.h"
+#include "gpu/vertex_array.h"
+#include "techniques/prt/prt_evaluation.h"
+#include "techniques/technique_pass.h"
+
+namespace prism::prt {
+
+// What the pass draws, as the CPU prepared it: the twin's input (readTexels).
+struct PrtDrawData final : TechniqueTexels {
+  std::vector<std::size_t> meshes;          // indices into Scene::meshes, in the order drawn
+  std::vector<glm::vec3> positionsW;        // the scene's world space (y-up), as the G-buffer draws them
+  std::vector<std::uint32_t> indices;       // into positionsW, three per triangle
+  std::vector<int> vertexMaterial;          // into each projection's reflectances
+  std::vector<int> materials;               // Scene::materials index of each of those
+  std::vector<shared::Sh25> transfer;       // per vertex, PRT's z-up frame
+  std::vector<PrtProjection> projections;   // drawn and summed
+  int basisCount = 0;                       // spectral: m after clamping to the basis's size
+  double capturedEnergy = 0.0;              // spectral: of the m functions
+};
+
+class PrtPass final : public TechniquePass {
+ public:
+  PrtPass();
+  void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera) override;
+  void bindForLighting() const override {}
+  std::size_t gpuMemoryBytes() const override;
+  std::shared_ptr<const TechniqueTexels> readTexels() const override { return mData; }
+  bool drawsForward() const override { return true; }
+  void drawForward(const ForwardDrawInput& input) override;
+
+ private:
+  void prepareGeometry(const Scene& scene);
+  void prepareProjections(const ForwardDrawInput& input);
+  const gpu::Program& program(int basisCount);
+
+  std::shared_ptr<PrtDrawData> mData;
+  bool mGeometryReady = false;
+  std::string mProjectionKey;  // what the projections were made from
+  gpu::Buffer mVertices, mIndices, mTransfer;
+  gpu::VertexArray mVertexArray;
+  std::vector<gpu::Buffer> mEnvironments, mMaterials;  // one each per projection
+  std::map<int, gpu::Program> mPrograms;               // per basis count
+};
+
+}  // namespace prism::prt

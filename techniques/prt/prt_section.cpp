@@ -1,0 +1,152 @@
+#include "techniques/prt/prt_section.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/error.h"
+#include "imaging/exr_file.h"
+#include "spectral/illuminant.h"
+#include "spectral/rgb_intent.h"
+
+namespace prism::prt {
+namespace {
+
+// ∫ S ȳ dλ on PRT's 5 nm grid (CIE 1931): the scale that makes a spectrum's luminance 1 cd/m²
+// once 683 lm/W is folded into it (PRT's XYZ carry no 683 of their own).
+double gridLuminance(const Spectrum& spd) {
+  return sampleOnGrid(spd).dot(observerOnGrid(cie1931Observer()).col(1)) * kGridStepNm;
+}
+
+std::shared_ptr<const PrtMap> readMap(const schema::Node& n) {
+  std::filesystem::path folder = std::filesystem::path(n.document().name).parent_path();
+  if (folder.empty()) folder = ".";
+  auto map = std::make_shared<PrtMap>();
+  try {
+    map->file = schema::confinedFile(folder, folder, n.string());
+    imaging::ExrImage exr = imaging::readExr(map->file);
+    if (exr.colour != imaging::ColourMeaning::LinearSrgb || exr.image.channels < 3)
+      throw Error(fmt::format("an environment map must be linear sRGB (Rec. 709, D65) RGB, not {} with {} channel(s)",
+                              imaging::colourMeaningName(exr.colour), exr.image.channels));
+    map->width = exr.image.width;
+    map->height = exr.image.height;
+    map->linearRgb.reserve(3 * exr.image.pixelCount());
+    for (int y = 0; y < exr.image.height; ++y) {
+      for (int x = 0; x < exr.image.width; ++x) {
+        for (int c = 0; c < 3; ++c) {
+          float v = exr.image.at(x, y, c);
+          if (!std::isfinite(v) || v < 0.0f)
+            throw Error(fmt::format("texel ({}, {}): channel {} is {}, not a finite non-negative radiance", x, y, c, v));
+          map->linearRgb.push_back(v);
+        }
+      }
+    }
+  } catch (const Error& e) {
+    n.fail(e.what());
+  }
+  return map;
+}
+
+}  // namespace
+
+std::string_view prtModeName(PrtMode mode) {
+  switch (mode) {
+    case PrtMode::Spectral: return "spectral";
+    case PrtMode::RgbPrt: return "rgb-prt";
+    case PrtMode::Reference5nm: return "reference-5nm";
+  }
+  return "?";
+}
+
+TechniqueBlock PrtSection::pack(const FramePackInput&) const {
+  TechniqueBlock block;
+  block.key = kKey;
+  return block;
+}
+
+std::string_view PrtSection::notTracedBecause() const {
+  return "PRT objects are held to their own 5 nm reference (\"mode\": \"reference-5nm\", prism prt report), "
+         "through the same transfer";
+}
+
+TechniqueBench PrtSection::bench() const {
+  auto spectral8 = std::make_shared<PrtSection>(*this);
+  spectral8->mode = PrtMode::Spectral;
+  spectral8->basis = 8;
+  auto rgb = std::make_shared<PrtSection>(*this);
+  rgb->mode = PrtMode::RgbPrt;
+  TechniqueBench b;
+  b.configs.push_back({"prt m=8", {}, false, 0, spectral8});
+  b.configs.push_back({"rgb-prt", {}, false, 0, rgb});
+  b.ratios.push_back({"ratio_spectral8_to_rgb_prt", "prt m=8", "rgb-prt"});
+  return b;
+}
+
+std::unique_ptr<TechniqueSection> PrtSection::parse(const schema::Node& n, const TechniqueSections&) {
+  using schema::Range;
+  n.expectObject({"environment", "basis", "mode", "samples", "shadows"});
+  auto s = std::make_unique<PrtSection>();
+  if (auto e = n.optionalChild("environment")) {
+    e->expectObject({"illuminant", "shape", "map", "luminance", "rotation_deg"});
+    if (auto m = e->optionalChild("map")) {
+      for (const char* other : {"illuminant", "shape"})
+        if (e->has(other)) e->child(other).fail("give a map or an illuminant and shape, not both");
+      s->map = readMap(*m);
+    }
+    if (auto i = e->optionalChild("illuminant")) {
+      s->illuminant = i->string();
+      try {
+        prism::illuminant(s->illuminant);
+      } catch (const Error& err) {
+        i->fail(err.what());
+      }
+    }
+    if (auto sh = e->optionalChild("shape")) {
+      s->shape = sh->string();
+      if (s->shape != "sky" && s->shape != "uniform") sh->fail("expected \"sky\" or \"uniform\", got \"" + s->shape + "\"");
+    }
+    s->luminanceCdM2 = e->numberF("luminance", s->luminanceCdM2, Range::above(0.0));
+    s->rotationDeg = e->numberF("rotation_deg", 0.0f, Range::closed(-360.0, 360.0));
+  }
+  if (auto b = n.optionalChild("basis")) s->basis = b->integer(Range::closed(1, shared::kPrtMaxBasis));
+  if (auto m = n.optionalChild("mode")) {
+    std::string name = m->string();
+    bool found = false;
+    for (PrtMode mode : {PrtMode::Spectral, PrtMode::RgbPrt, PrtMode::Reference5nm}) {
+      if (name == prtModeName(mode)) {
+        s->mode = mode;
+        found = true;
+      }
+    }
+    if (!found) m->fail("expected \"spectral\", \"rgb-prt\" or \"reference-5nm\", got \"" + name + "\"");
+  }
+  if (auto m = n.optionalChild("samples")) s->samples = m->integer(Range::closed(1, 1 << 20));
+  s->shadows = n.boolean("shadows", true);
+  return s;
+}
+
+SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpectrumTable& srgbTable) {
+  SpectralEnvironment environment;
+  if (section.map) {
+    auto toSpectrum = [&srgbTable](const glm::vec3& rgb) { return RgbUnboundedSpectrum(srgbTable, rgb).toDense(); };
+    double scale = section.luminanceCdM2 / gridLuminance(toSpectrum(glm::vec3(1.0f)));
+    environment = equirectangularEnvironment(section.map->file.string(), section.map->width, section.map->height,
+                                             section.map->linearRgb,
+                                             [&](const glm::vec3& rgb) { return toSpectrum(rgb) * scale; });
+  } else {
+    Spectrum spd = illuminant(section.illuminant);
+    spd *= section.luminanceCdM2 / gridLuminance(spd);
+    environment = section.shape == "uniform" ? uniformEnvironment(section.illuminant + " uniform", spd)
+                                             : skyGradientEnvironment(section.illuminant + " sky", spd);
+  }
+  if (section.rotationDeg != 0.0f) {
+    // The scene's up (+y) is PRT's zenith (+z): a turn about the zenith is the same angle.
+    glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(static_cast<double>(section.rotationDeg)),
+                                    glm::dvec3(0.0, 0.0, 1.0)));
+    environment = rotateEnvironment(environment, rotation);
+  }
+  return environment;
+}
+
+}  // namespace prism::prt

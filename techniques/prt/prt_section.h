@@ -1,0 +1,63 @@
+// The scene file's "prt" section (docs/scene-format.md, "PRT"): the distant spectral environment
+// that lights the scene's PRT objects (objects whose `technique` is "prt"), the spectral basis
+// size and the mode — spectral PRT (Schwenk, Kuijper & Bockholt), RGB-PRT or the 5 nm reference,
+// all three through the same transfer and the same run-time sums (prt_evaluation.h). The
+// renderer draws PRT objects in the PRT forward pass (gpu/prt_pass.h); this half holds no
+// OpenGL. Units: the environment's radiance is scaled so that `luminanceCdM2` is its luminance
+// (zenith for the sky gradient, everywhere for uniform, a (1, 1, 1) texel for a map), making the
+// objects' XYZ absolute like the rest of the frame (Y in cd/m²).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "spectral/rgb_to_spectrum_table.h"
+#include "techniques/prt/prt_evaluation.h"
+#include "techniques/technique_section.h"
+
+namespace prism::prt {
+
+enum class PrtMode { Spectral, RgbPrt, Reference5nm };
+std::string_view prtModeName(PrtMode mode);  // "spectral", "rgb-prt", "reference-5nm"
+
+// An equirectangular map as read (linear sRGB, row 0 at the zenith), shared between copies.
+struct PrtMap {
+  std::filesystem::path file;
+  int width = 0, height = 0;
+  std::vector<float> linearRgb;  // width × height RGB triples
+};
+
+struct PrtSection final : TechniqueSection {
+  static constexpr std::string_view kKey = "prt";
+
+  std::string illuminant = "D65";                 // a name as `prism colour list illuminants` prints
+  std::string shape = "sky";                      // "sky" (CIE overcast gradient) or "uniform"
+  std::shared_ptr<const PrtMap> map;              // instead of illuminant and shape, when given
+  float luminanceCdM2 = 1000.0f;
+  float rotationDeg = 0.0f;                       // about the zenith (world +y), counter-clockwise seen from above
+  int basis = 8;                                  // m, 1..16 (spectral mode)
+  PrtMode mode = PrtMode::Spectral;
+  int samples = 256;                              // transfer directions per vertex, 1..2²⁰
+  bool shadows = true;                            // self-shadowing in the transfer
+
+  std::string_view key() const override { return kKey; }
+  std::string_view shaderDefine() const override { return "PRISM_TECHNIQUE_PRT"; }
+  std::unique_ptr<TechniqueSection> clone() const override { return std::make_unique<PrtSection>(*this); }
+  // No block: the forward pass uploads what it draws when the section changes.
+  TechniqueBlock pack(const FramePackInput& input) const override;
+  std::string_view notTracedBecause() const override;
+  // Spectral PRT with m = 8 against RGB-PRT, both on this scene, the PRT pass timed in each.
+  TechniqueBench bench() const override;
+  bool shadesObjects() const override { return true; }
+
+  static std::unique_ptr<TechniqueSection> parse(const schema::Node& node, const TechniqueSections& earlier);
+};
+
+// The section's environment, z-up (PRT's convention), turned by rotationDeg about the zenith and
+// scaled to its luminance; srgbTable upsamples a map's texels (the unbounded intent).
+SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpectrumTable& srgbTable);
+
+}  // namespace prism::prt

@@ -1,0 +1,50 @@
+// The PRT panel (techniques/prt): mode, basis size m, the environment's illuminant, shape,
+// luminance and rotation. Sees only the PanelContext.
+#include <imgui.h>
+
+#include "spectral/illuminant.h"
+#include "techniques/prt/prt_section.h"
+#include "techniques/prt/viewer/prt_viewer.h"
+#include "viewer/panel_widgets.h"
+
+namespace prism::viewer {
+namespace {
+
+class PrtPanel final : public Panel {
+ public:
+  const char* title() const override { return "PRT"; }
+  bool applies(const Scene& scene) const override { return scene.techniques.has(prt::PrtSection::kKey); }
+
+  void draw(PanelContext& context) override {
+    prt::PrtSection& s = *context.scene.techniques.find<prt::PrtSection>();
+    if (mIlluminants.empty()) {  // read once, not every frame
+      for (const IlluminantInfo& i : listIlluminants()) mIlluminants.push_back(i.name);
+    }
+    std::string mode(prt::prtModeName(s.mode));
+    bool changed = false;
+    if (stringCombo("mode", mode, {"spectral", "rgb-prt", "reference-5nm"})) {
+      for (prt::PrtMode m : {prt::PrtMode::Spectral, prt::PrtMode::RgbPrt, prt::PrtMode::Reference5nm})
+        if (mode == prt::prtModeName(m)) s.mode = m;
+      changed = true;
+    }
+    changed |= ImGui::SliderInt("basis m", &s.basis, 1, shared::kPrtMaxBasis);
+    if (s.map) {
+      ImGui::TextUnformatted(("map: " + s.map->file.filename().string()).c_str());
+    } else {
+      changed |= stringCombo("illuminant", s.illuminant, mIlluminants);
+      changed |= stringCombo("shape", s.shape, {"sky", "uniform"});
+    }
+    changed |= ImGui::SliderFloat("luminance cd/m2", &s.luminanceCdM2, 1.0f, 1e5f, "%.0f", ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::SliderFloat("rotation deg", &s.rotationDeg, -180.0f, 180.0f, "%.1f");
+    if (changed) context.changes.scene = true;
+  }
+
+ private:
+  std::vector<std::string> mIlluminants;
+};
+
+}  // namespace
+
+std::unique_ptr<Panel> makePrtPanel() { return std::make_unique<PrtPanel>(); }
+
+}  // namespace prism::viewer

@@ -1,0 +1,38 @@
+// The viewer script's `set prt.*` keys (viewer/technique_settings.h).
+#include <cmath>
+
+#include "core/error.h"
+#include "render/setting_keys.h"
+#include "spectral/illuminant.h"
+#include "techniques/prt/prt_section.h"
+#include "techniques/prt/viewer/prt_viewer.h"
+
+namespace prism::viewer {
+
+bool setPrtKey(Scene& scene, const std::string& key, const std::string& value) {
+  if (key != "prt.mode" && key != "prt.basis" && key != "prt.illuminant" && key != "prt.rotation") return false;
+  auto* s = scene.techniques.find<prt::PrtSection>();
+  if (!s) throw Error("the scene has no prt section");
+  if (key == "prt.mode") {
+    for (prt::PrtMode m : {prt::PrtMode::Spectral, prt::PrtMode::RgbPrt, prt::PrtMode::Reference5nm}) {
+      if (value == prt::prtModeName(m)) {
+        s->mode = m;
+        return true;
+      }
+    }
+    throw Error("prt.mode: expected spectral, rgb-prt or reference-5nm, got '" + value + "'");
+  }
+  if (key == "prt.basis") {
+    s->basis = static_cast<int>(render::parseInteger(key, value, 1, shared::kPrtMaxBasis));
+  } else if (key == "prt.illuminant") {
+    illuminant(value);  // Error naming it when unknown, before anything changes
+    s->illuminant = value;
+  } else {
+    float degrees = render::parseFloat(key, value);
+    if (!(std::abs(degrees) <= 360.0f)) throw Error("prt.rotation: expected degrees in [-360, 360], got " + value);
+    s->rotationDeg = degrees;
+  }
+  return true;
+}
+
+}  // namespace prism::viewer

@@ -28,6 +28,9 @@ WavelengthFitProblem sceneWavelengthFitProblem(const SamplingSettings& settings,
   };
   for (const Light& light : scene.lights) addLight(light.spd);
   if (scene.backgroundLuminance > 0.0f) addLight(std::numbers::pi * backgroundRadiance(scene, space, table).toDense());
+  // Nothing the frame's wavelengths would see (a scene lit only by a technique's own pass, or
+  // dark): fitted under equal energy, so that the default strategy renders every scene.
+  if (problem.lights.empty()) problem.lights.push_back(Spectrum::constant(1.0));
   problem.reflectances = standardTrainingReflectances(table);
   for (const Material& m : scene.materials) {
     if (m.conductor) problem.reflectances.push_back(normalIncidenceReflectance(*m.conductor));

@@ -24,7 +24,8 @@ namespace prism {
 Spectrum sceneEmission(const Scene& scene, const RgbColourSpace& space, const RgbToSpectrumTable& table);
 
 // What the Optimised strategy fits for this scene (spectral/wavelength_fit.h): its lights, each
-// alone (distinct spectra once), and the background's π·L; the standard training reflectances
+// alone (distinct spectra once), and the background's π·L (equal energy when it has neither);
+// the standard training reflectances
 // plus the scene's own (materials' upsampled base colours, measured reflectances, conductors at
 // normal incidence); the settings' count and range.
 WavelengthFitProblem sceneWavelengthFitProblem(const SamplingSettings& settings, const Scene& scene,

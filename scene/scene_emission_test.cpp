@@ -40,6 +40,28 @@ TEST(SceneEmission, SumsTheLightsByIntensityAndTheBackgroundAsTheIlluminanceItGi
   EXPECT_NEAR(luminousIntegral(sceneEmission(scene, colourSpace("srgb"), table())) / (1050.0 + 100.0 * std::numbers::pi), 1.0, 1e-3);
 }
 
+// The Optimised strategy's training set: each distinct light SPD once (two D65 lights are one),
+// the standard reflectances plus one per material; equal energy when nothing emits.
+TEST(SceneEmission, TheWavelengthFitTrainsOnTheDistinctLightsAndTheScenesSurfaces) {
+  Scene scene;
+  scene.lights.push_back(light(LightType::Directional, "D65", 1000.0f));
+  scene.lights.push_back(light(LightType::Point, "D65", 20.0f));
+  scene.lights.push_back(light(LightType::Point, "F11", 50.0f));
+  scene.materials.resize(2);
+  const SamplingSettings settings{8, 380, 780, SamplingStrategy::Optimised};
+  const WavelengthFitProblem problem = sceneWavelengthFitProblem(settings, scene, colourSpace("srgb"), table());
+  ASSERT_EQ(problem.lights.size(), 2u);
+  EXPECT_TRUE(problem.lights[0] == scene.lights[0].spd);
+  EXPECT_TRUE(problem.lights[1] == scene.lights[2].spd);
+  EXPECT_EQ(problem.reflectances.size(), standardTrainingReflectances(table()).size() + 2);
+  EXPECT_EQ(problem.count, 8);
+  EXPECT_EQ(problem.minNm, 380.0);
+  scene.lights.clear();
+  const WavelengthFitProblem dark = sceneWavelengthFitProblem(settings, scene, colourSpace("srgb"), table());
+  ASSERT_EQ(dark.lights.size(), 1u);
+  EXPECT_TRUE(dark.lights[0] == Spectrum::constant(1.0));
+}
+
 TEST(SceneEmission, OnlyTheLightsStrategyFollowsIt) {
   Scene scene;
   scene.lights.push_back(light(LightType::Directional, "led:450:20", 1000.0f));

@@ -15,14 +15,13 @@
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_cache.h"
-#include "spectral/rgb_to_spectrum_optimiser.h"
 
 namespace prism::render {
 namespace {
 
 const RgbToSpectrumTable& table() {
-  // Resolution does not matter to most of these checks; 16 keeps the optimisation short.
-  static const RgbToSpectrumTable t = buildRgbToSpectrumTable({"srgb", 16, 0, {}});
+  // Resolution does not matter to most of these checks: the 16³ table the srgb_table fixture caches.
+  static const RgbToSpectrumTable t = cachedRgbToSpectrumTable("srgb", 16);
   return t;
 }
 

@@ -17,7 +17,7 @@
 #include "gpu/headless_context.h"
 #include "gpu/texture.h"
 #include "scene/scene_loader.h"
-#include "spectral/rgb_to_spectrum_optimiser.h"
+#include "spectral/rgb_to_spectrum_cache.h"
 #include "techniques/prt/gpu/prt_pass.h"
 #include "techniques/prt/prt_section.h"
 
@@ -27,7 +27,7 @@ namespace {
 const std::filesystem::path kScenes = PRISM_SCENES_DIR;
 
 const RgbToSpectrumTable& table() {
-  static const RgbToSpectrumTable t = buildRgbToSpectrumTable({"srgb", 16, 0, {}});
+  static const RgbToSpectrumTable t = cachedRgbToSpectrumTable("srgb", 16);
   return t;
 }
 

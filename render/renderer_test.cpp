@@ -23,7 +23,7 @@
 #include "core/error.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
-#include "spectral/rgb_to_spectrum_optimiser.h"
+#include "spectral/rgb_to_spectrum_cache.h"
 
 namespace prism::render {
 namespace {
@@ -32,8 +32,9 @@ const std::filesystem::path kScenes = PRISM_SCENES_DIR;
 const std::filesystem::path kGolden = std::filesystem::path(PRISM_RENDER_TEST_DIR) / "golden";
 
 const RgbToSpectrumTable& table() {
-  // The arithmetic under test does not depend on the resolution; 16 keeps the build short.
-  static const RgbToSpectrumTable t = buildRgbToSpectrumTable({"srgb", 16, 0, {}});
+  // The arithmetic under test does not depend on the resolution: the 16³ table the srgb_table
+  // fixture caches.
+  static const RgbToSpectrumTable t = cachedRgbToSpectrumTable("srgb", 16);
   return t;
 }
 

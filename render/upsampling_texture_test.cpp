@@ -14,7 +14,7 @@
 #include "gpu/program.h"
 #include "shared_cpp.h"
 #include "core/data_files.h"
-#include "spectral/rgb_to_spectrum_optimiser.h"
+#include "spectral/rgb_to_spectrum_cache.h"
 
 namespace prism::shared {
 #include "sigmoid.glsl"
@@ -34,8 +34,8 @@ float reflectanceDifference(const glm::vec3& a, const glm::vec3& b) {
 
 TEST(UpsamplingTexture, GpuLookupsMatchTheCpu) {
   gpu::HeadlessContext context;
-  // Resolution does not change the arithmetic under test; 16 keeps the optimisation short.
-  RgbToSpectrumTable table = buildRgbToSpectrumTable({"srgb", 16, 0, {}});
+  // Resolution does not change the arithmetic under test: the 16³ table the srgb_table fixture caches.
+  RgbToSpectrumTable table = cachedRgbToSpectrumTable("srgb", 16);
   gpu::Texture3D texture = uploadUpsamplingTable(table);
 
   std::mt19937 rng(17);

@@ -6,14 +6,14 @@
 
 #include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
-#include "spectral/rgb_to_spectrum_optimiser.h"
+#include "spectral/rgb_to_spectrum_cache.h"
 
 namespace prism {
 namespace {
 
 const RgbToSpectrumTable& table() {
-  // Only the background's white is looked up: a coarse table fits it as well as a fine one.
-  static const RgbToSpectrumTable t = buildRgbToSpectrumTable({"srgb", 16, 0, {}});
+  // Only the background's white is looked up: the coarse 16³ table the srgb_table fixture caches.
+  static const RgbToSpectrumTable t = cachedRgbToSpectrumTable("srgb", 16);
   return t;
 }
 

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -13,6 +14,19 @@
 namespace prism::gpu::testing {
 
 std::filesystem::path testDirectory() { return PRISM_GPU_TEST_DIR; }
+
+std::filesystem::path loaderPath(std::string_view name) { return testDirectory() / "loader" / name; }
+
+std::size_t lineOf(const std::filesystem::path& file, std::string_view marker) {
+  std::ifstream in(file);
+  std::size_t number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    if (line.find(marker) != std::string::npos) return number;
+  }
+  ADD_FAILURE() << marker << " not in " << file;
+  return 0;
+}
 
 std::filesystem::path kernelPath(std::string_view name) {
   return testDirectory() / "kernels" / name;

@@ -25,6 +25,9 @@ std::filesystem::path testDirectory();                        // gpu/tests in th
 std::filesystem::path kernelPath(std::string_view name);      // gpu/tests/kernels/NAME
 std::filesystem::path drawShaderPath(std::string_view name);  // gpu/tests/draw/NAME
 std::vector<std::filesystem::path> sharedIncludeDirs();       // {shaderDirectory()/"shared"}
+std::filesystem::path loaderPath(std::string_view name);      // gpu/tests/loader/NAME
+// 1-based line of the first line of `file` containing `marker` (a test failure when none does).
+std::size_t lineOf(const std::filesystem::path& file, std::string_view marker);
 
 // A compute program from gpu/tests/kernels/NAME, #including shaders/shared through the loader.
 Program parityKernel(std::string_view name, std::vector<ShaderDefine> defines = {});

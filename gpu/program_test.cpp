@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -20,24 +19,14 @@ namespace {
 namespace fs = std::filesystem;
 using testing::GpuTest;
 
-fs::path loader(const std::string& name) { return testing::testDirectory() / "loader" / name; }
-
-std::size_t lineOf(const fs::path& file, const std::string& marker) {
-  std::ifstream in(file);
-  std::size_t number = 0;
-  for (std::string line; std::getline(in, line);) {
-    ++number;
-    if (line.find(marker) != std::string::npos) return number;
-  }
-  ADD_FAILURE() << marker << " not in " << file;
-  return 0;
-}
+using testing::lineOf;
+using testing::loaderPath;
 
 ProgramDesc computeDesc(const std::string& name) {
   ProgramDesc desc;
-  desc.compute = loader(name);
+  desc.compute = loaderPath(name);
   desc.includeDirs = testing::sharedIncludeDirs();
-  desc.includeDirs.push_back(loader("other"));
+  desc.includeDirs.push_back(loaderPath("other"));
   return desc;
 }
 
@@ -63,7 +52,7 @@ TEST_F(GpuTest, ProgramWithIncludesRunsAndComputesTheExpectedValue) {
 
 TEST_F(GpuTest, CompileErrorInAnIncludedFileNamesThatFileAndLine) {
   ProgramDesc desc = computeDesc("broken_root.comp");
-  fs::path body = loader("broken_body.glsl");
+  fs::path body = loaderPath("broken_body.glsl");
   std::string where = body.string() + ":" + std::to_string(lineOf(body, "BROKEN:")) + ":";
   for (bool withDefines : {false, true}) {
     if (withDefines) desc.defines = {{"UNUSED_ONE", "1"}, {"UNUSED_TWO", ""}};
@@ -95,8 +84,8 @@ TEST_F(GpuTest, LoaderErrorsSurfaceFromProgramWithTheirIds) {
   EXPECT_EQ(expectError(computeDesc("not_there.comp")).id(), Diagnostic::ShaderFileNotFound);
   EXPECT_EQ(expectError(ProgramDesc{}).id(), Diagnostic::ProgramStagesInvalid);
   ProgramDesc both = computeDesc("main.comp");
-  both.vertex = loader("triangle.vert");
-  both.fragment = loader("triangle.frag");
+  both.vertex = loaderPath("triangle.vert");
+  both.fragment = loaderPath("triangle.frag");
   EXPECT_EQ(expectError(both).id(), Diagnostic::ProgramStagesInvalid);
 }
 
@@ -110,8 +99,8 @@ TEST_F(GpuTest, LinkFailureHasItsOwnId) {
 
 TEST_F(GpuTest, DrawProgramLinksAndUniformsAreCheckedByName) {
   ProgramDesc desc;
-  desc.vertex = loader("triangle.vert");
-  desc.fragment = loader("triangle.frag");
+  desc.vertex = loaderPath("triangle.vert");
+  desc.fragment = loaderPath("triangle.frag");
   desc.includeDirs = testing::sharedIncludeDirs();
   desc.defines = {{"FRAGMENT_BLUE", "0.25f"}};
   desc.label = "triangle";

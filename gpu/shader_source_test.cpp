@@ -21,11 +21,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path loader(const std::string& name) { return testing::testDirectory() / "loader" / name; }
+using testing::lineOf;
+using testing::loaderPath;
 
 std::vector<fs::path> includeDirs() {
   std::vector<fs::path> dirs = testing::sharedIncludeDirs();
-  dirs.push_back(loader("other"));
+  dirs.push_back(loaderPath("other"));
   return dirs;
 }
 
@@ -38,15 +39,6 @@ std::vector<std::string> lines(std::istream& in) {
 std::vector<std::string> fileLines(const fs::path& file) {
   std::ifstream in(file);
   return lines(in);
-}
-
-// 1-based line of the first line of `file` containing `marker`.
-std::size_t lineOf(const fs::path& file, const std::string& marker) {
-  std::vector<std::string> l = fileLines(file);
-  for (std::size_t i = 0; i < l.size(); ++i)
-    if (l[i].find(marker) != std::string::npos) return i + 1;
-  ADD_FAILURE() << marker << " not in " << file;
-  return 0;
 }
 
 // Replays the #line directives of an assembled source the way a GLSL ≥ 3.30 compiler does and
@@ -85,15 +77,15 @@ std::size_t expectLinesMapBack(const ShaderSource& source) {
 }
 
 TEST(ShaderSource, ResolvesIncludesAndEveryLineMapsBackToItsFile) {
-  ShaderSource source = assembleShaderSource(loader("main.comp"), includeDirs());
+  ShaderSource source = assembleShaderSource(loaderPath("main.comp"), includeDirs());
   EXPECT_EQ(source.text.find("#include"), std::string::npos);
   ASSERT_GE(source.files.size(), 5u);
-  EXPECT_EQ(source.files[0], loader("main.comp"));
+  EXPECT_EQ(source.files[0], loaderPath("main.comp"));
   // Each file once in the table, in first-inclusion order (the prelude includes the shared
   // constants beside it); lib/second.glsl was included twice.
   std::vector<fs::path> expected{
-      loader("main.comp"), testing::sharedIncludeDirs()[0] / "prelude.glsl",
-      testing::sharedIncludeDirs()[0] / "constants.glsl", loader("lib/first.glsl"), loader("lib/second.glsl"), loader("shadow.glsl")};
+      loaderPath("main.comp"), testing::sharedIncludeDirs()[0] / "prelude.glsl",
+      testing::sharedIncludeDirs()[0] / "constants.glsl", loaderPath("lib/first.glsl"), loaderPath("lib/second.glsl"), loaderPath("shadow.glsl")};
   EXPECT_EQ(source.files, expected);
   EXPECT_EQ(source.text.find("return 7u"), std::string::npos) << "other/shadow.glsl chosen";
   EXPECT_GT(expectLinesMapBack(source), 20u);
@@ -101,7 +93,7 @@ TEST(ShaderSource, ResolvesIncludesAndEveryLineMapsBackToItsFile) {
 
 TEST(ShaderSource, DefinesGoRightAfterVersionWithoutShiftingLines) {
   std::vector<ShaderDefine> defines{{"FRAGMENT_BLUE", "0.5f"}, {"FLAG", ""}};
-  ShaderSource source = assembleShaderSource(loader("triangle.frag"), {}, defines);
+  ShaderSource source = assembleShaderSource(loaderPath("triangle.frag"), {}, defines);
   EXPECT_TRUE(source.text.starts_with(
       "#version 450\n#define FRAGMENT_BLUE 0.5f\n#define FLAG\n#line 2 0\n"))
       << source.text;
@@ -109,7 +101,7 @@ TEST(ShaderSource, DefinesGoRightAfterVersionWithoutShiftingLines) {
 }
 
 TEST(ShaderSource, MissingIncludeNamesTheIncluderLineAndTheFoldersSearched) {
-  fs::path root = loader("missing_include.comp");
+  fs::path root = loaderPath("missing_include.comp");
   try {
     assembleShaderSource(root, includeDirs());
     FAIL() << "no error";
@@ -123,9 +115,9 @@ TEST(ShaderSource, MissingIncludeNamesTheIncluderLineAndTheFoldersSearched) {
 }
 
 TEST(ShaderSource, IncludeCycleIsAnErrorNotAHang) {
-  fs::path b = loader("cycle_b.glsl");
+  fs::path b = loaderPath("cycle_b.glsl");
   try {
-    assembleShaderSource(loader("cycle_root.comp"), {});
+    assembleShaderSource(loaderPath("cycle_root.comp"), {});
     FAIL() << "no error";
   } catch (const GpuError& e) {
     EXPECT_EQ(e.id(), Diagnostic::IncludeCycle);
@@ -136,7 +128,7 @@ TEST(ShaderSource, IncludeCycleIsAnErrorNotAHang) {
         << e.what();
   }
   try {
-    assembleShaderSource(loader("self_include.comp"), {});
+    assembleShaderSource(loaderPath("self_include.comp"), {});
     FAIL() << "no error";
   } catch (const GpuError& e) {
     EXPECT_EQ(e.id(), Diagnostic::IncludeCycle) << e.what();
@@ -152,10 +144,10 @@ TEST(ShaderSource, MalformedIncludeMissingVersionAndMissingFileHaveTheirIds) {
     }
     return Diagnostic::GlDebugInfo;  // no error: never expected below
   };
-  EXPECT_EQ(idOf(loader("malformed_include.comp")), Diagnostic::IncludeMalformed);
-  EXPECT_EQ(idOf(loader("no_version.comp")), Diagnostic::MissingVersion);
-  EXPECT_EQ(idOf(loader("not_there.comp")), Diagnostic::ShaderFileNotFound);
-  EXPECT_EQ(idOf(loader("lib")), Diagnostic::ShaderFileNotFound);  // a folder
+  EXPECT_EQ(idOf(loaderPath("malformed_include.comp")), Diagnostic::IncludeMalformed);
+  EXPECT_EQ(idOf(loaderPath("no_version.comp")), Diagnostic::MissingVersion);
+  EXPECT_EQ(idOf(loaderPath("not_there.comp")), Diagnostic::ShaderFileNotFound);
+  EXPECT_EQ(idOf(loaderPath("lib")), Diagnostic::ShaderFileNotFound);  // a folder
 }
 
 // Spacing around '#', trailing comments, CRLF endings; and lookalikes that are not includes.

@@ -15,7 +15,7 @@
 namespace prism::harness {
 namespace {
 
-constexpr int kSingleFrames = 32;  // a moving strategy's single frames, each alone, averaged
+constexpr int kMovingStrategyFrames = 32;  // a moving strategy's single frames, each alone, averaged
 
 FitError errors(const WavelengthSampler& sampler, int frames, const Spectrum& light,
                 const std::vector<Spectrum>& reflectances, const Observer& obs) {
@@ -75,7 +75,7 @@ WavelengthReport wavelengthReport(const Scene& scene, const render::FrameSetting
     };
     add("optimised", optimised, 1);
     add("uniform", uniformSampler, 1);
-    add(fmt::format("lights (mean of {} single frames)", kSingleFrames), lightsSampler, kSingleFrames);
+    add(fmt::format("lights (mean of {} single frames)", kMovingStrategyFrames), lightsSampler, kMovingStrategyFrames);
     report.lights.push_back(std::move(l));
   }
   return report;

@@ -15,15 +15,10 @@
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_cache.h"
+#include "spectral/table_test_support.h"
 
 namespace prism::render {
 namespace {
-
-const RgbToSpectrumTable& table() {
-  // Resolution does not matter to most of these checks: the 16³ table the srgb_table fixture caches.
-  static const RgbToSpectrumTable t = cachedRgbToSpectrumTable("srgb", 16);
-  return t;
-}
 
 // Built once per build folder (PRISM_CACHE_DIR): RGB and spectral agree under the gamut's white
 // only as well as the table reproduces its colours.
@@ -66,7 +61,7 @@ struct UpFacing {
 };
 
 glm::vec3 shadeOnce(const Scene& scene, const FrameSettings& settings, const UpFacing& p,
-                    const RgbToSpectrumTable& lut = table()) {
+                    const RgbToSpectrumTable& lut = cachedTestTable()) {
   FrameData frame = buildFrameData(scene, settings, frameContext(settings, scene, lut), lut, {}, 0,
                                    cameraTransform(scene.camera, settings.width, settings.height));
   CpuShading shading(frame, lut, {});

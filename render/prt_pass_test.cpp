@@ -17,19 +17,14 @@
 #include "gpu/headless_context.h"
 #include "gpu/texture.h"
 #include "scene/scene_loader.h"
-#include "spectral/rgb_to_spectrum_cache.h"
+#include "spectral/table_test_support.h"
 #include "techniques/prt/gpu/prt_pass.h"
 #include "techniques/prt/prt_section.h"
 
 namespace prism::render {
 namespace {
 
-const std::filesystem::path kScenes = PRISM_SCENES_DIR;
-
-const RgbToSpectrumTable& table() {
-  static const RgbToSpectrumTable t = cachedRgbToSpectrumTable("srgb", 16);
-  return t;
-}
+const std::filesystem::path kExampleScenes = PRISM_SCENES_DIR;
 
 struct Hit {
   std::size_t triangle = 0;
@@ -93,7 +88,7 @@ class PrtGpuCpuParity : public testing::TestWithParam<PrtParityCase> {};
 
 TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSums) {
   gpu::HeadlessContext context;
-  Scene scene = loadScene(kScenes / "prt_metamers.json");
+  Scene scene = loadScene(kExampleScenes / "prt_metamers.json");
   scene.techniques.find<prt::PrtSection>()->mode = GetParam().mode;
   FrameSettings settings;
   settings.width = 160;
@@ -101,7 +96,7 @@ TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSums) {
   settings.mode = GetParam().frameMode;
   settings.shadowMapSize = 256;
   settings.display.dither = false;
-  Renderer renderer(scene, table(), settings);
+  Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   const TechniquePass* pass = renderer.techniquePass(prt::PrtSection::kKey);
   ASSERT_TRUE(pass);

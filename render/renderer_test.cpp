@@ -23,20 +23,13 @@
 #include "core/error.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
-#include "spectral/rgb_to_spectrum_cache.h"
+#include "spectral/table_test_support.h"
 
 namespace prism::render {
 namespace {
 
 const std::filesystem::path kScenes = PRISM_SCENES_DIR;
 const std::filesystem::path kGolden = std::filesystem::path(PRISM_RENDER_TEST_DIR) / "golden";
-
-const RgbToSpectrumTable& table() {
-  // The arithmetic under test does not depend on the resolution: the 16³ table the srgb_table
-  // fixture caches.
-  static const RgbToSpectrumTable t = cachedRgbToSpectrumTable("srgb", 16);
-  return t;
-}
 
 FrameSettings smallFrame(RenderMode mode, int wavelengths = 16) {
   FrameSettings s;
@@ -79,7 +72,7 @@ TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {
   FrameSettings settings = smallFrame(GetParam().mode);
   settings.gbufferAlbedo = GetParam().albedo;
   settings.sampling.strategy = GetParam().strategy;
-  Renderer renderer(scene, table(), settings);
+  Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
 
   const int w = settings.width, h = settings.height;
@@ -94,7 +87,7 @@ TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {
   for (const ShadowView& view : renderer.shadowViews()) {
     shadowLayers.push_back(gpu::readTextureLayerFloat(renderer.shadowMaps(), view.layer));
   }
-  CpuShading cpu(renderer.frameData(), table(), std::move(shadowLayers), readTexels(renderer));
+  CpuShading cpu(renderer.frameData(), cachedTestTable(), std::move(shadowLayers), readTexels(renderer));
 
   std::mt19937 rng(4);
   std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
@@ -190,7 +183,7 @@ TEST_P(Golden, FrameStaysWithinDeltaE2000OfItsGolden) {
   Scene scene = loadScene(kScenes / GetParam().scene);
   FrameSettings settings = smallFrame(GetParam().mode);
   settings.display.dither = false;
-  Renderer renderer(scene, table(), settings);
+  Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   imaging::PngImage image = displayImage(renderer, settings);
   std::string name = std::filesystem::path(GetParam().scene).stem().string() + "_" +
@@ -246,7 +239,7 @@ TEST(Renderer, PostPassMatchesItsCpuTwin) {
   Scene scene = loadScene(kScenes / "spheres_blue_led.json");
   FrameSettings settings = smallFrame(RenderMode::JakobHanika);
   settings.display.dither = false;
-  Renderer renderer(scene, table(), settings);
+  Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   std::vector<std::uint8_t> gpu = renderer.readDisplayRgba8();
   std::vector<float> tristimulus = renderer.readMeanTristimulus();
@@ -271,7 +264,7 @@ TEST(Renderer, StratifiedAccumulationConvergesToTheReference) {
   FrameSettings reference = smallFrame(RenderMode::Reference);
   FrameSettings stratified = smallFrame(RenderMode::JakobHanika, 4);
   stratified.sampling.strategy = SamplingStrategy::Stratified;
-  Renderer renderer(scene, table(), reference);
+  Renderer renderer(scene, cachedTestTable(), reference);
   renderer.renderFrame();
   std::vector<float> truth = renderer.readMeanTristimulus();
   renderer.setSettings(stratified);
@@ -293,7 +286,7 @@ TEST(Renderer, LightsStrategyGetsTheNarrowLedRightInOneFrame) {
   // lights 0.0007.
   gpu::HeadlessContext context;
   Scene scene = loadScene(kScenes / "spheres_blue_led.json");
-  Renderer renderer(scene, table(), smallFrame(RenderMode::Reference));
+  Renderer renderer(scene, cachedTestTable(), smallFrame(RenderMode::Reference));
   renderer.renderFrame();
   std::vector<float> truth = renderer.readMeanTristimulus();
   auto oneFrame = [&](SamplingStrategy strategy) {
@@ -323,7 +316,7 @@ TEST(Renderer, LightsStrategyFollowsTheLightsWhenTheSceneChanges) {
   Scene scene = loadScene(kScenes / "spheres_blue_led.json");
   FrameSettings settings = smallFrame(RenderMode::JakobHanika, 16);
   settings.sampling.strategy = SamplingStrategy::Lights;
-  Renderer renderer(scene, table(), settings);
+  Renderer renderer(scene, cachedTestTable(), settings);
   auto near = [&](double peakNm) {
     renderer.renderFrame();
     int count = 0;
@@ -343,7 +336,7 @@ TEST(Renderer, ForwardPassAddsLightGizmosWhereTheGBufferDoesNotHideThem) {
   Scene scene = loadScene(kScenes / "textured_gltf.json");
   scene.lights[0].position = {0.0f, 0.8f, 0.8f};  // the spot light, moved into view
   FrameSettings settings = smallFrame(RenderMode::JakobHanika);
-  Renderer renderer(scene, table(), settings);
+  Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   std::vector<float> without = renderer.readMeanTristimulus();
   settings.lightGizmos = true;
@@ -365,7 +358,7 @@ TEST(Renderer, ForwardPassAddsLightGizmosWhereTheGBufferDoesNotHideThem) {
 
   // Under the floor, the G-buffer's copied depth hides it entirely.
   scene.lights[0].position = {0.0f, -0.3f, 0.0f};
-  Renderer hidden(scene, table(), settings);
+  Renderer hidden(scene, cachedTestTable(), settings);
   hidden.renderFrame();
   std::vector<float> withHidden = hidden.readMeanTristimulus();
   settings.lightGizmos = false;
@@ -377,7 +370,7 @@ TEST(Renderer, ForwardPassAddsLightGizmosWhereTheGBufferDoesNotHideThem) {
 TEST(Renderer, SettingsChangeWithoutRestartAndRestartAccumulation) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kScenes / "spheres_d65.json");
-  Renderer renderer(scene, table(), smallFrame(RenderMode::Rgb));
+  Renderer renderer(scene, cachedTestTable(), smallFrame(RenderMode::Rgb));
   renderer.renderFrame();
   renderer.renderFrame();
   EXPECT_EQ(renderer.accumulatedFrames(), 2);
@@ -409,10 +402,10 @@ TEST(Renderer, GpuMemoryCountsWhatItHolds) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kScenes / "spheres_d65.json");
   FrameSettings settings = smallFrame(RenderMode::JakobHanika, 16);
-  Renderer renderer(scene, table(), settings);
+  Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   const std::size_t rgbAlbedo = renderer.gpuMemoryBytes();
-  const auto res = static_cast<std::size_t>(table().resolution());
+  const auto res = static_cast<std::size_t>(cachedTestTable().resolution());
   EXPECT_GT(rgbAlbedo, res * res * 3 * res * 12) << "the RGB32F upsampling table alone is this big";
   // The coefficients G-buffer adds one RGBA32F target: 16 bytes a pixel, nothing else.
   settings.gbufferAlbedo = GBufferAlbedo::Coefficients;
@@ -426,7 +419,7 @@ TEST(Renderer, GBufferCoefficientsRenderWhatTheRgbAlbedoRenders) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kScenes / "textured_gltf.json");
   FrameSettings settings = smallFrame(RenderMode::JakobHanika);
-  Renderer renderer(scene, table(), settings);
+  Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   std::vector<float> fromRgb = renderer.readMeanTristimulus();
   settings.gbufferAlbedo = GBufferAlbedo::Coefficients;

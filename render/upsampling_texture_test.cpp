@@ -14,7 +14,7 @@
 #include "gpu/program.h"
 #include "shared_cpp.h"
 #include "core/data_files.h"
-#include "spectral/rgb_to_spectrum_cache.h"
+#include "spectral/table_test_support.h"
 
 namespace prism::shared {
 #include "sigmoid.glsl"
@@ -34,8 +34,7 @@ float reflectanceDifference(const glm::vec3& a, const glm::vec3& b) {
 
 TEST(UpsamplingTexture, GpuLookupsMatchTheCpu) {
   gpu::HeadlessContext context;
-  // Resolution does not change the arithmetic under test: the 16³ table the srgb_table fixture caches.
-  RgbToSpectrumTable table = cachedRgbToSpectrumTable("srgb", 16);
+  const RgbToSpectrumTable& table = cachedTestTable();
   gpu::Texture3D texture = uploadUpsamplingTable(table);
 
   std::mt19937 rng(17);

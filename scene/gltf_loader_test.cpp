@@ -13,7 +13,7 @@ namespace prism {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kFixtures = PRISM_SCENE_TEST_DIR;
+const fs::path kGltfFixtures = PRISM_SCENE_TEST_DIR;
 
 // Float positions through a few matrix products: a few ulps of the coordinates (≈ 10).
 constexpr float kTolerance = 1e-5f;
@@ -28,7 +28,7 @@ void expectNear(const glm::vec3& a, const glm::vec3& b, float tolerance = kToler
 // by 2; the mesh is a unit quad in the xy plane facing +z (uv (0, 0) at its top-left).
 TEST(GltfLoader, NodeTransformsApplyToPositionsNormalsAndTangents) {
   Scene scene;
-  appendGltf(kFixtures / "quad.gltf", kFixtures, {}, scene);
+  appendGltf(kGltfFixtures / "quad.gltf", kGltfFixtures, {}, scene);
   ASSERT_EQ(scene.meshes.size(), 2u);
   const Mesh& quad = scene.meshes[0];
   ASSERT_EQ(quad.vertices.size(), 4u);
@@ -50,7 +50,7 @@ TEST(GltfLoader, PlacementAppliesAfterTheNodeTransforms) {
   Scene scene;
   GltfPlacement placement;
   placement.transform = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 10.0f)), glm::vec3(-1.0f, 1.0f, 1.0f));
-  appendGltf(kFixtures / "quad.gltf", kFixtures, placement, scene);
+  appendGltf(kGltfFixtures / "quad.gltf", kGltfFixtures, placement, scene);
   const Mesh& quad = scene.meshes[0];
   expectNear(quad.vertices[1].position, {-1.0f, 1.0f, 12.0f});
   // A mirror: the winding is reversed so that the faces still look toward the normal.
@@ -63,7 +63,7 @@ TEST(GltfLoader, PlacementAppliesAfterTheNodeTransforms) {
 
 TEST(GltfLoader, MissingNormalsAreFlatAndMissingMaterialIsTheDefault) {
   Scene scene;
-  appendGltf(kFixtures / "quad.gltf", kFixtures, {}, scene);
+  appendGltf(kGltfFixtures / "quad.gltf", kGltfFixtures, {}, scene);
   const Mesh& tri = scene.meshes[1];  // POSITION only, unsigned-byte indices, no material
   ASSERT_EQ(tri.vertices.size(), 3u);
   for (const Vertex& v : tri.vertices) expectNear(v.normal, {1.0f, 0.0f, 0.0f});
@@ -77,7 +77,7 @@ TEST(GltfLoader, MissingNormalsAreFlatAndMissingMaterialIsTheDefault) {
 TEST(GltfLoader, MaterialFactorsAndTextures) {
   Scene scene;
   scene.textures.resize(1);  // indices are offset past what the scene already holds
-  appendGltf(kFixtures / "quad.gltf", kFixtures, {}, scene);
+  appendGltf(kGltfFixtures / "quad.gltf", kGltfFixtures, {}, scene);
   const Material& m = scene.materials[0];
   EXPECT_EQ(m.name, "quad.gltf/tiles");
   EXPECT_EQ(m.baseColour, glm::vec3(0.5f, 0.25f, 1.0f));
@@ -99,7 +99,7 @@ TEST(GltfLoader, MaterialFactorsAndTextures) {
 TEST(GltfLoader, BinaryGltfWithMatrixNode) {
   Scene scene;
   scene.materials.resize(3);
-  appendGltf(kFixtures / "triangle.glb", kFixtures, {glm::mat4(1.0f), 2}, scene);
+  appendGltf(kGltfFixtures / "triangle.glb", kGltfFixtures, {glm::mat4(1.0f), 2}, scene);
   ASSERT_EQ(scene.meshes.size(), 1u);
   EXPECT_EQ(scene.meshes[0].material, 2);
   EXPECT_EQ(scene.materials.size(), 3u);  // overridden: none added

@@ -6,16 +6,10 @@
 
 #include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
-#include "spectral/rgb_to_spectrum_cache.h"
+#include "spectral/table_test_support.h"
 
 namespace prism {
 namespace {
-
-const RgbToSpectrumTable& table() {
-  // Only the background's white is looked up: the coarse 16³ table the srgb_table fixture caches.
-  static const RgbToSpectrumTable t = cachedRgbToSpectrumTable("srgb", 16);
-  return t;
-}
 
 Light light(LightType type, const char* spd, float intensity) {
   Light l;
@@ -31,13 +25,13 @@ TEST(SceneEmission, SumsTheLightsByIntensityAndTheBackgroundAsTheIlluminanceItGi
   Scene scene;
   scene.lights.push_back(light(LightType::Directional, "D65", 1000.0f));
   scene.lights.push_back(light(LightType::Point, "A", 50.0f));
-  EXPECT_NEAR(luminousIntegral(sceneEmission(scene, colourSpace("srgb"), table())) / 1050.0, 1.0, 1e-9);
-  Spectrum lightsOnly = sceneEmission(scene, colourSpace("srgb"), table());
+  EXPECT_NEAR(luminousIntegral(sceneEmission(scene, colourSpace("srgb"), cachedTestTable())) / 1050.0, 1.0, 1e-9);
+  Spectrum lightsOnly = sceneEmission(scene, colourSpace("srgb"), cachedTestTable());
   EXPECT_DOUBLE_EQ(lightsOnly.at(450.0), 1000.0 * scene.lights[0].spd.at(450.0) + 50.0 * scene.lights[1].spd.at(450.0));
   scene.background = glm::vec3(1.0f);
   scene.backgroundLuminance = 100.0f;
   // The white background is the colour space's white (D65) through the table's fit of (1, 1, 1).
-  EXPECT_NEAR(luminousIntegral(sceneEmission(scene, colourSpace("srgb"), table())) / (1050.0 + 100.0 * std::numbers::pi), 1.0, 1e-3);
+  EXPECT_NEAR(luminousIntegral(sceneEmission(scene, colourSpace("srgb"), cachedTestTable())) / (1050.0 + 100.0 * std::numbers::pi), 1.0, 1e-3);
 }
 
 // The Optimised strategy's training set: each distinct light SPD once (two D65 lights are one),
@@ -49,15 +43,15 @@ TEST(SceneEmission, TheWavelengthFitTrainsOnTheDistinctLightsAndTheScenesSurface
   scene.lights.push_back(light(LightType::Point, "F11", 50.0f));
   scene.materials.resize(2);
   const SamplingSettings settings{8, 380, 780, SamplingStrategy::Optimised};
-  const WavelengthFitProblem problem = sceneWavelengthFitProblem(settings, scene, colourSpace("srgb"), table());
+  const WavelengthFitProblem problem = sceneWavelengthFitProblem(settings, scene, colourSpace("srgb"), cachedTestTable());
   ASSERT_EQ(problem.lights.size(), 2u);
   EXPECT_TRUE(problem.lights[0] == scene.lights[0].spd);
   EXPECT_TRUE(problem.lights[1] == scene.lights[2].spd);
-  EXPECT_EQ(problem.reflectances.size(), standardTrainingReflectances(table()).size() + 2);
+  EXPECT_EQ(problem.reflectances.size(), standardTrainingReflectances(cachedTestTable()).size() + 2);
   EXPECT_EQ(problem.count, 8);
   EXPECT_EQ(problem.minNm, 380.0);
   scene.lights.clear();
-  const WavelengthFitProblem dark = sceneWavelengthFitProblem(settings, scene, colourSpace("srgb"), table());
+  const WavelengthFitProblem dark = sceneWavelengthFitProblem(settings, scene, colourSpace("srgb"), cachedTestTable());
   ASSERT_EQ(dark.lights.size(), 1u);
   EXPECT_TRUE(dark.lights[0] == Spectrum::constant(1.0));
 }
@@ -66,13 +60,13 @@ TEST(SceneEmission, OnlyTheLightsStrategyFollowsIt) {
   Scene scene;
   scene.lights.push_back(light(LightType::Directional, "led:450:20", 1000.0f));
   const Observer& cie = observer("cie1931");
-  WavelengthSampler lights = sceneWavelengthSampler({16, 360, 830, SamplingStrategy::Lights}, cie, scene, colourSpace("srgb"), table());
+  WavelengthSampler lights = sceneWavelengthSampler({16, 360, 830, SamplingStrategy::Lights}, cie, scene, colourSpace("srgb"), cachedTestTable());
   WavelengthSampler importance =
-      sceneWavelengthSampler({16, 360, 830, SamplingStrategy::Importance}, cie, scene, colourSpace("srgb"), table());
+      sceneWavelengthSampler({16, 360, 830, SamplingStrategy::Importance}, cie, scene, colourSpace("srgb"), cachedTestTable());
   ASSERT_NE(lights.pdf(), nullptr);
   ASSERT_NE(importance.pdf(), nullptr);
   EXPECT_GT(lights.pdf()->density(450.5), 4.0 * importance.pdf()->density(450.5));
-  EXPECT_EQ(sceneWavelengthSampler({16, 360, 830, SamplingStrategy::Rotated}, cie, scene, colourSpace("srgb"), table()).pdf(), nullptr);
+  EXPECT_EQ(sceneWavelengthSampler({16, 360, 830, SamplingStrategy::Rotated}, cie, scene, colourSpace("srgb"), cachedTestTable()).pdf(), nullptr);
 }
 
 }  // namespace

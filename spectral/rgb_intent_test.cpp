@@ -5,18 +5,14 @@
 #include <cmath>
 
 #include "spectral/observer.h"
-#include "spectral/rgb_to_spectrum_optimiser.h"
 #include "spectral/sigmoid_fit.h"
+#include "spectral/table_test_support.h"
 
 namespace prism {
 namespace {
 
-// Structure, and the albedo's colour, are checked against a small table; the unbounded and
+// Structure, and the albedo's colour, are checked against the small table; the unbounded and
 // illuminant colours against exact fits (CIE76 residual below 1e-5 under the space's white).
-const RgbToSpectrumTable& smallTable() {
-  static const RgbToSpectrumTable table = buildRgbToSpectrumTable({"srgb", 12, 2, {}});
-  return table;
-}
 
 // XYZ of a reflectance lit by the space's white (white Y = 1).
 Eigen::Vector3d litXyz(const Spectrum& reflectance, const RgbColourSpace& space) {
@@ -28,7 +24,7 @@ Eigen::Vector3d rgbXyz(const RgbColourSpace& space, const glm::vec3& rgb) {
 }
 
 TEST(RgbAlbedoSpectrum, IsTheTablesReflectanceOfTheClampedColour) {
-  const RgbToSpectrumTable& t = smallTable();
+  const RgbToSpectrumTable& t = smallSrgbTable();
   RgbAlbedoSpectrum albedo(t, glm::vec3(2.0f, 0.5f, -1.0f));
   EXPECT_EQ(albedo.coefficients(), t.lookup(glm::vec3(1.0f, 0.5f, 0.0f)));
   Spectrum r = albedo.toDense();
@@ -42,14 +38,14 @@ TEST(RgbAlbedoSpectrum, ReproducesTheColourUnderTheSpacesWhite) {
   // A 12³ table interpolates between fitted nodes: 1.6 % of the colour's XYZ at worst here.
   const RgbColourSpace& srgb = colourSpace("srgb");
   for (glm::vec3 rgb : {glm::vec3(0.8f, 0.2f, 0.1f), glm::vec3(0.1f, 0.5f, 0.3f), glm::vec3(0.5f)}) {
-    Eigen::Vector3d got = litXyz(RgbAlbedoSpectrum(smallTable(), rgb).toDense(), srgb);
+    Eigen::Vector3d got = litXyz(RgbAlbedoSpectrum(smallSrgbTable(), rgb).toDense(), srgb);
     Eigen::Vector3d want = rgbXyz(srgb, rgb);
     EXPECT_LT((got - want).norm(), 0.02 * want.norm()) << rgb.r << " " << rgb.g << " " << rgb.b;
   }
 }
 
 TEST(RgbUnboundedSpectrum, IsTwiceTheMaximumTimesTheReflectanceOfTheScaledColour) {
-  const RgbToSpectrumTable& t = smallTable();
+  const RgbToSpectrumTable& t = smallSrgbTable();
   RgbUnboundedSpectrum u(t, glm::vec3(2.0f, 1.0f, 0.5f));
   EXPECT_FLOAT_EQ(u.scale(), 4.0f);
   EXPECT_EQ(u.coefficients(), t.lookup(glm::vec3(0.5f, 0.25f, 0.125f)));
@@ -62,7 +58,7 @@ TEST(RgbUnboundedSpectrum, IsTwiceTheMaximumTimesTheReflectanceOfTheScaledColour
 }
 
 TEST(RgbUnboundedSpectrum, BlackAndUnusableChannelsGiveZeroNeverNaN) {
-  const RgbToSpectrumTable& t = smallTable();
+  const RgbToSpectrumTable& t = smallSrgbTable();
   EXPECT_EQ(RgbUnboundedSpectrum(t, glm::vec3(0.0f)).scale(), 0.0f);
   RgbUnboundedSpectrum bad(t, glm::vec3(NAN, INFINITY, -3.0f));
   EXPECT_EQ(bad.scale(), 0.0f);
@@ -116,7 +112,7 @@ TEST(RgbIlluminantSpectrum, WhiteIsTheSpacesWhiteIlluminant) {
 
 TEST(RgbIlluminantSpectrum, PointValuesAreTheDenseSpectrumInFloat) {
   const RgbColourSpace& srgb = colourSpace("srgb");
-  RgbIlluminantSpectrum s(smallTable(), srgb, glm::vec3(0.9f, 0.5f, 0.1f), 3000.0);
+  RgbIlluminantSpectrum s(smallSrgbTable(), srgb, glm::vec3(0.9f, 0.5f, 0.1f), 3000.0);
   Spectrum dense = s.toDense();
   for (int i = 0; i < kSpectrumSamples; i += 7) {
     double lambda = kLambdaMinNm + i;

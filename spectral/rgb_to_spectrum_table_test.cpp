@@ -11,6 +11,7 @@
 #include "shared_cpp.h"
 #include "core/error.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
+#include "spectral/table_test_support.h"
 
 namespace prism::shared {
 #include "sigmoid.glsl"
@@ -19,13 +20,6 @@ namespace prism::shared {
 
 namespace prism {
 namespace {
-
-// A small table is enough to exercise layout, format and lookup; quality is tested at 64³ in
-// rgb_to_spectrum_quality_test.cpp.
-const RgbToSpectrumTable& smallTable() {
-  static const RgbToSpectrumTable table = buildRgbToSpectrumTable({"srgb", 12, 2, {}});
-  return table;
-}
 
 std::filesystem::path tempPath(const std::string& name) {
   return std::filesystem::path(::testing::TempDir()) / name;
@@ -51,16 +45,16 @@ std::string loadError(const std::filesystem::path& p) {
 
 TEST(RgbToSpectrumTable, SavesAndLoadsExactly) {
   auto p = tempPath("roundtrip.prismlut");
-  smallTable().save(p);
+  smallSrgbTable().save(p);
   RgbToSpectrumTable loaded = RgbToSpectrumTable::load(p);
   EXPECT_EQ(loaded.gamut(), "srgb");
   EXPECT_EQ(loaded.resolution(), 12);
-  EXPECT_TRUE(std::equal(loaded.data().begin(), loaded.data().end(), smallTable().data().begin()));
+  EXPECT_TRUE(std::equal(loaded.data().begin(), loaded.data().end(), smallSrgbTable().data().begin()));
 }
 
 TEST(RgbToSpectrumTable, RejectsTruncatedAndCorruptFiles) {
   auto good = tempPath("good.prismlut");
-  smallTable().save(good);
+  smallSrgbTable().save(good);
   std::string bytes = readBytes(good);
   auto bad = tempPath("bad.prismlut");
 
@@ -102,7 +96,7 @@ TEST(RgbToSpectrumTable, OutputDoesNotDependOnThreadCount) {
 }
 
 TEST(RgbToSpectrumTable, LookupsReturnNodeCoefficientsAtNodes) {
-  const RgbToSpectrumTable& t = smallTable();
+  const RgbToSpectrumTable& t = smallSrgbTable();
   for (int block = 0; block < 3; ++block)
     for (int zi = 1; zi < t.resolution(); zi += 3)
       for (int yi = 0; yi < t.resolution(); yi += 5)
@@ -135,7 +129,7 @@ TEST(RgbToSpectrumTable, AnalyticBrightnessIndexEqualsASearchOfTheNodes) {
 }
 
 TEST(RgbToSpectrumTable, NonFiniteAndOutOfRangeAlbedosAreSanitised) {
-  const RgbToSpectrumTable& t = smallTable();
+  const RgbToSpectrumTable& t = smallSrgbTable();
   glm::vec3 clamped = t.lookup(glm::vec3(1.0f, 0.0f, 0.25f));
   for (glm::vec3 rgb : {glm::vec3(NAN, 0.5f, 0.2f), glm::vec3(INFINITY, -INFINITY, 0.25f),
                         glm::vec3(3.0f, -1.0f, 0.25f)}) {
@@ -149,7 +143,7 @@ TEST(RgbToSpectrumTable, NonFiniteAndOutOfRangeAlbedosAreSanitised) {
 TEST(RgbToSpectrumTable, TailsBeyondTheConstrainedBandStayFlat) {
   // The raw polynomial is unconstrained beyond 730 nm and climbs for some colours; Prism's
   // upsampled reflectance holds its 730 nm value there (and its 380 nm value below).
-  const RgbToSpectrumTable& t = smallTable();
+  const RgbToSpectrumTable& t = smallSrgbTable();
   float worstRawRise = 0.0f;
   for (int block = 0; block < 3; ++block)
     for (int zi = 0; zi < t.resolution(); ++zi)

@@ -3,6 +3,9 @@
 // S(x) = ½ + x / (2·√(1 + x²)). The coefficients act on λ in nanometres. S maps ℝ onto (0, 1),
 // so every such spectrum is a valid reflectance. Beyond |x| = 1e9 (S within 3e-19 of its
 // limit) S is taken to 0 or 1: past ~1.8e19 x·x overflows, which gave ½ (or the NaN of ∞/∞).
+// Guarded: sources that a unity build merges into one translation unit may each include it.
+#ifndef PRISM_SIGMOID_GLSL
+#define PRISM_SIGMOID_GLSL
 
 PRISM_INLINE float sigmoid(float x) {
   if (abs(x) > 1e9f) return x > 0.0f ? 1.0f : 0.0f;
@@ -43,3 +46,5 @@ PRISM_INLINE float sigmoidDerivative(float x) {
   float s = 1.0f + x * x;
   return 0.5f / (s * sqrt(s));
 }
+
+#endif  // PRISM_SIGMOID_GLSL

@@ -206,7 +206,7 @@ int main(int argc, char** argv) {
   prtReportCmd->add_option("input", prtReport.input, "a scene (.json) or glTF model instead of the ColorChecker height field");
   prtReportCmd->add_option("--illuminant", prtReport.illuminant, "illuminant of the environment")->capture_default_str();
   prtReportCmd->add_option("--environment", prtReport.environment, "sky (overcast gradient) or uniform")->capture_default_str();
-  prtReportCmd->add_option("--exr", prtReport.exr, "an equirectangular linear-sRGB EXR instead (row 0 at the zenith)");
+  prtReportCmd->add_option("--map,--exr", prtReport.exr, "an equirectangular map instead, row 0 at the zenith: linear-sRGB EXR or Radiance .hdr");
   std::string prtRotate;
   prtReportCmd->add_option("--rotate", prtRotate, "X,Y,Z,DEGREES: turn the environment (SH rotation, no re-projection)");
   prtReportCmd->add_option("--patch-vertices", prtReport.patchVertices, "vertices along each side of a patch")->capture_default_str();

@@ -15,7 +15,7 @@
 #include "core/error.h"
 #include "harness/progress_bar.h"
 #include "harness/prt_plot.h"
-#include "imaging/exr_file.h"
+#include "imaging/float_image.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
@@ -23,6 +23,7 @@
 #include "spectral/rgb_to_spectrum_cache.h"
 #include "techniques/prt/metamer.h"
 #include "techniques/prt/prt_evaluation.h"
+#include "techniques/prt/prt_section.h"
 
 namespace prism::app {
 namespace {
@@ -140,20 +141,16 @@ void runPrtReport(const PrtReportOptions& o) {
   Spectrum spd = illuminant(o.illuminant);
   prt::SpectralEnvironment environment;
   if (!o.exr.empty()) {
-    imaging::ExrImage map = imaging::readExr(o.exr);
-    if (map.colour != imaging::ColourMeaning::LinearSrgb || map.image.channels < 3)
-      throw Error(o.exr + ": an environment map must be linear sRGB (Rec. 709, D65) RGB, not " +
-                  std::string(imaging::colourMeaningName(map.colour)) + " with " + std::to_string(map.image.channels) +
-                  " channel(s)");
+    imaging::FloatImage map = prt::readEnvironmentMap(o.exr);
     std::vector<float> rgb;
-    rgb.reserve(3 * map.image.pixelCount());
-    for (int y = 0; y < map.image.height; ++y)
-      for (int x = 0; x < map.image.width; ++x)
-        for (int c = 0; c < 3; ++c) rgb.push_back(map.image.at(x, y, c));
+    rgb.reserve(3 * map.pixelCount());
+    for (int y = 0; y < map.height; ++y)
+      for (int x = 0; x < map.width; ++x)
+        for (int c = 0; c < 3; ++c) rgb.push_back(map.at(x, y, c));
     harness::ProgressBar bar("RGB → spectrum table (first use)");
     const RgbToSpectrumTable& table =
         rendererRgbToSpectrumTable("srgb", [&bar](std::size_t done, std::size_t total) { bar.update(done, total); });
-    environment = prt::equirectangularEnvironment(o.exr, map.image.width, map.image.height, rgb,
+    environment = prt::equirectangularEnvironment(o.exr, map.width, map.height, rgb,
                                                   [&table](const glm::vec3& c) { return RgbUnboundedSpectrum(table, c).toDense(); });
   } else if (o.environment == "sky") {
     environment = prt::skyGradientEnvironment(o.illuminant + " sky", spd);

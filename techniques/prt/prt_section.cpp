@@ -1,5 +1,7 @@
 #include "techniques/prt/prt_section.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -7,6 +9,7 @@
 
 #include "core/error.h"
 #include "imaging/exr_file.h"
+#include "imaging/radiance_hdr.h"
 #include "spectral/illuminant.h"
 #include "spectral/rgb_intent.h"
 
@@ -25,17 +28,14 @@ std::shared_ptr<const PrtMap> readMap(const schema::Node& n) {
   auto map = std::make_shared<PrtMap>();
   try {
     map->file = schema::confinedFile(folder, folder, n.string());
-    imaging::ExrImage exr = imaging::readExr(map->file);
-    if (exr.colour != imaging::ColourMeaning::LinearSrgb || exr.image.channels < 3)
-      throw Error(fmt::format("an environment map must be linear sRGB (Rec. 709, D65) RGB, not {} with {} channel(s)",
-                              imaging::colourMeaningName(exr.colour), exr.image.channels));
-    map->width = exr.image.width;
-    map->height = exr.image.height;
-    map->linearRgb.reserve(3 * exr.image.pixelCount());
-    for (int y = 0; y < exr.image.height; ++y) {
-      for (int x = 0; x < exr.image.width; ++x) {
+    imaging::FloatImage image = readEnvironmentMap(map->file);
+    map->width = image.width;
+    map->height = image.height;
+    map->linearRgb.reserve(3 * image.pixelCount());
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x) {
         for (int c = 0; c < 3; ++c) {
-          float v = exr.image.at(x, y, c);
+          float v = image.at(x, y, c);
           if (!std::isfinite(v) || v < 0.0f)
             throw Error(fmt::format("texel ({}, {}): channel {} is {}, not a finite non-negative radiance", x, y, c, v));
           map->linearRgb.push_back(v);
@@ -49,6 +49,18 @@ std::shared_ptr<const PrtMap> readMap(const schema::Node& n) {
 }
 
 }  // namespace
+
+imaging::FloatImage readEnvironmentMap(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".hdr") return imaging::readRadianceHdr(file);
+  imaging::ExrImage exr = imaging::readExr(file);
+  if (exr.colour != imaging::ColourMeaning::LinearSrgb || exr.image.channels < 3)
+    throw Error(fmt::format("{}: an environment map must be linear sRGB (Rec. 709, D65) RGB, not {} with {} channel(s)",
+                            file.string(), imaging::colourMeaningName(exr.colour), exr.image.channels));
+  return std::move(exr.image);
+}
 
 std::string_view prtModeName(PrtMode mode) {
   switch (mode) {

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "imaging/float_image.h"
 #include "spectral/rgb_to_spectrum_table.h"
 #include "techniques/prt/prt_evaluation.h"
 #include "techniques/technique_section.h"
@@ -55,6 +56,11 @@ struct PrtSection final : TechniqueSection {
 
   static std::unique_ptr<TechniqueSection> parse(const schema::Node& node, const TechniqueSections& earlier);
 };
+
+// An equirectangular environment map as linear sRGB, row 0 at the zenith: a Radiance .hdr (by
+// its extension; the format names no primaries, and maps for rendering are made in these) or an
+// OpenEXR file whose colour is linear sRGB. Error "FILE: …" on one line otherwise.
+imaging::FloatImage readEnvironmentMap(const std::filesystem::path& file);
 
 // The section's environment, z-up (PRT's convention), turned by rotationDeg about the zenith and
 // scaled to its luminance; srgbTable upsamples a map's texels (the unbounded intent).

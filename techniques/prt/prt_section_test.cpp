@@ -1,0 +1,60 @@
+// The section's environment maps as files: a Radiance .hdr and an OpenEXR of the same texels are
+// the same map; anything but linear sRGB is refused, naming the file.
+#include "techniques/prt/prt_section.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <string>
+
+#include "core/error_test_support.h"
+#include "imaging/exr_file.h"
+#include "imaging/radiance_hdr.h"
+
+namespace prism::prt {
+namespace {
+
+std::filesystem::path mapPath(const std::string& name) {
+  return std::filesystem::path(::testing::TempDir()) / (std::to_string(::getpid()) + "_" + name);
+}
+
+imaging::FloatImage skyMap() {
+  imaging::FloatImage map(32, 16, 3);
+  for (int y = 0; y < map.height; ++y)
+    for (int x = 0; x < map.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        map.at(x, y, c) = (y < 8 ? 0.6f + 0.3f * static_cast<float>(c) : 0.2f - 0.05f * static_cast<float>(c)) *
+                          (1.0f + 0.01f * static_cast<float>(x));
+  return map;
+}
+
+TEST(EnvironmentMap, HdrAndExrOfTheSameTexelsAreTheSameMap) {
+  const imaging::FloatImage map = skyMap();
+  std::filesystem::path exr = mapPath("sky.exr"), hdr = mapPath("sky.HDR");  // either case
+  imaging::writeExr(exr, map);
+  imaging::writeRadianceHdr(hdr, map);
+  imaging::FloatImage fromExr = readEnvironmentMap(exr), fromHdr = readEnvironmentMap(hdr);
+  ASSERT_EQ(fromHdr.width, map.width);
+  ASSERT_EQ(fromHdr.height, map.height);
+  EXPECT_EQ(fromExr.pixels, map.pixels);
+  for (int y = 0; y < map.height; ++y) {
+    for (int x = 0; x < map.width; ++x) {
+      float largest = std::max({map.at(x, y, 0), map.at(x, y, 1), map.at(x, y, 2)});
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(fromHdr.at(x, y, c), map.at(x, y, c), largest / 128.0f);
+    }
+  }
+  std::filesystem::remove(exr);
+  std::filesystem::remove(hdr);
+}
+
+TEST(EnvironmentMap, OnlyLinearSrgbIsAMap) {
+  std::filesystem::path xyz = mapPath("xyz.exr");
+  imaging::writeExr(xyz, skyMap(), {.colour = imaging::ColourMeaning::Xyz});
+  EXPECT_EQ(errorOf([&] { readEnvironmentMap(xyz); }),
+            xyz.string() + ": an environment map must be linear sRGB (Rec. 709, D65) RGB, not xyz with 3 channel(s)");
+  std::filesystem::remove(xyz);
+}
+
+}  // namespace
+}  // namespace prism::prt

@@ -213,7 +213,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                                          GoldenCase{"reef.json", RenderMode::JakobHanika},
                                          GoldenCase{"sunset.json", RenderMode::Optimised4},
                                          GoldenCase{"prt_macbeth.json", RenderMode::JakobHanika},
-                                         GoldenCase{"prt_metamers.json", RenderMode::JakobHanika}),
+                                         GoldenCase{"prt_metamers.json", RenderMode::JakobHanika},
+                                         GoldenCase{"prt_rock.json", RenderMode::JakobHanika}),
                          [](const testing::TestParamInfo<GoldenCase>& param) {
                            std::string name = std::filesystem::path(param.param.scene).stem().string() +
                                               "_" + std::string(renderModeName(param.param.mode));

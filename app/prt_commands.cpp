@@ -21,6 +21,7 @@
 #include "spectral/illuminant.h"
 #include "spectral/rgb_intent.h"
 #include "spectral/rgb_to_spectrum_cache.h"
+#include "techniques/prt/gpu/prt_scene_mesh.h"
 #include "techniques/prt/metamer.h"
 #include "techniques/prt/prt_evaluation.h"
 #include "techniques/prt/prt_section.h"
@@ -44,22 +45,10 @@ prt::PrtObject loadPrtObject(const std::filesystem::path& input, bool withReflec
     throw Error(input.string() + ": expected a scene (.json) or a glTF model (.gltf, .glb)");
   }
   prt::PrtObject object;
-  prt::PrtMesh& mesh = object.mesh;
-  // A scene with PRT objects: those alone, as the renderer bakes them (the same cache key).
-  const bool onlyPrt = std::ranges::any_of(scene.meshes, [](const Mesh& m) { return m.technique == "prt"; });
-  for (const Mesh& m : scene.meshes) {
-    if (onlyPrt && m.technique != "prt") continue;
-    auto base = static_cast<std::uint32_t>(mesh.positions.size());
-    for (const Vertex& v : m.vertices) {
-      // Scenes are y-up (glTF's convention); PRT's environments have their zenith at +z.
-      auto zUp = [](const glm::vec3& p) { return glm::vec3(p.x, -p.z, p.y); };
-      mesh.positions.push_back(zUp(v.position));
-      float length = glm::length(v.normal);
-      mesh.normals.push_back(length > 0.0f ? zUp(v.normal / length) : glm::vec3(0.0f, 0.0f, 1.0f));
-      object.vertexMaterial.push_back(std::max(m.material, 0));
-    }
-    for (std::uint32_t i : m.indices) mesh.indices.push_back(base + i);
-  }
+  prt::PrtSceneMesh gathered = prt::prtSceneMesh(scene, prt::PrtMeshes::PrtObjectsElseAll);
+  object.mesh = std::move(gathered.mesh);
+  object.vertexMaterial = std::move(gathered.vertexMaterial);
+  const prt::PrtMesh& mesh = object.mesh;
   if (mesh.indices.empty()) throw Error(input.string() + ": no triangles to bake");
   if (withReflectances) {
     const RgbToSpectrumTable* table = nullptr;

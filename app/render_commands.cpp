@@ -6,6 +6,7 @@
 #include "harness/display_png.h"
 #include "harness/optimised_wavelengths.h"
 #include "harness/progress_bar.h"
+#include "harness/technique_precompute.h"
 #include "harness/upsampling_table.h"
 #include "imaging/exr_file.h"
 #include "render/display_transform.h"
@@ -43,6 +44,7 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
   requireWritable(output);
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::fitOptimisedWavelengths(scene, settings, table);
+  harness::precomputeTechniques(scene);
   gpu::HeadlessContext context;
   render::Renderer renderer(scene, table, settings);
   std::optional<harness::ProgressBar> bar;

@@ -7,7 +7,9 @@
 #                                   (techniques/registry.cpp)
 #   CPU_TWIN DEFINE CLASS HEADER    its shader define and the lighting pass's CPU twin of its hooks
 #                                   (techniques/technique_cpu_twin.h; render/cpu_shading.cpp)
-#   PASS CLASS HEADER               its GPU passes, when it has any (techniques/technique_passes.cpp)
+#   PASS CLASS HEADER               its GPU passes, when it has any (techniques/technique_passes.cpp);
+#                                   the class's static precompute(), when it defines one, is called
+#                                   by precomputeTechniques (techniques/technique_pass.h)
 #   VIEWER PANEL SET HEADER SOURCE… its viewer panel's factory and its script's `set` function, the
 #                                   header declaring both and their sources (viewer/)
 function(prism_technique)
@@ -69,11 +71,14 @@ function(prism_generate_technique_sections output)
   prism_write_generated("${output}" "${text}")
 endfunction()
 
-# makeRegisteredTechniquePass(key): a new pass of the technique of that key, or null.
+# makeRegisteredTechniquePass(key): a new pass of the technique of that key, or null;
+# precomputeRegisteredTechniques(scene, progress): the precompute() of each pass class that has one,
+# for the techniques the scene has.
 function(prism_generate_technique_passes output)
   get_property(passes GLOBAL PROPERTY PRISM_TECHNIQUE_PASSES)
   set(text "${PRISM_GENERATED_NOTICE}")
   set(body "")
+  set(precompute "")
   foreach(entry IN LISTS passes)
     string(REPLACE "|" ";" fields "${entry}")
     list(GET fields 0 section)
@@ -82,9 +87,14 @@ function(prism_generate_technique_passes output)
     list(GET fields 3 header)
     string(APPEND text "#include \"${sectionHeader}\"\n#include \"${header}\"\n")
     string(APPEND body "  if (key == ${section}::kKey) return std::make_unique<${class}>();\n")
+    string(APPEND precompute "  if (scene.techniques.find<${section}>()) precomputeIfDefined<${class}>(scene, progress);\n")
   endforeach()
   string(APPEND text "\nnamespace prism {\n\ninline std::unique_ptr<TechniquePass> makeRegisteredTechniquePass(std::string_view key) {\n"
-                     "${body}  return nullptr;\n}\n\n}  // namespace prism\n")
+                     "${body}  return nullptr;\n}\n\n"
+                     "template <class Pass>\nvoid precomputeIfDefined(const Scene& scene, const TechniqueProgress& progress) {\n"
+                     "  if constexpr (requires { Pass::precompute(scene, progress); }) Pass::precompute(scene, progress);\n}\n\n"
+                     "inline void precomputeRegisteredTechniques(const Scene& scene, const TechniqueProgress& progress) {\n"
+                     "${precompute}}\n\n}  // namespace prism\n")
   prism_write_generated("${output}" "${text}")
 endfunction()
 

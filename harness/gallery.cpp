@@ -12,6 +12,7 @@
 #include "harness/display_png.h"
 #include "harness/html_report.h"
 #include "harness/progress_bar.h"
+#include "harness/technique_precompute.h"
 #include "harness/upsampling_table.h"
 #include "imaging/image_difference.h"
 #include "imaging/png_file.h"
@@ -107,6 +108,7 @@ void runGallery(const GalleryOptions& o) {
   }
   if (files.empty()) throw Error(sceneDir.string() + ": no scene files (*.json) to render");
   std::sort(files.begin(), files.end());
+  for (const std::filesystem::path& file : files) precomputeTechniques(loadScene(file));  // bars of their own
   std::filesystem::create_directories(o.output);
 
   DemoOptions chart;

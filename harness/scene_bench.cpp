@@ -15,6 +15,7 @@
 #include "harness/bench_statistics.h"
 #include "harness/progress_bar.h"
 #include "harness/optimised_wavelengths.h"
+#include "harness/technique_precompute.h"
 #include "harness/upsampling_table.h"
 #include "render/renderer.h"
 #include "render/setting_keys.h"
@@ -117,6 +118,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   const int frames = (options.frames + rounds - 1) / rounds;  // per round
   Scene scene = loadScene(options.scene);
   const RgbToSpectrumTable& table = upsamplingTable(scene);
+  precomputeTechniques(scene);
   gpu::HeadlessContext context;
   std::string device = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   render::Renderer renderer(scene, table, settings);

@@ -13,6 +13,10 @@
 #include <cstdio>
 #include <optional>
 #include <random>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
 
 #include "gpu/headless_context.h"
 #include "gpu/texture.h"
@@ -150,6 +154,46 @@ INSTANTIATE_TEST_SUITE_P(Modes, PrtGpuCpuParity,
                            std::replace(name.begin(), name.end(), '-', '_');
                            return name;
                          });
+
+// The bake ahead of the renderer (precomputeTechniques) fills the cache entry the pass then reads:
+// progress once, named, up to its total; nothing the second time, nor for a scene without PRT.
+TEST(PrtPrecompute, BakesAheadIntoTheCacheThePassReads) {
+  const std::filesystem::path cache =
+      std::filesystem::path(::testing::TempDir()) / ("prism_prt_precompute_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(cache);
+  const char* previous = std::getenv("PRISM_CACHE_DIR");
+  const std::string restore = previous ? previous : "";
+  ::setenv("PRISM_CACHE_DIR", cache.c_str(), 1);
+  Scene scene = loadScene(kExampleScenes / "prt_metamers.json");
+  std::vector<std::string> names;
+  std::size_t lastDone = 0, lastTotal = 0;
+  auto progress = [&](std::string_view what, std::size_t done, std::size_t total) {
+    if (names.empty() || names.back() != what) names.emplace_back(what);
+    lastDone = done;
+    lastTotal = total;
+  };
+  precomputeTechniques(scene, progress);
+  EXPECT_EQ(names, std::vector<std::string>{"PRT transfer bake"});
+  EXPECT_GT(lastTotal, 0u);
+  EXPECT_EQ(lastDone, lastTotal);
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(cache / "prt"), {}), 1);
+
+  names.clear();
+  precomputeTechniques(scene, progress);  // cached: no work
+  precomputeTechniques(loadScene(kExampleScenes / "spheres_d65.json"), progress);
+  EXPECT_TRUE(names.empty());
+
+  gpu::HeadlessContext context;  // the pass finds the entry: no second file, the same bytes drawn
+  FrameSettings settings;
+  settings.width = 32;
+  settings.height = 18;
+  Renderer renderer(scene, cachedTestTable(), settings);
+  renderer.renderFrame();
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(cache / "prt"), {}), 1);
+  if (previous) ::setenv("PRISM_CACHE_DIR", restore.c_str(), 1);
+  else ::unsetenv("PRISM_CACHE_DIR");
+  std::filesystem::remove_all(cache);
+}
 
 }  // namespace
 }  // namespace prism::render

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string_view>
 
@@ -62,5 +63,15 @@ class TechniquePass {
 // The passes of the technique of that key (an OpenGL context must be current; compiles their
 // shaders); null for a technique without GPU passes.
 std::unique_ptr<TechniquePass> makeTechniquePass(std::string_view key);
+
+// done / total of a precomputation, `what` naming it ("PRT transfer bake"); called from one thread
+// at a time, and not at all when the result was cached.
+using TechniqueProgress = std::function<void(std::string_view what, std::size_t done, std::size_t total)>;
+
+// The long work a scene's techniques do from the scene alone before their first frame, done ahead
+// into their caches, with progress, so that the passes find it there (PRT's transfer bake); no
+// OpenGL. A pass class takes part by defining `static void precompute(const Scene&, const
+// TechniqueProgress&)`. Errors as the work's own.
+void precomputeTechniques(const Scene& scene, const TechniqueProgress& progress);
 
 }  // namespace prism

@@ -6,4 +6,8 @@ namespace prism {
 
 std::unique_ptr<TechniquePass> makeTechniquePass(std::string_view key) { return makeRegisteredTechniquePass(key); }
 
+void precomputeTechniques(const Scene& scene, const TechniqueProgress& progress) {
+  precomputeRegisteredTechniques(scene, progress);
+}
+
 }  // namespace prism

@@ -13,6 +13,7 @@
 #include "spectral/colour_space.h"
 #include "spectral/rgb_intent.h"
 #include "spectral/rgb_to_spectrum_cache.h"
+#include "techniques/prt/gpu/prt_scene_mesh.h"
 #include "techniques/prt/prt_section.h"
 #include "techniques/prt/transfer_bake.h"
 
@@ -34,17 +35,26 @@ gpu::Buffer bufferOf(std::span<const T> values, const char* label) {
   return gpu::Buffer({bytes.size(), bytes.data(), 0, label});
 }
 
-// Scenes are y-up (glTF's convention); PRT's environments have their zenith at +z (as prism prt
-// bake turns a scene).
-glm::vec3 zUp(const glm::vec3& p) { return {p.x, -p.z, p.y}; }
-
 const PrtSection& sectionOf(const Scene& scene) {
   const PrtSection* section = scene.techniques.find<PrtSection>();
   PRISM_CHECK(section != nullptr);
   return *section;
 }
 
+// The transfer of the scene's PRT objects from the cache, or baked into it.
+CachedTransfer sceneTransfer(const Scene& scene, const PrtMesh& mesh, const TechniqueProgress& progress) {
+  return cachedTransfer(
+      mesh, sceneBakeSettings(scene), cacheDirectory(),
+      [&progress](std::size_t done, std::size_t total) { progress("PRT transfer bake", done, total); },
+      [](const std::string& note) { fmt::print(stderr, "prism: {}\n", note); });
+}
+
 }  // namespace
+
+void PrtPass::precompute(const Scene& scene, const TechniqueProgress& progress) {
+  PrtSceneMesh bake = prtSceneMesh(scene, PrtMeshes::PrtObjects);
+  if (!bake.mesh.indices.empty()) sceneTransfer(scene, bake.mesh, progress);
+}
 
 PrtPass::PrtPass() : mData(std::make_shared<PrtDrawData>()) {}
 
@@ -63,45 +73,36 @@ const gpu::Program& PrtPass::program(int basisCount) {
 }
 
 void PrtPass::prepareGeometry(const Scene& scene) {
-  const PrtSection& section = sectionOf(scene);
   PrtDrawData& d = *mData;
-  PrtMesh bake;
+  PrtSceneMesh bake = prtSceneMesh(scene, PrtMeshes::PrtObjects);
   std::vector<GpuVertex> vertices;
-  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+  d.meshes = bake.meshes;
+  d.indices = bake.mesh.indices;
+  for (std::size_t i : d.meshes) {
     const Mesh& mesh = scene.meshes[i];
-    if (mesh.technique != PrtSection::kKey) continue;
-    d.meshes.push_back(i);
     auto slot = std::find(d.materials.begin(), d.materials.end(), mesh.material);
     if (slot == d.materials.end()) slot = d.materials.insert(d.materials.end(), mesh.material);
     const int material = static_cast<int>(slot - d.materials.begin());
-    const auto base = static_cast<std::uint32_t>(d.positionsW.size());
     for (const Vertex& v : mesh.vertices) {
       d.positionsW.push_back(v.position);
       d.vertexMaterial.push_back(material);
       vertices.push_back({v.position, static_cast<std::uint32_t>(material)});
-      bake.positions.push_back(zUp(v.position));
-      float length = glm::length(v.normal);
-      bake.normals.push_back(length > 0.0f ? zUp(v.normal / length) : glm::vec3(0.0f, 0.0f, 1.0f));
     }
-    for (std::uint32_t index : mesh.indices) d.indices.push_back(base + index);
   }
-  bake.indices = d.indices;
   if (d.indices.empty()) return;
-  // The transfer: from the cache when this geometry was baked before with these settings.
+  // The transfer: from the cache when precompute() or an earlier run baked it; else baked here,
+  // with percentages (the commands' progress bars sit above the renderer).
   const auto start = std::chrono::steady_clock::now();
   int lastDecile = -1;
-  CachedTransfer cached = cachedTransfer(
-      bake, {section.samples, section.shadows}, cacheDirectory(),
-      [&](std::size_t done, std::size_t total) {
-        int decile = total == 0 ? 10 : static_cast<int>(10 * done / total);
-        if (decile != lastDecile) fmt::print(stderr, "\rPRT transfer bake {:3d} %", 10 * decile);
-        lastDecile = decile;
-      },
-      [](const std::string& note) { fmt::print(stderr, "prism: {}\n", note); });
+  CachedTransfer cached = sceneTransfer(scene, bake.mesh, [&](std::string_view what, std::size_t done, std::size_t total) {
+    int decile = total == 0 ? 10 : static_cast<int>(10 * done / total);
+    if (decile != lastDecile) fmt::print(stderr, "\r{} {:3d} %", what, 10 * decile);
+    lastDecile = decile;
+  });
   if (!cached.fromCache) {
-    fmt::print(stderr, "\rPRT transfer bake: {} vertices × {} directions in {:.2f} s → {}\n", bake.positions.size(),
-               section.samples, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-               cached.file.string());
+    fmt::print(stderr, "\rPRT transfer bake: {} vertices × {} directions in {:.2f} s → {}\n", bake.mesh.positions.size(),
+               sceneBakeSettings(scene).samples,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), cached.file.string());
   }
   d.transfer = std::move(cached.transfer);
   mVertices = bufferOf(std::span<const GpuVertex>(vertices), "PRT vertices");

@@ -47,6 +47,8 @@ struct PrtDrawData final : TechniqueTexels {
 class PrtPass final : public TechniquePass {
  public:
   PrtPass();
+  // The transfer bake of the scene's PRT objects into the cache (precomputeTechniques).
+  static void precompute(const Scene& scene, const TechniqueProgress& progress);
   void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera) override;
   void bindForLighting() const override {}
   std::size_t gpuMemoryBytes() const override;

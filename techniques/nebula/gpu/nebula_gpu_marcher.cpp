@@ -46,6 +46,11 @@ gpu::Texture3D fieldTexture(int nx, int ny, int nz, int width, const std::vector
     return gpu::Texture3D(desc);
   }
   const int slabs = (width + 3) / 4;
+  GLint maxDepth = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxDepth);
+  if (static_cast<long>(nz) * slabs > maxDepth)
+    throw Error(fmt::format("nebula --gpu: {} needs {} × {} texels along z, more than this GPU's 3D textures hold ({})",
+                            label, nz, slabs, maxDepth));
   const std::size_t voxels = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz);
   texels.assign(voxels * static_cast<std::size_t>(slabs) * 4, 0.0f);
   // Value c of the fields: field c of one each (the stars' depths), or value c of a single one.

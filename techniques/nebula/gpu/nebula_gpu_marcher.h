@@ -26,7 +26,8 @@ namespace prism::nebula {
 
 class NebulaGpuMarcher {
  public:
-  // Uploads the renderer's grids and tables; the renderer must outlive the marcher.
+  // Uploads the renderer's grids and tables; the renderer must outlive the marcher. Error when a
+  // field's slabs exceed GL_MAX_3D_TEXTURE_SIZE along z (nz·⌈stars/4⌉: 2048 allows 64 stars at 128³).
   explicit NebulaGpuMarcher(const NebulaRenderer& renderer);
 
   // Whether the GPU marches `method` (projection and light–density).

@@ -371,6 +371,12 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   expectOneLineError("nebula render " + tiny + " --method spline -o x.png", "unknown nebula method 'spline'");
   expectOneLineError("nebula render " + tiny + " -o x.jpg", "x.jpg: the output must be .exr or .png");
   expectOneLineError("nebula render " + (dir / "bad.json").string() + " -o x.png", "bad.json: /nebula/stars/0/position");
+  Result gpu = run("nebula render " + tiny + " --gpu --method light-density --steps 10 -o " + (dir / "tiny_gpu.exr").string());
+  ASSERT_EQ(gpu.exitCode, 0) << gpu.err;
+  EXPECT_NE(gpu.out.find("light-density (GPU)"), std::string::npos) << gpu.out;
+  EXPECT_TRUE(std::filesystem::exists(dir / "tiny_gpu.exr"));
+  expectOneLineError("nebula render " + tiny + " --gpu --method reference -o x.png",
+                     "the GPU marches projection and light-density, not reference");
 }
 
 TEST(Cli, PrtCommandsCheckTheirInput) {

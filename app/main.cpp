@@ -361,7 +361,7 @@ int main(int argc, char** argv) {
   prism::app::NebulaRenderOptions nebRender;
   std::string nebDomain;
   std::filesystem::path nebDensityScene, nebDensityOut;
-  auto* nebulaCmd = app.add_subcommand("nebula", "spectral nebulae (Barrès 2023) on the CPU: the greedy basis, renders");
+  auto* nebulaCmd = app.add_subcommand("nebula", "spectral nebulae (Barrès 2023): the greedy basis, renders (CPU, or --gpu), the GPU bench");
   nebulaCmd->require_subcommand(1);
   auto* nebBasisCmd = nebulaCmd->add_subcommand("basis", "the greedy exp(-a/λ) basis and its worst projection error per element");
   nebBasisCmd->add_option("--domain", nebDomain, "LO,HI µm of λ (default 0.38,0.78; the paper's: 0,1)");
@@ -370,7 +370,7 @@ int main(int argc, char** argv) {
   nebBasisCmd->add_option("--spacing", nebBasis.spacingUm, "minimum spacing of the exponents (µm; 0: free)")->capture_default_str();
   nebBasisCmd->add_option("--count", nebBasis.count, "elements (1..8)")->capture_default_str();
   nebBasisCmd->add_flag("--json", nebBasis.json, "JSON output");
-  auto* nebRenderCmd = nebulaCmd->add_subcommand("render", "march a nebula scene on the CPU to an EXR (linear) or PNG");
+  auto* nebRenderCmd = nebulaCmd->add_subcommand("render", "march a nebula scene (CPU, or --gpu) to an EXR (linear) or PNG");
   nebRenderCmd->add_option("scene", nebRender.scene, "nebula scene file (JSON with a 'nebula' section)")->required();
   nebRenderCmd->add_option("-o,--output", nebRender.output, "OUT.exr or OUT.png")->required();
   nebRenderCmd->add_option("--method", nebRender.method, "reference, analytic, projection, light-density or pre-integration")->capture_default_str();
@@ -382,7 +382,11 @@ int main(int argc, char** argv) {
   nebRenderCmd->add_option("--uniform-samples", nebRender.uniformSamples, "reference: that many λ per channel instead (trapezoid)");
   nebRenderCmd->add_flag("--compare", nebRender.compare, "also render the reference; print the max relative error");
   nebRenderCmd->add_flag("--no-lines", nebRender.noLines, "leave out the emission lines");
+  nebRenderCmd->add_flag("--gpu", nebRender.gpu, "march on the GPU (projection, light-density; headless EGL)");
   nebRenderCmd->add_option("--threads", nebRender.threads, "threads (0: all)");
+  int nebBenchRepeats = 5;
+  auto* nebBenchCmd = nebulaCmd->add_subcommand("bench", "time the GPU marcher against the CPU's, 1, 6 and 32 stars");
+  nebBenchCmd->add_option("--repeats", nebBenchRepeats, "timed runs per cell (the median is printed)")->capture_default_str();
   auto* nebDensityCmd = nebulaCmd->add_subcommand("density", "write a scene's density grid as a prism-density file");
   nebDensityCmd->add_option("scene", nebDensityScene, "nebula scene file")->required();
   nebDensityCmd->add_option("-o,--output", nebDensityOut, "OUT.density")->required();
@@ -474,6 +478,7 @@ int main(int argc, char** argv) {
     }
     if (*nebRenderCmd) prism::app::runNebulaRender(nebRender);
     if (*nebDensityCmd) prism::app::runNebulaDensity(nebDensityScene, nebDensityOut);
+    if (*nebBenchCmd) prism::app::runNebulaBench(nebBenchRepeats);
     if (*validateCmd) return runValidate(val);
     if (*viewCmd) {
       view.settings = viewSettings.given();

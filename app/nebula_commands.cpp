@@ -2,18 +2,21 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "gpu/headless_context.h"
 #include "harness/progress_bar.h"
 #include "imaging/exr_file.h"
 #include "imaging/float_image.h"
 #include "imaging/png_file.h"
 #include "spectral/colour_space.h"
 #include "techniques/nebula/nebula_basis.h"
+#include "techniques/nebula/gpu/nebula_gpu_marcher.h"
 #include "techniques/nebula/nebula_scene.h"
 
 namespace prism::app {
@@ -92,6 +95,8 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   if (o.output.extension() != ".exr" && o.output.extension() != ".png")
     throw Error(fmt::format("{}: the output must be .exr or .png", o.output.string()));
   nebula::Method method = nebula::methodFromName(o.method);
+  if (o.gpu && !nebula::NebulaGpuMarcher::supports(method))
+    throw Error(fmt::format("nebula render --gpu: the GPU marches projection and light-density, not {}", nebula::methodName(method)));
   nebula::NebulaScene scene = nebula::loadNebulaScene(o.scene, o.threads);
   if (!o.filters.empty()) {
     if (o.filters != "hubble" && o.filters != "cie1931")
@@ -112,11 +117,20 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   auto t0 = std::chrono::steady_clock::now();
   nebula::NebulaRenderer renderer(std::move(scene.model), s, [&bar](std::size_t d, std::size_t n) { bar.update(d, n); });
   auto t1 = std::chrono::steady_clock::now();
-  nebula::NebulaImage image = renderer.render(s);
+  nebula::NebulaImage image;
+  std::unique_ptr<gpu::HeadlessContext> context;
+  if (o.gpu) {
+    context = std::make_unique<gpu::HeadlessContext>();
+    nebula::NebulaGpuMarcher marcher(renderer);
+    t1 = std::chrono::steady_clock::now();  // the upload and the shaders' compilation count as precomputation
+    image = marcher.render(s);
+  } else {
+    image = renderer.render(s);
+  }
   auto t2 = std::chrono::steady_clock::now();
   auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-  fmt::print("{}: {}x{}, {} steps, {} star(s), precomputation {:.0f} ms, render {:.0f} ms\n", nebula::methodName(method),
-             image.width, image.height, s.steps, renderer.model().stars.size(), ms(t0, t1), ms(t1, t2));
+  fmt::print("{}{}: {}x{}, {} steps, {} star(s), precomputation {:.0f} ms, render {:.0f} ms\n", nebula::methodName(method),
+             o.gpu ? " (GPU)" : "", image.width, image.height, s.steps, renderer.model().stars.size(), ms(t0, t1), ms(t1, t2));
   if (o.compare && method != nebula::Method::Reference) {
     nebula::RenderSettings r = s;
     r.method = nebula::Method::Reference;
@@ -134,6 +148,52 @@ void runNebulaDensity(const std::filesystem::path& scenePath, const std::filesys
   nebula::writeDensityFile(output, scene.model.density);
   fmt::print("wrote {} ({}x{}x{})\n", output.string(), scene.model.density.nx, scene.model.density.ny,
              scene.model.density.nz);
+}
+
+namespace {
+
+// The median wall time of `repeats` calls, after one untimed call (first-use costs: the GPU's
+// shader specialisation, the CPU's caches).
+template <class F>
+double medianMs(int repeats, F&& f) {
+  f();
+  std::vector<double> times;
+  for (int r = 0; r < repeats; ++r) {
+    auto t0 = std::chrono::steady_clock::now();
+    f();
+    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2), times.end());
+  return times[times.size() / 2];
+}
+
+}  // namespace
+
+void runNebulaBench(int repeats) {
+  if (repeats < 1) throw Error("nebula bench: --repeats must be ≥ 1");
+  gpu::HeadlessContext context;
+  fmt::print("nebula bench: 64x64, 100 steps, 32^3 cloud, Hubble palette, no lines; median of {} runs (ms); "
+             "CPU one thread; GPU: {}\n", repeats, reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  fmt::print("{:>5} {:>14} {:>14} {:>14} {:>16} {:>12} {:>12}\n", "stars", "CPU ref (21λ)", "CPU projection",
+             "GPU projection", "GPU light-dens.", "ref/GPU proj", "ref/GPU l-d");
+  for (int stars : {1, 6, 32}) {
+    nebula::RenderSettings s;
+    s.threads = 1;
+    s.steps = 100;
+    s.emissionLines = false;
+    nebula::NebulaRenderer renderer(nebula::benchNebulaModel(stars), s);
+    nebula::NebulaGpuMarcher marcher(renderer);
+    s.method = nebula::Method::Reference;
+    s.uniformSamples = 7;  // 7 λ per channel, 21 a step: the paper's baseline (bench/nebula_bench.cpp)
+    double reference = medianMs(repeats, [&] { renderer.render(s); });
+    s.method = nebula::Method::Projection;
+    double cpuProjection = medianMs(repeats, [&] { renderer.render(s); });
+    double gpuProjection = medianMs(repeats, [&] { marcher.render(s); });
+    s.method = nebula::Method::LightDensity;
+    double gpuLight = medianMs(repeats, [&] { marcher.render(s); });
+    fmt::print("{:>5} {:>14.1f} {:>14.1f} {:>14.1f} {:>16.1f} {:>11.1f}x {:>11.1f}x\n", stars, reference, cpuProjection,
+               gpuProjection, gpuLight, reference / gpuProjection, reference / gpuLight);
+  }
 }
 
 }  // namespace prism::app

@@ -1,7 +1,8 @@
-// `prism nebula`: spectral nebulae after Barrès 2023 (techniques/nebula/) on the CPU —
+// `prism nebula`: spectral nebulae after Barrès 2023 (techniques/nebula/) —
 // `basis` prints the greedy exp(−a/λ) basis and its error after each element; `render` marches a
-// nebula scene with one of the five methods to an EXR (linear channels) or a PNG; `density`
-// writes a scene's density grid as a prism-density file.
+// nebula scene with one of the five methods to an EXR (linear channels) or a PNG, on the CPU or
+// (projection, light-density) with `--gpu` on the GPU; `density` writes a scene's density grid as
+// a prism-density file; `bench` times the GPU marcher against the CPU's for 1, 6 and 32 stars.
 #pragma once
 
 #include <filesystem>
@@ -31,10 +32,16 @@ struct NebulaRenderOptions {
   int uniformSamples = 0;
   bool compare = false;          // also render the reference and print the error against it
   bool noLines = false;
+  bool gpu = false;              // march on the GPU (headless EGL context)
   unsigned threads = 0;
 };
 void runNebulaRender(const NebulaRenderOptions& options);
 
 void runNebulaDensity(const std::filesystem::path& scene, const std::filesystem::path& output);
+
+// On benchNebulaModel (32³, 64×64, 100 steps, Hubble, no lines), for 1, 6 and 32 stars: the CPU's
+// double integration (21 λ a step, one thread) and projection (one thread), and the GPU's
+// projection and light–density marches (march + finish + read-back), the median of `repeats`.
+void runNebulaBench(int repeats);
 
 }  // namespace prism::app

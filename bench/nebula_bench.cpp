@@ -12,26 +12,10 @@
 #include <memory>
 
 #include "techniques/nebula/nebula_render.h"
+#include "techniques/nebula/nebula_scene.h"
 
 namespace prism {
 namespace {
-
-nebula::NebulaModel benchNebula(int stars) {
-  nebula::NebulaModel m;
-  nebula::NoiseParameters noise;
-  noise.resolution = 32;
-  noise.seed = 7;
-  m.density = nebula::generateFbm(noise, 0);
-  m.extinction = 3.0;
-  m.filters = "hubble";
-  for (int i = 0; i < stars; ++i) {  // spread on a ring around the centre, 4000–30000 K
-    double t = 2.0 * 3.14159265358979 * i / stars;
-    m.stars.push_back({{0.5 + 0.25 * std::cos(t), 0.5 + 0.1 * std::sin(3 * t), 0.5 + 0.25 * std::sin(t)},
-                       4000.0 + 26000.0 * i / std::max(1, stars - 1), 1.0});
-  }
-  m.camera.width = m.camera.height = 64;
-  return m;
-}
 
 const nebula::NebulaRenderer& renderer(int stars) {
   static std::map<int, std::unique_ptr<nebula::NebulaRenderer>> cache;
@@ -39,7 +23,7 @@ const nebula::NebulaRenderer& renderer(int stars) {
   if (!r) {
     nebula::RenderSettings s;
     s.threads = 1;
-    r = std::make_unique<nebula::NebulaRenderer>(benchNebula(stars), s);
+    r = std::make_unique<nebula::NebulaRenderer>(nebula::benchNebulaModel(stars), s);
   }
   return *r;
 }

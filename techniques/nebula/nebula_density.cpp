@@ -14,6 +14,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/parallel_for.h"
+#include "techniques/nebula/nebula_integrals.h"
 
 namespace prism::nebula {
 
@@ -21,10 +22,7 @@ static_assert(std::endian::native == std::endian::little, "density files are lit
 
 TrilinearAxis trilinearAxis(double u, int n) {
   TrilinearAxis axis;
-  double x = std::clamp(u * n - 0.5, 0.0, n - 1.0);
-  axis.i0 = std::min(static_cast<int>(x), n - 1);
-  axis.i1 = std::min(axis.i0 + 1, n - 1);
-  axis.f = x - axis.i0;
+  shared::f64::nebulaTrilinearAxis(u, n, axis.i0, axis.i1, axis.f);
   return axis;
 }
 

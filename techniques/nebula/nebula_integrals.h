@@ -1,6 +1,8 @@
-// The nebula's shared integrals (shaders/shared/nebula_integrals.glsl) compiled as C++ twice: in
-// float inside prism::shared (what the GPU runs; the CPU renderer's per-sample path) and in double
-// inside prism::shared::f64 (the basis search and the per-frame tables, which need the digits).
+// The nebula's shared integrals (shaders/shared/nebula_integrals.glsl) and the marcher's
+// per-sample formulas (nebula_march.glsl) compiled as C++ twice: in float inside prism::shared
+// (what the GPU runs; the CPU renderer's per-sample path) and in double inside
+// prism::shared::f64 (the basis search, the per-frame tables and the march's geometry, which need
+// the digits).
 #pragma once
 
 #include <cmath>
@@ -10,6 +12,7 @@
 namespace prism::shared {
 using glm::log;
 #include "nebula_integrals.glsl"
+#include "nebula_march.glsl"
 #undef NEBULA_REAL
 #undef NEBULA_VEC4
 
@@ -20,6 +23,7 @@ using std::log;
 #define NEBULA_REAL double
 #define NEBULA_VEC4 vec4
 #include "nebula_integrals.glsl"
+#include "nebula_march.glsl"
 #undef NEBULA_REAL
 #undef NEBULA_VEC4
 }  // namespace f64

@@ -14,6 +14,7 @@
 #include "core/gauss_legendre.h"
 #include "core/parallel_for.h"
 #include "techniques/nebula/nebula_integrals.h"
+#include "techniques/nebula/nebula_precomputed.h"
 
 namespace prism::nebula {
 
@@ -39,28 +40,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr int kLightNodes = 48;  // Gauss–Legendre nodes over the band for the 2D basis's projections
 
-// A grid of per-voxel values at the density's resolution (voxel centres), `width` values each.
-struct VoxelField {
-  int nx = 0, ny = 0, nz = 0, width = 1;
-  std::vector<float> values;
-  // Trilinear between voxel centres, clamped at the faces, into out[0..width).
-  void sample(const glm::dvec3& p, float* out) const {
-    const TrilinearAxis ax = trilinearAxis(p.x, nx), ay = trilinearAxis(p.y, ny), az = trilinearAxis(p.z, nz);
-    const int x0 = ax.i0, x1 = ax.i1, y0 = ay.i0, y1 = ay.i1, z0 = az.i0, z1 = az.i1;
-    const double fx = ax.f, fy = ay.f, fz = az.f;
-    for (int c = 0; c < width; ++c) out[c] = 0.0f;
-    const int xs[2] = {x0, x1}, ys[2] = {y0, y1}, zs[2] = {z0, z1};
-    const double wx[2] = {1 - fx, fx}, wy[2] = {1 - fy, fy}, wz[2] = {1 - fz, fz};
-    for (int a = 0; a < 2; ++a)
-      for (int b = 0; b < 2; ++b)
-        for (int d = 0; d < 2; ++d) {
-          auto w = static_cast<float>(wx[a] * wy[b] * wz[d]);
-          std::size_t at = (static_cast<std::size_t>((zs[d] * ny + ys[b]) * nx + xs[a])) * static_cast<std::size_t>(width);
-          for (int c = 0; c < width; ++c) out[c] += w * values[at + static_cast<std::size_t>(c)];
-        }
-  }
-};
-
 // The part of the segment p + t·d, t ∈ [0, tMax], inside the unit cube, as [t0, t1]; false when
 // it misses.
 bool clipToCube(const glm::dvec3& p, const glm::dvec3& d, double tMax, double& t0, double& t1) {
@@ -80,64 +59,6 @@ bool clipToCube(const glm::dvec3& p, const glm::dvec3& d, double tMax, double& t
 }
 
 }  // namespace
-
-// mⱼ(x) for the basis's exponents, tabulated over x ∈ [0, kMomentTableMaxUm].
-constexpr int kMomentTableSize = 4096;
-constexpr double kMomentTableMaxUm = 16.0;
-struct MomentTable {
-  std::vector<glm::vec4> lo, hi;  // size + 3 entries: one before 0, two after the end
-  int size = kMomentTableSize;
-  double step = kMomentTableMaxUm / (kMomentTableSize - 1);
-  // Catmull–Rom between entries; false beyond the table.
-  bool lookup(double x, glm::vec4& mLo, glm::vec4& mHi, bool withHi) const {
-    double u = x / step;
-    if (!(u < size - 1)) return false;
-    int i = static_cast<int>(u);
-    auto t = static_cast<float>(u - i);
-    float t2 = t * t, t3 = t2 * t;
-    float w0 = 0.5f * (-t3 + 2.0f * t2 - t), w1 = 0.5f * (3.0f * t3 - 5.0f * t2 + 2.0f);
-    float w2 = 0.5f * (-3.0f * t3 + 4.0f * t2 + t), w3 = 0.5f * (t3 - t2);
-    auto at = static_cast<std::size_t>(i);  // entry i + 1 holds x = i·step
-    mLo = w0 * lo[at] + w1 * lo[at + 1] + w2 * lo[at + 2] + w3 * lo[at + 3];
-    if (withHi) mHi = w0 * hi[at] + w1 * hi[at + 1] + w2 * hi[at + 2] + w3 * hi[at + 3];
-    return true;
-  }
-};
-
-struct NebulaPrecomputed {
-  NebulaModel model;
-  FilterSet filters;
-  std::vector<StarSpectrum> spectra;
-  std::vector<VoxelField> starDepth;  // g_s per voxel (µm), one field per star
-  // Emission lines: each line's λ and its response per channel (P_S(λₗ)·weight).
-  std::vector<double> lineLambdaUm;
-  std::vector<glm::dvec3> lineResponse;
-  // Analytic: per star, per channel, the pieces of P_S × P_L as float coefficients.
-  struct FloatPiece {
-    float l0, l1;
-    glm::vec4 lo, hi;
-  };
-  std::vector<std::array<std::vector<FloatPiece>, 3>> analyticPieces;
-  struct DoublePiece {
-    double l0, l1;
-    glm::dvec4 lo, hi;
-  };
-  std::vector<std::array<std::vector<DoublePiece>, 3>> analyticPiecesF64;
-  // Projection: the 1D basis and, per star and channel, W'ⱼ = Σₖ (∫ P_S S_s bₖ dλ)·M(k,j).
-  ExpBasis basis;
-  glm::vec4 basisLo{0.0f}, basisHi{0.0f};  // exponents a₀…a₇ (unused ones are never read)
-  MomentTable moments;
-  // Pre-integration: per star, the three channels' ∫ P_S S_s e^(−x/λ) dλ over x (in lo.xyz),
-  // 4096 entries; built at its first render.
-  std::once_flag preIntegratedOnce;
-  std::vector<MomentTable> preIntegrated;
-  std::vector<std::array<std::array<double, 8>, 3>> projectionWeights;
-  // Light–density: the 2D basis, its per-voxel coefficients, and U(c, k, j) = Σₘ (∫ P_S fₖ bₘ)·M(m,j).
-  GreedyResult lightGreedy;
-  VoxelField lightCoefficients;
-  std::vector<double> lightU;  // [c][k][j], k < lightCount, j < card(B)
-  int lightCount = 0;
-};
 
 namespace {
 
@@ -244,17 +165,21 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
   auto card = static_cast<int>(pre.basis.a.size());
   for (int j = 0; j < card; ++j) (j < 4 ? pre.basisLo[j] : pre.basisHi[j - 4]) = static_cast<float>(pre.basis.a[static_cast<std::size_t>(j)]);
   for (int e = -1; e <= kMomentTableSize + 1; ++e) {
-    double x = std::abs(e * pre.moments.step);  // the entry before 0 mirrors (mⱼ is smooth there)
-    pre.moments.lo.push_back(glm::vec4(shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm)));
-    pre.moments.hi.push_back(glm::vec4(shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm)));
+    double x = std::abs(e * pre.moments.step);  // the entry before 0 mirrors (cₖ is smooth there)
+    std::array<double, 8> raw{}, coefficients{};
+    glm::dvec4 lo = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm);
+    glm::dvec4 hi = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm);
+    for (int j = 0; j < 4; ++j) raw[static_cast<std::size_t>(j)] = lo[j], raw[static_cast<std::size_t>(j + 4)] = hi[j];
+    pre.toCoefficients(raw, coefficients);
+    pre.moments.lo.emplace_back(coefficients[0], coefficients[1], coefficients[2], coefficients[3]);
+    pre.moments.hi.emplace_back(coefficients[4], coefficients[5], coefficients[6], coefficients[7]);
   }
   for (std::size_t st = 0; st < pre.spectra.size(); ++st) {
     std::array<std::array<double, 8>, 3> w{};
     for (std::size_t c = 0; c < 3; ++c)
-      for (int k = 0; k < card; ++k) {
-        double wk = integratePassband(pre.filters.channels[c], [&](double l) { return pre.spectra[st].at(l) * pre.basis.at(k, l); });
-        for (int j = 0; j <= k; ++j) w[c][static_cast<std::size_t>(j)] += wk * pre.basis.m(k, j);
-      }
+      for (int k = 0; k < card; ++k)
+        w[c][static_cast<std::size_t>(k)] =
+            integratePassband(pre.filters.channels[c], [&](double l) { return pre.spectra[st].at(l) * pre.basis.at(k, l); });
     pre.projectionWeights.push_back(w);
   }
   tick();
@@ -309,14 +234,13 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
       for (int j = 0; j <= k; ++j) v += m2(k, j) * raw(j, l);
       return v;
     };
-    // U(c, k, j) = Σₘ ∫ P_S,c fₖ bₘ dλ · M(m, j).
+    // U(c, k, m) = ∫ P_S,c fₖ bₘ dλ.
     pre.lightU.assign(static_cast<std::size_t>(3 * kCount * 8), 0.0);
     for (int c = 0; c < 3; ++c)
       for (int k = 0; k < kCount; ++k)
-        for (int mm = 0; mm < card; ++mm) {
-          double t = integratePassband(pre.filters.channels[static_cast<std::size_t>(c)], [&](double l) { return f(k, l) * pre.basis.at(mm, l); });
-          for (int j = 0; j <= mm; ++j) pre.lightU[static_cast<std::size_t>((c * kCount + k) * 8 + j)] += t * pre.basis.m(mm, j);
-        }
+        for (int mm = 0; mm < card; ++mm)
+          pre.lightU[static_cast<std::size_t>((c * kCount + k) * 8 + mm)] =
+              integratePassband(pre.filters.channels[static_cast<std::size_t>(c)], [&](double l) { return f(k, l) * pre.basis.at(mm, l); });
     // Per voxel: dₖ = Σ_s σ₁L_s/(16π²d²)·⟨S_s e^(−g_s/λ), fₖ⟩ (Gauss–Legendre, 48 nodes).
     std::vector<double> fAtNodes(static_cast<std::size_t>(kCount * kLightNodes));
     for (int k = 0; k < kCount; ++k)
@@ -339,8 +263,8 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
           glm::dvec3 p((i + 0.5) / dg.nx, (j + 0.5) / dg.ny, (static_cast<double>(k) + 0.5) / dg.nz);
           std::fill(light.begin(), light.end(), 0.0);
           for (std::size_t st = 0; st < m.stars.size(); ++st) {
-            double d2 = std::max(glm::dot(m.stars[st].position - p, m.stars[st].position - p), 1e-4);
-            double w = m.scattering * m.stars[st].luminosity / (16.0 * kPi * kPi * d2);
+            double w = shared::f64::nebulaStarWeight(m.scattering, m.stars[st].luminosity,
+                                                     glm::dot(m.stars[st].position - p, m.stars[st].position - p));
             double g = pre.starDepth[st].values[voxel];
             for (int q = 0; q < kLightNodes; ++q)
               light[static_cast<std::size_t>(q)] += w * spectraAtNodes[st][static_cast<std::size_t>(q)] * std::exp(-g / nodes[static_cast<std::size_t>(q)]);
@@ -360,6 +284,7 @@ NebulaRenderer::~NebulaRenderer() = default;
 const ExpBasis& NebulaRenderer::basis() const { return mPre->basis; }
 const GreedyResult& NebulaRenderer::lightBasis() const { return mPre->lightGreedy; }
 const NebulaModel& NebulaRenderer::model() const { return mPre->model; }
+const NebulaPrecomputed& NebulaRenderer::precomputed() const { return *mPre; }
 
 namespace {
 void buildPreIntegration(NebulaPrecomputed& pre) {
@@ -433,6 +358,27 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
   glm::dvec3 up = glm::cross(right, forward);
   double tanHalf = std::tan(cam.fovYDeg * kPi / 360.0), aspect = static_cast<double>(cam.width) / cam.height;
 
+  // The coefficients cₖ(x) of e^(−x/λ) on the orthonormal basis: from the table (float), or
+  // Σⱼ M(k,j)·mⱼ(x) over the raw moments' closed form (double, or float beyond the table).
+  auto coefficientsAt = [&](double x) {
+    std::array<double, 8> raw{}, c{};
+    glm::vec4 tLo, tHi;
+    if (!s.doublePrecision && s.momentTable && pre.moments.lookup(x, tLo, tHi, card > 4)) {
+      for (int j = 0; j < 4; ++j) c[static_cast<std::size_t>(j)] = tLo[j], c[static_cast<std::size_t>(j + 4)] = card > 4 ? tHi[j] : 0.0f;
+      return c;
+    }
+    glm::dvec4 mLo, mHi(0.0);
+    if (s.doublePrecision) {
+      mLo = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm);
+      if (card > 4) mHi = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm);
+    } else {
+      mLo = shared::nebulaExpMoments(static_cast<float>(x), pre.basisLo, l0, l1);
+      if (card > 4) mHi = shared::nebulaExpMoments(static_cast<float>(x), pre.basisHi, l0, l1);
+    }
+    for (int j = 0; j < 4; ++j) raw[static_cast<std::size_t>(j)] = mLo[j], raw[static_cast<std::size_t>(j + 4)] = mHi[j];
+    pre.toCoefficients(raw, c);
+    return c;
+  };
   NebulaImage image{cam.width, cam.height, std::vector<glm::vec3>(static_cast<std::size_t>(cam.width) * cam.height)};
   parallelFor(static_cast<std::size_t>(cam.height), s.threads, [&](std::size_t row) {
     std::vector<float> depths(starCount), lightD(static_cast<std::size_t>(std::max(pre.lightCount, 1)));
@@ -449,6 +395,7 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
         double dt = (t1 - t0) / s.steps, gCam = 0.0;
         for (int i = 0; i < s.steps; ++i) {
           glm::dvec3 p = cam.position + dir * (t0 + (i + 0.5) * dt);
+          if (shared::f64::nebulaRayOpaque(gCam)) break;
           double rho = m.density.sample(p);
           if (rho <= 0.0) continue;
           double dg = kCtUm * m.extinction * rho * dt;
@@ -456,34 +403,22 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
           gCam += dg;
           if (s.emissionLines)
             for (std::size_t l = 0; l < pre.lineLambdaUm.size(); ++l)
-              colour += m.emission * rho * dt * std::exp(-g / pre.lineLambdaUm[l]) * pre.lineResponse[l];
-          double scatter = m.scattering * rho * dt / (16.0 * kPi * kPi);
+              colour += m.emission * rho * dt * shared::f64::nebulaAttenuation(g, pre.lineLambdaUm[l]) * pre.lineResponse[l];
           if (s.method == Method::LightDensity) {
             if (pre.lightCount == 0) continue;
             pre.lightCoefficients.sample(p, lightD.data());
-            glm::dvec4 mLo, mHi(0.0);
-            glm::vec4 tLo, tHi;
-            if (s.doublePrecision) {
-              mLo = shared::f64::nebulaExpMoments(g, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm);
-              if (card > 4) mHi = shared::f64::nebulaExpMoments(g, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm);
-            } else if (s.momentTable && pre.moments.lookup(g, tLo, tHi, card > 4)) {
-              mLo = tLo;
-              if (card > 4) mHi = tHi;
-            } else {
-              mLo = shared::nebulaExpMoments(static_cast<float>(g), pre.basisLo, l0, l1);
-              if (card > 4) mHi = shared::nebulaExpMoments(static_cast<float>(g), pre.basisHi, l0, l1);
-            }
+            const std::array<double, 8> cg = coefficientsAt(g);
             double w = rho * dt;
             for (int k = 0; k < pre.lightCount; ++k)
               for (int j = 0; j < card; ++j)
-                lightAcc[static_cast<std::size_t>(k * 8 + j)] += w * lightD[static_cast<std::size_t>(k)] * (j < 4 ? mLo[j] : mHi[j - 4]);
+                lightAcc[static_cast<std::size_t>(k * 8 + j)] += w * lightD[static_cast<std::size_t>(k)] * cg[static_cast<std::size_t>(j)];
             continue;
           }
           for (std::size_t st = 0; st < starCount; ++st) {
             float gs = 0.0f;
             pre.starDepth[st].sample(p, &gs);
             glm::dvec3 toStar = m.stars[st].position - p;
-            double w = scatter * m.stars[st].luminosity / std::max(glm::dot(toStar, toStar), 1e-4);
+            double w = shared::f64::nebulaStarWeight(m.scattering * rho * dt, m.stars[st].luminosity, glm::dot(toStar, toStar));
             double x = g + gs;
             switch (s.method) {
               case Method::Reference:
@@ -508,19 +443,8 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
                 }
                 break;
               case Method::Projection: {
-                glm::dvec4 mLo, mHi(0.0);
-                glm::vec4 tLo, tHi;
-                if (s.doublePrecision) {
-                  mLo = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm);
-                  if (card > 4) mHi = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm);
-                } else if (s.momentTable && pre.moments.lookup(x, tLo, tHi, card > 4)) {
-                  mLo = tLo;
-                  if (card > 4) mHi = tHi;
-                } else {
-                  mLo = shared::nebulaExpMoments(static_cast<float>(x), pre.basisLo, l0, l1);
-                  if (card > 4) mHi = shared::nebulaExpMoments(static_cast<float>(x), pre.basisHi, l0, l1);
-                }
-                for (int j = 0; j < card; ++j) moments[st * 8 + static_cast<std::size_t>(j)] += w * (j < 4 ? mLo[j] : mHi[j - 4]);
+                const std::array<double, 8> cx = coefficientsAt(x);
+                for (int j = 0; j < card; ++j) moments[st * 8 + static_cast<std::size_t>(j)] += w * cx[static_cast<std::size_t>(j)];
                 break;
               }
               case Method::PreIntegration: {

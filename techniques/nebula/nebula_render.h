@@ -3,9 +3,10 @@
 //   reference     Newton–Cotes over λ at every step (composite Simpson per filter piece, double)
 //   analytic      the closed form per step: Σ over filter pieces × P_L of ∫ P(λ)e^(−g/λ) dλ
 //                 (nebula_integrals.glsl, float), once per star
-//   projection    e^(−g/λ) projected on the greedy exp(−a/λ) basis: the ray accumulates the raw
-//                 moments ∫ e^(−(g+aⱼ)/λ) dλ per star (float); card(B) filter integrals per star
-//                 finish the pixel, so filters change without a new march
+//   projection    e^(−g/λ) projected on the greedy exp(−a/λ) basis: the ray accumulates, per
+//                 star, the coefficients on the orthonormalised basis (Σⱼ M(k,j)·∫ e^(−(g+aⱼ)/λ) dλ,
+//                 float); card(B) filter integrals per star finish the pixel, so filters change
+//                 without a new march
 //   lightDensity  the 2D basis P_T(λ)e^(−a/λ): per voxel, the sum over stars of their light's
 //                 projection (precomputed), so the march's cost does not depend on the star count
 //   preIntegration the paper's rejected alternative: per star and channel, ∫ P_S S e^(−x/λ) dλ
@@ -18,6 +19,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -79,10 +81,11 @@ struct RenderSettings {
   // The shared formulas in double (their f64 instantiation) instead of float, the GPU's
   // precision; the ray's accumulators are double either way.
   bool doublePrecision = false;
-  // Projection and light–density: read the raw moments mⱼ(x) = ∫ e^(−(x+aⱼ)/λ) dλ from a table
-  // over x (4096 entries on [0, 16] µm, Catmull–Rom, float: what a GPU keeps in a 1D texture),
-  // built per frame from the same shared closed form in double, instead of evaluating E₁ per
-  // sample; beyond the table, the closed form.
+  // Projection and light–density: read the coefficients cₖ(x) = Σⱼ M(k,j)·mⱼ(x) of e^(−x/λ) on
+  // the orthonormal basis (mⱼ(x) = ∫ e^(−(x+aⱼ)/λ) dλ) from a table over x (4096 entries on
+  // [0, 16] µm, Catmull–Rom, float: what the GPU marcher reads too), built per frame from the
+  // shared closed form in double, instead of evaluating E₁ per sample; beyond the table, the
+  // closed form.
   bool momentTable = true;
   unsigned threads = 0;
 };
@@ -107,6 +110,8 @@ class NebulaRenderer {
   const ExpBasis& basis() const;
   const GreedyResult& lightBasis() const;
   const NebulaModel& model() const;
+  // What it precomputed (nebula_precomputed.h): the GPU marcher uploads these arrays.
+  const NebulaPrecomputed& precomputed() const;
 
  private:
   std::unique_ptr<NebulaPrecomputed> mPre;

@@ -1,5 +1,7 @@
 #include "techniques/nebula/nebula_scene.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -98,6 +100,23 @@ NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads)
   }
   if (n.has("steps")) scene.steps = n.child("steps").integer(schema::Range::closed(1, 100000));
   return scene;
+}
+
+NebulaModel benchNebulaModel(int stars) {
+  NebulaModel m;
+  NoiseParameters noise;
+  noise.resolution = 32;
+  noise.seed = 7;
+  m.density = generateFbm(noise, 0);
+  m.extinction = 3.0;
+  m.filters = "hubble";
+  for (int i = 0; i < stars; ++i) {  // spread on a ring around the centre, 4000–30000 K
+    double t = 2.0 * 3.14159265358979 * i / stars;
+    m.stars.push_back({{0.5 + 0.25 * std::cos(t), 0.5 + 0.1 * std::sin(3 * t), 0.5 + 0.25 * std::sin(t)},
+                       4000.0 + 26000.0 * i / std::max(1, stars - 1), 1.0});
+  }
+  m.camera.width = m.camera.height = 64;
+  return m;
 }
 
 }  // namespace prism::nebula

@@ -21,4 +21,9 @@ struct NebulaScene {
 
 NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads = 0);
 
+// The benchmarks' nebula (prism bench's nebulaFrame rows, prism nebula bench): a 32³ fBm cloud
+// (seed 7), extinction 3, Hubble palette, 64×64 pixels, `stars` stars on a ring around the
+// centre from 4000 to 30000 K. Without emission lines.
+NebulaModel benchNebulaModel(int stars);
+
 }  // namespace prism::nebula

@@ -1,0 +1,214 @@
+#version 450
+// The nebula's ray march (Barrès 2023), one invocation per pixel, front to back with early
+// termination: the GPU twin of NebulaRenderer::render's projection and light–density methods
+// (techniques/nebula/nebula_render.cpp), sample for sample. It writes each pixel's moments on the
+// orthonormalised basis, not its colour: projection, per star s and element j, Σ w_s·cⱼ(g + g_s);
+// light–density, per 2D element k, Σ ρΔt·d_k·cⱼ(g); and the emission lines' colour.
+// nebula_finish.comp turns the moments into channels through the filters' weights, so a filter
+// change re-runs only that pass.
+//
+// Defines: NEBULA_LIGHT_DENSITY selects the light–density method (else projection).
+//
+// Grids are read with texelFetch and interpolated here, between voxel centres as the CPU does
+// (nebula_march.glsl's axis), not by the sampler: hardware trilinear filtering quantises its
+// weights (to 1/256 on most GPUs), which the twin test would measure instead of the march.
+layout(local_size_x = 8, local_size_y = 8) in;
+#include "shared/prelude.glsl"
+#include "shared/nebula_integrals.glsl"
+#include "shared/nebula_march.glsl"
+
+layout(binding = 0) uniform sampler3D uDensity;  // R32F, nx × ny × nz, x fastest
+// RGBA32F, nx × ny × (nz · slabs): four values per voxel a slab, slab s at z ∈ [s·nz, (s+1)·nz):
+// projection, the optical depth g_s (µm) to stars 4s…4s+3; light–density, coefficients 4s…4s+3.
+layout(binding = 1) uniform sampler3D uField;
+
+// The coefficients cₖ(x) of e^(−x/λ) on the orthonormalised basis (nebula_precomputed.h's
+// MomentTable) at x = e·uMomentStep, entry e + 1 (one before 0, two after the end): elements 0…3
+// in momentLo, 4…7 in momentHi.
+layout(std430, binding = 0) readonly buffer MomentLo { vec4 momentLo[]; };
+layout(std430, binding = 1) readonly buffer MomentHi { vec4 momentHi[]; };
+layout(std430, binding = 2) readonly buffer Stars { vec4 stars[]; };  // position (unit cube), luminosity
+layout(std430, binding = 3) readonly buffer Lines { vec4 lines[]; };  // λ (µm), response per channel
+// Per pixel p of P, value v at moments[v·P + p] (neighbouring invocations write neighbouring
+// words): v = s·card + j (projection) or k·card + j (light–density). The ray accumulates into
+// them directly, so the number of stars has no limit but the buffer's size.
+layout(std430, binding = 4) buffer Moments { float moments[]; };
+layout(std430, binding = 5) writeonly buffer LineColour { vec4 lineColour[]; };
+layout(std430, binding = 6) readonly buffer BasisMatrix { float basisM[]; };  // M(k, j) at [8k + j]
+
+uniform ivec2 uSize;
+uniform vec3 uCameraPosition;
+uniform vec3 uForward;
+uniform vec3 uRight;
+uniform vec3 uUp;
+uniform float uTanHalf;
+uniform float uAspect;
+uniform int uSteps;
+uniform float uDepthPerDensity;  // C_T·κ (µm per unit length at ρ = 1)
+uniform float uScattering;       // σ₁
+uniform float uEmission;         // ε
+uniform int uCount;              // stars (projection) or 2D elements (light–density)
+uniform int uCard;               // card(B) ≤ 8
+uniform int uLineCount;
+uniform vec4 uBasisLo;           // the basis's exponents aⱼ (µm), for x beyond the table
+uniform vec4 uBasisHi;
+uniform float uMomentStep;
+uniform int uMomentSize;         // entries from x = 0 to the table's end
+uniform float uBandLoUm;
+uniform float uBandHiUm;
+
+// cₖ(x) for k < 4 (lo) and 4…7 (hi): the table's Catmull–Rom, or beyond it Σⱼ M(k,j)·mⱼ(x) over
+// the raw moments' closed form (the CPU's coefficientsAt in NebulaRenderer::render).
+void coefficients8(float x, out vec4 lo, out vec4 hi) {
+  float u = x / uMomentStep;
+  if (u < float(uMomentSize - 1)) {
+    int i = int(u);
+    vec4 w = nebulaCatmullRomWeights(u - float(i));
+    lo = w.x * momentLo[i] + w.y * momentLo[i + 1] + w.z * momentLo[i + 2] + w.w * momentLo[i + 3];
+    hi = uCard > 4 ? w.x * momentHi[i] + w.y * momentHi[i + 1] + w.z * momentHi[i + 2] + w.w * momentHi[i + 3]
+                   : vec4(0.0f);
+    return;
+  }
+  vec4 mLo = nebulaExpMoments(x, uBasisLo, uBandLoUm, uBandHiUm);
+  vec4 mHi = uCard > 4 ? nebulaExpMoments(x, uBasisHi, uBandLoUm, uBandHiUm) : vec4(0.0f);
+  float c[8];
+  for (int k = 0; k < 8; ++k) {
+    c[k] = 0.0f;
+    for (int j = 0; j <= k && k < uCard; ++j) c[k] += basisM[8 * k + j] * (j < 4 ? mLo[j] : mHi[j - 4]);
+  }
+  lo = vec4(c[0], c[1], c[2], c[3]);
+  hi = vec4(c[4], c[5], c[6], c[7]);
+}
+
+// The segment p + t·d inside the unit cube, as [t0, t1]; false when the ray misses it.
+bool clipToCube(vec3 p, vec3 d, out float t0, out float t1) {
+  t0 = 0.0f;
+  t1 = 1e30f;
+  for (int i = 0; i < 3; ++i) {
+    if (abs(d[i]) < 1e-15f) {
+      if (p[i] < 0.0f || p[i] > 1.0f) return false;
+      continue;
+    }
+    float a = (0.0f - p[i]) / d[i];
+    float b = (1.0f - p[i]) / d[i];
+    t0 = max(t0, min(a, b));
+    t1 = min(t1, max(a, b));
+  }
+  return t1 > t0;
+}
+
+// Where a point falls in the grid: the corners and weights along each axis.
+struct Cell {
+  ivec3 i0;
+  ivec3 i1;
+  vec3 f;
+};
+
+Cell cellAt(vec3 p, ivec3 n) {
+  Cell c;
+  for (int a = 0; a < 3; ++a) {
+    int i0;
+    int i1;
+    float f;
+    nebulaTrilinearAxis(p[a], n[a], i0, i1, f);
+    c.i0[a] = i0;
+    c.i1[a] = i1;
+    c.f[a] = f;
+  }
+  return c;
+}
+
+// DensityGrid::sample: nested lerps, x then y then z; 0 outside the cube.
+float densityAt(vec3 p, Cell c) {
+  if (any(lessThan(p, vec3(0.0f))) || any(greaterThan(p, vec3(1.0f)))) return 0.0f;
+  float v000 = texelFetch(uDensity, ivec3(c.i0.x, c.i0.y, c.i0.z), 0).r;
+  float v100 = texelFetch(uDensity, ivec3(c.i1.x, c.i0.y, c.i0.z), 0).r;
+  float v010 = texelFetch(uDensity, ivec3(c.i0.x, c.i1.y, c.i0.z), 0).r;
+  float v110 = texelFetch(uDensity, ivec3(c.i1.x, c.i1.y, c.i0.z), 0).r;
+  float v001 = texelFetch(uDensity, ivec3(c.i0.x, c.i0.y, c.i1.z), 0).r;
+  float v101 = texelFetch(uDensity, ivec3(c.i1.x, c.i0.y, c.i1.z), 0).r;
+  float v011 = texelFetch(uDensity, ivec3(c.i0.x, c.i1.y, c.i1.z), 0).r;
+  float v111 = texelFetch(uDensity, ivec3(c.i1.x, c.i1.y, c.i1.z), 0).r;
+  float c00 = v000 + (v100 - v000) * c.f.x;
+  float c10 = v010 + (v110 - v010) * c.f.x;
+  float c01 = v001 + (v101 - v001) * c.f.x;
+  float c11 = v011 + (v111 - v011) * c.f.x;
+  float c0 = c00 + (c10 - c00) * c.f.y;
+  float c1 = c01 + (c11 - c01) * c.f.y;
+  return c0 + (c1 - c0) * c.f.z;
+}
+
+// VoxelField::sample for four values of slab `slab`: Σ over corners (x outer, z inner) of the
+// corner's weight × its values.
+vec4 fieldAt(Cell c, int slab, int nz) {
+  ivec3 i[2] = ivec3[2](c.i0, c.i1);
+  vec3 w[2] = vec3[2](vec3(1.0f) - c.f, c.f);
+  vec4 sum = vec4(0.0f);
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b)
+      for (int d = 0; d < 2; ++d)
+        sum += (w[a].x * w[b].y * w[d].z) * texelFetch(uField, ivec3(i[a].x, i[b].y, i[d].z + slab * nz), 0);
+  return sum;
+}
+
+void main() {
+  ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+  if (px.x >= uSize.x || px.y >= uSize.y) return;
+  int pixel = px.y * uSize.x + px.x;  // row 0 at the top, as the CPU's image
+  int pixelCount = uSize.x * uSize.y;
+  int values = uCount * uCard;
+  for (int v = 0; v < values; ++v) moments[v * pixelCount + pixel] = 0.0f;
+  ivec3 n = textureSize(uDensity, 0);
+
+  float u = (2.0f * (float(px.x) + 0.5f) / float(uSize.x) - 1.0f) * uTanHalf * uAspect;
+  float vy = (1.0f - 2.0f * (float(px.y) + 0.5f) / float(uSize.y)) * uTanHalf;
+  vec3 dir = normalize(uForward + u * uRight + vy * uUp);
+  vec3 colour = vec3(0.0f);
+  float t0;
+  float t1;
+  if (clipToCube(uCameraPosition, dir, t0, t1)) {
+    float dt = (t1 - t0) / float(uSteps);
+    float gCam = 0.0f;
+    for (int i = 0; i < uSteps; ++i) {
+      if (nebulaRayOpaque(gCam)) break;
+      vec3 p = uCameraPosition + dir * (t0 + (float(i) + 0.5f) * dt);
+      Cell cell = cellAt(p, n);
+      float rho = densityAt(p, cell);
+      if (rho <= 0.0f) continue;
+      float dg = uDepthPerDensity * rho * dt;
+      float g = gCam + 0.5f * dg;  // the sample sees half of its own step's extinction
+      gCam += dg;
+      for (int l = 0; l < uLineCount; ++l)
+        colour += uEmission * rho * dt * nebulaAttenuation(g, lines[l].x) * lines[l].yzw;
+#ifdef NEBULA_LIGHT_DENSITY
+      vec4 mLo;
+      vec4 mHi;
+      coefficients8(g, mLo, mHi);
+      float w = rho * dt;
+      for (int slab = 0; slab * 4 < uCount; ++slab) {
+        vec4 d = fieldAt(cell, slab, n.z);
+        for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
+          int base = (slab * 4 + c) * uCard;
+          for (int j = 0; j < uCard; ++j)
+            moments[(base + j) * pixelCount + pixel] += w * d[c] * (j < 4 ? mLo[j] : mHi[j - 4]);
+        }
+      }
+#else
+      for (int slab = 0; slab * 4 < uCount; ++slab) {
+        vec4 gs = fieldAt(cell, slab, n.z);
+        for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
+          int s = slab * 4 + c;
+          vec3 toStar = stars[s].xyz - p;
+          float w = nebulaStarWeight(uScattering * rho * dt, stars[s].w, dot(toStar, toStar));
+          vec4 mLo;
+          vec4 mHi;
+          coefficients8(g + gs[c], mLo, mHi);
+          for (int j = 0; j < uCard; ++j)
+            moments[(s * uCard + j) * pixelCount + pixel] += w * (j < 4 ? mLo[j] : mHi[j - 4]);
+        }
+      }
+#endif
+    }
+  }
+  lineColour[pixel] = vec4(colour, 0.0f);
+}

@@ -1,0 +1,226 @@
+#include "techniques/nebula/gpu/nebula_gpu_marcher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <span>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "core/data_files.h"
+#include "core/error.h"
+#include "gpu/compute.h"
+#include "techniques/nebula/nebula_precomputed.h"
+
+namespace prism::nebula {
+namespace {
+
+gpu::Program computeProgram(const char* file, const char* label, std::vector<gpu::ShaderDefine> defines = {}) {
+  gpu::ProgramDesc desc;
+  desc.compute = shaderDirectory() / "passes" / file;
+  desc.includeDirs = {shaderDirectory()};
+  desc.defines = std::move(defines);
+  desc.label = label;
+  return gpu::Program(desc);
+}
+
+// A uniform the variant may have compiled away (the light–density march reads no stars).
+template <class T>
+void setIfActive(const gpu::Program& program, std::string_view name, const T& value) {
+  if (program.hasUniform(name)) program.setUniform(name, value);
+}
+
+// Per-voxel fields of `width` values as an RGBA32F texture of ⌈width/4⌉ slabs stacked along z
+// (nebula_march.comp's uField); a 1×1×1 zero texel for none.
+gpu::Texture3D fieldTexture(int nx, int ny, int nz, int width, const std::vector<const VoxelField*>& fields,
+                            const char* label) {
+  gpu::Texture3DDesc desc;
+  desc.internalFormat = GL_RGBA32F;
+  desc.format = GL_RGBA;
+  desc.label = label;
+  std::vector<float> texels;
+  if (width == 0) {
+    texels.assign(4, 0.0f);
+    desc.texels = texels;
+    return gpu::Texture3D(desc);
+  }
+  const int slabs = (width + 3) / 4;
+  GLint maxDepth = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxDepth);
+  if (static_cast<long>(nz) * slabs > maxDepth)
+    throw Error(fmt::format("nebula --gpu: {} needs {} × {} texels along z, more than this GPU's 3D textures hold ({})",
+                            label, nz, slabs, maxDepth));
+  const std::size_t voxels = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz);
+  texels.assign(voxels * static_cast<std::size_t>(slabs) * 4, 0.0f);
+  // Value c of the fields: field c of one each (the stars' depths), or value c of a single one.
+  for (int c = 0; c < width; ++c) {
+    const VoxelField& f = fields.size() == 1 ? *fields[0] : *fields[static_cast<std::size_t>(c)];
+    const int within = fields.size() == 1 ? c : 0;
+    const auto slab = static_cast<std::size_t>(c / 4), lane = static_cast<std::size_t>(c % 4);
+    for (std::size_t v = 0; v < voxels; ++v)
+      texels[(slab * voxels + v) * 4 + lane] =
+          f.values[v * static_cast<std::size_t>(f.width) + static_cast<std::size_t>(within)];
+  }
+  desc.width = nx;
+  desc.height = ny;
+  desc.depth = nz * slabs;
+  desc.texels = texels;
+  return gpu::Texture3D(desc);
+}
+
+template <class T>
+gpu::Buffer bufferOf(std::vector<T> values, const char* label) {
+  if (values.empty()) values.resize(1);  // GL buffers are never empty; the counts say what is read
+  return gpu::Buffer::fromSpan(std::span<const T>(values), label);
+}
+
+}  // namespace
+
+NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
+    : mRenderer(renderer),
+      mProjection(computeProgram("nebula_march.comp", "nebula march (projection)")),
+      mLightDensity(computeProgram("nebula_march.comp", "nebula march (light-density)", {{"NEBULA_LIGHT_DENSITY", ""}})),
+      mFinish(computeProgram("nebula_finish.comp", "nebula finish")) {
+  const NebulaPrecomputed& pre = renderer.precomputed();
+  const DensityGrid& d = pre.model.density;
+  gpu::Texture3DDesc density;
+  density.width = d.nx;
+  density.height = d.ny;
+  density.depth = d.nz;
+  density.internalFormat = GL_R32F;
+  density.format = GL_RED;
+  density.texels = d.values;
+  density.label = "nebula density";
+  mDensity = gpu::Texture3D(density);
+
+  std::vector<const VoxelField*> depths;
+  for (const VoxelField& f : pre.starDepth) depths.push_back(&f);
+  mStarDepth = fieldTexture(d.nx, d.ny, d.nz, static_cast<int>(depths.size()), depths, "nebula star depths");
+  mLightCoefficients = fieldTexture(d.nx, d.ny, d.nz, pre.lightCount, {&pre.lightCoefficients}, "nebula light coefficients");
+
+  mMomentLo = bufferOf(pre.moments.lo, "nebula moments 0-3");
+  mMomentHi = bufferOf(pre.moments.hi, "nebula moments 4-7");
+  std::vector<glm::vec4> stars, lines;
+  for (const NebulaStar& s : pre.model.stars) stars.emplace_back(glm::vec3(s.position), static_cast<float>(s.luminosity));
+  for (std::size_t l = 0; l < pre.lineLambdaUm.size(); ++l)
+    lines.emplace_back(static_cast<float>(pre.lineLambdaUm[l]), glm::vec3(pre.lineResponse[l]));
+  mStars = bufferOf(stars, "nebula stars");
+  std::vector<float> basisM(64, 0.0f);
+  for (Eigen::Index k = 0; k < pre.basis.m.rows(); ++k)
+    for (Eigen::Index j = 0; j <= k; ++j) basisM[static_cast<std::size_t>(8 * k + j)] = static_cast<float>(pre.basis.m(k, j));
+  mBasisMatrix = bufferOf(basisM, "nebula basis matrix");
+  mLines = bufferOf(lines, "nebula lines");
+
+  // The finish's weights, [(group·3 + channel)·card + j].
+  const auto card = pre.basis.a.size();
+  std::vector<float>& projection = mProjectionWeightValues;
+  std::vector<float>& light = mLightWeightValues;
+  for (const auto& perStar : pre.projectionWeights)
+    for (std::size_t c = 0; c < 3; ++c)
+      for (std::size_t j = 0; j < card; ++j) projection.push_back(static_cast<float>(perStar[c][j]));
+  for (int k = 0; k < pre.lightCount; ++k)
+    for (int c = 0; c < 3; ++c)
+      for (std::size_t j = 0; j < card; ++j)
+        light.push_back(static_cast<float>(pre.lightU[static_cast<std::size_t>((c * pre.lightCount + k) * 8) + j]));
+  mProjectionWeights = bufferOf(projection, "nebula projection weights");
+  mLightWeights = bufferOf(light, "nebula light-density weights");
+}
+
+bool NebulaGpuMarcher::supports(Method method) { return method == Method::Projection || method == Method::LightDensity; }
+
+void NebulaGpuMarcher::march(const RenderSettings& s) {
+  if (!supports(s.method))
+    throw Error(fmt::format("nebula --gpu: the GPU marches projection and light-density, not {}", methodName(s.method)));
+  if (s.steps < 1) throw Error("nebula: steps must be ≥ 1");
+  const NebulaPrecomputed& pre = mRenderer.precomputed();
+  const NebulaModel& m = pre.model;
+  mCard = static_cast<int>(pre.basis.a.size());
+  if (s.basisSize != mCard)
+    throw Error(fmt::format("nebula: the renderer was built for a basis of {} elements, not {}", mCard, s.basisSize));
+  mMarched = s.method;
+  const bool light = s.method == Method::LightDensity;
+  mCount = light ? pre.lightCount : static_cast<int>(m.stars.size());
+  const NebulaCamera& cam = m.camera;
+  const std::size_t pixels = static_cast<std::size_t>(cam.width) * static_cast<std::size_t>(cam.height);
+  const std::size_t momentBytes = std::max<std::size_t>(1, static_cast<std::size_t>(mCount * mCard) * pixels) * sizeof(float);
+  if (mMoments.sizeBytes() != momentBytes) mMoments = gpu::Buffer({momentBytes, nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula moments"});
+  if (mLineColour.sizeBytes() != pixels * sizeof(glm::vec4)) {
+    mLineColour = gpu::Buffer({pixels * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula line colour"});
+    mColour = gpu::Buffer({pixels * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula colour"});
+  }
+
+  // The camera as the CPU marcher builds it, in double, then handed over in float.
+  glm::dvec3 forward = glm::normalize(cam.target - cam.position);
+  glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
+  glm::dvec3 up = glm::cross(right, forward);
+  const gpu::Program& p = light ? mLightDensity : mProjection;
+  p.setUniform("uSize", glm::ivec2(cam.width, cam.height));
+  p.setUniform("uCameraPosition", glm::vec3(cam.position));
+  p.setUniform("uForward", glm::vec3(forward));
+  p.setUniform("uRight", glm::vec3(right));
+  p.setUniform("uUp", glm::vec3(up));
+  p.setUniform("uTanHalf", static_cast<float>(std::tan(cam.fovYDeg * std::numbers::pi / 360.0)));
+  p.setUniform("uAspect", static_cast<float>(static_cast<double>(cam.width) / cam.height));
+  p.setUniform("uSteps", s.steps);
+  p.setUniform("uDepthPerDensity", static_cast<float>(kCtUm * m.extinction));
+  setIfActive(p, "uScattering", static_cast<float>(m.scattering));
+  setIfActive(p, "uEmission", static_cast<float>(m.emission));
+  p.setUniform("uCount", mCount);
+  p.setUniform("uCard", mCard);
+  setIfActive(p, "uLineCount", s.emissionLines ? static_cast<int>(pre.lineLambdaUm.size()) : 0);
+  setIfActive(p, "uBasisLo", pre.basisLo);
+  setIfActive(p, "uBasisHi", pre.basisHi);
+  setIfActive(p, "uMomentStep", static_cast<float>(pre.moments.step));
+  setIfActive(p, "uMomentSize", pre.moments.size);
+  setIfActive(p, "uBandLoUm", static_cast<float>(kBandLoUm));
+  setIfActive(p, "uBandHiUm", static_cast<float>(kBandHiUm));
+  mDensity.bind(0);
+  (light ? mLightCoefficients : mStarDepth).bind(1);
+  mMomentLo.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  mMomentHi.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  mStars.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  mLines.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  mMoments.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+  mLineColour.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  mBasisMatrix.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+  gpu::runCompute(p, {static_cast<GLuint>((cam.width + 7) / 8), static_cast<GLuint>((cam.height + 7) / 8), 1});
+}
+
+NebulaImage NebulaGpuMarcher::finish() {
+  const NebulaCamera& cam = mRenderer.model().camera;
+  const int pixels = cam.width * cam.height;
+  if (mLineColour.sizeBytes() != static_cast<std::size_t>(pixels) * sizeof(glm::vec4))
+    throw Error("nebula: finish() before march()");
+  mFinish.setUniform("uPixelCount", pixels);
+  mFinish.setUniform("uCount", mCount);
+  mFinish.setUniform("uCard", mCard);
+  mMoments.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+  mLineColour.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  (mMarched == Method::LightDensity ? mLightWeights : mProjectionWeights).bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+  mColour.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+  gpu::runCompute1D(mFinish, static_cast<std::size_t>(pixels));
+  std::vector<glm::vec4> colour = mColour.read<glm::vec4>();
+  NebulaImage image{cam.width, cam.height, std::vector<glm::vec3>(colour.size())};
+  for (std::size_t i = 0; i < colour.size(); ++i) image.pixels[i] = glm::vec3(colour[i]);
+  return image;
+}
+
+NebulaImage NebulaGpuMarcher::render(const RenderSettings& settings) {
+  march(settings);
+  return finish();
+}
+
+std::vector<float> NebulaGpuMarcher::readMoments() const { return mMoments.read<float>(); }
+
+const std::vector<float>& NebulaGpuMarcher::finishWeights() const {
+  return mMarched == Method::LightDensity ? mLightWeightValues : mProjectionWeightValues;
+}
+
+std::size_t NebulaGpuMarcher::gpuMemoryBytes() const {
+  return mDensity.sizeBytes() + mStarDepth.sizeBytes() + mLightCoefficients.sizeBytes() + mMomentLo.sizeBytes() +
+         mMomentHi.sizeBytes() + mBasisMatrix.sizeBytes() + mStars.sizeBytes() + mLines.sizeBytes() + mProjectionWeights.sizeBytes() +
+         mLightWeights.sizeBytes() + mMoments.sizeBytes() + mLineColour.sizeBytes() + mColour.sizeBytes();
+}
+
+}  // namespace prism::nebula

@@ -23,7 +23,7 @@ const T& read(Field<T> field, const FrameSettings& s) {
 }
 
 [[noreturn]] void fail(const SettingKey& key, std::string_view value) {
-  throw Error(fmt::format("{}: expected {}, got \"{}\"", key.name, key.expects, value));
+  throw Error(fmt::format("{}: expected {}, got \"{}\"", key.name, key.expects, excerpt(value)));
 }
 
 // "a, b or c".
@@ -243,7 +243,7 @@ long parseInteger(std::string_view what, std::string_view text, long min, long m
   long v = 0;
   auto r = std::from_chars(text.data(), text.data() + text.size(), v);
   if (r.ec != std::errc() || r.ptr != text.data() + text.size() || v < min || v > max) {
-    throw Error(fmt::format("{}: expected a whole number within {}–{}, got \"{}\"", what, min, max, text));
+    throw Error(fmt::format("{}: expected a whole number within {}–{}, got \"{}\"", what, min, max, excerpt(text)));
   }
   return v;
 }

@@ -45,7 +45,7 @@ glm::vec3 parseVec3(const std::string& what, const std::string& text) {
   std::stringstream in(text);
   std::string part;
   for (int i = 0; i < 3; ++i) {
-    if (!std::getline(in, part, ',')) throw Error(fmt::format("{}: expected X,Y,Z, got \"{}\"", what, text));
+    if (!std::getline(in, part, ',')) throw Error(fmt::format("{}: expected X,Y,Z, got \"{}\"", what, excerpt(text)));
     v[i] = render::parseFloat(what, part);
   }
   return v;
@@ -54,7 +54,7 @@ glm::vec3 parseVec3(const std::string& what, const std::string& text) {
 // light.N.spd NAME, light.N.intensity X, light.N.direction X,Y,Z (parts: light, N, what).
 void setLightKey(Scene& scene, const std::string& key, const std::vector<std::string>& parts,
                  const std::string& value) {
-  if (scene.lights.empty()) throw Error(fmt::format("{}: the scene has no lights", key));
+  if (scene.lights.empty()) throw Error(fmt::format("{}: the scene has no lights", excerpt(key)));
   auto i = static_cast<std::size_t>(
       render::parseInteger("light index", parts[1], 0, static_cast<long>(scene.lights.size()) - 1));
   Light& light = scene.lights[i];
@@ -62,10 +62,10 @@ void setLightKey(Scene& scene, const std::string& key, const std::vector<std::st
   else if (parts[2] == "intensity") light.intensity = std::max(0.0f, render::parseFloat(key, value));
   else if (parts[2] == "direction") {
     glm::vec3 d = parseVec3(key, value);
-    if (!(glm::length(d) > 0.0f)) throw Error(fmt::format("{}: expected a non-zero direction", key));
+    if (!(glm::length(d) > 0.0f)) throw Error(fmt::format("{}: expected a non-zero direction", excerpt(key)));
     light.direction = glm::normalize(d);
   } else {
-    throw Error(fmt::format("unknown setting \"{}\" (light.N.spd, intensity, direction)", key));
+    throw Error(fmt::format("unknown setting \"{}\" (light.N.spd, intensity, direction)", excerpt(key)));
   }
 }
 
@@ -74,11 +74,11 @@ void setMaterialKey(Scene& scene, const std::string& key, const std::vector<std:
                     const std::string& value) {
   auto it = std::find_if(scene.materials.begin(), scene.materials.end(),
                          [&](const Material& m) { return m.name == parts[1]; });
-  if (it == scene.materials.end()) throw Error(fmt::format("{}: no material \"{}\"", key, parts[1]));
+  if (it == scene.materials.end()) throw Error(fmt::format("{}: no material \"{}\"", excerpt(key), excerpt(parts[1])));
   if (parts[2] == "base-colour") it->baseColour = glm::clamp(parseVec3(key, value), glm::vec3(0.0f), glm::vec3(1.0f));
   else if (parts[2] == "roughness") it->roughness = std::clamp(render::parseFloat(key, value), 0.0f, 1.0f);
   else if (parts[2] == "metallic") it->metallic = std::clamp(render::parseFloat(key, value), 0.0f, 1.0f);
-  else throw Error(fmt::format("unknown setting \"{}\" (material.NAME.base-colour, roughness, metallic)", key));
+  else throw Error(fmt::format("unknown setting \"{}\" (material.NAME.base-colour, roughness, metallic)", excerpt(key)));
 }
 
 void set(Viewer& viewer, const std::string& key, const std::string& value) {
@@ -113,7 +113,7 @@ void set(Viewer& viewer, const std::string& key, const std::string& value) {
     return;
   }
   throw Error(fmt::format("unknown setting \"{}\" (the frame keys of `prism settings --keys`, right.KEY, split, "
-                          "heat-map, fov, light.N.*, material.NAME.*, water.type, water.depth, sky.*, prt.*)", key));
+                          "heat-map, fov, light.N.*, material.NAME.*, water.type, water.depth, sky.*, prt.*)", excerpt(key)));
 }
 
 void execute(Viewer& viewer, const std::vector<std::string>& w) {
@@ -168,7 +168,7 @@ void execute(Viewer& viewer, const std::vector<std::string>& w) {
          w.size() == 3 ? std::optional<double>(render::parseFloat("soak's memory bound", w[2])) : std::nullopt);
   } else {
     throw Error(fmt::format("unknown command \"{}\" (set, frames, resize, orbit, screenshot, save-settings, "
-                            "load-settings, reload-shaders, soak, heat-map-stats)", verb));
+                            "load-settings, reload-shaders, soak, heat-map-stats)", excerpt(verb)));
   }
 }
 

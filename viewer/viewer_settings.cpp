@@ -16,7 +16,7 @@ namespace {
 
 glm::vec3 vec3Of(const nlohmann::json& j, const std::string& where) {
   if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number()) {
-    throw Error(fmt::format("{}: expected [x, y, z], got {}", where, j.dump()));
+    throw Error(fmt::format("{}: expected [x, y, z], got {}", where, excerpt(j.dump())));
   }
   return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
 }
@@ -26,13 +26,13 @@ glm::vec3 vec3Of(const nlohmann::json& j, const std::string& where) {
 bool applyViewSetting(ViewSettings& view, std::string_view key, std::string_view value) {
   if (key.starts_with("right.")) {
     if (!render::applyFrameSetting(view.right, key.substr(6), value)) {
-      throw Error(fmt::format("unknown setting \"{}\"", key));
+      throw Error(fmt::format("unknown setting \"{}\"", excerpt(key)));
     }
     return true;
   }
   if (render::applyFrameSetting(view.left, key, value)) return true;
   if (key != "split" && key != "heat-map") return false;
-  if (value != "on" && value != "off") throw Error(fmt::format("{}: expected on or off, got \"{}\"", key, value));
+  if (value != "on" && value != "off") throw Error(fmt::format("{}: expected on or off, got \"{}\"", excerpt(key), excerpt(value)));
   (key == "split" ? view.split : view.heatMap) = value == "on";
   return true;
 }
@@ -63,22 +63,22 @@ void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Cam
   for (const auto& [key, value] : j.items()) {
     if (key == "left" || key == "right") {
       render::FrameSettings& side = key == "left" ? next.left : next.right;
-      if (!value.is_object()) throw Error(fmt::format("{}: /{}: expected an object", file, key));
+      if (!value.is_object()) throw Error(fmt::format("{}: /{}: expected an object", file, excerpt(key)));
       for (const auto& [k, v] : value.items()) {
-        if (!v.is_string()) throw Error(fmt::format("{}: /{}/{}: expected a string, got {}", file, key, k, v.dump()));
+        if (!v.is_string()) throw Error(fmt::format("{}: /{}/{}: expected a string, got {}", file, excerpt(key), excerpt(k), excerpt(v.dump())));
         try {
           if (!render::applyFrameSetting(side, k, v.get<std::string>())) throw Error("unknown setting");
         } catch (const Error& e) {
-          throw Error(fmt::format("{}: /{}/{}: {}", file, key, k, e.what()));
+          throw Error(fmt::format("{}: /{}/{}: {}", file, excerpt(key), excerpt(k), e.what()));
         }
       }
       try {
         render::validate(side);
       } catch (const Error& e) {
-        throw Error(fmt::format("{}: /{}: {}", file, key, e.what()));
+        throw Error(fmt::format("{}: /{}: {}", file, excerpt(key), e.what()));
       }
     } else if (key == "split" || key == "heat_map") {
-      if (!value.is_boolean()) throw Error(fmt::format("{}: /{}: expected true or false", file, key));
+      if (!value.is_boolean()) throw Error(fmt::format("{}: /{}: expected true or false", file, excerpt(key)));
       (key == "split" ? next.split : next.heatMap) = value.get<bool>();
     } else if (key == "camera") {
       if (!value.is_object()) throw Error(fmt::format("{}: /camera: expected an object", file));
@@ -89,10 +89,10 @@ void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Cam
         else if (k == "up") nextCamera.up = vec3Of(v, where);
         else if (k == "fov_deg" && v.is_number() && v.get<float>() > 0.0f && v.get<float>() < 180.0f)
           nextCamera.verticalFovDeg = v.get<float>();
-        else throw Error(fmt::format("{}: unknown key or bad value {}", where, v.dump()));
+        else throw Error(fmt::format("{}: unknown key or bad value {}", where, excerpt(v.dump())));
       }
     } else {
-      throw Error(fmt::format("{}: /{}: unknown key (allowed: left, right, split, heat_map, camera)", file, key));
+      throw Error(fmt::format("{}: /{}: unknown key (allowed: left, right, split, heat_map, camera)", file, excerpt(key)));
     }
   }
   glm::vec3 look = nextCamera.target - nextCamera.position;

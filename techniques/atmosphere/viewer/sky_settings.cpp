@@ -25,11 +25,11 @@ bool setSkyKey(Scene& scene, const std::string& key, const std::string& value) {
   else if (k == "turbidity") p.mieAngstromBeta = render::parseFloat(key, value);
   else if (k == "ozone") p.ozoneColumnDu = render::parseFloat(key, value);
   else if (k == "aerosols" || k == "multiple-scattering") {
-    if (value != "on" && value != "off") throw Error(fmt::format("{}: expected on or off, got \"{}\"", key, value));
+    if (value != "on" && value != "off") throw Error(fmt::format("{}: expected on or off, got \"{}\"", excerpt(key), excerpt(value)));
     (k == "aerosols" ? p.aerosols : p.multipleScattering) = value == "on";
   }
   else throw Error(fmt::format("unknown setting \"{}\" (sky.elevation, azimuth, turbidity, ozone, aerosols, "
-                               "multiple-scattering)", key));
+                               "multiple-scattering)", excerpt(key)));
   atmosphere::validate(p);  // nothing changes on an error
   a.parameters = p;
   applyTechniqueLights(scene);

@@ -20,7 +20,7 @@ bool setPrtKey(Scene& scene, const std::string& key, const std::string& value) {
         return true;
       }
     }
-    throw Error("prt.mode: expected spectral, rgb-prt or reference-5nm, got '" + value + "'");
+    throw Error("prt.mode: expected spectral, rgb-prt or reference-5nm, got '" + excerpt(value) + "'");
   }
   if (key == "prt.basis") {
     s->basis = static_cast<int>(render::parseInteger(key, value, 1, shared::kPrtMaxBasis));
@@ -29,7 +29,7 @@ bool setPrtKey(Scene& scene, const std::string& key, const std::string& value) {
     s->illuminant = value;
   } else {
     float degrees = render::parseFloat(key, value);
-    if (!(std::abs(degrees) <= 360.0f)) throw Error("prt.rotation: expected degrees in [-360, 360], got " + value);
+    if (!(std::abs(degrees) <= 360.0f)) throw Error("prt.rotation: expected degrees in [-360, 360], got " + excerpt(value));
     s->rotationDeg = degrees;
   }
   return true;

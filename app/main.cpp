@@ -10,6 +10,7 @@
 #include <map>
 
 #include "app/colour_commands.h"
+#include "app/merge_command.h"
 #include "app/nebula_commands.h"
 #include "app/prt_commands.h"
 #include "app/reference_commands.h"
@@ -304,6 +305,18 @@ int main(int argc, char** argv) {
   referenceCmd->add_option("--seed", ref.seed, "random seed (the image depends on it alone)")->capture_default_str();
   referenceCmd->add_option("--threads", ref.threads, "worker threads (0: all)");
   referenceCmd->add_option("--ev", refEv, "exposure EV100 for the PNG and the display white (default: the scene camera's)");
+  referenceCmd->add_option("--tile", ref.tile,
+                           "I/N: only rows ⌊I·height/N⌋ to ⌊(I+1)·height/N⌋, as a part for `prism merge` (.exr)");
+  referenceCmd->add_option("--samples", ref.samples,
+                           "A:B: only path indices A to B (of --spp) of every pixel, as a part for `prism merge` (.exr)");
+
+  MergeOptions merge;
+  auto* mergeCmd = app.add_subcommand(
+      "merge", "put the parts of a split reference render (--tile, --samples) together into the whole image; "
+               "refuses gaps, overlaps and parts of another render");
+  mergeCmd->add_option("parts", merge.parts, "the part files (.exr)")->required();
+  mergeCmd->add_option("-o,--output", merge.output, "OUT.exr or OUT.png")->required();
+  mergeCmd->add_option("--variance", merge.variance, "also write the per-pixel variance of the mean (EXR)");
 
   CompareOptions cmp;
   double cmpWhite = 0.0;
@@ -452,6 +465,7 @@ int main(int argc, char** argv) {
       if (!refEv.empty()) ref.ev100 = static_cast<float>(parseNumbers(refEv, "--ev").at(0));
       runReference(ref);
     }
+    if (*mergeCmd) runMerge(merge);
     if (*compareCmd) {
       if (whiteOpt->count() > 0) cmp.white = cmpWhite;
       runCompare(cmp);

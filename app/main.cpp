@@ -339,6 +339,10 @@ int main(int argc, char** argv) {
   validateCmd->add_option("--scenes", val.scenes, "folder of the scene files (default: the example scenes)");
   validateCmd->add_flag("--quick", val.quick, "240x135 and fewer paths per pixel (seconds on 2 cores), for CI");
   validateCmd->add_flag("--json", val.json, "JSON output");
+  validateCmd->add_option("--task", val.task,
+                          "I/N: only task I of N's share of the experiments, as a part in OUT/parts (a Slurm array task)");
+  validateCmd->add_flag("--collect", val.collect, "the report from the parts in OUT/parts (after every --task)")
+      ->excludes("--task");
 
   ViewOptions view;
   CliSettings viewSettings;

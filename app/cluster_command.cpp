@@ -8,6 +8,8 @@
 #include "batch/slurm_script.h"
 #include "core/error.h"
 #include "scene/scene_loader.h"
+#include "spectral/colour_space.h"
+#include "spectral/rgb_to_spectrum_optimiser.h"
 
 namespace prism::app {
 namespace {
@@ -150,6 +152,35 @@ void printValidateClusterScript(const ClusterOptions& o) {
   s.finish.name = "prism-validate-collect";
   s.finish.memoryMiB = 256;
   s.finish.command = shellQuote(prismExecutable()) + " validate --collect" + common;
+  fmt::print("{}", batch::slurmScriptText(s));
+}
+
+void printLutClusterScript(const ClusterOptions& o) {
+  const LutOptions& l = o.lut;
+  const std::string gamut = colourSpace(l.gamut).name;
+  if (l.resolution < 2 || l.resolution > 256)
+    throw Error(fmt::format("upsampling table resolution must be within 2–256, got {}", l.resolution));
+  if (o.tasks > tableColumns(l.resolution)) {
+    throw Error(fmt::format("--tasks {}: a {}³ table has {} columns, at most {} tasks", o.tasks, l.resolution,
+                            tableColumns(l.resolution), tableColumns(l.resolution)));
+  }
+  if (l.output.empty()) throw Error("lut: give the output file with -o");
+  batch::SlurmScript s = scriptBase(o, "prism-lut");
+  const std::filesystem::path output = std::filesystem::absolute(l.output);
+  s.logs = output.string() + ".parts";
+  s.summary = fmt::format("prism lut --gamut {} --res {} as {} tasks by columns, then prism merge into {}", gamut,
+                          l.resolution, o.tasks, output.string());
+  s.array.command = shellQuote(prismExecutable()) +
+                    fmt::format(" lut --gamut {} --res {} --part \"$SLURM_ARRAY_TASK_ID/{}\" --threads \"$SLURM_CPUS_PER_TASK\"",
+                                shellQuote(gamut), l.resolution, o.tasks) +
+                    " -o " + shellQuote(s.logs.string()) + fmt::format("/\"part-$SLURM_ARRAY_TASK_ID-of-{}.prismlut\"", o.tasks);
+  // A task holds the whole table (n³ × 9 floats) and its part; the merge the parts and the table.
+  const std::int64_t tableBytes = std::int64_t{l.resolution} * l.resolution * l.resolution * 9 * 4;
+  s.array.memoryMiB = requestMiB(kProcessBytes + 2 * tableBytes);
+  s.finish.name = "prism-lut-merge";
+  s.finish.memoryMiB = requestMiB(kProcessBytes + 3 * tableBytes);
+  s.finish.command = shellQuote(prismExecutable()) + " merge " + shellQuote(s.logs.string()) +
+                     fmt::format("/part-*-of-{}.prismlut", o.tasks) + " -o " + shellQuote(output.string());
   fmt::print("{}", batch::slurmScriptText(s));
 }
 

@@ -1,4 +1,4 @@
-// `prism cluster script reference|validate …`: the bash script that submits Prism's batch work
+// `prism cluster script reference|validate|lut …`: the bash script that submits Prism's batch work
 // to Slurm as an array of --tasks tasks and the job that puts their parts together after them
 // (batch/slurm_script.h), with each job's resources: --cpus per task (prism's --threads), memory
 // estimated from what the task holds (below), and --time. Paths in it are absolute, and the jobs
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/reference_commands.h"
+#include "app/upsampling_commands.h"
 #include "harness/validate.h"
 
 namespace prism::app {
@@ -27,9 +28,12 @@ struct ClusterOptions {
   std::filesystem::path parts;             // default: OUT.parts beside the output
   // validate
   harness::ValidateOptions validate;
+  // lut
+  LutOptions lut;
 };
 
 void printReferenceClusterScript(const ClusterOptions& options);
 void printValidateClusterScript(const ClusterOptions& options);
+void printLutClusterScript(const ClusterOptions& options);
 
 }  // namespace prism::app

@@ -263,6 +263,7 @@ int main(int argc, char** argv) {
   lutCmd->add_option("--threads", lut.threads, "worker threads (0: all)");
   lutCmd->add_flag("--report", lut.report, "measure node and round-trip CIEDE2000 after building");
   lutCmd->add_flag("--json", lut.json, "JSON output");
+  lutCmd->add_option("--part", lut.part, "I/N: only task I of N's columns of the table, as a part for `prism merge`");
 
   UpsampleOptions up;
   std::string upRgb, upWavelengths;
@@ -319,10 +320,10 @@ int main(int argc, char** argv) {
 
   MergeOptions merge;
   auto* mergeCmd = app.add_subcommand(
-      "merge", "put the parts of a split reference render (--tile, --samples) together into the whole image; "
-               "refuses gaps, overlaps and parts of another render");
-  mergeCmd->add_option("parts", merge.parts, "the part files (.exr)")->required();
-  mergeCmd->add_option("-o,--output", merge.output, "OUT.exr or OUT.png")->required();
+      "merge", "put the parts of a split reference render (--tile, --samples) or table (lut --part) together; "
+               "refuses gaps, overlaps and parts of another");
+  mergeCmd->add_option("parts", merge.parts, "the part files (.exr, or a table's)")->required();
+  mergeCmd->add_option("-o,--output", merge.output, "OUT.exr or OUT.png (a table: its file)")->required();
   mergeCmd->add_option("--variance", merge.variance, "also write the per-pixel variance of the mean (EXR)");
 
   ClusterOptions cluster;
@@ -354,6 +355,12 @@ int main(int argc, char** argv) {
   scriptValidateCmd->add_option("--scenes", cluster.validate.scenes, "folder of the scene files (default: the example scenes)");
   scriptValidateCmd->add_flag("--quick", cluster.validate.quick, "240x135 and fewer paths per pixel");
   addClusterOptions(scriptValidateCmd);
+  auto* scriptLutCmd = scriptCmd->add_subcommand(
+      "lut", "`prism lut --part I/N` (a share of the table's 3·res² columns each), then `prism merge`");
+  scriptLutCmd->add_option("--gamut", cluster.lut.gamut, "srgb, display-p3, rec2020, acescg, aces2065-1")->capture_default_str();
+  scriptLutCmd->add_option("--res", cluster.lut.resolution, "nodes per axis (2–256)")->capture_default_str();
+  scriptLutCmd->add_option("-o,--output", cluster.lut.output, "table file to write")->required();
+  addClusterOptions(scriptLutCmd);
 
   CompareOptions cmp;
   double cmpWhite = 0.0;
@@ -513,6 +520,7 @@ int main(int argc, char** argv) {
       printReferenceClusterScript(cluster);
     }
     if (*scriptValidateCmd) printValidateClusterScript(cluster);
+    if (*scriptLutCmd) printLutClusterScript(cluster);
     if (*compareCmd) {
       if (whiteOpt->count() > 0) cmp.white = cmpWhite;
       runCompare(cmp);

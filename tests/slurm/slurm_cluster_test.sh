@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Prism's batch work on a real Slurm cluster of one node, from Debian's packages (slurmctld,
 # slurmd, slurm-client, munge): the test starts munged, slurmctld and slurmd in a folder of its
-# own (its own munge key and socket, a generated slurm.conf on free ports, this machine's CPUs)
-# and stops them at the end, failed or not. Every job goes through `prism cluster script`, as a
+# own (local_cluster.sh: its own munge key and socket, a generated slurm.conf on free ports,
+# this machine's CPUs) and stops them at the end, failed or not. Every job goes through `prism cluster script`, as a
 # user's would:
 #   1. an 8-task reference array by rows and its merge job: bit-identical to the single-process
 #      render with the same seed (cmp of the EXR files, image and variance); the array submitted
@@ -10,7 +10,8 @@
 #   2. a 4-task split by path indices: within 1e-6 relative per pixel of it;
 #   3. a 4-task `validate --quick` sweep and its --collect: results.json and index.html the same
 #      bytes as `prism validate --quick` (the validate_quick test's, this test's fixture);
-#   4. one array task killed mid-run (scancel): no part left behind, the merge job cancelled with
+#   4. a 16³ upsampling table as 4 tasks by columns and its merge: the same bytes as `prism lut`;
+#   5. one array task killed mid-run (scancel): no part left behind, the merge job cancelled with
 #      it; that task alone submitted again: the image of the undisturbed render.
 # Usage: slurm_cluster_test.sh PRISM MAX_RELATIVE_DIFFERENCE SCENES VALIDATE_QUICK_DIR
 # Needs root (munged and slurmd run as the user who runs them, and slurmd as root to start jobs):
@@ -26,88 +27,25 @@ for tool in munged mungekey slurmctld slurmd sbatch squeue scancel scontrol sinf
   command -v "$tool" >/dev/null || { echo "FAIL: $tool is missing (scripts/install-deps.sh installs it)"; exit 1; }
 done
 
+source "$(dirname "$0")/local_cluster.sh"
 T=$(mktemp -d /tmp/prism-slurm.XXXXXX)
-chmod 755 "$T"  # munged wants its socket's folder searchable by all
 started=$SECONDS
-stop_cluster() {
+finish_test() {
   local status=$?
-  if [ -f "$T/slurmctld.pid" ]; then
-    scancel --full --quiet --user="$(id -un)" 2>/dev/null || true
-    for _ in $(seq 50); do [ -z "$(squeue -h 2>/dev/null)" ] && break; sleep 0.2; done
-  fi
-  for daemon in slurmd slurmctld munged; do
-    [ -f "$T/$daemon.pid" ] && kill "$(cat "$T/$daemon.pid")" 2>/dev/null || true
-  done
-  for daemon in slurmd slurmctld munged; do
-    for _ in $(seq 50); do
-      [ -f "$T/$daemon.pid" ] && kill -0 "$(cat "$T/$daemon.pid")" 2>/dev/null || break
-      sleep 0.1
-    done
-  done
   if [ $status -ne 0 ]; then
-    echo "== the daemons' logs (the test failed)"
+    echo "== the daemons' logs and the jobs' output (the test failed)"
     tail -n 20 "$T"/*.log 2>/dev/null || true
     tail -n 5 "$T"/*/*.parts/*.out "$T"/validate/parts/*.out 2>/dev/null || true
   fi
+  stop_local_cluster "$T"
   rm -rf "$T"
   exit $status
 }
-trap stop_cluster EXIT
+trap finish_test EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 
-# A port nothing listens on (bash connects to it; a refused connection means free).
-free_port() {
-  local port
-  while :; do
-    port=$((20000 + RANDOM % 40000))
-    (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null || { echo "$port"; return; }
-  done
-}
-
 echo "== starting munged, slurmctld and slurmd in $T"
-mungekey --create --keyfile="$T/munge.key"
-munged --force --key-file="$T/munge.key" --socket="$T/munge.socket" --pid-file="$T/munged.pid" \
-  --log-file="$T/munged.log" --seed-file="$T/munged.seed"
-node=$(hostname -s)
-ctld_port=$(free_port)
-slurmd_port=$(free_port)
-[ "$ctld_port" != "$slurmd_port" ] || slurmd_port=$(free_port)
-memory_mb=$(awk '/MemTotal/ { print int($2 / 1024) - 256 }' /proc/meminfo)
-mkdir -p "$T/state" "$T/spool"
-cat >"$T/slurm.conf" <<EOF
-ClusterName=prismtest
-SlurmctldHost=$node(127.0.0.1)
-SlurmUser=$(id -un)
-SlurmdUser=$(id -un)
-SlurmctldPort=$ctld_port
-SlurmdPort=$slurmd_port
-AuthType=auth/munge
-AuthInfo=socket=$T/munge.socket
-CredType=cred/munge
-StateSaveLocation=$T/state
-SlurmdSpoolDir=$T/spool
-SlurmctldPidFile=$T/slurmctld.pid
-SlurmdPidFile=$T/slurmd.pid
-SlurmctldLogFile=$T/slurmctld.log
-SlurmdLogFile=$T/slurmd.log
-ProctrackType=proctrack/linuxproc
-TaskPlugin=task/none
-JobAcctGatherType=jobacct_gather/none
-AccountingStorageType=accounting_storage/none
-MpiDefault=none
-SchedulerType=sched/builtin
-SelectType=select/cons_tres
-SelectTypeParameters=CR_Core
-SlurmdParameters=config_overrides
-ReturnToService=2
-NodeName=$node NodeAddr=127.0.0.1 CPUs=$(nproc) RealMemory=$memory_mb State=UNKNOWN
-PartitionName=prism Nodes=ALL Default=YES MaxTime=INFINITE State=UP
-EOF
-export SLURM_CONF=$T/slurm.conf
-slurmctld -i -f "$SLURM_CONF"
-slurmd -f "$SLURM_CONF"
-for _ in $(seq 100); do [ "$(sinfo -h -o %t 2>/dev/null)" = idle ] && break; sleep 0.2; done
-[ "$(sinfo -h -o %t)" = idle ] || fail "the node did not become idle: $(sinfo -h -o '%t %E')"
+start_local_cluster "$T" || fail "the cluster did not start"
 echo "   up after $((SECONDS - started)) s: $(sinfo -h -o '%D node, %c CPUs, state %t')"
 
 # Submits a script of `prism cluster script` (ARGS: task indices to submit again); sets $array, $finish.
@@ -165,7 +103,15 @@ for file in results.json index.html; do
 done
 echo "   results.json and index.html: the same bytes as prism validate --quick's"
 
-echo "== 4. a task killed mid-run, then only it submitted again"
+echo "== 4. an upsampling table as 4 tasks by columns, then merge"
+"$prism" lut --gamut rec2020 --res 16 -o "$T/single.prismlut" >/dev/null 2>&1
+"$prism" cluster script lut --gamut rec2020 --res 16 --tasks 4 -o "$T/lut/table.prismlut" >"$T/lut.sh"
+submit "$T/lut.sh"
+expect_completed "$finish" "the merge of 4 column tasks"
+cmp "$T/single.prismlut" "$T/lut/table.prismlut" || fail "4 column tasks merged are not prism lut's table"
+echo "   the same bytes as prism lut's table"
+
+echo "== 5. a task killed mid-run, then only it submitted again"
 K=(reference "$scenes/spheres_d65.json" --width 64 --height 48 --spp 768 --seed 11)
 "$prism" "${K[@]}" -o "$T/undisturbed.exr" 2>/dev/null
 "$prism" cluster script "${K[@]}" --tasks 4 -o "$T/kill/image.exr" >"$T/kill.sh"

@@ -1,7 +1,7 @@
 #include "app/cluster_command.h"
 
 #include <algorithm>
-#include <unistd.h>
+#include <cstdint>
 
 #include <fmt/format.h>
 

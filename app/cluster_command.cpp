@@ -147,8 +147,9 @@ void printValidateClusterScript(const ClusterOptions& o) {
   // follow the CPUs Slurm gives: LP_NUM_THREADS).
   s.array.command = "env LP_NUM_THREADS=\"$SLURM_CPUS_PER_TASK\" " + shellQuote(prismExecutable()) +
                     fmt::format(" validate --task \"$SLURM_ARRAY_TASK_ID/{}\"", o.tasks) + common;
-  // Measured peak (/usr/bin/time): 183 MiB for a --quick task; a full task's images are 7× larger.
-  s.array.memoryMiB = v.quick ? 512 : 2048;
+  // Measured peaks (/usr/bin/time): 183 MiB for a --quick task of two experiments, 185 and 189 MiB
+  // for full-size tasks of one sphere scene and one reef depth: the renderer's, not the images'.
+  s.array.memoryMiB = 512;
   s.finish.name = "prism-validate-collect";
   s.finish.memoryMiB = 256;
   s.finish.command = shellQuote(prismExecutable()) + " validate --collect" + common;

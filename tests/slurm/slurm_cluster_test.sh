@@ -117,7 +117,7 @@ K=(reference "$scenes/spheres_d65.json" --width 64 --height 48 --spp 768 --seed 
 "$prism" cluster script "${K[@]}" --tasks 4 -o "$T/kill/image.exr" >"$T/kill.sh"
 submit "$T/kill.sh"
 log="$T/kill/image.exr.parts/prism-reference-${array}_2.out"
-for _ in $(seq 600); do [ -s "$log" ] && break; sleep 0.05; done  # tracing has begun: its bar is in the log
+for _ in $(seq 2400); do [ -s "$log" ] && break; sleep 0.05; done  # tracing has begun: its bar is in the log
 [ -s "$log" ] || fail "task 2 did not start"
 scancel "${array}_2"
 [ "$(job_state "${array}_2")" = CANCELLED ] || fail "task 2 was not cancelled"

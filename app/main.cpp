@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <map>
 
+#include "app/cluster_command.h"
 #include "app/colour_commands.h"
+#include "app/merge_command.h"
 #include "app/nebula_commands.h"
 #include "app/prt_commands.h"
 #include "app/reference_commands.h"
@@ -97,6 +99,34 @@ int runBenchmarks(std::vector<std::string> args) {
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;
+}
+
+// The options of `prism reference` that shape one render, also taken by `prism cluster script
+// reference` to write the tasks' command lines.
+void addReferenceOptions(CLI::App* command, prism::app::ReferenceOptions& ref, std::string& refRange, std::string& refEv) {
+  command->add_option("scene", ref.scene, "scene file (JSON, see docs/scene-format.md)")->required();
+  command->add_option("-o,--output", ref.output, "OUT.exr or OUT.png")->required();
+  command->add_option("--variance", ref.variance, "also write the per-pixel variance of the mean (EXR)");
+  command->add_option("--set", ref.sets, "override a scene value: json.path=value (repeatable)");
+  command->add_option("--width", ref.width, "image width")->capture_default_str();
+  command->add_option("--height", ref.height, "image height")->capture_default_str();
+  command->add_option("--spp", ref.samplesPerPixel, "paths per pixel (4 wavelengths each)")->capture_default_str();
+  command->add_option("--transport", ref.transport, "direct (what the rasteriser computes) or global")
+      ->capture_default_str();
+  command->add_option("--max-depth", ref.maxDepth, "global: surface interactions per path at most")
+      ->capture_default_str();
+  command->add_option("--filter", ref.filter, "box (antialiased) or centre (pixel centres, as a rasteriser)")
+      ->capture_default_str();
+  command->add_option("--observer", ref.observer, "cie1931, cie1964 or a camera")->capture_default_str();
+  command->add_option("--camera", ref.camera, "a camera as the observer (raw camera RGB)");
+  command->add_option("--range", refRange, "MIN,MAX nm of the hero wavelengths (within 360–830)");
+  command->add_option("--strategy", ref.strategy,
+                           "importance (observer response), lights (the scene's emission × that response), "
+                           "stratified or uniform")
+      ->capture_default_str();
+  command->add_option("--seed", ref.seed, "random seed (the image depends on it alone)")->capture_default_str();
+  command->add_option("--threads", ref.threads, "worker threads (0: all)");
+  command->add_option("--ev", refEv, "exposure EV100 for the PNG and the display white (default: the scene camera's)");
 }
 
 }  // namespace
@@ -233,6 +263,7 @@ int main(int argc, char** argv) {
   lutCmd->add_option("--threads", lut.threads, "worker threads (0: all)");
   lutCmd->add_flag("--report", lut.report, "measure node and round-trip CIEDE2000 after building");
   lutCmd->add_flag("--json", lut.json, "JSON output");
+  lutCmd->add_option("--part", lut.part, "I/N: only task I of N's columns of the table, as a part for `prism merge`");
 
   UpsampleOptions up;
   std::string upRgb, upWavelengths;
@@ -281,29 +312,55 @@ int main(int argc, char** argv) {
   auto* referenceCmd = app.add_subcommand(
       "reference", "the ground truth: a CPU spectral path tracer (hero wavelengths, Embree) to an EXR "
                    "(linear XYZ in cd/m²) or a PNG");
-  referenceCmd->add_option("scene", ref.scene, "scene file (JSON, see docs/scene-format.md)")->required();
-  referenceCmd->add_option("-o,--output", ref.output, "OUT.exr or OUT.png")->required();
-  referenceCmd->add_option("--variance", ref.variance, "also write the per-pixel variance of the mean (EXR)");
-  referenceCmd->add_option("--set", ref.sets, "override a scene value: json.path=value (repeatable)");
-  referenceCmd->add_option("--width", ref.width, "image width")->capture_default_str();
-  referenceCmd->add_option("--height", ref.height, "image height")->capture_default_str();
-  referenceCmd->add_option("--spp", ref.samplesPerPixel, "paths per pixel (4 wavelengths each)")->capture_default_str();
-  referenceCmd->add_option("--transport", ref.transport, "direct (what the rasteriser computes) or global")
+  addReferenceOptions(referenceCmd, ref, refRange, refEv);
+  referenceCmd->add_option("--tile", ref.tile,
+                           "I/N: only rows ⌊I·height/N⌋ to ⌊(I+1)·height/N⌋, as a part for `prism merge` (.exr)");
+  referenceCmd->add_option("--samples", ref.samples,
+                           "A:B: only path indices A to B (of --spp) of every pixel, as a part for `prism merge` (.exr)");
+
+  MergeOptions merge;
+  auto* mergeCmd = app.add_subcommand(
+      "merge", "put the parts of a split reference render (--tile, --samples) or table (lut --part) together; "
+               "refuses gaps, overlaps and parts of another");
+  mergeCmd->add_option("parts", merge.parts, "the part files (.exr, or a table's)")->required();
+  mergeCmd->add_option("-o,--output", merge.output, "OUT.exr or OUT.png (a table: its file)")->required();
+  mergeCmd->add_option("--variance", merge.variance, "also write the per-pixel variance of the mean (EXR)");
+
+  ClusterOptions cluster;
+  std::string clusterRange, clusterEv;
+  auto* clusterCmd = app.add_subcommand("cluster", "Prism's batch work on a Slurm cluster");
+  clusterCmd->require_subcommand(1);
+  auto* scriptCmd = clusterCmd->add_subcommand(
+      "script", "print a bash script that submits the work as a Slurm array job of --tasks tasks and, after them, "
+                "the job that puts their parts together (bash SCRIPT [INDICES] on a login node)");
+  scriptCmd->require_subcommand(1);
+  auto addClusterOptions = [&](CLI::App* command) {
+    command->add_option("--tasks", cluster.tasks, "array tasks (Slurm --array=0-(N-1))")->required();
+    command->add_option("--cpus", cluster.cpusPerTask, "CPUs per task (--cpus-per-task; prism's --threads)")
+        ->capture_default_str();
+    command->add_option("--time", cluster.time, "time limit of each task, HH:MM:SS")->capture_default_str();
+    command->add_option("--sbatch", cluster.sbatchOptions,
+                        "one more #SBATCH option for both jobs, e.g. --sbatch=--partition=gpu (repeatable)");
+  };
+  auto* scriptReferenceCmd = scriptCmd->add_subcommand(
+      "reference", "`prism reference` split by --split rows (bit-identical) or samples, then `prism merge`");
+  addReferenceOptions(scriptReferenceCmd, cluster.reference, clusterRange, clusterEv);
+  addClusterOptions(scriptReferenceCmd);
+  scriptReferenceCmd->add_option("--split", cluster.split, "rows (--tile I/N) or samples (--samples A:B)")
       ->capture_default_str();
-  referenceCmd->add_option("--max-depth", ref.maxDepth, "global: surface interactions per path at most")
-      ->capture_default_str();
-  referenceCmd->add_option("--filter", ref.filter, "box (antialiased) or centre (pixel centres, as a rasteriser)")
-      ->capture_default_str();
-  referenceCmd->add_option("--observer", ref.observer, "cie1931, cie1964 or a camera")->capture_default_str();
-  referenceCmd->add_option("--camera", ref.camera, "a camera as the observer (raw camera RGB)");
-  referenceCmd->add_option("--range", refRange, "MIN,MAX nm of the hero wavelengths (within 360–830)");
-  referenceCmd->add_option("--strategy", ref.strategy,
-                           "importance (observer response), lights (the scene's emission × that response), "
-                           "stratified or uniform")
-      ->capture_default_str();
-  referenceCmd->add_option("--seed", ref.seed, "random seed (the image depends on it alone)")->capture_default_str();
-  referenceCmd->add_option("--threads", ref.threads, "worker threads (0: all)");
-  referenceCmd->add_option("--ev", refEv, "exposure EV100 for the PNG and the display white (default: the scene camera's)");
+  scriptReferenceCmd->add_option("--parts", cluster.parts, "folder of the parts and job logs (default: OUT.parts)");
+  auto* scriptValidateCmd = scriptCmd->add_subcommand(
+      "validate", "`prism validate --task I/N` (at most 9 tasks, one experiment or more each), then --collect");
+  scriptValidateCmd->add_option("-o,--output", cluster.validate.output, "folder to write")->capture_default_str();
+  scriptValidateCmd->add_option("--scenes", cluster.validate.scenes, "folder of the scene files (default: the example scenes)");
+  scriptValidateCmd->add_flag("--quick", cluster.validate.quick, "240x135 and fewer paths per pixel");
+  addClusterOptions(scriptValidateCmd);
+  auto* scriptLutCmd = scriptCmd->add_subcommand(
+      "lut", "`prism lut --part I/N` (a share of the table's 3·res² columns each), then `prism merge`");
+  scriptLutCmd->add_option("--gamut", cluster.lut.gamut, "srgb, display-p3, rec2020, acescg, aces2065-1")->capture_default_str();
+  scriptLutCmd->add_option("--res", cluster.lut.resolution, "nodes per axis (2–256)")->capture_default_str();
+  scriptLutCmd->add_option("-o,--output", cluster.lut.output, "table file to write")->required();
+  addClusterOptions(scriptLutCmd);
 
   CompareOptions cmp;
   double cmpWhite = 0.0;
@@ -326,6 +383,10 @@ int main(int argc, char** argv) {
   validateCmd->add_option("--scenes", val.scenes, "folder of the scene files (default: the example scenes)");
   validateCmd->add_flag("--quick", val.quick, "240x135 and fewer paths per pixel (seconds on 2 cores), for CI");
   validateCmd->add_flag("--json", val.json, "JSON output");
+  validateCmd->add_option("--task", val.task,
+                          "I/N: only task I of N's share of the experiments, as a part in OUT/parts (a Slurm array task)");
+  validateCmd->add_flag("--collect", val.collect, "the report from the parts in OUT/parts (after every --task)")
+      ->excludes("--task");
 
   ViewOptions view;
   CliSettings viewSettings;
@@ -456,6 +517,14 @@ int main(int argc, char** argv) {
       if (!refEv.empty()) ref.ev100 = static_cast<float>(parseNumbers(refEv, "--ev").at(0));
       runReference(ref);
     }
+    if (*mergeCmd) runMerge(merge);
+    if (*scriptReferenceCmd) {
+      if (!clusterRange.empty()) cluster.reference.range = parseNumbers(clusterRange, "--range");
+      if (!clusterEv.empty()) cluster.reference.ev100 = static_cast<float>(parseNumbers(clusterEv, "--ev").at(0));
+      printReferenceClusterScript(cluster);
+    }
+    if (*scriptValidateCmd) printValidateClusterScript(cluster);
+    if (*scriptLutCmd) printLutClusterScript(cluster);
     if (*compareCmd) {
       if (whiteOpt->count() > 0) cmp.white = cmpWhite;
       runCompare(cmp);

@@ -2,17 +2,78 @@
 
 #include <fmt/format.h>
 
+#include "batch/reference_part.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/task_split.h"
 #include "harness/display_png.h"
 #include "harness/progress_bar.h"
 #include "harness/upsampling_table.h"
 #include "imaging/exr_file.h"
 #include "render/display_transform.h"
 #include "scene/scene_loader.h"
-#include "core/atomic_file.h"
-#include "core/error.h"
 #include "spectral/observer.h"
 
 namespace prism::app {
+namespace {
+
+// The rows and paths the options ask for: all, or a part's.
+reference::ReferenceRegion region(const ReferenceOptions& o, const reference::ReferenceSettings& s) {
+  reference::ReferenceRegion r = reference::ReferenceRegion::whole(s);
+  if (!o.tile.empty()) {
+    TaskIndex tile = parseTaskIndex(o.tile, "--tile");
+    if (tile.count > s.height) {
+      throw Error(fmt::format("--tile {}: {} tiles of rows need at least {} rows, the image has {}", o.tile, tile.count,
+                              tile.count, s.height));
+    }
+    IndexRange rows = shareOf(tile, s.height);
+    r.rowBegin = rows.begin;
+    r.rowEnd = rows.end;
+  }
+  if (!o.samples.empty()) {
+    IndexRange samples = parseIndexRange(o.samples, "--samples");
+    r.sampleBegin = samples.begin;
+    r.sampleEnd = samples.end;
+  }
+  reference::validate(r, s);
+  return r;
+}
+
+// A part of the render: skipped when OUT already holds it whole.
+void runReferencePart(const ReferenceOptions& o, const Scene& scene, const reference::ReferenceSettings& settings,
+                      float ev100) {
+  if (o.output.extension() != ".exr") {
+    throw Error(fmt::format("{}: a part of a render (--tile, --samples) is an .exr file", o.output.string()));
+  }
+  if (!o.variance.empty()) throw Error("--variance: a part holds its variance; name the file to `prism merge`");
+  const reference::ReferenceRegion r = region(o, settings);
+  const batch::ReferencePartHeader header = batch::partHeader(o.scene, o.sets, settings, r, ev100);
+  const std::string what = fmt::format("rows {}–{}, samples {}:{} of {}", r.rowBegin, r.rowEnd - 1, r.sampleBegin,
+                                       r.sampleEnd, settings.samplesPerPixel);
+  std::error_code ec;
+  if (std::filesystem::exists(o.output, ec)) {
+    try {
+      const batch::ReferencePartHeader existing = batch::readReferencePart(o.output).header;
+      if (existing.identity() == header.identity() && existing.region == r) {
+        fmt::print("{}: complete ({}), skipped\n", o.output.string(), what);
+        return;
+      }
+      fmt::print("{}: a part of another render or region; tracing it again\n", o.output.string());
+    } catch (const Error& e) {
+      fmt::print("{}: tracing it again ({})\n", o.output.string(), e.what());
+    }
+  }
+  requireWritable(o.output);
+  const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
+  harness::ProgressBar bar("tracing " + o.output.filename().string());
+  reference::ReferenceImage image = reference::renderReference(
+      scene, table, settings, r, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
+  imaging::requireFiniteOutput(image.tristimulus, o.output.string());
+  batch::writeReferencePart(o.output, header, image);
+  fmt::print("wrote {} ({})\n", o.output.string(), what);
+}
+
+}  // namespace
 
 reference::ReferenceSettings referenceSettings(const ReferenceOptions& o) {
   reference::ReferenceSettings s;
@@ -38,38 +99,49 @@ reference::ReferenceSettings referenceSettings(const ReferenceOptions& o) {
   return s;
 }
 
+void checkReferenceOutputs(const std::filesystem::path& output, const std::filesystem::path& variance) {
+  if (output.extension() != ".png" && output.extension() != ".exr") {
+    throw Error(fmt::format("{}: the output must be a .png or an .exr file", output.string()));
+  }
+  if (!variance.empty() && variance.extension() != ".exr") {
+    throw Error(fmt::format("{}: the variance image must be an .exr file", variance.string()));
+  }
+}
+
+void writeReferenceImage(const reference::ReferenceImage& image, const std::string& observerName, float ev100,
+                         const std::filesystem::path& output, const std::filesystem::path& variance) {
+  const bool camera = observer(observerName).isCamera;
+  imaging::ExrWriteOptions exr{camera ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,
+                               imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour,
+                               render::displayWhiteLuminance(ev100)};
+  imaging::requireFiniteOutput(image.tristimulus, output.string());
+  if (output.extension() == ".exr") {
+    imaging::writeExr(output, image.tristimulus, exr);
+  } else {
+    render::DisplaySettings display;
+    display.ev100 = ev100;
+    harness::displayImage(image.tristimulus, display, observer(observerName), ev100).write(output);
+  }
+  // The variance is in squared units and no colour: not something compare should take for one.
+  if (!variance.empty()) imaging::writeExr(variance, image.variance, {.colour = imaging::ColourMeaning::OtherRgb});
+}
+
 void runReference(const ReferenceOptions& o) {
-  std::string extension = o.output.extension().string();
-  if (extension != ".png" && extension != ".exr") {
-    throw Error(fmt::format("{}: the output must be a .png or an .exr file", o.output.string()));
-  }
-  if (!o.variance.empty() && o.variance.extension() != ".exr") {
-    throw Error(fmt::format("{}: the variance image must be an .exr file", o.variance.string()));
-  }
+  if (o.tile.empty() && o.samples.empty()) checkReferenceOutputs(o.output, o.variance);
   Scene scene = loadScene(o.scene, o.sets);
   reference::ReferenceSettings settings = referenceSettings(o);
+  const float ev100 = o.ev100.value_or(scene.camera.ev100);
+  if (!o.tile.empty() || !o.samples.empty()) {
+    runReferencePart(o, scene, settings, ev100);
+    return;
+  }
   requireWritable(o.output);
   if (!o.variance.empty()) requireWritable(o.variance);
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::ProgressBar bar("tracing " + o.output.filename().string());
   reference::ReferenceImage image = reference::renderReference(
       scene, table, settings, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
-
-  const bool camera = observer(settings.observer).isCamera;
-  const float ev100 = o.ev100.value_or(scene.camera.ev100);
-  imaging::ExrWriteOptions exr{camera ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,
-                               imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour,
-                               render::displayWhiteLuminance(ev100)};
-  imaging::requireFiniteOutput(image.tristimulus, o.output.string());
-  if (extension == ".exr") {
-    imaging::writeExr(o.output, image.tristimulus, exr);
-  } else {
-    render::DisplaySettings display;
-    display.ev100 = ev100;
-    harness::displayImage(image.tristimulus, display, observer(settings.observer), ev100).write(o.output);
-  }
-  // The variance is in squared units and no colour: not something compare should take for one.
-  if (!o.variance.empty()) imaging::writeExr(o.variance, image.variance, {.colour = imaging::ColourMeaning::OtherRgb});
+  writeReferenceImage(image, settings.observer, ev100, o.output, o.variance);
   fmt::print("wrote {} ({}x{}, {} paths per pixel, {} lighting)\n", o.output.string(), settings.width,
              settings.height, settings.samplesPerPixel, o.transport);
 }

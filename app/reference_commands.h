@@ -1,6 +1,8 @@
 // `prism reference`: a scene through the CPU spectral path tracer (prism::reference), to an EXR
 // of linear tristimulus (XYZ in cd/m², or raw camera RGB) or a PNG after the same display
-// transform as `prism render`.
+// transform as `prism render`. With --tile I/N or --samples A:B, one part of the render (a task
+// of a Slurm array; batch/reference_part.h), which is skipped when its part file is already
+// complete, so that running the array again does only what is missing.
 #pragma once
 
 #include <cstdint>
@@ -31,8 +33,19 @@ struct ReferenceOptions {
   std::uint32_t seed = 0;
   unsigned threads = 0;
   std::optional<float> ev100;      // for the PNG and the display white (default: the scene's)
+  std::string tile;                // "I/N": rows ⌊I·height/N⌋ to ⌊(I+1)·height/N⌋ only (a part)
+  std::string samples;             // "A:B": path indices A to B of every pixel only (a part)
 };
 reference::ReferenceSettings referenceSettings(const ReferenceOptions& options);
 void runReference(const ReferenceOptions& options);
+
+// Error naming the file unless `output` is .exr or .png and `variance` (when given) is .exr.
+void checkReferenceOutputs(const std::filesystem::path& output, const std::filesystem::path& variance);
+
+// A whole reference image as `prism reference` writes it (and `prism merge`, the same bytes):
+// OUT.exr of tristimulus for `observerName` with the display white of `ev100`, or OUT.png after
+// the display transform; the variance EXR when `variance` is not empty. Refuses non-finite pixels.
+void writeReferenceImage(const reference::ReferenceImage& image, const std::string& observerName, float ev100,
+                         const std::filesystem::path& output, const std::filesystem::path& variance);
 
 }  // namespace prism::app

@@ -1,6 +1,6 @@
 #include "app/upsampling_commands.h"
 
-#include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
@@ -11,9 +11,11 @@
 #include "spectral/colour_space.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/task_split.h"
 #include "spectral/rgb_intent.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
+#include "spectral/rgb_to_spectrum_part.h"
 #include "spectral/rgb_to_spectrum_quality.h"
 #include "spectral/spectrum.h"
 
@@ -40,11 +42,47 @@ void printError(const char* what, const UpsamplingError& e) {
              e.minReflectance, e.maxReflectance, e.worstRgb.x, e.worstRgb.y, e.worstRgb.z);
 }
 
+// Task I of N's columns of the table, as a part for `prism merge`.
+void runLutPart(const LutOptions& o, const std::string& gamut) {
+  if (o.report || o.json) throw Error("--report, --json: measure the merged table (prism lut --part writes a part)");
+  if (o.resolution < 2 || o.resolution > 256)
+    throw Error(fmt::format("upsampling table resolution must be within 2–256, got {}", o.resolution));
+  const TaskIndex task = parseTaskIndex(o.part, "--part");
+  const int columns = tableColumns(o.resolution);
+  if (task.count > columns) {
+    throw Error(fmt::format("--part {}: a {}³ table has {} columns, at most {} tasks", o.part, o.resolution, columns,
+                            columns));
+  }
+  const IndexRange share = shareOf(task, columns);
+  const std::string what = fmt::format("columns {}:{} of {}", share.begin, share.end, columns);
+  if (isTablePart(o.output)) {
+    try {
+      RgbToSpectrumPart existing = loadTablePart(o.output);
+      if (existing.gamut == gamut && existing.resolution == o.resolution && existing.columns == share) {
+        fmt::print("{}: complete ({}), skipped\n", o.output, what);
+        return;
+      }
+    } catch (const Error& e) {
+      fmt::print("{}: building it again ({})\n", o.output, e.what());
+    }
+  }
+  requireWritable(o.output);
+  harness::ProgressBar bar(fmt::format("lut {} {}³ part {}", gamut, o.resolution, o.part));
+  RgbToSpectrumTable table = buildRgbToSpectrumTable(
+      {gamut, o.resolution, o.threads, [&](std::size_t done, std::size_t total) { bar.update(done, total); }}, share);
+  saveTablePart(o.output, tablePart(table, share));
+  fmt::print("wrote {} ({} table, {})\n", o.output, gamut, what);
+}
+
 }  // namespace
 
 void runLut(const LutOptions& o) {
   const std::string gamut = colourSpace(o.gamut).name;  // unknown names fail before any work
   if (o.output.empty()) throw Error("lut: give the output file with -o");
+  if (!o.part.empty()) {
+    runLutPart(o, gamut);
+    return;
+  }
   requireWritable(o.output);
   harness::ProgressBar bar("lut " + gamut + " " + std::to_string(o.resolution) + "³");
   auto start = std::chrono::steady_clock::now();

@@ -1,5 +1,6 @@
-// `prism lut` (build an upsampling table) and `prism upsample` (one colour → coefficients and
-// spectrum), for people (text) and scripts (--json).
+// `prism lut` (build an upsampling table; with --part I/N only task I of N's share of its columns,
+// for `prism merge`: spectral/rgb_to_spectrum_part.h) and `prism upsample` (one colour →
+// coefficients and spectrum), for people (text) and scripts (--json).
 #pragma once
 
 #include <string>
@@ -16,6 +17,7 @@ struct LutOptions {
   unsigned threads = 0;
   bool report = false;  // node and round-trip quality after building
   bool json = false;
+  std::string part;     // "I/N": only task I of N's columns, as a part (skipped when already there)
 };
 void runLut(const LutOptions& options);
 

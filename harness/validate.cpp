@@ -12,6 +12,7 @@
 #include "harness/html_report.h"
 #include "harness/progress_bar.h"
 #include "harness/upsampling_table.h"
+#include "harness/validate_parts.h"
 #include "imaging/exr_file.h"
 #include "imaging/heatmap.h"
 #include "imaging/image_difference.h"
@@ -21,6 +22,8 @@
 #include "scene/scene_loader.h"
 #include "core/atomic_file.h"
 #include "core/data_files.h"
+#include "core/error.h"
+#include "core/task_split.h"
 
 namespace prism::harness {
 namespace {
@@ -267,49 +270,63 @@ std::string indexHtml(const std::vector<Result>& results, const std::vector<std:
   return page.html();
 }
 
+nlohmann::json resultJson(const Result& r) {
+  nlohmann::json row = {{"scene", r.scene}, {"mode", r.mode}, {"mean_delta_e", r.stats.meanDeltaE},
+                        {"median_delta_e", r.stats.medianDeltaE}, {"p95_delta_e", r.stats.p95DeltaE},
+                        {"max_delta_e", r.stats.maxDeltaE}, {"mae_8bit", r.stats.mae8},
+                        {"relative_error", r.stats.relativeError}};
+  if (!std::isnan(r.meanVsGlobal)) row["mean_delta_e_vs_multiple_scattering"] = r.meanVsGlobal;
+  return row;
+}
+
+// A row of a part (validate_parts.h) as its Result: what the report and the bounds read of it.
+Result resultFromJson(const nlohmann::json& row) {
+  Result r;
+  try {
+    r.scene = row.at("scene").get<std::string>();
+    r.mode = row.at("mode").get<std::string>();
+    r.stats.meanDeltaE = row.at("mean_delta_e").get<double>();
+    r.stats.medianDeltaE = row.at("median_delta_e").get<double>();
+    r.stats.p95DeltaE = row.at("p95_delta_e").get<double>();
+    r.stats.maxDeltaE = row.at("max_delta_e").get<double>();
+    r.stats.mae8 = row.at("mae_8bit").get<double>();
+    r.stats.relativeError = row.at("relative_error").get<double>();
+    if (row.contains("mean_delta_e_vs_multiple_scattering"))
+      r.meanVsGlobal = row.at("mean_delta_e_vs_multiple_scattering").get<double>();
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(fmt::format("validate --collect: a result row of {} {}: {}", row.value("scene", "?"),
+                            row.value("mode", "?"), excerpt(e.what())));
+  }
+  return r;
+}
+
+nlohmann::json sizesJson(const Sizes& sizes) {
+  return {{"width", sizes.width}, {"height", sizes.height},
+          {"reference_paths_per_pixel", {{"spheres", sizes.spheresSpp}, {"reef", sizes.reefSpp},
+                                         {"reef_multiple_scattering", sizes.reefGlobalSpp}}}};
+}
+
 nlohmann::json toJson(const std::vector<Result>& results, const std::vector<std::string>& failures,
                       const Sizes& sizes) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const Result& r : results) {
-    nlohmann::json row = {{"scene", r.scene}, {"mode", r.mode}, {"mean_delta_e", r.stats.meanDeltaE},
-                          {"median_delta_e", r.stats.medianDeltaE}, {"p95_delta_e", r.stats.p95DeltaE},
-                          {"max_delta_e", r.stats.maxDeltaE}, {"mae_8bit", r.stats.mae8},
-                          {"relative_error", r.stats.relativeError}};
-    if (!std::isnan(r.meanVsGlobal)) row["mean_delta_e_vs_multiple_scattering"] = r.meanVsGlobal;
-    rows.push_back(row);
-  }
-  return {{"width", sizes.width}, {"height", sizes.height},
-          {"reference_paths_per_pixel", {{"spheres", sizes.spheresSpp}, {"reef", sizes.reefSpp},
-                                         {"reef_multiple_scattering", sizes.reefGlobalSpp}}},
-          {"results", rows}, {"failures", failures}};
+  for (const Result& r : results) rows.push_back(resultJson(r));
+  nlohmann::json json = sizesJson(sizes);
+  json["results"] = rows;
+  json["failures"] = failures;
+  return json;
 }
 
-}  // namespace
+// The experiments, in the order of the report: the sphere scenes, then the reef's depths.
+constexpr std::size_t kExperiments = std::size(kSphereScenes) + std::size(kReefDepthsM);
+std::string experimentName(std::size_t e) {
+  return e < std::size(kSphereScenes) ? kSphereScenes[e].name : reefName(kReefDepthsM[e - std::size(kSphereScenes)]);
+}
+// Progress steps: the reference (the reef's two), then one per mode.
+std::size_t experimentSteps(std::size_t e) { return (e < std::size(kSphereScenes) ? 1 : 2) + std::size(kModes); }
 
-int runValidate(const ValidateOptions& o) {
-  const Sizes sizes = o.quick ? Sizes{240, 135, 64, 32, 8} : Sizes{640, 360, 256, 128, 64};
-  const std::filesystem::path sceneDir = o.scenes.empty() ? exampleSceneDirectory() : o.scenes;
-  std::filesystem::create_directories(o.output);
-  gpu::HeadlessContext context;
-
-  std::vector<Result> results;
-  ProgressBar bar("validate");
-  const std::size_t total = std::size(kSphereScenes) * (1 + std::size(kModes)) +
-                            std::size(kReefDepthsM) * (2 + std::size(kModes));
-  Experiment experiment(o.output, sizes, bar, total);
-  auto load = [&](const std::string& name, const std::vector<std::string>& sets) {
-    return loadScene(sceneDir / (name + ".json"), sets);
-  };
-  for (const SphereScene& e : kSphereScenes) {
-    std::vector<std::string> sets;
-    if (e.set) sets.push_back(e.set);
-    experiment.run(load(e.scene, sets), e.name, false, sizes.spheresSpp, 0, results);
-  }
-  for (float depth : kReefDepthsM) {
-    Scene reef = load("reef", {"water.type=I", fmt::format("water.depth={:g}", depth)});
-    experiment.run(reef, reefName(depth), true, sizes.reefSpp, sizes.reefGlobalSpp, results);
-  }
-
+// results.json and index.html of all the experiments, the table (or the JSON) printed and the
+// bounds checked: 0 when every bound holds.
+int report(const ValidateOptions& o, const Sizes& sizes, const std::vector<Result>& results) {
   std::vector<std::string> failures;
   for (const Bound& b : kBounds) {
     for (const Result& r : results) {
@@ -330,6 +347,73 @@ int runValidate(const ValidateOptions& o) {
   }
   for (const std::string& f : failures) fmt::print(stderr, "prism: validate: bound broken: {}\n", f);
   return failures.empty() ? 0 : 1;
+}
+
+}  // namespace
+
+int runValidate(const ValidateOptions& o) {
+  const Sizes sizes = o.quick ? Sizes{240, 135, 64, 32, 8} : Sizes{640, 360, 256, 128, 64};
+  const std::filesystem::path sceneDir = o.scenes.empty() ? exampleSceneDirectory() : o.scenes;
+  const nlohmann::json identity = {{"sizes", sizesJson(sizes)}, {"scenes", std::filesystem::absolute(sceneDir).string()}};
+  std::vector<std::string> names;
+  for (std::size_t e = 0; e < kExperiments; ++e) names.push_back(experimentName(e));
+
+  if (o.collect) {
+    std::vector<Result> results;
+    for (const nlohmann::json& row : collectValidateParts(o.output, identity, names)) results.push_back(resultFromJson(row));
+    return report(o, sizes, results);
+  }
+  IndexRange share{0, static_cast<int>(kExperiments)};
+  std::filesystem::path partPath;
+  if (!o.task.empty()) {
+    TaskIndex task = parseTaskIndex(o.task, "--task");
+    if (task.count > static_cast<int>(kExperiments))
+      throw Error(fmt::format("--task {}: the {} experiments make at most {} tasks", o.task, kExperiments, kExperiments));
+    share = shareOf(task, static_cast<int>(kExperiments));
+    partPath = validatePartPath(o.output, task);
+    try {
+      ValidatePart existing = readValidatePart(partPath);
+      if (existing.identity == identity &&
+          existing.experiments == std::vector<std::string>(names.begin() + share.begin, names.begin() + share.end)) {
+        fmt::print("{}: complete, skipped\n", partPath.string());
+        return 0;
+      }
+    } catch (const Error&) {
+      // Missing or unreadable: this task's work is still to do.
+    }
+  }
+
+  std::filesystem::create_directories(o.output);
+  gpu::HeadlessContext context;
+  std::vector<Result> results;
+  ProgressBar bar("validate");
+  std::size_t total = 0;
+  for (int e = share.begin; e < share.end; ++e) total += experimentSteps(static_cast<std::size_t>(e));
+  Experiment experiment(o.output, sizes, bar, total);
+  auto load = [&](const std::string& name, const std::vector<std::string>& sets) {
+    return loadScene(sceneDir / (name + ".json"), sets);
+  };
+  for (int e = share.begin; e < share.end; ++e) {
+    const std::size_t k = static_cast<std::size_t>(e);
+    if (k < std::size(kSphereScenes)) {
+      const SphereScene& sphere = kSphereScenes[k];
+      std::vector<std::string> sets;
+      if (sphere.set) sets.push_back(sphere.set);
+      experiment.run(load(sphere.scene, sets), sphere.name, false, sizes.spheresSpp, 0, results);
+    } else {
+      const float depth = kReefDepthsM[k - std::size(kSphereScenes)];
+      Scene reef = load("reef", {"water.type=I", fmt::format("water.depth={:g}", depth)});
+      experiment.run(reef, reefName(depth), true, sizes.reefSpp, sizes.reefGlobalSpp, results);
+    }
+  }
+  if (partPath.empty()) return report(o, sizes, results);
+
+  ValidatePart part{identity, std::vector<std::string>(names.begin() + share.begin, names.begin() + share.end),
+                    nlohmann::json::array()};
+  for (const Result& r : results) part.results.push_back(resultJson(r));
+  writeValidatePart(partPath, part);
+  fmt::print("wrote {} ({} of {} experiments)\n", partPath.string(), share.size(), kExperiments);
+  return 0;
 }
 
 }  // namespace prism::harness

@@ -12,6 +12,9 @@
 // DIR/results.json, prints the table, and fails (exit 1) when a bound below is broken:
 //   spheres under D65, Jakob–Hanika, 16 wavelengths a frame, accumulated: mean ΔE00 ≤ 0.5
 //   spheres under the blue LED, the same: mean ΔE00 ≤ 1.0
+// Split across tasks (a Slurm array, validate_parts.h): `--task I/N` runs task I's share of the
+// nine experiments (four sphere scenes, five reef depths) and writes its part; `--collect`
+// writes DIR/results.json and DIR/index.html from the parts, the same files a whole run writes.
 #pragma once
 
 #include <filesystem>
@@ -23,8 +26,10 @@ struct ValidateOptions {
   std::filesystem::path scenes;  // default: the example scenes
   bool quick = false;            // 240×135, 64 paths per pixel (CI); else 640×360, 256
   bool json = false;             // print results.json instead of the table
+  std::string task;              // "I/N": only task I of N's experiments, into DIR/parts (skipped when there)
+  bool collect = false;          // the report from DIR/parts instead of running experiments
 };
-// 0 when every bound holds, 1 otherwise (the report is written either way).
+// 0 when every bound holds, 1 otherwise (the report is written either way); a task: 0.
 int runValidate(const ValidateOptions& options);
 
 }  // namespace prism::harness

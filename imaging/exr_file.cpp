@@ -50,48 +50,6 @@ std::string oneLine(std::string text) {
   return excerpt(text, 200);
 }
 
-// OpenEXR trusts an attribute's stated size: a 793-byte file claiming a 1.6 GB attribute kept it
-// busy for seconds (found by fuzzing). The first header's attributes (name, type, size, value;
-// an empty name ends it) must each fit in what is left of the file.
-void checkHeaderSizes(const std::filesystem::path& path) {
-  // The header only, read as it is walked: an EXR's pixels may be gigabytes that OpenEXR reads next.
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return;  // OpenEXR reports it
-  const std::uint64_t fileSize = static_cast<std::uint64_t>(in.tellg());
-  in.seekg(0);
-  unsigned char head[8] = {};
-  const unsigned char magic[4] = {0x76, 0x2f, 0x31, 0x01};
-  if (!in.read(reinterpret_cast<char*>(head), 8) || !std::equal(magic, magic + 4, head)) return;  // OpenEXR says what it is not
-  // Names and type names are at most 31 bytes, or 255 with the long-names flag (OpenEXR's file
-  // layout, "Version Field"); OpenEXR reads past a longer one as if it had ended there.
-  const std::uint32_t version = head[4] | head[5] << 8 | head[6] << 16 | static_cast<std::uint32_t>(head[7]) << 24;
-  const std::size_t longest = (version & 0x400u) != 0 ? 255 : 31;
-  auto readString = [&](const char* what) {
-    std::string text;
-    char c = 0;
-    while (in.get(c) && c != 0 && text.size() <= longest) text.push_back(c);
-    if (!in || c != 0)
-      throw Error(path.string() + ": malformed EXR header: an attribute's " + what + " does not end");
-    return text;
-  };
-  while (true) {
-    std::string name = readString("name");
-    if (name.empty()) return;
-    readString("type");
-    unsigned char size4[4] = {};
-    if (!in.read(reinterpret_cast<char*>(size4), 4))
-      throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' has no size");
-    const std::int64_t size = static_cast<std::int32_t>(size4[0] | size4[1] << 8 | size4[2] << 16 |
-                                                        static_cast<std::uint32_t>(size4[3]) << 24);
-    const std::uint64_t left = fileSize - static_cast<std::uint64_t>(in.tellg());
-    if (size < 0 || static_cast<std::uint64_t>(size) > left) {
-      throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' claims " +
-                  std::to_string(size) + " bytes, " + std::to_string(left) + " are left");
-    }
-    in.seekg(size, std::ios::cur);
-  }
-}
-
 std::vector<std::string> channelNamesToWrite(const FloatImage& image, const ExrWriteOptions& options) {
   if (image.channels == 1) return {"Y"};
   bool xyz = options.names == ExrChannelNames::Xyz ||
@@ -158,9 +116,49 @@ void writeExr(const std::filesystem::path& path, const FloatImage& image, const 
   writeFileAtomically(path, stream.str());
 }
 
+void checkExrHeaderSizes(const std::filesystem::path& path) {
+  // The first header's attributes: name, type, size, value; an empty name ends it.
+  // The header only, read as it is walked: an EXR's pixels may be gigabytes that OpenEXR reads next.
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return;  // OpenEXR reports it
+  const std::uint64_t fileSize = static_cast<std::uint64_t>(in.tellg());
+  in.seekg(0);
+  unsigned char head[8] = {};
+  const unsigned char magic[4] = {0x76, 0x2f, 0x31, 0x01};
+  if (!in.read(reinterpret_cast<char*>(head), 8) || !std::equal(magic, magic + 4, head)) return;  // OpenEXR says what it is not
+  // Names and type names are at most 31 bytes, or 255 with the long-names flag (OpenEXR's file
+  // layout, "Version Field"); OpenEXR reads past a longer one as if it had ended there.
+  const std::uint32_t version = head[4] | head[5] << 8 | head[6] << 16 | static_cast<std::uint32_t>(head[7]) << 24;
+  const std::size_t longest = (version & 0x400u) != 0 ? 255 : 31;
+  auto readString = [&](const char* what) {
+    std::string text;
+    char c = 0;
+    while (in.get(c) && c != 0 && text.size() <= longest) text.push_back(c);
+    if (!in || c != 0)
+      throw Error(path.string() + ": malformed EXR header: an attribute's " + what + " does not end");
+    return text;
+  };
+  while (true) {
+    std::string name = readString("name");
+    if (name.empty()) return;
+    readString("type");
+    unsigned char size4[4] = {};
+    if (!in.read(reinterpret_cast<char*>(size4), 4))
+      throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' has no size");
+    const std::int64_t size = static_cast<std::int32_t>(size4[0] | size4[1] << 8 | size4[2] << 16 |
+                                                        static_cast<std::uint32_t>(size4[3]) << 24);
+    const std::uint64_t left = fileSize - static_cast<std::uint64_t>(in.tellg());
+    if (size < 0 || static_cast<std::uint64_t>(size) > left) {
+      throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' claims " +
+                  std::to_string(size) + " bytes, " + std::to_string(left) + " are left");
+    }
+    in.seekg(size, std::ios::cur);
+  }
+}
+
 ExrImage readExr(const std::filesystem::path& path) {
   try {
-    checkHeaderSizes(path);
+    checkExrHeaderSizes(path);
     Imf::InputFile file(path.c_str());
     const Imf::Header& header = file.header();
     const Imf::ChannelList& channels = header.channels();

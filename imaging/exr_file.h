@@ -56,4 +56,9 @@ inline constexpr int kMaxExrSide = 16384;
 // file and for an image wider or higher than kMaxExrSide.
 ExrImage readExr(const std::filesystem::path& path);
 
+// OpenEXR trusts an attribute's stated size (a 793-byte file claiming a 1.6 GB attribute kept it
+// busy for seconds; found by fuzzing): Error naming the file and the attribute unless every
+// attribute of the first header fits in what is left of the file. readExr and readExrBand call it.
+void checkExrHeaderSizes(const std::filesystem::path& path);
+
 }  // namespace prism::imaging

@@ -498,36 +498,53 @@ void validate(const ReferenceSettings& s) {
   observer(s.observer);  // throws naming it when unknown
 }
 
+void validate(const ReferenceRegion& r, const ReferenceSettings& s) {
+  if (r.rowBegin < 0 || r.rowBegin >= r.rowEnd || r.rowEnd > s.height) {
+    throw Error(fmt::format("rows {}:{} are not a range of the image's {}", r.rowBegin, r.rowEnd, s.height));
+  }
+  if (r.sampleBegin < 0 || r.sampleBegin >= r.sampleEnd || r.sampleEnd > s.samplesPerPixel) {
+    throw Error(fmt::format("--samples {}:{} is not a range of the {} paths per pixel (0 ≤ A < B ≤ {})",
+                            r.sampleBegin, r.sampleEnd, s.samplesPerPixel, s.samplesPerPixel));
+  }
+}
+
 ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& table,
                                const ReferenceSettings& settings, const ReferenceProgress& progress) {
+  return renderReference(scene, table, settings, ReferenceRegion::whole(settings), progress);
+}
+
+ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& table,
+                               const ReferenceSettings& settings, const ReferenceRegion& region,
+                               const ReferenceProgress& progress) {
   validate(settings);
+  validate(region, settings);
   for (const auto& section : scene.techniques.all()) {
     if (std::string_view why = section->notTracedBecause(); !why.empty())
       throw Error(fmt::format("{}: {}", scene.file.string(), why));
   }
   PathTracer tracer(scene, table, settings);
-  const int width = settings.width, height = settings.height;
-  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  const int width = settings.width, rows = region.rows();
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(rows);
   std::vector<Eigen::Vector3d> sum(pixels, Eigen::Vector3d::Zero()), sumSquares = sum;
 
-  const int passes = (settings.samplesPerPixel + kPassSamples - 1) / kPassSamples;
-  const std::size_t total = static_cast<std::size_t>(passes) * static_cast<std::size_t>(height);
+  const int passes = (region.samples() + kPassSamples - 1) / kPassSamples;
+  const std::size_t total = static_cast<std::size_t>(passes) * static_cast<std::size_t>(rows);
   std::size_t done = 0;
   std::mutex progressMutex;
   unsigned threadCount = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
 
   for (int pass = 0; pass < passes; ++pass) {
-    const int first = pass * kPassSamples;
-    const int last = std::min(settings.samplesPerPixel, first + kPassSamples);
+    const int first = region.sampleBegin + pass * kPassSamples;
+    const int last = std::min(region.sampleEnd, first + kPassSamples);
     std::atomic<int> nextRow{0};
     std::exception_ptr failure;
     auto work = [&] {
       try {
-        for (int y = nextRow++; y < height; y = nextRow++) {
+        for (int row = nextRow++; row < rows; row = nextRow++) {
           for (int x = 0; x < width; ++x) {
-            std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+            std::size_t i = static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
             for (int s = first; s < last; ++s) {
-              Eigen::Vector3d value = tracer.samplePixel(x, y, static_cast<std::uint32_t>(s));
+              Eigen::Vector3d value = tracer.samplePixel(x, region.rowBegin + row, static_cast<std::uint32_t>(s));
               sum[i] += value;
               sumSquares[i] += value.cwiseProduct(value);
             }
@@ -539,7 +556,7 @@ ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& tab
       } catch (...) {
         std::lock_guard lock(progressMutex);
         if (!failure) failure = std::current_exception();
-        nextRow = height;
+        nextRow = rows;
       }
     };
     std::vector<std::thread> threads;
@@ -553,15 +570,18 @@ ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& tab
     if (failure) std::rethrow_exception(failure);
   }
 
-  ReferenceImage image{imaging::FloatImage(width, height, 3), imaging::FloatImage(width, height, 3)};
-  const double n = settings.samplesPerPixel;
+  ReferenceImage image{imaging::FloatImage(width, rows, 3), imaging::FloatImage(width, rows, 3),
+                       imaging::FloatImage(width, rows, 3)};
+  const double n = region.samples();
   for (std::size_t i = 0; i < pixels; ++i) {
     Eigen::Vector3d mean = sum[i] / n;
     Eigen::Vector3d variance = Eigen::Vector3d::Zero();
     if (n > 1) variance = ((sumSquares[i] - n * mean.cwiseProduct(mean)) / (n - 1)).cwiseMax(0.0);
     for (int c = 0; c < 3; ++c) {
-      image.tristimulus.pixels[3 * i + static_cast<std::size_t>(c)] = static_cast<float>(mean[c]);
-      image.variance.pixels[3 * i + static_cast<std::size_t>(c)] = static_cast<float>(variance[c] / n);
+      const std::size_t k = 3 * i + static_cast<std::size_t>(c);
+      image.tristimulus.pixels[k] = static_cast<float>(mean[c]);
+      image.variance.pixels[k] = static_cast<float>(variance[c] / n);
+      image.meanResidual.pixels[k] = static_cast<float>(mean[c] - static_cast<double>(image.tristimulus.pixels[k]));
     }
   }
   return image;

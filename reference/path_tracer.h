@@ -73,19 +73,45 @@ struct ReferenceSettings {
 // Error naming the setting when out of range.
 void validate(const ReferenceSettings& settings);
 
+// The share of a render one process traces (a task of a render split across a cluster,
+// batch/): pixel rows [rowBegin, rowEnd) and, of each pixel's samplesPerPixel paths, the path
+// indices [sampleBegin, sampleEnd). Path s of a pixel is the same path in every share (its random
+// numbers depend on the pixel, s and the seed alone), so shares merge into the image one process
+// renders: bit for bit when split by rows.
+struct ReferenceRegion {
+  int rowBegin = 0, rowEnd = 0;
+  int sampleBegin = 0, sampleEnd = 0;
+
+  static ReferenceRegion whole(const ReferenceSettings& s) { return {0, s.height, 0, s.samplesPerPixel}; }
+  int rows() const { return rowEnd - rowBegin; }
+  int samples() const { return sampleEnd - sampleBegin; }
+  bool operator==(const ReferenceRegion&) const = default;
+};
+
+// Error naming the range when the region is empty or outside the image or the paths per pixel.
+void validate(const ReferenceRegion& region, const ReferenceSettings& settings);
+
+// A region's rows (all of the image's by default), 3 channels each, row 0 at the region's top.
 struct ReferenceImage {
-  imaging::FloatImage tristimulus;  // mean over the pixel's paths, 3 channels, row 0 at the top
+  imaging::FloatImage tristimulus;  // mean over the pixel's paths
   // The variance of that mean per channel: sample variance / N, an upper bound for the
   // stratified wavelengths.
   imaging::FloatImage variance;
+  // The mean as accumulated (double) minus `tristimulus`, rounded to float: what a merge of
+  // sample ranges adds back to weigh each range's mean to about 48 bits (batch/reference_merge.h).
+  imaging::FloatImage meanResidual;
 };
 
-// done / total in pixel rows × passes; called from one thread at a time.
+// done / total in the region's pixel rows × passes; called from one thread at a time.
 using ReferenceProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 // `table` is the Jakob–Hanika table of the scene's colour space.
 ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& table,
                                const ReferenceSettings& settings,
+                               const ReferenceProgress& progress = {});
+// Only `region`'s rows and paths.
+ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& table,
+                               const ReferenceSettings& settings, const ReferenceRegion& region,
                                const ReferenceProgress& progress = {});
 
 }  // namespace prism::reference

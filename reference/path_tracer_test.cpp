@@ -225,6 +225,36 @@ TEST(PathTracer, TheImageDependsOnTheSeedNotOnTheThreadCount) {
   EXPECT_NE(one.tristimulus.pixels, other.tristimulus.pixels);
 }
 
+// A region is the same paths as the whole image: its rows bit for bit, and its sample ranges'
+// means weighted by their counts (plus their residuals) give the whole image's mean.
+TEST(PathTracer, ARegionTracesTheWholeImagesPaths) {
+  Scene scene = litPlane(0.5, 1000.0f);
+  ReferenceSettings settings = small(12);
+  settings.transport = LightTransport::Global;
+  settings.filter = PixelFilter::Box;
+  ReferenceImage whole = renderReference(scene, srgbTable(), settings);
+  ReferenceImage band = renderReference(scene, srgbTable(), settings, {10, 17, 0, 12});
+  ASSERT_EQ(band.tristimulus.height, 7);
+  for (int y = 0; y < 7; ++y) {
+    for (int x = 0; x < settings.width; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_EQ(band.tristimulus.at(x, y, c), whole.tristimulus.at(x, y + 10, c));
+        ASSERT_EQ(band.variance.at(x, y, c), whole.variance.at(x, y + 10, c));
+      }
+    }
+  }
+  ReferenceImage first = renderReference(scene, srgbTable(), settings, {0, 32, 0, 5});
+  ReferenceImage rest = renderReference(scene, srgbTable(), settings, {0, 32, 5, 12});
+  for (std::size_t k = 0; k < whole.tristimulus.pixels.size(); ++k) {
+    double a = double{first.tristimulus.pixels[k]} + first.meanResidual.pixels[k];
+    double b = double{rest.tristimulus.pixels[k]} + rest.meanResidual.pixels[k];
+    double merged = (5.0 * a + 7.0 * b) / 12.0;
+    ASSERT_NEAR(merged, whole.tristimulus.pixels[k], 1e-7 * std::abs(whole.tristimulus.pixels[k])) << k;
+  }
+  EXPECT_THROW(renderReference(scene, srgbTable(), settings, {0, 32, 5, 13}), Error);
+  EXPECT_THROW(renderReference(scene, srgbTable(), settings, {8, 8, 0, 12}), Error);
+}
+
 // Seen and lit through an absorbing slab: Beer–Lambert on both legs, per pixel.
 TEST(PathTracer, AnAbsorbingSlabAttenuatesBothLegsByBeerLambert) {
   Scene scene = litPlane(0.5, 1000.0f);

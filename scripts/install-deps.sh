@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libbenchmark-dev glslang-tools
   libepoxy-dev libegl-dev libgl-dev libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri libglfw3-dev
   libimgui-dev xvfb xauth
+  slurmctld slurmd slurm-client munge  # the one-node cluster of tests/slurm
 )
 # Tools only some scripts need (scripts/fuzz.sh: clang and its libFuzzer runtime).
 read -r -a extra <<<"${PRISM_EXTRA_PACKAGES:-}"

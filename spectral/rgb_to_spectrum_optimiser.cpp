@@ -2,19 +2,27 @@
 
 #include "spectral/colour_space.h"
 #include "spectral/observer.h"
+#include "core/error.h"
 #include "core/parallel_for.h"
 #include "spectral/sigmoid_fit.h"
 
 namespace prism {
 
+int tableColumns(int resolution) { return 3 * resolution * resolution; }
+
 RgbToSpectrumTable buildRgbToSpectrumTable(const TableBuildOptions& options) {
+  return buildRgbToSpectrumTable(options, {0, tableColumns(options.resolution)});
+}
+
+RgbToSpectrumTable buildRgbToSpectrumTable(const TableBuildOptions& options, IndexRange columns) {
   const RgbColourSpace& gamut = colourSpace(options.gamut);
   RgbToSpectrumTable table(options.gamut, options.resolution);
   const SigmoidFitter fitter(gamut, gamutWhiteIlluminant(gamut), observer("cie1931"));
   const int res = options.resolution;
-  const std::size_t columns = 3 * static_cast<std::size_t>(res) * static_cast<std::size_t>(res);
+  PRISM_CHECK(columns.begin >= 0 && columns.begin < columns.end && columns.end <= tableColumns(res));
 
-  auto solveColumn = [&](std::size_t column) {
+  auto solveColumn = [&](std::size_t item) {
+    const std::size_t column = static_cast<std::size_t>(columns.begin) + item;
     int block = static_cast<int>(column / static_cast<std::size_t>(res * res));
     int yi = static_cast<int>(column / static_cast<std::size_t>(res)) % res;
     int xi = static_cast<int>(column % static_cast<std::size_t>(res));
@@ -32,7 +40,7 @@ RgbToSpectrumTable buildRgbToSpectrumTable(const TableBuildOptions& options) {
     for (int zi = start - 1; zi >= 0; --zi) seed = fitNode(zi, seed);
   };
 
-  parallelFor(columns, options.threads, solveColumn, options.progress);
+  parallelFor(static_cast<std::size_t>(columns.size()), options.threads, solveColumn, options.progress);
   return table;
 }
 

@@ -1,0 +1,32 @@
+#include "app/merge_command.h"
+
+#include <fmt/format.h>
+
+#include "app/reference_commands.h"
+#include "batch/reference_merge.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "spectral/rgb_to_spectrum_part.h"
+
+namespace prism::app {
+
+void runMerge(const MergeOptions& o) {
+  if (!o.parts.empty() && isTablePart(o.parts.front())) {
+    if (!o.variance.empty()) throw Error("--variance: parts of an upsampling table have none");
+    requireWritable(o.output);
+    RgbToSpectrumTable table = mergeTableParts(o.parts);
+    table.save(o.output);
+    fmt::print("merged {} parts into {} ({} table, {}³)\n", o.parts.size(), o.output.string(), table.gamut(),
+               table.resolution());
+    return;
+  }
+  checkReferenceOutputs(o.output, o.variance);
+  requireWritable(o.output);
+  if (!o.variance.empty()) requireWritable(o.variance);
+  batch::MergedReference merged = batch::mergeReferenceParts(o.parts);
+  writeReferenceImage(merged.image, merged.header.observer, merged.header.ev100, o.output, o.variance);
+  fmt::print("merged {} parts into {} ({}x{}, {} paths per pixel)\n", o.parts.size(), o.output.string(),
+             merged.header.width, merged.header.height, merged.header.samplesPerPixel);
+}
+
+}  // namespace prism::app

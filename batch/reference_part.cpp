@@ -1,0 +1,187 @@
+#include "batch/reference_part.h"
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "core/task_split.h"
+#include "imaging/exr_band.h"
+#include "imaging/float_image.h"
+#include "spectral/observer.h"
+
+namespace prism::batch {
+namespace {
+
+constexpr const char* kPartKind = "reference 1";
+
+// The colour channels' names and meaning, as `prism reference` writes a whole image.
+bool isCamera(const std::string& observerName) { return observer(observerName).isCamera; }
+std::vector<std::string> colourNames(const std::string& observerName) {
+  return isCamera(observerName) ? std::vector<std::string>{"R", "G", "B"} : std::vector<std::string>{"X", "Y", "Z"};
+}
+
+std::uint64_t fnv1a(std::string_view bytes, std::uint64_t hash) {
+  for (unsigned char c : bytes) {
+    hash ^= c;
+    hash *= 1099511628211ull;
+  }
+  return hash;
+}
+
+// Reading a part's attributes: Error "PATH: not a part of a reference render (WHY)".
+class Attributes {
+ public:
+  Attributes(const std::filesystem::path& path, const std::map<std::string, std::string>& attributes)
+      : mPath(path), mAttributes(attributes) {}
+  [[noreturn]] void fail(const std::string& why) const {
+    throw Error(fmt::format("{}: not a part of a reference render ({})", mPath.string(), why));
+  }
+  const std::string& text(const std::string& name) const {
+    auto it = mAttributes.find(name);
+    if (it == mAttributes.end()) fail("no " + name);
+    return it->second;
+  }
+  template <typename T>
+  T number(const std::string& name) const {
+    const std::string& t = text(name);
+    T value{};
+    auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    if (t.empty() || ec != std::errc() || end != t.data() + t.size()) fail(name + " \"" + excerpt(t) + "\" is not a number");
+    return value;
+  }
+
+ private:
+  const std::filesystem::path& mPath;
+  const std::map<std::string, std::string>& mAttributes;
+};
+
+ReferencePartHeader parseHeader(const std::filesystem::path& path, const imaging::ExrBand& band) {
+  Attributes a(path, band.attributes);
+  if (a.text("prism:part") != kPartKind) a.fail("prism:part is \"" + excerpt(a.text("prism:part")) + "\"");
+  ReferencePartHeader h;
+  h.scene = a.text("prism:scene");
+  h.sceneHash = a.text("prism:sceneHash");
+  h.settings = a.text("prism:settings");
+  h.seed = a.number<std::uint32_t>("prism:seed");
+  h.width = band.width;
+  h.height = band.height;
+  h.samplesPerPixel = a.number<int>("prism:samplesPerPixel");
+  h.observer = a.text("prism:observer");
+  h.ev100 = a.number<float>("prism:ev100");
+  IndexRange samples;
+  try {
+    samples = parseIndexRange(a.text("prism:samples"), "prism:samples");
+  } catch (const Error& e) {
+    a.fail(e.what());
+  }
+  h.region = {band.rowBegin, band.rowBegin + band.rows, samples.begin, samples.end};
+  if (samples.end > h.samplesPerPixel) a.fail(fmt::format("samples {}:{} of {}", samples.begin, samples.end, h.samplesPerPixel));
+  if (a.number<int>("prism:sampleCount") != samples.size()) a.fail("prism:sampleCount is not the samples' count");
+  try {
+    colourNames(h.observer);
+  } catch (const Error& e) {
+    a.fail(e.what());
+  }
+  return h;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> ReferencePartHeader::identity() const {
+  return {{"scene", sceneHash},
+          {"image size", fmt::format("{}x{}", width, height)},
+          {"paths per pixel", std::to_string(samplesPerPixel)},
+          {"seed", std::to_string(seed)},
+          {"settings", settings},
+          {"observer", observer},
+          {"ev100", fmt::format("{}", ev100)}};
+}
+
+std::string sceneHash(const std::filesystem::path& scene, const std::vector<std::string>& sets) {
+  std::ifstream in(scene, std::ios::binary);
+  std::ostringstream bytes;
+  if (!in || !(bytes << in.rdbuf())) throw Error(scene.string() + ": cannot read the scene to hash it");
+  std::uint64_t hash = fnv1a(bytes.view(), 14695981039346656037ull);
+  for (const std::string& set : sets) hash = fnv1a(set, fnv1a(std::string_view("\0", 1), hash));
+  return fmt::format("{:016x}", hash);
+}
+
+std::string settingsText(const reference::ReferenceSettings& s) {
+  return fmt::format("transport={} max-depth={} filter={} range={},{} strategy={}",
+                     s.transport == reference::LightTransport::Global ? "global" : "direct", s.maxDepth,
+                     s.filter == reference::PixelFilter::Box ? "box" : "centre", s.wavelengths.minNm,
+                     s.wavelengths.maxNm, samplingStrategyName(s.wavelengths.strategy));
+}
+
+ReferencePartHeader partHeader(const std::filesystem::path& scene, const std::vector<std::string>& sets,
+                               const reference::ReferenceSettings& settings, const reference::ReferenceRegion& region,
+                               float ev100) {
+  return {scene.string(), sceneHash(scene, sets), settingsText(settings), settings.seed, settings.width,
+          settings.height, settings.samplesPerPixel, settings.observer, ev100, region};
+}
+
+void writeReferencePart(const std::filesystem::path& path, const ReferencePartHeader& h,
+                        const reference::ReferenceImage& image) {
+  PRISM_CHECK(image.tristimulus.width == h.width && image.tristimulus.height == h.region.rows());
+  imaging::ExrBand band;
+  band.width = h.width;
+  band.height = h.height;
+  band.rowBegin = h.region.rowBegin;
+  band.rows = h.region.rows();
+  band.attributes = {
+      {"prism:part", kPartKind},
+      {"prism:scene", h.scene},
+      {"prism:sceneHash", h.sceneHash},
+      {"prism:settings", h.settings},
+      {"prism:seed", std::to_string(h.seed)},
+      {"prism:samplesPerPixel", std::to_string(h.samplesPerPixel)},
+      {"prism:observer", h.observer},
+      {"prism:ev100", fmt::format("{}", h.ev100)},
+      {"prism:samples", fmt::format("{}:{}", h.region.sampleBegin, h.region.sampleEnd)},
+      {"prism:sampleCount", std::to_string(h.region.samples())},
+      {"prism:colour", std::string(imaging::colourMeaningName(isCamera(h.observer) ? imaging::ColourMeaning::CameraRgb
+                                                                                   : imaging::ColourMeaning::Xyz))},
+  };
+  const std::vector<std::string> names = colourNames(h.observer);
+  auto addPlanes = [&](const imaging::FloatImage& planes, const std::string& prefix) {
+    for (int c = 0; c < 3; ++c) {
+      band.channels.push_back(prefix + names[static_cast<std::size_t>(c)]);
+      std::vector<float>& plane = band.planes.emplace_back(planes.pixelCount());
+      for (std::size_t i = 0; i < plane.size(); ++i) plane[i] = planes.pixels[3 * i + static_cast<std::size_t>(c)];
+    }
+  };
+  addPlanes(image.tristimulus, "");
+  addPlanes(image.meanResidual, "residual.");
+  addPlanes(image.variance, "variance.");
+  imaging::writeExrBand(path, band);
+}
+
+ReferencePartHeader readReferencePartHeader(const std::filesystem::path& path) {
+  return parseHeader(path, imaging::readExrBand(path, false));
+}
+
+ReferencePart readReferencePart(const std::filesystem::path& path) {
+  imaging::ExrBand band = imaging::readExrBand(path, true);
+  ReferencePart part{parseHeader(path, band), {}};
+  const std::vector<std::string> names = colourNames(part.header.observer);
+  auto image = [&](const std::string& prefix) {
+    imaging::FloatImage out(band.width, band.rows, 3);
+    for (int c = 0; c < 3; ++c) {
+      const std::string name = prefix + names[static_cast<std::size_t>(c)];
+      auto it = std::find(band.channels.begin(), band.channels.end(), name);
+      if (it == band.channels.end()) Attributes(path, band.attributes).fail("no channel " + name);
+      const std::vector<float>& plane = band.planes[static_cast<std::size_t>(it - band.channels.begin())];
+      for (std::size_t i = 0; i < plane.size(); ++i) out.pixels[3 * i + static_cast<std::size_t>(c)] = plane[i];
+    }
+    return out;
+  };
+  part.image = {image(""), image("variance."), image("residual.")};
+  return part;
+}
+
+}  // namespace prism::batch

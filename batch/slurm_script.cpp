@@ -1,0 +1,67 @@
+#include "batch/slurm_script.h"
+
+#include <regex>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+
+namespace prism::batch {
+namespace {
+
+std::string jobText(const SlurmJob& job, const SlurmScript& script, bool array) {
+  std::string text = "#!/bin/bash\n";
+  text += fmt::format("#SBATCH --job-name={}\n", job.name);
+  if (array) text += fmt::format("#SBATCH --array=0-{}\n", script.tasks - 1);
+  text += fmt::format("#SBATCH --cpus-per-task={}\n", job.cpusPerTask);
+  text += fmt::format("#SBATCH --mem={}M\n", job.memoryMiB);
+  text += fmt::format("#SBATCH --time={}\n", job.time);
+  text += fmt::format("#SBATCH --output={}\n",
+                      shellQuote((script.logs / (array ? job.name + "-%A_%a.out" : job.name + "-%j.out")).string()));
+  for (const std::string& option : script.sbatchOptions) text += fmt::format("#SBATCH {}\n", option);
+  text += "set -euo pipefail\n";
+  text += "exec " + job.command + "\n";
+  return text;
+}
+
+}  // namespace
+
+std::string shellQuote(std::string_view text) {
+  static const std::regex plain("[A-Za-z0-9_./:=,+@%-]+");
+  if (std::regex_match(text.begin(), text.end(), plain)) return std::string(text);
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+void checkSlurmTime(std::string_view time, std::string_view option) {
+  static const std::regex format("([0-9]+-)?[0-9]{1,2}:[0-5][0-9]:[0-5][0-9]");
+  if (!std::regex_match(time.begin(), time.end(), format))
+    throw Error(fmt::format("{}: expected HH:MM:SS or D-HH:MM:SS, got \"{}\"", option, excerpt(time)));
+}
+
+std::string slurmScriptText(const SlurmScript& s) {
+  PRISM_CHECK(s.tasks >= 1);
+  std::string text = "#!/bin/bash\n";
+  text += "# " + s.summary + "\n";
+  text += fmt::format(
+      "# On a login node, `bash THIS_SCRIPT` submits the {}-task array and, once every task has\n"
+      "# succeeded, the job {}; `bash THIS_SCRIPT 3,5` submits tasks 3 and 5 again, and {}\n"
+      "# after them. Each task writes its part atomically and skips a part already complete.\n",
+      s.tasks, s.finish.name, s.finish.name);
+  text += "set -euo pipefail\n";
+  text += fmt::format("mkdir -p {}\n", shellQuote(s.logs.string()));
+  // --parsable prints "JOBID[;CLUSTER]"; a quoted here-document is the job script, expanded when it runs.
+  text += "array=$(sbatch --parsable ${1:+--array=\"$1\"} <<'PRISM_ARRAY_JOB'\n";
+  text += jobText(s.array, s, true);
+  text += "PRISM_ARRAY_JOB\n)\n";
+  text += "array=${array%%;*}\n";
+  text += "finish=$(sbatch --parsable --dependency=afterok:\"$array\" --kill-on-invalid-dep=yes <<'PRISM_FINISH_JOB'\n";
+  text += jobText(s.finish, s, false);
+  text += "PRISM_FINISH_JOB\n)\n";
+  text += "finish=${finish%%;*}\n";
+  text += "echo \"array $array finish $finish\"\n";
+  return text;
+}
+
+}  // namespace prism::batch

@@ -1,0 +1,49 @@
+#include "batch/slurm_script.h"
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+
+namespace prism::batch {
+namespace {
+
+TEST(SlurmScript, QuotesWordsForBash) {
+  EXPECT_EQ(shellQuote("/work/scenes/a.json"), "/work/scenes/a.json");
+  EXPECT_EQ(shellQuote("lights.0.spd=F11"), "lights.0.spd=F11");
+  EXPECT_EQ(shellQuote("a b"), "'a b'");
+  EXPECT_EQ(shellQuote("it's $HOME"), "'it'\\''s $HOME'");
+  EXPECT_EQ(shellQuote(""), "''");
+}
+
+TEST(SlurmScript, ChecksTimeLimits) {
+  EXPECT_NO_THROW(checkSlurmTime("01:00:00", "--time"));
+  EXPECT_NO_THROW(checkSlurmTime("2-12:30:00", "--time"));
+  for (const char* bad : {"1h", "1:00", "01:60:00", "01:00:00; rm -rf /", ""}) {
+    EXPECT_THROW(checkSlurmTime(bad, "--time"), Error) << bad;
+  }
+}
+
+TEST(SlurmScript, SubmitsTheArrayThenItsFinishAfterEveryTask) {
+  SlurmScript s;
+  s.summary = "a test";
+  s.tasks = 8;
+  s.array = {"prism-reference", 2, 512, "02:00:00", "prism reference --tile \"$SLURM_ARRAY_TASK_ID/8\""};
+  s.finish = {"prism-merge", 1, 256, "00:30:00", "prism merge parts/part-*-of-8.exr -o out.exr"};
+  s.logs = "/work/my parts";
+  s.sbatchOptions = {"--partition=gpu"};
+  const std::string text = slurmScriptText(s);
+  for (const char* line : {"#SBATCH --array=0-7\n", "#SBATCH --cpus-per-task=2\n", "#SBATCH --mem=512M\n",
+                           "#SBATCH --time=02:00:00\n", "#SBATCH --partition=gpu\n", "mkdir -p '/work/my parts'\n",
+                           "#SBATCH --output='/work/my parts/prism-reference-%A_%a.out'\n",
+                           "array=$(sbatch --parsable ${1:+--array=\"$1\"} <<'PRISM_ARRAY_JOB'\n",
+                           "--dependency=afterok:\"$array\" --kill-on-invalid-dep=yes",
+                           "exec prism merge parts/part-*-of-8.exr -o out.exr\n", "echo \"array $array finish $finish\"\n"}) {
+    EXPECT_NE(text.find(line), std::string::npos) << line << " is not in\n" << text;
+  }
+  // The finishing job is one job, not an array, and comes after the array's.
+  EXPECT_EQ(text.find("--array=0-7"), text.rfind("--array=0-7"));
+  EXPECT_LT(text.find("PRISM_ARRAY_JOB\n)"), text.find("--job-name=prism-merge"));
+}
+
+}  // namespace
+}  // namespace prism::batch

@@ -1,0 +1,49 @@
+#include "core/task_split.h"
+
+#include <charconv>
+#include <cstdint>
+#include <string>
+
+#include "core/error.h"
+
+namespace prism {
+namespace {
+
+// A whole number that is the whole of `text`, within [0, max]; false otherwise.
+bool parseWhole(std::string_view text, long long max, int& value) {
+  long long v = 0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || v < 0 || v > max) return false;
+  value = static_cast<int>(v);
+  return true;
+}
+
+}  // namespace
+
+TaskIndex parseTaskIndex(std::string_view text, std::string_view option) {
+  const std::size_t slash = text.find('/');
+  TaskIndex task;
+  if (slash == std::string_view::npos || !parseWhole(text.substr(0, slash), 999'999, task.index) ||
+      !parseWhole(text.substr(slash + 1), 1'000'000, task.count) || task.count < 1 || task.index >= task.count) {
+    throw Error(std::string(option) + ": expected I/N with 0 ≤ I < N (task I of N), got \"" + excerpt(text) + "\"");
+  }
+  return task;
+}
+
+IndexRange parseIndexRange(std::string_view text, std::string_view option) {
+  const std::size_t colon = text.find(':');
+  IndexRange range;
+  if (colon == std::string_view::npos || !parseWhole(text.substr(0, colon), INT32_MAX, range.begin) ||
+      !parseWhole(text.substr(colon + 1), INT32_MAX, range.end) || range.begin >= range.end) {
+    throw Error(std::string(option) + ": expected A:B with 0 ≤ A < B, got \"" + excerpt(text) + "\"");
+  }
+  return range;
+}
+
+IndexRange shareOf(TaskIndex task, int total) {
+  PRISM_CHECK(task.count >= 1 && task.index >= 0 && task.index < task.count && total >= 0);
+  auto bound = [&](long long i) { return static_cast<int>(i * total / task.count); };
+  return {bound(task.index), bound(task.index + 1LL)};
+}
+
+}  // namespace prism

@@ -1,0 +1,100 @@
+#include "harness/validate_parts.h"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+
+namespace prism::harness {
+namespace {
+
+constexpr const char* kFormat = "prism-validate-part 1";
+
+}  // namespace
+
+std::filesystem::path validatePartPath(const std::filesystem::path& dir, TaskIndex task) {
+  return dir / "parts" / fmt::format("task-{}-of-{}.json", task.index, task.count);
+}
+
+void writeValidatePart(const std::filesystem::path& path, const ValidatePart& part) {
+  nlohmann::json json = {{"format", kFormat}, {"identity", part.identity}, {"experiments", part.experiments},
+                         {"results", part.results}};
+  writeFileAtomically(path, json.dump(2) + "\n");
+}
+
+ValidatePart readValidatePart(const std::filesystem::path& path) {
+  auto fail = [&](const std::string& why) {
+    return Error(fmt::format("{}: not a part of `prism validate --task` ({})", path.string(), why));
+  };
+  std::ifstream in(path);
+  if (!in) throw fail("cannot read it");
+  nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
+  if (json.is_discarded() || !json.is_object()) throw fail("not JSON");
+  if (json.value("format", "") != kFormat) throw fail("format is not \"" + std::string(kFormat) + "\"");
+  ValidatePart part;
+  part.identity = json.value("identity", nlohmann::json());
+  part.results = json.value("results", nlohmann::json());
+  const nlohmann::json experiments = json.value("experiments", nlohmann::json());
+  if (!experiments.is_array() || !part.results.is_array()) throw fail("no experiments or results");
+  for (const nlohmann::json& e : experiments) {
+    if (!e.is_string()) throw fail("an experiment's name is not a string");
+    part.experiments.push_back(e.get<std::string>());
+  }
+  for (const nlohmann::json& row : part.results) {
+    if (!row.is_object() || !row.contains("scene") || !row["scene"].is_string()) throw fail("a result without its scene");
+    if (std::find(part.experiments.begin(), part.experiments.end(), row["scene"].get<std::string>()) ==
+        part.experiments.end())
+      throw fail("a result of an experiment it does not name");
+  }
+  return part;
+}
+
+nlohmann::json collectValidateParts(const std::filesystem::path& dir, const nlohmann::json& identity,
+                                    const std::vector<std::string>& experiments) {
+  const std::filesystem::path folder = dir / "parts";
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  if (files.empty()) {
+    throw Error(fmt::format("validate --collect: {} holds no parts (`prism validate --task I/N -o {}` writes them)",
+                            folder.string(), dir.string()));
+  }
+  std::map<std::string, std::pair<std::filesystem::path, nlohmann::json>> found;  // experiment → part, its rows
+  for (const std::filesystem::path& file : files) {
+    ValidatePart part = readValidatePart(file);
+    if (part.identity != identity) {
+      throw Error(fmt::format("validate --collect: {} is a part of another sweep ({}; this one is {})", file.string(),
+                              excerpt(part.identity.dump(), 120), excerpt(identity.dump(), 120)));
+    }
+    for (const std::string& name : part.experiments) {
+      if (std::find(experiments.begin(), experiments.end(), name) == experiments.end())
+        throw Error(fmt::format("validate --collect: {}: unknown experiment \"{}\"", file.string(), excerpt(name)));
+      auto [it, added] = found.try_emplace(name, file, nlohmann::json::array());
+      if (!added) {
+        throw Error(fmt::format("validate --collect: experiment {} is in both {} and {}", name, it->second.first.string(),
+                                file.string()));
+      }
+      for (const nlohmann::json& row : part.results)
+        if (row["scene"] == name) it->second.second.push_back(row);
+    }
+  }
+  nlohmann::json rows = nlohmann::json::array();
+  for (const std::string& name : experiments) {
+    auto it = found.find(name);
+    if (it == found.end()) {
+      throw Error(fmt::format("validate --collect: experiment {} is missing (no part in {} holds it)", name,
+                              folder.string()));
+    }
+    for (const nlohmann::json& row : it->second.second) rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace prism::harness

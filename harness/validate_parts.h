@@ -1,0 +1,38 @@
+// The parts of `prism validate` split into tasks (`prism validate --task I/N -o DIR`, one Slurm
+// array task each, then `prism validate --collect DIR`): each task runs its share of the
+// experiments, writes their images into DIR as a whole run does, and last, atomically, its part:
+// DIR/parts/task-I-of-N.json, {"format", "identity" (what every part must agree on: the sizes and
+// the scenes), "experiments" (their names, in order), "results" (their rows of results.json)}.
+// A part that exists is a task whose images are all written.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/task_split.h"
+
+namespace prism::harness {
+
+struct ValidatePart {
+  nlohmann::json identity;
+  std::vector<std::string> experiments;
+  nlohmann::json results;  // an array of result rows
+};
+
+std::filesystem::path validatePartPath(const std::filesystem::path& dir, TaskIndex task);
+
+void writeValidatePart(const std::filesystem::path& path, const ValidatePart& part);
+
+// Error "PATH: not a part of `prism validate --task` (WHY)" when it is not one.
+ValidatePart readValidatePart(const std::filesystem::path& path);
+
+// Every part in DIR/parts, checked to agree on `identity` and to hold each of `experiments`
+// exactly once: their rows in the order of `experiments`. Error "validate --collect: …" naming
+// the experiment missing, the two parts that both hold one, or the part of another sweep.
+nlohmann::json collectValidateParts(const std::filesystem::path& dir, const nlohmann::json& identity,
+                                    const std::vector<std::string>& experiments);
+
+}  // namespace prism::harness

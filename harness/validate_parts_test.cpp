@@ -1,0 +1,76 @@
+#include "harness/validate_parts.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <string>
+
+#include "core/error.h"
+
+namespace prism::harness {
+namespace {
+
+class ValidateParts : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    mRoot = std::filesystem::path(::testing::TempDir()) / ("prism_validate_parts_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(mRoot);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    std::filesystem::remove_all(mRoot, ec);
+  }
+  // A part of task I/N holding `experiments`, one row each (and two for "b").
+  void part(TaskIndex task, const std::vector<std::string>& experiments, const nlohmann::json& identity = kIdentity) {
+    ValidatePart p{identity, experiments, nlohmann::json::array()};
+    for (const std::string& e : experiments) {
+      p.results.push_back({{"scene", e}, {"mode", "rgb"}});
+      if (e == "b") p.results.push_back({{"scene", e}, {"mode", "naive"}});
+    }
+    writeValidatePart(validatePartPath(mRoot, task), p);
+  }
+  std::string collectError() {
+    try {
+      collectValidateParts(mRoot, kIdentity, kExperiments);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "collected";
+  }
+
+  inline static const nlohmann::json kIdentity = {{"sizes", 1}};
+  inline static const std::vector<std::string> kExperiments = {"a", "b", "c"};
+  std::filesystem::path mRoot;
+};
+
+TEST_F(ValidateParts, CollectsEveryExperimentsRowsInOrder) {
+  part({1, 2}, {"c"});
+  part({0, 2}, {"a", "b"});
+  nlohmann::json rows = collectValidateParts(mRoot, kIdentity, kExperiments);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0]["scene"], "a");
+  EXPECT_EQ(rows[1]["mode"], "rgb");
+  EXPECT_EQ(rows[2]["mode"], "naive");
+  EXPECT_EQ(rows[3]["scene"], "c");
+  EXPECT_EQ(readValidatePart(validatePartPath(mRoot, {0, 2})).experiments, (std::vector<std::string>{"a", "b"}));
+}
+
+TEST_F(ValidateParts, RefusesAMissingExperimentATwiceRunOneAndAnotherSweep) {
+  EXPECT_NE(collectError().find("parts holds no parts (`prism validate --task I/N -o"), std::string::npos) << collectError();
+  part({0, 2}, {"a", "b"});
+  EXPECT_EQ(collectError(), "validate --collect: experiment c is missing (no part in " + (mRoot / "parts").string() +
+                                " holds it)");
+  part({1, 3}, {"b", "c"});
+  EXPECT_EQ(collectError(), "validate --collect: experiment b is in both " +
+                                validatePartPath(mRoot, {0, 2}).string() + " and " +
+                                validatePartPath(mRoot, {1, 3}).string());
+  std::filesystem::remove(validatePartPath(mRoot, {1, 3}));
+  part({1, 2}, {"c"}, {{"sizes", 2}});
+  EXPECT_NE(collectError().find("is a part of another sweep"), std::string::npos) << collectError();
+  std::ofstream(validatePartPath(mRoot, {1, 2})) << "{\"format\": \"prism-validate-part 1\", \"experi";
+  EXPECT_NE(collectError().find("not a part of `prism validate --task` (not JSON)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace prism::harness

@@ -1,0 +1,164 @@
+#include "spectral/rgb_to_spectrum_part.h"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <numeric>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "spectral/rgb_to_spectrum_optimiser.h"
+
+namespace prism {
+namespace {
+
+constexpr char kMagic[8] = {'P', 'R', 'I', 'S', 'M', 'L', 'T', 'P'};
+constexpr std::uint32_t kVersion = 1;
+constexpr std::size_t kHeaderBytes = 40;
+constexpr std::size_t kGamutBytes = 16;
+
+template <typename T>
+void append(std::string& bytes, const T& value) {
+  bytes.append(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+template <typename T>
+T readAt(const std::string& bytes, std::size_t offset) {
+  T value;
+  std::memcpy(&value, bytes.data() + offset, sizeof(T));
+  return value;
+}
+
+std::uint32_t crc(const char* data, std::size_t size) {
+  return static_cast<std::uint32_t>(crc32(0L, reinterpret_cast<const Bytef*>(data), static_cast<uInt>(size)));
+}
+
+// The column's (block, y, x) as the optimiser numbers them.
+void columnNode(int column, int res, int& block, int& yi, int& xi) {
+  block = column / (res * res);
+  yi = column / res % res;
+  xi = column % res;
+}
+
+}  // namespace
+
+RgbToSpectrumPart tablePart(const RgbToSpectrumTable& table, IndexRange columns) {
+  const int res = table.resolution();
+  PRISM_CHECK(columns.begin >= 0 && columns.begin < columns.end && columns.end <= tableColumns(res));
+  RgbToSpectrumPart part{table.gamut(), res, columns, {}};
+  part.coefficients.reserve(static_cast<std::size_t>(columns.size()) * static_cast<std::size_t>(res) * 3);
+  for (int column = columns.begin; column < columns.end; ++column) {
+    int block, yi, xi;
+    columnNode(column, res, block, yi, xi);
+    for (int zi = 0; zi < res; ++zi) {
+      glm::vec3 c = table.coefficients(block, zi, yi, xi);
+      part.coefficients.insert(part.coefficients.end(), {c.x, c.y, c.z});
+    }
+  }
+  return part;
+}
+
+void saveTablePart(const std::filesystem::path& path, const RgbToSpectrumPart& part) {
+  PRISM_CHECK(part.gamut.size() < kGamutBytes);
+  std::string bytes(kMagic, sizeof kMagic);
+  append(bytes, kVersion);
+  append(bytes, static_cast<std::uint32_t>(part.resolution));
+  char gamut[kGamutBytes] = {};
+  std::copy(part.gamut.begin(), part.gamut.end(), gamut);
+  bytes.append(gamut, kGamutBytes);
+  append(bytes, static_cast<std::uint32_t>(part.columns.begin));
+  append(bytes, static_cast<std::uint32_t>(part.columns.end));
+  bytes.append(reinterpret_cast<const char*>(part.coefficients.data()), part.coefficients.size() * sizeof(float));
+  append(bytes, crc(bytes.data(), bytes.size()));
+  writeFileAtomically(path, bytes);
+}
+
+RgbToSpectrumPart loadTablePart(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path.string() + ": cannot open upsampling table part");
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string where = path.string() + ": ";
+  if (bytes.size() < kHeaderBytes + 4 || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+    throw Error(where + "not a part of an upsampling table (bad magic or truncated)");
+  if (readAt<std::uint32_t>(bytes, 8) != kVersion)
+    throw Error(where + "unsupported table part version " + std::to_string(readAt<std::uint32_t>(bytes, 8)));
+  RgbToSpectrumPart part;
+  const std::uint32_t res = readAt<std::uint32_t>(bytes, 12);
+  if (res < 2 || res > 256) throw Error(where + "bad resolution " + std::to_string(res));
+  part.resolution = static_cast<int>(res);
+  part.gamut.assign(bytes.data() + 16, strnlen(bytes.data() + 16, kGamutBytes));
+  const std::uint32_t begin = readAt<std::uint32_t>(bytes, 32), end = readAt<std::uint32_t>(bytes, 36);
+  if (begin >= end || end > static_cast<std::uint32_t>(tableColumns(part.resolution)))
+    throw Error(where + "columns " + std::to_string(begin) + ":" + std::to_string(end) + " are not of a " +
+                std::to_string(res) + "³ table");
+  part.columns = {static_cast<int>(begin), static_cast<int>(end)};
+  const std::size_t floats = static_cast<std::size_t>(end - begin) * res * 3;
+  const std::size_t expected = kHeaderBytes + 4 * floats + 4;
+  if (bytes.size() != expected)
+    throw Error(where + (bytes.size() < expected ? "truncated" : "oversized") + " upsampling table part (" +
+                std::to_string(bytes.size()) + " bytes, expected " + std::to_string(expected) + ")");
+  if (readAt<std::uint32_t>(bytes, expected - 4) != crc(bytes.data(), expected - 4))
+    throw Error(where + "corrupt upsampling table part (checksum mismatch)");
+  part.coefficients.resize(floats);
+  std::memcpy(part.coefficients.data(), bytes.data() + kHeaderBytes, 4 * floats);
+  return part;
+}
+
+bool isTablePart(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[sizeof kMagic] = {};
+  return in.read(magic, sizeof magic) && std::memcmp(magic, kMagic, sizeof kMagic) == 0;
+}
+
+RgbToSpectrumTable mergeTableParts(const std::vector<std::filesystem::path>& files) {
+  if (files.empty()) throw Error("merge: no parts given");
+  std::vector<RgbToSpectrumPart> parts;
+  for (const std::filesystem::path& f : files) parts.push_back(loadTablePart(f));
+  for (std::size_t i = 1; i < parts.size(); ++i) {
+    if (parts[i].gamut != parts[0].gamut || parts[i].resolution != parts[0].resolution) {
+      throw Error("merge: " + files[i].string() + " is a part of another table: " + parts[i].gamut + " " +
+                  std::to_string(parts[i].resolution) + "³, " + files[0].string() + "'s is " + parts[0].gamut + " " +
+                  std::to_string(parts[0].resolution) + "³");
+    }
+  }
+  std::vector<std::size_t> order(parts.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::pair(parts[a].columns.begin, parts[a].columns.end) < std::pair(parts[b].columns.begin, parts[b].columns.end);
+  });
+  const int res = parts[0].resolution;
+  int covered = 0;
+  std::size_t last = 0;
+  for (std::size_t i : order) {
+    const IndexRange c = parts[i].columns;
+    if (c.begin > covered)
+      throw Error("merge: columns " + std::to_string(covered) + ":" + std::to_string(c.begin) + " are missing");
+    if (c.begin < covered) {
+      throw Error("merge: columns " + std::to_string(c.begin) + ":" + std::to_string(std::min(covered, c.end)) +
+                  " are in both " + files[last].string() + " and " + files[i].string());
+    }
+    covered = c.end;
+    last = i;
+  }
+  if (covered < tableColumns(res))
+    throw Error("merge: columns " + std::to_string(covered) + ":" + std::to_string(tableColumns(res)) + " are missing");
+
+  RgbToSpectrumTable table(parts[0].gamut, res);
+  for (const RgbToSpectrumPart& part : parts) {
+    std::size_t k = 0;
+    for (int column = part.columns.begin; column < part.columns.end; ++column) {
+      int block, yi, xi;
+      columnNode(column, res, block, yi, xi);
+      for (int zi = 0; zi < res; ++zi, k += 3) {
+        table.setCoefficients(block, zi, yi, xi,
+                              {part.coefficients[k], part.coefficients[k + 1], part.coefficients[k + 2]});
+      }
+    }
+  }
+  return table;
+}
+
+}  // namespace prism

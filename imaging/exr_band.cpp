@@ -15,14 +15,10 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "imaging/exr_file.h"
+#include "imaging/openexr_message.h"
 
 namespace prism::imaging {
 namespace {
-
-std::string oneLine(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  return excerpt(text, 200);
-}
 
 Imf::FrameBuffer frameBuffer(const std::vector<std::string>& channels, std::vector<std::vector<float>>& planes,
                              const Imath::Box2i& dataWindow, int width) {
@@ -56,7 +52,7 @@ void writeExrBand(const std::filesystem::path& path, const ExrBand& band) {
     file.setFrameBuffer(frameBuffer(band.channels, planes, data, band.width));
     file.writePixels(band.rows);
   } catch (const std::exception& e) {
-    throw Error(path.string() + ": cannot encode EXR: " + oneLine(e.what()));
+    throw Error(path.string() + ": cannot encode EXR: " + openExrMessage(e.what()));
   }
   writeFileAtomically(path, stream.str());
 }
@@ -96,7 +92,7 @@ ExrBand readExrBand(const std::filesystem::path& path, bool pixels) {
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
-    throw Error(path.string() + ": cannot read EXR: " + oneLine(e.what()));
+    throw Error(path.string() + ": cannot read EXR: " + openExrMessage(e.what()));
   }
 }
 

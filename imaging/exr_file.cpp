@@ -22,6 +22,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "imaging/openexr_message.h"
 
 namespace prism::imaging {
 namespace {
@@ -43,11 +44,6 @@ bool near(const Imath::V2f& a, const Imath::V2f& b) {
 
 bool sameChromaticities(const Imf::Chromaticities& a, const Imf::Chromaticities& b) {
   return near(a.red, b.red) && near(a.green, b.green) && near(a.blue, b.blue) && near(a.white, b.white);
-}
-
-std::string oneLine(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  return excerpt(text, 200);
 }
 
 std::vector<std::string> channelNamesToWrite(const FloatImage& image, const ExrWriteOptions& options) {
@@ -111,7 +107,7 @@ void writeExr(const std::filesystem::path& path, const FloatImage& image, const 
     file.setFrameBuffer(frame);
     file.writePixels(image.height);
   } catch (const std::exception& e) {
-    throw Error(path.string() + ": cannot encode EXR: " + oneLine(e.what()));
+    throw Error(path.string() + ": cannot encode EXR: " + openExrMessage(e.what()));
   }
   writeFileAtomically(path, stream.str());
 }
@@ -225,7 +221,7 @@ ExrImage readExr(const std::filesystem::path& path) {
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
-    throw Error(path.string() + ": cannot read EXR: " + oneLine(e.what()));
+    throw Error(path.string() + ": cannot read EXR: " + openExrMessage(e.what()));
   }
 }
 

@@ -1,7 +1,5 @@
 #include "spectral/rgb_to_spectrum_part.h"
 
-#include <zlib.h>
-
 #include <algorithm>
 #include <cstring>
 #include <fstream>
@@ -10,31 +8,20 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "spectral/table_file_bytes.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
 
 namespace prism {
 namespace {
 
-constexpr char kMagic[8] = {'P', 'R', 'I', 'S', 'M', 'L', 'T', 'P'};
-constexpr std::uint32_t kVersion = 1;
-constexpr std::size_t kHeaderBytes = 40;
-constexpr std::size_t kGamutBytes = 16;
+using table_bytes::append;
+using table_bytes::crc;
+using table_bytes::readAt;
 
-template <typename T>
-void append(std::string& bytes, const T& value) {
-  bytes.append(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-template <typename T>
-T readAt(const std::string& bytes, std::size_t offset) {
-  T value;
-  std::memcpy(&value, bytes.data() + offset, sizeof(T));
-  return value;
-}
-
-std::uint32_t crc(const char* data, std::size_t size) {
-  return static_cast<std::uint32_t>(crc32(0L, reinterpret_cast<const Bytef*>(data), static_cast<uInt>(size)));
-}
+constexpr char kPartMagic[8] = {'P', 'R', 'I', 'S', 'M', 'L', 'T', 'P'};
+constexpr std::uint32_t kPartVersion = 1;
+constexpr std::size_t kPartHeaderBytes = 40;
+constexpr std::size_t kPartGamutBytes = 16;
 
 // The column's (block, y, x) as the optimiser numbers them.
 void columnNode(int column, int res, int& block, int& yi, int& xi) {
@@ -62,13 +49,13 @@ RgbToSpectrumPart tablePart(const RgbToSpectrumTable& table, IndexRange columns)
 }
 
 void saveTablePart(const std::filesystem::path& path, const RgbToSpectrumPart& part) {
-  PRISM_CHECK(part.gamut.size() < kGamutBytes);
-  std::string bytes(kMagic, sizeof kMagic);
-  append(bytes, kVersion);
+  PRISM_CHECK(part.gamut.size() < kPartGamutBytes);
+  std::string bytes(kPartMagic, sizeof kPartMagic);
+  append(bytes, kPartVersion);
   append(bytes, static_cast<std::uint32_t>(part.resolution));
-  char gamut[kGamutBytes] = {};
+  char gamut[kPartGamutBytes] = {};
   std::copy(part.gamut.begin(), part.gamut.end(), gamut);
-  bytes.append(gamut, kGamutBytes);
+  bytes.append(gamut, kPartGamutBytes);
   append(bytes, static_cast<std::uint32_t>(part.columns.begin));
   append(bytes, static_cast<std::uint32_t>(part.columns.end));
   bytes.append(reinterpret_cast<const char*>(part.coefficients.data()), part.coefficients.size() * sizeof(float));
@@ -81,36 +68,36 @@ RgbToSpectrumPart loadTablePart(const std::filesystem::path& path) {
   if (!in) throw Error(path.string() + ": cannot open upsampling table part");
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string where = path.string() + ": ";
-  if (bytes.size() < kHeaderBytes + 4 || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+  if (bytes.size() < kPartHeaderBytes + 4 || std::memcmp(bytes.data(), kPartMagic, sizeof kPartMagic) != 0)
     throw Error(where + "not a part of an upsampling table (bad magic or truncated)");
-  if (readAt<std::uint32_t>(bytes, 8) != kVersion)
+  if (readAt<std::uint32_t>(bytes, 8) != kPartVersion)
     throw Error(where + "unsupported table part version " + std::to_string(readAt<std::uint32_t>(bytes, 8)));
   RgbToSpectrumPart part;
   const std::uint32_t res = readAt<std::uint32_t>(bytes, 12);
   if (res < 2 || res > 256) throw Error(where + "bad resolution " + std::to_string(res));
   part.resolution = static_cast<int>(res);
-  part.gamut.assign(bytes.data() + 16, strnlen(bytes.data() + 16, kGamutBytes));
+  part.gamut.assign(bytes.data() + 16, strnlen(bytes.data() + 16, kPartGamutBytes));
   const std::uint32_t begin = readAt<std::uint32_t>(bytes, 32), end = readAt<std::uint32_t>(bytes, 36);
   if (begin >= end || end > static_cast<std::uint32_t>(tableColumns(part.resolution)))
     throw Error(where + "columns " + std::to_string(begin) + ":" + std::to_string(end) + " are not of a " +
                 std::to_string(res) + "³ table");
   part.columns = {static_cast<int>(begin), static_cast<int>(end)};
   const std::size_t floats = static_cast<std::size_t>(end - begin) * res * 3;
-  const std::size_t expected = kHeaderBytes + 4 * floats + 4;
+  const std::size_t expected = kPartHeaderBytes + 4 * floats + 4;
   if (bytes.size() != expected)
     throw Error(where + (bytes.size() < expected ? "truncated" : "oversized") + " upsampling table part (" +
                 std::to_string(bytes.size()) + " bytes, expected " + std::to_string(expected) + ")");
   if (readAt<std::uint32_t>(bytes, expected - 4) != crc(bytes.data(), expected - 4))
     throw Error(where + "corrupt upsampling table part (checksum mismatch)");
   part.coefficients.resize(floats);
-  std::memcpy(part.coefficients.data(), bytes.data() + kHeaderBytes, 4 * floats);
+  std::memcpy(part.coefficients.data(), bytes.data() + kPartHeaderBytes, 4 * floats);
   return part;
 }
 
 bool isTablePart(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  char magic[sizeof kMagic] = {};
-  return in.read(magic, sizeof magic) && std::memcmp(magic, kMagic, sizeof kMagic) == 0;
+  char magic[sizeof kPartMagic] = {};
+  return in.read(magic, sizeof magic) && std::memcmp(magic, kPartMagic, sizeof kPartMagic) == 0;
 }
 
 RgbToSpectrumTable mergeTableParts(const std::vector<std::filesystem::path>& files) {

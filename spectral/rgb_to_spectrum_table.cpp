@@ -1,7 +1,5 @@
 #include "spectral/rgb_to_spectrum_table.h"
 
-#include <zlib.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -11,6 +9,7 @@
 #include "shared_cpp.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "spectral/table_file_bytes.h"
 
 namespace prism::shared {
 #include "upsampling.glsl"
@@ -18,6 +17,10 @@ namespace prism::shared {
 
 namespace prism {
 namespace {
+
+using table_bytes::append;
+using table_bytes::crc;
+using table_bytes::readAt;
 
 constexpr char kMagic[8] = {'P', 'R', 'I', 'S', 'M', 'L', 'U', 'T'};
 constexpr std::uint32_t kVersion = 1;
@@ -28,23 +31,6 @@ constexpr std::size_t kGamutBytes = 16;
 std::size_t payloadFloats(int res) {
   auto n = static_cast<std::size_t>(res);
   return n + 3 * n * n * n * 3;
-}
-
-template <typename T>
-void append(std::string& bytes, const T& value) {
-  bytes.append(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-template <typename T>
-T readAt(const std::string& bytes, std::size_t offset) {
-  T value;
-  std::memcpy(&value, bytes.data() + offset, sizeof(T));
-  return value;
-}
-
-std::uint32_t crc(const char* data, std::size_t size) {
-  return static_cast<std::uint32_t>(
-      crc32(0L, reinterpret_cast<const Bytef*>(data), static_cast<uInt>(size)));
 }
 
 }  // namespace

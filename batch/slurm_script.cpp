@@ -1,6 +1,7 @@
 #include "batch/slurm_script.h"
 
-#include <regex>
+#include <algorithm>
+#include <cctype>
 
 #include <fmt/format.h>
 
@@ -27,17 +28,33 @@ std::string jobText(const SlurmJob& job, const SlurmScript& script, bool array) 
 }  // namespace
 
 std::string shellQuote(std::string_view text) {
-  static const std::regex plain("[A-Za-z0-9_./:=,+@%-]+");
-  if (std::regex_match(text.begin(), text.end(), plain)) return std::string(text);
+  // Characters no shell gives a meaning to in a word: such a word goes unquoted.
+  auto plain = [](unsigned char c) {
+    return std::isalnum(c) || std::string_view("_./:=,+@%-").find(static_cast<char>(c)) != std::string_view::npos;
+  };
+  if (!text.empty() && std::all_of(text.begin(), text.end(), plain)) return std::string(text);
   std::string quoted = "'";
   for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return quoted + "'";
 }
 
+// Written out rather than as a std::regex, whose GCC 12 internals -Wmaybe-uninitialized flags in
+// the sanitizer build.
 void checkSlurmTime(std::string_view time, std::string_view option) {
-  static const std::regex format("([0-9]+-)?[0-9]{1,2}:[0-5][0-9]:[0-5][0-9]");
-  if (!std::regex_match(time.begin(), time.end(), format))
-    throw Error(fmt::format("{}: expected HH:MM:SS or D-HH:MM:SS, got \"{}\"", option, excerpt(time)));
+  auto digits = [](std::string_view t) {
+    return !t.empty() && std::all_of(t.begin(), t.end(), [](unsigned char c) { return std::isdigit(c); });
+  };
+  std::string_view clock = time;
+  if (std::size_t dash = time.find('-'); dash != std::string_view::npos) {
+    if (!digits(time.substr(0, dash))) clock = {};
+    else clock = time.substr(dash + 1);
+  }
+  // [H]H:MM:SS, minutes and seconds below 60.
+  const std::size_t colon = clock.find(':');
+  const bool valid = colon != std::string_view::npos && colon >= 1 && colon <= 2 && digits(clock.substr(0, colon)) &&
+                     clock.size() == colon + 6 && clock[colon + 3] == ':' && digits(clock.substr(colon + 1, 2)) &&
+                     digits(clock.substr(colon + 4, 2)) && clock[colon + 1] <= '5' && clock[colon + 4] <= '5';
+  if (!valid) throw Error(fmt::format("{}: expected HH:MM:SS or D-HH:MM:SS, got \"{}\"", option, excerpt(time)));
 }
 
 std::string slurmScriptText(const SlurmScript& s) {

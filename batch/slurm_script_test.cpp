@@ -18,7 +18,9 @@ TEST(SlurmScript, QuotesWordsForBash) {
 TEST(SlurmScript, ChecksTimeLimits) {
   EXPECT_NO_THROW(checkSlurmTime("01:00:00", "--time"));
   EXPECT_NO_THROW(checkSlurmTime("2-12:30:00", "--time"));
-  for (const char* bad : {"1h", "1:00", "01:60:00", "01:00:00; rm -rf /", ""}) {
+  EXPECT_NO_THROW(checkSlurmTime("5:00:59", "--time"));
+  for (const char* bad : {"1h", "1:00", "01:60:00", "01:00:60", "01:00:00; rm -rf /", "", "-01:00:00", "x-01:00:00",
+                          "123:00:00", "1:0:00", "01:00:0", "1-2-01:00:00", "01:00:00 "}) {
     EXPECT_THROW(checkSlurmTime(bad, "--time"), Error) << bad;
   }
 }

@@ -137,7 +137,7 @@ void checkExrHeaderSizes(const std::filesystem::path& path) {
   while (true) {
     std::string name = readString("name");
     if (name.empty()) return;
-    readString("type");
+    const std::string type = readString("type");
     unsigned char size4[4] = {};
     if (!in.read(reinterpret_cast<char*>(size4), 4))
       throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' has no size");
@@ -148,7 +148,33 @@ void checkExrHeaderSizes(const std::filesystem::path& path) {
       throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' claims " +
                   std::to_string(size) + " bytes, " + std::to_string(left) + " are left");
     }
-    in.seekg(size, std::ios::cur);
+    // OpenEXR reads these two by their contents, not by their size: a value that ends elsewhere
+    // than its size says would make it read the rest of the header from another place than this
+    // walk (where a string may claim gigabytes). A channel list is entries of a name and 16 bytes
+    // up to an empty name; a preview is its width and height and 4 bytes a pixel.
+    const std::streamoff start = in.tellg();
+    std::int64_t contents = size;
+    if (type == "chlist") {
+      while (!readString("channel name").empty()) in.seekg(16, std::ios::cur);
+      contents = in.tellg() - start;
+    } else if (type == "preview") {
+      unsigned char sides[8] = {};
+      if (size < 8 || !in.read(reinterpret_cast<char*>(sides), 8))
+        throw Error(path.string() + ": malformed EXR header: preview '" + excerpt(name) + "' has no size");
+      auto side = [&](int at) {
+        return static_cast<std::uint64_t>(sides[at] | sides[at + 1] << 8 | sides[at + 2] << 16 |
+                                          static_cast<std::uint32_t>(sides[at + 3]) << 24);
+      };
+      const std::uint64_t width = side(0), height = side(4);
+      const bool fits = height == 0 || width <= static_cast<std::uint64_t>(size) / height;  // no overflow
+      contents = fits ? static_cast<std::int64_t>(8 + 4 * width * height) : -1;
+    }
+    if (!in || contents != size) {
+      throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' (" + excerpt(type) +
+                  ") holds " + (in ? std::to_string(contents) : std::string("more")) + " bytes, its size says " +
+                  std::to_string(size));
+    }
+    in.seekg(start + size);
   }
 }
 

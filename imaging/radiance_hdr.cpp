@@ -22,22 +22,30 @@ namespace {
 
 // The header's lines up to the blank one, then the resolution line (Radiance's file format, as
 // in Greg Ward's "Real Pixels"); only the standard orientation, which stb decodes, is accepted.
+// A line is read up to its first NUL byte, as stb reads it. Then every scan line is walked as
+// stb_image decodes it, so that what it is given holds the whole image: stb reads a missing byte
+// as 0 (a zero-length run would never end) and a flat file's missing pixels as garbage.
 void checkHeader(const std::string& name, const std::string& bytes) {
   if (!bytes.starts_with("#?RADIANCE\n") && !bytes.starts_with("#?RGBE\n"))
     throw Error(name + ": not a Radiance .hdr file (no #?RADIANCE signature)");
   std::size_t at = bytes.find('\n') + 1;
-  for (;;) {
+  auto nextLine = [&](const char* missing) {
     std::size_t end = bytes.find('\n', at);
-    if (end == std::string::npos) throw Error(name + ": truncated: the header has no end (a blank line)");
+    if (end == std::string::npos) throw Error(name + ": truncated: " + missing);
     std::string line = bytes.substr(at, end - at);
     at = end + 1;
-    if (line.empty()) break;
-    if (line.starts_with("FORMAT=") && line != "FORMAT=32-bit_rle_rgbe")
+    return line.substr(0, line.find('\0'));
+  };
+  bool rgbe = false;
+  for (std::string line = nextLine("the header has no end (a blank line)"); !line.empty();
+       line = nextLine("the header has no end (a blank line)")) {
+    if (!line.starts_with("FORMAT=")) continue;
+    if (line != "FORMAT=32-bit_rle_rgbe")
       throw Error(name + ": " + excerpt(line) + ": Prism reads RGBE only (FORMAT=32-bit_rle_rgbe)");
+    rgbe = true;
   }
-  std::size_t end = bytes.find('\n', at);
-  if (end == std::string::npos) throw Error(name + ": truncated: no resolution line after the header");
-  std::string line = bytes.substr(at, end - at);
+  if (!rgbe) throw Error(name + ": the header has no FORMAT=32-bit_rle_rgbe line");
+  std::string line = nextLine("no resolution line after the header");
   std::istringstream in(line);
   std::string ySign, xSign, rest;
   long long height = 0, width = 0;
@@ -47,16 +55,38 @@ void checkHeader(const std::string& name, const std::string& bytes) {
     throw Error(name + ": an image of " + std::to_string(width) + " × " + std::to_string(height) +
                 " pixels; Prism reads 1 to " + std::to_string(kMaxHdrSide) + " on each side");
   }
-  // A run-length encoded scan line (8 or more pixels) takes at least 2 bytes per 127 pixels per
-  // component, and 4 bytes of its own; a narrower one is flat, 4 bytes a pixel. Fewer bytes than
-  // that cannot hold the image (stb would allocate it first).
-  const double lineBytes = width < 8 ? 4.0 * static_cast<double>(width)
-                                 : 4.0 + 8.0 * std::ceil(static_cast<double>(width) / 127.0);
-  const double needed = static_cast<double>(height) * lineBytes;
-  if (static_cast<double>(bytes.size() - end - 1) < needed) {
-    throw Error(name + ": truncated: a " + std::to_string(width) + " × " + std::to_string(height) +
-                " image needs at least " + std::to_string(static_cast<long long>(needed)) + " bytes of pixels, it has " +
-                std::to_string(bytes.size() - end - 1));
+  auto byteAt = [&](std::size_t i) { return static_cast<unsigned char>(bytes[i]); };
+  auto truncated = [&](long long y) {
+    return Error(name + ": truncated: the data ends in scan line " + std::to_string(y) + " of " +
+                 std::to_string(height) + " (" + std::to_string(width) + " × " + std::to_string(height) + ")");
+  };
+  const auto w = static_cast<std::size_t>(width);
+  for (long long y = 0; y < height; ++y) {
+    // Narrow images, and any scan line without the run-length marker, make stb read the whole
+    // image flat, 4 bytes a pixel, from where the pixels begin.
+    const bool marked = width >= 8 && at + 4 <= bytes.size() && byteAt(at) == 2 && byteAt(at + 1) == 2 &&
+                        (byteAt(at + 2) & 0x80) == 0;
+    if (!marked) {
+      if (bytes.size() - at < 4 * w * static_cast<std::size_t>(height - y)) throw truncated(y);
+      return;
+    }
+    if ((static_cast<std::size_t>(byteAt(at + 2)) << 8 | byteAt(at + 3)) != w)
+      throw Error(name + ": scan line " + std::to_string(y) + " claims another width than " + std::to_string(width));
+    at += 4;
+    for (int component = 0; component < 4; ++component) {
+      for (std::size_t left = w; left > 0;) {
+        if (at >= bytes.size()) throw truncated(y);
+        std::size_t count = byteAt(at++);
+        const bool run = count > 128;
+        if (run) count -= 128;
+        if (count == 0 || count > left)
+          throw Error(name + ": scan line " + std::to_string(y) + ": a run of " + std::to_string(count) + " pixels where " +
+                      std::to_string(left) + " are left");
+        at += run ? 1 : count;
+        if (at > bytes.size()) throw truncated(y);
+        left -= count;
+      }
+    }
   }
 }
 

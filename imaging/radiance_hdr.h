@@ -13,10 +13,11 @@ namespace prism::imaging {
 // The largest side readRadianceHdr takes: 16K environment maps are the largest published.
 inline constexpr int kMaxHdrSide = 16384;
 
-// Three channels, row 0 at the top. The header is checked before anything is decoded — the
-// "#?RADIANCE" (or "#?RGBE") signature, FORMAT=32-bit_rle_rgbe when given, and a standard
-// "-Y H +X W" resolution line with sides of 1 to kMaxHdrSide — and the data must then hold every
-// scan line. Error "FILE: …" on one line otherwise.
+// Three channels, row 0 at the top. The file is checked before anything is decoded — the
+// "#?RADIANCE" (or "#?RGBE") signature, a FORMAT=32-bit_rle_rgbe line, a standard "-Y H +X W"
+// resolution line with sides of 1 to kMaxHdrSide, and scan lines that hold every pixel (each
+// run-length encoded line walked as the decoder will read it). Error "FILE: …" on one line
+// otherwise.
 FloatImage readRadianceHdr(const std::filesystem::path& path);
 
 // RGB (alpha dropped), run-length encoded, atomically (core/atomic_file.h); negative values are

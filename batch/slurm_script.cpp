@@ -29,8 +29,9 @@ std::string jobText(const SlurmJob& job, const SlurmScript& script, bool array) 
 
 std::string shellQuote(std::string_view text) {
   // Characters no shell gives a meaning to in a word: such a word goes unquoted.
-  auto plain = [](unsigned char c) {
-    return std::isalnum(c) || std::string_view("_./:=,+@%-").find(static_cast<char>(c)) != std::string_view::npos;
+  auto plain = [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+           std::string_view("_./:=,+@%-").find(c) != std::string_view::npos;
   };
   if (!text.empty() && std::all_of(text.begin(), text.end(), plain)) return std::string(text);
   std::string quoted = "'";

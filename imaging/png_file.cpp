@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "imaging/image_file_bytes.h"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -124,13 +125,7 @@ void checkPngBeforeDecoding(const std::string& name, std::span<const std::uint8_
 }
 
 PngImage readPng8(const std::filesystem::path& path) {
-  if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a folder, not an image");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path.string() + ": cannot open: " + std::strerror(errno));
-  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw Error(path.string() + ": cannot read: " + std::strerror(errno));
-  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-    throw Error(path.string() + ": too large for stb_image (over 2 GiB)");
+  const std::string bytes = readImageFileBytes(path);
   checkPngBeforeDecoding(path.string(), {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
   int width = 0, height = 0, fileChannels = 0;
   stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),

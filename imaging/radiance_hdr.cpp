@@ -13,6 +13,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "imaging/image_file_bytes.h"
 
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
@@ -93,13 +94,7 @@ void checkHeader(const std::string& name, const std::string& bytes) {
 }  // namespace
 
 FloatImage readRadianceHdr(const std::filesystem::path& path) {
-  if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a folder, not an image");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path.string() + ": cannot open: " + std::strerror(errno));
-  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw Error(path.string() + ": cannot read: " + std::strerror(errno));
-  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-    throw Error(path.string() + ": too large for stb_image (over 2 GiB)");
+  const std::string bytes = readImageFileBytes(path);
   checkHeader(path.string(), bytes);
   int width = 0, height = 0, fileChannels = 0;
   float* pixels = stbi_loadf_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/fnv1a.h"
 #include "core/task_split.h"
 #include "imaging/exr_band.h"
 #include "imaging/float_image.h"
@@ -23,14 +24,6 @@ constexpr const char* kPartKind = "reference 1";
 bool isCamera(const std::string& observerName) { return observer(observerName).isCamera; }
 std::vector<std::string> colourNames(const std::string& observerName) {
   return isCamera(observerName) ? std::vector<std::string>{"R", "G", "B"} : std::vector<std::string>{"X", "Y", "Z"};
-}
-
-std::uint64_t fnv1a(std::string_view bytes, std::uint64_t hash) {
-  for (unsigned char c : bytes) {
-    hash ^= c;
-    hash *= 1099511628211ull;
-  }
-  return hash;
 }
 
 // Reading a part's attributes: Error "PATH: not a part of a reference render (WHY)".
@@ -106,7 +99,7 @@ std::string sceneHash(const std::filesystem::path& scene, const std::vector<std:
   std::ifstream in(scene, std::ios::binary);
   std::ostringstream bytes;
   if (!in || !(bytes << in.rdbuf())) throw Error(scene.string() + ": cannot read the scene to hash it");
-  std::uint64_t hash = fnv1a(bytes.view(), 14695981039346656037ull);
+  std::uint64_t hash = fnv1a(bytes.view());
   for (const std::string& set : sets) hash = fnv1a(set, fnv1a(std::string_view("\0", 1), hash));
   return fmt::format("{:016x}", hash);
 }

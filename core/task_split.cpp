@@ -1,7 +1,9 @@
 #include "core/task_split.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
+#include <numeric>
 #include <string>
 
 #include "core/error.h"
@@ -44,6 +46,28 @@ IndexRange shareOf(TaskIndex task, int total) {
   PRISM_CHECK(task.count >= 1 && task.index >= 0 && task.index < task.count && total >= 0);
   auto bound = [&](long long i) { return static_cast<int>(i * total / task.count); };
   return {bound(task.index), bound(task.index + 1LL)};
+}
+
+void checkCoveredOnce(const std::vector<IndexRange>& ranges, const std::vector<std::string>& names, int total,
+                      std::string_view noun) {
+  PRISM_CHECK(ranges.size() == names.size());
+  std::vector<std::size_t> order(ranges.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::pair(ranges[a].begin, ranges[a].end) < std::pair(ranges[b].begin, ranges[b].end);
+  });
+  auto span = [&](int a, int b) { return "merge: " + std::string(noun) + " " + std::to_string(a) + ":" + std::to_string(b); };
+  int covered = 0;
+  std::size_t last = 0;
+  for (std::size_t i : order) {
+    const IndexRange r = ranges[i];
+    if (r.begin > covered) throw Error(span(covered, r.begin) + " are missing");
+    if (r.begin < covered)
+      throw Error(span(r.begin, std::min(covered, r.end)) + " are in both " + names[last] + " and " + names[i]);
+    covered = r.end;
+    last = i;
+  }
+  if (covered < total) throw Error(span(covered, total) + " are missing");
 }
 
 }  // namespace prism

@@ -44,5 +44,29 @@ TEST(TaskSplit, ParsesTaskIndicesAndRanges) {
   }
 }
 
+std::string coverError(const std::vector<IndexRange>& ranges, int total) {
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < ranges.size(); ++i) {
+    names.emplace_back("p");
+    names.back() += std::to_string(i);
+  }
+  try {
+    checkCoveredOnce(ranges, names, total, "rows");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(TaskSplit, PartsMustCoverTheCountExactlyOnce) {
+  EXPECT_EQ(coverError({{4, 10}, {0, 4}}, 10), "");  // in any order
+  EXPECT_EQ(coverError({{0, 4}, {5, 10}}, 10), "merge: rows 4:5 are missing");
+  EXPECT_EQ(coverError({{0, 4}}, 10), "merge: rows 4:10 are missing");
+  EXPECT_EQ(coverError({{2, 10}}, 10), "merge: rows 0:2 are missing");
+  EXPECT_EQ(coverError({{0, 6}, {4, 10}}, 10), "merge: rows 4:6 are in both p0 and p1");
+  EXPECT_EQ(coverError({{0, 10}, {0, 10}}, 10), "merge: rows 0:10 are in both p0 and p1");
+  EXPECT_EQ(coverError({}, 10), "merge: rows 0:10 are missing");
+}
+
 }  // namespace
 }  // namespace prism

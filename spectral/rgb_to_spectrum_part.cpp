@@ -4,7 +4,6 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
-#include <numeric>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -111,27 +110,14 @@ RgbToSpectrumTable mergeTableParts(const std::vector<std::filesystem::path>& fil
                   std::to_string(parts[0].resolution) + "³");
     }
   }
-  std::vector<std::size_t> order(parts.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return std::pair(parts[a].columns.begin, parts[a].columns.end) < std::pair(parts[b].columns.begin, parts[b].columns.end);
-  });
   const int res = parts[0].resolution;
-  int covered = 0;
-  std::size_t last = 0;
-  for (std::size_t i : order) {
-    const IndexRange c = parts[i].columns;
-    if (c.begin > covered)
-      throw Error("merge: columns " + std::to_string(covered) + ":" + std::to_string(c.begin) + " are missing");
-    if (c.begin < covered) {
-      throw Error("merge: columns " + std::to_string(c.begin) + ":" + std::to_string(std::min(covered, c.end)) +
-                  " are in both " + files[last].string() + " and " + files[i].string());
-    }
-    covered = c.end;
-    last = i;
+  std::vector<IndexRange> columns;
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    columns.push_back(parts[i].columns);
+    names.push_back(files[i].string());
   }
-  if (covered < tableColumns(res))
-    throw Error("merge: columns " + std::to_string(covered) + ":" + std::to_string(tableColumns(res)) + " are missing");
+  checkCoveredOnce(columns, names, tableColumns(res), "columns");
 
   RgbToSpectrumTable table(parts[0].gamut, res);
   for (const RgbToSpectrumPart& part : parts) {

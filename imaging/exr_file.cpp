@@ -17,7 +17,10 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/atomic_file.h"
@@ -54,6 +57,19 @@ std::vector<std::string> channelNamesToWrite(const FloatImage& image, const ExrW
       xyz ? std::vector<std::string>{"X", "Y", "Z"} : std::vector<std::string>{"R", "G", "B"};
   if (image.channels == 4) names.push_back("A");
   return names;
+}
+
+// The bytes of a value of each fixed-size attribute type OpenEXR 3.1 knows (its file layout,
+// "Attribute types"), which it reads whatever the attribute's size says.
+std::optional<std::int64_t> fixedExrAttributeSize(std::string_view type) {
+  static constexpr std::pair<std::string_view, std::int64_t> kSizes[] = {
+      {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"deepImageState", 1},
+      {"double", 8}, {"envmap", 1}, {"float", 4}, {"int", 4}, {"keycode", 28}, {"lineOrder", 1},
+      {"m33f", 36}, {"m33d", 72}, {"m44f", 64}, {"m44d", 128}, {"rational", 8}, {"tiledesc", 9},
+      {"timecode", 8}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16}, {"v3i", 12}, {"v3f", 12}, {"v3d", 24}};
+  for (const auto& [name, bytes] : kSizes)
+    if (name == type) return bytes;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -148,13 +164,31 @@ void checkExrHeaderSizes(const std::filesystem::path& path) {
       throw Error(path.string() + ": malformed EXR header: attribute '" + excerpt(name) + "' claims " +
                   std::to_string(size) + " bytes, " + std::to_string(left) + " are left");
     }
-    // OpenEXR reads these two by their contents, not by their size: a value that ends elsewhere
-    // than its size says would make it read the rest of the header from another place than this
-    // walk (where a string may claim gigabytes). A channel list is entries of a name and 16 bytes
-    // up to an empty name; a preview is its width and height and 4 bytes a pixel.
+    // OpenEXR reads the values of the types it knows by their contents, not by their size: a
+    // value that ends elsewhere than its size says would make it read the rest of the header from
+    // another place than this walk (where a string may claim gigabytes). Fixed-size types take
+    // their size; a channel list is entries of a name and 16 bytes up to an empty name; a preview
+    // is its width and height and 4 bytes a pixel; a string vector is strings of a 4-byte length
+    // each, read while the size is not yet reached; a float vector is whole floats.
     const std::streamoff start = in.tellg();
     std::int64_t contents = size;
-    if (type == "chlist") {
+    if (const std::optional<std::int64_t> fixed = fixedExrAttributeSize(type)) {
+      contents = *fixed;
+    } else if (type == "floatvector") {
+      contents = size - size % 4;
+    } else if (type == "stringvector") {
+      contents = 0;
+      while (contents < size && in) {
+        unsigned char length4[4] = {};
+        in.read(reinterpret_cast<char*>(length4), 4);
+        const std::int64_t length = static_cast<std::int32_t>(length4[0] | length4[1] << 8 | length4[2] << 16 |
+                                                              static_cast<std::uint32_t>(length4[3]) << 24);
+        if (length < 0) break;
+        contents += 4 + length;
+        in.seekg(length, std::ios::cur);
+      }
+      if (in && contents < size) contents = -1;  // a negative length
+    } else if (type == "chlist") {
       while (!readString("channel name").empty()) in.seekg(16, std::ios::cur);
       contents = in.tellg() - start;
     } else if (type == "preview") {

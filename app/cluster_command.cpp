@@ -185,4 +185,32 @@ void printLutClusterScript(const ClusterOptions& o) {
   fmt::print("{}", batch::slurmScriptText(s));
 }
 
+void printPrtClusterScript(const ClusterOptions& o) {
+  const PrtBakeOptions& p = o.prt;
+  const PrtBakeTarget target = prtBakeTarget(p);  // the model is read here, not in a hundred tasks
+  const auto vertices = static_cast<std::int64_t>(target.mesh.positions.size());
+  if (o.tasks > vertices) throw Error(fmt::format("--tasks {}: {} has {} vertices, at most {} tasks", o.tasks, p.input, vertices, vertices));
+  batch::SlurmScript s = scriptBase(o, "prism-prt-bake");
+  const std::filesystem::path cacheFile = std::filesystem::absolute(target.cacheFile);
+  s.logs = cacheFile.string() + ".parts";
+  s.summary = fmt::format("prism prt bake {} ({} vertices, {} directions each{}) as {} tasks by vertices, then prism "
+                          "merge into {}",
+                          p.input, vertices, p.samples, p.shadows ? "" : ", unshadowed", o.tasks, cacheFile.string());
+  s.array.command = shellQuote(prismExecutable()) + " prt bake " +
+                    shellQuote(std::filesystem::absolute(p.input).string()) + fmt::format(" --samples {}", p.samples) +
+                    (p.shadows ? "" : " --no-shadows") +
+                    fmt::format(" --part \"$SLURM_ARRAY_TASK_ID/{}\" --threads \"$SLURM_CPUS_PER_TASK\"", o.tasks) +
+                    " -o " + shellQuote(s.logs.string()) + fmt::format("/\"part-$SLURM_ARRAY_TASK_ID-of-{}.prtpart\"", o.tasks);
+  // A task holds the scene as loaded, the mesh (positions, normals, indices) and Embree's copy
+  // with its BVH (about three times the triangles' bytes), and its share of the transfer (100
+  // bytes a vertex); the merge every part and the whole transfer.
+  const auto meshBytes = static_cast<std::int64_t>(target.mesh.positions.size() * 24 + target.mesh.indices.size() * 4);
+  s.array.memoryMiB = requestMiB(kProcessBytes + 4 * meshBytes + vertices * 100 / o.tasks + 100);
+  s.finish.name = "prism-prt-merge";
+  s.finish.memoryMiB = requestMiB(kProcessBytes + 3 * vertices * 100);
+  s.finish.command = shellQuote(prismExecutable()) + " merge " + shellQuote(s.logs.string()) +
+                     fmt::format("/part-*-of-{}.prtpart", o.tasks) + " -o " + shellQuote(cacheFile.string());
+  fmt::print("{}", batch::slurmScriptText(s));
+}
+
 }  // namespace prism::app

@@ -1,4 +1,4 @@
-// `prism cluster script reference|validate|lut …`: the bash script that submits Prism's batch work
+// `prism cluster script reference|validate|lut|prt …`: the bash script that submits Prism's batch work
 // to Slurm as an array of --tasks tasks and the job that puts their parts together after them
 // (batch/slurm_script.h), with each job's resources: --cpus per task (prism's --threads), memory
 // estimated from what the task holds (below), and --time. Paths in it are absolute, and the jobs
@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/prt_commands.h"
 #include "app/reference_commands.h"
 #include "app/upsampling_commands.h"
 #include "harness/validate.h"
@@ -30,10 +31,13 @@ struct ClusterOptions {
   harness::ValidateOptions validate;
   // lut
   LutOptions lut;
+  // prt
+  PrtBakeOptions prt;
 };
 
 void printReferenceClusterScript(const ClusterOptions& options);
 void printValidateClusterScript(const ClusterOptions& options);
 void printLutClusterScript(const ClusterOptions& options);
+void printPrtClusterScript(const ClusterOptions& options);
 
 }  // namespace prism::app

@@ -231,6 +231,9 @@ int main(int argc, char** argv) {
   prtBakeCmd->add_option("--samples", prtBake.samples, "directions per vertex")->capture_default_str();
   prtBakeCmd->add_flag("!--shadows", prtBake.shadows, "unshadowed transfer (--no-shadows)");
   prtBakeCmd->add_option("--cache", prtBake.cacheDir, "cache folder (default: Prism's cache)");
+  prtBakeCmd->add_option("--part", prtBake.part, "I/N: only task I of N's share of the vertices, as a part for `prism merge` (-o)");
+  prtBakeCmd->add_option("-o,--output", prtBake.output, "the part's file (with --part)");
+  prtBakeCmd->add_option("--threads", prtBake.threads, "worker threads (0: every core)")->capture_default_str();
   PrtReportOptions prtReport;
   auto* prtReportCmd = prtCmd->add_subcommand("report", "the ColorChecker object (or a scene): spectral PRT (m = 1..16) and RGB-PRT against 5 nm sampling");
   prtReportCmd->add_option("input", prtReport.input, "a scene (.json) or glTF model instead of the ColorChecker height field");
@@ -320,10 +323,11 @@ int main(int argc, char** argv) {
 
   MergeOptions merge;
   auto* mergeCmd = app.add_subcommand(
-      "merge", "put the parts of a split reference render (--tile, --samples) or table (lut --part) together; "
+      "merge", "put the parts of a split reference render (--tile, --samples), table (lut --part) or PRT bake "
+               "(prt bake --part) together; "
                "refuses gaps, overlaps and parts of another");
-  mergeCmd->add_option("parts", merge.parts, "the part files (.exr, or a table's)")->required();
-  mergeCmd->add_option("-o,--output", merge.output, "OUT.exr or OUT.png (a table: its file)")->required();
+  mergeCmd->add_option("parts", merge.parts, "the part files (.exr, a table's or a bake's)")->required();
+  mergeCmd->add_option("-o,--output", merge.output, "OUT.exr or OUT.png (a table, a bake: its file)")->required();
   mergeCmd->add_option("--variance", merge.variance, "also write the per-pixel variance of the mean (EXR)");
 
   ClusterOptions cluster;
@@ -355,6 +359,13 @@ int main(int argc, char** argv) {
   scriptValidateCmd->add_option("--scenes", cluster.validate.scenes, "folder of the scene files (default: the example scenes)");
   scriptValidateCmd->add_flag("--quick", cluster.validate.quick, "240x135 and fewer paths per pixel");
   addClusterOptions(scriptValidateCmd);
+  auto* scriptPrtCmd = scriptCmd->add_subcommand(
+      "prt", "`prism prt bake --part I/N` (a share of the vertices each), then `prism merge` into the cache's transfer file");
+  scriptPrtCmd->add_option("input", cluster.prt.input, "scene (.json) or glTF model (.gltf, .glb)")->required();
+  scriptPrtCmd->add_option("--samples", cluster.prt.samples, "directions per vertex")->capture_default_str();
+  scriptPrtCmd->add_flag("!--shadows", cluster.prt.shadows, "unshadowed transfer (--no-shadows)");
+  scriptPrtCmd->add_option("--cache", cluster.prt.cacheDir, "cache folder the merged bake goes to (default: Prism's cache)");
+  addClusterOptions(scriptPrtCmd);
   auto* scriptLutCmd = scriptCmd->add_subcommand(
       "lut", "`prism lut --part I/N` (a share of the table's 3·res² columns each), then `prism merge`");
   scriptLutCmd->add_option("--gamut", cluster.lut.gamut, "srgb, display-p3, rec2020, acescg, aces2065-1")->capture_default_str();
@@ -525,6 +536,7 @@ int main(int argc, char** argv) {
     }
     if (*scriptValidateCmd) printValidateClusterScript(cluster);
     if (*scriptLutCmd) printLutClusterScript(cluster);
+    if (*scriptPrtCmd) printPrtClusterScript(cluster);
     if (*compareCmd) {
       if (whiteOpt->count() > 0) cmp.white = cmpWhite;
       runCompare(cmp);

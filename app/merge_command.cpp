@@ -7,6 +7,8 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "spectral/rgb_to_spectrum_part.h"
+#include "techniques/prt/transfer_bake.h"
+#include "techniques/prt/transfer_part.h"
 
 namespace prism::app {
 
@@ -18,6 +20,15 @@ void runMerge(const MergeOptions& o) {
     table.save(o.output);
     fmt::print("merged {} parts into {} ({} table, {}³)\n", o.parts.size(), o.output.string(), table.gamut(),
                table.resolution());
+    return;
+  }
+  if (!o.parts.empty() && prt::isTransferPart(o.parts.front())) {
+    if (!o.variance.empty()) throw Error("--variance: parts of a PRT bake have none");
+    requireWritable(o.output);
+    prt::TransferPart whole = prt::mergeTransferParts(o.parts);
+    prt::writeTransferFile(o.output, whole.key, whole.samples, whole.transfer);
+    fmt::print("merged {} parts into {} (PRT transfer of {} vertices, {} directions each, key {:016x})\n",
+               o.parts.size(), o.output.string(), whole.vertexCount, whole.samples, whole.key);
     return;
   }
   checkReferenceOutputs(o.output, o.variance);

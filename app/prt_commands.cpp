@@ -13,6 +13,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/task_split.h"
 #include "harness/progress_bar.h"
 #include "harness/prt_plot.h"
 #include "imaging/float_image.h"
@@ -25,6 +26,7 @@
 #include "techniques/prt/metamer.h"
 #include "techniques/prt/prt_evaluation.h"
 #include "techniques/prt/prt_section.h"
+#include "techniques/prt/transfer_part.h"
 
 namespace prism::app {
 namespace {
@@ -78,11 +80,46 @@ std::filesystem::path cacheFolder(const std::string& given) {
   return given.empty() ? cacheDirectory() : std::filesystem::path(given);
 }
 
-prt::CachedTransfer transferFor(const prt::PrtMesh& mesh, const prt::BakeSettings& settings, const std::string& cache) {
+prt::CachedTransfer transferFor(const prt::PrtMesh& mesh, const prt::BakeSettings& settings, const std::string& cache,
+                                unsigned threads = 0) {
   harness::ProgressBar bar("PRT transfer bake");
   return prt::cachedTransfer(
       mesh, settings, cacheFolder(cache), [&bar](std::size_t done, std::size_t total) { bar.update(done, total); },
-      [](const std::string& note) { fmt::print(stderr, "prism: {}\n", note); });
+      [](const std::string& note) { fmt::print(stderr, "prism: {}\n", note); }, threads);
+}
+
+// Task I of N's share of the vertices, as a part for `prism merge`.
+void runPrtBakePart(const PrtBakeOptions& o, const prt::PrtMesh& mesh, const prt::BakeSettings& settings) {
+  if (o.output.empty()) throw Error("--part: give the part's file with -o");
+  if (!o.cacheDir.empty()) throw Error("--cache: a part is written to -o (prism merge puts the parts into the cache's file)");
+  const TaskIndex task = parseTaskIndex(o.part, "--part");
+  const int vertices = static_cast<int>(mesh.positions.size());
+  if (task.count > vertices)
+    throw Error(fmt::format("--part {}: {} has {} vertices, at most {} tasks", o.part, o.input, vertices, vertices));
+  prt::TransferPart part{prt::transferKey(mesh, settings), settings.samples, vertices, shareOf(task, vertices), {}};
+  const std::string what = fmt::format("vertices {}:{} of {}", part.vertices.begin, part.vertices.end, vertices);
+  if (prt::isTransferPart(o.output)) {
+    try {
+      prt::TransferPart existing = prt::loadTransferPart(o.output);
+      if (existing.key == part.key && existing.vertices == part.vertices) {
+        fmt::print("{}: complete ({}), skipped\n", o.output, what);
+        return;
+      }
+    } catch (const Error& e) {
+      fmt::print("{}: baking it again ({})\n", o.output, e.what());
+    }
+  }
+  requireWritable(o.output);
+  auto start = std::chrono::steady_clock::now();
+  {
+    harness::ProgressBar bar(fmt::format("PRT transfer bake, part {}", o.part));
+    part.transfer = prt::bakeTransfer(mesh, settings, part.vertices,
+                                      [&bar](std::size_t done, std::size_t total) { bar.update(done, total); }, o.threads);
+  }
+  prt::saveTransferPart(o.output, part);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  fmt::print("wrote {} ({}, {} directions each, key {:016x}) in {:.2f} s\n", o.output, what, settings.samples, part.key,
+             seconds);
 }
 
 nlohmann::json statisticsJson(const prt::DeltaEStatistics& s) {
@@ -108,12 +145,23 @@ std::string plyText(const prt::PrtObject& object, const std::vector<Eigen::Vecto
 
 }  // namespace
 
+PrtBakeTarget prtBakeTarget(const PrtBakeOptions& o) {
+  checkSamples(o.samples);
+  PrtBakeTarget target;
+  target.mesh = loadPrtObject(o.input, false).mesh;
+  target.key = prt::transferKey(target.mesh, {o.samples, o.shadows});
+  target.cacheFile = prt::transferCacheFile(cacheFolder(o.cacheDir), target.key);
+  return target;
+}
+
 void runPrtBake(const PrtBakeOptions& o) {
   checkSamples(o.samples);
   prt::PrtMesh mesh = loadPrtObject(o.input, false).mesh;
   prt::BakeSettings settings{o.samples, o.shadows};
+  if (!o.part.empty()) return runPrtBakePart(o, mesh, settings);
+  if (!o.output.empty()) throw Error("-o: only with --part (a whole bake goes to the cache)");
   auto start = std::chrono::steady_clock::now();
-  prt::CachedTransfer result = transferFor(mesh, settings, o.cacheDir);
+  prt::CachedTransfer result = transferFor(mesh, settings, o.cacheDir, o.threads);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   fmt::print("{}: {} vertices, {} directions each{}\n", o.input, mesh.positions.size(), o.samples,
              o.shadows ? "" : " (unshadowed)");

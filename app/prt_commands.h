@@ -2,8 +2,12 @@
 // result to stdout and throws prism::Error on bad input; files are written atomically.
 #pragma once
 
+#include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
+
+#include "techniques/prt/transfer_bake.h"
 
 namespace prism::app {
 
@@ -12,10 +16,23 @@ struct PrtBakeOptions {
   int samples = 1024;      // directions per vertex
   bool shadows = true;
   std::string cacheDir;    // default: Prism's cache folder
+  std::string part;        // "I/N": only task I of N's vertices, written to `output` (transfer_part.h)
+  std::string output;      // the part's file (with --part only)
+  unsigned threads = 0;    // 0: every core
 };
 // Bakes (or reads from the cache) the SH-5 transfer of every vertex of the input's meshes, all
-// meshes occluding each other; prints what it did and the rays per second.
+// meshes occluding each other; prints what it did and the rays per second. With `part`, bakes
+// that task's share of the vertices into a part for `prism merge` (skipped when the file already
+// holds it, whole).
 void runPrtBake(const PrtBakeOptions& options);
+// What runPrtBake bakes: the input's mesh (z-up, world space) and the cache file its transfer
+// goes to (`cacheDir`, else Prism's cache; transfer_bake.h's transferCacheFile).
+struct PrtBakeTarget {
+  prt::PrtMesh mesh;
+  std::uint64_t key = 0;
+  std::filesystem::path cacheFile;
+};
+PrtBakeTarget prtBakeTarget(const PrtBakeOptions& options);
 
 struct PrtReportOptions {
   std::string input;                // a scene or glTF model; empty: the ColorChecker height field

@@ -14,6 +14,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/fnv1a.h"
 #include "core/parallel_for.h"
 
 namespace prism::prt {
@@ -22,15 +23,6 @@ namespace {
 constexpr char kMagic[8] = {'P', 'R', 'I', 'S', 'M', 'P', 'R', 'T'};
 constexpr std::uint32_t kVersion = 1;
 constexpr std::size_t kHeaderBytes = 8 + 4 + 4 + 8 + 4 + 4;
-
-std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = 14695981039346656037ull) {
-  const auto* bytes = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < size; ++i) {
-    hash ^= bytes[i];
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
 
 // The object's triangles in an Embree BVH, for occlusion only.
 class Occluder {
@@ -128,7 +120,15 @@ void checkMesh(const PrtMesh& mesh) {
 
 std::vector<shared::Sh25> bakeTransfer(const PrtMesh& mesh, const BakeSettings& settings, const Progress& progress,
                                        unsigned threads) {
+  return bakeTransfer(mesh, settings, IndexRange{0, static_cast<int>(mesh.positions.size())}, progress, threads);
+}
+
+std::vector<shared::Sh25> bakeTransfer(const PrtMesh& mesh, const BakeSettings& settings, IndexRange vertices,
+                                       const Progress& progress, unsigned threads) {
   checkMesh(mesh);
+  if (vertices.begin < 0 || vertices.end <= vertices.begin || static_cast<std::size_t>(vertices.end) > mesh.positions.size())
+    throw Error(fmt::format("PRT bake: vertices {}:{} outside the mesh's {}", vertices.begin, vertices.end,
+                            mesh.positions.size()));
   if (settings.samples < 1 || settings.samples > (1 << 20))
     throw Error(fmt::format("PRT bake: {} samples out of range 1..{}", settings.samples, 1 << 20));
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
@@ -155,10 +155,11 @@ std::vector<shared::Sh25> bakeTransfer(const PrtMesh& mesh, const BakeSettings& 
 
   std::optional<Occluder> occluder;
   if (settings.shadows) occluder.emplace(mesh);
-  std::vector<shared::Sh25> transfer(mesh.positions.size());
+  std::vector<shared::Sh25> transfer(static_cast<std::size_t>(vertices.size()));
   parallelFor(
-      mesh.positions.size(), threads,
-      [&](std::size_t v) {
+      transfer.size(), threads,
+      [&](std::size_t i) {
+        const std::size_t v = static_cast<std::size_t>(vertices.begin) + i;
         glm::vec3 normal = mesh.normals[v], t, b;
         frame(normal, t, b);
         glm::vec3 origin = mesh.positions[v] + offset * normal;
@@ -170,7 +171,7 @@ std::vector<shared::Sh25> bakeTransfer(const PrtMesh& mesh, const BakeSettings& 
           for (int k = 0; k < 25; ++k) sum[k] += y.c[k];
         }
         // Cosine-weighted pdf cos θ/π: T̃_k = (1/N) Σ V Y_k cos θ / (cos θ/π) = (π/N) Σ V Y_k.
-        for (int k = 0; k < 25; ++k) transfer[v].c[k] = static_cast<float>(sum[k] * std::numbers::pi / n);
+        for (int k = 0; k < 25; ++k) transfer[i].c[k] = static_cast<float>(sum[k] * std::numbers::pi / n);
       },
       progress);
   return transfer;
@@ -236,11 +237,16 @@ std::vector<shared::Sh25> readTransferFile(const std::filesystem::path& path, st
   return transfer;
 }
 
+std::filesystem::path transferCacheFile(const std::filesystem::path& cacheDir, std::uint64_t key) {
+  return cacheDir / "prt" / fmt::format("transfer-{:016x}.bin", key);
+}
+
 CachedTransfer cachedTransfer(const PrtMesh& mesh, const BakeSettings& settings, const std::filesystem::path& cacheDir,
-                              const Progress& progress, const std::function<void(const std::string&)>& note) {
+                              const Progress& progress, const std::function<void(const std::string&)>& note,
+                              unsigned threads) {
   std::uint64_t key = transferKey(mesh, settings);
   CachedTransfer result;
-  result.file = cacheDir / "prt" / fmt::format("transfer-{:016x}.bin", key);
+  result.file = transferCacheFile(cacheDir, key);
   if (std::filesystem::exists(result.file)) {
     try {
       result.transfer = readTransferFile(result.file, key);
@@ -253,7 +259,7 @@ CachedTransfer cachedTransfer(const PrtMesh& mesh, const BakeSettings& settings,
       if (note) note(std::string(e.what()) + "; rebuilding");
     }
   }
-  result.transfer = bakeTransfer(mesh, settings, progress);
+  result.transfer = bakeTransfer(mesh, settings, progress, threads);
   writeTransferFile(result.file, key, settings.samples, result.transfer);
   return result;
 }

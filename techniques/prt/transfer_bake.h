@@ -19,6 +19,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/task_split.h"
 #include "techniques/prt/prt_shared.h"
 
 namespace prism::prt {
@@ -39,6 +40,11 @@ using Progress = std::function<void(std::size_t done, std::size_t total)>;
 // Error when the mesh is inconsistent (index out of range, normals count) or Embree fails.
 std::vector<shared::Sh25> bakeTransfer(const PrtMesh& mesh, const BakeSettings& settings,
                                        const Progress& progress = {}, unsigned threads = 0);
+// The transfer of the vertices [vertices.begin, vertices.end) only, occluded by the whole mesh:
+// the same values, bit for bit, as those vertices of bakeTransfer (a task's share of a split
+// bake, transfer_part.h). Error when the range is empty or past the mesh.
+std::vector<shared::Sh25> bakeTransfer(const PrtMesh& mesh, const BakeSettings& settings, IndexRange vertices,
+                                       const Progress& progress = {}, unsigned threads = 0);
 
 std::uint64_t transferKey(const PrtMesh& mesh, const BakeSettings& settings);
 
@@ -58,6 +64,8 @@ struct CachedTransfer {
 // cached file could not be used ("…; rebuilding").
 CachedTransfer cachedTransfer(const PrtMesh& mesh, const BakeSettings& settings,
                               const std::filesystem::path& cacheDir, const Progress& progress = {},
-                              const std::function<void(const std::string&)>& note = {});
+                              const std::function<void(const std::string&)>& note = {}, unsigned threads = 0);
+// Where cachedTransfer keeps the transfer of `key`: cacheDir/prt/transfer-KEY.bin (16 hex digits).
+std::filesystem::path transferCacheFile(const std::filesystem::path& cacheDir, std::uint64_t key);
 
 }  // namespace prism::prt

@@ -11,6 +11,8 @@
 #   3. a 4-task `validate --quick` sweep and its --collect: results.json and index.html the same
 #      bytes as `prism validate --quick` (the validate_quick test's, this test's fixture);
 #   4. a 16³ upsampling table as 4 tasks by columns and its merge: the same bytes as `prism lut`;
+#      a PRT transfer bake as 3 tasks by vertices and its merge into the cache: the same bytes as
+#      `prism prt bake`'s cached file;
 #   5. one array task killed mid-run (scancel): no part left behind, the merge job cancelled with
 #      it; that task alone submitted again: the image of the undisturbed render.
 # Usage: slurm_cluster_test.sh PRISM MAX_RELATIVE_DIFFERENCE SCENES VALIDATE_QUICK_DIR
@@ -110,6 +112,14 @@ submit "$T/lut.sh"
 expect_completed "$finish" "the merge of 4 column tasks"
 cmp "$T/single.prismlut" "$T/lut/table.prismlut" || fail "4 column tasks merged are not prism lut's table"
 echo "   the same bytes as prism lut's table"
+P=(prt bake "$scenes/spheres_d65.json" --samples 64)
+PRISM_CACHE_DIR="$T/prt-single" "$prism" "${P[@]}" >/dev/null 2>&1
+"$prism" cluster script prt "${P[@]:2}" --tasks 3 --cache "$T/prt-cluster" >"$T/prt.sh"
+submit "$T/prt.sh"
+expect_completed "$finish" "the merge of 3 vertex tasks"
+single_bake=$(ls "$T"/prt-single/prt/transfer-*.bin)
+cmp "$single_bake" "$T/prt-cluster/prt/$(basename "$single_bake")" || fail "3 vertex tasks merged are not prism prt bake's transfer"
+echo "   a PRT bake as 3 tasks by vertices, merged into the cache: the same bytes as prism prt bake's"
 
 echo "== 5. a task killed mid-run, then only it submitted again"
 K=(reference "$scenes/spheres_d65.json" --width 64 --height 48 --spp 768 --seed 11)

@@ -263,6 +263,17 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / sky)) << sky;
   }
   EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / "colorchecker.png"));
+  for (const char* nebula : {"nebula_hubble.png", "nebula_natural.png"}) {
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / nebula)) << nebula;
+    EXPECT_NE(index.find(nebula), std::string::npos) << nebula;
+  }
+  // The GPU's projection against the CPU's reference, within the 2 % in both palettes.
+  const std::size_t hubble = demo.out.find("against the reference: Hubble ");
+  ASSERT_NE(hubble, std::string::npos) << demo.out;
+  const std::size_t natural = demo.out.find(", natural ", hubble);
+  ASSERT_NE(natural, std::string::npos) << demo.out;
+  EXPECT_LT(std::stod(demo.out.substr(hubble + std::string("against the reference: Hubble ").size())), 2.0) << demo.out;
+  EXPECT_LT(std::stod(demo.out.substr(natural + std::string(", natural ").size())), 2.0) << demo.out;
 }
 
 TEST(Cli, AtmosphereCommandsCheckTheirInput) {

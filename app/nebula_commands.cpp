@@ -3,18 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
-#include <cmath>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "core/error.h"
 #include "gpu/headless_context.h"
+#include "harness/nebula_display.h"
 #include "harness/progress_bar.h"
 #include "imaging/exr_file.h"
 #include "imaging/float_image.h"
-#include "imaging/png_file.h"
-#include "spectral/colour_space.h"
 #include "techniques/nebula/nebula_basis.h"
 #include "techniques/nebula/gpu/nebula_gpu_marcher.h"
 #include "techniques/nebula/nebula_scene.h"
@@ -44,15 +42,6 @@ void runNebulaBasis(const NebulaBasisOptions& o) {
 
 namespace {
 
-// A channel's level that maps to white: its 99.5th percentile (the brightest 0.5 % clip).
-double whiteLevel(const std::vector<double>& values) {
-  std::vector<double> v = values;
-  if (v.empty()) return 1.0;
-  std::size_t at = std::min(v.size() - 1, static_cast<std::size_t>(0.995 * static_cast<double>(v.size())));
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(at), v.end());
-  return v[at] > 0.0 ? v[at] : 1.0;
-}
-
 void writeImage(const nebula::NebulaImage& image, const std::string& filters, const std::filesystem::path& out) {
   std::string ext = out.extension().string();
   bool hubble = filters == "hubble";
@@ -66,27 +55,7 @@ void writeImage(const nebula::NebulaImage& image, const std::string& filters, co
     return;
   }
   if (ext != ".png") throw Error(fmt::format("{}: the output must be .exr or .png", out.string()));
-  // PNG: the Hubble palette stretches each channel to its own white level (as its images are
-  // made); natural colour maps XYZ to sRGB and exposes by Y's white level.
-  const RgbColourSpace& srgb = colourSpace("srgb");
-  std::vector<Eigen::Vector3d> rgb;
-  std::array<std::vector<double>, 3> channels;
-  for (const auto& p : image.pixels) {
-    Eigen::Vector3d v(p.x, p.y, p.z);
-    if (!hubble) v = srgb.xyzToRgb * v;
-    rgb.push_back(v);
-    for (int c = 0; c < 3; ++c) channels[static_cast<std::size_t>(c)].push_back(hubble ? v[c] : p.y);
-  }
-  Eigen::Vector3d white(whiteLevel(channels[0]), whiteLevel(channels[1]), whiteLevel(channels[2]));
-  imaging::PngImage png(image.width, image.height, {0, 0, 0});
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      Eigen::Vector3d v = rgb[static_cast<std::size_t>(y * image.width + x)].cwiseQuotient(white).cwiseMax(0.0).cwiseMin(1.0);
-      Eigen::Vector3d e = srgb.encode(v);
-      auto q = [](double u) { return static_cast<std::uint8_t>(std::lround(std::clamp(u, 0.0, 1.0) * 255.0)); };
-      png.setPixel(x, y, {q(e[0]), q(e[1]), q(e[2])});
-    }
-  png.write(out);
+  harness::nebulaDisplayPng(image, hubble).write(out);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "harness/colour_checker_chart.h"
 #include "harness/display_png.h"
 #include "harness/html_report.h"
+#include "harness/nebula_display.h"
 #include "harness/progress_bar.h"
 #include "harness/technique_precompute.h"
 #include "harness/upsampling_table.h"
@@ -19,6 +20,8 @@
 #include "render/display_transform.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "techniques/nebula/gpu/nebula_gpu_marcher.h"
+#include "techniques/nebula/nebula_scene.h"
 #include "core/atomic_file.h"
 #include "core/data_files.h"
 #include "core/error.h"
@@ -36,6 +39,39 @@ struct Entry {
   imaging::DifferenceStats optimisedDifference;  // optimised-4 vs the reference
 };
 
+// A nebula (scenes/nebula/*.json) by projection on the GPU in both filter sets, each held to the
+// CPU's reference (double integration over wavelength).
+struct NebulaEntry {
+  std::string name;
+  double hubbleError = 0.0;   // max relative error per pixel (pixels ≥ 1 % of their channel's peak)
+  double naturalError = 0.0;
+};
+
+// The nebula of `file` in `filters` ("hubble" or "cie1931"), at its camera's size or within
+// `most` pixels a side, written to `png`; returns the render's max relative error against the
+// reference.
+double renderNebula(const std::filesystem::path& file, const std::string& filters, int most,
+                    const std::filesystem::path& png) {
+  nebula::NebulaScene scene = nebula::loadNebulaScene(file);
+  scene.model.filters = filters;
+  nebula::NebulaCamera& camera = scene.model.camera;
+  if (camera.width > most || camera.height > most) {  // the longer side to `most`, the aspect kept
+    const double scale = static_cast<double>(most) / std::max(camera.width, camera.height);
+    camera.width = std::max(1, static_cast<int>(std::lround(camera.width * scale)));
+    camera.height = std::max(1, static_cast<int>(std::lround(camera.height * scale)));
+  }
+  nebula::RenderSettings settings;
+  settings.method = nebula::Method::Projection;
+  settings.steps = scene.steps;
+  nebula::NebulaRenderer renderer(std::move(scene.model), settings);
+  nebula::NebulaGpuMarcher marcher(renderer);
+  nebula::NebulaImage image = marcher.render(settings);
+  settings.method = nebula::Method::Reference;
+  const double error = nebula::maxRelativeError(image, renderer.render(settings));
+  nebulaDisplayPng(image, filters == "hubble").write(png);
+  return error;
+}
+
 imaging::FloatImage tristimulus(const render::Renderer& renderer, int width, int height) {
   imaging::FloatImage image(width, height, 3);
   image.pixels = renderer.readMeanTristimulus();
@@ -50,7 +86,8 @@ std::string description(const std::filesystem::path& file) {
              : std::string();
 }
 
-std::string indexHtml(const std::vector<Entry>& entries, const GalleryOptions& o) {
+std::string indexHtml(const std::vector<Entry>& entries, const std::vector<NebulaEntry>& nebulae,
+                      const GalleryOptions& o) {
   HtmlPage page("Prism gallery");
   page.paragraph(fmt::format(
       "Each scene rendered by <code>prism demo</code> at {}×{} in RGB mode (three channels, the common "
@@ -87,6 +124,19 @@ std::string indexHtml(const std::vector<Entry>& entries, const GalleryOptions& o
       page.figure({{e.name + "_rgb.png", e.name + " in RGB mode"}}, "RGB");
       page.figure({{e.name + "_spectral.png", e.name + " in spectral mode"}}, "spectral");
     }
+    page.endSection();
+  }
+  for (const NebulaEntry& n : nebulae) {
+    page.beginSection(n.name, n.name + " (spectral nebula)");
+    page.paragraph(fmt::format(
+        "Barrès 2023's spectral nebula: a density grid lit by blackbody stars through dust, with the emission lines "
+        "of ionised gas, marched on the GPU by projection on the greedy exp(−a/λ) basis (4 elements). "
+        "Largest relative error per pixel against the CPU's double integration over wavelength (pixels at least "
+        "1 % of their channel's peak): {:.3g} % in the Hubble palette ([S II] 6716 → R, Hα → G, [O III] → B, "
+        "each channel stretched to its 99.5th percentile), {:.3g} % in natural colour (CIE 1931).",
+        100.0 * n.hubbleError, 100.0 * n.naturalError));
+    page.figure({{n.name + "_hubble.png", n.name + " in the Hubble palette"}}, "Hubble palette");
+    page.figure({{n.name + "_natural.png", n.name + " in natural colour"}}, "natural colour");
     page.endSection();
   }
   page.beginSection("", "ColorChecker");
@@ -173,7 +223,26 @@ void runGallery(const GalleryOptions& o) {
     entries.push_back(std::move(e));
     bar.update(i + 1, files.size());
   }
-  writeFileAtomically(o.output / "index.html", indexHtml(entries, o));
+  // Nebulae (scenes/nebula/*.json: a section of their own, not surface scenes), at their cameras'
+  // sizes, within the gallery's height.
+  std::vector<std::filesystem::path> nebulaFiles;
+  if (std::filesystem::is_directory(sceneDir / "nebula")) {
+    for (const auto& entry : std::filesystem::directory_iterator(sceneDir / "nebula"))
+      if (entry.path().extension() == ".json") nebulaFiles.push_back(entry.path());
+  }
+  std::sort(nebulaFiles.begin(), nebulaFiles.end());
+  std::vector<NebulaEntry> nebulae;
+  ProgressBar nebulaBar("gallery: nebulae, each against its reference");
+  for (std::size_t i = 0; i < nebulaFiles.size(); ++i) {
+    NebulaEntry n;
+    n.name = nebulaFiles[i].stem().string();
+    n.hubbleError = renderNebula(nebulaFiles[i], "hubble", o.height, o.output / (n.name + "_hubble.png"));
+    nebulaBar.update(2 * i + 1, 2 * nebulaFiles.size());
+    n.naturalError = renderNebula(nebulaFiles[i], "cie1931", o.height, o.output / (n.name + "_natural.png"));
+    nebulaBar.update(2 * i + 2, 2 * nebulaFiles.size());
+    nebulae.push_back(std::move(n));
+  }
+  writeFileAtomically(o.output / "index.html", indexHtml(entries, nebulae, o));
   fmt::print("{:<24} {:>10} {:>8} {:>8}\n", "scene (RGB vs spectral)", "mean ΔE00", "p95", "max");
   for (const Entry& e : entries) {
     if (e.sky) {
@@ -185,6 +254,11 @@ void runGallery(const GalleryOptions& o) {
     }
     fmt::print("{:<24} {:>10.2f} {:>8.2f} {:>8.2f}\n", e.name, e.difference.meanDeltaE,
                e.difference.p95DeltaE, e.difference.maxDeltaE);
+  }
+  for (const NebulaEntry& n : nebulae) {
+    fmt::print("{:<24} max relative error per pixel, GPU projection against the reference: Hubble {:.3g} %, "
+               "natural {:.3g} %\n",
+               n.name + " (nebula)", 100.0 * n.hubbleError, 100.0 * n.naturalError);
   }
   fmt::print("wrote {}\n", (o.output / "index.html").string());
 }

@@ -141,6 +141,9 @@ void checkExrHeaderSizes(const std::filesystem::path& path) {
   // Names and type names are at most 31 bytes, or 255 with the long-names flag (OpenEXR's file
   // layout, "Version Field"); OpenEXR reads past a longer one as if it had ended there.
   const std::uint32_t version = head[4] | head[5] << 8 | head[6] << 16 | static_cast<std::uint32_t>(head[7]) << 24;
+  // Bits 11 and 12: deep data, several parts (whose other headers this walk would not check).
+  if ((version & 0x1800u) != 0)
+    throw Error(path.string() + ": a multi-part or deep EXR file; Prism reads single-part scan-line and tiled images");
   const std::size_t longest = (version & 0x400u) != 0 ? 255 : 31;
   auto readString = [&](const char* what) {
     std::string text;
@@ -208,6 +211,20 @@ void checkExrHeaderSizes(const std::filesystem::path& path) {
                   ") holds " + (in ? std::to_string(contents) : std::string("more")) + " bytes, its size says " +
                   std::to_string(size));
     }
+    // OpenEXR allocates its line and tile buffers by these as it opens the file: checked first.
+    if ((name == "dataWindow" && type == "box2i") || (name == "tiles" && type == "tiledesc")) {
+      in.seekg(start);
+      std::int32_t v[4] = {};
+      in.read(reinterpret_cast<char*>(v), name == "tiles" ? 8 : 16);
+      const bool tiles = name == "tiles";
+      const std::int64_t wide = tiles ? static_cast<std::uint32_t>(v[0]) : std::int64_t{v[2]} - v[0] + 1;
+      const std::int64_t high = tiles ? static_cast<std::uint32_t>(v[1]) : std::int64_t{v[3]} - v[1] + 1;
+      if (!in || wide < 1 || high < 1 || wide > kMaxExrSide || high > kMaxExrSide) {
+        throw Error(path.string() + ": " + (tiles ? "tiles" : "an image") + " of " + std::to_string(wide) + " × " +
+                    std::to_string(high) + " pixels; Prism reads 1 to " + std::to_string(kMaxExrSide) +
+                    " on each side");
+      }
+    }
     in.seekg(start + size);
   }
 }
@@ -239,10 +256,7 @@ ExrImage readExr(const std::filesystem::path& path) {
     const Imath::Box2i dataWindow = header.dataWindow();
     const std::int64_t wide = std::int64_t{dataWindow.max.x} - dataWindow.min.x + 1;
     const std::int64_t high = std::int64_t{dataWindow.max.y} - dataWindow.min.y + 1;
-    if (wide < 1 || high < 1 || wide > kMaxExrSide || high > kMaxExrSide) {
-      throw Error(path.string() + ": an image of " + std::to_string(wide) + " × " + std::to_string(high) +
-                  " pixels; Prism reads 1 to " + std::to_string(kMaxExrSide) + " on each side");
-    }
+    PRISM_CHECK(wide >= 1 && high >= 1 && wide <= kMaxExrSide && high <= kMaxExrSide);  // checkExrHeaderSizes
     const int width = static_cast<int>(wide);
     const int height = static_cast<int>(high);
     ExrImage out;

@@ -53,12 +53,14 @@ inline constexpr int kMaxExrSide = 16384;
 // with D65 → linear-srgb; the XYZ convention → xyz; anything else → other-rgb), else xyz for X,
 // Y, Z channels, else linear-srgb (OpenEXR's default for files without chromaticities).
 // Error naming the file, on one line, when it cannot: also for a header attribute larger than the
-// file and for an image wider or higher than kMaxExrSide.
+// file, for an image wider or higher than kMaxExrSide, and for multi-part and deep files.
 ExrImage readExr(const std::filesystem::path& path);
 
 // OpenEXR trusts an attribute's stated size (a 793-byte file claiming a 1.6 GB attribute kept it
-// busy for seconds; found by fuzzing): Error naming the file and the attribute unless every
-// attribute of the first header fits in what is left of the file. readExr and readExrBand call it.
+// busy for seconds; found by fuzzing) and allocates by the data window and tile size as it opens
+// a file: Error naming the file and the attribute unless every attribute of the header fits in
+// what is left of the file and holds what its size says, and the data window and tiles are 1 to
+// kMaxExrSide a side; multi-part and deep files are refused. readExr and readExrBand call it.
 void checkExrHeaderSizes(const std::filesystem::path& path);
 
 }  // namespace prism::imaging

@@ -388,6 +388,20 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   EXPECT_TRUE(std::filesystem::exists(dir / "tiny_gpu.exr"));
   expectOneLineError("nebula render " + tiny + " --gpu --method reference -o x.png",
                      "the GPU marches projection and light-density, not reference");
+
+  // The plots: the basis's error after each element, a render's error against the basis size
+  // (which falls from 1 to 3 elements on the tiny nebula too).
+  Result plotted = run("nebula basis --spacing 0.2 --count 3 --plot " + (dir / "basis.svg").string());
+  ASSERT_EQ(plotted.exitCode, 0) << plotted.err;
+  EXPECT_NE(slurp(dir / "basis.svg").find("a2 = 0.8100"), std::string::npos);
+  Result sweep = run("nebula sweep " + tiny + " --steps 20 --max-basis 3 --json --plot " + (dir / "sweep.svg").string());
+  ASSERT_EQ(sweep.exitCode, 0) << sweep.err;
+  const nlohmann::json errors = nlohmann::json::parse(sweep.out)["max_relative_error"];
+  ASSERT_EQ(errors.size(), 3u) << sweep.out;
+  EXPECT_GT(errors[0].get<double>(), errors[2].get<double>()) << sweep.out;
+  EXPECT_NE(slurp(dir / "sweep.svg").find("the issue's bound, 2 %"), std::string::npos);
+  expectOneLineError("nebula sweep " + tiny + " --max-basis 9", "--max-basis: 9 is not within 1..8");
+  expectOneLineError("nebula sweep " + tiny + " --plot " + dir.string(), "is a folder");
 }
 
 TEST(Cli, PrtCommandsCheckTheirInput) {

@@ -442,6 +442,18 @@ int main(int argc, char** argv) {
   nebBasisCmd->add_option("--spacing", nebBasis.spacingUm, "minimum spacing of the exponents (µm; 0: free)")->capture_default_str();
   nebBasisCmd->add_option("--count", nebBasis.count, "elements (1..8)")->capture_default_str();
   nebBasisCmd->add_flag("--json", nebBasis.json, "JSON output");
+  nebBasisCmd->add_option("--plot", nebBasis.plotFile, "SVG of the error after each element to write");
+  prism::app::NebulaSweepOptions nebSweep;
+  auto* nebSweepCmd = nebulaCmd->add_subcommand("sweep", "projection's error against the basis size (CPU, against the reference)");
+  nebSweepCmd->add_option("scene", nebSweep.scene, "nebula scene file")->required();
+  nebSweepCmd->add_option("--filters", nebSweep.filters, "hubble or cie1931 (default: the scene's)");
+  nebSweepCmd->add_option("--steps", nebSweep.steps, "ray steps (default: the scene's)");
+  nebSweepCmd->add_option("--max-basis", nebSweep.maxBasis, "largest basis (1..8)")->capture_default_str();
+  nebSweepCmd->add_option("--size", nebSweep.size, "the camera's longer side in pixels (default: the scene's)");
+  nebSweepCmd->add_flag("--no-lines", nebSweep.noLines, "leave out the emission lines");
+  nebSweepCmd->add_flag("--json", nebSweep.json, "JSON output");
+  nebSweepCmd->add_option("--plot", nebSweep.plotFile, "SVG of the error against the basis size to write");
+  nebSweepCmd->add_option("--threads", nebSweep.threads, "threads (0: all)");
   auto* nebRenderCmd = nebulaCmd->add_subcommand("render", "march a nebula scene (CPU, or --gpu) to an EXR (linear) or PNG");
   nebRenderCmd->add_option("scene", nebRender.scene, "nebula scene file (JSON with a 'nebula' section)")->required();
   nebRenderCmd->add_option("-o,--output", nebRender.output, "OUT.exr or OUT.png")->required();
@@ -558,6 +570,7 @@ int main(int argc, char** argv) {
       prism::app::runNebulaBasis(nebBasis);
     }
     if (*nebRenderCmd) prism::app::runNebulaRender(nebRender);
+    if (*nebSweepCmd) prism::app::runNebulaSweep(nebSweep);
     if (*nebDensityCmd) prism::app::runNebulaDensity(nebDensityScene, nebDensityOut);
     if (*nebBenchCmd) prism::app::runNebulaBench(nebBenchRepeats);
     if (*validateCmd) return runValidate(val);

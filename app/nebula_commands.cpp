@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -9,6 +10,8 @@
 
 #include "core/error.h"
 #include "gpu/headless_context.h"
+#include "core/atomic_file.h"
+#include "harness/log_plot.h"
 #include "harness/nebula_display.h"
 #include "harness/progress_bar.h"
 #include "imaging/exr_file.h"
@@ -23,6 +26,7 @@ void runNebulaBasis(const NebulaBasisOptions& o) {
   if (!(o.lambda0Um >= 0.0 && o.lambda1Um > o.lambda0Um) || o.count < 1 || o.count > 8 || o.maxDepthUm <= 0.0 ||
       o.maxExponentUm <= 0.0 || o.spacingUm < 0.0)
     throw Error("nebula basis: need 0 ≤ λ0 < λ1, 1 ≤ count ≤ 8, max depth and max exponent > 0, spacing ≥ 0");
+  if (!o.plotFile.empty()) requireWritable(o.plotFile);
   nebula::ExpBasis b = nebula::findExpBasis(o.lambda0Um, o.lambda1Um, o.maxDepthUm, o.maxExponentUm, o.count,
                                             o.spacingUm, /*orthonormalise=*/false);
   if (o.json) {
@@ -31,13 +35,98 @@ void runNebulaBasis(const NebulaBasisOptions& o) {
     for (std::size_t k = 0; k < b.a.size(); ++k)
       fmt::print("{}{{\"a_um\": {:.4f}, \"max_relative_error\": {:.4e}}}", k ? ", " : "", b.a[k], b.maxError[k]);
     fmt::print("]}}\n");
-    return;
+  } else {
+    fmt::print("greedy exp(-a/lambda) basis on [{}, {}] um, family exp(-g/lambda) for g in [0, {}] um, "
+               "exponents in [0, {}] um, minimum spacing {} um\n",
+               o.lambda0Um, o.lambda1Um, o.maxDepthUm, o.maxExponentUm, o.spacingUm);
+    fmt::print("{:>8} {:>10} {:>22}\n", "element", "a (um)", "max relative L2 error");
+    for (std::size_t k = 0; k < b.a.size(); ++k) fmt::print("{:>8} {:>10.4f} {:>22.4e}\n", k + 1, b.a[k], b.maxError[k]);
   }
-  fmt::print("greedy exp(-a/lambda) basis on [{}, {}] um, family exp(-g/lambda) for g in [0, {}] um, "
-             "exponents in [0, {}] um, minimum spacing {} um\n",
-             o.lambda0Um, o.lambda1Um, o.maxDepthUm, o.maxExponentUm, o.spacingUm);
-  fmt::print("{:>8} {:>10} {:>22}\n", "element", "a (um)", "max relative L2 error");
-  for (std::size_t k = 0; k < b.a.size(); ++k) fmt::print("{:>8} {:>10.4f} {:>22.4e}\n", k + 1, b.a[k], b.maxError[k]);
+  if (!o.plotFile.empty()) {
+    harness::LogPlot plot;
+    plot.title = fmt::format("greedy exp(−a/λ) basis on [{}, {}] µm, g ≤ {} µm, spacing ≥ {} µm", o.lambda0Um, o.lambda1Um,
+                             o.maxDepthUm, o.spacingUm);
+    plot.xLabel = "elements";
+    plot.yLabel = "worst relative L2 projection error";
+    harness::LogPlotLine line{"worst error", "#1f77b4", {}};
+    for (std::size_t k = 0; k < b.a.size(); ++k) {
+      plot.xTicks.push_back(static_cast<double>(k + 1));
+      line.points.emplace_back(static_cast<double>(k + 1), b.maxError[k]);
+      plot.notes.push_back(fmt::format("a{} = {:.4f} µm", k + 1, b.a[k]));
+    }
+    plot.lines.push_back(std::move(line));
+    writeFileAtomically(o.plotFile, harness::logPlotSvg(plot));
+    if (!o.json) fmt::print("wrote {}\n", o.plotFile.string());
+  }
+}
+
+void runNebulaSweep(const NebulaSweepOptions& o) {
+  if (o.maxBasis < 1 || o.maxBasis > 8) throw Error(fmt::format("--max-basis: {} is not within 1..8", o.maxBasis));
+  if (o.size < 0 || o.size > 4096) throw Error(fmt::format("--size: {} is not within 1..4096", o.size));
+  if (!o.plotFile.empty()) requireWritable(o.plotFile);
+  nebula::NebulaScene scene = nebula::loadNebulaScene(o.scene, o.threads);
+  if (!o.filters.empty()) {
+    if (o.filters != "hubble" && o.filters != "cie1931")
+      throw Error(fmt::format("--filters: '{}' is not hubble or cie1931", excerpt(o.filters)));
+    scene.model.filters = o.filters;
+  }
+  nebula::NebulaCamera& camera = scene.model.camera;
+  if (o.size > 0) {
+    const double scale = static_cast<double>(o.size) / std::max(camera.width, camera.height);
+    camera.width = std::max(1, static_cast<int>(std::lround(camera.width * scale)));
+    camera.height = std::max(1, static_cast<int>(std::lround(camera.height * scale)));
+  }
+  nebula::RenderSettings s;
+  s.steps = o.steps > 0 ? o.steps : scene.steps;
+  s.emissionLines = !o.noLines;
+  s.threads = o.threads;
+  std::vector<double> errors;
+  nebula::NebulaImage reference;
+  {
+    harness::ProgressBar bar("nebula sweep: the reference, then projection by basis size");
+    const std::size_t total = static_cast<std::size_t>(o.maxBasis) + 1;
+    for (int n = 1; n <= o.maxBasis; ++n) {
+      s.basisSize = n;
+      nebula::NebulaRenderer renderer(scene.model, s);
+      if (n == 1) {
+        s.method = nebula::Method::Reference;
+        reference = renderer.render(s);
+        bar.update(1, total);
+      }
+      s.method = nebula::Method::Projection;
+      errors.push_back(nebula::maxRelativeError(renderer.render(s), reference));
+      bar.update(static_cast<std::size_t>(n) + 1, total);
+    }
+  }
+  const std::string filters = scene.model.filters;
+  if (o.json) {
+    fmt::print("{{\"scene\": \"{}\", \"filters\": \"{}\", \"width\": {}, \"height\": {}, \"steps\": {}, "
+               "\"max_relative_error\": [",
+               o.scene.string(), filters, camera.width, camera.height, s.steps);
+    for (std::size_t k = 0; k < errors.size(); ++k) fmt::print("{}{:.6g}", k ? ", " : "", errors[k]);
+    fmt::print("]}}\n");
+  } else {
+    fmt::print("projection (CPU, float) against the reference: {}, {}x{}, {} steps, {} star(s)\n", filters,
+               camera.width, camera.height, s.steps, scene.model.stars.size());
+    fmt::print("{:>8} {:>26}\n", "elements", "max relative error per pixel");
+    for (std::size_t k = 0; k < errors.size(); ++k) fmt::print("{:>8} {:>25.4g}%\n", k + 1, 100.0 * errors[k]);
+  }
+  if (!o.plotFile.empty()) {
+    harness::LogPlot plot;
+    plot.title = fmt::format("{}: projection against the reference ({}, {}x{})", o.scene.filename().string(), filters,
+                             camera.width, camera.height);
+    plot.xLabel = "basis elements";
+    plot.yLabel = "max relative error per pixel";
+    harness::LogPlotLine line{"projection, float", "#d62728", {}};
+    for (std::size_t k = 0; k < errors.size(); ++k) {
+      plot.xTicks.push_back(static_cast<double>(k + 1));
+      line.points.emplace_back(static_cast<double>(k + 1), errors[k]);
+    }
+    plot.lines.push_back(std::move(line));
+    plot.levels.push_back({"the issue's bound, 2 %", "#888", 0.02, /*dashed=*/false, /*thick=*/true});
+    writeFileAtomically(o.plotFile, harness::logPlotSvg(plot));
+    if (!o.json) fmt::print("wrote {}\n", o.plotFile.string());
+  }
 }
 
 namespace {

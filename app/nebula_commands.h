@@ -1,5 +1,6 @@
 // `prism nebula`: spectral nebulae after Barrès 2023 (techniques/nebula/) —
-// `basis` prints the greedy exp(−a/λ) basis and its error after each element; `render` marches a
+// `basis` prints (and plots) the greedy exp(−a/λ) basis and its error after each element; `sweep`
+// measures a render's error against the basis size; `render` marches a
 // nebula scene with one of the five methods to an EXR (linear channels) or a PNG, on the CPU or
 // (projection, light-density) with `--gpu` on the GPU; `density` writes a scene's density grid as
 // a prism-density file; `bench` times the GPU marcher against the CPU's for 1, 6 and 32 stars.
@@ -17,8 +18,25 @@ struct NebulaBasisOptions {
   double spacingUm = 0.0;   // minimum spacing of the exponents (0: the free greedy)
   int count = 6;
   bool json = false;
+  std::filesystem::path plotFile;  // SVG of the error after each element (log_plot.h)
 };
 void runNebulaBasis(const NebulaBasisOptions& options);
+
+// The projection method's error against the basis size: a nebula scene rendered on the CPU with
+// 1 to `maxBasis` elements, each against the reference (double integration), max relative error
+// per pixel over pixels ≥ 1 % of their channel's peak; printed, and plotted with the 2 % bound.
+struct NebulaSweepOptions {
+  std::filesystem::path scene;
+  std::string filters;           // empty: the scene's
+  int steps = 0;                 // 0: the scene's
+  int maxBasis = 5;
+  int size = 0;                  // > 0: the camera's longer side, in pixels (the aspect kept)
+  bool noLines = false;
+  bool json = false;
+  std::filesystem::path plotFile;
+  unsigned threads = 0;
+};
+void runNebulaSweep(const NebulaSweepOptions& options);
 
 struct NebulaRenderOptions {
   std::filesystem::path scene;

@@ -1,6 +1,6 @@
 // The plot of `prism prt report --plot`: spectral PRT's colour error against the basis size m
 // (mean and max ΔE94 and ΔE00 over the object's vertices, log scale), RGB-PRT's as dashed
-// lines, and the bound (max ΔE94 = 1) as a grey line. An SVG, like bench_plot.h.
+// lines, and the bound (max ΔE94 = 1) as a grey line: an SVG by log_plot.h.
 #pragma once
 
 #include <string>

@@ -149,6 +149,13 @@ std::optional<HomogeneousMedium> effectiveMedium(const Scene& scene) {
   return scene.medium;
 }
 
+// The first distant light of the scene's techniques (PRT's environment), if any.
+std::shared_ptr<const TechniqueEnvironment> techniqueEnvironment(const Scene& scene, const RgbToSpectrumTable& table) {
+  for (const auto& section : scene.techniques.all())
+    if (std::shared_ptr<const TechniqueEnvironment> e = section->environment(table)) return e;
+  return nullptr;
+}
+
 class PathTracer {
  public:
   PathTracer(const Scene& scene, const RgbToSpectrumTable& table, const ReferenceSettings& settings)
@@ -162,7 +169,8 @@ class PathTracer {
         mRays(scene),
         mBackground(backgroundRadiance(scene, colourSpace(scene.colourSpace), table)),
         mCamera(cameraTransform(scene.camera, settings.width, settings.height)),
-        mMedium(effectiveMedium(scene)) {
+        mMedium(effectiveMedium(scene)),
+        mEnvironment(techniqueEnvironment(scene, table)) {
     for (const Light& light : scene.lights) {
       int type = light.type == LightType::Directional ? shared::kLightDirectional
                  : light.type == LightType::Point     ? shared::kLightPoint
@@ -224,6 +232,27 @@ class PathTracer {
     return v;
   }
 
+  // What a path leaving the scene in `direction` gathers: the camera sees the background; after a
+  // bounce, the technique's environment where there is one, else the background.
+  vec4 escapedAt(int depth, const vec3& direction, const vec4& lambdaNm) const {
+    if (depth == 0 || !mEnvironment) return backgroundAt(lambdaNm);
+    vec4 v;
+    for (int j = 0; j < 4; ++j) v[j] = static_cast<float>(mEnvironment->radiance(direction, lambdaNm[j]));
+    return v;
+  }
+
+  // Direct transport's one sample of the environment at a surface point: a direction drawn from
+  // the BRDF, the environment's radiance where nothing (no surface, no medium) is in the way.
+  vec4 surfaceEnvironmentLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm, const vec4& albedoOrN,
+                               const vec4& k, const MediumAt& medium, PathRandom& random) const {
+    vec3 l;
+    vec4 weight(1.0f);
+    if (!sampleBrdf(hit, v, albedoOrN, k, random, l, weight)) return vec4(0.0f);
+    const vec3 origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
+    if (mRays.occluded(origin, l, 0.0f, kInfinity)) return vec4(0.0f);
+    return weight * escapedAt(1, l, lambdaNm) * transmittance(origin, l, kInfinity, medium);
+  }
+
   // The spectra of a surface at the path's wavelengths: albedo (or n) and conductor k.
   void surfaceSpectra(const SurfaceHit& hit, const vec4& lambdaNm, vec4& albedoOrN, vec4& k) const {
     const MaterialInput& input = mMaterials[static_cast<std::size_t>(hit.material)];
@@ -248,7 +277,7 @@ class PathTracer {
                   const vec4& k) const {
     const Material& m = *mMaterials[static_cast<std::size_t>(hit.material)].material;
     shared::MicrofacetTerms terms = shared::microfacetTerms(hit.normalW, v, l, hit.roughness);
-    if (m.lambertian) terms = shared::lambertianTerms(terms);
+    if (hit.lambertian) terms = shared::lambertianTerms(terms);
     bool conductor = m.conductor.has_value();
     return shared::surfaceReflection(terms, conductor, albedoOrN, k, conductor ? 1.0f : hit.metallic);
   }
@@ -312,7 +341,7 @@ class PathTracer {
     const vec3& n = hit.normalW;
     // The specular lobe's share: all of a conductor's, none of a Lambertian's, and for the
     // metallic–roughness model from ¼ (dielectric) to all (metal).
-    float specularShare = m.conductor ? 1.0f : m.lambertian ? 0.0f : 0.25f + 0.75f * hit.metallic;
+    float specularShare = hit.lambertian ? 0.0f : m.conductor ? 1.0f : 0.25f + 0.75f * hit.metallic;
     float r = std::max(hit.roughness, 0.02f);  // as microfacetTerms clamps it
     float alpha = r * r;
     vec3 t, b;
@@ -423,7 +452,7 @@ class PathTracer {
       }
       if (!scattered) {
         if (!found) {
-          if (depth == 0 || global) radiance += throughput * backgroundAt(lambdaNm);
+          if (depth == 0 || global) radiance += throughput * escapedAt(depth, direction, lambdaNm);
           break;
         }
         SurfaceHit hit = surfaceHit(mScene, *found, origin, direction);
@@ -431,6 +460,7 @@ class PathTracer {
         vec4 albedoOrN, k;
         surfaceSpectra(hit, lambdaNm, albedoOrN, k);
         radiance += throughput * surfaceDirectLight(hit, v, lambdaNm, albedoOrN, k, medium);
+        if (!global && mEnvironment) radiance += throughput * surfaceEnvironmentLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
         if (!global || depth + 1 >= mSettings.maxDepth) break;
         vec3 l;
         if (!sampleBrdf(hit, v, albedoOrN, k, random, l, throughput)) break;
@@ -462,6 +492,7 @@ class PathTracer {
   std::vector<LightInput> mLights;
   std::vector<MaterialInput> mMaterials;
   std::optional<HomogeneousMedium> mMedium;
+  std::shared_ptr<const TechniqueEnvironment> mEnvironment;
 };
 
 }  // namespace

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 #include "scene/camera_transform.h"
 #include "scene/procedural_mesh.h"
@@ -164,6 +166,54 @@ TEST(PathTracer, LambertianSphereUnderADirectionalLightMatchesTheClosedFormPerPi
   // normals within 0.1° of its own; the rest is wavelength noise (a few 1e-3 per pixel).
   EXPECT_LT(sumError / count, 2e-3);
   EXPECT_LT(maxError, 2e-2);
+}
+
+// A technique's distant light (TechniqueEnvironment): D65 of luminance `luminance` cd/m² from
+// above, weighted by the direction's height, max(0, ω·y) — none from below.
+class SkyFromAbove final : public TechniqueSection {
+ public:
+  explicit SkyFromAbove(double luminance) : mLuminance(luminance) {}
+  std::string_view key() const override { return "sky_from_above"; }
+  std::string_view shaderDefine() const override { return "PRISM_TECHNIQUE_SKY_FROM_ABOVE"; }
+  std::unique_ptr<TechniqueSection> clone() const override { return std::make_unique<SkyFromAbove>(*this); }
+  TechniqueBlock pack(const FramePackInput&) const override { return {}; }
+  bool shadesObjects() const override { return true; }
+  std::shared_ptr<const TechniqueEnvironment> environment(const RgbToSpectrumTable&) const override {
+    struct Radiance final : TechniqueEnvironment {
+      Spectrum spd;
+      double radiance(const glm::vec3& d, double lambdaNm) const override { return std::max(0.0f, d.y) * spd.at(lambdaNm); }
+    };
+    auto e = std::make_shared<Radiance>();
+    e->spd = illuminant("D65");
+    e->spd *= mLuminance / luminousIntegral(e->spd);
+    return e;
+  }
+
+ private:
+  double mLuminance;
+};
+
+TEST(PathTracer, ATechniquesEnvironmentLightsItsObjectsAsLambertian) {
+  // The plane of litPlane facing up, without the light, under L(ω) = L·max(0, ω·y): irradiance
+  // ∫ L cos²θ dω = 2πL/3, so Y = ρ·(2πL/3)/π = 2ρL/3. Its material is Cook–Torrance, but a
+  // technique shades it: traced as Lambertian. Direct transport samples the environment once
+  // per surface point; global transport gathers it where paths leave the scene; the camera
+  // sees neither (the background, black here: the plane fills the view anyway).
+  Scene scene = litPlane(0.5, 1000.0f);
+  scene.lights.clear();
+  scene.materials[0].lambertian = false;
+  scene.meshes[0].technique = "sky_from_above";
+  scene.techniques.add(std::make_unique<SkyFromAbove>(600.0));
+  const Eigen::Vector3d expected = perLuminance() * (2.0 * 0.5 * 600.0 / 3.0);
+  for (LightTransport transport : {LightTransport::Direct, LightTransport::Global}) {
+    // 256 paths a pixel: each pixel's variance is estimated from its own samples (unstratified
+    // directions), which at 64 is itself too noisy for a z-score bound over 4 608 values.
+    ReferenceSettings settings = small(256);
+    settings.transport = transport;
+    PlaneCheck check = checkPlane(renderReference(scene, srgbTable(), settings), expected);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(check.mean[c] / expected[c], 1.0, 2e-3) << "channel " << c;
+    EXPECT_LT(check.worstZ, 5.0);  // as in the plane under a directional light
+  }
 }
 
 TEST(PathTracer, WhiteFurnaceReturnsTheSurroundingRadianceEverywhere) {

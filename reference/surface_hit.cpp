@@ -51,6 +51,7 @@ SurfaceHit surfaceHit(const Scene& scene, const RayHit& hit, const glm::vec3& or
 
   SurfaceHit s;
   s.material = mesh.material;
+  s.lambertian = material.lambertian || !mesh.technique.empty();
   s.positionW = origin + direction * hit.distance;
   glm::vec3 winding = glm::cross(b.position - a.position, c.position - a.position);
   bool frontFacing = glm::dot(winding, direction) < 0.0f;

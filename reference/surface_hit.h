@@ -18,6 +18,9 @@ struct SurfaceHit {
   float roughness = 0.0f;
   glm::vec3 normalW{0.0f};           // shading normal, unit, turned like the G-buffer's
   int material = 0;                  // index into Scene::materials
+  // Diffuse lobe only (albedo/π): the material says so (the thesis's spheres), or a technique
+  // shades the object itself (PRT's objects, diffuse by definition, lit by its environment).
+  bool lambertian = false;
 };
 
 // `direction` is the unit direction of the ray that made `hit`. The shading normal is turned as

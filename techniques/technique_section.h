@@ -27,6 +27,8 @@
 
 namespace prism {
 
+class RgbToSpectrumTable;
+
 // A directional light a technique puts into the scene (the sky's sun). The scene loader adds it
 // to the scene's lights like any other, normalised photometrically (spd is absolute, W/m²/nm;
 // its luminous integral becomes the light's intensity in lux), and tags it with the technique's
@@ -47,6 +49,19 @@ struct TechniqueMedium {
   float g = 0.0f;
   glm::vec3 regionMin{0.0f};
   glm::vec3 regionMax{0.0f};
+};
+
+// The distant light a technique surrounds the scene with (PRT's environment), as the reference
+// path tracer traces it: spectral radiance arriving from a direction, W·m⁻²·sr⁻¹·nm⁻¹ as the
+// scene's lights are (683 lm/W · ∫ L ȳ dλ is its luminance in cd/m²), everywhere beyond the scene. The path
+// tracer lights the scene with it where the rasteriser's technique does: paths that leave the
+// scene after a bounce gather it (camera rays still see the scene's background, as the
+// rasteriser draws it), and with direct transport each surface point samples it once.
+class TechniqueEnvironment {
+ public:
+  virtual ~TechniqueEnvironment() = default;
+  // `directionW`: unit, world space, towards where the light comes from.
+  virtual double radiance(const glm::vec3& directionW, double lambdaNm) const = 0;
 };
 
 // What a technique's block is packed from: the frame's wavelength batches (in RGB mode one batch
@@ -152,6 +167,12 @@ class TechniqueSection {
   // sceneCameraPositionW; none when the technique adds no medium.
   virtual std::optional<TechniqueMedium> medium(const glm::vec3& /*sceneCameraPositionW*/) const {
     return std::nullopt;
+  }
+  // Its distant light for the reference, if it has one; `table` is the scene's colour space's
+  // upsampling table (what its RGB content is upsampled by). The scene's objects it shades
+  // itself (shadesObjects) are traced as Lambertian surfaces of their material's albedo.
+  virtual std::shared_ptr<const TechniqueEnvironment> environment(const RgbToSpectrumTable& /*table*/) const {
+    return nullptr;
   }
   // Why the reference path tracer cannot trace the technique, naming the technique's own
   // references (it refuses such scenes with this); empty when it traces it.

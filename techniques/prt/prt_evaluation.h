@@ -44,7 +44,8 @@ SpectralEnvironment uniformEnvironment(std::string name, const Spectrum& spd);
 // The CIE overcast sky's gradient (Moon & Spencer 1942; CIE S 011/E:2003, type 1: L(θ) = L_z·(1 +
 // 2 cos θ)/3) above the horizon, with L_z = spd, and below it a grey ground of albedo
 // `groundAlbedo` lit by that sky (radiance albedo·E_h/π, E_h = 7π/9·L_z).
-SpectralEnvironment skyGradientEnvironment(std::string name, const Spectrum& spd, double groundAlbedo = 0.2);
+inline constexpr double kSkyGroundAlbedo = 0.2;
+SpectralEnvironment skyGradientEnvironment(std::string name, const Spectrum& spd, double groundAlbedo = kSkyGroundAlbedo);
 // An equirectangular map (row 0 at the zenith +z, u = φ/2π from +x towards +y), linear RGB per
 // texel as `width × height` triples, each texel upsampled by `toSpectrum` (Prism's unbounded RGB
 // intent: RgbUnboundedSpectrum(table, rgb).toDense()) and projected with its exact solid angle

@@ -12,15 +12,10 @@
 #include "imaging/radiance_hdr.h"
 #include "spectral/illuminant.h"
 #include "spectral/rgb_intent.h"
+#include "techniques/prt/prt_environment_radiance.h"
 
 namespace prism::prt {
 namespace {
-
-// ∫ S ȳ dλ on PRT's 5 nm grid (CIE 1931): the scale that makes a spectrum's luminance 1 cd/m²
-// once 683 lm/W is folded into it (PRT's XYZ carry no 683 of their own).
-double gridLuminance(const Spectrum& spd) {
-  return sampleOnGrid(spd).dot(observerOnGrid(cie1931Observer()).col(1)) * kGridStepNm;
-}
 
 std::shared_ptr<const PrtMap> readMap(const schema::Node& n) {
   std::filesystem::path folder = std::filesystem::path(n.document().name).parent_path();
@@ -62,6 +57,10 @@ imaging::FloatImage readEnvironmentMap(const std::filesystem::path& file) {
   return std::move(exr.image);
 }
 
+double gridLuminance(const Spectrum& spd) {
+  return sampleOnGrid(spd).dot(observerOnGrid(cie1931Observer()).col(1)) * kGridStepNm;
+}
+
 std::string_view prtModeName(PrtMode mode) {
   switch (mode) {
     case PrtMode::Spectral: return "spectral";
@@ -77,9 +76,8 @@ TechniqueBlock PrtSection::pack(const FramePackInput&) const {
   return block;
 }
 
-std::string_view PrtSection::notTracedBecause() const {
-  return "PRT objects are held to their own 5 nm reference (\"mode\": \"reference-5nm\", prism prt report), "
-         "through the same transfer";
+std::shared_ptr<const TechniqueEnvironment> PrtSection::environment(const RgbToSpectrumTable& table) const {
+  return environmentRadiance(*this, table);
 }
 
 TechniqueBench PrtSection::bench() const {

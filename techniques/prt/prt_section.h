@@ -49,7 +49,8 @@ struct PrtSection final : TechniqueSection {
   std::unique_ptr<TechniqueSection> clone() const override { return std::make_unique<PrtSection>(*this); }
   // No block: the forward pass uploads what it draws when the section changes.
   TechniqueBlock pack(const FramePackInput& input) const override;
-  std::string_view notTracedBecause() const override;
+  // The environment as radiance per direction, for the reference path tracer (prt_environment_radiance.h).
+  std::shared_ptr<const TechniqueEnvironment> environment(const RgbToSpectrumTable& table) const override;
   // Spectral PRT with m = 8 against RGB-PRT, both on this scene, the PRT pass timed in each.
   TechniqueBench bench() const override;
   bool shadesObjects() const override { return true; }
@@ -61,6 +62,10 @@ struct PrtSection final : TechniqueSection {
 // its extension; the format names no primaries, and maps for rendering are made in these) or an
 // OpenEXR file whose colour is linear sRGB. Error "FILE: …" on one line otherwise.
 imaging::FloatImage readEnvironmentMap(const std::filesystem::path& file);
+
+// ∫ S ȳ dλ on PRT's 5 nm grid (CIE 1931): the scale that makes a spectrum's luminance 1 cd/m²
+// once 683 lm/W is folded into it (PRT's XYZ carry no 683 of their own).
+double gridLuminance(const Spectrum& spd);
 
 // The section's environment, z-up (PRT's convention), turned by rotationDeg about the zenith and
 // scaled to its luminance; srgbTable upsamples a map's texels (the unbounded intent).

@@ -1,0 +1,75 @@
+#include "techniques/prt/prt_environment_radiance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "shared_cpp.h"
+#include "spectral/illuminant.h"
+#include "spectral/rgb_intent.h"
+#include "techniques/prt/prt_evaluation.h"
+
+namespace prism::prt {
+namespace {
+
+class SectionEnvironment final : public TechniqueEnvironment {
+ public:
+  SectionEnvironment(const PrtSection& section, const RgbToSpectrumTable& table) : mMap(section.map) {
+    // World (y-up) to PRT's frame (z-up, prt_scene_mesh.h), then the environment turned by R is
+    // L(Rᵀω) (rotateEnvironment's convention).
+    const glm::dmat3 zUp(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 0.0);  // columns: x→x, y→z, z→−y
+    const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(static_cast<double>(section.rotationDeg)),
+                                          glm::dvec3(0.0, 0.0, 1.0)));
+    mToEnvironment = glm::transpose(rotation) * zUp;
+    if (mMap) {
+      mTexels.reserve(mMap->linearRgb.size() / 3);
+      for (std::size_t i = 0; i < mMap->linearRgb.size(); i += 3)
+        mTexels.emplace_back(table, glm::vec3(mMap->linearRgb[i], mMap->linearRgb[i + 1], mMap->linearRgb[i + 2]));
+      mScale = section.luminanceCdM2 / gridLuminance(RgbUnboundedSpectrum(table, glm::vec3(1.0f)).toDense()) /
+               double(shared::kLumensPerWatt);
+    } else {
+      mSpd = illuminant(section.illuminant);
+      // PRT's spectra are scaled so that ∫ L ȳ dλ on its grid is the luminance; the path tracer's
+      // are radiance, whose luminance carries 683 lm/W.
+      mSpd *= section.luminanceCdM2 / gridLuminance(mSpd) / double(shared::kLumensPerWatt);
+      mUniform = section.shape == "uniform";
+    }
+  }
+
+  double radiance(const glm::vec3& directionW, double lambdaNm) const override {
+    const glm::dvec3 d = glm::normalize(mToEnvironment * glm::dvec3(directionW));
+    if (!mMap) {
+      const double spd = mSpd.at(lambdaNm);
+      if (mUniform) return spd;
+      return d.z >= 0.0 ? spd * (1.0 + 2.0 * d.z) / 3.0 : spd * kSkyGroundAlbedo * 7.0 / 9.0;  // skyGradientEnvironment's
+    }
+    // The texel whose solid angle holds d: row 0 at the zenith, u = φ/2π from +x towards +y.
+    const double pi = std::numbers::pi;
+    const double theta = std::acos(std::clamp(d.z, -1.0, 1.0));
+    double phi = std::atan2(d.y, d.x);
+    if (phi < 0.0) phi += 2.0 * pi;
+    const int x = std::min(mMap->width - 1, static_cast<int>(phi / (2.0 * pi) * mMap->width));
+    const int y = std::min(mMap->height - 1, static_cast<int>(theta / pi * mMap->height));
+    return mScale * mTexels[static_cast<std::size_t>(y) * static_cast<std::size_t>(mMap->width) + static_cast<std::size_t>(x)]
+                        .at(static_cast<float>(lambdaNm));
+  }
+
+ private:
+  std::shared_ptr<const PrtMap> mMap;
+  glm::dmat3 mToEnvironment{1.0};
+  Spectrum mSpd;
+  bool mUniform = false;
+  std::vector<RgbUnboundedSpectrum> mTexels;
+  double mScale = 1.0;
+};
+
+}  // namespace
+
+std::shared_ptr<const TechniqueEnvironment> environmentRadiance(const PrtSection& section, const RgbToSpectrumTable& table) {
+  return std::make_shared<SectionEnvironment>(section, table);
+}
+
+}  // namespace prism::prt

@@ -133,8 +133,8 @@ void printReferenceClusterScript(const ClusterOptions& o) {
 
 void printValidateClusterScript(const ClusterOptions& o) {
   const harness::ValidateOptions& v = o.validate;
-  constexpr int kExperiments = 9;  // harness/validate.h: four sphere scenes, five reef depths
-  if (o.tasks > kExperiments) throw Error(fmt::format("--tasks {}: the {} experiments make at most {} tasks", o.tasks, kExperiments, kExperiments));
+  const int experiments = harness::validateExperimentCount();
+  if (o.tasks > experiments) throw Error(fmt::format("--tasks {}: the {} experiments make at most {} tasks", o.tasks, experiments, experiments));
   batch::SlurmScript s = scriptBase(o, "prism-validate");
   const std::filesystem::path output = std::filesystem::absolute(v.output);
   s.logs = output / "parts";

@@ -354,7 +354,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   scriptReferenceCmd->add_option("--parts", cluster.parts, "folder of the parts and job logs (default: OUT.parts)");
   auto* scriptValidateCmd = scriptCmd->add_subcommand(
-      "validate", "`prism validate --task I/N` (at most 9 tasks, one experiment or more each), then --collect");
+      "validate", "`prism validate --task I/N` (at most 11 tasks, one experiment or more each), then --collect");
   scriptValidateCmd->add_option("-o,--output", cluster.validate.output, "folder to write")->capture_default_str();
   scriptValidateCmd->add_option("--scenes", cluster.validate.scenes, "folder of the scene files (default: the example scenes)");
   scriptValidateCmd->add_flag("--quick", cluster.validate.quick, "240x135 and fewer paths per pixel");

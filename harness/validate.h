@@ -12,8 +12,13 @@
 // DIR/results.json, prints the table, and fails (exit 1) when a bound below is broken:
 //   spheres under D65, Jakob–Hanika, 16 wavelengths a frame, accumulated: mean ΔE00 ≤ 0.5
 //   spheres under the blue LED, the same: mean ΔE00 ≤ 1.0
+// And spectral PRT's Macbeth and metamer scenes, under their environments, in its three modes
+// (spectral m = 8, RGB-PRT, the 5 nm reference) against the path tracer under the same
+// environment before projection (the SH-5 band limit and the noise common to all three):
+//   spectral PRT: mean ΔE00 at most 0.05 above the 5 nm reference's (what its basis adds)
 // Split across tasks (a Slurm array, validate_parts.h): `--task I/N` runs task I's share of the
-// nine experiments (four sphere scenes, five reef depths) and writes its part; `--collect`
+// eleven experiments (four sphere scenes, five reef depths, two PRT scenes) and writes its part
+// (validateExperimentCount() of them at most); `--collect`
 // writes DIR/results.json and DIR/index.html from the parts, the same files a whole run writes.
 #pragma once
 
@@ -31,5 +36,8 @@ struct ValidateOptions {
 };
 // 0 when every bound holds, 1 otherwise (the report is written either way); a task: 0.
 int runValidate(const ValidateOptions& options);
+
+// How many experiments a sweep runs: the most tasks it splits into.
+int validateExperimentCount();
 
 }  // namespace prism::harness

@@ -147,6 +147,27 @@ namespace {
 constexpr double kHcOverKUmK = 14387.768775;  // hc/k in µm·K (CODATA 2018)
 }
 
+double ccmExtinction(double lambdaUm, double rv) {
+  const double x = 1.0 / lambdaUm;
+  if (!(x >= 0.3 && x <= 3.3) || !(rv > 0.0))
+    throw Error(fmt::format("CCM extinction: 1/λ = {} µm⁻¹ is outside 0.3–3.3, or R_V = {} is not positive", x, rv));
+  double a = 0.0, b = 0.0;
+  if (x < 1.1) {  // infrared, Eq. 2
+    a = 0.574 * std::pow(x, 1.61);
+    b = -0.527 * std::pow(x, 1.61);
+  } else {  // optical and near infrared, Eq. 3
+    const double y = x - 1.82;
+    const double ca[] = {1.0, 0.17699, -0.50447, -0.02427, 0.72085, 0.01979, -0.77530, 0.32999};
+    const double cb[] = {0.0, 1.41338, 2.28305, 1.07233, -5.38434, -0.62251, 5.30260, -2.09002};
+    double power = 1.0;
+    for (int k = 0; k < 8; ++k, power *= y) {
+      a += ca[k] * power;
+      b += cb[k] * power;
+    }
+  }
+  return a + b / rv;
+}
+
 double planck(double lambdaUm, double temperatureK) {
   return std::pow(lambdaUm, -5.0) / std::expm1(kHcOverKUmK / (lambdaUm * temperatureK));
 }

@@ -14,6 +14,14 @@ namespace prism::nebula {
 
 // The attenuation's wavelength scale: τ(λ) = τ·C_T/λ (Barrès 2023, Eq. 2; valid above 0.25 µm).
 inline constexpr double kCtUm = 0.56;
+// Cardelli, Clayton & Mathis (1989, ApJ 345, 245), Eq. 1–3b: the interstellar extinction A(λ)/A(V)
+// measured along many sightlines, for 0.3 ≤ 1/λ ≤ 3.3 µm⁻¹ (infrared and optical), as a function
+// of R_V = A(V)/E(B − V) (3.1: the diffuse interstellar medium). The reference curve the model's
+// C_T/λ attenuation is held to (`prism nebula extinction`). Error outside its range.
+double ccmExtinction(double lambdaUm, double rv = 3.1);
+// The model's attenuation relative to V (0.55 µm): τ(λ)/τ(V) = (C_T/λ)/(C_T/0.55) = 0.55/λ.
+inline double modelExtinction(double lambdaUm) { return 0.55 / lambdaUm; }
+
 // The band a render integrates over (the visible; the filters and CIE curves live inside it).
 inline constexpr double kBandLoUm = 0.38;
 inline constexpr double kBandHiUm = 0.78;

@@ -47,7 +47,7 @@ void runReferencePart(const ReferenceOptions& o, const Scene& scene, const refer
   }
   if (!o.variance.empty()) throw Error("--variance: a part holds its variance; name the file to `prism merge`");
   const reference::ReferenceRegion r = region(o, settings);
-  const batch::ReferencePartHeader header = batch::partHeader(o.scene, o.sets, settings, r, ev100);
+  const batch::ReferencePartHeader header = batch::partHeader(o.scene, o.sets, scene, settings, r, ev100);
   const std::string what = fmt::format("rows {}–{}, samples {}:{} of {}", r.rowBegin, r.rowEnd - 1, r.sampleBegin,
                                        r.sampleEnd, settings.samplesPerPixel);
   std::error_code ec;

@@ -55,7 +55,7 @@ class ReferenceParts : public ::testing::Test {
   std::filesystem::path part(const std::string& name, const reference::ReferenceRegion& region,
                              reference::ReferenceSettings s = settings()) {
     std::filesystem::path file = mRoot / (name + ".exr");
-    writeReferencePart(file, partHeader(kScene, {}, s, region, 9.0f), render(region));
+    writeReferencePart(file, partHeader(kScene, {}, *sScene, s, region, 9.0f), render(region));
     return file;
   }
   static std::string mergeError(const std::vector<std::filesystem::path>& files) {
@@ -77,15 +77,21 @@ reference::ReferenceImage* ReferenceParts::sWhole = nullptr;
 TEST_F(ReferenceParts, APartRoundTripsItsHeaderAndPixels) {
   std::filesystem::path file = part("a", {4, 9, 3, 7});
   ReferencePart read = readReferencePart(file);
-  EXPECT_EQ(read.header, partHeader(kScene, {}, settings(), {4, 9, 3, 7}, 9.0f));
+  EXPECT_EQ(read.header, partHeader(kScene, {}, *sScene, settings(), {4, 9, 3, 7}, 9.0f));
   EXPECT_EQ(read.header, readReferencePartHeader(file));
   reference::ReferenceImage expected = render({4, 9, 3, 7});
   EXPECT_EQ(read.image.tristimulus.pixels, expected.tristimulus.pixels);
   EXPECT_EQ(read.image.meanResidual.pixels, expected.meanResidual.pixels);
   EXPECT_EQ(read.image.variance.pixels, expected.variance.pixels);
-  // The scene's identity is its bytes and its overrides.
-  EXPECT_NE(sceneHash(kScene, {}), sceneHash(kScene, {"lights.0.spd=F11"}));
-  EXPECT_EQ(sceneHash(kScene, {"a=1"}), sceneHash(kScene, {"a=1"}));
+  // The scene's identity is its bytes, its overrides and what it loaded from the files it names.
+  EXPECT_NE(sceneHash(kScene, {}, *sScene), sceneHash(kScene, {"lights.0.spd=F11"}, *sScene));
+  EXPECT_EQ(sceneHash(kScene, {"a=1"}, *sScene), sceneHash(kScene, {"a=1"}, *sScene));
+  Scene edited = *sScene;  // as if a model changed between two tasks
+  edited.meshes[0].vertices[0].position.x += 1e-3f;
+  EXPECT_NE(sceneHash(kScene, {}, *sScene), sceneHash(kScene, {}, edited));
+  edited = *sScene;  // or a spectrum
+  edited.lights[0].spd *= 1.001;
+  EXPECT_NE(sceneHash(kScene, {}, *sScene), sceneHash(kScene, {}, edited));
 }
 
 TEST_F(ReferenceParts, RowsMergeIntoTheWholeRenderBitForBit) {
@@ -156,7 +162,7 @@ TEST_F(ReferenceParts, PartsOfAnotherRenderAreRefused) {
   std::filesystem::path c = part("c", {8, 16, 0, 12}, global);
   EXPECT_NE(mergeError({a, c}).find("its settings is \"transport=global"), std::string::npos) << mergeError({a, c});
   std::filesystem::path d = mRoot / "d.exr";
-  writeReferencePart(d, partHeader(kScene, {"lights.0.spd=F11"}, settings(), {8, 16, 0, 12}, 9.0f), render({8, 16, 0, 12}));
+  writeReferencePart(d, partHeader(kScene, {"lights.0.spd=F11"}, *sScene, settings(), {8, 16, 0, 12}, 9.0f), render({8, 16, 0, 12}));
   EXPECT_NE(mergeError({a, d}).find("its scene is"), std::string::npos);
 }
 

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <fstream>
 #include <map>
+#include <span>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -95,12 +96,26 @@ std::vector<std::pair<std::string, std::string>> ReferencePartHeader::identity()
           {"ev100", fmt::format("{}", ev100)}};
 }
 
-std::string sceneHash(const std::filesystem::path& scene, const std::vector<std::string>& sets) {
+std::string sceneHash(const std::filesystem::path& scene, const std::vector<std::string>& sets, const Scene& loaded) {
   std::ifstream in(scene, std::ios::binary);
   std::ostringstream bytes;
   if (!in || !(bytes << in.rdbuf())) throw Error(scene.string() + ": cannot read the scene to hash it");
   std::uint64_t hash = fnv1a(bytes.view());
   for (const std::string& set : sets) hash = fnv1a(set, fnv1a(std::string_view("\0", 1), hash));
+  auto values = [&hash](std::span<const double> v) { hash = fnv1a(v.data(), v.size_bytes(), hash); };
+  for (const Mesh& mesh : loaded.meshes) {
+    hash = fnv1a(mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex), hash);  // 12 floats, no padding
+    hash = fnv1a(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t), hash);
+  }
+  for (const Image& texture : loaded.textures) hash = fnv1a(texture.rgba.data(), texture.rgba.size(), hash);
+  for (const Material& material : loaded.materials) {
+    if (material.reflectance) values(material.reflectance->values());
+    if (material.conductor) {
+      values(material.conductor->n.values());
+      values(material.conductor->k.values());
+    }
+  }
+  for (const Light& light : loaded.lights) values(light.spd.values());
   return fmt::format("{:016x}", hash);
 }
 
@@ -112,9 +127,9 @@ std::string settingsText(const reference::ReferenceSettings& s) {
 }
 
 ReferencePartHeader partHeader(const std::filesystem::path& scene, const std::vector<std::string>& sets,
-                               const reference::ReferenceSettings& settings, const reference::ReferenceRegion& region,
-                               float ev100) {
-  return {scene.string(), sceneHash(scene, sets), settingsText(settings), settings.seed, settings.width,
+                               const Scene& loaded, const reference::ReferenceSettings& settings,
+                               const reference::ReferenceRegion& region, float ev100) {
+  return {scene.string(), sceneHash(scene, sets, loaded), settingsText(settings), settings.seed, settings.width,
           settings.height, settings.samplesPerPixel, settings.observer, ev100, region};
 }
 

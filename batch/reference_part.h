@@ -9,7 +9,7 @@
 // variance.X… : the variance of that mean. String attributes:
 //   prism:part          "reference 1" (kind and format version)
 //   prism:scene         the scene file as given (for people)
-//   prism:sceneHash     FNV-1a 64 of the scene file's bytes and the --set overrides, in hex
+//   prism:sceneHash     FNV-1a 64 of the scene file's bytes, the --set overrides and what they loaded, in hex
 //   prism:settings      "key=value …": every setting that shapes the pixels but size, paths, seed
 //   prism:seed, prism:samplesPerPixel, prism:observer, prism:ev100
 //   prism:samples       "A:B", the path indices of every pixel in the part
@@ -43,18 +43,20 @@ struct ReferencePartHeader {
   bool operator==(const ReferencePartHeader&) const = default;
 };
 
-// FNV-1a 64 of the scene file's bytes, then of each override (after a zero byte), as 16 hex
-// digits. Error naming the file when it cannot be read. Files the scene names (models, spectra)
-// are not hashed: a part's scene is its file and its overrides.
-std::string sceneHash(const std::filesystem::path& scene, const std::vector<std::string>& sets);
+// FNV-1a 64 of the scene file's bytes, then of each override (after a zero byte), then of what
+// `loaded` (that file loaded with those overrides) took from the files it names: its meshes'
+// vertices and indices (glTF models), textures' texels, materials' and lights' spectra (CSVs), as
+// 16 hex digits; so a model or spectrum changed between two tasks makes their parts foreign. The
+// techniques' own files (a PRT map) are not hashed. Error naming the file when it cannot be read.
+std::string sceneHash(const std::filesystem::path& scene, const std::vector<std::string>& sets, const Scene& loaded);
 
 // "transport=… max-depth=… filter=… range=MIN,MAX strategy=…".
 std::string settingsText(const reference::ReferenceSettings& settings);
 
 // The header of a part of `settings`' render covering `region`.
 ReferencePartHeader partHeader(const std::filesystem::path& scene, const std::vector<std::string>& sets,
-                               const reference::ReferenceSettings& settings, const reference::ReferenceRegion& region,
-                               float ev100);
+                               const Scene& loaded, const reference::ReferenceSettings& settings,
+                               const reference::ReferenceRegion& region, float ev100);
 
 // Atomically (a task that dies leaves no part). `image` is the region's (renderReference).
 void writeReferencePart(const std::filesystem::path& path, const ReferencePartHeader& header,

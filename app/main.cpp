@@ -1,18 +1,17 @@
 // The prism command line: one subcommand per job. This is the only translation unit that
 // includes CLI11 (its headers cost ~15 s per file on 2 cores); commands live in their own files.
 #include <CLI/CLI.hpp>
-#include <benchmark/benchmark.h>
 #include <fmt/core.h>
 
-#include <charconv>
-#include <cmath>
 #include <filesystem>
 #include <map>
 
+#include "app/benchmark_command.h"
 #include "app/cluster_command.h"
 #include "app/colour_commands.h"
 #include "app/merge_command.h"
 #include "app/nebula_commands.h"
+#include "app/number_list.h"
 #include "app/prt_commands.h"
 #include "app/reference_commands.h"
 #include "app/render_commands.h"
@@ -31,24 +30,6 @@
 #include "render/setting_keys.h"
 
 namespace {
-
-// "a,b,c" (or another separator) → finite numbers; Error naming the option otherwise.
-std::vector<double> parseNumbers(const std::string& text, const std::string& option, char separator = ',') {
-  std::vector<double> values;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t comma = text.find(separator, start);
-    std::string_view field(text.data() + start, (comma == std::string::npos ? text.size() : comma) - start);
-    double v = 0.0;
-    auto result = std::from_chars(field.data(), field.data() + field.size(), v);
-    if (field.empty() || result.ec != std::errc() || result.ptr != field.data() + field.size() || !std::isfinite(v))
-      throw prism::Error(option + ": '" + text + "' is not a '" + separator + "'-separated list of numbers");
-    values.push_back(v);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return values;
-}
 
 const char* typeName(prism::render::SettingType type) {
   using prism::render::SettingType;
@@ -89,17 +70,6 @@ class CliSettings {
   std::vector<std::pair<std::string, CLI::Option*>> mOptions;
   std::string mCamera;
 };
-
-int runBenchmarks(std::vector<std::string> args) {
-  std::vector<char*> argv{const_cast<char*>("prism bench")};
-  for (std::string& a : args) argv.push_back(a.data());
-  int argc = static_cast<int>(argv.size());
-  benchmark::Initialize(&argc, argv.data());
-  if (benchmark::ReportUnrecognizedArguments(argc, argv.data())) return 2;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
 
 // The options of `prism reference` that shape one render, also taken by `prism cluster script
 // reference` to write the tasks' command lines.
@@ -497,18 +467,18 @@ int main(int argc, char** argv) {
     if (*demoCmd) runGallery(gallery);
     if (*chartCmd) runDemo(demo);
     if (*xyzCmd) {
-      if (!rgbText.empty()) xyz.rgb = parseNumbers(rgbText, "--rgb");
-      if (!rangeText.empty()) xyz.rangeNm = parseNumbers(rangeText, "--range");
+      if (!rgbText.empty()) xyz.rgb = prism::app::parseNumbers(rgbText, "--rgb");
+      if (!rangeText.empty()) xyz.rangeNm = prism::app::parseNumbers(rangeText, "--range");
       xyz.sample = wavelengthsOpt->count() > 0 || !rangeText.empty();
       colourXyz(xyz);
     }
     if (*deCmd) {
-      for (const std::string& t : labTexts) de.labs.push_back(parseNumbers(t, "--lab"));
+      for (const std::string& t : labTexts) de.labs.push_back(prism::app::parseNumbers(t, "--lab"));
       colourDeltaE(de);
     }
     if (*cctCmd) colourCct(cct);
     if (*convCmd) {
-      conv.values = parseNumbers(convText, "colour convert");
+      conv.values = prism::app::parseNumbers(convText, "colour convert");
       colourConvert(conv);
     }
     if (*camCmd) colourCameraMatrix(cam);
@@ -516,14 +486,14 @@ int main(int argc, char** argv) {
     if (*metamerCmd) colourMetamer(metamer);
     if (*prtBakeCmd) runPrtBake(prtBake);
     if (*prtReportCmd) {
-      if (!prtRotate.empty()) prtReport.rotate = parseNumbers(prtRotate, "--rotate");
+      if (!prtRotate.empty()) prtReport.rotate = prism::app::parseNumbers(prtRotate, "--rotate");
       runPrtReport(prtReport);
     }
     if (*prtMetamersCmd) runPrtMetamers(prtMetamers);
     if (*lutCmd) runLut(lut);
     if (*upCmd) {
-      up.rgb = parseNumbers(upRgb, "--rgb");
-      if (!upWavelengths.empty()) up.wavelengths = parseNumbers(upWavelengths, "--wavelengths", ':');
+      up.rgb = prism::app::parseNumbers(upRgb, "--rgb");
+      if (!upWavelengths.empty()) up.wavelengths = prism::app::parseNumbers(upWavelengths, "--wavelengths", ':');
       runUpsample(up);
     }
     if (*settingsCmd) printSettings(settingsSettings.given(), settingKeys);
@@ -536,14 +506,14 @@ int main(int argc, char** argv) {
       runRender(render);
     }
     if (*referenceCmd) {
-      if (!refRange.empty()) ref.range = parseNumbers(refRange, "--range");
-      if (!refEv.empty()) ref.ev100 = static_cast<float>(parseNumbers(refEv, "--ev").at(0));
+      if (!refRange.empty()) ref.range = prism::app::parseNumbers(refRange, "--range");
+      if (!refEv.empty()) ref.ev100 = static_cast<float>(prism::app::parseNumbers(refEv, "--ev").at(0));
       runReference(ref);
     }
     if (*mergeCmd) runMerge(merge);
     if (*scriptReferenceCmd) {
-      if (!clusterRange.empty()) cluster.reference.range = parseNumbers(clusterRange, "--range");
-      if (!clusterEv.empty()) cluster.reference.ev100 = static_cast<float>(parseNumbers(clusterEv, "--ev").at(0));
+      if (!clusterRange.empty()) cluster.reference.range = prism::app::parseNumbers(clusterRange, "--range");
+      if (!clusterEv.empty()) cluster.reference.ev100 = static_cast<float>(prism::app::parseNumbers(clusterEv, "--ev").at(0));
       printReferenceClusterScript(cluster);
     }
     if (*scriptValidateCmd) printValidateClusterScript(cluster);
@@ -563,7 +533,7 @@ int main(int argc, char** argv) {
     }
     if (*nebBasisCmd) {
       if (!nebDomain.empty()) {
-        auto d = parseNumbers(nebDomain, "--domain");
+        auto d = prism::app::parseNumbers(nebDomain, "--domain");
         if (d.size() != 2) throw prism::Error("--domain: expected LO,HI");
         nebBasis.lambda0Um = d[0], nebBasis.lambda1Um = d[1];
       }
@@ -584,14 +554,14 @@ int main(int argc, char** argv) {
       sceneBench.settings.mode = prism::render::RenderMode::Rgb;  // the bench sets the mode per configuration
       if (!benchWavelengths.empty()) {
         sceneBench.wavelengths.clear();
-        for (double n : parseNumbers(benchWavelengths, "--wavelengths")) sceneBench.wavelengths.push_back(static_cast<int>(n));
+        for (double n : prism::app::parseNumbers(benchWavelengths, "--wavelengths")) sceneBench.wavelengths.push_back(static_cast<int>(n));
       } else if (sceneBench.settings.sampling.strategy == prism::SamplingStrategy::Optimised) {
         // A fitted set has at most 64 wavelengths: the default sweep stops there.
         std::erase_if(sceneBench.wavelengths, [](int n) { return n > prism::kMaxFittedWavelengths; });
       }
       runSceneBench(sceneBench);
     } else if (*bench) {
-      return runBenchmarks(bench->remaining());
+      return prism::app::runBenchmarks(bench->remaining());
     }
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

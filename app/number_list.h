@@ -1,0 +1,13 @@
+// A command line's list of numbers ("0.2,0.4,0.6", or "380:780:5" with another separator), as
+// the options that take several numbers give them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace prism::app {
+
+// Finite numbers separated by `separator`; Error naming the option otherwise.
+std::vector<double> parseNumbers(const std::string& text, const std::string& option, char separator = ',');
+
+}  // namespace prism::app

@@ -24,6 +24,10 @@
 //   estimation at every vertex, Russian roulette from the fourth vertex; rays that escape see the
 //   background as uniform surrounding radiance. Delta lights cannot be hit, so nothing is
 //   counted twice.
+// - A technique's environment (TechniqueSection::environment: PRT's) replaces the background as
+//   the light of rays that escape after a bounce (camera rays still see the background); with
+//   direct transport each first hit also samples it once through the BRDF, with a shadow ray.
+//   Objects a technique shades itself are Lambertian (SurfaceHit::lambertian).
 // - Media (Scene::water below its surface, isotropic as the analytic model assumes; else
 //   Scene::medium, homogeneous, in a box or everywhere): free flights drawn against
 //   scattering with spectral MIS over the four wavelengths, absorption as Beer–Lambert weight,

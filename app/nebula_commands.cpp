@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -71,11 +70,7 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
     scene.model.filters = o.filters;
   }
   nebula::NebulaCamera& camera = scene.model.camera;
-  if (o.size > 0) {
-    const double scale = static_cast<double>(o.size) / std::max(camera.width, camera.height);
-    camera.width = std::max(1, static_cast<int>(std::lround(camera.width * scale)));
-    camera.height = std::max(1, static_cast<int>(std::lround(camera.height * scale)));
-  }
+  if (o.size > 0) nebula::scaleImage(camera, o.size);
   nebula::RenderSettings s;
   s.steps = o.steps > 0 ? o.steps : scene.steps;
   s.emissionLines = !o.noLines;

@@ -55,11 +55,7 @@ double renderNebula(const std::filesystem::path& file, const std::string& filter
   nebula::NebulaScene scene = nebula::loadNebulaScene(file);
   scene.model.filters = filters;
   nebula::NebulaCamera& camera = scene.model.camera;
-  if (camera.width > most || camera.height > most) {  // the longer side to `most`, the aspect kept
-    const double scale = static_cast<double>(most) / std::max(camera.width, camera.height);
-    camera.width = std::max(1, static_cast<int>(std::lround(camera.width * scale)));
-    camera.height = std::max(1, static_cast<int>(std::lround(camera.height * scale)));
-  }
+  if (camera.width > most || camera.height > most) nebula::scaleImage(camera, most);
   nebula::RenderSettings settings;
   settings.method = nebula::Method::Projection;
   settings.steps = scene.steps;

@@ -18,6 +18,12 @@
 
 namespace prism::nebula {
 
+void scaleImage(NebulaCamera& camera, int pixels) {
+  const double scale = static_cast<double>(pixels) / std::max(camera.width, camera.height);
+  camera.width = std::max(1, static_cast<int>(std::lround(camera.width * scale)));
+  camera.height = std::max(1, static_cast<int>(std::lround(camera.height * scale)));
+}
+
 const char* methodName(Method m) {
   switch (m) {
     case Method::Reference: return "reference";

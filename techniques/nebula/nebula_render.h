@@ -44,6 +44,8 @@ struct NebulaCamera {
   int width = 128;
   int height = 128;
 };
+// The camera's image scaled so that its longer side is `pixels` (≥ 1), the aspect kept.
+void scaleImage(NebulaCamera& camera, int pixels);
 
 // An emission-line group ("H I Balmer (case B)", "[O III] doublet", …, as in nebula_lines.csv)
 // and the strength of its reference line (the one its ratios are relative to).

@@ -44,7 +44,7 @@ class SectionEnvironment final : public TechniqueEnvironment {
     if (!mMap) {
       const double spd = mSpd.at(lambdaNm);
       if (mUniform) return spd;
-      return d.z >= 0.0 ? spd * (1.0 + 2.0 * d.z) / 3.0 : spd * kSkyGroundAlbedo * 7.0 / 9.0;  // skyGradientEnvironment's
+      return spd * skyGradient(d.z);  // skyGradientEnvironment's, with its default ground
     }
     // The texel whose solid angle holds d: row 0 at the zenith, u = φ/2π from +x towards +y.
     const double pi = std::numbers::pi;

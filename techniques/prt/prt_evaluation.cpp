@@ -65,9 +65,8 @@ SpectralEnvironment uniformEnvironment(std::string name, const Spectrum& spd) {
 }
 
 SpectralEnvironment skyGradientEnvironment(std::string name, const Spectrum& spd, double groundAlbedo) {
-  double ground = groundAlbedo * 7.0 / 9.0;  // albedo · (7π/9 · L_z) / π
   return {std::move(name),
-          {{spd, zonal([ground](double z) { return z >= 0.0 ? (1.0 + 2.0 * z) / 3.0 : ground; })}}};
+          {{spd, zonal([groundAlbedo](double z) { return skyGradient(z, groundAlbedo); })}}};
 }
 
 SpectralEnvironment equirectangularEnvironment(std::string name, int width, int height,

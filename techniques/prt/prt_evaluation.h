@@ -45,6 +45,11 @@ SpectralEnvironment uniformEnvironment(std::string name, const Spectrum& spd);
 // 2 cos θ)/3) above the horizon, with L_z = spd, and below it a grey ground of albedo
 // `groundAlbedo` lit by that sky (radiance albedo·E_h/π, E_h = 7π/9·L_z).
 inline constexpr double kSkyGroundAlbedo = 0.2;
+// The gradient's relative radiance at a direction of zenith cosine z: (1 + 2z)/3 above the
+// horizon, albedo·7/9 below (the ground lit by the sky above it).
+inline double skyGradient(double z, double groundAlbedo = kSkyGroundAlbedo) {
+  return z >= 0.0 ? (1.0 + 2.0 * z) / 3.0 : groundAlbedo * 7.0 / 9.0;  // albedo · (7π/9 · L_z) / π
+}
 SpectralEnvironment skyGradientEnvironment(std::string name, const Spectrum& spd, double groundAlbedo = kSkyGroundAlbedo);
 // An equirectangular map (row 0 at the zenith +z, u = φ/2π from +x towards +y), linear RGB per
 // texel as `width × height` triples, each texel upsampled by `toSpectrum` (Prism's unbounded RGB

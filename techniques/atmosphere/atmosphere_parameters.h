@@ -31,6 +31,8 @@ struct AtmosphereParameters {
   double groundAlbedo = 0.1;
   double sunAngularRadiusRad = 0.004675;
   bool multipleScattering = true;
+
+  bool operator==(const AtmosphereParameters&) const = default;
 };
 
 // Error naming the parameter when one is out of its physical range ("ozone column (DU) = -1 must

@@ -49,21 +49,21 @@ TechniqueBlock AtmosphereSection::pack(const FramePackInput& input) const {
   return block;
 }
 
-std::unique_ptr<TechniqueSection> AtmosphereSection::parse(const schema::Node& n,
-                                                           const TechniqueSections& earlier) {
+void readAtmosphereKeys(const schema::Node& n, AtmosphereSection& a, std::vector<std::string_view> extraKeys) {
   using schema::Range;
-  if (earlier.has("water")) n.fail("a scene has water or an atmosphere, not both");
-  n.expectObject({"sun", "ground_altitude", "planet_radius", "atmosphere_height", "rayleigh_scale_height",
-                  "aerosols", "turbidity", "angstrom_alpha", "mie_scale_height", "mie_albedo", "mie_g",
-                  "ozone", "ground_albedo", "multiple_scattering"});
-  auto a = std::make_unique<AtmosphereSection>();
-  AtmosphereParameters& p = a->parameters;
+  std::vector<std::string_view> keys{"sun", "ground_altitude", "planet_radius", "atmosphere_height",
+                                     "rayleigh_scale_height", "aerosols", "turbidity", "angstrom_alpha",
+                                     "mie_scale_height", "mie_albedo", "mie_g", "ozone", "ground_albedo",
+                                     "multiple_scattering"};
+  keys.insert(keys.end(), extraKeys.begin(), extraKeys.end());
+  n.expectObject(keys);
+  AtmosphereParameters& p = a.parameters;
   if (auto sun = n.optionalChild("sun")) {
     sun->expectObject({"elevation", "azimuth"});
-    a->sunElevationDeg = sun->numberF("elevation", a->sunElevationDeg, Range::closed(-90.0, 90.0));
-    a->sunAzimuthDeg = sun->numberF("azimuth", a->sunAzimuthDeg, Range::closed(-360.0, 360.0));
+    a.sunElevationDeg = sun->numberF("elevation", a.sunElevationDeg, Range::closed(-90.0, 90.0));
+    a.sunAzimuthDeg = sun->numberF("azimuth", a.sunAzimuthDeg, Range::closed(-360.0, 360.0));
   }
-  a->groundAltitudeM = n.numberF("ground_altitude", 0.0f, Range::closed(0.0, 50000.0));
+  a.groundAltitudeM = n.numberF("ground_altitude", 0.0f, Range::closed(0.0, 50000.0));
   p.bottomRadiusKm = n.number("planet_radius", p.bottomRadiusKm, Range::closed(1.0, 1e5));
   p.topRadiusKm = p.bottomRadiusKm + n.number("atmosphere_height", p.topRadiusKm - 6360.0, Range::closed(1.0, 1000.0));
   p.rayleighScaleHeightKm = n.number("rayleigh_scale_height", p.rayleighScaleHeightKm, Range::above(0.01));
@@ -81,10 +81,17 @@ std::unique_ptr<TechniqueSection> AtmosphereSection::parse(const schema::Node& n
   } catch (const Error& e) {
     n.fail(e.what());
   }
-  if (a->groundAltitudeM * 1e-3 >= p.topRadiusKm - p.bottomRadiusKm) {
+  if (a.groundAltitudeM * 1e-3 >= p.topRadiusKm - p.bottomRadiusKm) {
     n.child("ground_altitude").fail(fmt::format("{} m must be below the top of the atmosphere ({} km)",
-                                                a->groundAltitudeM, p.topRadiusKm - p.bottomRadiusKm));
+                                                a.groundAltitudeM, p.topRadiusKm - p.bottomRadiusKm));
   }
+}
+
+std::unique_ptr<TechniqueSection> AtmosphereSection::parse(const schema::Node& n,
+                                                           const TechniqueSections& earlier) {
+  if (earlier.has("water")) n.fail("a scene has water or an atmosphere, not both");
+  auto a = std::make_unique<AtmosphereSection>();
+  readAtmosphereKeys(n, *a);
   return a;
 }
 

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <memory>
+#include <string_view>
+#include <vector>
 
 #include "techniques/atmosphere/atmosphere_parameters.h"
 #include "techniques/technique_section.h"
@@ -50,5 +52,10 @@ struct AtmosphereSection final : TechniqueSection {
 
   static std::unique_ptr<TechniqueSection> parse(const schema::Node& node, const TechniqueSections& earlier);
 };
+
+// Reads the section's keys (docs/scene-format.md, "atmosphere") into `a`, which holds the
+// defaults; `extraKeys` are allowed beside them (PRT's sky environment adds its own). Errors
+// name the key's JSON pointer.
+void readAtmosphereKeys(const schema::Node& n, AtmosphereSection& a, std::vector<std::string_view> extraKeys = {});
 
 }  // namespace prism::atmosphere

@@ -65,6 +65,11 @@ glm::vec4 skyRadiance(const AtmosphereTables& tables, float rKm, float muSun, fl
   return kernel.skyRadiance(tables.atmosphere, 0, rKm, muSun, d, withGround);
 }
 
+glm::vec4 transmittanceToSpace(const AtmosphereTables& tables, float rKm, float mu) {
+  AtmosphereTablesKernel kernel(tables);
+  return kernel.transmittanceToSpace(tables.atmosphere, 0, rKm, mu);
+}
+
 SkyViewDirection skyViewTexelDirection(const shared::GpuAtmosphere& atmosphere, float rKm, int x, int y) {
   AtmosphereTables none;
   AtmosphereTablesKernel kernel(none);

@@ -27,6 +27,10 @@ AtmosphereTables computeTables(const shared::GpuAtmosphere& atmosphere, unsigned
 glm::vec4 skyRadiance(const AtmosphereTables& tables, float rKm, float muSun, float zenith,
                       float azimuth, bool withGround = true);
 
+// Transmittance from radius rKm to space along a direction of zenith cosine mu (the sun's light
+// reaching that point, per channel); 0 where the planet is in the way.
+glm::vec4 transmittanceToSpace(const AtmosphereTables& tables, float rKm, float mu);
+
 // The view direction of sky-view texel (x, y) for a camera at radius rKm.
 struct SkyViewDirection {
   float zenith = 0.0f;

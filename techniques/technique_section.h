@@ -56,12 +56,18 @@ struct TechniqueMedium {
 // scene's lights are (683 lm/W · ∫ L ȳ dλ is its luminance in cd/m²), everywhere beyond the scene. The path
 // tracer lights the scene with it where the rasteriser's technique does: paths that leave the
 // scene after a bounce gather it (camera rays still see the scene's background, as the
-// rasteriser draws it), and with direct transport each surface point samples it once.
+// rasteriser draws it), and with direct transport each surface point samples it once. A sun in
+// it (PRT's spectral sky) is a delta direction no sampled path finds: the path tracer samples it
+// at every surface point it lights, as it does the scene's directional lights.
 class TechniqueEnvironment {
  public:
   virtual ~TechniqueEnvironment() = default;
   // `directionW`: unit, world space, towards where the light comes from.
   virtual double radiance(const glm::vec3& directionW, double lambdaNm) const = 0;
+  // The sun's direction (unit, world, towards it), if the environment holds one.
+  virtual std::optional<glm::vec3> sunDirection() const { return std::nullopt; }
+  // Its irradiance on a surface facing it, W·m⁻²·nm⁻¹.
+  virtual double sunIrradiance(double /*lambdaNm*/) const { return 0.0; }
 };
 
 // What a technique's block is packed from: the frame's wavelength batches (in RGB mode one batch

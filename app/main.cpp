@@ -208,7 +208,9 @@ int main(int argc, char** argv) {
   auto* prtReportCmd = prtCmd->add_subcommand("report", "the ColorChecker object (or a scene): spectral PRT (m = 1..16) and RGB-PRT against 5 nm sampling");
   prtReportCmd->add_option("input", prtReport.input, "a scene (.json) or glTF model instead of the ColorChecker height field");
   prtReportCmd->add_option("--illuminant", prtReport.illuminant, "illuminant of the environment")->capture_default_str();
-  prtReportCmd->add_option("--environment", prtReport.environment, "sky (overcast gradient) or uniform")->capture_default_str();
+  prtReportCmd->add_option("--environment", prtReport.environment, "sky (overcast gradient), uniform, or atmosphere (Prism's spectral sky and sun)")->capture_default_str();
+  prtReportCmd->add_option("--sun-elevation", prtReport.sunElevationDeg, "the atmosphere's sun, degrees above the horizon")->capture_default_str();
+  prtReportCmd->add_option("--sun-azimuth", prtReport.sunAzimuthDeg, "the atmosphere's sun, degrees (0: towards -z, 90: +x)")->capture_default_str();
   prtReportCmd->add_option("--map,--exr", prtReport.exr, "an equirectangular map instead, row 0 at the zenith: linear-sRGB EXR or Radiance .hdr");
   std::string prtRotate;
   prtReportCmd->add_option("--rotate", prtRotate, "X,Y,Z,DEGREES: turn the environment (SH rotation, no re-projection)");

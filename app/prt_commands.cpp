@@ -193,8 +193,16 @@ void runPrtReport(const PrtReportOptions& o) {
     environment = prt::skyGradientEnvironment(o.illuminant + " sky", spd);
   } else if (o.environment == "uniform") {
     environment = prt::uniformEnvironment(o.illuminant + " uniform", spd);
+  } else if (o.environment == "atmosphere") {
+    if (!(std::abs(o.sunElevationDeg) <= 90.0)) throw Error(fmt::format("--sun-elevation: {} is not within -90..90", o.sunElevationDeg));
+    if (!(std::abs(o.sunAzimuthDeg) <= 360.0)) throw Error(fmt::format("--sun-azimuth: {} is not within -360..360", o.sunAzimuthDeg));
+    prt::PrtSky sky;
+    sky.atmosphere.sunElevationDeg = static_cast<float>(o.sunElevationDeg);
+    sky.atmosphere.sunAzimuthDeg = static_cast<float>(o.sunAzimuthDeg);
+    environment = prt::skyEnvironment(fmt::format("Prism's spectral sky, sun at {}°", o.sunElevationDeg),
+                                      prt::tabulateSky(sky), true, 1.0);
   } else {
-    throw Error("--environment: '" + o.environment + "' is not sky or uniform");
+    throw Error("--environment: '" + o.environment + "' is not sky, uniform or atmosphere");
   }
   if (!o.rotate.empty()) {  // the environment turned by its SH rotation, not projected again
     glm::dvec3 axis = o.rotate.size() == 4 ? glm::dvec3(o.rotate[0], o.rotate[1], o.rotate[2]) : glm::dvec3(0.0);

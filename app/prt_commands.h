@@ -37,7 +37,9 @@ PrtBakeTarget prtBakeTarget(const PrtBakeOptions& options);
 struct PrtReportOptions {
   std::string input;                // a scene or glTF model; empty: the ColorChecker height field
   std::string illuminant = "F4";
-  std::string environment = "sky";  // sky | uniform
+  std::string environment = "sky";  // sky | uniform | atmosphere (Prism's spectral sky, its sun below)
+  double sunElevationDeg = 30.0;
+  double sunAzimuthDeg = 180.0;
   std::string exr;                  // or an equirectangular linear-sRGB EXR (row 0 at the zenith)
   std::vector<double> rotate;       // X, Y, Z, degrees: the environment turned (empty: not)
   int patchVertices = 16;           // vertices along each side of a ColorChecker patch

@@ -590,7 +590,20 @@ TEST_F(SceneFolder, PrtObjectsNameTheTechniqueAndItsSectionIsChecked) {
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment.illuminant=F99"}); }),
                          f.string() + ": /prt/environment/illuminant: "));
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment.map=sky.exr"}); }),
-                         f.string() + ": /prt/environment/illuminant: give a map or an illuminant and shape, not both"));
+                         f.string() + ": /prt/environment/illuminant: give one of a map, an atmosphere, or an illuminant and shape"));
+  // Prism's spectral sky: absolute, so no luminance beside it; its keys are the atmosphere section's.
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"prt.environment={\"atmosphere\": {}, \"luminance\": 5}"}); }),
+            f.string() + ": /prt/environment/luminance: the spectral sky's radiance is absolute (its sun's): give an "
+                         "atmosphere or an illuminant, shape and luminance");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment={\"atmosphere\": {\"ozone\": -1}}"}); }),
+                         f.string() + ": /prt/environment/atmosphere/ozone: "));
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment={\"atmosphere\": {\"sun\": {\"elevation\": 95}}}"}); }),
+                         f.string() + ": /prt/environment/atmosphere/sun/elevation: "));
+  Scene sky = loadScene(f, {"prt.environment={\"atmosphere\": {\"sun\": {\"elevation\": 12}, \"sun_disc\": false}}"});
+  const auto* skySection = sky.techniques.find<prt::PrtSection>();
+  ASSERT_TRUE(skySection && skySection->sky);
+  EXPECT_FLOAT_EQ(skySection->sky->atmosphere.sunElevationDeg, 12.0f);
+  EXPECT_FALSE(skySection->sky->sunDisc);
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment={\"map\": \"missing.exr\"}"}); }),
                          f.string() + ": /prt/environment/map: "));
   write("bad.exr", "not an exr");

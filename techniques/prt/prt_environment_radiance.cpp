@@ -24,7 +24,11 @@ class SectionEnvironment final : public TechniqueEnvironment {
     const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(static_cast<double>(section.rotationDeg)),
                                           glm::dvec3(0.0, 0.0, 1.0)));
     mToEnvironment = glm::transpose(rotation) * zUp;
-    if (mMap) {
+    if (section.sky) {
+      mSky = sectionSky(*section.sky);  // radiance in W·m⁻²·sr⁻¹·nm⁻¹ already
+      if (section.sky->sunDisc && mSky->sunDirection.z > 0.0)
+        mSunDirectionW = glm::vec3(glm::normalize(glm::inverse(mToEnvironment) * mSky->sunDirection));
+    } else if (mMap) {
       mTexels.reserve(mMap->linearRgb.size() / 3);
       for (std::size_t i = 0; i < mMap->linearRgb.size(); i += 3)
         mTexels.emplace_back(table, glm::vec3(mMap->linearRgb[i], mMap->linearRgb[i + 1], mMap->linearRgb[i + 2]));
@@ -41,24 +45,25 @@ class SectionEnvironment final : public TechniqueEnvironment {
 
   double radiance(const glm::vec3& directionW, double lambdaNm) const override {
     const glm::dvec3 d = glm::normalize(mToEnvironment * glm::dvec3(directionW));
+    if (mSky) return mSky->radianceAt(d, lambdaNm);
     if (!mMap) {
       const double spd = mSpd.at(lambdaNm);
       if (mUniform) return spd;
       return spd * skyGradient(d.z);  // skyGradientEnvironment's, with its default ground
     }
-    // The texel whose solid angle holds d: row 0 at the zenith, u = φ/2π from +x towards +y.
-    const double pi = std::numbers::pi;
-    const double theta = std::acos(std::clamp(d.z, -1.0, 1.0));
-    double phi = std::atan2(d.y, d.x);
-    if (phi < 0.0) phi += 2.0 * pi;
-    const int x = std::min(mMap->width - 1, static_cast<int>(phi / (2.0 * pi) * mMap->width));
-    const int y = std::min(mMap->height - 1, static_cast<int>(theta / pi * mMap->height));
+    const glm::ivec2 t = equirectangularTexelOf(d, mMap->width, mMap->height);
+    const int x = t.x, y = t.y;
     return mScale * mTexels[static_cast<std::size_t>(y) * static_cast<std::size_t>(mMap->width) + static_cast<std::size_t>(x)]
                         .at(static_cast<float>(lambdaNm));
   }
 
+  std::optional<glm::vec3> sunDirection() const override { return mSunDirectionW; }
+  double sunIrradiance(double lambdaNm) const override { return mSky ? mSky->sunIrradianceAt(lambdaNm) : 0.0; }
+
  private:
   std::shared_ptr<const PrtMap> mMap;
+  std::shared_ptr<const SkyRadianceGrid> mSky;
+  std::optional<glm::vec3> mSunDirectionW;
   glm::dmat3 mToEnvironment{1.0};
   Spectrum mSpd;
   bool mUniform = false;

@@ -69,29 +69,25 @@ SpectralEnvironment skyGradientEnvironment(std::string name, const Spectrum& spd
           {{spd, zonal([groundAlbedo](double z) { return skyGradient(z, groundAlbedo); })}}};
 }
 
-SpectralEnvironment equirectangularEnvironment(std::string name, int width, int height,
-                                               const std::vector<float>& linearRgb,
-                                               const std::function<Spectrum(const glm::vec3& rgb)>& toSpectrum) {
-  if (width < 1 || height < 1 || linearRgb.size() != 3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
-    throw Error(fmt::format("{}: {} values for a {} × {} RGB map", name, linearRgb.size(), width, height));
+EquirectangularTexel equirectangularTexel(int x, int y, int width, int height) {
   const double pi = std::numbers::pi;
-  Eigen::MatrixXd grid = Eigen::MatrixXd::Zero(kGridWavelengths, 25);
-  for (int y = 0; y < height; ++y) {
-    double theta0 = pi * y / height, theta1 = pi * (y + 1) / height, theta = 0.5 * (theta0 + theta1);
-    double solidAngle = 2.0 * pi / width * (std::cos(theta0) - std::cos(theta1));
-    for (int x = 0; x < width; ++x) {
-      std::size_t at = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x));
-      glm::vec3 rgb(linearRgb[at], linearRgb[at + 1], linearRgb[at + 2]);
-      for (int c = 0; c < 3; ++c)
-        if (!std::isfinite(rgb[c]) || rgb[c] < 0.0f)
-          throw Error(fmt::format("{}: texel ({}, {}): channel {} is {}, not a finite non-negative radiance", name, x, y, c,
-                                  rgb[c]));
-      if (rgb == glm::vec3(0.0f)) continue;
-      double phi = 2.0 * pi * (x + 0.5) / width;
-      glm::dvec3 dir(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
-      grid += sampleOnGrid(toSpectrum(rgb)) * (solidAngle * evaluateSh(dir)).transpose();
-    }
-  }
+  double theta0 = pi * y / height, theta1 = pi * (y + 1) / height, theta = 0.5 * (theta0 + theta1);
+  double phi = 2.0 * pi * (x + 0.5) / width;
+  return {glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)),
+          2.0 * pi / width * (std::cos(theta0) - std::cos(theta1))};
+}
+
+glm::ivec2 equirectangularTexelOf(const glm::dvec3& direction, int width, int height) {
+  const double pi = std::numbers::pi;
+  const glm::dvec3 d = glm::normalize(direction);
+  const double theta = std::acos(std::clamp(d.z, -1.0, 1.0));
+  double phi = std::atan2(d.y, d.x);
+  if (phi < 0.0) phi += 2.0 * pi;
+  return {std::min(width - 1, static_cast<int>(phi / (2.0 * pi) * width)),
+          std::min(height - 1, static_cast<int>(theta / pi * height))};
+}
+
+SpectralEnvironment gridEnvironment(std::string name, const Eigen::MatrixXd& grid) {
   SpectralEnvironment environment{std::move(name), {}};
   for (int k = 0; k < 25; ++k) {
     Eigen::VectorXd column = grid.col(k);
@@ -103,6 +99,28 @@ SpectralEnvironment equirectangularEnvironment(std::string name, int width, int 
     environment.terms.push_back({s, ShVector::Unit(k)});
   }
   return environment;
+}
+
+SpectralEnvironment equirectangularEnvironment(std::string name, int width, int height,
+                                               const std::vector<float>& linearRgb,
+                                               const std::function<Spectrum(const glm::vec3& rgb)>& toSpectrum) {
+  if (width < 1 || height < 1 || linearRgb.size() != 3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+    throw Error(fmt::format("{}: {} values for a {} × {} RGB map", name, linearRgb.size(), width, height));
+  Eigen::MatrixXd grid = Eigen::MatrixXd::Zero(kGridWavelengths, 25);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      std::size_t at = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x));
+      glm::vec3 rgb(linearRgb[at], linearRgb[at + 1], linearRgb[at + 2]);
+      for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(rgb[c]) || rgb[c] < 0.0f)
+          throw Error(fmt::format("{}: texel ({}, {}): channel {} is {}, not a finite non-negative radiance", name, x, y, c,
+                                  rgb[c]));
+      if (rgb == glm::vec3(0.0f)) continue;
+      EquirectangularTexel texel = equirectangularTexel(x, y, width, height);
+      grid += sampleOnGrid(toSpectrum(rgb)) * (texel.solidAngle * evaluateSh(texel.direction)).transpose();
+    }
+  }
+  return gridEnvironment(std::move(name), grid);
 }
 
 SpectralEnvironment rotateEnvironment(const SpectralEnvironment& environment, const glm::dmat3& rotation) {

@@ -51,6 +51,18 @@ inline double skyGradient(double z, double groundAlbedo = kSkyGroundAlbedo) {
   return z >= 0.0 ? (1.0 + 2.0 * z) / 3.0 : groundAlbedo * 7.0 / 9.0;  // albedo · (7π/9 · L_z) / π
 }
 SpectralEnvironment skyGradientEnvironment(std::string name, const Spectrum& spd, double groundAlbedo = kSkyGroundAlbedo);
+// Texel (x, y) of a width × height equirectangular grid (row 0 at the zenith +z, u = φ/2π from +x
+// towards +y): its centre's direction and its exact solid angle (2π/width)·(cos θ0 − cos θ1).
+struct EquirectangularTexel {
+  glm::dvec3 direction;
+  double solidAngle = 0.0;
+};
+EquirectangularTexel equirectangularTexel(int x, int y, int width, int height);
+// The texel whose solid angle holds a direction (need not be unit).
+glm::ivec2 equirectangularTexelOf(const glm::dvec3& direction, int width, int height);
+// An environment from its 25 SH coefficients' spectra on the 5 nm grid (81 × 25; linear between
+// grid wavelengths).
+SpectralEnvironment gridEnvironment(std::string name, const Eigen::MatrixXd& grid);
 // An equirectangular map (row 0 at the zenith +z, u = φ/2π from +x towards +y), linear RGB per
 // texel as `width × height` triples, each texel upsampled by `toSpectrum` (Prism's unbounded RGB
 // intent: RgbUnboundedSpectrum(table, rgb).toDense()) and projected with its exact solid angle

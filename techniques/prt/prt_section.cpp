@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <mutex>
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "shared_cpp.h"
 #include "imaging/exr_file.h"
 #include "imaging/radiance_hdr.h"
 #include "spectral/illuminant.h"
@@ -98,11 +100,20 @@ std::unique_ptr<TechniqueSection> PrtSection::parse(const schema::Node& n, const
   n.expectObject({"environment", "basis", "mode", "samples", "shadows"});
   auto s = std::make_unique<PrtSection>();
   if (auto e = n.optionalChild("environment")) {
-    e->expectObject({"illuminant", "shape", "map", "luminance", "rotation_deg"});
+    e->expectObject({"illuminant", "shape", "map", "atmosphere", "luminance", "rotation_deg"});
     if (auto m = e->optionalChild("map")) {
-      for (const char* other : {"illuminant", "shape"})
-        if (e->has(other)) e->child(other).fail("give a map or an illuminant and shape, not both");
+      for (const char* other : {"illuminant", "shape", "atmosphere"})
+        if (e->has(other)) e->child(other).fail("give one of a map, an atmosphere, or an illuminant and shape");
       s->map = readMap(*m);
+    }
+    if (auto a = e->optionalChild("atmosphere")) {
+      for (const char* other : {"illuminant", "shape", "luminance"})
+        if (e->has(other))
+          e->child(other).fail("the spectral sky's radiance is absolute (its sun's): give an atmosphere or an illuminant, shape and luminance");
+      PrtSky sky;
+      atmosphere::readAtmosphereKeys(*a, sky.atmosphere, {"sun_disc"});
+      sky.sunDisc = a->boolean("sun_disc", true);
+      s->sky = sky;
     }
     if (auto i = e->optionalChild("illuminant")) {
       s->illuminant = i->string();
@@ -144,6 +155,9 @@ SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpe
     environment = equirectangularEnvironment(section.map->file.string(), section.map->width, section.map->height,
                                              section.map->linearRgb,
                                              [&](const glm::vec3& rgb) { return toSpectrum(rgb) * scale; });
+  } else if (section.sky) {
+    environment = skyEnvironment(fmt::format("spectral sky, sun at {}°", section.sky->atmosphere.sunElevationDeg),
+                                 *sectionSky(*section.sky), section.sky->sunDisc, double(shared::kLumensPerWatt));
   } else {
     Spectrum spd = illuminant(section.illuminant);
     spd *= section.luminanceCdM2 / gridLuminance(spd);
@@ -157,6 +171,37 @@ SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpe
     environment = rotateEnvironment(environment, rotation);
   }
   return environment;
+}
+
+std::string environmentKey(const PrtSection& section) {
+  std::string key = fmt::format("{}|{}|{}|{}|{}", section.illuminant, section.shape,
+                                static_cast<const void*>(section.map.get()), section.luminanceCdM2, section.rotationDeg);
+  if (section.sky) {
+    const atmosphere::AtmosphereSection& a = section.sky->atmosphere;
+    const atmosphere::AtmosphereParameters& p = a.parameters;
+    key += fmt::format("|sky {} {} {} {}|{} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {}", a.sunElevationDeg,
+                       a.sunAzimuthDeg, a.groundAltitudeM, section.sky->sunDisc, p.bottomRadiusKm, p.topRadiusKm,
+                       p.rayleighScaleHeightKm, p.rayleighScatteringPerKm, p.aerosols, p.mieScaleHeightKm,
+                       p.mieAngstromAlpha, p.mieAngstromBeta, p.mieSingleScatteringAlbedo, p.miePhaseG, p.ozoneColumnDu,
+                       p.ozonePeakAltitudeKm, p.ozoneHalfWidthKm, p.groundAlbedo, p.sunAngularRadiusRad,
+                       p.multipleScattering);
+  }
+  return key;
+}
+
+std::shared_ptr<const SkyRadianceGrid> sectionSky(const PrtSky& sky) {
+  static std::mutex mutex;
+  static std::optional<PrtSky> lastSky;
+  static std::shared_ptr<const SkyRadianceGrid> lastGrid;
+  std::lock_guard lock(mutex);
+  const atmosphere::AtmosphereSection& a = sky.atmosphere;
+  if (!lastSky || !(lastSky->atmosphere.parameters == a.parameters) ||
+      lastSky->atmosphere.sunElevationDeg != a.sunElevationDeg || lastSky->atmosphere.sunAzimuthDeg != a.sunAzimuthDeg ||
+      lastSky->atmosphere.groundAltitudeM != a.groundAltitudeM) {
+    lastGrid = std::make_shared<const SkyRadianceGrid>(tabulateSky(sky));
+    lastSky = sky;
+  }
+  return lastGrid;
 }
 
 }  // namespace prism::prt

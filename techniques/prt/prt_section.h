@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "imaging/float_image.h"
 #include "spectral/rgb_to_spectrum_table.h"
 #include "techniques/prt/prt_evaluation.h"
+#include "techniques/prt/prt_sky.h"
 #include "techniques/technique_section.h"
 
 namespace prism::prt {
@@ -37,6 +39,7 @@ struct PrtSection final : TechniqueSection {
   std::string illuminant = "D65";                 // a name as `prism colour list illuminants` prints
   std::string shape = "sky";                      // "sky" (CIE overcast gradient) or "uniform"
   std::shared_ptr<const PrtMap> map;              // instead of illuminant and shape, when given
+  std::optional<PrtSky> sky;                      // Prism's spectral sky instead of either (absolute: no luminance)
   float luminanceCdM2 = 1000.0f;
   float rotationDeg = 0.0f;                       // about the zenith (world +y), counter-clockwise seen from above
   int basis = 8;                                  // m, 1..16 (spectral mode)
@@ -68,7 +71,16 @@ imaging::FloatImage readEnvironmentMap(const std::filesystem::path& file);
 double gridLuminance(const Spectrum& spd);
 
 // The section's environment, z-up (PRT's convention), turned by rotationDeg about the zenith and
-// scaled to its luminance; srgbTable upsamples a map's texels (the unbounded intent).
+// scaled to its luminance (the spectral sky: absolute, 683 lm/W folded in as PRT's spectra carry
+// it); srgbTable upsamples a map's texels (the unbounded intent).
 SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpectrumTable& srgbTable);
+
+// What the section's environment is made from, as text: equal keys, the same environment.
+std::string environmentKey(const PrtSection& section);
+
+// The sky's grid, tabulated once per change of its atmosphere or sun (the last one is kept:
+// rotating the environment, hiding the sun's disc or changing the mode or basis does not
+// tabulate it again).
+std::shared_ptr<const SkyRadianceGrid> sectionSky(const PrtSky& sky);
 
 }  // namespace prism::prt

@@ -123,10 +123,8 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
   // What the projections depend on, as text: the section, the observer, the materials.
   // The frame's RGB and reference modes draw PRT's own baselines (technique_pass.h).
   const PrtMode mode = input.rgbMode ? PrtMode::RgbPrt : input.referenceMode ? PrtMode::Reference5nm : section.mode;
-  std::string key = fmt::format("{}|{}|{}|{}|{}|{}|{}|{}|{}", section.illuminant, section.shape,
-                                static_cast<const void*>(section.map.get()), section.luminanceCdM2,
-                                section.rotationDeg, section.basis, prtModeName(mode), input.observer.name,
-                                input.scene.colourSpace);
+  std::string key = fmt::format("{}|{}|{}|{}|{}", environmentKey(section), section.basis, prtModeName(mode),
+                                input.observer.name, input.scene.colourSpace);
   for (int m : d.materials) {
     const Material& material = input.scene.materials.at(static_cast<std::size_t>(m));
     double measured = -1.0;  // a fingerprint of a measured reflectance on the grid

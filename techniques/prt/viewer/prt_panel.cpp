@@ -1,5 +1,5 @@
 // The PRT panel (techniques/prt): mode, basis size m, the environment's illuminant, shape,
-// luminance and rotation. Sees only the PanelContext.
+// luminance and rotation, or the spectral sky's sun. Sees only the PanelContext.
 #include <imgui.h>
 
 #include "spectral/illuminant.h"
@@ -30,11 +30,20 @@ class PrtPanel final : public Panel {
     changed |= ImGui::SliderInt("basis m", &s.basis, 1, shared::kPrtMaxBasis);
     if (s.map) {
       ImGui::TextUnformatted(("map: " + s.map->file.filename().string()).c_str());
+    } else if (s.sky) {
+      // Released, not dragged: each new sun tabulates the sky again (about 2 s).
+      ImGui::TextUnformatted("Prism's spectral sky");
+      ImGui::SliderFloat("sun elevation deg", &s.sky->atmosphere.sunElevationDeg, -10.0f, 90.0f, "%.1f");
+      changed |= ImGui::IsItemDeactivatedAfterEdit();
+      ImGui::SliderFloat("sun azimuth deg", &s.sky->atmosphere.sunAzimuthDeg, -180.0f, 180.0f, "%.1f");
+      changed |= ImGui::IsItemDeactivatedAfterEdit();
+      changed |= ImGui::Checkbox("sun disc", &s.sky->sunDisc);
     } else {
       changed |= stringCombo("illuminant", s.illuminant, mIlluminants);
       changed |= stringCombo("shape", s.shape, {"sky", "uniform"});
     }
-    changed |= ImGui::SliderFloat("luminance cd/m2", &s.luminanceCdM2, 1.0f, 1e5f, "%.0f", ImGuiSliderFlags_Logarithmic);
+    if (!s.sky)
+      changed |= ImGui::SliderFloat("luminance cd/m2", &s.luminanceCdM2, 1.0f, 1e5f, "%.0f", ImGuiSliderFlags_Logarithmic);
     changed |= ImGui::SliderFloat("rotation deg", &s.rotationDeg, -180.0f, 180.0f, "%.1f");
     if (changed) context.changes.scene = true;
   }

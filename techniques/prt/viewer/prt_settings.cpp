@@ -10,9 +10,20 @@
 namespace prism::viewer {
 
 bool setPrtKey(Scene& scene, const std::string& key, const std::string& value) {
-  if (key != "prt.mode" && key != "prt.basis" && key != "prt.illuminant" && key != "prt.rotation") return false;
+  if (key != "prt.mode" && key != "prt.basis" && key != "prt.illuminant" && key != "prt.rotation" &&
+      key != "prt.sun-elevation" && key != "prt.sun-azimuth")
+    return false;
   auto* s = scene.techniques.find<prt::PrtSection>();
   if (!s) throw Error("the scene has no prt section");
+  if (key == "prt.sun-elevation" || key == "prt.sun-azimuth") {
+    if (!s->sky) throw Error(key + ": the prt environment is not the spectral sky (\"atmosphere\")");
+    const bool elevation = key == "prt.sun-elevation";
+    float degrees = render::parseFloat(key, value);
+    if (!(std::abs(degrees) <= (elevation ? 90.0f : 360.0f)))
+      throw Error(key + ": expected degrees in " + (elevation ? "[-90, 90]" : "[-360, 360]") + ", got " + excerpt(value));
+    (elevation ? s->sky->atmosphere.sunElevationDeg : s->sky->atmosphere.sunAzimuthDeg) = degrees;
+    return true;
+  }
   if (key == "prt.mode") {
     for (prt::PrtMode m : {prt::PrtMode::Spectral, prt::PrtMode::RgbPrt, prt::PrtMode::Reference5nm}) {
       if (value == prt::prtModeName(m)) {

@@ -48,5 +48,20 @@ TEST(PrtSetKeys, ChangeTheSectionAndRefuseBadValues) {
   EXPECT_EQ(s->basis, 5);
 }
 
+TEST(PrtSetKeys, MoveTheSpectralSkysSun) {
+  Scene scene;
+  scene.techniques.add(std::make_unique<prt::PrtSection>());
+  auto* s = scene.techniques.find<prt::PrtSection>();
+  EXPECT_EQ(errorOf(scene, "prt.sun-elevation", "10"),
+            "prt.sun-elevation: the prt environment is not the spectral sky (\"atmosphere\")");
+  s->sky = prt::PrtSky{};
+  EXPECT_TRUE(setPrtKey(scene, "prt.sun-elevation", "5.5"));
+  EXPECT_TRUE(setPrtKey(scene, "prt.sun-azimuth", "-120"));
+  EXPECT_FLOAT_EQ(s->sky->atmosphere.sunElevationDeg, 5.5f);
+  EXPECT_FLOAT_EQ(s->sky->atmosphere.sunAzimuthDeg, -120.0f);
+  EXPECT_EQ(errorOf(scene, "prt.sun-elevation", "91"), "prt.sun-elevation: expected degrees in [-90, 90], got 91");
+  EXPECT_FLOAT_EQ(s->sky->atmosphere.sunElevationDeg, 5.5f);
+}
+
 }  // namespace
 }  // namespace prism::viewer

@@ -12,9 +12,10 @@
 namespace prism::viewer {
 
 // The mode (spectral, RGB-PRT, 5 nm reference), the basis size m, the environment's illuminant,
-// shape, luminance and rotation about the zenith.
+// shape, luminance and rotation about the zenith, or the spectral sky's sun.
 std::unique_ptr<Panel> makePrtPanel();
-// prt.mode M, prt.basis N, prt.illuminant NAME, prt.rotation DEG (a TechniqueSetKey).
+// prt.mode M, prt.basis N, prt.illuminant NAME, prt.rotation DEG, and under the spectral sky
+// prt.sun-elevation DEG, prt.sun-azimuth DEG (a TechniqueSetKey).
 bool setPrtKey(Scene& scene, const std::string& key, const std::string& value);
 
 }  // namespace prism::viewer

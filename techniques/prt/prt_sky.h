@@ -1,0 +1,48 @@
+// Prism's spectral sky (techniques/atmosphere: Hillaire's tables with multiple scattering, the
+// measured solar spectrum and ozone) as PRT's distant environment, at any sun position: what the
+// sky makes of sunlight, seen from the scene's ground, at PRT's 81 wavelengths. The sky is
+// tabulated on an equirectangular grid of directions (z up, as PRT's frame; row 0 at the
+// zenith), each texel the sky's radiance along its centre (below the horizon, the ground the sun
+// lights), and projected on SH-5 with each texel's exact solid angle, as a map is; the sun's disc,
+// which a grid cannot hold, is a delta of the solar irradiance that reaches the ground, projected
+// exactly. Absolute units: W·m⁻²·sr⁻¹·nm⁻¹ (the sun W·m⁻²·nm⁻¹), so the sky needs no luminance.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "techniques/atmosphere/atmosphere_section.h"
+#include "techniques/prt/prt_evaluation.h"
+
+namespace prism::prt {
+
+struct PrtSky {
+  atmosphere::AtmosphereSection atmosphere;  // the planet, the sun's position, the ground's altitude
+  bool sunDisc = true;                       // the sun itself, besides the sky it lights
+};
+
+inline constexpr int kSkyGridWidth = 128, kSkyGridHeight = 64;
+
+struct SkyRadianceGrid {
+  int width = 0, height = 0;
+  std::vector<float> radiance;         // [texel y·width + x][kGridWavelengths]
+  glm::dvec3 sunDirection{0, 0, 1};    // PRT's frame (z up), towards the sun
+  std::vector<double> sunIrradiance;   // kGridWavelengths, on a surface facing the sun; 0 below the horizon
+  // The radiance of the texel holding a direction (PRT's frame), linear between grid wavelengths.
+  double radianceAt(const glm::dvec3& direction, double lambdaNm) const;
+  double sunIrradianceAt(double lambdaNm) const;  // linear between grid wavelengths
+};
+
+// The sky of `sky` (its sun's disc or not: the grid holds both) on a width × height grid: 11
+// batches of the atmosphere's tables, every texel in parallel (~2 s on 2 cores).
+SkyRadianceGrid tabulateSky(const PrtSky& sky, int width = kSkyGridWidth, int height = kSkyGridHeight);
+
+// The grid as a PRT environment: its texels and, with sunDisc, its sun; every value times `scale`.
+SpectralEnvironment skyEnvironment(std::string name, const SkyRadianceGrid& grid, bool sunDisc, double scale);
+
+// The sun's direction in PRT's frame (z up) for the atmosphere's elevation and azimuth.
+glm::dvec3 prtSunDirection(const atmosphere::AtmosphereSection& atmosphere);
+
+}  // namespace prism::prt

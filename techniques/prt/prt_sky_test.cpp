@@ -1,0 +1,92 @@
+// Prism's spectral sky as PRT's environment (prt_sky.h): the tabulated sky is the atmosphere's
+// own ground truth in the right directions (the sun's azimuth and elevation carried into PRT's
+// z-up frame), the sun's disc is the solar spectrum through the atmosphere's optical depth, and
+// the sky's colours are daylight's.
+#include "techniques/prt/prt_sky.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <numbers>
+
+#include "spectral/observer.h"
+#include "techniques/atmosphere/atmosphere_reference.h"
+#include "techniques/prt/prt_spectra.h"
+
+namespace prism::prt {
+namespace {
+
+PrtSky skyAt(float elevationDeg, float azimuthDeg, bool multipleScattering = true) {
+  PrtSky sky;
+  sky.atmosphere.sunElevationDeg = elevationDeg;
+  sky.atmosphere.sunAzimuthDeg = azimuthDeg;
+  sky.atmosphere.parameters.multipleScattering = multipleScattering;
+  return sky;
+}
+
+TEST(PrtSky, TexelsAreTheAtmospheresSingleScatteringSeenFromTheGround) {
+  // Single scattering only, so the double-precision reference integrates the same light: texels
+  // towards the sun (the Mie peak), across from it and away from it, at three heights.
+  const PrtSky sky = skyAt(20.0f, 130.0f, false);
+  const SkyRadianceGrid grid = tabulateSky(sky, 32, 16);
+  const glm::dvec3 sun = grid.sunDirection;
+  EXPECT_NEAR(sun.z, std::sin(20.0 * std::numbers::pi / 180.0), 1e-6);
+  const double sunAzimuth = std::atan2(sun.y, sun.x);
+  double worst = 0.0;
+  for (int y : {3, 6, 7}) {
+    for (int x = 0; x < grid.width; x += 5) {
+      EquirectangularTexel texel = equirectangularTexel(x, y, grid.width, grid.height);
+      const double zenith = std::acos(texel.direction.z);
+      const double azimuth = std::atan2(texel.direction.y, texel.direction.x) - sunAzimuth;
+      const std::array<double, 4> lambdaNm{450.0, 555.0, 650.0, 700.0};  // 555: between the sky's 10 nm nodes
+      atmosphere::Channels expected = atmosphere::referenceSingleScattering(
+          sky.atmosphere.parameters, lambdaNm, sky.atmosphere.originKm(), sun.z, zenith, azimuth);
+      for (int j = 0; j < 4; ++j) {
+        double got = grid.radianceAt(texel.direction, lambdaNm[static_cast<std::size_t>(j)]);
+        worst = std::max(worst, std::abs(got / expected[static_cast<std::size_t>(j)] - 1.0));
+      }
+    }
+  }
+  std::printf("tabulated sky against the atmosphere's double-precision single scattering: worst %.3g relative\n", worst);
+  EXPECT_LT(worst, 0.02);  // the tables' float integration (the atmosphere's own tests bound it at 2 %)
+}
+
+TEST(PrtSky, TheSunsDiscIsTheSolarSpectrumThroughTheAtmosphere) {
+  const PrtSky sky = skyAt(35.0f, 200.0f, false);
+  const SkyRadianceGrid grid = tabulateSky(sky, 8, 4);
+  const std::array<double, 4> lambdaNm{400.0, 500.0, 600.0, 700.0};
+  atmosphere::Channels depth = atmosphere::referenceOpticalDepth(sky.atmosphere.parameters, lambdaNm,
+                                                                 sky.atmosphere.originKm(), grid.sunDirection.z);
+  for (std::size_t j = 0; j < 4; ++j) {
+    double expected = atmosphere::solarIrradiance(lambdaNm[j]) * std::exp(-depth[j]);
+    EXPECT_NEAR(grid.sunIrradianceAt(lambdaNm[j]) / expected, 1.0, 2e-3) << lambdaNm[j] << " nm";
+  }
+  EXPECT_EQ(tabulateSky(skyAt(-5.0f, 200.0f, false), 8, 4).sunIrradianceAt(550.0), 0.0);  // below the horizon
+}
+
+glm::dvec2 chromaticity(const std::function<double(double lambdaNm)>& spectrum) {
+  const Eigen::MatrixXd cmf = observerOnGrid(cie1931Observer());
+  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
+  for (int i = 0; i < kGridWavelengths; ++i) xyz += cmf.row(i).transpose() * spectrum(gridWavelengthNm(i));
+  return {xyz.x() / xyz.sum(), xyz.y() / xyz.sum()};
+}
+
+TEST(PrtSky, TheSkyIsBlueAndTheSettingSunRed) {
+  // Rayleigh's λ⁻⁴ on the right wavelengths: the zenith sky is bluer than daylight's white
+  // (CIE D65, x = 0.3127), and the sun's disc reddens as it sets.
+  const SkyRadianceGrid high = tabulateSky(skyAt(60.0f, 0.0f), 8, 4);
+  const SkyRadianceGrid low = tabulateSky(skyAt(3.0f, 0.0f), 8, 4);
+  const glm::dvec2 zenith = chromaticity([&](double l) { return high.radianceAt({0.0, 0.0, 1.0}, l); });
+  const glm::dvec2 sunHigh = chromaticity([&](double l) { return high.sunIrradianceAt(l); });
+  const glm::dvec2 sunLow = chromaticity([&](double l) { return low.sunIrradianceAt(l); });
+  std::printf("chromaticity: zenith sky (%.4f, %.4f), sun at 60° (%.4f, %.4f), at 3° (%.4f, %.4f)\n", zenith.x,
+              zenith.y, sunHigh.x, sunHigh.y, sunLow.x, sunLow.y);
+  EXPECT_LT(zenith.x, 0.30);
+  EXPECT_LT(zenith.y, 0.31);
+  EXPECT_GT(sunLow.x, sunHigh.x + 0.05);
+}
+
+}  // namespace
+}  // namespace prism::prt

@@ -62,5 +62,43 @@ TEST_F(GpuTest, NebulaIntegralsMatchCpu) {
   moments.finish();
 }
 
+TEST_F(GpuTest, NebulaNegativePowersMatchCpu) {
+  testing::InputGenerator gen(0x0eb01a01u);
+  std::vector<vec4> a, b;
+  // Optical depth y = 10x ∈ [0, 10] µm (both of the integrals' forms), intervals of the visible
+  // band at least 25 nm wide (the CIE fits' pieces); a cubic's coefficients in [0, 1].
+  for (float x : {0.0f, 0.02f, 0.1f, 1.0f}) a.push_back(vec4(0.0f, x, 0.38f, 0.78f)), b.push_back(vec4(1.0f));
+  while (a.size() < 4096) {
+    float x = gen.unit() < 0.1f ? 0.0f : gen.unit();
+    float l0 = gen.uniform(0.38f, 0.755f), l1 = gen.uniform(l0 + 0.025f, 0.78f);
+    a.push_back(vec4(0.0f, x, l0, l1));
+    b.push_back(vec4(gen.unit(), gen.unit(), gen.unit(), gen.unit()));
+  }
+  Program kernel = testing::parityKernel("nebula_wien.comp");
+  std::vector<vec4> gpu = testing::runParityKernel<vec4>(kernel, std::span<const vec4>(a), std::span<const vec4>(b));
+  // GLSL's exp within 3 + 2·|y/λ| ≤ 56 ULP (y ≤ 10.3 µm, λ ≥ 0.38), amplified by the bounds'
+  // cancellation λ/(λ₁ − λ₀) ≤ 31 and the by-parts form's ≤ 4 steps: 2e-4 relative (float
+  // against quadrature: ≤ 1e-5, nebula_test).
+  ParityReport wien("nebulaWienPolyIntegral", {0.0, 2e-4, 0});
+  ParityReport wienStar("nebulaWienPolyIntegral, y + B", {0.0, 2e-4, 0});
+  ParityReport five("nebulaInversePowerExpIntegrals k=5", {0.0, 2e-4, 0});
+  ParityReport two("nebulaInversePowerExpIntegrals k=2", {0.0, 2e-4, 0});
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const vec4& v = a[i];
+    char input[160];
+    std::snprintf(input, sizeof input, "(y %.9g, [%.9g, %.9g])", 10.0f * v.y, v.z, v.w);
+    const float y = 10.0f * v.y;
+    const vec4 powers = shared::nebulaInversePowerExpIntegrals(y, v.z, v.w);
+    wien.compare(gpu[i].x, shared::nebulaWienPolyIntegral(b[i], y, v.z, v.w), input);
+    wienStar.compare(gpu[i].y, shared::nebulaWienPolyIntegral(b[i], y + 0.29f, v.z, v.w), input);
+    five.compare(gpu[i].z, powers.x, input);
+    two.compare(gpu[i].w, powers.w, input);
+  }
+  wien.finish();
+  wienStar.finish();
+  five.finish();
+  two.finish();
+}
+
 }  // namespace
 }  // namespace prism::gpu

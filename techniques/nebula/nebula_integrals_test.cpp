@@ -105,4 +105,43 @@ TEST(NebulaIntegrals, RecurrenceMatchesQuadrature) {
   EXPECT_LE(worstFloatModerate.error, 1e-4);
 }
 
+// ∫_λ₀^λ₁ λ^(−k) e^(−x/λ) dλ, k = 2…5 (a Wien star λ⁻⁵e^(−B/λ) times a passband piece up to a
+// cubic), over the visible band and sub-bands down to 10 nm, x from 0 (a star's B is ≥ 0.29 µm
+// up to 50 000 K) to 10 µm, across both evaluations (the series to x/λ₀ = 8, then by parts).
+TEST(NebulaIntegrals, NegativePowersMatchQuadrature) {
+  const double intervals[][2] = {{0.38, 0.78}, {0.38, 0.48}, {0.6, 0.7}, {0.5, 0.525}, {0.65, 0.66}};
+  const double xs[] = {0.0, 0.1, 0.3, 0.5, 1.0, 2.5, 3.2, 5.0, 10.0};
+  Worst worstDouble, worstFloat;
+  for (const auto& iv : intervals) {
+    for (double x : xs) {
+      const glm::dvec4 integrals = prism::shared::f64::nebulaInversePowerExpIntegrals(x, iv[0], iv[1]);
+      for (int j = 0; j < 4; ++j) {
+        const int k = 5 - j;
+        auto f = [k, x](LD l) { return std::pow(l, -k) * std::exp(-static_cast<LD>(x) / l); };
+        LD scale = std::pow(static_cast<LD>(iv[0]), -k) * std::exp(-x / iv[1]) * (iv[1] - iv[0]);
+        LD reference = integrate(f, iv[0], iv[1], scale * 1e-15L);
+        // c selects λ^(5−k) of Q, so that λ⁻⁵·Q = λ^(−k).
+        glm::dvec4 c(0.0);
+        c[5 - k] = 1.0;
+        glm::vec4 cf(0.0f);
+        cf[5 - k] = 1.0f;
+        worstDouble.update(relativeError(integrals[j], reference), k, x, iv[0], iv[1]);
+        EXPECT_NEAR(prism::shared::f64::nebulaWienPolyIntegral(c, x, iv[0], iv[1]), integrals[j],
+                    1e-12 * std::fabs(integrals[j]));
+        const double fe = relativeError(
+            prism::shared::nebulaWienPolyIntegral(cf, static_cast<float>(x), static_cast<float>(iv[0]), static_cast<float>(iv[1])),
+            reference);
+        worstFloat.update(fe, k, x, iv[0], iv[1]);
+      }
+    }
+  }
+  std::printf("negative powers max relative error: double %.3g (k=%d x=%g [%g,%g]), float %.3g (k=%d x=%g [%g,%g])\n",
+              worstDouble.error, worstDouble.n, worstDouble.x, worstDouble.l0, worstDouble.l1, worstFloat.error,
+              worstFloat.n, worstFloat.x, worstFloat.l0, worstFloat.l1);
+  EXPECT_LE(worstDouble.error, 1e-6);
+  // Float loses about λ/(λ₁ − λ₀) to the bounds' cancellation, and no more (the positive powers'
+  // float bound, here over every interval).
+  EXPECT_LE(worstFloat.error, 1e-4);
+}
+
 }  // namespace

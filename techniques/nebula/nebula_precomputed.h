@@ -76,7 +76,9 @@ struct NebulaPrecomputed {
   // Emission lines: each line's λ and its response per channel (P_S(λₗ)·weight).
   std::vector<double> lineLambdaUm;
   std::vector<glm::dvec3> lineResponse;
-  // Analytic: per star, per channel, the pieces of P_S × P_L as float coefficients.
+  // Analytic: per star, per channel, the pieces of P_S × P_L as float coefficients; for a Wien
+  // star the pieces of P_S × its normalisation (c₀…c₃ in lo), integrated against λ⁻⁵ with
+  // x = g + B, B its analyticWienExponentUm (0 for a Planck star).
   struct FloatPiece {
     float l0, l1;
     glm::vec4 lo, hi;
@@ -87,6 +89,7 @@ struct NebulaPrecomputed {
     glm::dvec4 lo, hi;
   };
   std::vector<std::array<std::vector<DoublePiece>, 3>> analyticPiecesF64;
+  std::vector<double> analyticWienExponentUm;
   // Projection: the 1D basis and its table of coefficients.
   ExpBasis basis;
   glm::vec4 basisLo{0.0f}, basisHi{0.0f};  // exponents a₀…a₇ (unused ones are never read)

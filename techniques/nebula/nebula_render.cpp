@@ -144,12 +144,22 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
     for (int c = 0; c < 3; ++c) r[c] = pre.filters.channels[static_cast<std::size_t>(c)].response.at(line.lambdaUm) * strength * line.ratio;
     pre.lineResponse.push_back(r);
   }
-  // Analytic: P_S × P_L per star and channel, in float for the shared integrals.
+  // Analytic: P_S × P_L per star and channel, in float for the shared integrals; a Wien star's
+  // λ⁻⁵e^(−B/λ) exactly (P_S × its normalisation against λ⁻⁵, B added to the optical depth).
   for (const auto& spectrum : pre.spectra) {
     std::array<std::vector<NebulaPrecomputed::FloatPiece>, 3> perChannel;
     std::array<std::vector<NebulaPrecomputed::DoublePiece>, 3> perChannelF64;
+    const bool wien = spectrum.model == StarModel::Wien;
+    pre.analyticWienExponentUm.push_back(wien ? wienExponentUm(spectrum.temperatureK) : 0.0);
     for (std::size_t c = 0; c < 3; ++c)
-      for (const auto& piece : multiply(pre.filters.channels[c].response, spectrum.fit).pieces) {
+      for (PolynomialPiece piece : wien ? pre.filters.channels[c].response.pieces
+                                        : multiply(pre.filters.channels[c].response, spectrum.fit).pieces) {
+        if (wien) {
+          for (std::size_t n = 0; n < piece.coeffs.size(); ++n) {
+            if (n > 3 && piece.coeffs[n] != 0.0) throw Error("nebula: a Wien star's passband pieces must be cubic at most");
+            piece.coeffs[n] *= spectrum.normalisation;
+          }
+        }
         NebulaPrecomputed::DoublePiece d{piece.lambda0Um, piece.lambda1Um, {}, {}};
         for (int n = 0; n < 4; ++n) {
           d.lo[n] = piece.coeffs[static_cast<std::size_t>(n)];
@@ -436,18 +446,22 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
                   colour[static_cast<int>(c)] += w * sum;
                 }
                 break;
-              case Method::Analytic:
+              case Method::Analytic: {
+                const double wienB = pre.analyticWienExponentUm[st];
                 for (std::size_t c = 0; c < 3; ++c) {
                   double sum = 0.0;
                   if (s.doublePrecision)
                     for (const auto& piece : pre.analyticPiecesF64[st][c])
-                      sum += shared::f64::nebulaPolyExpIntegral(piece.lo, piece.hi, x, piece.l0, piece.l1);
+                      sum += wienB > 0.0 ? shared::f64::nebulaWienPolyIntegral(piece.lo, x + wienB, piece.l0, piece.l1)
+                                         : shared::f64::nebulaPolyExpIntegral(piece.lo, piece.hi, x, piece.l0, piece.l1);
                   else
                     for (const auto& piece : pre.analyticPieces[st][c])
-                      sum += shared::nebulaPolyExpIntegral(piece.lo, piece.hi, static_cast<float>(x), piece.l0, piece.l1);
+                      sum += wienB > 0.0 ? shared::nebulaWienPolyIntegral(piece.lo, static_cast<float>(x + wienB), piece.l0, piece.l1)
+                                         : shared::nebulaPolyExpIntegral(piece.lo, piece.hi, static_cast<float>(x), piece.l0, piece.l1);
                   colour[static_cast<int>(c)] += w * sum;
                 }
                 break;
+              }
               case Method::Projection: {
                 const std::array<double, 8> cx = coefficientsAt(x);
                 for (int j = 0; j < card; ++j) moments[st * 8 + static_cast<std::size_t>(j)] += w * cx[static_cast<std::size_t>(j)];

@@ -172,8 +172,10 @@ double planck(double lambdaUm, double temperatureK) {
   return std::pow(lambdaUm, -5.0) / std::expm1(kHcOverKUmK / (lambdaUm * temperatureK));
 }
 
+double wienExponentUm(double temperatureK) { return kHcOverKUmK / temperatureK; }
+
 double wien(double lambdaUm, double temperatureK) {
-  return std::pow(lambdaUm, -5.0) * std::exp(-kHcOverKUmK / (lambdaUm * temperatureK));
+  return std::pow(lambdaUm, -5.0) * std::exp(-wienExponentUm(temperatureK) / lambdaUm);
 }
 
 double StarSpectrum::at(double lambdaUm) const {

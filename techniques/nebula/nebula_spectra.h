@@ -81,11 +81,15 @@ FilterSet filterSet(std::string_view name);
 double planck(double lambdaUm, double temperatureK);
 double wien(double lambdaUm, double temperatureK);
 
+// Wien's B = hc/kT (µm): its shape is λ⁻⁵·e^(−B/λ), whose exponential joins the attenuation's.
+double wienExponentUm(double temperatureK);
+
 enum class StarModel { Planck, Wien };
 
 // A star's spectrum over the band, normalised to ∫ S dλ = 1 over [kBandLoUm, kBandHiUm] (µm⁻¹),
 // and its fit P_L: two quintic pieces (a quadratic filter piece times one stays within the shared
-// integrals' degree 7), which the analytic method integrates.
+// integrals' degree 7), which the analytic method integrates for a Planck star (a Wien star it
+// integrates exactly, through negative powers of λ).
 struct StarSpectrum {
   double temperatureK = 5800.0;
   StarModel model = StarModel::Planck;

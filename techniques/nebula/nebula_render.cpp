@@ -129,7 +129,7 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
     if (progress) progress(++done, stages);
   };
   for (const auto& star : m.stars) {
-    pre.spectra.push_back(makeStarSpectrum(star.temperatureK, m.starModel));
+    pre.spectra.push_back(makeStarSpectrum(star.temperatureK, m.starModel, m.scatteringSpectrum));
     pre.starDepth.push_back(opticalDepthToStar(m.density, star, m.extinction, s.threads));
     tick();
   }
@@ -145,21 +145,20 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
     pre.lineResponse.push_back(r);
   }
   // Analytic: P_S × P_L per star and channel, in float for the shared integrals; a Wien star's
-  // λ⁻⁵e^(−B/λ) exactly (P_S × its normalisation against λ⁻⁵, B added to the optical depth).
+  // λ⁻⁵e^(−B/λ) exactly (P_S × P_σ × its normalisation against λ⁻⁵, B added to the optical
+  // depth) while that product stays cubic (the shared negative powers: λ⁻⁵…λ⁻²).
   for (const auto& spectrum : pre.spectra) {
     std::array<std::vector<NebulaPrecomputed::FloatPiece>, 3> perChannel;
     std::array<std::vector<NebulaPrecomputed::DoublePiece>, 3> perChannelF64;
-    const bool wien = spectrum.model == StarModel::Wien;
+    bool wien = spectrum.model == StarModel::Wien;
+    for (const auto& channel : pre.filters.channels)
+      for (const auto& piece : channel.response.pieces) wien = wien && degree(piece) + degree(spectrum.scattering) <= 3;
     pre.analyticWienExponentUm.push_back(wien ? wienExponentUm(spectrum.temperatureK) : 0.0);
+    PolynomialPiece wienFactor = spectrum.scattering;  // N·P_σ
+    for (double& c : wienFactor.coeffs) c *= spectrum.normalisation;
     for (std::size_t c = 0; c < 3; ++c)
-      for (PolynomialPiece piece : wien ? pre.filters.channels[c].response.pieces
-                                        : multiply(pre.filters.channels[c].response, spectrum.fit).pieces) {
-        if (wien) {
-          for (std::size_t n = 0; n < piece.coeffs.size(); ++n) {
-            if (n > 3 && piece.coeffs[n] != 0.0) throw Error("nebula: a Wien star's passband pieces must be cubic at most");
-            piece.coeffs[n] *= spectrum.normalisation;
-          }
-        }
+      for (PolynomialPiece piece : multiply(pre.filters.channels[c].response,
+                                            wien ? PiecewisePolynomial{{wienFactor}} : spectrum.fit).pieces) {
         NebulaPrecomputed::DoublePiece d{piece.lambda0Um, piece.lambda1Um, {}, {}};
         for (int n = 0; n < 4; ++n) {
           d.lo[n] = piece.coeffs[static_cast<std::size_t>(n)];
@@ -203,7 +202,8 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
   if (!m.stars.empty()) {
     double tMin = 1e30, tMax = 0.0;
     for (const auto& st : m.stars) tMin = std::min(tMin, st.temperatureK), tMax = std::max(tMax, st.temperatureK);
-    StarSpectrum s0 = makeStarSpectrum(tMin, m.starModel), s1 = makeStarSpectrum(tMax, m.starModel);
+    StarSpectrum s0 = makeStarSpectrum(tMin, m.starModel, m.scatteringSpectrum),
+                 s1 = makeStarSpectrum(tMax, m.starModel, m.scatteringSpectrum);
     std::vector<double> nodes, weights;
     gaussLegendre(kLightNodes, kBandLoUm, kBandHiUm, nodes, weights);
     const int aCount = 41, tCount = 5, gCount = 24, familyTemps = tMax > tMin ? 8 : 1;
@@ -213,7 +213,7 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
       double l = nodes[static_cast<std::size_t>(q)];
       for (int t = 0; t < familyTemps; ++t) {
         double temp = familyTemps == 1 ? tMin : tMin * std::pow(tMax / tMin, t / (familyTemps - 1.0));
-        StarSpectrum st = makeStarSpectrum(temp, m.starModel);
+        StarSpectrum st = makeStarSpectrum(temp, m.starModel, m.scatteringSpectrum);
         for (int g = 0; g < gCount; ++g) family(q, t * gCount + g) = st.at(l) * std::exp(-s.basisMaxDepthUm * g / (gCount - 1) / l);
       }
       for (int t = 0; t < tCount; ++t)

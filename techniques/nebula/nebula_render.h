@@ -12,8 +12,8 @@
 //   preIntegration the paper's rejected alternative: per star and channel, ∫ P_S S e^(−x/λ) dλ
 //                 tabulated over x once (Catmull–Rom lookups); a filter change rebuilds the tables
 // The model: density ρ on the unit cube; extinction τ = κ·∫ρ ds (τ(λ) = τ·C_T/λ, so the
-// transmittance is e^(−g/λ) with g = τ·C_T in µm); scattering σ₁ρ with an isotropic phase
-// function (P_σ = 1); stars as points of luminosity L and temperature T lighting each point
+// transmittance is e^(−g/λ) with g = τ·C_T in µm); scattering σ₁ρ·P_σ(λ) with an isotropic phase
+// function (P_σ a polynomial, folded into each star's spectrum: StarSpectrum); stars as points of luminosity L and temperature T lighting each point
 // through their own optical depth g_s (per voxel, precomputed); emission lines ε·ρ·Σ wₗ δ(λ−λₗ)
 // (exact in every method). A channel is ∫ P_S(λ)·L(λ) dλ through its fitted passband P_S.
 #pragma once
@@ -58,6 +58,7 @@ struct NebulaModel {
   DensityGrid density;
   double extinction = 4.0;   // κ: optical depth per unit length at ρ = 1
   double scattering = 1.0;   // σ₁: scattering per unit length at ρ = 1
+  PolynomialPiece scatteringSpectrum = greyScattering();  // P_σ(λ), degree ≤ 3, ≥ 0 on the band
   double emission = 0.0;     // ε: emission per unit length at ρ = 1, times each group's strength
   std::vector<LineGroupStrength> lineGroups;
   std::vector<NebulaStar> stars;

@@ -6,6 +6,8 @@
 #include <iterator>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "core/error.h"
 #include "core/json_schema.h"
 
@@ -16,6 +18,30 @@ namespace {
 glm::dvec3 dvec3(const schema::Node& n, const schema::Range& range = schema::Range::any()) {
   auto v = n.numbers(3, range);
   return {v[0], v[1], v[2]};
+}
+
+// P_σ: "grey", "ccm", or the coefficients c₀ … c₃ of c₀ + c₁λ + … (λ in µm), ≥ 0 on the band.
+PolynomialPiece readScatteringSpectrum(const schema::Node& n) {
+  if (n.json().is_string()) {
+    const std::string name = n.string();
+    if (name == "grey") return greyScattering();
+    if (name == "ccm") return ccmScattering();
+    n.fail("must be 'grey', 'ccm' or 1 to 4 polynomial coefficients, not '" + excerpt(name) + "'");
+  }
+  const std::size_t count = n.arraySize();
+  if (count < 1 || count > 4) n.fail(fmt::format("expected 1 to 4 polynomial coefficients (up to a cubic), got {}", count));
+  PolynomialPiece p = greyScattering();
+  for (std::size_t i = 0; i < count; ++i) p.coeffs[i] = n.element(i).number(schema::Range::any());
+  double lowest = 0.0, lowestAt = 0.0;  // the most negative value over the band, if any
+  for (int i = 0; i <= 400; ++i) {
+    const double lambdaUm = kBandLoUm + (kBandHiUm - kBandLoUm) * i / 400.0;
+    const double v = p.at(lambdaUm);
+    if (!(v >= lowest)) lowest = v, lowestAt = lambdaUm;
+  }
+  if (!(lowest >= 0.0))
+    n.fail(fmt::format("the scattering spectrum is {:.3g} at {:.0f} nm: it must be ≥ 0 over {:.0f}–{:.0f} nm", lowest,
+                       lowestAt * 1000.0, kBandLoUm * 1000.0, kBandHiUm * 1000.0));
+  return p;
 }
 
 }  // namespace
@@ -29,8 +55,8 @@ NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads)
   schema::Node root(json, "", doc);
   root.expectObject({"nebula"});
   schema::Node n = root.child("nebula");
-  n.expectObject({"density", "extinction", "scattering", "emission", "lines", "stars", "star_model", "filters",
-                  "camera", "steps"});
+  n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "stars",
+                  "star_model", "filters", "camera", "steps"});
   NebulaScene scene;
   NebulaModel& m = scene.model;
 
@@ -61,6 +87,7 @@ NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads)
   }
   m.extinction = n.number("extinction", m.extinction, schema::Range::atLeast(0.0));
   m.scattering = n.number("scattering", m.scattering, schema::Range::atLeast(0.0));
+  if (auto spectrum = n.optionalChild("scattering_spectrum")) m.scatteringSpectrum = readScatteringSpectrum(*spectrum);
   m.emission = n.number("emission", m.emission, schema::Range::atLeast(0.0));
   if (auto lines = n.optionalChild("lines")) {
     static const char* const kGroups[] = {"H I Balmer (case B)", "He I (case B)", "[O III] doublet", "[N II] doublet",

@@ -35,8 +35,24 @@ TEST(NebulaScene, BadValuesNameTheirPlace) {
   check("n3.json", R"({"nebula": {"density": {}, "stars": []}})",
         "/nebula/density: give exactly one of 'noise' and 'file'");
   check("n4.json", R"({"nebula": {)" + noise + R"(, "stars": [], "colour": 1}})",
-        "/nebula/colour: unknown key (allowed: density, extinction, scattering, emission, lines, stars, "
-        "star_model, filters, camera, steps)");
+        "/nebula/colour: unknown key (allowed: density, extinction, scattering, scattering_spectrum, emission, "
+        "lines, stars, star_model, filters, camera, steps)");
+  check("n5.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": [1, -2]}})",
+        "/nebula/scattering_spectrum: the scattering spectrum is -0.56 at 780 nm: it must be ≥ 0 over 380–780 nm");
+  check("n6.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": [1, 0, 0, 0, 1]}})",
+        "/nebula/scattering_spectrum: expected 1 to 4 polynomial coefficients (up to a cubic), got 5");
+  check("n7.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": "blue"}})",
+        "/nebula/scattering_spectrum: must be 'grey', 'ccm' or 1 to 4 polynomial coefficients, not 'blue'");
+}
+
+TEST(NebulaScene, TheScatteringSpectrum) {
+  const std::string noise = R"({"nebula": {"density": {"noise": {"resolution": 4}}, "stars": [])";
+  NebulaModel linear = loadNebulaScene(writeTempFile("s1.json", noise + R"(, "scattering_spectrum": [2, -1.5]}})")).model;
+  EXPECT_DOUBLE_EQ(linear.scatteringSpectrum.at(0.5), 1.25);
+  EXPECT_EQ(degree(linear.scatteringSpectrum), 1);
+  NebulaModel ccm = loadNebulaScene(writeTempFile("s2.json", noise + R"(, "scattering_spectrum": "ccm"}})")).model;
+  EXPECT_DOUBLE_EQ(ccm.scatteringSpectrum.at(0.55), ccmScattering().at(0.55));
+  EXPECT_EQ(loadNebulaScene(writeTempFile("s3.json", noise + "}}")).model.scatteringSpectrum.at(0.7), 1.0);
 }
 
 TEST(NebulaScene, ADensityFileBesideTheScene) {

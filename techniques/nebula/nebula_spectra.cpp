@@ -178,11 +178,33 @@ double wien(double lambdaUm, double temperatureK) {
   return std::pow(lambdaUm, -5.0) * std::exp(-wienExponentUm(temperatureK) / lambdaUm);
 }
 
-double StarSpectrum::at(double lambdaUm) const {
-  return normalisation * (model == StarModel::Planck ? planck(lambdaUm, temperatureK) : wien(lambdaUm, temperatureK));
+PolynomialPiece greyScattering() {
+  PolynomialPiece p{kBandLoUm, kBandHiUm, {}};
+  p.coeffs[0] = 1.0;
+  return p;
 }
 
-StarSpectrum makeStarSpectrum(double temperatureK, StarModel model) {
+PolynomialPiece ccmScattering() {
+  std::vector<double> lambdaUm, values;
+  for (int i = 0; i <= 400; ++i) {
+    lambdaUm.push_back(kBandLoUm + (kBandHiUm - kBandLoUm) * i / 400.0);
+    values.push_back(ccmExtinction(lambdaUm.back()));
+  }
+  return fitPiecewisePolynomial(lambdaUm, values, kBandLoUm, kBandHiUm, 1, 3).pieces.front();
+}
+
+int degree(const PolynomialPiece& p) {
+  for (int n = kMaxDegree; n > 0; --n)
+    if (p.coeffs[static_cast<std::size_t>(n)] != 0.0) return n;
+  return 0;
+}
+
+double StarSpectrum::at(double lambdaUm) const {
+  return normalisation * scattering.at(lambdaUm) *
+         (model == StarModel::Planck ? planck(lambdaUm, temperatureK) : wien(lambdaUm, temperatureK));
+}
+
+StarSpectrum makeStarSpectrum(double temperatureK, StarModel model, const PolynomialPiece& scattering) {
   StarSpectrum s;
   s.temperatureK = temperatureK;
   s.model = model;
@@ -191,6 +213,7 @@ StarSpectrum makeStarSpectrum(double temperatureK, StarModel model) {
   double integral = 0.0;
   for (std::size_t i = 0; i < nodes.size(); ++i) integral += weights[i] * s.at(nodes[i]);
   s.normalisation = 1.0 / integral;
+  s.scattering = scattering;
   std::vector<double> lambdaUm, values;
   for (int i = 0; i <= 400; ++i) {
     lambdaUm.push_back(kBandLoUm + (kBandHiUm - kBandLoUm) * i / 400.0);

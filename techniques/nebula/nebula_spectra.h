@@ -86,19 +86,30 @@ double wienExponentUm(double temperatureK);
 
 enum class StarModel { Planck, Wien };
 
+// The dust's scattering over wavelength, σ(t, λ) = σ₁(t)·P_σ(λ) (Barrès 2023, §3): a polynomial
+// of degree ≤ 3 on the band, ≥ 0 there. 1: grey dust.
+PolynomialPiece greyScattering();
+// Scattering in proportion to the measured extinction (dust of constant albedo): CCM's A(λ)/A(V),
+// R_V = 3.1, fitted by a cubic over the band (within 2.0 % of it; nebula_test).
+PolynomialPiece ccmScattering();
+// The polynomial's degree (the highest non-zero coefficient's power).
+int degree(const PolynomialPiece& p);
+
 // A star's spectrum over the band, normalised to ∫ S dλ = 1 over [kBandLoUm, kBandHiUm] (µm⁻¹),
-// and its fit P_L: two quintic pieces (a quadratic filter piece times one stays within the shared
+// times the dust's P_σ (what a star's scattered light carries: `at`), and the fit P_L of that
+// product: two quintic pieces (a quadratic filter piece times one stays within the shared
 // integrals' degree 7), which the analytic method integrates for a Planck star (a Wien star it
-// integrates exactly, through negative powers of λ).
+// integrates exactly, through negative powers of λ, while P_S·P_σ stays cubic).
 struct StarSpectrum {
   double temperatureK = 5800.0;
   StarModel model = StarModel::Planck;
-  double normalisation = 1.0;  // 1 / ∫ shape dλ
+  double normalisation = 1.0;  // 1 / ∫ shape dλ (P_σ left out: it is the dust's, not the star's)
+  PolynomialPiece scattering = greyScattering();  // P_σ
   PiecewisePolynomial fit;
   double fitMaxRelativeError = 0.0;
   double at(double lambdaUm) const;
 };
-StarSpectrum makeStarSpectrum(double temperatureK, StarModel model);
+StarSpectrum makeStarSpectrum(double temperatureK, StarModel model, const PolynomialPiece& scattering = greyScattering());
 
 // An emission line of ionised gas: a Dirac at λ (vacuum, µm) with a weight.
 struct EmissionLine {

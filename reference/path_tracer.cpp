@@ -170,8 +170,7 @@ class PathTracer {
         mBackground(backgroundRadiance(scene, colourSpace(scene.colourSpace), table)),
         mCamera(cameraTransform(scene.camera, settings.width, settings.height)),
         mMedium(effectiveMedium(scene)),
-        mEnvironment(techniqueEnvironment(scene, table)),
-        mSunDirection(mEnvironment ? mEnvironment->sunDirection() : std::nullopt) {
+        mEnvironment(techniqueEnvironment(scene, table)) {
     for (const Light& light : scene.lights) {
       int type = light.type == LightType::Directional ? shared::kLightDirectional
                  : light.type == LightType::Point     ? shared::kLightPoint
@@ -252,20 +251,6 @@ class PathTracer {
     const vec3 origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
     if (mRays.occluded(origin, l, 0.0f, kInfinity)) return vec4(0.0f);
     return weight * escapedAt(1, l, lambdaNm) * transmittance(origin, l, kInfinity, medium);
-  }
-
-  // The environment's sun at a surface point, where nothing is in the way: a delta direction, so
-  // next-event estimation is exact (the environment's radiance leaves the disc out).
-  vec4 surfaceEnvironmentSun(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm, const vec4& albedoOrN,
-                             const vec4& k, const MediumAt& medium) const {
-    if (!mSunDirection) return vec4(0.0f);
-    const vec3& l = *mSunDirection;
-    if (glm::dot(l, hit.geometricNormalW) <= 0.0f || glm::dot(l, hit.normalW) <= 0.0f) return vec4(0.0f);
-    const vec3 origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
-    if (mRays.occluded(origin, l, 0.0f, kInfinity)) return vec4(0.0f);
-    vec4 irradiance;
-    for (int j = 0; j < 4; ++j) irradiance[j] = static_cast<float>(mEnvironment->sunIrradiance(lambdaNm[j]));
-    return reflection(hit, v, l, albedoOrN, k) * irradiance * transmittance(origin, l, kInfinity, medium);
   }
 
   // The spectra of a surface at the path's wavelengths: albedo (or n) and conductor k.
@@ -476,7 +461,6 @@ class PathTracer {
         surfaceSpectra(hit, lambdaNm, albedoOrN, k);
         radiance += throughput * surfaceDirectLight(hit, v, lambdaNm, albedoOrN, k, medium);
         if (!global && mEnvironment) radiance += throughput * surfaceEnvironmentLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
-        radiance += throughput * surfaceEnvironmentSun(hit, v, lambdaNm, albedoOrN, k, medium);
         if (!global || depth + 1 >= mSettings.maxDepth) break;
         vec3 l;
         if (!sampleBrdf(hit, v, albedoOrN, k, random, l, throughput)) break;
@@ -509,7 +493,6 @@ class PathTracer {
   std::vector<MaterialInput> mMaterials;
   std::optional<HomogeneousMedium> mMedium;
   std::shared_ptr<const TechniqueEnvironment> mEnvironment;
-  std::optional<vec3> mSunDirection;  // the environment's sun, if it has one
 };
 
 }  // namespace

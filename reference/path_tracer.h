@@ -27,9 +27,8 @@
 // - A technique's environment (TechniqueSection::environment: PRT's) replaces the background as
 //   the light of rays that escape after a bounce (camera rays still see the background); with
 //   direct transport each first hit also samples it once through the BRDF, with a shadow ray.
-//   Objects a technique shades itself are Lambertian (SurfaceHit::lambertian). Its sun, if it has
-//   one (PRT's spectral sky), is a delta direction sampled at every surface hit in both
-//   transports, like a directional light.
+//   Objects a technique shades itself are Lambertian (SurfaceHit::lambertian), lit by the
+//   scene's lights too (a technique's sun is one), as the rasteriser's lighting pass lights them.
 // - Media (Scene::water below its surface, isotropic as the analytic model assumes; else
 //   Scene::medium, homogeneous, in a box or everywhere): free flights drawn against
 //   scattering with spectral MIS over the four wavelengths, absorption as Beer–Lambert weight,

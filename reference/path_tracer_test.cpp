@@ -216,59 +216,6 @@ TEST(PathTracer, ATechniquesEnvironmentLightsItsObjectsAsLambertian) {
   }
 }
 
-// A technique's environment that is only a sun: D65 of illuminance `lux` on a surface facing it,
-// from `towardsSun`; no radiance from any direction a path can sample.
-class SunOnly final : public TechniqueSection {
- public:
-  SunOnly(double lux, glm::vec3 towardsSun) : mLux(lux), mTowardsSun(glm::normalize(towardsSun)) {}
-  std::string_view key() const override { return "sun_only"; }
-  std::string_view shaderDefine() const override { return "PRISM_TECHNIQUE_SUN_ONLY"; }
-  std::unique_ptr<TechniqueSection> clone() const override { return std::make_unique<SunOnly>(*this); }
-  TechniqueBlock pack(const FramePackInput&) const override { return {}; }
-  bool shadesObjects() const override { return true; }
-  std::shared_ptr<const TechniqueEnvironment> environment(const RgbToSpectrumTable&) const override {
-    struct Sun final : TechniqueEnvironment {
-      Spectrum spd;
-      glm::vec3 towards;
-      double radiance(const glm::vec3&, double) const override { return 0.0; }
-      std::optional<glm::vec3> sunDirection() const override { return towards; }
-      double sunIrradiance(double lambdaNm) const override { return spd.at(lambdaNm); }
-    };
-    auto e = std::make_shared<Sun>();
-    e->spd = illuminant("D65");
-    e->spd *= mLux / luminousIntegral(e->spd);
-    e->towards = mTowardsSun;
-    return e;
-  }
-
- private:
-  double mLux;
-  glm::vec3 mTowardsSun;
-};
-
-TEST(PathTracer, AnEnvironmentsSunLightsEverySurfacePointItSees) {
-  // The plane facing up under a sun 60° from its normal: Y = ρ/π·E·cos 60°, in both transports
-  // (a delta direction: every path samples it, no noise but the wavelengths'). A sun below the
-  // plane lights nothing.
-  Scene scene = litPlane(0.5, 1000.0f);
-  scene.lights.clear();
-  scene.meshes[0].technique = "sun_only";
-  const float sin60 = std::sqrt(3.0f) / 2.0f;
-  scene.techniques.add(std::make_unique<SunOnly>(2000.0, glm::vec3(sin60, 0.5f, 0.0f)));
-  const Eigen::Vector3d expected = perLuminance() * (0.5 / kPi * 2000.0 * 0.5);
-  for (LightTransport transport : {LightTransport::Direct, LightTransport::Global}) {
-    ReferenceSettings settings = small(16);
-    settings.transport = transport;
-    PlaneCheck check = checkPlane(renderReference(scene, srgbTable(), settings), expected);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(check.mean[c] / expected[c], 1.0, 2e-3) << "channel " << c;
-  }
-  Scene below = scene;
-  below.techniques = TechniqueSections();
-  below.techniques.add(std::make_unique<SunOnly>(2000.0, glm::vec3(sin60, -0.5f, 0.0f)));
-  PlaneCheck dark = checkPlane(renderReference(below, srgbTable(), small(4)), expected);
-  EXPECT_EQ(dark.mean.norm(), 0.0);
-}
-
 TEST(PathTracer, WhiteFurnaceReturnsTheSurroundingRadianceEverywhere) {
   Scene scene;
   scene.camera.position = {0.0f, 0.0f, 3.0f};

@@ -62,14 +62,14 @@ class CpuShadingCore {
       return shadeBackground(mIn.frame.constants, worldFromDepth(camera.inverseViewProjection, uv, 1.0f), \
                              camera.position);                                                     \
     }                                                                                              \
-    if (texel.materialId == kTechniqueShadedMaterialId) return vec3(0.0f);                         \
     SurfaceSample s;                                                                               \
     s.position = worldFromDepth(camera.inverseViewProjection, uv, texel.depth);                    \
     s.normal = normalize(vec3(texel.normalRoughness));                                             \
     s.albedo = vec3(texel.albedoMetallic);                                                         \
     s.metallic = texel.albedoMetallic.w;                                                           \
     s.roughness = texel.normalRoughness.w;                                                         \
-    s.material = static_cast<int>(texel.materialId) - 1;                                           \
+    s.material = static_cast<int>(texel.materialId & ~kTechniqueShadedBit) - 1;                    \
+    s.techniqueShaded = (texel.materialId & kTechniqueShadedBit) != 0u;                            \
     mTexelCoefficients = texel.coefficients;                                                       \
     return shadeSurface(mIn.frame.constants, s, camera.position, uv);                              \
   }
@@ -89,7 +89,12 @@ CpuShading::CpuShading(const FrameData& frame, const RgbToSpectrumTable& table,
   std::size_t mask = 0;
   for (const TechniqueBlock& block : frame.techniques) {
     const auto* twin = std::find(std::begin(shared::kCpuTwinKeys), std::end(shared::kCpuTwinKeys), block.key);
-    PRISM_CHECK(twin != std::end(shared::kCpuTwinKeys));  // every technique of the lighting pass has a twin
+    if (twin == std::end(shared::kCpuTwinKeys)) {
+      // A technique without lighting-pass hooks (PRT's) packs nothing the lighting pass reads;
+      // every technique that does has a twin.
+      PRISM_CHECK(block.constantsBinding < 0 && block.dataBinding < 0);
+      continue;
+    }
     mask |= std::size_t{1} << (twin - std::begin(shared::kCpuTwinKeys));
   }
   mKernel->variant = shared::kCpuShadingVariants[mask]({frame, table, std::move(shadowLayers), std::move(texels)});

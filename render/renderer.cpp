@@ -348,9 +348,10 @@ void Renderer::gbufferPass() {
     program.setUniform("uBaseColour", m.baseColour);
     program.setUniform("uMetallic", m.metallic);
     program.setUniform("uRoughness", m.roughness);
-    // A technique's object keeps only its depth here; its technique shades it (forwardTechniques).
-    program.setUniform("uMaterialId", mScene.meshes[i].technique.empty() ? static_cast<GLuint>(mesh.material + 1)
-                                                                          : shared::kTechniqueShadedMaterialId);
+    // A technique's object is marked: the lighting pass lights it by the scene's lights alone, its
+    // technique adds the rest (forwardTechniques).
+    program.setUniform("uMaterialId", static_cast<GLuint>(mesh.material + 1) |
+                                          (mScene.meshes[i].technique.empty() ? 0u : shared::kTechniqueShadedBit));
     program.setUniform("uTextures", textures);
     mesh.vertexArray.draw();
   }

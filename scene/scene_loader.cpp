@@ -434,7 +434,7 @@ void addTechniqueLights(Scene& scene) {
     if (!added) continue;
     Light light;
     light.type = LightType::Directional;
-    light.intensity = static_cast<float>(luminousIntegral(added->spd));
+    light.intensity = static_cast<float>(added->illuminanceLux >= 0.0 ? added->illuminanceLux : luminousIntegral(added->spd));
     light.spd = normalisedLightSpectrum(added->spd);
     light.spdLabel = added->spdLabel;
     light.castsShadows = added->castsShadows;
@@ -449,7 +449,14 @@ void applyTechniqueLights(Scene& scene) {
     if (light.technique.empty()) continue;
     const TechniqueSection* section = scene.techniques.find(light.technique);
     if (!section) continue;
-    if (std::optional<TechniqueLight> l = section->light()) light.direction = l->direction;
+    std::optional<TechniqueLight> l = section->light();
+    if (!l) continue;
+    light.direction = l->direction;
+    if (l->followsSection) {
+      light.intensity = static_cast<float>(l->illuminanceLux >= 0.0 ? l->illuminanceLux : luminousIntegral(l->spd));
+      light.spd = normalisedLightSpectrum(l->spd);
+      light.spdLabel = l->spdLabel;
+    }
   }
 }
 

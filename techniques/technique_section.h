@@ -38,6 +38,13 @@ struct TechniqueLight {
   Spectrum spd;
   std::string spdLabel;
   bool castsShadows = true;
+  // On a surface facing it, lux; < 0: the spd's own (683 lm/W · ∫ spd ȳ dλ). 0 with a non-zero
+  // spd: a light that is out (a sun below the horizon).
+  double illuminanceLux = -1.0;
+  // Whether its spectrum and illuminance follow the section on every edit (applyTechniqueLights),
+  // not only its direction: a sun whose colour the section computes (PRT's spectral sky), rather
+  // than one the user may edit as a light (the atmosphere's).
+  bool followsSection = false;
 };
 
 // A homogeneous medium a technique fills part of the scene with, as the reference path tracer
@@ -56,18 +63,14 @@ struct TechniqueMedium {
 // scene's lights are (683 lm/W · ∫ L ȳ dλ is its luminance in cd/m²), everywhere beyond the scene. The path
 // tracer lights the scene with it where the rasteriser's technique does: paths that leave the
 // scene after a bounce gather it (camera rays still see the scene's background, as the
-// rasteriser draws it), and with direct transport each surface point samples it once. A sun in
-// it (PRT's spectral sky) is a delta direction no sampled path finds: the path tracer samples it
-// at every surface point it lights, as it does the scene's directional lights.
+// rasteriser draws it), and with direct transport each surface point samples it once. A sun is
+// not part of it: a technique adds that as a light (TechniqueSection::light), which every
+// renderer samples directly.
 class TechniqueEnvironment {
  public:
   virtual ~TechniqueEnvironment() = default;
   // `directionW`: unit, world space, towards where the light comes from.
   virtual double radiance(const glm::vec3& directionW, double lambdaNm) const = 0;
-  // The sun's direction (unit, world, towards it), if the environment holds one.
-  virtual std::optional<glm::vec3> sunDirection() const { return std::nullopt; }
-  // Its irradiance on a surface facing it, W·m⁻²·nm⁻¹.
-  virtual double sunIrradiance(double /*lambdaNm*/) const { return 0.0; }
 };
 
 // What a technique's block is packed from: the frame's wavelength batches (in RGB mode one batch

@@ -25,7 +25,7 @@ layout(binding = 2) uniform sampler2D uNormalTexture;
 uniform vec3 uBaseColour;
 uniform float uMetallic;
 uniform float uRoughness;
-uniform uint uMaterialId;  // material index + 1
+uniform uint uMaterialId;  // material index + 1, with kTechniqueShadedBit for a technique's object
 uniform int uTextures;     // kTexture* bits
 
 layout(location = 0) out vec4 gAlbedoMetallic;

@@ -68,11 +68,6 @@ void main() {
     oTristimulus = vec4(shadeBackground(frame, farPoint, frame.cameraPositionW), 1.0);
     return;
   }
-  if (id == kTechniqueShadedMaterialId) {
-    // A technique's object: its forward pass adds its colour (frame_layout.glsl).
-    oTristimulus = vec4(0.0, 0.0, 0.0, 1.0);
-    return;
-  }
   vec4 am = texelFetch(gAlbedoMetallic, p, 0);
   vec4 nr = texelFetch(gNormalRoughness, p, 0);
   SurfaceSample s;
@@ -82,6 +77,7 @@ void main() {
   s.albedo = am.rgb;
   s.metallic = am.a;
   s.roughness = nr.a;
-  s.material = int(id) - 1;
+  s.material = int(id & ~kTechniqueShadedBit) - 1;
+  s.techniqueShaded = (id & kTechniqueShadedBit) != 0u;
   oTristimulus = vec4(shadeSurface(frame, s, frame.cameraPositionW, (vec2(p) + 0.5) / frame.viewportSize), 1.0);
 }

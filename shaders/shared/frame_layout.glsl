@@ -28,11 +28,12 @@ const int kMaterialConductor = 2;   // n, k per wavelength (in RGB mode: Schlick
 
 const int kMaxLights = 16;
 
-// The G-buffer's material id where the object is one a technique shades itself, in its forward
-// pass after the lighting pass (techniques/technique_pass.h, drawForward: PRT objects): the
-// lighting pass adds nothing there but its frame count. Elsewhere the id is the material's index
-// + 1, and 0 where no geometry is.
-const uint kTechniqueShadedMaterialId = 0xFFFFFFFFu;
+// The G-buffer's material id: the material's index + 1, 0 where no geometry is, and with this bit
+// set where the object is one a technique shades itself in its forward pass after the lighting
+// pass (techniques/technique_pass.h, drawForward: PRT objects). The lighting pass lights those by
+// the scene's lights alone, as Lambertian surfaces (SurfaceSample::techniqueShaded); the
+// technique adds its own light (PRT's environment) on top.
+const uint kTechniqueShadedBit = 0x80000000u;
 
 struct GpuBatch {
   vec4 lambdaNm;
@@ -98,4 +99,5 @@ struct SurfaceSample {
   float metallic;
   float roughness;
   int material;    // index into the material table
+  bool techniqueShaded;  // a technique's object: Lambertian, lit by the scene's lights only
 };

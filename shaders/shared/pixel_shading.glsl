@@ -155,7 +155,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
   GpuMaterial material = frameMaterial(s.material);
   int kind = material.kind;
   int spectra = material.spectra;
-  bool lambertian = material.lambertian != 0;
+  bool lambertian = material.lambertian != 0 || s.techniqueShaded;
 
   MicrofacetTerms terms[kMaxLights];
   float irradiance[kMaxLights];
@@ -231,7 +231,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     radiance = throughWater(fc, b, radiance, fromCamera / distanceM, distanceM);
 #endif
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
-    if (kind != kMaterialConductor) {
+    if (kind != kMaterialConductor && !s.techniqueShaded) {  // a technique brings its own sky
       radiance += albedo * (1.0f - metallic) * skyIrradiance(b, s.normal) * (1.0f / kPi);
     }
     AerialPerspective ap = aerialPerspectiveAt(b, uv, distanceKm);

@@ -10,7 +10,7 @@
 
 namespace prism::atmosphere {
 
-glm::vec3 AtmosphereSection::sunDirection() const {
+glm::vec3 AtmosphereSky::sunDirection() const {
   float e = glm::radians(sunElevationDeg), a = glm::radians(sunAzimuthDeg);
   return glm::vec3(std::cos(e) * std::sin(a), std::sin(e), -std::cos(e) * std::cos(a));
 }
@@ -49,7 +49,7 @@ TechniqueBlock AtmosphereSection::pack(const FramePackInput& input) const {
   return block;
 }
 
-void readAtmosphereKeys(const schema::Node& n, AtmosphereSection& a, std::vector<std::string_view> extraKeys) {
+void readAtmosphereKeys(const schema::Node& n, AtmosphereSky& a, std::vector<std::string_view> extraKeys) {
   using schema::Range;
   std::vector<std::string_view> keys{"sun", "ground_altitude", "planet_radius", "atmosphere_height",
                                      "rayleigh_scale_height", "aerosols", "turbidity", "angstrom_alpha",

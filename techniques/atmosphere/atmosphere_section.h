@@ -14,9 +14,8 @@
 
 namespace prism::atmosphere {
 
-struct AtmosphereSection final : TechniqueSection {
-  static constexpr std::string_view kKey = "atmosphere";
-
+// What the section describes, as plain data (another technique's sky holds one too: PRT's).
+struct AtmosphereSky {
   AtmosphereParameters parameters;
   float sunElevationDeg = 20.0f;  // above the horizon
   float sunAzimuthDeg = 180.0f;   // 0: towards −z, 90: towards +x
@@ -26,6 +25,10 @@ struct AtmosphereSection final : TechniqueSection {
   glm::vec3 sunDirection() const;
   // Distance of the world's origin from the planet's centre.
   double originKm() const { return parameters.bottomRadiusKm + groundAltitudeM * 1e-3; }
+};
+
+struct AtmosphereSection final : TechniqueSection, AtmosphereSky {
+  static constexpr std::string_view kKey = "atmosphere";
 
   std::string_view key() const override { return kKey; }
   std::string_view shaderDefine() const override { return "PRISM_TECHNIQUE_ATMOSPHERE"; }
@@ -56,6 +59,6 @@ struct AtmosphereSection final : TechniqueSection {
 // Reads the section's keys (docs/scene-format.md, "atmosphere") into `a`, which holds the
 // defaults; `extraKeys` are allowed beside them (PRT's sky environment adds its own). Errors
 // name the key's JSON pointer.
-void readAtmosphereKeys(const schema::Node& n, AtmosphereSection& a, std::vector<std::string_view> extraKeys = {});
+void readAtmosphereKeys(const schema::Node& n, AtmosphereSky& a, std::vector<std::string_view> extraKeys = {});
 
 }  // namespace prism::atmosphere

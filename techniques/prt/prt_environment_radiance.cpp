@@ -25,9 +25,7 @@ class SectionEnvironment final : public TechniqueEnvironment {
                                           glm::dvec3(0.0, 0.0, 1.0)));
     mToEnvironment = glm::transpose(rotation) * zUp;
     if (section.sky) {
-      mSky = sectionSky(*section.sky);  // radiance in W·m⁻²·sr⁻¹·nm⁻¹ already
-      if (section.sky->sunDisc && mSky->sunDirection.z > 0.0)
-        mSunDirectionW = glm::vec3(glm::normalize(glm::inverse(mToEnvironment) * mSky->sunDirection));
+      mSky = sectionSky(*section.sky);  // radiance in W·m⁻²·sr⁻¹·nm⁻¹ already; its sun is a light
     } else if (mMap) {
       mTexels.reserve(mMap->linearRgb.size() / 3);
       for (std::size_t i = 0; i < mMap->linearRgb.size(); i += 3)
@@ -57,13 +55,9 @@ class SectionEnvironment final : public TechniqueEnvironment {
                         .at(static_cast<float>(lambdaNm));
   }
 
-  std::optional<glm::vec3> sunDirection() const override { return mSunDirectionW; }
-  double sunIrradiance(double lambdaNm) const override { return mSky ? mSky->sunIrradianceAt(lambdaNm) : 0.0; }
-
  private:
   std::shared_ptr<const PrtMap> mMap;
   std::shared_ptr<const SkyRadianceGrid> mSky;
-  std::optional<glm::vec3> mSunDirectionW;
   glm::dmat3 mToEnvironment{1.0};
   Spectrum mSpd;
   bool mUniform = false;

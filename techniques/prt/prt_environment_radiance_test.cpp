@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "shared_cpp.h"
 #include "spectral/table_test_support.h"
@@ -30,14 +31,8 @@ double projectionDifference(const PrtSection& section, double lambdaNm, const Pr
   const ShVector projected = projectOnSh(
       [&](const glm::dvec3& d) { return environment->radiance(glm::vec3(d.x, d.z, -d.y), lambdaNm); }, 512, 1024) *
       double(shared::kLumensPerWatt);  // the path tracer's radiance carries 683 lm/W in its luminance; PRT's does not
-  // A sun is a delta of irradiance E at its direction: E·Y_k there.
-  ShVector sun = ShVector::Zero();
-  if (std::optional<glm::vec3> s = environment->sunDirection())
-    sun = environment->sunIrradiance(lambdaNm) * double(shared::kLumensPerWatt) *
-          evaluateSh(glm::normalize(glm::dvec3(s->x, -s->z, s->y)));
-  const ShVector total = projected + sun;
   double worst = 0.0;
-  for (int k = 0; k < 25; ++k) worst = std::max(worst, std::abs(total[k] - expected[k]) / std::abs(expected[0]));
+  for (int k = 0; k < 25; ++k) worst = std::max(worst, std::abs(projected[k] - expected[k]) / std::abs(expected[0]));
   return worst;
 }
 
@@ -77,9 +72,8 @@ TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironment) {
 }
 
 TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironmentUnderTheSpectralSky) {
-  // Prism's spectral sky with its sun, turned 40° about the zenith: the traced radiance (the
-  // grid's nearest texel) and the traced sun (a direction for next-event estimation) are what PRT
-  // projects; the sun is most of the light, so its direction is pinned too.
+  // Prism's spectral sky (its sun is the scene's light, not part of it), turned 40° about the
+  // zenith: the traced radiance (the grid's nearest texel) is what PRT projects.
   PrtSection section;
   PrtSky sky;
   sky.atmosphere.sunElevationDeg = 25.0f;
@@ -91,10 +85,35 @@ TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironmentUnderTheSpectralSky) {
   PrtSection otherWay = section;
   otherWay.rotationDeg = -40.0f;
   EXPECT_GT(projectionDifference(section, 550.0, &otherWay), 20.0 * turned);
-  PrtSection noSun = section;
-  noSun.sky->sunDisc = false;
-  EXPECT_GT(projectionDifference(section, 550.0, &noSun), 20.0 * turned);
   std::printf("the spectral sky turned 40°: worst %.2g\n", turned);
+}
+
+TEST(EnvironmentRadiance, TheSpectralSkysSunIsALightTurnedWithIt) {
+  // The sun 25° high at azimuth 130° (0: towards −z, 90: +x), the environment turned 40° about
+  // the zenith (counter-clockwise seen from above: the azimuth goes from 130° to 90°, towards +x).
+  PrtSection section;
+  PrtSky sky;
+  sky.atmosphere.sunElevationDeg = 25.0f;
+  sky.atmosphere.sunAzimuthDeg = 130.0f;
+  section.sky = sky;
+  section.rotationDeg = 40.0f;
+  std::optional<TechniqueLight> sun = section.light();
+  ASSERT_TRUE(sun);
+  const double e = glm::radians(25.0);
+  const glm::vec3 towardsSun = -sun->direction;
+  EXPECT_NEAR(towardsSun.y, std::sin(e), 1e-5);
+  EXPECT_NEAR(towardsSun.x, std::cos(e), 1e-5);
+  EXPECT_NEAR(towardsSun.z, 0.0, 1e-5);
+  EXPECT_TRUE(sun->followsSection);
+  // Its spectrum is the disc's irradiance on the ground, the grid's.
+  EXPECT_DOUBLE_EQ(sun->spd.at(550.0), sectionSky(sky)->sunIrradianceAt(550.0));
+  section.sky->sunDisc = false;
+  EXPECT_FALSE(section.light());
+  section.sky->sunDisc = true;
+  section.sky->atmosphere.sunElevationDeg = -4.0f;  // below the horizon: a light that is out
+  sun = section.light();
+  ASSERT_TRUE(sun);
+  EXPECT_EQ(sun->illuminanceLux, 0.0);
 }
 
 }  // namespace

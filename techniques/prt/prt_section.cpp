@@ -82,6 +82,28 @@ std::shared_ptr<const TechniqueEnvironment> PrtSection::environment(const RgbToS
   return environmentRadiance(*this, table);
 }
 
+std::optional<TechniqueLight> PrtSection::light() const {
+  if (!sky || !sky->sunDisc) return std::nullopt;
+  std::shared_ptr<const SkyRadianceGrid> grid = sectionSky(*sky);
+  // PRT's frame (z up) turned about the zenith, then the world's (y up): (x, y, z) → (x, z, −y).
+  const glm::dvec3 p = glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(static_cast<double>(rotationDeg)),
+                                              glm::dvec3(0.0, 0.0, 1.0))) *
+                       grid->sunDirection;
+  TechniqueLight sun;
+  sun.direction = -glm::normalize(glm::vec3(glm::dvec3(p.x, p.z, -p.y)));
+  sun.spd = Spectrum::fromFunction([grid](double lambdaNm) {
+    return lambdaNm < kGridMinNm || lambdaNm > kGridMinNm + kGridStepNm * (kGridWavelengths - 1) ? 0.0
+                                                                                                 : grid->sunIrradianceAt(lambdaNm);
+  });
+  sun.spdLabel = "sun through the spectral sky (PRT)";
+  sun.followsSection = true;
+  if (!(gridLuminance(sun.spd) > 0.0)) {  // below the horizon: out, with the solar spectrum's shape
+    sun.spd = atmosphere::solarIrradianceSpectrum().toDense();
+    sun.illuminanceLux = 0.0;
+  }
+  return sun;
+}
+
 TechniqueBench PrtSection::bench() const {
   auto spectral8 = std::make_shared<PrtSection>(*this);
   spectral8->mode = PrtMode::Spectral;
@@ -156,8 +178,9 @@ SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpe
                                              section.map->linearRgb,
                                              [&](const glm::vec3& rgb) { return toSpectrum(rgb) * scale; });
   } else if (section.sky) {
+    // The sun is the scene's light (PrtSection::light): the environment is the sky alone.
     environment = skyEnvironment(fmt::format("spectral sky, sun at {}°", section.sky->atmosphere.sunElevationDeg),
-                                 *sectionSky(*section.sky), section.sky->sunDisc, double(shared::kLumensPerWatt));
+                                 *sectionSky(*section.sky), false, double(shared::kLumensPerWatt));
   } else {
     Spectrum spd = illuminant(section.illuminant);
     spd *= section.luminanceCdM2 / gridLuminance(spd);
@@ -177,7 +200,7 @@ std::string environmentKey(const PrtSection& section) {
   std::string key = fmt::format("{}|{}|{}|{}|{}", section.illuminant, section.shape,
                                 static_cast<const void*>(section.map.get()), section.luminanceCdM2, section.rotationDeg);
   if (section.sky) {
-    const atmosphere::AtmosphereSection& a = section.sky->atmosphere;
+    const atmosphere::AtmosphereSky& a = section.sky->atmosphere;
     const atmosphere::AtmosphereParameters& p = a.parameters;
     key += fmt::format("|sky {} {} {} {}|{} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {}", a.sunElevationDeg,
                        a.sunAzimuthDeg, a.groundAltitudeM, section.sky->sunDisc, p.bottomRadiusKm, p.topRadiusKm,
@@ -194,7 +217,7 @@ std::shared_ptr<const SkyRadianceGrid> sectionSky(const PrtSky& sky) {
   static std::optional<PrtSky> lastSky;
   static std::shared_ptr<const SkyRadianceGrid> lastGrid;
   std::lock_guard lock(mutex);
-  const atmosphere::AtmosphereSection& a = sky.atmosphere;
+  const atmosphere::AtmosphereSky& a = sky.atmosphere;
   if (!lastSky || !(lastSky->atmosphere.parameters == a.parameters) ||
       lastSky->atmosphere.sunElevationDeg != a.sunElevationDeg || lastSky->atmosphere.sunAzimuthDeg != a.sunAzimuthDeg ||
       lastSky->atmosphere.groundAltitudeM != a.groundAltitudeM) {

@@ -52,6 +52,12 @@ struct PrtSection final : TechniqueSection {
   std::unique_ptr<TechniqueSection> clone() const override { return std::make_unique<PrtSection>(*this); }
   // No block: the forward pass uploads what it draws when the section changes.
   TechniqueBlock pack(const FramePackInput& input) const override;
+  // Under the spectral sky with its disc, the sun as a light of the scene: the solar irradiance
+  // that reaches the ground (the grid's, 380–780 nm, 0 outside), from the sun's direction turned
+  // with the environment, following the section. The lighting pass lights every object by it
+  // (PRT's too, with shadow maps), the reference traces it as a light; the environment itself
+  // holds the sky alone.
+  std::optional<TechniqueLight> light() const override;
   // The environment as radiance per direction, for the reference path tracer (prt_environment_radiance.h).
   std::shared_ptr<const TechniqueEnvironment> environment(const RgbToSpectrumTable& table) const override;
   // Spectral PRT with m = 8 against RGB-PRT, both on this scene, the PRT pass timed in each.

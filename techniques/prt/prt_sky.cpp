@@ -20,7 +20,7 @@ double onGrid(const std::vector<double>& values, double lambdaNm) {
 
 }  // namespace
 
-glm::dvec3 prtSunDirection(const atmosphere::AtmosphereSection& atmosphere) {
+glm::dvec3 prtSunDirection(const atmosphere::AtmosphereSky& atmosphere) {
   const glm::dvec3 w(atmosphere.sunDirection());  // world, y up
   return glm::normalize(glm::dvec3(w.x, -w.z, w.y));  // x→x, y→z, z→−y (prt_scene_mesh.h)
 }
@@ -37,7 +37,7 @@ double SkyRadianceGrid::radianceAt(const glm::dvec3& direction, double lambdaNm)
 double SkyRadianceGrid::sunIrradianceAt(double lambdaNm) const { return onGrid(sunIrradiance, lambdaNm); }
 
 SkyRadianceGrid tabulateSky(const PrtSky& sky, int width, int height) {
-  const atmosphere::AtmosphereSection& a = sky.atmosphere;
+  const atmosphere::AtmosphereSky& a = sky.atmosphere;
   SkyRadianceGrid grid;
   grid.width = width;
   grid.height = height;

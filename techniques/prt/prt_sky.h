@@ -19,7 +19,7 @@
 namespace prism::prt {
 
 struct PrtSky {
-  atmosphere::AtmosphereSection atmosphere;  // the planet, the sun's position, the ground's altitude
+  atmosphere::AtmosphereSky atmosphere;  // the planet, the sun's position, the ground's altitude
   bool sunDisc = true;                       // the sun itself, besides the sky it lights
 };
 
@@ -43,6 +43,6 @@ SkyRadianceGrid tabulateSky(const PrtSky& sky, int width = kSkyGridWidth, int he
 SpectralEnvironment skyEnvironment(std::string name, const SkyRadianceGrid& grid, bool sunDisc, double scale);
 
 // The sun's direction in PRT's frame (z up) for the atmosphere's elevation and azimuth.
-glm::dvec3 prtSunDirection(const atmosphere::AtmosphereSection& atmosphere);
+glm::dvec3 prtSunDirection(const atmosphere::AtmosphereSky& atmosphere);
 
 }  // namespace prism::prt

@@ -2,6 +2,7 @@
 // luminance and rotation, or the spectral sky's sun. Sees only the PanelContext.
 #include <imgui.h>
 
+#include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
 #include "techniques/prt/prt_section.h"
 #include "techniques/prt/viewer/prt_viewer.h"
@@ -45,7 +46,10 @@ class PrtPanel final : public Panel {
     if (!s.sky)
       changed |= ImGui::SliderFloat("luminance cd/m2", &s.luminanceCdM2, 1.0f, 1e5f, "%.0f", ImGuiSliderFlags_Logarithmic);
     changed |= ImGui::SliderFloat("rotation deg", &s.rotationDeg, -180.0f, 180.0f, "%.1f");
-    if (changed) context.changes.scene = true;
+    if (changed) {
+      applyTechniqueLights(context.scene);  // the spectral sky's sun light follows its sun and rotation
+      context.changes.scene = true;
+    }
   }
 
  private:

@@ -3,6 +3,7 @@
 
 #include "core/error.h"
 #include "render/setting_keys.h"
+#include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
 #include "techniques/prt/prt_section.h"
 #include "techniques/prt/viewer/prt_viewer.h"
@@ -22,6 +23,7 @@ bool setPrtKey(Scene& scene, const std::string& key, const std::string& value) {
     if (!(std::abs(degrees) <= (elevation ? 90.0f : 360.0f)))
       throw Error(key + ": expected degrees in " + (elevation ? "[-90, 90]" : "[-360, 360]") + ", got " + excerpt(value));
     (elevation ? s->sky->atmosphere.sunElevationDeg : s->sky->atmosphere.sunAzimuthDeg) = degrees;
+    applyTechniqueLights(scene);  // the sun light follows
     return true;
   }
   if (key == "prt.mode") {
@@ -42,6 +44,7 @@ bool setPrtKey(Scene& scene, const std::string& key, const std::string& value) {
     float degrees = render::parseFloat(key, value);
     if (!(std::abs(degrees) <= 360.0f)) throw Error("prt.rotation: expected degrees in [-360, 360], got " + excerpt(value));
     s->rotationDeg = degrees;
+    applyTechniqueLights(scene);  // the spectral sky's sun turns with it
   }
   return true;
 }

@@ -58,6 +58,7 @@ struct PrtScene {
 constexpr PrtScene kPrtScenes[] = {
     {"prt_macbeth", "an F4 overcast sky"},
     {"prt_metamers", "a D65 overcast sky"},
+    {"prt_sky", "Prism's spectral sky, and its sun 15° high as a light"},
 };
 
 // The thesis's three modes at 200 wavelengths (one frame of the uniform grid), and the real-time
@@ -143,6 +144,7 @@ struct RelativeBound {
 constexpr RelativeBound kRelativeBounds[] = {
     {"prt_macbeth", "prt-spectral", "prt-reference-5nm", 0.05},
     {"prt_metamers", "prt-spectral", "prt-reference-5nm", 0.05},
+    {"prt_sky", "prt-spectral", "prt-reference-5nm", 0.05},
 };
 
 struct Result {

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the PRT example scenes (scenes/prt_macbeth.json, scenes/prt_metamers.json) and their
+"""Writes the PRT example scenes (scenes/prt_macbeth.json, prt_sky.json, prt_metamers.json) and their
 reflectances (scenes/prt/*.csv): the 24 ColorChecker spectra from data/colorchecker24.csv, one
 file a patch, and the light-skin metamer from `prism colour metamer` (PRISM: the prism binary).
 
@@ -64,6 +64,22 @@ write("prt_macbeth.json", {
     "background": {"colour": [0.6, 0.6, 0.6], "luminance": 300},
     "prt": {"environment": {"illuminant": "F4", "shape": "sky", "luminance": 1000}, "basis": 8, "mode": "spectral",
             "samples": 256},
+})
+
+# The same chart under Prism's spectral sky, the sun 15° high: the sky through PRT's basis, the sun
+# a light of the scene (shadow-mapped, per wavelength).
+write("prt_sky.json", {
+    "description": "Spectral PRT under Prism's spectral sky (issue 14): the 24 ColorChecker spectra on spheres over "
+                   "a grey floor, self-shadowing, lit by the atmosphere's sky (tabulated at PRT's 81 wavelengths, "
+                   "projected on SH-5) and its sun 15° above the horizon, a light of the scene (shadow-mapped, per "
+                   "wavelength). m = 8 basis functions; `set prt.sun-elevation DEG` moves the sun in the viewer.",
+    "camera": {"position": [0, 5.2, 4.6], "target": [0, 0, -0.1], "up": [0, 1, 0], "fov_deg": 45, "near": 0.1,
+               "far": 50, "ev100": 13.0},
+    "materials": materials,
+    "objects": objects,
+    "background": {"colour": [0.4, 0.55, 0.85], "luminance": 4000},
+    "prt": {"environment": {"atmosphere": {"sun": {"elevation": 15, "azimuth": 120}}}, "basis": 8,
+            "mode": "spectral", "samples": 256},
 })
 
 # Metamers (the paper's "Metacow" idea): two halves of one shape, touching spheres, carry light

@@ -21,6 +21,7 @@
 #include "gpu/headless_context.h"
 #include "gpu/texture.h"
 #include "render/cpu_shading.h"
+#include "render/gbuffer_readback_test_support.h"
 #include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
 #include "spectral/table_test_support.h"
@@ -66,6 +67,20 @@ std::pair<glm::dvec3, glm::dvec3> pixelRay(const CameraTransform& camera, double
   glm::dvec4 nearPoint = inverse * glm::dvec4(ndc, -1.0, 1.0), farPoint = inverse * glm::dvec4(ndc, 1.0, 1.0);
   glm::dvec3 n = glm::dvec3(nearPoint) / nearPoint.w, f = glm::dvec3(farPoint) / farPoint.w;
   return {n, glm::normalize(f - n)};
+}
+
+// The hit through pixel (x, y)'s centre when the pixel lies inside one object (rays half a pixel
+// away hit the same material): a silhouette's pixels may take another triangle's colour.
+std::optional<Hit> interiorHit(const prt::PrtDrawData& d, const CameraTransform& camera, int x, int y, int w, int h) {
+  auto [origin, dir] = pixelRay(camera, x + 0.5, y + 0.5, w, h);
+  std::optional<Hit> hit = intersect(d, origin, dir);
+  if (!hit) return std::nullopt;
+  for (glm::dvec2 o : {glm::dvec2(-0.5, 0.0), glm::dvec2(0.5, 0.0), glm::dvec2(0.0, -0.5), glm::dvec2(0.0, 0.5)}) {
+    auto [o2, d2] = pixelRay(camera, x + 0.5 + o.x, y + 0.5 + o.y, w, h);
+    std::optional<Hit> h2 = intersect(d, o2, d2);
+    if (!h2 || d.vertexMaterial[d.indices[h2->triangle]] != d.vertexMaterial[d.indices[hit->triangle]]) return std::nullopt;
+  }
+  return hit;
 }
 
 // The fragment shader's sum on the CPU: Ê interpolated with the hit's barycentrics, then prtXyz,
@@ -118,18 +133,8 @@ TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSums) {
   int compared = 0;
   for (int n = 0; n < 400; ++n) {
     int x = px(rng), y = py(rng);  // GL rows
-    auto [origin, dir] = pixelRay(renderer.cameraTransform(), x + 0.5, y + 0.5, w, h);
-    std::optional<Hit> hit = intersect(*data, origin, dir);
+    std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
     if (!hit) continue;
-    // Inside one object: its silhouette's pixels may take another triangle's colour.
-    bool interior = true;
-    for (glm::dvec2 o : {glm::dvec2(-0.5, 0.0), glm::dvec2(0.5, 0.0), glm::dvec2(0.0, -0.5), glm::dvec2(0.0, 0.5)}) {
-      auto [o2, d2] = pixelRay(renderer.cameraTransform(), x + 0.5 + o.x, y + 0.5 + o.y, w, h);
-      std::optional<Hit> h2 = intersect(*data, o2, d2);
-      interior = interior && h2 && data->vertexMaterial[data->indices[h2->triangle]] ==
-                                       data->vertexMaterial[data->indices[hit->triangle]];
-    }
-    if (!interior) continue;
     glm::dvec3 expected = cpuTristimulus(*data, *hit);
     std::size_t i = static_cast<std::size_t>(y * w + x);
     glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
@@ -180,15 +185,8 @@ TEST(PrtGpuCpuParity, PrtObjectsAreLitByTheScenesLightsToo) {
   auto data = std::dynamic_pointer_cast<const prt::PrtDrawData>(renderer.techniquePass(prt::PrtSection::kKey)->readTexels());
   ASSERT_TRUE(data);
   const int w = settings.width, h = settings.height;
-  std::vector<float> lit = gpu::readTexture2DFloat(renderer.accumulation(), 4);
-  std::vector<float> albedo = gpu::readTexture2DFloat(renderer.albedoMetallic(), 4);
-  std::vector<float> normal = gpu::readTexture2DFloat(renderer.normalRoughness(), 4);
-  std::vector<std::uint32_t> ids = gpu::readTexture2DUint(renderer.materialId(), 1);
-  std::vector<float> depth = gpu::readTexture2DFloat(renderer.depth(), 1);
-  std::vector<std::vector<float>> shadowLayers;
-  for (const ShadowView& view : renderer.shadowViews())
-    shadowLayers.push_back(gpu::readTextureLayerFloat(renderer.shadowMaps(), view.layer));
-  CpuShading cpu(renderer.frameData(), cachedTestTable(), std::move(shadowLayers));
+  GBufferReadback g(renderer);
+  CpuShading cpu(renderer.frameData(), cachedTestTable(), g.shadowLayers);
 
   std::mt19937 rng(15);
   std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
@@ -196,28 +194,15 @@ TEST(PrtGpuCpuParity, PrtObjectsAreLitByTheScenesLightsToo) {
   int compared = 0;
   for (int n = 0; n < 400; ++n) {
     int x = px(rng), y = py(rng);
-    auto [origin, dir] = pixelRay(renderer.cameraTransform(), x + 0.5, y + 0.5, w, h);
-    std::optional<Hit> hit = intersect(*data, origin, dir);
+    std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
     if (!hit) continue;
-    bool interior = true;
-    for (glm::dvec2 o : {glm::dvec2(-0.5, 0.0), glm::dvec2(0.5, 0.0), glm::dvec2(0.0, -0.5), glm::dvec2(0.0, 0.5)}) {
-      auto [o2, d2] = pixelRay(renderer.cameraTransform(), x + 0.5 + o.x, y + 0.5 + o.y, w, h);
-      std::optional<Hit> h2 = intersect(*data, o2, d2);
-      interior = interior && h2 && data->vertexMaterial[data->indices[h2->triangle]] ==
-                                       data->vertexMaterial[data->indices[hit->triangle]];
-    }
-    if (!interior) continue;
     std::size_t i = static_cast<std::size_t>(y * w + x);
-    GBufferTexel t;
-    t.albedoMetallic = glm::vec4(albedo[4 * i], albedo[4 * i + 1], albedo[4 * i + 2], albedo[4 * i + 3]);
-    t.normalRoughness = glm::vec4(normal[4 * i], normal[4 * i + 1], normal[4 * i + 2], normal[4 * i + 3]);
-    t.materialId = ids[i];
-    t.depth = depth[i];
+    GBufferTexel t = g.texel(i);
     ASSERT_NE(t.materialId & shared::kTechniqueShadedBit, 0u);
     glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(w), (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
     const glm::dvec3 lights(cpu.shade(t, uv, renderer.cameraTransform()));
     const glm::dvec3 expected = lights + cpuTristimulus(*data, *hit);
-    const glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
+    const glm::dvec3 actual(g.accumulated(i));
     const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
     worst = std::max(worst, glm::length(actual - expected) / scale);
     lightShare += lights.y / expected.y;

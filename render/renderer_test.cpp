@@ -18,6 +18,7 @@
 #include "imaging/png_file.h"
 #include "techniques/technique_pass.h"
 #include "render/cpu_shading.h"
+#include "render/gbuffer_readback_test_support.h"
 #include "render/display_transform.h"
 #include "scene/scene_loader.h"
 #include "core/error.h"
@@ -76,18 +77,8 @@ TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {
   renderer.renderFrame();
 
   const int w = settings.width, h = settings.height;
-  const bool coefficients = GetParam().albedo == GBufferAlbedo::Coefficients;
-  std::vector<float> stored = coefficients ? gpu::readTexture2DFloat(renderer.coefficients(), 4) : std::vector<float>();
-  std::vector<float> albedo = gpu::readTexture2DFloat(renderer.albedoMetallic(), 4);
-  std::vector<float> normal = gpu::readTexture2DFloat(renderer.normalRoughness(), 4);
-  std::vector<std::uint32_t> ids = gpu::readTexture2DUint(renderer.materialId(), 1);
-  std::vector<float> depth = gpu::readTexture2DFloat(renderer.depth(), 1);
-  std::vector<float> lit = gpu::readTexture2DFloat(renderer.accumulation(), 4);
-  std::vector<std::vector<float>> shadowLayers;
-  for (const ShadowView& view : renderer.shadowViews()) {
-    shadowLayers.push_back(gpu::readTextureLayerFloat(renderer.shadowMaps(), view.layer));
-  }
-  CpuShading cpu(renderer.frameData(), cachedTestTable(), std::move(shadowLayers), readTexels(renderer));
+  GBufferReadback g(renderer, GetParam().albedo == GBufferAlbedo::Coefficients);
+  CpuShading cpu(renderer.frameData(), cachedTestTable(), g.shadowLayers, readTexels(renderer));
 
   std::mt19937 rng(4);
   std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
@@ -97,17 +88,12 @@ TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {
   for (int n = 0; n < count; ++n) {
     int x = px(rng), y = py(rng);  // GL rows: y = 0 at the bottom
     std::size_t i = static_cast<std::size_t>(y * w + x);
-    GBufferTexel t;
-    t.albedoMetallic = glm::vec4(albedo[4 * i], albedo[4 * i + 1], albedo[4 * i + 2], albedo[4 * i + 3]);
-    t.normalRoughness = glm::vec4(normal[4 * i], normal[4 * i + 1], normal[4 * i + 2], normal[4 * i + 3]);
-    t.materialId = ids[i];
-    t.depth = depth[i];
-    if (coefficients) t.coefficients = glm::vec3(stored[4 * i], stored[4 * i + 1], stored[4 * i + 2]);
+    GBufferTexel t = g.texel(i);
     surfaces += t.materialId != 0;
     glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(w),
                  (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
     glm::vec3 expected = cpu.shade(t, uv, renderer.cameraTransform());
-    glm::vec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
+    glm::vec3 actual = g.accumulated(i);
     // Relative to the pixel's largest tristimulus component (components of one pixel share
     // its light; a near-zero X of a blue pixel has no precision of its own to compare).
     float scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});

@@ -71,15 +71,21 @@ TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironment) {
               projectionDifference(sky, 550.0), turned);
 }
 
-TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironmentUnderTheSpectralSky) {
-  // Prism's spectral sky (its sun is the scene's light, not part of it), turned 40° about the
-  // zenith: the traced radiance (the grid's nearest texel) is what PRT projects.
+// Prism's spectral sky, the sun 25° high at azimuth 130°, turned 40° about the zenith.
+PrtSection turnedSpectralSky() {
   PrtSection section;
   PrtSky sky;
   sky.atmosphere.sunElevationDeg = 25.0f;
   sky.atmosphere.sunAzimuthDeg = 130.0f;
   section.sky = sky;
   section.rotationDeg = 40.0f;
+  return section;
+}
+
+TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironmentUnderTheSpectralSky) {
+  // Its sun is the scene's light, not part of it: the traced radiance (the grid's nearest texel)
+  // is what PRT projects.
+  PrtSection section = turnedSpectralSky();
   const double turned = projectionDifference(section, 550.0);
   EXPECT_LT(turned, 1e-3);
   PrtSection otherWay = section;
@@ -89,14 +95,9 @@ TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironmentUnderTheSpectralSky) {
 }
 
 TEST(EnvironmentRadiance, TheSpectralSkysSunIsALightTurnedWithIt) {
-  // The sun 25° high at azimuth 130° (0: towards −z, 90: +x), the environment turned 40° about
-  // the zenith (counter-clockwise seen from above: the azimuth goes from 130° to 90°, towards +x).
-  PrtSection section;
-  PrtSky sky;
-  sky.atmosphere.sunElevationDeg = 25.0f;
-  sky.atmosphere.sunAzimuthDeg = 130.0f;
-  section.sky = sky;
-  section.rotationDeg = 40.0f;
+  // Azimuth 0: towards −z, 90: +x; turned 40° counter-clockwise seen from above, the sun's 130°
+  // becomes 90°, towards +x.
+  PrtSection section = turnedSpectralSky();
   std::optional<TechniqueLight> sun = section.light();
   ASSERT_TRUE(sun);
   const double e = glm::radians(25.0);
@@ -106,7 +107,7 @@ TEST(EnvironmentRadiance, TheSpectralSkysSunIsALightTurnedWithIt) {
   EXPECT_NEAR(towardsSun.z, 0.0, 1e-5);
   EXPECT_TRUE(sun->followsSection);
   // Its spectrum is the disc's irradiance on the ground, the grid's.
-  EXPECT_DOUBLE_EQ(sun->spd.at(550.0), sectionSky(sky)->sunIrradianceAt(550.0));
+  EXPECT_DOUBLE_EQ(sun->spd.at(550.0), sectionSky(*section.sky)->sunIrradianceAt(550.0));
   section.sky->sunDisc = false;
   EXPECT_FALSE(section.light());
   section.sky->sunDisc = true;

@@ -1,0 +1,45 @@
+// A rendered frame's G-buffer, shadow maps and accumulation read back from the GPU, for tests that
+// hold the lighting pass to its CPU twin (render/cpu_shading.h) pixel by pixel.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gpu/texture.h"
+#include "render/cpu_shading.h"
+#include "render/renderer.h"
+
+namespace prism::render {
+
+struct GBufferReadback {
+  explicit GBufferReadback(const Renderer& renderer, bool coefficients = false)
+      : albedo(gpu::readTexture2DFloat(renderer.albedoMetallic(), 4)),
+        normal(gpu::readTexture2DFloat(renderer.normalRoughness(), 4)),
+        ids(gpu::readTexture2DUint(renderer.materialId(), 1)),
+        depth(gpu::readTexture2DFloat(renderer.depth(), 1)),
+        stored(coefficients ? gpu::readTexture2DFloat(renderer.coefficients(), 4) : std::vector<float>()),
+        lit(gpu::readTexture2DFloat(renderer.accumulation(), 4)) {
+    for (const ShadowView& view : renderer.shadowViews())
+      shadowLayers.push_back(gpu::readTextureLayerFloat(renderer.shadowMaps(), view.layer));
+  }
+
+  // Pixel i's texel (i = y·width + x, GL rows).
+  GBufferTexel texel(std::size_t i) const {
+    GBufferTexel t;
+    t.albedoMetallic = glm::vec4(albedo[4 * i], albedo[4 * i + 1], albedo[4 * i + 2], albedo[4 * i + 3]);
+    t.normalRoughness = glm::vec4(normal[4 * i], normal[4 * i + 1], normal[4 * i + 2], normal[4 * i + 3]);
+    t.materialId = ids[i];
+    t.depth = depth[i];
+    if (!stored.empty()) t.coefficients = glm::vec3(stored[4 * i], stored[4 * i + 1], stored[4 * i + 2]);
+    return t;
+  }
+  // Pixel i's accumulated tristimulus.
+  glm::vec3 accumulated(std::size_t i) const { return {lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]}; }
+
+  std::vector<float> albedo, normal;
+  std::vector<std::uint32_t> ids;
+  std::vector<float> depth, stored, lit;
+  std::vector<std::vector<float>> shadowLayers;
+};
+
+}  // namespace prism::render

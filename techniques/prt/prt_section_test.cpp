@@ -1,5 +1,5 @@
 // The section's environment maps as files: a Radiance .hdr and an OpenEXR of the same texels are
-// the same map; anything but linear sRGB is refused, naming the file.
+// the same map; anything but linear sRGB is refused, naming the file. The spectral sky's keys.
 #include "techniques/prt/prt_section.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/error_test_support.h"
+#include "core/json_schema.h"
 #include "imaging/exr_file.h"
 #include "imaging/radiance_hdr.h"
 
@@ -54,6 +55,33 @@ TEST(EnvironmentMap, OnlyLinearSrgbIsAMap) {
   EXPECT_EQ(errorOf([&] { readEnvironmentMap(xyz); }),
             xyz.string() + ": an environment map must be linear sRGB (Rec. 709, D65) RGB, not xyz with 3 channel(s)");
   std::filesystem::remove(xyz);
+}
+
+// The section's "atmosphere" environment, parsed as the scene loader parses it: the atmosphere
+// section's keys plus sun_disc, and no luminance (the sky is absolute); errors at their pointer.
+std::unique_ptr<TechniqueSection> parseSection(const std::string& text) {
+  static const schema::Document document{"scene.json", {}};
+  nlohmann::json json = schema::parseJson(text, document.name);
+  return PrtSection::parse(schema::Node(json, "/prt", document), TechniqueSections());
+}
+
+TEST(SpectralSkySection, TakesTheAtmospheresKeysAndNoLuminance) {
+  auto parsed = parseSection(R"({"environment": {"atmosphere": {"sun": {"elevation": 12}, "sun_disc": false}}})");
+  const auto& section = dynamic_cast<const PrtSection&>(*parsed);
+  ASSERT_TRUE(section.sky);
+  EXPECT_FLOAT_EQ(section.sky->atmosphere.sunElevationDeg, 12.0f);
+  EXPECT_FALSE(section.sky->sunDisc);
+  EXPECT_EQ(errorOf([] { parseSection(R"({"environment": {"atmosphere": {}, "luminance": 5}})"); }),
+            "scene.json: /prt/environment/luminance: the spectral sky's radiance is absolute (its sun's): give an "
+            "atmosphere or an illuminant, shape and luminance");
+  EXPECT_EQ(errorOf([] { parseSection(R"({"environment": {"atmosphere": {}, "map": "sky.hdr"}})"); }),
+            "scene.json: /prt/environment/atmosphere: give one of a map, an atmosphere, or an illuminant and shape");
+  EXPECT_EQ(errorOf([] { parseSection(R"({"environment": {"atmosphere": {"ozone": -1}}})"); })
+                .rfind("scene.json: /prt/environment/atmosphere/ozone: ", 0),
+            0u);
+  EXPECT_EQ(errorOf([] { parseSection(R"({"environment": {"atmosphere": {"sun": {"elevation": 95}}}})"); })
+                .rfind("scene.json: /prt/environment/atmosphere/sun/elevation: ", 0),
+            0u);
 }
 
 }  // namespace

@@ -1,0 +1,146 @@
+// The scene loader and the techniques' sections (water, the atmosphere, PRT): each section read
+// into the scene, its lights added, its values checked with the file and the place named.
+#include "scene/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/error_test_support.h"
+#include "scene/scene_folder_test_support.h"
+#include "techniques/atmosphere/atmosphere_section.h"
+#include "techniques/prt/prt_section.h"
+#include "techniques/underwater/jerlov_water.h"
+#include "techniques/underwater/water_section.h"
+
+namespace prism {
+namespace {
+
+using namespace testing_support;
+
+TEST_F(SceneFolder, WaterIsAJerlovTypeAtADepthWithItsMultipliers) {
+  fs::path f = write("water.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "objects": [],
+    "water": {"type": "3C", "depth": 12, "scattering_scale": 2, "absorption_scale": 0.5, "kd_scale": 1.5}})");
+  Scene s = loadScene(f);
+  const auto* w = s.techniques.find<underwater::WaterSection>();
+  ASSERT_TRUE(w);
+  EXPECT_EQ(w->type, "3C");
+  EXPECT_FLOAT_EQ(w->depthM, 12.0f);
+  EXPECT_FLOAT_EQ(w->surfaceY(s.camera.position.y), 13.0f);
+  underwater::WaterProperties water = underwater::jerlovWater("3C");
+  EXPECT_NEAR(w->sigmaS.at(500.0), 2.0 * water.sigmaS.at(500.0), 1e-12);
+  EXPECT_NEAR(w->sigmaA.at(500.0), 0.5 * water.sigmaA.at(500.0), 1e-12);
+  EXPECT_NEAR(w->kd.at(500.0), 1.5 * water.kd.at(500.0), 1e-12);
+  // The command line changes it like any other value.
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"water.type=9C", "water.dataset=williamson2022"}); }),
+            f.string() + ": /water/type: unknown water type \"9C\" in the williamson2022 data (known: IB, II, "
+                         "III, 1C, 3C, 5C)");
+  Scene t = loadScene(f, {"water.type=5C", "water.depth=20", "water.dataset=williamson2022"});
+  EXPECT_FLOAT_EQ(t.techniques.find<underwater::WaterSection>()->depthM, 20.0f);
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"water.type=IV"}); }),
+            f.string() + ": /water/type: unknown water type \"IV\" in the jerlov data (known: I, IA, IB, II, III, "
+                         "1C, 3C, 5C, 7C, 9C)");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"water.depth=-1"}); }),
+            f.string() + ": /water/depth: expected a number in [0, 1e+12], got -1");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"water.salinity=35"}); }),
+                         f.string() + ": /water/salinity: unknown key (set on the command line) (allowed: "));
+}
+
+TEST_F(SceneFolder, AtmosphereAddsTheSunAsALightAndChecksItsParameters) {
+  fs::path f = write("sky.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "objects": [],
+    "atmosphere": {"sun": {"elevation": 30, "azimuth": 90}, "turbidity": 0.02, "ozone": 350, "ground_altitude": 500}})");
+  Scene s = loadScene(f);
+  auto* sky = s.techniques.find<atmosphere::AtmosphereSection>();
+  ASSERT_TRUE(sky);
+  EXPECT_DOUBLE_EQ(sky->parameters.mieAngstromBeta, 0.02);
+  EXPECT_DOUBLE_EQ(sky->parameters.ozoneColumnDu, 350.0);
+  EXPECT_FLOAT_EQ(sky->groundAltitudeM, 500.0f);
+  ASSERT_EQ(s.lights.size(), 1u);
+  const Light& sun = s.lights[0];
+  EXPECT_EQ(sun.technique, "atmosphere");
+  // Towards +x (azimuth 90°), 30° up; the light travels the other way.
+  EXPECT_NEAR(sun.direction.x, -std::cos(glm::radians(30.0f)), 1e-6);
+  EXPECT_NEAR(sun.direction.y, -0.5f, 1e-6);
+  EXPECT_NEAR(sun.direction.z, 0.0f, 1e-6);
+  // The solar constant's visible part: ASTM G-173's extraterrestrial spectrum gives about 133 klux.
+  EXPECT_NEAR(sun.intensity, 1.33e5f, 0.03e5f);
+  EXPECT_NEAR(luminousIntegral(sun.spd), 1.0, 1e-9);
+  // applyTechniqueLights follows edits of the angles, and a copy of the scene has its own section.
+  Scene copy = s;
+  sky->sunElevationDeg = 90.0f;
+  applyTechniqueLights(s);
+  applyTechniqueLights(copy);
+  EXPECT_NEAR(copy.lights[0].direction.y, -0.5f, 1e-6);
+  EXPECT_NEAR(s.lights[0].direction.y, -1.0f, 1e-6);
+
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.sun.elevation=95"}); }),
+            f.string() + ": /atmosphere/sun/elevation: expected a number in [-90, 90], got 95");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.mie_g=1"}); }),
+            f.string() + ": /atmosphere/mie_g: expected a number in (-1, 1), got 1");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.atmosphere_height=40", "atmosphere.ground_altitude=45000"}); }),
+            f.string() + ": /atmosphere/ground_altitude: 45000 m must be below the top of the atmosphere (40 km)");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.atmosphere_height=20"}); }),
+            f.string() + ": /atmosphere: ozone peak altitude (km) = 25 must be within 0 and the atmosphere height");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"atmosphere.humidity=3"}); }),
+                         f.string() + ": /atmosphere/humidity: unknown key (set on the command line) (allowed: "));
+  fs::path both = write("both.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "objects": [],
+    "water": {"type": "I"}, "atmosphere": {}})");
+  EXPECT_EQ(errorOf([&] { loadScene(both); }), both.string() + ": /atmosphere: a scene has water or an atmosphere, not both");
+}
+
+TEST_F(SceneFolder, PrtObjectsNameTheTechniqueAndItsSectionIsChecked) {
+  fs::path f = write("prt.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]},
+    "materials": {"m": {}},
+    "objects": [{"sphere": {"centre": [0, 0, 0], "radius": 1}, "material": "m", "technique": "prt"},
+                {"box": {"centre": [2, 0, 0], "size": [1, 1, 1]}, "material": "m"}],
+    "prt": {"environment": {"illuminant": "F4", "shape": "uniform", "luminance": 500, "rotation_deg": 30},
+            "basis": 6, "mode": "rgb-prt", "samples": 64, "shadows": false}})");
+  Scene s = loadScene(f);
+  EXPECT_EQ(s.meshes[0].technique, "prt");
+  EXPECT_EQ(s.meshes[1].technique, "");
+  const auto* prt = s.techniques.find<prt::PrtSection>();
+  ASSERT_TRUE(prt);
+  EXPECT_TRUE(prt->shadesObjects());
+  EXPECT_EQ(prt->illuminant, "F4");
+  EXPECT_EQ(prt->shape, "uniform");
+  EXPECT_FLOAT_EQ(prt->luminanceCdM2, 500.0f);
+  EXPECT_FLOAT_EQ(prt->rotationDeg, 30.0f);
+  EXPECT_EQ(prt->basis, 6);
+  EXPECT_EQ(prt->mode, prt::PrtMode::RgbPrt);
+  EXPECT_EQ(prt->samples, 64);
+  EXPECT_FALSE(prt->shadows);
+  // Defaults: a D65 sky of 1000 cd/m², m = 8, spectral.
+  Scene d = loadScene(f, {"prt={}"});
+  const auto* defaults = d.techniques.find<prt::PrtSection>();
+  EXPECT_EQ(defaults->illuminant, "D65");
+  EXPECT_EQ(defaults->shape, "sky");
+  EXPECT_EQ(defaults->basis, 8);
+  EXPECT_EQ(defaults->mode, prt::PrtMode::Spectral);
+
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"prt.basis=17"}); }),
+            f.string() + ": /prt/basis: expected an integer in [1, 16], got 17");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"prt.mode=rgb"}); }),
+            f.string() + ": /prt/mode: expected \"spectral\", \"rgb-prt\" or \"reference-5nm\", got \"rgb\"");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"prt.environment.shape=dome"}); }),
+            f.string() + ": /prt/environment/shape: expected \"sky\" or \"uniform\", got \"dome\"");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment.illuminant=F99"}); }),
+                         f.string() + ": /prt/environment/illuminant: "));
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment.map=sky.exr"}); }),
+                         f.string() + ": /prt/environment/illuminant: give one of a map, an atmosphere, or an illuminant and shape"));
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment={\"map\": \"missing.exr\"}"}); }),
+                         f.string() + ": /prt/environment/map: "));
+  write("bad.exr", "not an exr");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment={\"map\": \"bad.exr\"}"}); }),
+                         f.string() + ": /prt/environment/map: "));
+  // An object naming a technique the scene lacks, or one that does not shade objects.
+  fs::path orphan = write("orphan.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]},
+    "materials": {"m": {}}, "water": {},
+    "objects": [{"sphere": {"centre": [0, 0, 0], "radius": 1}, "material": "m", "technique": "prt"}]})");
+  EXPECT_EQ(errorOf([&] { loadScene(orphan); }),
+            orphan.string() + ": /objects/0/technique: the scene has no 'prt' section to shade this object");
+  EXPECT_EQ(errorOf([&] { loadScene(orphan, {"objects.0.technique=water"}); }),
+            orphan.string() + ": /objects/0/technique: 'water' does not shade objects");
+}
+
+}  // namespace
+}  // namespace prism

@@ -32,29 +32,65 @@ namespace prism::atmosphere {
 
 using shared::AtmosphereTablesKernel;
 
-AtmosphereTables computeTables(const shared::GpuAtmosphere& atmosphere, unsigned threads) {
-  AtmosphereTables tables;
-  tables.atmosphere = atmosphere;
+namespace {
+
+// The multiple-scattering table over a finished transmittance table, when the atmosphere asks for it.
+void computeMultipleScattering(AtmosphereTables& tables, unsigned threads) {
+  if (tables.atmosphere.options.x <= 0.5f) return;
   AtmosphereTablesKernel kernel(tables);
+  const int n = shared::kMultipleScatteringLutSize;
+  std::vector<glm::vec4> ms(static_cast<std::size_t>(n * n));
+  parallelFor(static_cast<std::size_t>(n), threads, [&](std::size_t y) {
+    for (int x = 0; x < n; ++x) {
+      ms[y * static_cast<std::size_t>(n) + static_cast<std::size_t>(x)] =
+          kernel.multipleScatteringLutValue(tables.atmosphere, 0, x, static_cast<int>(y));
+    }
+  });
+  tables.multipleScattering = std::move(ms);
+}
+
+std::vector<glm::vec4> transmittanceTexels(const shared::GpuAtmosphere& atmosphere, unsigned threads) {
+  AtmosphereTables none;
+  AtmosphereTablesKernel kernel(none);
   const int tw = shared::kTransmittanceLutWidth, th = shared::kTransmittanceLutHeight;
-  tables.transmittance.resize(static_cast<std::size_t>(tw * th));
+  std::vector<glm::vec4> texels(static_cast<std::size_t>(tw * th));
   parallelFor(static_cast<std::size_t>(th), threads, [&](std::size_t y) {
     for (int x = 0; x < tw; ++x) {
-      tables.transmittance[y * static_cast<std::size_t>(tw) + static_cast<std::size_t>(x)] =
+      texels[y * static_cast<std::size_t>(tw) + static_cast<std::size_t>(x)] =
           kernel.transmittanceLutValue(atmosphere, x, static_cast<int>(y));
     }
   });
-  if (atmosphere.options.x > 0.5f) {
-    const int n = shared::kMultipleScatteringLutSize;
-    std::vector<glm::vec4> ms(static_cast<std::size_t>(n * n));
-    parallelFor(static_cast<std::size_t>(n), threads, [&](std::size_t y) {
-      for (int x = 0; x < n; ++x) {
-        ms[y * static_cast<std::size_t>(n) + static_cast<std::size_t>(x)] =
-            kernel.multipleScatteringLutValue(atmosphere, 0, x, static_cast<int>(y));
-      }
-    });
-    tables.multipleScattering = std::move(ms);
+  return texels;
+}
+
+}  // namespace
+
+AtmosphereTables computeTables(const shared::GpuAtmosphere& atmosphere, unsigned threads) {
+  AtmosphereTables tables;
+  tables.atmosphere = atmosphere;
+  tables.transmittance = transmittanceTexels(atmosphere, threads);
+  computeMultipleScattering(tables, threads);
+  return tables;
+}
+
+std::vector<glm::vec4> transmittanceDensities(const shared::GpuAtmosphere& atmosphere, unsigned threads) {
+  shared::GpuAtmosphere unit = atmosphere;
+  unit.rayleighScattering = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+  unit.mieExtinction = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
+  unit.ozoneAbsorption = glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);
+  return transmittanceTexels(unit, threads);
+}
+
+AtmosphereTables computeTables(const shared::GpuAtmosphere& atmosphere, const std::vector<glm::vec4>& densities,
+                               unsigned threads) {
+  AtmosphereTables tables;
+  tables.atmosphere = atmosphere;
+  tables.transmittance.resize(densities.size());
+  for (std::size_t i = 0; i < densities.size(); ++i) {
+    const glm::vec4& d = densities[i];
+    tables.transmittance[i] = atmosphere.rayleighScattering * d.x + atmosphere.mieExtinction * d.y + atmosphere.ozoneAbsorption * d.z;
   }
+  computeMultipleScattering(tables, threads);
   return tables;
 }
 

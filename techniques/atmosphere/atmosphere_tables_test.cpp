@@ -48,6 +48,31 @@ TEST(AtmosphereTables, TransmittanceMatchesTheReference) {
   EXPECT_LE(worst, 1e-3);
 }
 
+// One integration of the unit densities serves every batch: its combination is the directly
+// integrated table up to float reassociation, and so is the multiple scattering built on it.
+TEST(AtmosphereTables, DensitiesCombineIntoEachBatchsTable) {
+  AtmosphereParameters p;
+  const std::vector<glm::vec4> densities = transmittanceDensities(batchOf(p));
+  for (glm::vec4 lambdas : {glm::vec4(360.0f, 440.0f, 550.0f, 680.0f), glm::vec4(400.0f, 500.0f, 600.0f, 0.0f)}) {
+    const shared::GpuAtmosphere batch = packAtmosphere(p, lambdas);
+    const AtmosphereTables direct = computeTables(batch), combined = computeTables(batch, densities);
+    ASSERT_EQ(combined.transmittance.size(), direct.transmittance.size());
+    ASSERT_EQ(combined.multipleScattering.size(), direct.multipleScattering.size());
+    double worst = 0.0;
+    auto compare = [&](const glm::vec4& a, const glm::vec4& b) {
+      for (int j = 0; j < 4; ++j) {
+        const double scale = std::max(std::abs(double(b[j])), 1e-30);
+        worst = std::max(worst, std::abs(double(a[j]) - double(b[j])) / scale);
+      }
+    };
+    for (std::size_t i = 0; i < direct.transmittance.size(); ++i) compare(combined.transmittance[i], direct.transmittance[i]);
+    for (std::size_t i = 0; i < direct.multipleScattering.size(); ++i)
+      compare(combined.multipleScattering[i], direct.multipleScattering[i]);
+    std::printf("tables from unit densities against direct integration: worst %.3g relative\n", worst);
+    EXPECT_LE(worst, 1e-5);  // a few float roundings of sums of 160–320 steps
+  }
+}
+
 TEST(AtmosphereTables, SingleScatteringMatchesTheReference) {
   AtmosphereParameters p;
   p.multipleScattering = false;

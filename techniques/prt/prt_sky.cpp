@@ -52,10 +52,14 @@ SkyRadianceGrid tabulateSky(const PrtSky& sky, int width, int height) {
   // computed at every other grid wavelength (380, 390, …, 780 nm) and the ones between are the
   // mean of their neighbours.
   constexpr int kNodes = (kGridWavelengths + 1) / 2;
+  // The transmittance table's integration once for all batches (atmosphere_tables.h).
+  const std::vector<glm::vec4> densities =
+      atmosphere::transmittanceDensities(atmosphere::packAtmosphere(a.parameters, glm::vec4(550.0f)));
   for (int first = 0; first < kNodes; first += 4) {
     glm::vec4 lambdaNm(0.0f);  // ≤ 0: an unused channel
     for (int j = 0; j < 4 && first + j < kNodes; ++j) lambdaNm[j] = static_cast<float>(gridWavelengthNm(2 * (first + j)));
-    atmosphere::AtmosphereTables tables = atmosphere::computeTables(atmosphere::packAtmosphere(a.parameters, lambdaNm));
+    atmosphere::AtmosphereTables tables =
+        atmosphere::computeTables(atmosphere::packAtmosphere(a.parameters, lambdaNm), densities);
     parallelFor(static_cast<std::size_t>(height), 0, [&](std::size_t y) {
       for (int x = 0; x < width; ++x) {
         EquirectangularTexel texel = equirectangularTexel(x, static_cast<int>(y), width, height);

@@ -36,7 +36,8 @@ struct SkyRadianceGrid {
 };
 
 // The sky of `sky` (its sun's disc or not: the grid holds both) on a width × height grid: 11
-// batches of the atmosphere's tables, every texel in parallel (~2 s on 2 cores).
+// batches of the atmosphere's tables over one integration of its transmittance densities
+// (atmosphere_tables.h), every texel in parallel (~0.6 s on 2 cores).
 SkyRadianceGrid tabulateSky(const PrtSky& sky, int width = kSkyGridWidth, int height = kSkyGridHeight);
 
 // The grid as a PRT environment: its texels and, with sunDisc, its sun; every value times `scale`.

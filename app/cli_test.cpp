@@ -386,8 +386,8 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   ASSERT_EQ(gpu.exitCode, 0) << gpu.err;
   EXPECT_NE(gpu.out.find("light-density (GPU)"), std::string::npos) << gpu.out;
   EXPECT_TRUE(std::filesystem::exists(dir / "tiny_gpu.exr"));
-  expectOneLineError("nebula render " + tiny + " --gpu --method reference -o x.png",
-                     "the GPU marches projection and light-density, not reference");
+  expectOneLineError("nebula render " + tiny + " --gpu --method analytic -o x.png",
+                     "the GPU marches projection, light-density and reference, not analytic");
 
   // The plots: the basis's error after each element, a render's error against the basis size
   // (which falls from 1 to 3 elements on the tiny nebula too).

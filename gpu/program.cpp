@@ -163,6 +163,10 @@ void Program::setUniform(std::string_view name, const glm::ivec2& value) const {
   glProgramUniform2iv(mId, uniformLocation(name), 1, glm::value_ptr(value));
 }
 
+void Program::setUniform(std::string_view name, const glm::ivec3& value) const {
+  glProgramUniform3iv(mId, uniformLocation(name), 1, glm::value_ptr(value));
+}
+
 void Program::setUniform(std::string_view name, const glm::mat3& value) const {
   glProgramUniformMatrix3fv(mId, uniformLocation(name), 1, GL_FALSE, glm::value_ptr(value));
 }

@@ -56,6 +56,7 @@ class Program {
   void setUniform(std::string_view name, const glm::vec3& value) const;
   void setUniform(std::string_view name, const glm::vec4& value) const;
   void setUniform(std::string_view name, const glm::ivec2& value) const;
+  void setUniform(std::string_view name, const glm::ivec3& value) const;
   void setUniform(std::string_view name, const glm::mat3& value) const;
   void setUniform(std::string_view name, const glm::mat4& value) const;
 

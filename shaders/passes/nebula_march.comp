@@ -1,13 +1,16 @@
 #version 450
 // The nebula's ray march (Barrès 2023), one invocation per pixel, front to back with early
-// termination: the GPU twin of NebulaRenderer::render's projection and light–density methods
-// (techniques/nebula/nebula_render.cpp), sample for sample. It writes each pixel's moments on the
-// orthonormalised basis, not its colour: projection, per star s and element j, Σ w_s·cⱼ(g + g_s);
-// light–density, per 2D element k, Σ ρΔt·d_k·cⱼ(g); and the emission lines' colour.
+// termination: the GPU twin of NebulaRenderer::render's projection, light–density and reference
+// methods (techniques/nebula/nebula_render.cpp), sample for sample. Projection and light–density
+// write each pixel's moments on the orthonormalised basis, not its colour: projection, per star s
+// and element j, Σ w_s·cⱼ(g + g_s); light–density, per 2D element k, Σ ρΔt·d_k·cⱼ(g);
 // nebula_finish.comp turns the moments into channels through the filters' weights, so a filter
-// change re-runs only that pass.
+// change re-runs only that pass. The reference (the paper's double integration, its baseline)
+// integrates over wavelength at every sample, per star, through the renderer's nodes and weights,
+// into the colour directly. All add the emission lines' colour.
 //
-// Defines: NEBULA_LIGHT_DENSITY selects the light–density method (else projection).
+// Defines: NEBULA_LIGHT_DENSITY selects the light–density method, NEBULA_REFERENCE the
+// reference (else projection).
 //
 // Grids are read with texelFetch and interpolated here, between voxel centres as the CPU does
 // (nebula_march.glsl's axis), not by the sampler: hardware trilinear filtering quantises its
@@ -35,6 +38,9 @@ layout(std430, binding = 3) readonly buffer Lines { vec4 lines[]; };  // λ (µm
 layout(std430, binding = 4) buffer Moments { float moments[]; };
 layout(std430, binding = 5) writeonly buffer LineColour { vec4 lineColour[]; };
 layout(std430, binding = 6) readonly buffer BasisMatrix { float basisM[]; };  // M(k, j) at [8k + j]
+// Reference: per star s and channel c, node k at [(s·3 + c)·uNodeStride + k]: (λ µm, weight),
+// each channel's nodes padded to a multiple of 16 with weight 0.
+layout(std430, binding = 7) readonly buffer ReferenceNodes { vec2 referenceNodes[]; };
 
 uniform ivec2 uSize;
 uniform vec3 uCameraPosition;
@@ -56,6 +62,8 @@ uniform float uMomentStep;
 uniform int uMomentSize;         // entries from x = 0 to the table's end
 uniform float uBandLoUm;
 uniform float uBandHiUm;
+uniform ivec3 uNodeCount;        // reference: nodes per channel
+uniform int uNodeStride;
 
 // cₖ(x) for k < 4 (lo) and 4…7 (hi): the table's Catmull–Rom, or beyond it Σⱼ M(k,j)·mⱼ(x) over
 // the raw moments' closed form (the CPU's coefficientsAt in NebulaRenderer::render).
@@ -156,7 +164,11 @@ void main() {
   if (px.x >= uSize.x || px.y >= uSize.y) return;
   int pixel = px.y * uSize.x + px.x;  // row 0 at the top, as the CPU's image
   int pixelCount = uSize.x * uSize.y;
+#ifdef NEBULA_REFERENCE
+  int values = 0;  // the colour directly, no moments
+#else
   int values = uCount * uCard;
+#endif
   for (int v = 0; v < values; ++v) moments[v * pixelCount + pixel] = 0.0f;
   ivec3 n = textureSize(uDensity, 0);
 
@@ -191,6 +203,27 @@ void main() {
           int base = (slab * 4 + c) * uCard;
           for (int j = 0; j < uCard; ++j)
             moments[(base + j) * pixelCount + pixel] += w * d[c] * (j < 4 ? mLo[j] : mHi[j - 4]);
+        }
+      }
+#elif defined(NEBULA_REFERENCE)
+      for (int slab = 0; slab * 4 < uCount; ++slab) {
+        vec4 gs = fieldAt(cell, slab, n.z);
+        for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
+          int s = slab * 4 + c;
+          vec3 toStar = stars[s].xyz - p;
+          float w = nebulaStarWeight(uScattering * rho * dt, stars[s].w, dot(toStar, toStar));
+          float x = g + gs[c];
+          vec3 sum = vec3(0.0f);
+          // In chunks of 16 (padded with zero weights), a loop of constant count the compiler
+          // unrolls: Mesa's llvmpipe stops a shader's loops after 65 535 iterations an invocation,
+          // nested loops counted together, which a node loop over 100 steps × stars would pass.
+          for (int ch = 0; ch < 3; ++ch)
+            for (int k0 = 0; k0 < uNodeCount[ch]; k0 += 16)
+              for (int u = 0; u < 16; ++u) {
+                vec2 node = referenceNodes[(s * 3 + ch) * uNodeStride + k0 + u];
+                sum[ch] += node.y * nebulaAttenuation(x, node.x);
+              }
+          colour += w * sum;
         }
       }
 #else

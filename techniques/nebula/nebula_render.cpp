@@ -321,6 +321,45 @@ void buildPreIntegration(NebulaPrecomputed& pre) {
 }
 }  // namespace
 
+NebulaRenderer::ReferenceNodes NebulaRenderer::referenceNodes(const RenderSettings& s) const {
+  const NebulaPrecomputed& pre = *mPre;
+  if (s.referenceIntervals < 2 || s.referenceIntervals % 2) throw Error("nebula: reference intervals must be even and ≥ 2");
+  const std::size_t starCount = pre.model.stars.size();
+  ReferenceNodes nodes;
+  auto& refLambda = nodes.lambdaUm;
+  auto& refWeight = nodes.weights;
+  refWeight.resize(starCount);
+  for (std::size_t c = 0; c < 3; ++c) {
+    const Passband& band = pre.filters.channels[c];
+    std::vector<double> w;
+    if (s.uniformSamples > 0) {
+      int n = std::max(2, s.uniformSamples);
+      double a = band.response.lambdaMinUm(), b = band.response.lambdaMaxUm(), h = (b - a) / (n - 1);
+      for (int i = 0; i < n; ++i) {
+        double l = a + h * i;
+        refLambda[c].push_back(l);
+        w.push_back((i == 0 || i == n - 1 ? 0.5 : 1.0) * h * band.response.at(l));
+      }
+    } else {
+      for (const auto& piece : band.response.pieces) {
+        int n = s.referenceIntervals;
+        double h = (piece.lambda1Um - piece.lambda0Um) / n;
+        for (int i = 0; i <= n; ++i) {
+          double l = piece.lambda0Um + h * i;
+          refLambda[c].push_back(l);
+          w.push_back((i == 0 || i == n ? 1.0 : (i % 2 ? 4.0 : 2.0)) * h / 3.0 * piece.at(l));
+        }
+      }
+    }
+    for (std::size_t st = 0; st < starCount; ++st) {
+      std::vector<double> ws(w.size());
+      for (std::size_t i = 0; i < w.size(); ++i) ws[i] = w[i] * pre.spectra[st].at(refLambda[c][i]);
+      refWeight[st][c] = std::move(ws);
+    }
+  }
+  return nodes;
+}
+
 NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
   const NebulaPrecomputed& pre = *mPre;
   if (s.method == Method::PreIntegration) std::call_once(mPre->preIntegratedOnce, [this] { buildPreIntegration(*mPre); });
@@ -333,40 +372,10 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
   const std::size_t starCount = m.stars.size();
   const float l0 = static_cast<float>(kBandLoUm), l1 = static_cast<float>(kBandHiUm);
 
-  // Reference: per channel, nodes and weights P_S(λ)·w (Simpson per piece, or uniform trapezoid),
-  // and per star the node weights times the star's exact spectrum.
-  std::array<std::vector<double>, 3> refLambda;
-  std::vector<std::array<std::vector<double>, 3>> refWeight(starCount);
-  if (s.method == Method::Reference) {
-    for (std::size_t c = 0; c < 3; ++c) {
-      const Passband& band = pre.filters.channels[c];
-      std::vector<double> w;
-      if (s.uniformSamples > 0) {
-        int n = std::max(2, s.uniformSamples);
-        double a = band.response.lambdaMinUm(), b = band.response.lambdaMaxUm(), h = (b - a) / (n - 1);
-        for (int i = 0; i < n; ++i) {
-          double l = a + h * i;
-          refLambda[c].push_back(l);
-          w.push_back((i == 0 || i == n - 1 ? 0.5 : 1.0) * h * band.response.at(l));
-        }
-      } else {
-        for (const auto& piece : band.response.pieces) {
-          int n = s.referenceIntervals;
-          double h = (piece.lambda1Um - piece.lambda0Um) / n;
-          for (int i = 0; i <= n; ++i) {
-            double l = piece.lambda0Um + h * i;
-            refLambda[c].push_back(l);
-            w.push_back((i == 0 || i == n ? 1.0 : (i % 2 ? 4.0 : 2.0)) * h / 3.0 * piece.at(l));
-          }
-        }
-      }
-      for (std::size_t st = 0; st < starCount; ++st) {
-        std::vector<double> ws(w.size());
-        for (std::size_t i = 0; i < w.size(); ++i) ws[i] = w[i] * pre.spectra[st].at(refLambda[c][i]);
-        refWeight[st][c] = std::move(ws);
-      }
-    }
-  }
+  ReferenceNodes reference;
+  if (s.method == Method::Reference) reference = referenceNodes(s);
+  const auto& refLambda = reference.lambdaUm;
+  const auto& refWeight = reference.weights;
 
   const NebulaCamera& cam = m.camera;
   glm::dvec3 forward = glm::normalize(cam.target - cam.position);

@@ -18,6 +18,7 @@
 // (exact in every method). A channel is ∫ P_S(λ)·L(λ) dλ through its fitted passband P_S.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -113,6 +114,15 @@ class NebulaRenderer {
   const ExpBasis& basis() const;
   const GreedyResult& lightBasis() const;
   const NebulaModel& model() const;
+
+  // The reference method's wavelength nodes per channel and, per star, their weights P_S(λ)·w·S(λ):
+  // composite Simpson over each passband piece (settings.referenceIntervals), or
+  // settings.uniformSamples per channel by the trapezoid rule. The CPU and GPU marchers' one source.
+  struct ReferenceNodes {
+    std::array<std::vector<double>, 3> lambdaUm;
+    std::vector<std::array<std::vector<double>, 3>> weights;  // [star][channel][node]
+  };
+  ReferenceNodes referenceNodes(const RenderSettings& settings) const;
   // What it precomputed (nebula_precomputed.h): the GPU marcher uploads these arrays.
   const NebulaPrecomputed& precomputed() const;
 

@@ -81,6 +81,7 @@ NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
     : mRenderer(renderer),
       mProjection(computeProgram("nebula_march.comp", "nebula march (projection)")),
       mLightDensity(computeProgram("nebula_march.comp", "nebula march (light-density)", {{"NEBULA_LIGHT_DENSITY", ""}})),
+      mReference(computeProgram("nebula_march.comp", "nebula march (reference)", {{"NEBULA_REFERENCE", ""}})),
       mFinish(computeProgram("nebula_finish.comp", "nebula finish")) {
   const NebulaPrecomputed& pre = renderer.precomputed();
   const DensityGrid& d = pre.model.density;
@@ -127,11 +128,14 @@ NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
   mLightWeights = bufferOf(light, "nebula light-density weights");
 }
 
-bool NebulaGpuMarcher::supports(Method method) { return method == Method::Projection || method == Method::LightDensity; }
+bool NebulaGpuMarcher::supports(Method method) {
+  return method == Method::Projection || method == Method::LightDensity || method == Method::Reference;
+}
 
 void NebulaGpuMarcher::march(const RenderSettings& s) {
   if (!supports(s.method))
-    throw Error(fmt::format("nebula --gpu: the GPU marches projection and light-density, not {}", methodName(s.method)));
+    throw Error(fmt::format("nebula --gpu: the GPU marches projection, light-density and reference, not {}",
+                            methodName(s.method)));
   if (s.steps < 1) throw Error("nebula: steps must be ≥ 1");
   const NebulaPrecomputed& pre = mRenderer.precomputed();
   const NebulaModel& m = pre.model;
@@ -139,8 +143,25 @@ void NebulaGpuMarcher::march(const RenderSettings& s) {
   if (s.basisSize != mCard)
     throw Error(fmt::format("nebula: the renderer was built for a basis of {} elements, not {}", mCard, s.basisSize));
   mMarched = s.method;
-  const bool light = s.method == Method::LightDensity;
-  mCount = light ? pre.lightCount : static_cast<int>(m.stars.size());
+  const bool light = s.method == Method::LightDensity, reference = s.method == Method::Reference;
+  mCount = light ? pre.lightCount : reference ? 0 : static_cast<int>(m.stars.size());
+  glm::ivec3 nodeCount(0);
+  int nodeStride = 0;
+  if (reference) {  // [(star·3 + channel)·stride + node]: (λ, weight), in chunks of 16 (nebula_march.comp)
+    NebulaRenderer::ReferenceNodes nodes = mRenderer.referenceNodes(s);
+    for (int c = 0; c < 3; ++c) {
+      nodeCount[c] = (static_cast<int>(nodes.lambdaUm[static_cast<std::size_t>(c)].size()) + 15) / 16 * 16;
+      nodeStride = std::max(nodeStride, nodeCount[c]);
+    }
+    // Padding: weight 0 at 1 µm (a finite e^(−x/λ) times nothing).
+    std::vector<glm::vec2> packed(m.stars.size() * 3 * static_cast<std::size_t>(nodeStride), glm::vec2(1.0f, 0.0f));
+    for (std::size_t st = 0; st < m.stars.size(); ++st)
+      for (std::size_t c = 0; c < 3; ++c)
+        for (std::size_t k = 0; k < nodes.lambdaUm[c].size(); ++k)
+          packed[(st * 3 + c) * static_cast<std::size_t>(nodeStride) + k] =
+              glm::vec2(static_cast<float>(nodes.lambdaUm[c][k]), static_cast<float>(nodes.weights[st][c][k]));
+    mReferenceNodes = bufferOf(packed, "nebula reference nodes");
+  }
   const NebulaCamera& cam = m.camera;
   const std::size_t pixels = static_cast<std::size_t>(cam.width) * static_cast<std::size_t>(cam.height);
   const std::size_t momentBytes = std::max<std::size_t>(1, static_cast<std::size_t>(mCount * mCard) * pixels) * sizeof(float);
@@ -154,7 +175,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s) {
   glm::dvec3 forward = glm::normalize(cam.target - cam.position);
   glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
   glm::dvec3 up = glm::cross(right, forward);
-  const gpu::Program& p = light ? mLightDensity : mProjection;
+  const gpu::Program& p = light ? mLightDensity : reference ? mReference : mProjection;
   p.setUniform("uSize", glm::ivec2(cam.width, cam.height));
   p.setUniform("uCameraPosition", glm::vec3(cam.position));
   p.setUniform("uForward", glm::vec3(forward));
@@ -166,8 +187,10 @@ void NebulaGpuMarcher::march(const RenderSettings& s) {
   p.setUniform("uDepthPerDensity", static_cast<float>(kCtUm * m.extinction));
   setIfActive(p, "uScattering", static_cast<float>(m.scattering));
   setIfActive(p, "uEmission", static_cast<float>(m.emission));
-  p.setUniform("uCount", mCount);
-  p.setUniform("uCard", mCard);
+  p.setUniform("uCount", reference ? static_cast<int>(m.stars.size()) : mCount);
+  setIfActive(p, "uCard", mCard);
+  setIfActive(p, "uNodeCount", nodeCount);
+  setIfActive(p, "uNodeStride", nodeStride);
   setIfActive(p, "uLineCount", s.emissionLines ? static_cast<int>(pre.lineLambdaUm.size()) : 0);
   setIfActive(p, "uBasisLo", pre.basisLo);
   setIfActive(p, "uBasisHi", pre.basisHi);
@@ -184,6 +207,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s) {
   mMoments.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
   mLineColour.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
   mBasisMatrix.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+  if (reference) mReferenceNodes.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   gpu::runCompute(p, {static_cast<GLuint>((cam.width + 7) / 8), static_cast<GLuint>((cam.height + 7) / 8), 1});
 }
 
@@ -220,7 +244,8 @@ const std::vector<float>& NebulaGpuMarcher::finishWeights() const {
 std::size_t NebulaGpuMarcher::gpuMemoryBytes() const {
   return mDensity.sizeBytes() + mStarDepth.sizeBytes() + mLightCoefficients.sizeBytes() + mMomentLo.sizeBytes() +
          mMomentHi.sizeBytes() + mBasisMatrix.sizeBytes() + mStars.sizeBytes() + mLines.sizeBytes() + mProjectionWeights.sizeBytes() +
-         mLightWeights.sizeBytes() + mMoments.sizeBytes() + mLineColour.sizeBytes() + mColour.sizeBytes();
+         mLightWeights.sizeBytes() + mMoments.sizeBytes() + mLineColour.sizeBytes() + mColour.sizeBytes() +
+         mReferenceNodes.sizeBytes();
 }
 
 }  // namespace prism::nebula

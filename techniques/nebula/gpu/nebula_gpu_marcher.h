@@ -1,9 +1,9 @@
-// The nebula's GPU ray marcher (Barrès 2023): the projection and light–density methods of
-// NebulaRenderer::render as two compute passes over what a NebulaRenderer precomputed
+// The nebula's GPU ray marcher (Barrès 2023): the projection, light–density and reference methods
+// of NebulaRenderer::render as compute passes over what a NebulaRenderer precomputed
 // (nebula_precomputed.h), uploaded once: the density grid as a 3D texture, each star's optical
 // depth per voxel (projection) or the 2D basis's light coefficients per voxel (light–density) as
 // a second one, four values a texel; the table of the basis's coefficients, stars and lines as
-// buffers.
+// buffers; the reference's wavelength nodes and weights per march (they follow its settings).
 //   march   shaders/passes/nebula_march.comp: front to back, early termination, per pixel the
 //           moments on the basis (per star, or per 2D element) and the emission lines' colour
 //   finish  shaders/passes/nebula_finish.comp: the filters' weights times the moments; a filter
@@ -30,7 +30,8 @@ class NebulaGpuMarcher {
   // field's slabs exceed GL_MAX_3D_TEXTURE_SIZE along z (nz·⌈stars/4⌉: 2048 allows 64 stars at 128³).
   explicit NebulaGpuMarcher(const NebulaRenderer& renderer);
 
-  // Whether the GPU marches `method` (projection and light–density).
+  // Whether the GPU marches `method` (projection, light–density and the reference: the paper's
+  // double integration, the baseline its speed is measured against).
   static bool supports(Method method);
 
   // Marches every pixel (settings: method, steps, emission lines; the basis sizes are the
@@ -52,14 +53,14 @@ class NebulaGpuMarcher {
 
  private:
   const NebulaRenderer& mRenderer;
-  gpu::Program mProjection, mLightDensity, mFinish;
+  gpu::Program mProjection, mLightDensity, mReference, mFinish;
   gpu::Texture3D mDensity, mStarDepth, mLightCoefficients;
   gpu::Buffer mMomentLo, mMomentHi, mBasisMatrix, mStars, mLines;
   std::vector<float> mProjectionWeightValues, mLightWeightValues;
   gpu::Buffer mProjectionWeights, mLightWeights;
-  gpu::Buffer mMoments, mLineColour, mColour;
+  gpu::Buffer mMoments, mLineColour, mColour, mReferenceNodes;
   Method mMarched = Method::Projection;
-  int mCount = 0;  // moment groups of the last march: stars, or 2D elements
+  int mCount = 0;  // moment groups of the last march: stars, or 2D elements (none for the reference)
   int mCard = 0;
 };
 

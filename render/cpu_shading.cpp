@@ -60,7 +60,7 @@ class CpuShadingCore {
   vec3 shade(const render::GBufferTexel& texel, vec2 uv, const CameraTransform& camera) override { \
     if (texel.materialId == 0) {                                                                   \
       return shadeBackground(mIn.frame.constants, worldFromDepth(camera.inverseViewProjection, uv, 1.0f), \
-                             camera.position);                                                     \
+                             camera.position, uv);                                                 \
     }                                                                                              \
     SurfaceSample s;                                                                               \
     s.position = worldFromDepth(camera.inverseViewProjection, uv, texel.depth);                    \

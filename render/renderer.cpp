@@ -357,6 +357,11 @@ void Renderer::gbufferPass() {
   }
 }
 
+TechniqueFrame Renderer::techniqueFrame() const {
+  return {mSettings.width, mSettings.height, mTargets.depth.id(), mSettings.mode == RenderMode::Rgb,
+          mSettings.mode == RenderMode::Reference};
+}
+
 // Each technique's GPU work for this frame (the sky's tables, recomputed every frame so that the
 // sun and the atmosphere can change live), timed under the technique's key; made on first use.
 void Renderer::techniquePasses() {
@@ -365,7 +370,7 @@ void Renderer::techniquePasses() {
     if (pass == mTechniquePasses.end()) pass = mTechniquePasses.emplace(block.key, makeTechniquePass(block.key)).first;
     if (!pass->second) continue;
     if (!pass->second->drawsForward()) hook(block.key);  // else its forward pass is what is timed
-    pass->second->run(block, mScene, mCameraTransform);
+    pass->second->run(block, mScene, mCameraTransform, techniqueFrame());
   }
 }
 
@@ -388,8 +393,8 @@ void Renderer::forwardTechniques() {
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE);
-    pass->second->drawForward({mScene, mCameraTransform, *mContext.tristimulusObserver, mTable,
-                               mSettings.mode == RenderMode::Rgb, mSettings.mode == RenderMode::Reference});
+    pass->second->drawForward({mScene, mCameraTransform, *mContext.tristimulusObserver, mTable, techniqueFrame()});
+    glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);

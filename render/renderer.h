@@ -60,7 +60,7 @@ class Renderer {
 
   // Pass boundaries for timing (e.g. gpu timer scopes): called with "shadow", "gbuffer",
   // "atmosphere" (scenes with a sky), "lighting", "prt" (the forward pass of scenes with PRT
-  // objects), "forward", "post" before each pass and with "" after the last.
+  // objects), "nebula" (the nebula's march and composite), "forward", "post" before each pass and with "" after the last.
   using PassHook = std::function<void(std::string_view pass)>;
   void setPassHook(PassHook hook) { mPassHook = std::move(hook); }
 
@@ -118,6 +118,7 @@ class Renderer {
   void forwardTechniques();
   void postPass();
   void techniquePasses();
+  TechniqueFrame techniqueFrame() const;
   void uploadFrameData();
 
   const Scene& mScene;

@@ -22,6 +22,18 @@
 
 namespace prism {
 
+// The frame a technique's passes work in: its size, the G-buffer's depth (GL texture name;
+// DEPTH_COMPONENT, window depth, 1 where nothing was drawn: for a pass that marches a volume up
+// to the scene's surfaces, the nebula's) and its mode, for a technique with baselines of its own:
+// RGB (PRT draws RGB-PRT) or the many-wavelength reference (PRT draws its 5 nm reference, the
+// nebula marches its double integration); otherwise the section decides.
+struct TechniqueFrame {
+  int width = 0, height = 0;
+  unsigned depthTexture = 0;
+  bool rgbMode = false;
+  bool referenceMode = false;
+};
+
 // What a technique's forward pass draws with. The renderer has bound the accumulation target with
 // the G-buffer's depth (in which the technique's objects were drawn, the lighting pass leaving
 // their pixels black), depth test LEQUAL without depth writes, additive blending; the pass adds
@@ -34,17 +46,18 @@ struct ForwardDrawInput {
   const CameraTransform& camera;
   const Observer& observer;
   const RgbToSpectrumTable& table;  // the scene's colour space's (albedo upsampling)
-  // The frame's mode, for a technique with baselines of its own: RGB (PRT draws RGB-PRT) or the
-  // many-wavelength reference (PRT draws its 5 nm reference); otherwise the section decides.
-  bool rgbMode = false;
-  bool referenceMode = false;
+  // A pass that composites a volume rather than drawing objects (the nebula's) may turn the depth
+  // test off, and turns it back on.
+  TechniqueFrame frame;
 };
 
 class TechniquePass {
  public:
   virtual ~TechniquePass() = default;
-  // This frame's work, from the technique's block, the scene (its lights) and the camera.
-  virtual void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera) = 0;
+  // This frame's work, from the technique's block, the scene (its lights) and the camera, after
+  // the G-buffer pass and before lighting.
+  virtual void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera,
+                   const TechniqueFrame& frame) = 0;
   // Binds what the lighting pass reads of it (the bindings its shared GLSL header declares).
   virtual void bindForLighting() const = 0;
   virtual std::size_t gpuMemoryBytes() const = 0;

@@ -4,7 +4,8 @@
 #   share of the window, and two of one mode two frames apart do not;
 # - the left view's tristimulus (EXR) in the two modes differ by the renderer's own measure;
 # - the split view's heat map compares the two modes and finds them apart;
-# - under the spectral sky, moving the sun (the sky panel's setting) changes the view.
+# - under the spectral sky, moving the sun (the sky panel's setting) changes the view;
+# - in the nebula scene, the palette changes the view and the reference mode does not.
 # Usage: viewer_window_test.sh PRISM SCENES_DIR SCRATCH_DIR
 set -euo pipefail
 prism=$1 scenes=$2 scratch=$3
@@ -68,3 +69,22 @@ xvfb-run -a -s "-screen 0 1024x768x24" "$prism" view "$scenes/sunset.json" --wid
 sky=$(mean "$scratch/sky_low.exr" "$scratch/sky_high.exr")
 echo "sunset, sun at 3° vs 30°: mean ΔE00 $sky"
 [ -n "$sky" ] && awk -v d="$sky" 'BEGIN { exit !(d > 3.0) }'
+
+# The nebula (its panel drawn every frame): the Hubble palette against natural colour differ; the
+# renderer's reference mode (the paper's double integration) against projection does not.
+cat >"$scratch/nebula_script" <<SCRIPT
+frames 2
+screenshot $scratch/nebula_hubble.exr
+set nebula.filters cie1931
+frames 2
+screenshot $scratch/nebula_natural.exr
+set mode reference
+frames 1
+screenshot $scratch/nebula_reference.exr
+SCRIPT
+xvfb-run -a -s "-screen 0 1024x768x24" "$prism" view "$scenes/nebula_field.json" --width 240 --height 240 \
+  --script "$scratch/nebula_script"
+palette=$(mean "$scratch/nebula_hubble.exr" "$scratch/nebula_natural.exr")
+method=$(mean "$scratch/nebula_natural.exr" "$scratch/nebula_reference.exr")
+echo "nebula, Hubble palette vs natural colour: mean ΔE00 $palette; projection vs reference: mean ΔE00 $method"
+[ -n "$palette" ] && [ -n "$method" ] && awk -v p="$palette" -v m="$method" 'BEGIN { exit !(p > 3.0 && m < 0.5) }'

@@ -46,6 +46,9 @@ vec4 frameMaterialSpectrum(int s, int b, int j) {
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
 #include "common_sky_lighting.glsl"
 #endif
+#ifdef PRISM_TECHNIQUE_NEBULA
+#include "common_nebula_lighting.glsl"
+#endif
 
 float shadowDepthAt(int layer, int x, int y) {
   return texelFetch(uShadowMaps, ivec3(x, y, layer), 0).r;
@@ -65,7 +68,7 @@ void main() {
   if (id == 0u) {
     // No geometry: the far plane through this pixel, reconstructed from depth 1.
     vec3 farPoint = worldFromDepth(frame.inverseViewProjection, (vec2(p) + 0.5) / frame.viewportSize, 1.0);
-    oTristimulus = vec4(shadeBackground(frame, farPoint, frame.cameraPositionW), 1.0);
+    oTristimulus = vec4(shadeBackground(frame, farPoint, frame.cameraPositionW, (vec2(p) + 0.5) / frame.viewportSize), 1.0);
     return;
   }
   vec4 am = texelFetch(gAlbedoMetallic, p, 0);

@@ -9,6 +9,9 @@
 // integrates over wavelength at every sample, per star, through the renderer's nodes and weights,
 // into the colour directly. All add the emission lines' colour.
 //
+// In a scene of the renderer (gpu/nebula_pass.h) the rays are its camera's and stop at its
+// surfaces (uSceneDepth); samples beyond a surface are left out, the others keep their steps.
+//
 // Defines: NEBULA_LIGHT_DENSITY selects the light–density method, NEBULA_REFERENCE the
 // reference (else projection).
 //
@@ -64,6 +67,28 @@ uniform float uBandLoUm;
 uniform float uBandHiUm;
 uniform ivec3 uNodeCount;        // reference: nodes per channel
 uniform int uNodeStride;
+
+// The scene in front of the nebula (nebula_gpu_marcher.h's MarchView): each ray stops at its
+// surface. GL window depth, row 0 at the bottom, 1 where nothing was drawn.
+layout(binding = 2) uniform sampler2D uSceneDepth;
+uniform int uHasDepth;
+uniform mat4 uInverseProjection;  // window depth → view space (world units)
+uniform float uCubePerWorld;
+
+// The camera's optical depth g (µm) where each ray stopped, for the lighting pass to dim what
+// lies behind the nebula by e^(−g/λ) (shared/nebula_lighting.glsl); row 0 at the bottom.
+layout(r32f, binding = 0) uniform writeonly image2D uOpticalDepth;
+
+// How far the ray through pixel px may go, in the cube's units: to the scene's surface, or on.
+float rayLimit(ivec2 px) {
+  if (uHasDepth == 0) return 1e30f;
+  ivec2 texel = ivec2(px.x, uSize.y - 1 - px.y);
+  float d = texelFetch(uSceneDepth, texel, 0).r;
+  if (d >= 1.0f) return 1e30f;
+  vec2 ndc = (vec2(texel) + 0.5f) / vec2(uSize) * 2.0f - 1.0f;
+  vec4 v = uInverseProjection * vec4(ndc, 2.0f * d - 1.0f, 1.0f);
+  return length(v.xyz / v.w) * uCubePerWorld;
+}
 
 // cₖ(x) for k < 4 (lo) and 4…7 (hi): the table's Catmull–Rom, or beyond it Σⱼ M(k,j)·mⱼ(x) over
 // the raw moments' closed form (the CPU's coefficientsAt in NebulaRenderer::render).
@@ -178,12 +203,15 @@ void main() {
   vec3 colour = vec3(0.0f);
   float t0;
   float t1;
+  float gCam = 0.0f;
   if (clipToCube(uCameraPosition, dir, t0, t1)) {
     float dt = (t1 - t0) / float(uSteps);
-    float gCam = 0.0f;
+    float tLimit = rayLimit(px);
     for (int i = 0; i < uSteps; ++i) {
       if (nebulaRayOpaque(gCam)) break;
-      vec3 p = uCameraPosition + dir * (t0 + (float(i) + 0.5f) * dt);
+      float t = t0 + (float(i) + 0.5f) * dt;
+      if (t > tLimit) break;  // behind the scene's surface
+      vec3 p = uCameraPosition + dir * t;
       Cell cell = cellAt(p, n);
       float rho = densityAt(p, cell);
       if (rho <= 0.0f) continue;
@@ -244,4 +272,5 @@ void main() {
     }
   }
   lineColour[pixel] = vec4(colour, 0.0f);
+  imageStore(uOpticalDepth, ivec2(px.x, uSize.y - 1 - px.y), vec4(gCam));
 }

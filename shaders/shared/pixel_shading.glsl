@@ -17,7 +17,7 @@
 // Techniques specialise the file at compile time, never by a run-time test per pixel: the
 // includer defines PRISM_TECHNIQUE_<NAME> for each technique of the scene (the renderer compiles
 // and caches one lighting program per combination; the CPU twin compiles every combination).
-// Variants: PRISM_TECHNIQUE_WATER PRISM_TECHNIQUE_ATMOSPHERE
+// Variants: PRISM_TECHNIQUE_WATER PRISM_TECHNIQUE_ATMOSPHERE PRISM_TECHNIQUE_NEBULA
 //
 // Under water (PRISM_TECHNIQUE_WATER, underwater.glsl) a directional light is the sun above the
 // surface: its irradiance at a point is attenuated by e^(−Kd·depth), and it single-scatters into
@@ -31,11 +31,16 @@
 // ((1 − metallic)·albedo/π, conductors none; no occlusion: the sky is not shadowed); and the
 // aerial-perspective volume fogs what the camera sees: L·T + S.
 //
+// With a nebula (PRISM_TECHNIQUE_NEBULA, nebula_lighting.glsl) what the camera sees of a surface
+// or of the background is dimmed by e^(−g/λ) per wavelength, g the optical depth of the nebula in
+// front of it (nebulaOpticalDepthAt(uv), from the nebula's march); the nebula's own light its
+// pass adds after this one.
+//
 // Loop order: per light, the wavelength-independent terms (incidence, shadow, D·G) once; then
 // per batch the albedo spectrum once and every light's contribution, accumulated straight into
 // tristimulus through the batch's integration matrix (integration is linear, so the order of
 // lights and batches does not matter).
-// Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl underwater.glsl atmosphere_model.glsl pixel_shading_accessors.glsl atmosphere_luts_accessors.glsl atmosphere_luts.glsl atmosphere_lighting_accessors.glsl atmosphere_lighting.glsl
+// Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl underwater.glsl atmosphere_model.glsl pixel_shading_accessors.glsl atmosphere_luts_accessors.glsl atmosphere_luts.glsl atmosphere_lighting_accessors.glsl atmosphere_lighting.glsl nebula_lighting.glsl nebula_lighting_accessors.glsl
 
 // m·(p, 1), summed column by column in this order on both sides: a built-in mat4 × vec4 is
 // free to sum in another order (and to fuse), and shadow-map weights amplify the difference.
@@ -118,7 +123,8 @@ PRISM_INLINE vec3 atmosphereSun() { return -frameLight(frameSky().sunLight).dire
 // σs·E(0)·e^(−Kd·z)/(4π·x), nothing transmitted). Cutting it at the far plane instead would drop
 // e^(−σt·far) of the in-scattering: 11 % at 440 nm looking level in Jerlov I (σt = 0.022 m⁻¹)
 // with a 100 m far plane.
-PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(vec3) cameraPosition) {
+// uv: the pixel's centre in [0, 1]² (the nebula's optical depth is read there).
+PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(vec3) cameraPosition, IN(vec2) uv) {
 #if defined(PRISM_TECHNIQUE_WATER) || defined(PRISM_TECHNIQUE_ATMOSPHERE)
   PRISM_PRECISE vec3 toFar = farPoint - cameraPosition;
   vec3 viewDir = normalize(toFar);
@@ -133,6 +139,11 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
   vec3 cameraKm = planetPosition(frameSky().originKm, cameraPosition);
   vec3 toSun = atmosphereSun();
 #endif
+#ifdef PRISM_TECHNIQUE_NEBULA
+  float nebulaDepthUm = nebulaOpticalDepthAt(uv);
+#else
+  PRISM_UNUSED(uv);
+#endif
   vec3 tristimulus = vec3(0.0f);
   for (int b = 0; b < fc.batchCount; ++b) {
     vec4 radiance = frameLightSpectrum(fc.lightCount, b);
@@ -141,6 +152,9 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
 #endif
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
     radiance = skyBackground(frameAtmosphere(b), b, cameraKm, viewDir, toSun);
+#endif
+#ifdef PRISM_TECHNIQUE_NEBULA
+    radiance *= nebulaTransmittance4(nebulaDepthUm, frameBatch(b).lambdaNm);
 #endif
     tristimulus += integrateBatch(frameBatch(b), radiance);
   }
@@ -151,7 +165,7 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
 PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
                                IN(vec3) cameraPosition, IN(vec2) uv) {
   PRISM_PRECISE vec3 v = normalize(cameraPosition - s.position);
-  PRISM_UNUSED(uv);  // the sky's aerial perspective alone reads it
+  PRISM_UNUSED(uv);  // the sky's aerial perspective and the nebula read it
   GpuMaterial material = frameMaterial(s.material);
   int kind = material.kind;
   int spectra = material.spectra;
@@ -191,6 +205,9 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
   float distanceKm = length(s.position - cameraPosition) * 1e-3f;
 #endif
 
+#ifdef PRISM_TECHNIQUE_NEBULA
+  float nebulaDepthUm = nebulaOpticalDepthAt(uv);
+#endif
   vec3 tristimulus = vec3(0.0f);
   for (int b = 0; b < fc.batchCount; ++b) {
     GpuBatch batch = frameBatch(b);
@@ -236,6 +253,9 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     }
     AerialPerspective ap = aerialPerspectiveAt(b, uv, distanceKm);
     radiance = radiance * ap.transmittance + ap.inScattering;
+#endif
+#ifdef PRISM_TECHNIQUE_NEBULA
+    radiance *= nebulaTransmittance4(nebulaDepthUm, batch.lambdaNm);
 #endif
     tristimulus += integrateBatch(batch, radiance);
   }

@@ -365,6 +365,8 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
   if (s.method == Method::PreIntegration) std::call_once(mPre->preIntegratedOnce, [this] { buildPreIntegration(*mPre); });
   const NebulaModel& m = pre.model;
   if (s.steps < 1) throw Error("nebula: steps must be ≥ 1");
+  if (!s.rayLimits.empty() && s.rayLimits.size() != static_cast<std::size_t>(m.camera.width) * static_cast<std::size_t>(m.camera.height))
+    throw Error("nebula: ray limits must be one a pixel");
   if (s.referenceIntervals < 2 || s.referenceIntervals % 2) throw Error("nebula: reference intervals must be even and ≥ 2");
   const int card = static_cast<int>(pre.basis.a.size());
   if (s.basisSize != card && (s.method == Method::Projection || s.method == Method::LightDensity))
@@ -418,8 +420,11 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
       std::fill(lightAcc.begin(), lightAcc.end(), 0.0f);
       if (clipToCube(cam.position, dir, 1e30, t0, t1)) {
         double dt = (t1 - t0) / s.steps, gCam = 0.0;
+        const double tLimit = s.rayLimits.empty() ? 1e30 : s.rayLimits[row * static_cast<std::size_t>(cam.width) + static_cast<std::size_t>(px)];
         for (int i = 0; i < s.steps; ++i) {
-          glm::dvec3 p = cam.position + dir * (t0 + (i + 0.5) * dt);
+          const double t = t0 + (i + 0.5) * dt;
+          if (t > tLimit) break;  // behind a surface
+          glm::dvec3 p = cam.position + dir * t;
           if (shared::f64::nebulaRayOpaque(gCam)) break;
           double rho = m.density.sample(p);
           if (rho <= 0.0) continue;

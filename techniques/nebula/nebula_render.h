@@ -91,6 +91,10 @@ struct RenderSettings {
   // shared closed form in double, instead of evaluating E₁ per sample; beyond the table, the
   // closed form.
   bool momentTable = true;
+  // Where each pixel's ray stops (a scene's surface in front of or inside the nebula), as a
+  // distance from the camera in the cube's units, row 0 at the top; samples beyond it are left
+  // out, the others keep their places. Empty: no ray stops (the GPU pass's twin, nebula_pass.h).
+  std::vector<double> rayLimits;
   unsigned threads = 0;
 };
 

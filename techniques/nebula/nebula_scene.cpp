@@ -46,20 +46,8 @@ PolynomialPiece readScatteringSpectrum(const schema::Node& n) {
 
 }  // namespace
 
-NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(FileLocation{path.string()}, "cannot open the scene file");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  schema::Document doc{path.string(), {}};
-  nlohmann::json json = schema::parseJson(text, doc.name);
-  schema::Node root(json, "", doc);
-  root.expectObject({"nebula"});
-  schema::Node n = root.child("nebula");
-  n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "stars",
-                  "star_model", "filters", "camera", "steps"});
-  NebulaScene scene;
-  NebulaModel& m = scene.model;
-
+DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, unsigned threads) {
+  DensitySource source;
   schema::Node density = n.child("density");
   density.expectObject({"noise", "file"});
   if (density.has("noise") == density.has("file")) density.fail("give exactly one of 'noise' and 'file'");
@@ -74,25 +62,24 @@ NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads)
     p.bias = noise->number("bias", p.bias, schema::Range::closed(-10.0, 10.0));
     if (noise->has("seed")) p.seed = static_cast<std::uint64_t>(noise->child("seed").integer(schema::Range::atLeast(0)));
     m.density = generateFbm(p, threads);
+    source.noise = p;
   } else {
     schema::Node file = density.child("file");
-    std::filesystem::path dir = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
-    std::filesystem::path resolved;
+    std::filesystem::path dir = std::filesystem::path(n.document().name).parent_path();
+    if (dir.empty()) dir = ".";
     try {
-      resolved = schema::confinedFile(dir, dir, file.string());
+      source.file = schema::confinedFile(dir, dir, file.string());
     } catch (const Error& e) {
       file.fail(e.what());
     }
-    m.density = readDensityFile(resolved);
+    m.density = readDensityFile(source.file);
   }
   m.extinction = n.number("extinction", m.extinction, schema::Range::atLeast(0.0));
   m.scattering = n.number("scattering", m.scattering, schema::Range::atLeast(0.0));
   if (auto spectrum = n.optionalChild("scattering_spectrum")) m.scatteringSpectrum = readScatteringSpectrum(*spectrum);
   m.emission = n.number("emission", m.emission, schema::Range::atLeast(0.0));
   if (auto lines = n.optionalChild("lines")) {
-    static const char* const kGroups[] = {"H I Balmer (case B)", "He I (case B)", "[O III] doublet", "[N II] doublet",
-                                          "[S II] doublet", "[O II] doublet", "[O I] doublet"};
-    std::vector<std::string_view> allowed(std::begin(kGroups), std::end(kGroups));
+    std::vector<std::string_view> allowed(std::begin(kLineGroups), std::end(kLineGroups));
     lines->expectObject(allowed);
     for (const std::string& key : lines->keys())
       m.lineGroups.push_back({key, lines->child(key).number(schema::Range::atLeast(0.0))});
@@ -102,7 +89,7 @@ NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads)
     schema::Node s = stars.element(i);
     s.expectObject({"position", "temperature", "luminosity"});
     m.stars.push_back({dvec3(s.child("position"), schema::Range::closed(-100.0, 100.0)),
-                       s.child("temperature").number(schema::Range::closed(1000.0, 100000.0)),
+                       s.child("temperature").number(schema::Range::closed(kMinStarTemperatureK, kMaxStarTemperatureK)),
                        s.number("luminosity", 1.0, schema::Range::atLeast(0.0))});
   }
   if (n.has("star_model")) {
@@ -116,6 +103,24 @@ NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads)
     if (m.filters != "hubble" && m.filters != "cie1931")
       n.child("filters").fail("must be 'hubble' or 'cie1931', not '" + excerpt(m.filters) + "'");
   }
+  if (n.has("steps")) steps = n.child("steps").integer(schema::Range::closed(1, 100000));
+  return source;
+}
+
+NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(FileLocation{path.string()}, "cannot open the scene file");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  schema::Document doc{path.string(), {}};
+  nlohmann::json json = schema::parseJson(text, doc.name);
+  schema::Node root(json, "", doc);
+  root.expectObject({"nebula"});
+  schema::Node n = root.child("nebula");
+  n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "stars",
+                  "star_model", "filters", "camera", "steps"});
+  NebulaScene scene;
+  NebulaModel& m = scene.model;
+  readNebulaKeys(n, m, scene.steps, threads);
   if (auto cam = n.optionalChild("camera")) {
     cam->expectObject({"position", "target", "fov", "width", "height"});
     if (cam->has("position")) m.camera.position = dvec3(cam->child("position"), schema::Range::closed(-100.0, 100.0));
@@ -125,7 +130,6 @@ NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads)
     if (cam->has("height")) m.camera.height = cam->child("height").integer(schema::Range::closed(1, 8192));
     if (glm::length(m.camera.target - m.camera.position) <= 0.0) cam->fail("position and target must differ");
   }
-  if (n.has("steps")) scene.steps = n.child("steps").integer(schema::Range::closed(1, 100000));
   return scene;
 }
 

@@ -3,12 +3,14 @@
 // scattering, emission lines, stars, camera, filters, ray steps. Errors name the file and the
 // JSON pointer ("scenes/nebula/nebula.json: /nebula/stars/0/temperature: …").
 //
-// The section is read here rather than through the technique seam (techniques/registry.h): the
-// seam's sections pack a block for the rasteriser's lighting pass, and a nebula is a volume that
-// a ray marcher integrates on its own, which that pass has no hook for yet.
+// A scene of the renderer holds a nebula as its "nebula" section (nebula_section.h), which reads
+// the same keys but the camera (readNebulaKeys).
 #pragma once
 
 #include <filesystem>
+#include <optional>
+
+#include "core/json_schema.h"
 
 #include "techniques/nebula/nebula_render.h"
 
@@ -18,6 +20,24 @@ struct NebulaScene {
   NebulaModel model;
   int steps = 100;
 };
+
+// The emission-line groups a scene may name ("lines"), as in data/nebula_lines.csv, and the
+// stars' temperature range.
+inline constexpr const char* kLineGroups[] = {"H I Balmer (case B)", "He I (case B)", "[O III] doublet",
+                                              "[N II] doublet", "[S II] doublet", "[O II] doublet", "[O I] doublet"};
+inline constexpr double kMinStarTemperatureK = 1000.0, kMaxStarTemperatureK = 100000.0;
+
+// Where a model's density came from: noise (which an editor may change and generate again) or a
+// density file (resolved beside the scene file).
+struct DensitySource {
+  std::optional<NoiseParameters> noise;
+  std::filesystem::path file;
+};
+
+// Reads the keys a nebula scene file and a scene's "nebula" section share — density, extinction,
+// scattering, scattering_spectrum, emission, lines, stars, star_model, filters, steps — into `m`
+// and `steps`; the caller says which keys the node may have (schema::Node::expectObject).
+DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, unsigned threads);
 
 NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads = 0);
 

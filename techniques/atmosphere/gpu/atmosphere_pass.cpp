@@ -114,7 +114,8 @@ void AtmospherePass::update(const std::vector<shared::GpuAtmosphere>& batches, c
                   {groups(shared::kAerialPerspectiveSize), groups(shared::kAerialPerspectiveSize), layers}, barriers);
 }
 
-void AtmospherePass::run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera) {
+void AtmospherePass::run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera,
+                         const TechniqueFrame&) {
   const auto sky = block.constantsAs<shared::SkyConstants>();
   std::vector<shared::GpuAtmosphere> batches;
   for (std::size_t b = 0; b < block.dataCount<shared::GpuAtmosphere>(); ++b) {

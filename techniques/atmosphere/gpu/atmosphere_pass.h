@@ -41,7 +41,8 @@ class AtmospherePass final : public TechniquePass {
 
   // The seam: update() from the sky's block (its batches, origin and sun light) and the camera;
   // the lighting pass reads the sky irradiance and the tables.
-  void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera) override;
+  void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera,
+           const TechniqueFrame& frame) override;
   void bindForLighting() const override;
   std::size_t gpuMemoryBytes() const override;
   // The tables and the sky irradiance as AtmosphereTexels.

@@ -128,11 +128,30 @@ NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
   mLightWeights = bufferOf(light, "nebula light-density weights");
 }
 
+MarchView marchView(const NebulaCamera& cam) {
+  // In double, as the CPU marcher builds it, then handed over in float.
+  glm::dvec3 forward = glm::normalize(cam.target - cam.position);
+  glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
+  glm::dvec3 up = glm::cross(right, forward);
+  MarchView v;
+  v.position = glm::vec3(cam.position);
+  v.forward = glm::vec3(forward);
+  v.right = glm::vec3(right);
+  v.up = glm::vec3(up);
+  v.tanHalf = static_cast<float>(std::tan(cam.fovYDeg * std::numbers::pi / 360.0));
+  v.aspect = static_cast<float>(static_cast<double>(cam.width) / cam.height);
+  v.width = cam.width;
+  v.height = cam.height;
+  return v;
+}
+
 bool NebulaGpuMarcher::supports(Method method) {
   return method == Method::Projection || method == Method::LightDensity || method == Method::Reference;
 }
 
-void NebulaGpuMarcher::march(const RenderSettings& s) {
+void NebulaGpuMarcher::march(const RenderSettings& s) { march(s, marchView(mRenderer.model().camera)); }
+
+void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   if (!supports(s.method))
     throw Error(fmt::format("nebula --gpu: the GPU marches projection, light-density and reference, not {}",
                             methodName(s.method)));
@@ -162,27 +181,36 @@ void NebulaGpuMarcher::march(const RenderSettings& s) {
               glm::vec2(static_cast<float>(nodes.lambdaUm[c][k]), static_cast<float>(nodes.weights[st][c][k]));
     mReferenceNodes = bufferOf(packed, "nebula reference nodes");
   }
-  const NebulaCamera& cam = m.camera;
-  const std::size_t pixels = static_cast<std::size_t>(cam.width) * static_cast<std::size_t>(cam.height);
+  const std::size_t pixels = static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height);
   const std::size_t momentBytes = std::max<std::size_t>(1, static_cast<std::size_t>(mCount * mCard) * pixels) * sizeof(float);
   if (mMoments.sizeBytes() != momentBytes) mMoments = gpu::Buffer({momentBytes, nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula moments"});
   if (mLineColour.sizeBytes() != pixels * sizeof(glm::vec4)) {
     mLineColour = gpu::Buffer({pixels * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula line colour"});
     mColour = gpu::Buffer({pixels * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula colour"});
   }
+  if (mOpticalDepth.id() == 0 || mOpticalDepth.width() != view.width || mOpticalDepth.height() != view.height) {
+    gpu::Texture2DDesc depth;
+    depth.width = view.width;
+    depth.height = view.height;
+    depth.internalFormat = GL_R32F;
+    depth.label = "nebula optical depth";
+    mOpticalDepth = gpu::Texture2D(depth);
+  }
+  mSize = {view.width, view.height};
 
-  // The camera as the CPU marcher builds it, in double, then handed over in float.
-  glm::dvec3 forward = glm::normalize(cam.target - cam.position);
-  glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
-  glm::dvec3 up = glm::cross(right, forward);
   const gpu::Program& p = light ? mLightDensity : reference ? mReference : mProjection;
-  p.setUniform("uSize", glm::ivec2(cam.width, cam.height));
-  p.setUniform("uCameraPosition", glm::vec3(cam.position));
-  p.setUniform("uForward", glm::vec3(forward));
-  p.setUniform("uRight", glm::vec3(right));
-  p.setUniform("uUp", glm::vec3(up));
-  p.setUniform("uTanHalf", static_cast<float>(std::tan(cam.fovYDeg * std::numbers::pi / 360.0)));
-  p.setUniform("uAspect", static_cast<float>(static_cast<double>(cam.width) / cam.height));
+  p.setUniform("uSize", mSize);
+  p.setUniform("uCameraPosition", view.position);
+  p.setUniform("uForward", view.forward);
+  p.setUniform("uRight", view.right);
+  p.setUniform("uUp", view.up);
+  p.setUniform("uTanHalf", view.tanHalf);
+  p.setUniform("uAspect", view.aspect);
+  p.setUniform("uHasDepth", view.depthTexture ? 1 : 0);
+  p.setUniform("uInverseProjection", view.inverseProjection);
+  p.setUniform("uCubePerWorld", view.cubePerWorld);
+  if (view.depthTexture) glBindTextureUnit(2, view.depthTexture);
+  mOpticalDepth.bindImage(0, GL_WRITE_ONLY);
   p.setUniform("uSteps", s.steps);
   p.setUniform("uDepthPerDensity", static_cast<float>(kCtUm * m.extinction));
   setIfActive(p, "uScattering", static_cast<float>(m.scattering));
@@ -208,14 +236,12 @@ void NebulaGpuMarcher::march(const RenderSettings& s) {
   mLineColour.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
   mBasisMatrix.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
   if (reference) mReferenceNodes.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
-  gpu::runCompute(p, {static_cast<GLuint>((cam.width + 7) / 8), static_cast<GLuint>((cam.height + 7) / 8), 1});
+  gpu::runCompute(p, {static_cast<GLuint>((view.width + 7) / 8), static_cast<GLuint>((view.height + 7) / 8), 1});
 }
 
-NebulaImage NebulaGpuMarcher::finish() {
-  const NebulaCamera& cam = mRenderer.model().camera;
-  const int pixels = cam.width * cam.height;
-  if (mLineColour.sizeBytes() != static_cast<std::size_t>(pixels) * sizeof(glm::vec4))
-    throw Error("nebula: finish() before march()");
+void NebulaGpuMarcher::finishOnGpu() {
+  const int pixels = mSize.x * mSize.y;
+  if (pixels == 0) throw Error("nebula: finish() before march()");
   mFinish.setUniform("uPixelCount", pixels);
   mFinish.setUniform("uCount", mCount);
   mFinish.setUniform("uCard", mCard);
@@ -224,8 +250,12 @@ NebulaImage NebulaGpuMarcher::finish() {
   (mMarched == Method::LightDensity ? mLightWeights : mProjectionWeights).bindBase(GL_SHADER_STORAGE_BUFFER, 6);
   mColour.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   gpu::runCompute1D(mFinish, static_cast<std::size_t>(pixels));
+}
+
+NebulaImage NebulaGpuMarcher::finish() {
+  finishOnGpu();
   std::vector<glm::vec4> colour = mColour.read<glm::vec4>();
-  NebulaImage image{cam.width, cam.height, std::vector<glm::vec3>(colour.size())};
+  NebulaImage image{mSize.x, mSize.y, std::vector<glm::vec3>(colour.size())};
   for (std::size_t i = 0; i < colour.size(); ++i) image.pixels[i] = glm::vec3(colour[i]);
   return image;
 }
@@ -245,7 +275,7 @@ std::size_t NebulaGpuMarcher::gpuMemoryBytes() const {
   return mDensity.sizeBytes() + mStarDepth.sizeBytes() + mLightCoefficients.sizeBytes() + mMomentLo.sizeBytes() +
          mMomentHi.sizeBytes() + mBasisMatrix.sizeBytes() + mStars.sizeBytes() + mLines.sizeBytes() + mProjectionWeights.sizeBytes() +
          mLightWeights.sizeBytes() + mMoments.sizeBytes() + mLineColour.sizeBytes() + mColour.sizeBytes() +
-         mReferenceNodes.sizeBytes();
+         mReferenceNodes.sizeBytes() + mOpticalDepth.sizeBytes();
 }
 
 }  // namespace prism::nebula

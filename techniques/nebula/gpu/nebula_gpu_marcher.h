@@ -24,6 +24,24 @@
 
 namespace prism::nebula {
 
+// Where a march looks from, in the unit cube's coordinates: a pinhole camera and its image
+// (the ray through pixel (x, y), row 0 at the top, is forward + u·right + v·up, u and v spanning
+// ±tanHalf·aspect and ±tanHalf), and optionally the scene in front of the nebula: a depth texture
+// of the image's size (GL window depth, row 0 at the bottom; 1: nothing there), turned into a
+// distance along each ray by `inverseProjection` (window depth → view space, world units) times
+// `cubePerWorld`: each ray stops there.
+struct MarchView {
+  glm::vec3 position{0.5f, 0.5f, -1.0f};
+  glm::vec3 forward{0.0f, 0.0f, 1.0f}, right{-1.0f, 0.0f, 0.0f}, up{0.0f, 1.0f, 0.0f};
+  float tanHalf = 0.414f, aspect = 1.0f;
+  int width = 128, height = 128;
+  GLuint depthTexture = 0;  // none
+  glm::mat4 inverseProjection{1.0f};
+  float cubePerWorld = 1.0f;
+};
+// The view of a nebula scene's own camera, as the CPU marcher builds its rays.
+MarchView marchView(const NebulaCamera& camera);
+
 class NebulaGpuMarcher {
  public:
   // Uploads the renderer's grids and tables; the renderer must outlive the marcher. Error when a
@@ -37,8 +55,16 @@ class NebulaGpuMarcher {
   // Marches every pixel (settings: method, steps, emission lines; the basis sizes are the
   // renderer's). Error for a method it does not march or a basis size the renderer was not built for.
   void march(const RenderSettings& settings);
+  // The same from another view (the renderer's camera, nebula_pass.h).
+  void march(const RenderSettings& settings, const MarchView& view);
   // Turns the last march's moments into the image through the renderer's filter weights.
   NebulaImage finish();
+  // The same, left on the GPU: colour() holds the image, a vec4 a pixel (alpha 0), row 0 at the top.
+  void finishOnGpu();
+  const gpu::Buffer& colour() const { return mColour; }
+  // The last march's optical depth g (µm) from the camera to where each ray stopped, R32F, the
+  // image's size, row 0 at the bottom (shared/nebula_lighting.glsl).
+  const gpu::Texture2D& opticalDepth() const { return mOpticalDepth; }
   // march + finish.
   NebulaImage render(const RenderSettings& settings);
 
@@ -59,7 +85,9 @@ class NebulaGpuMarcher {
   std::vector<float> mProjectionWeightValues, mLightWeightValues;
   gpu::Buffer mProjectionWeights, mLightWeights;
   gpu::Buffer mMoments, mLineColour, mColour, mReferenceNodes;
+  gpu::Texture2D mOpticalDepth;
   Method mMarched = Method::Projection;
+  glm::ivec2 mSize{0};  // of the last march's image
   int mCount = 0;  // moment groups of the last march: stars, or 2D elements (none for the reference)
   int mCard = 0;
 };

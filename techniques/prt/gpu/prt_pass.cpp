@@ -58,7 +58,7 @@ void PrtPass::precompute(const Scene& scene, const TechniqueProgress& progress) 
 
 PrtPass::PrtPass() : mData(std::make_shared<PrtDrawData>()) {}
 
-void PrtPass::run(const TechniqueBlock&, const Scene&, const CameraTransform&) {}
+void PrtPass::run(const TechniqueBlock&, const Scene&, const CameraTransform&, const TechniqueFrame&) {}
 
 const gpu::Program& PrtPass::program(int basisCount) {
   auto it = mPrograms.find(basisCount);
@@ -122,7 +122,7 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
   PrtDrawData& d = *mData;
   // What the projections depend on, as text: the section, the observer, the materials.
   // The frame's RGB and reference modes draw PRT's own baselines (technique_pass.h).
-  const PrtMode mode = input.rgbMode ? PrtMode::RgbPrt : input.referenceMode ? PrtMode::Reference5nm : section.mode;
+  const PrtMode mode = input.frame.rgbMode ? PrtMode::RgbPrt : input.frame.referenceMode ? PrtMode::Reference5nm : section.mode;
   std::string key = fmt::format("{}|{}|{}|{}|{}", environmentKey(section), section.basis, prtModeName(mode),
                                 input.observer.name, input.scene.colourSpace);
   for (int m : d.materials) {

@@ -49,7 +49,8 @@ class PrtPass final : public TechniquePass {
   PrtPass();
   // The transfer bake of the scene's PRT objects into the cache (precomputeTechniques).
   static void precompute(const Scene& scene, const TechniqueProgress& progress);
-  void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera) override;
+  void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera,
+           const TechniqueFrame& frame) override;
   void bindForLighting() const override {}
   std::size_t gpuMemoryBytes() const override;
   std::shared_ptr<const TechniqueTexels> readTexels() const override { return mData; }

@@ -1,0 +1,154 @@
+#include "techniques/nebula/gpu/nebula_pass.h"
+
+#include <chrono>
+#include <mutex>
+
+#include <fmt/format.h>
+
+#include "core/data_files.h"
+#include "core/error.h"
+#include "spectral/colour_space.h"
+#include "techniques/nebula/nebula_cpu_twin.h"
+
+namespace prism::nebula {
+namespace {
+
+const NebulaSection& sectionOf(const Scene& scene) {
+  const auto* s = scene.techniques.find<NebulaSection>();
+  PRISM_CHECK(s != nullptr);
+  return *s;
+}
+
+// The last section's precomputation, shared by precompute() and the passes (a viewer's second
+// view, the bench's configurations): building it is the slow part (each star's optical depth per
+// voxel).
+std::shared_ptr<const NebulaRenderer> precomputation(const NebulaSection& section, const TechniqueProgress& progress) {
+  static std::mutex mutex;
+  static std::string memoKey;
+  static std::shared_ptr<const NebulaRenderer> memo;
+  const std::string key = section.precomputationKey();
+  std::lock_guard lock(mutex);
+  if (memo && memoKey == key) return memo;
+  RenderSettings basis;
+  basis.basisSize = section.basis;
+  const auto start = std::chrono::steady_clock::now();
+  auto renderer = std::make_shared<const NebulaRenderer>(section.fullModel(), basis, [&](std::size_t done, std::size_t total) {
+    if (progress) progress("nebula precomputation", done, total);
+  });
+  if (!progress)
+    fmt::print(stderr, "nebula precomputation: {}³ voxels, {} star(s) in {:.2f} s\n", section.density->nx,
+               section.model.stars.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  memo = renderer;
+  memoKey = key;
+  return renderer;
+}
+
+gpu::Program compositeProgram() {
+  gpu::ProgramDesc desc;
+  desc.vertex = shaderDirectory() / "passes" / "fullscreen.vert";
+  desc.fragment = shaderDirectory() / "passes" / "nebula_composite.frag";
+  desc.includeDirs = {shaderDirectory()};
+  desc.label = "nebula composite";
+  return gpu::Program(desc);
+}
+
+}  // namespace
+
+MarchView marchView(const NebulaSection& section, const CameraTransform& camera, int width, int height) {
+  // View space's axes in the world are the view matrix's rows; a uniform scale and a translation
+  // take the world to the cube, so directions stay.
+  const glm::mat4& v = camera.view;
+  MarchView view;
+  view.right = glm::normalize(glm::vec3(v[0][0], v[1][0], v[2][0]));
+  view.up = glm::normalize(glm::vec3(v[0][1], v[1][1], v[2][1]));
+  view.forward = -glm::normalize(glm::vec3(v[0][2], v[1][2], v[2][2]));
+  view.tanHalf = 1.0f / camera.projection[1][1];
+  view.aspect = camera.projection[1][1] / camera.projection[0][0];
+  view.position = (camera.position - section.boxMin) / section.boxSize;
+  view.width = width;
+  view.height = height;
+  view.inverseProjection = glm::inverse(camera.projection);
+  view.cubePerWorld = 1.0f / section.boxSize;
+  return view;
+}
+
+glm::mat3 channelsToXyz(const NebulaSection& section) {
+  glm::mat3 m(1.0f);
+  if (section.model.filters == "hubble") {  // the palette's R, G, B as linear sRGB
+    const Eigen::Matrix3d& rgbToXyz = colourSpace("srgb").rgbToXyz;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) m[c][r] = static_cast<float>(rgbToXyz(r, c));
+  }
+  return m * section.intensity;
+}
+
+NebulaPass::NebulaPass() : mComposite(compositeProgram()), mEmpty(gpu::VertexArray::attributeless()) {}
+
+void NebulaPass::precompute(const Scene& scene, const TechniqueProgress& progress) {
+  precomputation(sectionOf(scene), progress);
+}
+
+void NebulaPass::run(const TechniqueBlock&, const Scene& scene, const CameraTransform& camera,
+                     const TechniqueFrame& frame) {
+  const NebulaSection& section = sectionOf(scene);
+  const std::string key = section.precomputationKey();
+  if (!mRenderer || key != mPrecomputationKey) {
+    std::shared_ptr<const NebulaRenderer> renderer = precomputation(section, {});
+    auto marcher = std::make_unique<NebulaGpuMarcher>(*renderer);  // before anything is replaced
+    mMarcher = std::move(marcher);
+    mRenderer = std::move(renderer);
+    mPrecomputationKey = key;
+    mMarchKey.clear();
+  }
+  RenderSettings settings = section.renderSettings();
+  if (frame.referenceMode) {  // the renderer's ground truth: the nebula's own
+    settings.method = Method::Reference;
+    settings.uniformSamples = 0;
+  }
+  MarchView view = marchView(section, camera, frame.width, frame.height);
+  view.depthTexture = frame.depthTexture;
+  // The view and the settings; not the depth: a renderer's meshes never change.
+  const glm::mat4& p = camera.projection;
+  const std::string marchKey =
+      fmt::format("{}|{}|{}|{}|{},{},{}|{},{},{}|{},{},{}|{},{}|{}x{}|{},{},{},{}", methodName(settings.method),
+                  settings.steps, settings.basisSize, settings.uniformSamples, view.position.x, view.position.y,
+                  view.position.z, view.forward.x, view.forward.y, view.forward.z, view.up.x, view.up.y, view.up.z,
+                  view.tanHalf, view.aspect, view.width, view.height, p[2][2], p[3][2], p[2][0], p[2][1]);
+  if (marchKey != mMarchKey || section.marchEveryFrame) {
+    mMarcher->march(settings, view);
+    mMarcher->finishOnGpu();
+    mMarchKey = marchKey;
+    mView = view;
+    mSettings = settings;
+    ++mMarches;
+  }
+}
+
+void NebulaPass::bindForLighting() const {
+  if (mMarcher) mMarcher->opticalDepth().bind(static_cast<GLuint>(shared::kNebulaOpticalDepthUnit));
+}
+
+std::shared_ptr<const TechniqueTexels> NebulaPass::readTexels() const {
+  if (!mMarcher) return nullptr;
+  auto texels = std::make_shared<NebulaTexels>();
+  texels->width = mView.width;
+  texels->height = mView.height;
+  texels->opticalDepthUm = gpu::readTexture2DFloat(mMarcher->opticalDepth(), 1);
+  return texels;
+}
+
+void NebulaPass::drawForward(const ForwardDrawInput& input) {
+  if (!mMarcher) return;
+  const NebulaSection& section = sectionOf(input.scene);
+  glDisable(GL_DEPTH_TEST);  // the march stopped at the surfaces already
+  mComposite.use();
+  mComposite.setUniform("uSize", glm::ivec2(mView.width, mView.height));
+  mComposite.setUniform("uToTristimulus", channelsToXyz(section));
+  mMarcher->colour().bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+  mEmpty.draw(3);
+  glEnable(GL_DEPTH_TEST);
+}
+
+std::size_t NebulaPass::gpuMemoryBytes() const { return mMarcher ? mMarcher->gpuMemoryBytes() : 0; }
+
+}  // namespace prism::nebula

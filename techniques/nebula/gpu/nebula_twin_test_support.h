@@ -1,0 +1,74 @@
+// What the nebula's GPU tests hold the GPU marcher to: its CPU twin, within a bound derived from
+// float rounding (the marcher's own test and the renderer pass's, render/nebula_pass_test.cpp).
+//
+// The twin bound, per pixel and channel, derived from float rounding. Both marchers read the same
+// uploaded arrays at the same samples with the same shared formulas (nebula_march.glsl,
+// nebula_integrals.glsl) and the same float table of coefficients; the GPU rounds in float what
+// the CPU keeps in double: the ray's geometry, the camera's depth, and each pixel's moment sums
+// Σ w·cⱼ over ≤ N steps, then the finish's Σ Wⱼ·mⱼ over G·card terms (G stars or 2D elements).
+// Each addition and product rounds by ≤ 2⁻²⁴ of the magnitudes involved, so
+//   |GPU − CPU| ≤ (N + G·card)·2⁻²⁴·(Σⱼ |Wⱼ·mⱼ| + |CPU| + 1 % of the channel's peak),
+// with Σ|Wⱼ·mⱼ| computed per pixel from the GPU's own moments (it is what the rounding scales
+// with; |CPU| stands for the lines' term, and 1 % of the peak for a sample that the ray's float
+// geometry moves by ~1e-7 of the cube). On the twin nebula Σ|Wⱼ·mⱼ| is 1–3× the channel, since
+// the march accumulates coefficients on the orthonormal basis (nebula_precomputed.h says why).
+// The reference has no moments: it adds N·G sums of K node terms (K the most nodes a channel
+// has) into the colour, so N·G + K terms take the place of N + G·card.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "techniques/nebula/gpu/nebula_gpu_marcher.h"
+
+namespace prism::nebula {
+
+// The largest |GPU − CPU| over its bound (above), over pixels and channels: ≤ 1 passes.
+inline double twinRatio(const NebulaImage& gpuImage, const NebulaImage& cpu, const NebulaGpuMarcher& gpu, int steps,
+                 std::size_t referenceTerms = 0) {
+  EXPECT_EQ(gpuImage.pixels.size(), cpu.pixels.size());
+  const std::vector<float> moments = gpu.readMoments();
+  const std::vector<float>& weights = gpu.finishWeights();
+  const std::size_t pixels = cpu.pixels.size();
+  const auto card = static_cast<std::size_t>(gpu.card()), groups = static_cast<std::size_t>(gpu.groups());
+  const double rounding =
+      static_cast<double>(referenceTerms > 0 ? referenceTerms : static_cast<std::size_t>(steps) + groups * card) * 0x1p-24;
+  double worst = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    double peak = 0.0;
+    for (const auto& p : cpu.pixels) peak = std::max(peak, std::abs(static_cast<double>(p[c])));
+    for (std::size_t i = 0; i < pixels; ++i) {
+      double magnitude = std::abs(static_cast<double>(cpu.pixels[i][c])) + 0.01 * peak;
+      for (std::size_t g = 0; g < groups; ++g)
+        for (std::size_t j = 0; j < card; ++j)
+          magnitude += std::abs(static_cast<double>(weights[(g * 3 + static_cast<std::size_t>(c)) * card + j]) *
+                                moments[(g * card + j) * pixels + i]);
+      worst = std::max(worst, std::abs(gpuImage.pixels[i][c] - cpu.pixels[i][c]) / (rounding * magnitude));
+    }
+  }
+  return worst;
+}
+
+// The largest |a − b| / max(|b|, 1 % of b's channel peak): the goldens' and the finish's measure.
+inline double relativeError(const NebulaImage& a, const NebulaImage& b) {
+  double worst = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    double peak = 0.0;
+    for (const auto& p : b.pixels) peak = std::max(peak, std::abs(static_cast<double>(p[c])));
+    for (std::size_t i = 0; i < b.pixels.size(); ++i)
+      worst = std::max(worst, std::abs(a.pixels[i][c] - b.pixels[i][c]) /
+                                  std::max(std::abs(static_cast<double>(b.pixels[i][c])), 0.01 * peak));
+  }
+  return worst;
+}
+
+inline double peakOf(const NebulaImage& image) {
+  double peak = 0.0;
+  for (const auto& p : image.pixels) peak = std::max({peak, static_cast<double>(p.x), static_cast<double>(p.y), static_cast<double>(p.z)});
+  return peak;
+}
+
+}  // namespace prism::nebula

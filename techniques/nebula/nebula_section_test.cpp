@@ -1,0 +1,97 @@
+// A scene's "nebula" section: parsed as the scene loader parses it, its keys and defaults; bad
+// values refused in one line naming the pointer; copies share the density; the precomputation's
+// key follows the model and not the march's settings.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/error_test_support.h"
+#include "techniques/nebula/nebula_section.h"
+
+namespace prism::nebula {
+namespace {
+
+std::unique_ptr<TechniqueSection> parseSection(const std::string& text) {
+  static const schema::Document document{"scene.json", {}};
+  nlohmann::json json = schema::parseJson(text, document.name);
+  return NebulaSection::parse(schema::Node(json, "/nebula", document), TechniqueSections());
+}
+
+const std::string kNoise = R"("density": {"noise": {"resolution": 8}}, "stars": [{"position": [0.5, 0.5, 0.5], "temperature": 9000}])";
+
+TEST(NebulaSection, ReadsTheModelAndWhereItLies) {
+  auto parsed = parseSection("{" + kNoise + R"(, "box": {"min": [-2, 0, 1], "size": 4}, "method": "light-density",
+                                              "basis": 5, "reference_samples": 7, "intensity": 250, "steps": 80})");
+  const auto& s = dynamic_cast<const NebulaSection&>(*parsed);
+  EXPECT_EQ(s.density->nx, 8);
+  EXPECT_EQ(s.model.density.values.size(), 0u);  // the section holds it once, in `density`
+  EXPECT_EQ(s.fullModel().density.values, s.density->values);
+  ASSERT_EQ(s.model.stars.size(), 1u);
+  EXPECT_EQ(s.boxMin, glm::vec3(-2.0f, 0.0f, 1.0f));
+  EXPECT_EQ(s.boxSize, 4.0f);
+  EXPECT_EQ(s.method, Method::LightDensity);
+  EXPECT_EQ(s.renderSettings().basisSize, 5);
+  EXPECT_EQ(s.renderSettings().uniformSamples, 7);
+  EXPECT_EQ(s.renderSettings().steps, 80);
+  EXPECT_EQ(s.intensity, 250.0f);
+  EXPECT_FALSE(s.notTracedBecause().empty());
+
+  auto defaults = parseSection("{" + kNoise + "}");
+  const auto& d = dynamic_cast<const NebulaSection&>(*defaults);
+  EXPECT_EQ(d.method, Method::Projection);
+  EXPECT_EQ(d.basis, 4);
+  EXPECT_EQ(d.boxMin, glm::vec3(0.0f));
+  EXPECT_EQ(d.boxSize, 1.0f);
+  EXPECT_EQ(d.referenceSamples, 0);
+}
+
+TEST(NebulaSection, BadValuesNameTheirPlace) {
+  auto error = [](const std::string& keys) { return errorOf([&] { parseSection("{" + kNoise + ", " + keys + "}"); }); };
+  EXPECT_EQ(error(R"("method": "analytic")"),
+            "scene.json: /nebula/method: must be 'projection', 'light-density' or 'reference' (the methods the GPU "
+            "marches), not 'analytic'");
+  EXPECT_EQ(error(R"("box": {"size": 0})"), "scene.json: /nebula/box/size: expected a number in (0, 1e+06), got 0");
+  EXPECT_EQ(error(R"("basis": 9)"), "scene.json: /nebula/basis: expected an integer in [1, 8], got 9");
+  EXPECT_EQ(error(R"("reference_samples": 1)"),
+            "scene.json: /nebula/reference_samples: must be 0 (Simpson over each passband piece) or at least 2 "
+            "wavelengths a channel");
+  EXPECT_EQ(error(R"("camera": {})").rfind("scene.json: /nebula/camera: unknown key", 0), 0u);
+  EXPECT_EQ(errorOf([] { parseSection(R"({"density": {"noise": {}}, "stars": [{"position": [0, 0, 0], "temperature": 50}]})"); }),
+            "scene.json: /nebula/stars/0/temperature: expected a number in [1000, 100000], got 50");
+}
+
+TEST(NebulaSection, CopiesShareTheDensityAndTheKeyFollowsTheModel) {
+  auto parsed = parseSection("{" + kNoise + "}");
+  auto& s = dynamic_cast<NebulaSection&>(*parsed);
+  auto copy = s.clone();
+  EXPECT_EQ(dynamic_cast<const NebulaSection&>(*copy).density, s.density);
+  const std::string key = s.precomputationKey();
+  s.method = Method::Reference;
+  s.steps = 300;
+  s.intensity = 3.0f;
+  EXPECT_EQ(s.precomputationKey(), key);  // the march's settings, not the precomputation's
+  s.model.stars[0].temperatureK = 9001.0;
+  EXPECT_NE(s.precomputationKey(), key);
+  s.model.stars[0].temperatureK = 9000.0;
+  s.source.noise->seed = 8;
+  s.regenerateDensity();
+  EXPECT_NE(s.precomputationKey(), key);
+  EXPECT_NE(s.density->values, dynamic_cast<const NebulaSection&>(*copy).density->values);
+}
+
+TEST(NebulaSection, TheBenchTimesThePapersBaselineAgainstEachMethod) {
+  auto parsed = parseSection("{" + kNoise + "}");
+  TechniqueBench b = parsed->bench();
+  ASSERT_EQ(b.configs.size(), 3u);
+  const auto& reference = dynamic_cast<const NebulaSection&>(*b.configs[2].section);
+  EXPECT_EQ(reference.method, Method::Reference);
+  EXPECT_EQ(reference.renderSettings().uniformSamples, 7);  // 21 wavelengths a step
+  EXPECT_EQ(reference.steps, 100);
+  for (const auto& c : b.configs) EXPECT_TRUE(dynamic_cast<const NebulaSection&>(*c.section).marchEveryFrame) << c.label;
+  ASSERT_EQ(b.ratios.size(), 2u);
+  EXPECT_EQ(b.ratios[0].numerator, b.configs[2].label);
+  EXPECT_EQ(b.ratios[0].denominator, b.configs[0].label);
+}
+
+}  // namespace
+}  // namespace prism::nebula

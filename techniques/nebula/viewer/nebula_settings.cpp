@@ -1,0 +1,92 @@
+// The viewer script's `set nebula.*` keys (viewer/technique_settings.h).
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "render/setting_keys.h"
+#include "techniques/nebula/nebula_section.h"
+#include "techniques/nebula/viewer/nebula_viewer.h"
+
+namespace prism::viewer {
+namespace {
+
+float nonNegative(const std::string& key, const std::string& value) {
+  float v = render::parseFloat(key, value);
+  if (!(v >= 0.0f)) throw Error(key + ": expected a number ≥ 0, got " + excerpt(value));
+  return v;
+}
+
+// nebula.star.i.<what>: true when the key names a star; throws for a star the section lacks.
+bool setStarKey(nebula::NebulaSection& s, const std::string& key, const std::string& value) {
+  const std::string prefix = "nebula.star.";
+  if (key.rfind(prefix, 0) != 0) return false;
+  const std::size_t dot = key.find('.', prefix.size());
+  if (dot == std::string::npos) return false;
+  const std::string what = key.substr(dot + 1);
+  if (what != "temperature" && what != "luminosity" && what != "position") return false;
+  const long index = render::parseInteger(key, key.substr(prefix.size(), dot - prefix.size()), 0, 1 << 20);
+  if (static_cast<std::size_t>(index) >= s.model.stars.size())
+    throw Error(fmt::format("{}: the nebula has {} star(s)", key, s.model.stars.size()));
+  nebula::NebulaStar& star = s.model.stars[static_cast<std::size_t>(index)];
+  if (what == "temperature") {
+    float k = render::parseFloat(key, value);
+    if (!(k >= nebula::kMinStarTemperatureK && k <= nebula::kMaxStarTemperatureK))
+      throw Error(key + ": expected kelvins in [1000, 100000], got " + excerpt(value));
+    star.temperatureK = k;
+  } else if (what == "luminosity") {
+    star.luminosity = nonNegative(key, value);
+  } else {
+    glm::dvec3 p(0.0);
+    std::size_t at = 0;
+    for (int c = 0; c < 3; ++c) {
+      std::size_t comma = value.find(',', at);
+      if ((c < 2) != (comma != std::string::npos)) throw Error(key + ": expected X,Y,Z, got " + excerpt(value));
+      p[c] = render::parseFloat(key, value.substr(at, comma == std::string::npos ? std::string::npos : comma - at));
+      if (!(std::abs(p[c]) <= 100.0)) throw Error(key + ": expected coordinates in [-100, 100], got " + excerpt(value));
+      at = comma + 1;
+    }
+    star.position = p;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool setNebulaKey(Scene& scene, const std::string& key, const std::string& value) {
+  static const char* const kKeys[] = {"nebula.method",     "nebula.basis",      "nebula.steps",
+                                      "nebula.filters",    "nebula.intensity",  "nebula.extinction",
+                                      "nebula.scattering", "nebula.emission"};
+  bool known = key.rfind("nebula.star.", 0) == 0;
+  for (const char* k : kKeys) known = known || key == k;
+  if (!known) return false;
+  auto* s = scene.techniques.find<nebula::NebulaSection>();
+  if (!s) throw Error("the scene has no nebula section");
+  if (setStarKey(*s, key, value)) return true;
+  if (key == "nebula.method") {
+    if (value != "projection" && value != "light-density" && value != "reference")
+      throw Error("nebula.method: expected projection, light-density or reference, got '" + excerpt(value) + "'");
+    s->method = nebula::methodFromName(value);
+  } else if (key == "nebula.basis") {
+    s->basis = static_cast<int>(render::parseInteger(key, value, 1, 8));
+  } else if (key == "nebula.steps") {
+    s->steps = static_cast<int>(render::parseInteger(key, value, 1, 100000));
+  } else if (key == "nebula.filters") {
+    if (value != "hubble" && value != "cie1931")
+      throw Error("nebula.filters: expected hubble or cie1931, got '" + excerpt(value) + "'");
+    s->model.filters = value;
+  } else if (key == "nebula.intensity") {
+    s->intensity = nonNegative(key, value);
+  } else if (key == "nebula.extinction") {
+    s->model.extinction = nonNegative(key, value);
+  } else if (key == "nebula.scattering") {
+    s->model.scattering = nonNegative(key, value);
+  } else if (key == "nebula.emission") {
+    s->model.emission = nonNegative(key, value);
+  } else {
+    return false;  // a nebula.star.* key of another shape
+  }
+  return true;
+}
+
+}  // namespace prism::viewer

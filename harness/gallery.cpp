@@ -154,8 +154,14 @@ void runGallery(const GalleryOptions& o) {
   }
   if (files.empty()) throw Error(sceneDir.string() + ": no scene files (*.json) to render");
   std::sort(files.begin(), files.end());
-  for (const std::filesystem::path& file : files) precomputeTechniques(loadScene(file));  // bars of their own
+  // Bad options and an output that cannot be made fail before any long work.
+  render::FrameSettings check;
+  check.width = o.width;
+  check.height = o.height;
+  check.sampling.count = o.wavelengths;
+  render::validate(check);
   std::filesystem::create_directories(o.output);
+  for (const std::filesystem::path& file : files) precomputeTechniques(loadScene(file));  // bars of their own
 
   DemoOptions chart;
   chart.output = o.output / "colorchecker.png";

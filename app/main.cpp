@@ -438,7 +438,7 @@ int main(int argc, char** argv) {
   nebRenderCmd->add_option("--uniform-samples", nebRender.uniformSamples, "reference: that many λ per channel instead (trapezoid)");
   nebRenderCmd->add_flag("--compare", nebRender.compare, "also render the reference; print the max relative error");
   nebRenderCmd->add_flag("--no-lines", nebRender.noLines, "leave out the emission lines");
-  nebRenderCmd->add_flag("--gpu", nebRender.gpu, "march on the GPU (projection, light-density, reference; headless EGL)");
+  nebRenderCmd->add_flag("--gpu", nebRender.gpu, "march on the GPU (any method; headless EGL)");
   nebRenderCmd->add_option("--threads", nebRender.threads, "threads (0: all)");
   int nebBenchRepeats = 5;
   auto* nebBenchCmd = nebulaCmd->add_subcommand("bench", "time the GPU marcher against the CPU's, 1, 6 and 32 stars");

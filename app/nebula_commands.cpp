@@ -148,9 +148,6 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   if (o.output.extension() != ".exr" && o.output.extension() != ".png")
     throw Error(fmt::format("{}: the output must be .exr or .png", o.output.string()));
   nebula::Method method = nebula::methodFromName(o.method);
-  if (o.gpu && !nebula::NebulaGpuMarcher::supports(method))
-    throw Error(fmt::format("nebula render --gpu: the GPU marches projection, light-density and reference, not {}",
-                            nebula::methodName(method)));
   nebula::NebulaScene scene = nebula::loadNebulaScene(o.scene, o.threads);
   if (!o.filters.empty()) {
     if (o.filters != "hubble" && o.filters != "cie1931")

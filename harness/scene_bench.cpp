@@ -79,7 +79,9 @@ PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, 
                   ProgressBar& bar, std::size_t& done, std::size_t total) {
   std::map<std::string, std::vector<double>> samples;
   auto collect = [&](const gpu::GpuTimings& timings) {
-    for (const auto& [name, ms] : timings) samples[name].push_back(ms);
+    std::map<std::string, double> frame;  // a technique's passes before and after lighting share its name
+    for (const auto& [name, ms] : timings) frame[name] += ms;
+    for (const auto& [name, ms] : frame) samples[name].push_back(ms);
   };
   bool open = false;
   renderer.setPassHook([&](std::string_view pass) {

@@ -164,57 +164,61 @@ TEST(NebulaPass, RaysStopAtTheScenesSurfaces) {
 
 // What lies behind the nebula is dimmed per wavelength by e^(−g/λ) in the lighting pass, g the
 // optical depth the march left in front of each pixel: a lit white wall through the middle of the
-// cube, in 16-wavelength frames, is the CPU twin's lighting of its G-buffer texel with the pass's
-// optical depth read back (shared pixel_shading.glsl) plus the nebula's channels, at every pixel,
-// the background's included; and the nebula in front dims and reddens it.
+// cube, in 16-wavelength frames and in RGB (at R, G and B's stand-in wavelengths), is the CPU
+// twin's lighting of its G-buffer texel with the pass's optical depth read back (shared
+// pixel_shading.glsl) plus the nebula's channels, at every pixel, the background's included; and
+// the nebula in front dims and reddens it.
 TEST(NebulaPass, WhatLiesBehindIsDimmedPerWavelength) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(writeTempFile(
       "nebula_lit_wall.json",
       sceneJson(true, "projection", "[0.8, 0.8, 0.8]",
                 R"({"type": "directional", "direction": [0.2, -0.3, 1], "spd": "D65", "intensity": 3})")));
-  FrameSettings settings;
-  settings.width = settings.height = kSize;
-  settings.shadowMapSize = 256;
-  settings.lookup = UpsamplingLookup::Manual;  // the CPU's lookup, bit for bit
-  settings.display.dither = false;
-  Renderer renderer(scene, cachedTestTable(), settings);
-  renderer.renderFrame();
-  const TechniquePass* technique = renderer.techniquePass(nebula::NebulaSection::kKey);
-  const auto* pass = dynamic_cast<const nebula::NebulaPass*>(technique);
-  ASSERT_NE(pass, nullptr);
-  const std::vector<glm::vec4> nebulaColour = pass->marcher()->colour().read<glm::vec4>();  // row 0 at the top
-  GBufferReadback g(renderer);
-  CpuShading cpu(renderer.frameData(), cachedTestTable(), g.shadowLayers,
-                 {{std::string(nebula::NebulaSection::kKey), technique->readTexels()}});
-  CpuShading undimmed(renderer.frameData(), cachedTestTable(), g.shadowLayers);
-  double worst = 0.0, dimming = 0.0, zOverY = 0.0, zOverYUndimmed = 0.0;
-  int wall = 0;
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y * kSize + x);
-      const glm::vec2 uv((static_cast<float>(x) + 0.5f) / kSize, (static_cast<float>(y) + 0.5f) / kSize);
-      const GBufferTexel t = g.texel(i);
-      const glm::dvec3 lit(cpu.shade(t, uv, renderer.cameraTransform()));
-      const glm::dvec3 expected = lit + glm::dvec3(nebulaColour[static_cast<std::size_t>((kSize - 1 - y) * kSize + x)]);
-      const glm::dvec3 actual(g.accumulated(i));
-      const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z), 1e-3});
-      worst = std::max(worst, glm::length(actual - expected) / scale);
-      if (t.materialId == 0) continue;
-      const glm::dvec3 open(undimmed.shade(t, uv, renderer.cameraTransform()));
-      dimming += lit.y / open.y;
-      zOverY += lit.z / lit.y;
-      zOverYUndimmed += open.z / open.y;
-      ++wall;
-    }
-  dimming /= wall;
-  std::printf("the lit wall behind the nebula: %d pixels; GPU against the CPU twin, relative error max %.3g; "
-              "Y dimmed to %.3f on average, Z/Y %.3f → %.3f\n",
-              wall, worst, dimming, zOverYUndimmed / wall, zOverY / wall);
-  EXPECT_GT(wall, kSize * kSize / 3);
-  EXPECT_LE(worst, 1e-4);
-  EXPECT_LT(dimming, 0.95);
-  EXPECT_LT(zOverY, 0.97 * zOverYUndimmed);  // blue is dimmed most: e^(−g/λ)
+  for (RenderMode mode : {RenderMode::JakobHanika, RenderMode::Rgb}) {
+    FrameSettings settings;
+    settings.width = settings.height = kSize;
+    settings.mode = mode;
+    settings.shadowMapSize = 256;
+    settings.lookup = UpsamplingLookup::Manual;  // the CPU's lookup, bit for bit
+    settings.display.dither = false;
+    Renderer renderer(scene, cachedTestTable(), settings);
+    renderer.renderFrame();
+    const TechniquePass* technique = renderer.techniquePass(nebula::NebulaSection::kKey);
+    const auto* pass = dynamic_cast<const nebula::NebulaPass*>(technique);
+    ASSERT_NE(pass, nullptr);
+    const std::vector<glm::vec4> nebulaColour = pass->marcher()->colour().read<glm::vec4>();  // row 0 at the top
+    GBufferReadback g(renderer);
+    CpuShading cpu(renderer.frameData(), cachedTestTable(), g.shadowLayers,
+                   {{std::string(nebula::NebulaSection::kKey), technique->readTexels()}});
+    CpuShading undimmed(renderer.frameData(), cachedTestTable(), g.shadowLayers);
+    double worst = 0.0, dimming = 0.0, zOverY = 0.0, zOverYUndimmed = 0.0;
+    int wall = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y * kSize + x);
+        const glm::vec2 uv((static_cast<float>(x) + 0.5f) / kSize, (static_cast<float>(y) + 0.5f) / kSize);
+        const GBufferTexel t = g.texel(i);
+        const glm::dvec3 lit(cpu.shade(t, uv, renderer.cameraTransform()));
+        const glm::dvec3 expected = lit + glm::dvec3(nebulaColour[static_cast<std::size_t>((kSize - 1 - y) * kSize + x)]);
+        const glm::dvec3 actual(g.accumulated(i));
+        const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z), 1e-3});
+        worst = std::max(worst, glm::length(actual - expected) / scale);
+        if (t.materialId == 0) continue;
+        const glm::dvec3 open(undimmed.shade(t, uv, renderer.cameraTransform()));
+        dimming += lit.y / open.y;
+        zOverY += lit.z / lit.y;
+        zOverYUndimmed += open.z / open.y;
+        ++wall;
+      }
+    dimming /= wall;
+    std::printf("the lit wall behind the nebula, %s: %d pixels; GPU against the CPU twin, relative error max %.3g; "
+                "Y dimmed to %.3f on average, Z/Y %.3f → %.3f\n",
+                std::string(renderModeName(mode)).c_str(), wall, worst, dimming, zOverYUndimmed / wall, zOverY / wall);
+    EXPECT_GT(wall, kSize * kSize / 3);
+    EXPECT_LE(worst, 1e-4);
+    EXPECT_LT(dimming, 0.95);
+    EXPECT_LT(zOverY, 0.97 * zOverYUndimmed);  // blue is dimmed most: e^(−g/λ)
+  }
 }
 
 }  // namespace

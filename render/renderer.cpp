@@ -359,7 +359,7 @@ void Renderer::gbufferPass() {
 
 TechniqueFrame Renderer::techniqueFrame() const {
   return {mSettings.width, mSettings.height, mTargets.depth.id(), mSettings.mode == RenderMode::Rgb,
-          mSettings.mode == RenderMode::Reference};
+          mSettings.mode == RenderMode::Reference, glm::inverse(mDisplayTransform.toXyz)};
 }
 
 // Each technique's GPU work for this frame (the sky's tables, recomputed every frame so that the
@@ -369,7 +369,7 @@ void Renderer::techniquePasses() {
     auto pass = mTechniquePasses.find(block.key);
     if (pass == mTechniquePasses.end()) pass = mTechniquePasses.emplace(block.key, makeTechniquePass(block.key)).first;
     if (!pass->second) continue;
-    if (!pass->second->drawsForward()) hook(block.key);  // else its forward pass is what is timed
+    hook(block.key);  // a pass that also draws forward is timed there again, under the same key
     pass->second->run(block, mScene, mCameraTransform, techniqueFrame());
   }
 }

@@ -60,7 +60,8 @@ class Renderer {
 
   // Pass boundaries for timing (e.g. gpu timer scopes): called with "shadow", "gbuffer",
   // "atmosphere" (scenes with a sky), "lighting", "prt" (the forward pass of scenes with PRT
-  // objects), "nebula" (the nebula's march and composite), "forward", "post" before each pass and with "" after the last.
+  // objects), "nebula" (the nebula's march, then again its composite: a technique that works
+  // both before lighting and after it is named twice a frame), "forward", "post" before each pass and with "" after the last.
   using PassHook = std::function<void(std::string_view pass)>;
   void setPassHook(PassHook hook) { mPassHook = std::move(hook); }
 

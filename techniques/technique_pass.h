@@ -13,6 +13,8 @@
 #include <memory>
 #include <string_view>
 
+#include <glm/glm.hpp>
+
 #include "scene/camera_transform.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_table.h"
@@ -32,6 +34,9 @@ struct TechniqueFrame {
   unsigned depthTexture = 0;
   bool rgbMode = false;
   bool referenceMode = false;
+  // XYZ → the frame's tristimulus: identity, or a camera observer's inverse matrix (its
+  // tristimulus is camera RGB), for a pass that adds a colour it knows as XYZ.
+  glm::mat3 fromXyz{1.0f};
 };
 
 // What a technique's forward pass draws with. The renderer has bound the accumulation target with

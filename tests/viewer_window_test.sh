@@ -82,7 +82,7 @@ set mode reference
 frames 1
 screenshot $scratch/nebula_reference.exr
 SCRIPT
-xvfb-run -a -s "-screen 0 1024x768x24" "$prism" view "$scenes/nebula_field.json" --width 240 --height 240 \
+xvfb-run -a -s "-screen 0 1024x768x24" "$prism" view "$scenes/nebula_field.json" --width 160 --height 160 \
   --script "$scratch/nebula_script"
 palette=$(mean "$scratch/nebula_hubble.exr" "$scratch/nebula_natural.exr")
 method=$(mean "$scratch/nebula_natural.exr" "$scratch/nebula_reference.exr")

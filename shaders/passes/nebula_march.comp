@@ -13,7 +13,9 @@
 // surfaces (uSceneDepth); samples beyond a surface are left out, the others keep their steps.
 //
 // Defines: NEBULA_LIGHT_DENSITY selects the light–density method, NEBULA_REFERENCE the
-// reference (else projection).
+// reference, NEBULA_ANALYTIC the analytic method (the closed form per sample, star and passband
+// piece), NEBULA_PRE_INTEGRATION pre-integration (each star's tabulated channels over x), else
+// projection. The reference, analytic and pre-integration add into the colour directly.
 //
 // Grids are read with texelFetch and interpolated here, between voxel centres as the CPU does
 // (nebula_march.glsl's axis), not by the sampler: hardware trilinear filtering quantises its
@@ -40,10 +42,25 @@ layout(std430, binding = 3) readonly buffer Lines { vec4 lines[]; };  // λ (µm
 // them directly, so the number of stars has no limit but the buffer's size.
 layout(std430, binding = 4) buffer Moments { float moments[]; };
 layout(std430, binding = 5) writeonly buffer LineColour { vec4 lineColour[]; };
+#ifndef NEBULA_ANALYTIC  // its binding holds the analytic pieces' ranges there
 layout(std430, binding = 6) readonly buffer BasisMatrix { float basisM[]; };  // M(k, j) at [8k + j]
+#endif
+#if defined(NEBULA_ANALYTIC)
+// Analytic (bindings of the basis matrix and the reference's nodes, which it does not read): per
+// star s and channel c, analyticRanges[s·3 + c] = (first piece, pieces, the Wien exponent B as
+// float bits, 0); piece k is three vec4 at analyticPieces[3k]: P_S·P_L's c₀…c₃ and c₄…c₇ (a Wien
+// star: P_S times its normalisation, c₀…c₃), then (λ₀, λ₁, 0, 0) in µm.
+layout(std430, binding = 6) readonly buffer AnalyticRanges { ivec4 analyticRanges[]; };
+layout(std430, binding = 7) readonly buffer AnalyticPieces { vec4 analyticPieces[]; };
+#elif defined(NEBULA_PRE_INTEGRATION)
+// Pre-integration: star s's three channels' ∫ P_S·S_s·e^(−x/λ) dλ at x = e·uMomentStep, entry
+// e + 1 of [s·(uMomentSize + 3), …) (the moment table's spacing; one before 0, two after the end).
+layout(std430, binding = 7) readonly buffer PreIntegrated { vec4 preIntegrated[]; };
+#else
 // Reference: per star s and channel c, node k at [(s·3 + c)·uNodeStride + k]: (λ µm, weight),
 // each channel's nodes padded to a multiple of 16 with weight 0.
 layout(std430, binding = 7) readonly buffer ReferenceNodes { vec2 referenceNodes[]; };
+#endif
 
 uniform ivec2 uSize;
 uniform vec3 uCameraPosition;
@@ -90,6 +107,7 @@ float rayLimit(ivec2 px) {
   return length(v.xyz / v.w) * uCubePerWorld;
 }
 
+#ifndef NEBULA_ANALYTIC
 // cₖ(x) for k < 4 (lo) and 4…7 (hi): the table's Catmull–Rom, or beyond it Σⱼ M(k,j)·mⱼ(x) over
 // the raw moments' closed form (the CPU's coefficientsAt in NebulaRenderer::render).
 void coefficients8(float x, out vec4 lo, out vec4 hi) {
@@ -112,6 +130,7 @@ void coefficients8(float x, out vec4 lo, out vec4 hi) {
   lo = vec4(c[0], c[1], c[2], c[3]);
   hi = vec4(c[4], c[5], c[6], c[7]);
 }
+#endif
 
 // The segment p + t·d inside the unit cube, as [t0, t1]; false when the ray misses it.
 bool clipToCube(vec3 p, vec3 d, out float t0, out float t1) {
@@ -189,7 +208,7 @@ void main() {
   if (px.x >= uSize.x || px.y >= uSize.y) return;
   int pixel = px.y * uSize.x + px.x;  // row 0 at the top, as the CPU's image
   int pixelCount = uSize.x * uSize.y;
-#ifdef NEBULA_REFERENCE
+#if defined(NEBULA_REFERENCE) || defined(NEBULA_ANALYTIC) || defined(NEBULA_PRE_INTEGRATION)
   int values = 0;  // the colour directly, no moments
 #else
   int values = uCount * uCard;
@@ -252,6 +271,46 @@ void main() {
                 sum[ch] += node.y * nebulaAttenuation(x, node.x);
               }
           colour += w * sum;
+        }
+      }
+#elif defined(NEBULA_ANALYTIC)
+      for (int slab = 0; slab * 4 < uCount; ++slab) {
+        vec4 gs = fieldAt(cell, slab, n.z);
+        for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
+          int s = slab * 4 + c;
+          vec3 toStar = stars[s].xyz - p;
+          float w = nebulaStarWeight(uScattering * rho * dt, stars[s].w, dot(toStar, toStar));
+          float x = g + gs[c];
+          vec3 sum = vec3(0.0f);
+          for (int ch = 0; ch < 3; ++ch) {
+            ivec4 range = analyticRanges[s * 3 + ch];
+            float wienB = intBitsToFloat(range.z);
+            for (int k = range.x; k < range.x + range.y; ++k) {
+              vec4 bounds = analyticPieces[3 * k + 2];
+              sum[ch] += wienB > 0.0f ? nebulaWienPolyIntegral(analyticPieces[3 * k], x + wienB, bounds.x, bounds.y)
+                                      : nebulaPolyExpIntegral(analyticPieces[3 * k], analyticPieces[3 * k + 1], x,
+                                                              bounds.x, bounds.y);
+            }
+          }
+          colour += w * sum;
+        }
+      }
+#elif defined(NEBULA_PRE_INTEGRATION)
+      for (int slab = 0; slab * 4 < uCount; ++slab) {
+        vec4 gs = fieldAt(cell, slab, n.z);
+        for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
+          int s = slab * 4 + c;
+          vec3 toStar = stars[s].xyz - p;
+          float w = nebulaStarWeight(uScattering * rho * dt, stars[s].w, dot(toStar, toStar));
+          float u = (g + gs[c]) / uMomentStep;
+          if (u < float(uMomentSize - 1)) {  // beyond (x > 16 µm) e^(−x/λ) < 1e-9 over the band: nothing
+            int i = int(u);
+            vec4 cw = nebulaCatmullRomWeights(u - float(i));
+            int at = s * (uMomentSize + 3) + i;
+            vec4 t = cw.x * preIntegrated[at] + cw.y * preIntegrated[at + 1] + cw.z * preIntegrated[at + 2] +
+                     cw.w * preIntegrated[at + 3];
+            colour += w * t.xyz;
+          }
         }
       }
 #else

@@ -21,20 +21,30 @@
 // its power series, −γ − ln u + Σ (−1)^(k+1) uᵏ/(k·k!), 16 terms (the 17th is < 1e-15); above,
 // the continued fraction e^(−u)/(u+1− 1²/(u+3− 2²/(u+5− …))) evaluated bottom-up from depth 24,
 // which at u = 1 (its slowest point) is within 5e-8 relative; float stays within 5e-7.
+//
+// Its loops, and the series of nebulaInversePowerExpIntegrals, run in chunks of 8, loops of
+// constant count that shader compilers unroll: Mesa's llvmpipe stops a shader's loops after 65 535
+// iterations an invocation, nested loops counted together (nebula_march.comp), which the analytic
+// method's march (these per sample, star, channel and passband piece) would pass.
 PRISM_INLINE NEBULA_REAL nebulaE1(NEBULA_REAL u) {
   if (u <= 1.0f) {
     NEBULA_REAL sum = 0.0f;
     NEBULA_REAL term = 1.0f;
-    for (int k = 1; k <= 16; ++k) {
-      term *= -u / NEBULA_REAL(k);
-      sum -= term / NEBULA_REAL(k);
+    for (int k0 = 1; k0 <= 16; k0 += 8) {
+      for (int j = 0; j < 8; ++j) {
+        NEBULA_REAL k = NEBULA_REAL(k0 + j);
+        term *= -u / k;
+        sum -= term / k;
+      }
     }
     return NEBULA_REAL(-0.57721566490153286) - log(u) + sum;
   }
   NEBULA_REAL f = 0.0f;
-  for (int k = 24; k >= 1; --k) {
-    NEBULA_REAL kk = NEBULA_REAL(k);
-    f = kk * kk / (u + 2.0f * kk + 1.0f - f);
+  for (int k0 = 24; k0 >= 1; k0 -= 8) {
+    for (int j = 0; j < 8; ++j) {
+      NEBULA_REAL kk = NEBULA_REAL(k0 - j);
+      f = kk * kk / (u + 2.0f * kk + 1.0f - f);
+    }
   }
   return exp(-u) / (u + 1.0f - f);
 }
@@ -135,11 +145,13 @@ PRISM_INLINE NEBULA_VEC4 nebulaInversePowerExpIntegrals(NEBULA_REAL x, NEBULA_RE
       NEBULA_REAL t1 = t0;
       NEBULA_REAL sum0 = t0;
       NEBULA_REAL sum1 = t1;
-      for (int n = 1; n < 40; ++n) {
-        t0 *= z0 / NEBULA_REAL(m + 1 + n);
-        t1 *= z1 / NEBULA_REAL(m + 1 + n);
-        sum0 += t0;
-        sum1 += t1;
+      for (int n0 = 1; n0 < 40; n0 += 8) {  // in chunks of 8 (nebulaE1 says why)
+        for (int j = 0; j < 8 && n0 + j < 40; ++j) {
+          t0 *= z0 / NEBULA_REAL(m + 1 + n0 + j);
+          t1 *= z1 / NEBULA_REAL(m + 1 + n0 + j);
+          sum0 += t0;
+          sum1 += t1;
+        }
       }
       result[3 - m] = p0 * u0 * e0 * sum0 - p1 * u1 * e1 * sum1;
     }

@@ -12,6 +12,11 @@
 
 const int kNebulaOpticalDepthUnit = 11;
 
+// In RGB mode a batch's channels are R, G, B, not wavelengths: the dimming is taken at the
+// wavelengths RGB renderers stand them for (spectral/sampling.h's kRgbStandInWavelengthsNm), the
+// fourth channel unused.
+const vec4 kNebulaRgbStandInNm = vec4(680.0f, 550.0f, 440.0f, 550.0f);
+
 // e^(−g/λ) at a batch's four wavelengths (nm); 1 for g = 0.
 PRISM_INLINE vec4 nebulaTransmittance4(float gUm, IN(vec4) lambdaNm) {
   if (gUm <= 0.0f) return vec4(1.0f);

@@ -154,7 +154,7 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
     radiance = skyBackground(frameAtmosphere(b), b, cameraKm, viewDir, toSun);
 #endif
 #ifdef PRISM_TECHNIQUE_NEBULA
-    radiance *= nebulaTransmittance4(nebulaDepthUm, frameBatch(b).lambdaNm);
+    radiance *= nebulaTransmittance4(nebulaDepthUm, fc.mode == kModeRgb ? kNebulaRgbStandInNm : frameBatch(b).lambdaNm);
 #endif
     tristimulus += integrateBatch(frameBatch(b), radiance);
   }
@@ -255,7 +255,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     radiance = radiance * ap.transmittance + ap.inScattering;
 #endif
 #ifdef PRISM_TECHNIQUE_NEBULA
-    radiance *= nebulaTransmittance4(nebulaDepthUm, batch.lambdaNm);
+    radiance *= nebulaTransmittance4(nebulaDepthUm, fc.mode == kModeRgb ? kNebulaRgbStandInNm : batch.lambdaNm);
 #endif
     tristimulus += integrateBatch(batch, radiance);
   }

@@ -321,6 +321,10 @@ void buildPreIntegration(NebulaPrecomputed& pre) {
 }
 }  // namespace
 
+void NebulaRenderer::preparePreIntegration() const {
+  std::call_once(mPre->preIntegratedOnce, [this] { buildPreIntegration(*mPre); });
+}
+
 NebulaRenderer::ReferenceNodes NebulaRenderer::referenceNodes(const RenderSettings& s) const {
   const NebulaPrecomputed& pre = *mPre;
   if (s.referenceIntervals < 2 || s.referenceIntervals % 2) throw Error("nebula: reference intervals must be even and ≥ 2");
@@ -362,7 +366,7 @@ NebulaRenderer::ReferenceNodes NebulaRenderer::referenceNodes(const RenderSettin
 
 NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
   const NebulaPrecomputed& pre = *mPre;
-  if (s.method == Method::PreIntegration) std::call_once(mPre->preIntegratedOnce, [this] { buildPreIntegration(*mPre); });
+  if (s.method == Method::PreIntegration) preparePreIntegration();
   const NebulaModel& m = pre.model;
   if (s.steps < 1) throw Error("nebula: steps must be ≥ 1");
   if (!s.rayLimits.empty() && s.rayLimits.size() != static_cast<std::size_t>(m.camera.width) * static_cast<std::size_t>(m.camera.height))

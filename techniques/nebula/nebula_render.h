@@ -129,6 +129,8 @@ class NebulaRenderer {
   ReferenceNodes referenceNodes(const RenderSettings& settings) const;
   // What it precomputed (nebula_precomputed.h): the GPU marcher uploads these arrays.
   const NebulaPrecomputed& precomputed() const;
+  // Builds pre-integration's tables if not yet (its first render does; the GPU marcher uploads them).
+  void preparePreIntegration() const;
 
  private:
   std::unique_ptr<NebulaPrecomputed> mPre;

@@ -90,11 +90,11 @@ std::unique_ptr<TechniqueSection> NebulaSection::parse(const schema::Node& n, co
     s->boxSize = static_cast<float>(box->number("size", s->boxSize, Range::open(0.0, 1e6)));
   }
   if (auto m = n.optionalChild("method")) {
-    const std::string name = m->string();
-    if (name != "projection" && name != "light-density" && name != "reference")
-      m->fail("must be 'projection', 'light-density' or 'reference' (the methods the GPU marches), not '" +
-              excerpt(name) + "'");
-    s->method = methodFromName(name);
+    try {
+      s->method = methodFromName(m->string());
+    } catch (const Error& e) {
+      m->fail(e.what());
+    }
   }
   if (n.has("basis")) s->basis = n.child("basis").integer(Range::closed(1, 8));
   if (auto r = n.optionalChild("reference_samples")) {

@@ -31,7 +31,7 @@ struct NebulaSection final : TechniqueSection {
   std::shared_ptr<const DensityGrid> density = std::make_shared<DensityGrid>();
   DensitySource source;
   int steps = 100;
-  Method method = Method::Projection;  // projection, light-density or reference (the GPU's)
+  Method method = Method::Projection;  // any of the five, all marched on the GPU
   int basis = 4;                       // card(B), 1..8
   // The reference's wavelengths: 0, composite Simpson over each passband piece (the ground
   // truth); n, n per channel by the trapezoid rule (7: the paper's baseline, 21 a step).

@@ -6,6 +6,8 @@
 #include <string>
 
 #include "core/error_test_support.h"
+#include "spectral/sampling.h"
+#include "techniques/nebula/nebula_cpu_twin.h"
 #include "techniques/nebula/nebula_section.h"
 
 namespace prism::nebula {
@@ -47,9 +49,9 @@ TEST(NebulaSection, ReadsTheModelAndWhereItLies) {
 
 TEST(NebulaSection, BadValuesNameTheirPlace) {
   auto error = [](const std::string& keys) { return errorOf([&] { parseSection("{" + kNoise + ", " + keys + "}"); }); };
-  EXPECT_EQ(error(R"("method": "analytic")"),
-            "scene.json: /nebula/method: must be 'projection', 'light-density' or 'reference' (the methods the GPU "
-            "marches), not 'analytic'");
+  EXPECT_EQ(error(R"("method": "spline")"),
+            "scene.json: /nebula/method: unknown nebula method 'spline' (reference, analytic, projection, "
+            "light-density, pre-integration)");
   EXPECT_EQ(error(R"("box": {"size": 0})"), "scene.json: /nebula/box/size: expected a number in (0, 1e+06), got 0");
   EXPECT_EQ(error(R"("basis": 9)"), "scene.json: /nebula/basis: expected an integer in [1, 8], got 9");
   EXPECT_EQ(error(R"("reference_samples": 1)"),
@@ -91,6 +93,15 @@ TEST(NebulaSection, TheBenchTimesThePapersBaselineAgainstEachMethod) {
   ASSERT_EQ(b.ratios.size(), 2u);
   EXPECT_EQ(b.ratios[0].numerator, b.configs[2].label);
   EXPECT_EQ(b.ratios[0].denominator, b.configs[0].label);
+}
+
+// The lighting pass dims an RGB frame's R, G, B at the wavelengths the rest of Prism stands them for.
+TEST(NebulaLighting, TheRgbStandInsAreTheSpectralLibrarys) {
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(shared::kNebulaRgbStandInNm[c], kRgbStandInWavelengthsNm[static_cast<std::size_t>(c)]);
+  const glm::vec4 t = shared::nebulaTransmittance4(0.5f, glm::vec4(400.0f, 500.0f, 700.0f, 800.0f));
+  EXPECT_FLOAT_EQ(t.x, std::exp(-500.0f / 400.0f));
+  EXPECT_FLOAT_EQ(t.w, std::exp(-500.0f / 800.0f));
+  EXPECT_EQ(shared::nebulaTransmittance4(0.0f, glm::vec4(0.0f)), glm::vec4(1.0f));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "techniques/nebula/gpu/nebula_gpu_marcher.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <span>
@@ -49,7 +50,7 @@ gpu::Texture3D fieldTexture(int nx, int ny, int nz, int width, const std::vector
   GLint maxDepth = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxDepth);
   if (static_cast<long>(nz) * slabs > maxDepth)
-    throw Error(fmt::format("nebula --gpu: {} needs {} × {} texels along z, more than this GPU's 3D textures hold ({})",
+    throw Error(fmt::format("nebula: {} needs {} × {} texels along z, more than this GPU's 3D textures hold ({})",
                             label, nz, slabs, maxDepth));
   const std::size_t voxels = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz);
   texels.assign(voxels * static_cast<std::size_t>(slabs) * 4, 0.0f);
@@ -82,6 +83,8 @@ NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
       mProjection(computeProgram("nebula_march.comp", "nebula march (projection)")),
       mLightDensity(computeProgram("nebula_march.comp", "nebula march (light-density)", {{"NEBULA_LIGHT_DENSITY", ""}})),
       mReference(computeProgram("nebula_march.comp", "nebula march (reference)", {{"NEBULA_REFERENCE", ""}})),
+      mAnalytic(computeProgram("nebula_march.comp", "nebula march (analytic)", {{"NEBULA_ANALYTIC", ""}})),
+      mPreIntegration(computeProgram("nebula_march.comp", "nebula march (pre-integration)", {{"NEBULA_PRE_INTEGRATION", ""}})),
       mFinish(computeProgram("nebula_finish.comp", "nebula finish")) {
   const NebulaPrecomputed& pre = renderer.precomputed();
   const DensityGrid& d = pre.model.density;
@@ -145,16 +148,9 @@ MarchView marchView(const NebulaCamera& cam) {
   return v;
 }
 
-bool NebulaGpuMarcher::supports(Method method) {
-  return method == Method::Projection || method == Method::LightDensity || method == Method::Reference;
-}
-
 void NebulaGpuMarcher::march(const RenderSettings& s) { march(s, marchView(mRenderer.model().camera)); }
 
 void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
-  if (!supports(s.method))
-    throw Error(fmt::format("nebula --gpu: the GPU marches projection, light-density and reference, not {}",
-                            methodName(s.method)));
   if (s.steps < 1) throw Error("nebula: steps must be ≥ 1");
   const NebulaPrecomputed& pre = mRenderer.precomputed();
   const NebulaModel& m = pre.model;
@@ -163,7 +159,35 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
     throw Error(fmt::format("nebula: the renderer was built for a basis of {} elements, not {}", mCard, s.basisSize));
   mMarched = s.method;
   const bool light = s.method == Method::LightDensity, reference = s.method == Method::Reference;
-  mCount = light ? pre.lightCount : reference ? 0 : static_cast<int>(m.stars.size());
+  const bool analytic = s.method == Method::Analytic, preIntegration = s.method == Method::PreIntegration;
+  const bool direct = reference || analytic || preIntegration;  // into the colour, no moments
+  mCount = light ? pre.lightCount : direct ? 0 : static_cast<int>(m.stars.size());
+  if (analytic && mAnalyticRanges.sizeBytes() == 0) {  // [star·3 + channel]: (first, count, B bits, 0)
+    std::vector<glm::ivec4> ranges;
+    std::vector<glm::vec4> pieces;
+    for (std::size_t st = 0; st < m.stars.size(); ++st)
+      for (std::size_t c = 0; c < 3; ++c) {
+        const auto& list = pre.analyticPieces[st][c];
+        const auto wienB = static_cast<float>(pre.analyticWienExponentUm[st]);
+        ranges.emplace_back(static_cast<int>(pieces.size() / 3), static_cast<int>(list.size()), std::bit_cast<int>(wienB), 0);
+        for (const auto& piece : list) {
+          pieces.push_back(piece.lo);
+          pieces.push_back(piece.hi);
+          pieces.emplace_back(piece.l0, piece.l1, 0.0f, 0.0f);
+        }
+      }
+    mAnalyticRanges = bufferOf(ranges, "nebula analytic ranges");
+    mAnalyticPieces = bufferOf(pieces, "nebula analytic pieces");
+  }
+  if (preIntegration && mPreIntegrated.sizeBytes() == 0) {  // each star's table, one after another
+    mRenderer.preparePreIntegration();
+    std::vector<glm::vec4> tables;
+    for (const MomentTable& t : pre.preIntegrated) {
+      PRISM_CHECK(t.size == pre.moments.size && t.step == pre.moments.step);  // the march reads both with one spacing
+      tables.insert(tables.end(), t.lo.begin(), t.lo.end());
+    }
+    mPreIntegrated = bufferOf(tables, "nebula pre-integration tables");
+  }
   glm::ivec3 nodeCount(0);
   int nodeStride = 0;
   if (reference) {  // [(star·3 + channel)·stride + node]: (λ, weight), in chunks of 16 (nebula_march.comp)
@@ -198,7 +222,11 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   }
   mSize = {view.width, view.height};
 
-  const gpu::Program& p = light ? mLightDensity : reference ? mReference : mProjection;
+  const gpu::Program& p = light            ? mLightDensity
+                          : reference      ? mReference
+                          : analytic       ? mAnalytic
+                          : preIntegration ? mPreIntegration
+                                           : mProjection;
   p.setUniform("uSize", mSize);
   p.setUniform("uCameraPosition", view.position);
   p.setUniform("uForward", view.forward);
@@ -215,7 +243,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   p.setUniform("uDepthPerDensity", static_cast<float>(kCtUm * m.extinction));
   setIfActive(p, "uScattering", static_cast<float>(m.scattering));
   setIfActive(p, "uEmission", static_cast<float>(m.emission));
-  p.setUniform("uCount", reference ? static_cast<int>(m.stars.size()) : mCount);
+  p.setUniform("uCount", direct ? static_cast<int>(m.stars.size()) : mCount);
   setIfActive(p, "uCard", mCard);
   setIfActive(p, "uNodeCount", nodeCount);
   setIfActive(p, "uNodeStride", nodeStride);
@@ -234,9 +262,17 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   mLines.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   mMoments.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
   mLineColour.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
-  mBasisMatrix.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+  if (analytic) {
+    mAnalyticRanges.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+    mAnalyticPieces.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+  } else {
+    mBasisMatrix.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+  }
   if (reference) mReferenceNodes.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
-  gpu::runCompute(p, {static_cast<GLuint>((view.width + 7) / 8), static_cast<GLuint>((view.height + 7) / 8), 1});
+  if (preIntegration) mPreIntegrated.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+  // The optical depth is an image the lighting pass then fetches and tests read back.
+  gpu::runCompute(p, {static_cast<GLuint>((view.width + 7) / 8), static_cast<GLuint>((view.height + 7) / 8), 1},
+                  gpu::kDefaultComputeBarriers | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 void NebulaGpuMarcher::finishOnGpu() {
@@ -275,7 +311,8 @@ std::size_t NebulaGpuMarcher::gpuMemoryBytes() const {
   return mDensity.sizeBytes() + mStarDepth.sizeBytes() + mLightCoefficients.sizeBytes() + mMomentLo.sizeBytes() +
          mMomentHi.sizeBytes() + mBasisMatrix.sizeBytes() + mStars.sizeBytes() + mLines.sizeBytes() + mProjectionWeights.sizeBytes() +
          mLightWeights.sizeBytes() + mMoments.sizeBytes() + mLineColour.sizeBytes() + mColour.sizeBytes() +
-         mReferenceNodes.sizeBytes() + mOpticalDepth.sizeBytes();
+         mReferenceNodes.sizeBytes() + mOpticalDepth.sizeBytes() + mAnalyticRanges.sizeBytes() + mAnalyticPieces.sizeBytes() +
+         mPreIntegrated.sizeBytes();
 }
 
 }  // namespace prism::nebula

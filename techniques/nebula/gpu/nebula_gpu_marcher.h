@@ -1,9 +1,11 @@
-// The nebula's GPU ray marcher (Barrès 2023): the projection, light–density and reference methods
-// of NebulaRenderer::render as compute passes over what a NebulaRenderer precomputed
+// The nebula's GPU ray marcher (Barrès 2023): every method of NebulaRenderer::render (reference,
+// analytic, projection, light–density, pre-integration) as compute passes over what a
+// NebulaRenderer precomputed
 // (nebula_precomputed.h), uploaded once: the density grid as a 3D texture, each star's optical
 // depth per voxel (projection) or the 2D basis's light coefficients per voxel (light–density) as
 // a second one, four values a texel; the table of the basis's coefficients, stars and lines as
-// buffers; the reference's wavelength nodes and weights per march (they follow its settings).
+// buffers; the reference's wavelength nodes and weights per march (they follow its settings); the
+// analytic method's passband pieces and pre-integration's tables when first marched.
 //   march   shaders/passes/nebula_march.comp: front to back, early termination, per pixel the
 //           moments on the basis (per star, or per 2D element) and the emission lines' colour
 //   finish  shaders/passes/nebula_finish.comp: the filters' weights times the moments; a filter
@@ -48,12 +50,8 @@ class NebulaGpuMarcher {
   // field's slabs exceed GL_MAX_3D_TEXTURE_SIZE along z (nz·⌈stars/4⌉: 2048 allows 64 stars at 128³).
   explicit NebulaGpuMarcher(const NebulaRenderer& renderer);
 
-  // Whether the GPU marches `method` (projection, light–density and the reference: the paper's
-  // double integration, the baseline its speed is measured against).
-  static bool supports(Method method);
-
   // Marches every pixel (settings: method, steps, emission lines; the basis sizes are the
-  // renderer's). Error for a method it does not march or a basis size the renderer was not built for.
+  // renderer's). Error for a basis size the renderer was not built for.
   void march(const RenderSettings& settings);
   // The same from another view (the renderer's camera, nebula_pass.h).
   void march(const RenderSettings& settings, const MarchView& view);
@@ -79,16 +77,17 @@ class NebulaGpuMarcher {
 
  private:
   const NebulaRenderer& mRenderer;
-  gpu::Program mProjection, mLightDensity, mReference, mFinish;
+  gpu::Program mProjection, mLightDensity, mReference, mAnalytic, mPreIntegration, mFinish;
   gpu::Texture3D mDensity, mStarDepth, mLightCoefficients;
   gpu::Buffer mMomentLo, mMomentHi, mBasisMatrix, mStars, mLines;
   std::vector<float> mProjectionWeightValues, mLightWeightValues;
   gpu::Buffer mProjectionWeights, mLightWeights;
   gpu::Buffer mMoments, mLineColour, mColour, mReferenceNodes;
   gpu::Texture2D mOpticalDepth;
+  gpu::Buffer mAnalyticRanges, mAnalyticPieces, mPreIntegrated;  // made when first marched
   Method mMarched = Method::Projection;
   glm::ivec2 mSize{0};  // of the last march's image
-  int mCount = 0;  // moment groups of the last march: stars, or 2D elements (none for the reference)
+  int mCount = 0;  // moment groups of the last march: stars, or 2D elements (none for the direct methods)
   int mCard = 0;
 };
 

@@ -16,6 +16,7 @@
 #include "imaging/float_image.h"
 #include "techniques/nebula/gpu/nebula_gpu_marcher.h"
 #include "techniques/nebula/gpu/nebula_twin_test_support.h"
+#include "techniques/nebula/nebula_precomputed.h"
 #include "techniques/nebula/nebula_scene.h"
 
 namespace prism::nebula {
@@ -47,9 +48,25 @@ struct TwinCase {
   int stars;
   Method method;
   bool lines;
+  StarModel starModel = StarModel::Planck;
 };
 
 class NebulaGpuTwin : public testing::TestWithParam<TwinCase> {};
+
+// The methods that add into the colour directly (no moments) round N·G sums of K terms each: the
+// reference K nodes, pre-integration the four Catmull–Rom taps. 0 for the others (twinRatio's
+// N + G·card).
+std::size_t directTerms(const NebulaRenderer& renderer, const RenderSettings& s, Method method, int steps, int stars) {
+  std::size_t k = 0;
+  if (method == Method::Reference) {
+    for (const auto& channel : renderer.referenceNodes(s).lambdaUm) k = std::max(k, channel.size());
+  } else if (method == Method::PreIntegration) {
+    k = 4;
+  } else {
+    return 0;
+  }
+  return static_cast<std::size_t>(steps * stars) + k;
+}
 
 TEST_P(NebulaGpuTwin, MatchesTheCpuMarcherPerPixel) {
   gpu::HeadlessContext context;
@@ -57,18 +74,23 @@ TEST_P(NebulaGpuTwin, MatchesTheCpuMarcherPerPixel) {
   RenderSettings s;
   s.method = t.method;
   s.emissionLines = t.lines;
-  NebulaRenderer renderer(smallNebula(t.filters, t.stars), s);
+  NebulaModel model = smallNebula(t.filters, t.stars);
+  model.starModel = t.starModel;
+  NebulaRenderer renderer(model, s);
   NebulaImage cpu = renderer.render(s);
   NebulaGpuMarcher gpu(renderer);
   NebulaImage image = gpu.render(s);
   ASSERT_GT(peakOf(cpu), 0.0);
-  std::size_t referenceTerms = 0;
-  if (t.method == Method::Reference) {
-    std::size_t nodes = 0;
-    for (const auto& channel : renderer.referenceNodes(s).lambdaUm) nodes = std::max(nodes, channel.size());
-    referenceTerms = static_cast<std::size_t>(s.steps * t.stars) + nodes;
+  if (t.method == Method::Analytic) {
+    // Not held to the rounding bound: the closed form amplifies the last bits of exp and log,
+    // which GLSL's built-ins compute less exactly than libm; held to the 2 %, which a
+    // march cut short (llvmpipe's loop cap) or a wrong piece fails by far.
+    const double e = relativeError(image, cpu);
+    std::printf("analytic, %s, %d star(s), Wien: GPU against CPU, max relative %.3g (bound 2 %%)\n", t.filters, t.stars, e);
+    EXPECT_LE(e, 0.02);
+    return;
   }
-  double ratio = twinRatio(image, cpu, gpu, s.steps, referenceTerms);
+  double ratio = twinRatio(image, cpu, gpu, s.steps, directTerms(renderer, s, t.method, s.steps, t.stars));
   std::printf("%s, %s, %d star(s), lines %s: GPU against CPU, max relative %.3g, %.3g of the bound\n",
               methodName(t.method), t.filters, t.stars, t.lines ? "on" : "off", relativeError(image, cpu), ratio);
   EXPECT_LE(ratio, 1.0);
@@ -80,30 +102,38 @@ INSTANTIATE_TEST_SUITE_P(Cases, NebulaGpuTwin,
                                          TwinCase{"hubble", 3, Method::LightDensity, true},
                                          TwinCase{"cie1931", 5, Method::LightDensity, false},
                                          TwinCase{"hubble", 3, Method::Reference, true},
-                                         TwinCase{"cie1931", 5, Method::Reference, false}),
+                                         TwinCase{"cie1931", 5, Method::Reference, false},
+                                         // Analytic in float only where float holds: a Wien star
+                                         // (negative powers, README) under CIE 1931. With a P_L fit,
+                                         // or on the narrow HST bands, float's closed form is
+                                         // rounding noise on either side (the CPU's own float is
+                                         // 1.2 % to 9 080× off its double there). One star: five
+                                         // pass llvmpipe's loop cap at 100 steps.
+                                         TwinCase{"cie1931", 1, Method::Analytic, true, StarModel::Wien},
+                                         TwinCase{"hubble", 3, Method::PreIntegration, true},
+                                         TwinCase{"cie1931", 5, Method::PreIntegration, false}),
                          [](const testing::TestParamInfo<TwinCase>& p) {
                            std::string method = methodName(p.param.method);
                            std::replace(method.begin(), method.end(), '-', '_');
                            return method + "_" + p.param.filters + "_" + std::to_string(p.param.stars) + "_stars" +
-                                  (p.param.lines ? "_lines" : "");
+                                  (p.param.lines ? "_lines" : "") + (p.param.starModel == StarModel::Wien ? "_wien" : "");
                          });
 
 // The twin test can fail: a march one step shorter than the CPU's (99 of 100) is a real
-// difference of a few tenths of a percent, and the comparison sees it, for both methods.
+// difference of a few tenths of a percent, and the comparison sees it, for every method held to
+// the rounding bound.
 TEST(NebulaGpu, TheTwinComparisonSeesAOneStepDifference) {
   gpu::HeadlessContext context;
   RenderSettings s;
   NebulaRenderer renderer(smallNebula("hubble", 3), s);
   NebulaGpuMarcher gpu(renderer);
-  for (Method method : {Method::Projection, Method::LightDensity, Method::Reference}) {
+  for (Method method : {Method::Projection, Method::LightDensity, Method::Reference, Method::PreIntegration}) {
     s.method = method;
     s.steps = 100;
     NebulaImage cpu = renderer.render(s);
     s.steps = 99;
     NebulaImage image = gpu.render(s);
-    std::size_t nodes = 0;
-    for (const auto& channel : renderer.referenceNodes(s).lambdaUm) nodes = std::max(nodes, channel.size());
-    double ratio = twinRatio(image, cpu, gpu, 100, method == Method::Reference ? 100 * 3 + nodes : 0);
+    double ratio = twinRatio(image, cpu, gpu, 100, directTerms(renderer, s, method, 100, 3));
     std::printf("%s at 99 steps against the CPU at 100: max relative %.3g, %.3g × the bound\n", methodName(method),
                 relativeError(image, cpu), ratio);
     EXPECT_GT(ratio, 10.0);
@@ -111,8 +141,8 @@ TEST(NebulaGpu, TheTwinComparisonSeesAOneStepDifference) {
 }
 
 // The finish alone: marching once and finishing twice gives the same image (what a filter edit
-// relies on), and a method the GPU does not march is refused in one line.
-TEST(NebulaGpu, FinishesWithoutAnotherMarchAndRefusesOtherMethods) {
+// relies on).
+TEST(NebulaGpu, FinishesWithoutAnotherMarch) {
   gpu::HeadlessContext context;
   RenderSettings s;
   s.method = Method::Projection;
@@ -122,13 +152,6 @@ TEST(NebulaGpu, FinishesWithoutAnotherMarchAndRefusesOtherMethods) {
   NebulaImage first = gpu.finish();
   NebulaImage second = gpu.finish();
   EXPECT_EQ(relativeError(second, first), 0.0);
-  s.method = Method::Analytic;
-  try {
-    gpu.march(s);
-    FAIL() << "the analytic method was marched on the GPU";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("not analytic"), std::string::npos) << e.what();
-  }
 }
 
 // The example nebula (scenes/nebula/nebula.json) at 64×64 against goldens rendered on llvmpipe.

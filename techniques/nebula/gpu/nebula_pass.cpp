@@ -143,7 +143,7 @@ void NebulaPass::drawForward(const ForwardDrawInput& input) {
   glDisable(GL_DEPTH_TEST);  // the march stopped at the surfaces already
   mComposite.use();
   mComposite.setUniform("uSize", glm::ivec2(mView.width, mView.height));
-  mComposite.setUniform("uToTristimulus", channelsToXyz(section));
+  mComposite.setUniform("uToTristimulus", input.frame.fromXyz * channelsToXyz(section));
   mMarcher->colour().bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   mEmpty.draw(3);
   glEnable(GL_DEPTH_TEST);

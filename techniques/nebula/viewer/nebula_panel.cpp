@@ -1,7 +1,7 @@
 // The nebula panel (techniques/nebula): method, basis size, steps, filters, intensity, the
 // medium, the density's noise and the stars. Sees only the PanelContext. Edits that make the
-// pass precompute again (anything of the model: about a second at 64³) apply when a slider is
-// released, not while it is dragged.
+// pass precompute again (anything of the model: about half a second at 64³) or march again reach
+// the scene when a control is released, not while it is dragged; the intensity is live.
 #include <imgui.h>
 
 #include <fmt/format.h>
@@ -13,45 +13,87 @@
 namespace prism::viewer {
 namespace {
 
-// A slider whose edit counts once released.
-bool releasedFloat(const char* label, double& value, float lo, float hi, const char* format, bool logarithmic = false) {
-  float v = static_cast<float>(value);
-  ImGui::SliderFloat(label, &v, lo, hi, format, logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
-  value = v;
-  return ImGui::IsItemDeactivatedAfterEdit();
-}
+// Controls that edit a value only once released: the scene is the renderer's, and most of the
+// section's values make the pass precompute again, which must not happen on every frame of a drag.
+// The value being dragged lives here meanwhile (one control is active at a time).
+class ReleasedEdits {
+ public:
+  bool slider(const char* label, double& value, float lo, float hi, const char* format, bool logarithmic = false) {
+    glm::vec3 v(static_cast<float>(value));
+    const bool done = control(label, v, [&](float* p) {
+      return ImGui::SliderFloat(label, p, lo, hi, format, logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
+    });
+    if (done) value = v.x;
+    return done;
+  }
+  bool slider(const char* label, int& value, int lo, int hi) {
+    glm::vec3 v(static_cast<float>(value));
+    const bool done = control(label, v, [&](float* p) {
+      int i = static_cast<int>(*p);
+      const bool edited = ImGui::SliderInt(label, &i, lo, hi);
+      *p = static_cast<float>(i);
+      return edited;
+    });
+    if (done) value = static_cast<int>(v.x);
+    return done;
+  }
+  bool drag3(const char* label, glm::dvec3& value, float lo, float hi) {
+    glm::vec3 v(value);
+    const bool done = control(label, v, [&](float* p) { return ImGui::DragFloat3(label, p, 0.01f, lo, hi, "%.2f"); });
+    if (done) value = glm::dvec3(v);
+    return done;
+  }
 
-bool noiseControls(nebula::NoiseParameters& p) {
+ private:
+  // Draws `widget` (whose id is `label`'s) over the pending value while it is active; true once
+  // an edit is released, with `v` the released value.
+  template <class Widget>
+  bool control(const char* label, glm::vec3& v, Widget widget) {
+    const ImGuiID id = ImGui::GetID(label);
+    if (mActive == id) v = mPending;
+    widget(&v.x);
+    if (ImGui::IsItemActive()) {
+      mActive = id;
+      mPending = v;
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) {
+      mActive = 0;
+      return true;
+    }
+    if (!ImGui::IsItemActive() && mActive == id) mActive = 0;
+    return false;
+  }
+
+  ImGuiID mActive = 0;
+  glm::vec3 mPending{0.0f};
+};
+
+bool noiseControls(ReleasedEdits& edits, nebula::NoiseParameters& p) {
   bool changed = false;
-  ImGui::SliderInt("resolution", &p.resolution, 8, 256);
-  changed |= ImGui::IsItemDeactivatedAfterEdit();
-  ImGui::SliderInt("octaves", &p.octaves, 1, 8);
-  changed |= ImGui::IsItemDeactivatedAfterEdit();
-  changed |= releasedFloat("frequency", p.frequency, 0.5f, 12.0f, "%.2f");
-  changed |= releasedFloat("amplitude", p.amplitude, 0.0f, 4.0f, "%.2f");
-  changed |= releasedFloat("gain", p.gain, 0.0f, 1.0f, "%.2f");
-  changed |= releasedFloat("bias", p.bias, -1.0f, 1.0f, "%.2f");
+  changed |= edits.slider("resolution", p.resolution, 8, 256);
+  changed |= edits.slider("octaves", p.octaves, 1, 8);
+  changed |= edits.slider("frequency", p.frequency, 0.5f, 12.0f, "%.2f");
+  changed |= edits.slider("amplitude", p.amplitude, 0.0f, 4.0f, "%.2f");
+  changed |= edits.slider("gain", p.gain, 0.0f, 1.0f, "%.2f");
+  changed |= edits.slider("bias", p.bias, -1.0f, 1.0f, "%.2f");
   int seed = static_cast<int>(p.seed);
-  if (ImGui::InputInt("seed", &seed) && seed >= 0) {
+  if (ImGui::InputInt("seed", &seed, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue) && seed >= 0) {
     p.seed = static_cast<std::uint64_t>(seed);
     changed = true;
   }
   return changed;
 }
 
-bool starControls(std::vector<nebula::NebulaStar>& stars) {
+bool starControls(ReleasedEdits& edits, std::vector<nebula::NebulaStar>& stars) {
   bool changed = false;
   for (std::size_t i = 0; i < stars.size(); ++i) {
     nebula::NebulaStar& s = stars[i];
     ImGui::PushID(static_cast<int>(i));
     ImGui::TextUnformatted(fmt::format("star {}", i).c_str());
-    glm::vec3 p(s.position);
-    ImGui::DragFloat3("position", &p.x, 0.01f, -2.0f, 3.0f, "%.2f");
-    s.position = glm::dvec3(p);
-    changed |= ImGui::IsItemDeactivatedAfterEdit();
-    changed |= releasedFloat("temperature K", s.temperatureK, static_cast<float>(nebula::kMinStarTemperatureK),
-                             static_cast<float>(nebula::kMaxStarTemperatureK), "%.0f", true);
-    changed |= releasedFloat("luminosity", s.luminosity, 0.0f, 10.0f, "%.2f");
+    changed |= edits.drag3("position", s.position, -2.0f, 3.0f);
+    changed |= edits.slider("temperature K", s.temperatureK, static_cast<float>(nebula::kMinStarTemperatureK),
+                            static_cast<float>(nebula::kMaxStarTemperatureK), "%.0f", true);
+    changed |= edits.slider("luminosity", s.luminosity, 0.0f, 10.0f, "%.2f");
     bool remove = ImGui::Button("remove");
     ImGui::PopID();
     if (remove) {
@@ -75,32 +117,34 @@ class NebulaPanel final : public Panel {
     nebula::NebulaSection& s = *context.scene.techniques.find<nebula::NebulaSection>();
     bool changed = false;
     std::string method = nebula::methodName(s.method);
-    if (stringCombo("method", method, {"projection", "light-density", "reference"})) {
+    if (stringCombo("method", method, {"projection", "light-density", "analytic", "pre-integration", "reference"})) {
       s.method = nebula::methodFromName(method);
       changed = true;
     }
-    ImGui::SliderInt("basis size", &s.basis, 1, 8);
-    changed |= ImGui::IsItemDeactivatedAfterEdit();
-    ImGui::SliderInt("steps", &s.steps, 10, 400);
-    changed |= ImGui::IsItemDeactivatedAfterEdit();
+    changed |= mEdits.slider("basis size", s.basis, 1, 8);
+    changed |= mEdits.slider("steps", s.steps, 10, 400);
     changed |= stringCombo("filters", s.model.filters, {"hubble", "cie1931"});
+    // Live: the composite alone reads it.
     changed |= ImGui::SliderFloat("intensity", &s.intensity, 1e-3f, 1e4f, "%.3g", ImGuiSliderFlags_Logarithmic);
-    changed |= releasedFloat("extinction", s.model.extinction, 0.0f, 20.0f, "%.2f");
-    changed |= releasedFloat("scattering", s.model.scattering, 0.0f, 10.0f, "%.2f");
-    changed |= releasedFloat("emission", s.model.emission, 0.0f, 0.02f, "%.4f");
+    changed |= mEdits.slider("extinction", s.model.extinction, 0.0f, 20.0f, "%.2f");
+    changed |= mEdits.slider("scattering", s.model.scattering, 0.0f, 10.0f, "%.2f");
+    changed |= mEdits.slider("emission", s.model.emission, 0.0f, 0.02f, "%.4f");
     if (s.source.noise && ImGui::TreeNode("density (noise)")) {
-      if (noiseControls(*s.source.noise)) {
+      if (noiseControls(mEdits, *s.source.noise)) {
         s.regenerateDensity();
         changed = true;
       }
       ImGui::TreePop();
     }
     if (ImGui::TreeNode("stars")) {
-      changed |= starControls(s.model.stars);
+      changed |= starControls(mEdits, s.model.stars);
       ImGui::TreePop();
     }
     if (changed) context.changes.scene = true;
   }
+
+ private:
+  ReleasedEdits mEdits;
 };
 
 }  // namespace

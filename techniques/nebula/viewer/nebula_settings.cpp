@@ -1,5 +1,6 @@
 // The viewer script's `set nebula.*` keys (viewer/technique_settings.h).
 #include <cmath>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -17,15 +18,24 @@ float nonNegative(const std::string& key, const std::string& value) {
   return v;
 }
 
-// nebula.star.i.<what>: true when the key names a star; throws for a star the section lacks.
+constexpr std::string_view kStarPrefix = "nebula.star.";
+
+// What a nebula.star.I.<what> key sets ("temperature", "luminosity", "position"); empty for any
+// other key.
+std::string starKeyWhat(const std::string& key) {
+  if (key.rfind(kStarPrefix, 0) != 0) return {};
+  const std::size_t dot = key.find('.', kStarPrefix.size());
+  if (dot == std::string::npos) return {};
+  std::string what = key.substr(dot + 1);
+  return what == "temperature" || what == "luminosity" || what == "position" ? what : std::string();
+}
+
+// A nebula.star.I.<what> key; throws for a star the section lacks.
 bool setStarKey(nebula::NebulaSection& s, const std::string& key, const std::string& value) {
-  const std::string prefix = "nebula.star.";
-  if (key.rfind(prefix, 0) != 0) return false;
-  const std::size_t dot = key.find('.', prefix.size());
-  if (dot == std::string::npos) return false;
-  const std::string what = key.substr(dot + 1);
-  if (what != "temperature" && what != "luminosity" && what != "position") return false;
-  const long index = render::parseInteger(key, key.substr(prefix.size(), dot - prefix.size()), 0, 1 << 20);
+  const std::string what = starKeyWhat(key);
+  if (what.empty()) return false;
+  const std::size_t dot = key.find('.', kStarPrefix.size());
+  const long index = render::parseInteger(key, key.substr(kStarPrefix.size(), dot - kStarPrefix.size()), 0, 1 << 20);
   if (static_cast<std::size_t>(index) >= s.model.stars.size())
     throw Error(fmt::format("{}: the nebula has {} star(s)", key, s.model.stars.size()));
   nebula::NebulaStar& star = s.model.stars[static_cast<std::size_t>(index)];
@@ -57,16 +67,18 @@ bool setNebulaKey(Scene& scene, const std::string& key, const std::string& value
   static const char* const kKeys[] = {"nebula.method",     "nebula.basis",      "nebula.steps",
                                       "nebula.filters",    "nebula.intensity",  "nebula.extinction",
                                       "nebula.scattering", "nebula.emission"};
-  bool known = key.rfind("nebula.star.", 0) == 0;
+  bool known = !starKeyWhat(key).empty();
   for (const char* k : kKeys) known = known || key == k;
   if (!known) return false;
   auto* s = scene.techniques.find<nebula::NebulaSection>();
   if (!s) throw Error("the scene has no nebula section");
   if (setStarKey(*s, key, value)) return true;
   if (key == "nebula.method") {
-    if (value != "projection" && value != "light-density" && value != "reference")
-      throw Error("nebula.method: expected projection, light-density or reference, got '" + excerpt(value) + "'");
-    s->method = nebula::methodFromName(value);
+    try {
+      s->method = nebula::methodFromName(value);
+    } catch (const Error& e) {
+      throw Error(std::string("nebula.method: ") + e.what());
+    }
   } else if (key == "nebula.basis") {
     s->basis = static_cast<int>(render::parseInteger(key, value, 1, 8));
   } else if (key == "nebula.steps") {
@@ -81,10 +93,8 @@ bool setNebulaKey(Scene& scene, const std::string& key, const std::string& value
     s->model.extinction = nonNegative(key, value);
   } else if (key == "nebula.scattering") {
     s->model.scattering = nonNegative(key, value);
-  } else if (key == "nebula.emission") {
-    s->model.emission = nonNegative(key, value);
   } else {
-    return false;  // a nebula.star.* key of another shape
+    s->model.emission = nonNegative(key, value);
   }
   return true;
 }

@@ -19,6 +19,7 @@ std::string nebulaKeyError(Scene& scene, const std::string& key, const std::stri
 TEST(NebulaSetKeys, ChangeTheSectionAndRefuseBadValues) {
   Scene scene;
   EXPECT_FALSE(setNebulaKey(scene, "prt.basis", "3"));
+  EXPECT_FALSE(setNebulaKey(scene, "nebula.star.0.colour", "3"));  // not a key of the nebula's
   EXPECT_EQ(nebulaKeyError(scene, "nebula.basis", "4"), "the scene has no nebula section");
   auto section = std::make_unique<nebula::NebulaSection>();
   section->model.stars.push_back({glm::dvec3(0.5), 9000.0, 1.0});
@@ -43,8 +44,9 @@ TEST(NebulaSetKeys, ChangeTheSectionAndRefuseBadValues) {
   EXPECT_DOUBLE_EQ(s->model.stars[0].luminosity, 2.0);
   EXPECT_NEAR(s->model.stars[0].position.z, -0.3, 1e-6);
 
-  EXPECT_EQ(nebulaKeyError(scene, "nebula.method", "analytic"),
-            "nebula.method: expected projection, light-density or reference, got 'analytic'");
+  EXPECT_EQ(nebulaKeyError(scene, "nebula.method", "spline"),
+            "nebula.method: unknown nebula method 'spline' (reference, analytic, projection, light-density, "
+            "pre-integration)");
   EXPECT_NE(nebulaKeyError(scene, "nebula.basis", "9"), "");
   EXPECT_EQ(nebulaKeyError(scene, "nebula.filters", "jwst"), "nebula.filters: expected hubble or cie1931, got 'jwst'");
   EXPECT_EQ(nebulaKeyError(scene, "nebula.intensity", "-1"), "nebula.intensity: expected a number ≥ 0, got -1");

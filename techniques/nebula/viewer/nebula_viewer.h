@@ -11,7 +11,7 @@
 
 namespace prism::viewer {
 
-// The method (projection, light-density, reference), basis size, steps, filters (Hubble palette
+// The method (any of the five), basis size, steps, filters (Hubble palette
 // or CIE 1931), intensity, extinction, scattering, emission, the density's noise, and the stars
 // (add, remove, move, temperature, luminosity).
 std::unique_ptr<Panel> makeNebulaPanel();

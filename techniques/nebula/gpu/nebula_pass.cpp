@@ -36,8 +36,8 @@ std::shared_ptr<const NebulaRenderer> precomputation(const NebulaSection& sectio
     if (progress) progress("nebula precomputation", done, total);
   });
   if (!progress)
-    fmt::print(stderr, "nebula precomputation: {}³ voxels, {} star(s) in {:.2f} s\n", section.density->nx,
-               section.model.stars.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    fmt::print(stderr, "nebula precomputation: {}×{}×{} voxels, {} star(s) in {:.2f} s\n", section.density->nx,
+               section.density->ny, section.density->nz, section.model.stars.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   memo = renderer;
   memoKey = key;
   return renderer;

@@ -52,8 +52,7 @@ gpu::Program compositeProgram() {
   return gpu::Program(desc);
 }
 
-}  // namespace
-
+// The view of the renderer's camera in the section's cube (MarchView, without the depth).
 MarchView marchView(const NebulaSection& section, const CameraTransform& camera, int width, int height) {
   // View space's axes in the world are the view matrix's rows; a uniform scale and a translation
   // take the world to the cube, so directions stay.
@@ -72,6 +71,7 @@ MarchView marchView(const NebulaSection& section, const CameraTransform& camera,
   return view;
 }
 
+// The 3×3 matrix from the section's channels to XYZ, intensity included.
 glm::mat3 channelsToXyz(const NebulaSection& section) {
   glm::mat3 m(1.0f);
   if (section.model.filters == "hubble") {  // the palette's R, G, B as linear sRGB
@@ -81,6 +81,8 @@ glm::mat3 channelsToXyz(const NebulaSection& section) {
   }
   return m * section.intensity;
 }
+
+}  // namespace
 
 NebulaPass::NebulaPass() : mComposite(compositeProgram()), mEmpty(gpu::VertexArray::attributeless()) {}
 

@@ -40,10 +40,8 @@ class NebulaPass final : public TechniquePass {
   bool drawsForward() const override { return true; }
   void drawForward(const ForwardDrawInput& input) override;
 
-  // The last march's view, settings and precomputation (for tests: the CPU marcher's twin).
-  const MarchView& lastView() const { return mView; }
+  // The last march's settings and marcher (for tests: the CPU marcher's twin).
   const RenderSettings& lastSettings() const { return mSettings; }
-  const NebulaRenderer* renderer() const { return mRenderer.get(); }
   const NebulaGpuMarcher* marcher() const { return mMarcher.get(); }
   // Marches made so far (a still view marches once).
   int marches() const { return mMarches; }
@@ -58,11 +56,5 @@ class NebulaPass final : public TechniquePass {
   RenderSettings mSettings;
   int mMarches = 0;
 };
-
-// The view of the renderer's camera in the section's cube (MarchView, without the depth).
-MarchView marchView(const NebulaSection& section, const CameraTransform& camera, int width, int height);
-
-// The 3×3 matrix from the section's channels to the frame's XYZ, intensity included.
-glm::mat3 channelsToXyz(const NebulaSection& section);
 
 }  // namespace prism::nebula

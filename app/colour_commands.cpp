@@ -3,12 +3,14 @@
 #include <fmt/core.h>
 
 #include <Eigen/Core>
+#include <Eigen/SVD>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <filesystem>
 #include <sstream>
 
 #include "core/atomic_file.h"
+#include "imaging/spectral_texture_file.h"
 #include "spectral/camera_matrix.h"
 #include "spectral/colour_difference.h"
 #include "spectral/colour_space.h"
@@ -237,6 +239,46 @@ Spectrum patchOrFileReflectance(const std::string& text, const std::string& opti
   if (!std::filesystem::is_regular_file(text))
     throw Error(option + ": '" + text + "' is neither a ColorChecker patch name nor a file");
   return readSpectrumCsv(text, Extrapolation::Clamp).toDense();
+}
+
+void colourSpectralTexture(const SpectralTextureOptions& o) {
+  if (o.cell < 1 || o.cell > 256) throw Error("colour spectral-texture: --cell must be 1 to 256, got " + std::to_string(o.cell));
+  if (o.basis < 0 || o.basis > 24) throw Error("colour spectral-texture: --basis must be 0 to 24, got " + std::to_string(o.basis));
+  SpectralTexture t;
+  t.width = 6 * o.cell;
+  t.height = 4 * o.cell;
+  for (int i = 0; i <= 80; ++i) t.wavelengthsNm.push_back(380.0 + 5.0 * i);
+  Eigen::MatrixXd spectra(81, 24);  // the patches on the wavelengths, in chart order
+  for (std::size_t p = 0; p < 24; ++p)
+    for (int i = 0; i <= 80; ++i) spectra(i, static_cast<Eigen::Index>(p)) = colourChecker()[p].reflectance.at(t.wavelengthsNm[static_cast<std::size_t>(i)]);
+  Eigen::MatrixXd patchValues = spectra;  // per patch its k values
+  t.sampled = o.basis == 0;
+  t.basis = Eigen::MatrixXd::Identity(81, 81);
+  double worst = 0.0;
+  if (!t.sampled) {
+    Eigen::BDCSVD<Eigen::MatrixXd> svd(spectra, Eigen::ComputeThinU);
+    t.basis = svd.matrixU().leftCols(o.basis);
+    patchValues = t.basis.transpose() * spectra;
+    Eigen::MatrixXd reconstructed = t.basis * patchValues;
+    worst = (reconstructed - spectra).cwiseAbs().maxCoeff();
+    if (reconstructed.minCoeff() < -0.01 || reconstructed.maxCoeff() > 1.01)
+      throw Error(fmt::format("colour spectral-texture: with {} functions the patches' reflectances reach [{:.3f}, {:.3f}], "
+                              "outside [0, 1] ± 0.01: use more", o.basis, reconstructed.minCoeff(), reconstructed.maxCoeff()));
+  }
+  for (int y = 0; y < t.height; ++y) {
+    for (int x = 0; x < t.width; ++x) {
+      const Eigen::Index patch = (y / o.cell) * 6 + x / o.cell;
+      for (Eigen::Index j = 0; j < patchValues.rows(); ++j) t.coefficients.push_back(static_cast<float>(patchValues(j, patch)));
+    }
+  }
+  imaging::writeSpectralTexture(o.output, t);
+  if (t.sampled) {
+    fmt::print("wrote {}: the ColorChecker, {} × {} texels, samples at 81 wavelengths (380–780 nm, 5 nm)\n", o.output,
+               t.width, t.height);
+  } else {
+    fmt::print("wrote {}: the ColorChecker, {} × {} texels, {} basis functions (largest reconstruction error {:.2g})\n",
+               o.output, t.width, t.height, o.basis, worst);
+  }
 }
 
 void colourMetamer(const MetamerOptions& o) {

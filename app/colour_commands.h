@@ -75,6 +75,17 @@ void colourMetamer(const MetamerOptions& options);
 // A ColorChecker patch by name, else a spectral CSV (Error naming `option` when neither).
 Spectrum patchOrFileReflectance(const std::string& text, const std::string& option);
 
+// The ColorChecker's 24 patches as a spectral texture (docs/spectral-texture.md): 6 × 4 cells of
+// `cell` × `cell` texels in chart order, row 1 at the top; the samples form at 5 nm over 380–780 nm,
+// or with `basis` k > 0 the coefficients form over the k leading singular vectors of the 24
+// spectra (Error when k is too few to keep every reflectance within the reader's [0, 1] ± 0.01).
+struct SpectralTextureOptions {
+  std::string output;  // .exr
+  int cell = 4;
+  int basis = 0;
+};
+void colourSpectralTexture(const SpectralTextureOptions& options);
+
 // what: illuminants | observers | cameras | spaces
 void colourList(const std::string& what, bool json);
 

@@ -193,6 +193,12 @@ int main(int argc, char** argv) {
   metamerCmd->add_option("-o,--output", metamer.output, "CSV of the metamer to write");
   metamerCmd->add_flag("--json", metamer.json, "JSON output");
 
+  SpectralTextureOptions spectralTexture;
+  auto* spectralTextureCmd = colour->add_subcommand("spectral-texture", "the ColorChecker as a spectral texture (docs/spectral-texture.md)");
+  spectralTextureCmd->add_option("output", spectralTexture.output, "the .exr to write")->required();
+  spectralTextureCmd->add_option("--cell", spectralTexture.cell, "texels per patch side")->capture_default_str();
+  spectralTextureCmd->add_option("--basis", spectralTexture.basis, "0: samples at 5 nm; k: k SVD basis functions")->capture_default_str();
+
   auto* prtCmd = app.add_subcommand("prt", "spectral precomputed radiance transfer (SH-5 × SVD basis)");
   prtCmd->require_subcommand(1);
   PrtBakeOptions prtBake;
@@ -486,6 +492,7 @@ int main(int argc, char** argv) {
     if (*camCmd) colourCameraMatrix(cam);
     if (*listCmd) colourList(listWhat, listJson);
     if (*metamerCmd) colourMetamer(metamer);
+    if (*spectralTextureCmd) colourSpectralTexture(spectralTexture);
     if (*prtBakeCmd) runPrtBake(prtBake);
     if (*prtReportCmd) {
       if (!prtRotate.empty()) prtReport.rotate = prism::app::parseNumbers(prtRotate, "--rotate");

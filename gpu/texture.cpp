@@ -363,6 +363,21 @@ void Texture2DArray::bindImage(GLuint unit, GLenum access, GLint level) const {
   glBindImageTexture(unit, mId, level, GL_TRUE, 0, access, mInternalFormat);
 }
 
+void Texture2DArray::upload(const TextureData& data, GLint level) {
+  checkLevel(level, mLevels);
+  std::size_t expected = static_cast<std::size_t>(width(level)) * static_cast<std::size_t>(height(level)) *
+                         static_cast<std::size_t>(mLayers) * channels(data.format) * componentBytes(data.type);
+  if (data.bytes.size() != expected)
+    throw std::invalid_argument("Texture2DArray: " + std::to_string(data.bytes.size()) + " bytes for a level of " +
+                                std::to_string(expected));
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  TightRows tight(GL_UNPACK_ALIGNMENT);
+  glTextureSubImage3D(mId, level, 0, 0, 0, width(level), height(level), mLayers, data.format, data.type,
+                      data.bytes.data());
+}
+
+void Texture2DArray::generateMipmaps() { glGenerateTextureMipmap(mId); }
+
 Texture2DArray::Texture2DArray(const Texture2DArrayDesc& desc)
     : mWidth(desc.width),
       mHeight(desc.height),

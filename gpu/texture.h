@@ -139,6 +139,12 @@ class Texture2DArray {
   GLenum internalFormat() const { return mInternalFormat; }
   std::size_t sizeBytes() const;  // of its storage, every layer and level; 0 without a GL object
 
+  // Replaces one whole level of every layer: layer after layer, each as TextureData's rows.
+  // Throws std::invalid_argument when the byte count does not match.
+  void upload(const TextureData& data, GLint level = 0);
+  // Fills levels 1.. of every layer from level 0 (glGenerateTextureMipmap).
+  void generateMipmaps();
+
   void bind(GLuint unit) const { glBindTextureUnit(unit, mId); }
   // Every layer as an image2DArray for compute (format: the internal format; access as
   // Texture2D::bindImage).

@@ -265,6 +265,9 @@ class PathTracer {
       }
     } else if (m.reflectance) {
       for (int j = 0; j < 4; ++j) albedoOrN[j] = static_cast<float>(m.reflectance->at(lambdaNm[j]));
+    } else if (m.spectralTexture) {
+      const Eigen::VectorXd c = sampleTexels(*m.spectralTexture, hit.uv);
+      for (int j = 0; j < 4; ++j) albedoOrN[j] = static_cast<float>(reflectanceAt(*m.spectralTexture, c, lambdaNm[j]));
     } else {
       vec3 coefficients = m.baseColourTexture >= 0 ? RgbAlbedoSpectrum(mTable, hit.albedo).coefficients()
                                                    : input.coefficients;

@@ -11,7 +11,7 @@
 // absoluteTristimulusScale), so every path is an unbiased estimate of the pixel's XYZ in cd/m².
 // Albedos are upsampled with the scene colour space's Jakob–Hanika table (manual lookup, the
 // reference path) and evaluated at the wavelengths exactly; measured reflectances and conductors'
-// n, k are evaluated at them as tabulated.
+// n, k are evaluated at them as tabulated, spectral textures filtered bilinearly at the hit's uv.
 //
 // Light transport.
 // - Direct: what the rasteriser computes. At the first hit, every light (directional, point,

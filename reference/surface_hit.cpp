@@ -63,6 +63,7 @@ SurfaceHit surfaceHit(const Scene& scene, const RayHit& hit, const glm::vec3& or
   n = glm::dot(n, n) > 1e-20f ? glm::normalize(n) : (frontFacing ? 1.0f : -1.0f) * s.geometricNormalW;
   if (!frontFacing) n = -n;
   glm::vec2 uv = a.uv * w + b.uv * hit.u + c.uv * hit.v;
+  s.uv = uv;
   glm::vec4 tangent = a.tangent * w + b.tangent * hit.u + c.tangent * hit.v;
 
   int textures = 0;

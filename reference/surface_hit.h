@@ -17,6 +17,7 @@ struct SurfaceHit {
   float metallic = 0.0f;
   float roughness = 0.0f;
   glm::vec3 normalW{0.0f};           // shading normal, unit, turned like the G-buffer's
+  glm::vec2 uv{0.0f};                // interpolated texture coordinates
   int material = 0;                  // index into Scene::materials
   // Diffuse lobe only (albedo/π): the material says so (the thesis's spheres), or a technique
   // shades the object itself (PRT's objects, diffuse by definition, lit by its environment).

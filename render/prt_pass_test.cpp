@@ -22,6 +22,7 @@
 #include "gpu/texture.h"
 #include "render/cpu_shading.h"
 #include "render/gbuffer_readback_test_support.h"
+#include "render/prt_twin_test_support.h"
 #include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
 #include "spectral/table_test_support.h"
@@ -32,73 +33,6 @@ namespace prism::render {
 namespace {
 
 const std::filesystem::path kExampleScenes = PRISM_SCENES_DIR;
-
-struct Hit {
-  std::size_t triangle = 0;
-  glm::dvec3 barycentric{0.0};
-  double distance = 0.0;
-};
-
-// The nearest triangle along the ray (Möller & Trumbore 1997), in double.
-std::optional<Hit> intersect(const prt::PrtDrawData& d, const glm::dvec3& origin, const glm::dvec3& dir) {
-  std::optional<Hit> best;
-  for (std::size_t t = 0; t + 2 < d.indices.size(); t += 3) {
-    glm::dvec3 a(d.positionsW[d.indices[t]]), b(d.positionsW[d.indices[t + 1]]), c(d.positionsW[d.indices[t + 2]]);
-    glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(dir, e2);
-    double det = glm::dot(e1, p);
-    if (std::abs(det) < 1e-14) continue;
-    glm::dvec3 s = origin - a;
-    double u = glm::dot(s, p) / det;
-    if (u < 0.0 || u > 1.0) continue;
-    glm::dvec3 q = glm::cross(s, e1);
-    double v = glm::dot(dir, q) / det;
-    if (v < 0.0 || u + v > 1.0) continue;
-    double distance = glm::dot(e2, q) / det;
-    if (distance <= 0.0 || (best && distance >= best->distance)) continue;
-    best = Hit{t, glm::dvec3(1.0 - u - v, u, v), distance};
-  }
-  return best;
-}
-
-// The ray through window position (x, y) (GL's: y up, pixel centres at +0.5).
-std::pair<glm::dvec3, glm::dvec3> pixelRay(const CameraTransform& camera, double x, double y, int w, int h) {
-  glm::dvec2 ndc(2.0 * x / w - 1.0, 2.0 * y / h - 1.0);
-  glm::dmat4 inverse(camera.inverseViewProjection);
-  glm::dvec4 nearPoint = inverse * glm::dvec4(ndc, -1.0, 1.0), farPoint = inverse * glm::dvec4(ndc, 1.0, 1.0);
-  glm::dvec3 n = glm::dvec3(nearPoint) / nearPoint.w, f = glm::dvec3(farPoint) / farPoint.w;
-  return {n, glm::normalize(f - n)};
-}
-
-// The hit through pixel (x, y)'s centre when the pixel lies inside one object (rays half a pixel
-// away hit the same material): a silhouette's pixels may take another triangle's colour.
-std::optional<Hit> interiorHit(const prt::PrtDrawData& d, const CameraTransform& camera, int x, int y, int w, int h) {
-  auto [origin, dir] = pixelRay(camera, x + 0.5, y + 0.5, w, h);
-  std::optional<Hit> hit = intersect(d, origin, dir);
-  if (!hit) return std::nullopt;
-  for (glm::dvec2 o : {glm::dvec2(-0.5, 0.0), glm::dvec2(0.5, 0.0), glm::dvec2(0.0, -0.5), glm::dvec2(0.0, 0.5)}) {
-    auto [o2, d2] = pixelRay(camera, x + 0.5 + o.x, y + 0.5 + o.y, w, h);
-    std::optional<Hit> h2 = intersect(d, o2, d2);
-    if (!h2 || d.vertexMaterial[d.indices[h2->triangle]] != d.vertexMaterial[d.indices[hit->triangle]]) return std::nullopt;
-  }
-  return hit;
-}
-
-// The fragment shader's sum on the CPU: Ê interpolated with the hit's barycentrics, then prtXyz,
-// for every projection (the 5 nm reference has six).
-glm::dvec3 cpuTristimulus(const prt::PrtDrawData& d, const Hit& hit) {
-  glm::dvec3 sum(0.0);
-  const int material = d.vertexMaterial[d.indices[hit.triangle]];
-  for (const prt::PrtProjection& p : d.projections) {
-    shared::PrtBasisIrradiance e{};
-    for (int k = 0; k < 3; ++k) {
-      std::uint32_t v = d.indices[hit.triangle + static_cast<std::size_t>(k)];
-      shared::PrtBasisIrradiance ev = shared::prtVertexIrradiance(p.environment, d.transfer[v], p.basisCount);
-      for (int j = 0; j < p.basisCount; ++j) e.e[j] += static_cast<float>(hit.barycentric[k]) * ev.e[j];
-    }
-    sum += glm::dvec3(shared::prtXyz(e, p.reflectances[static_cast<std::size_t>(material)], p.basisCount));
-  }
-  return sum;
-}
 
 struct PrtParityCase {
   prt::PrtMode mode;

@@ -12,12 +12,14 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "spectral/spectral_texture.h"
 #include "spectral/spectrum.h"
 #include "techniques/technique_section.h"
 
@@ -69,6 +71,9 @@ struct Material {
   std::optional<Spectrum> reflectance;
   // Optional conductor: specular-only, Fresnel from n and k per wavelength. Never upsampled.
   std::optional<ConductorIor> conductor;
+  // Optional spectral texture (docs/spectral-texture.md): the reflectance per texel, in place of
+  // base colour, texture and reflectance. Only PRT objects shade it (the loader refuses others).
+  std::shared_ptr<const SpectralTexture> spectralTexture;
   int baseColourTexture = -1;         // index into Scene::textures, sRGB-encoded
   int metallicRoughnessTexture = -1;  // glTF: metallic in B, roughness in G, linear
   int normalTexture = -1;             // tangent-space normal map, linear

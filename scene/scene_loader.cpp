@@ -13,6 +13,7 @@
 #include "scene/conductors.h"
 #include "scene/gltf_loader.h"
 #include "scene/procedural_mesh.h"
+#include "imaging/spectral_texture_file.h"
 #include "core/json_schema.h"
 #include "spectral/colour_space.h"
 #include "spectral/spectrum_csv.h"
@@ -220,9 +221,29 @@ class SceneParser {
     return index;
   }
 
+  std::shared_ptr<const SpectralTexture> spectralTexture(const Node& n) {
+    fs::path path = file(n);
+    std::error_code ec;
+    std::string key = fs::weakly_canonical(path, ec).string();
+    if (auto it = mSpectralTextures.find(key); it != mSpectralTextures.end()) return it->second;
+    try {
+      return mSpectralTextures[key] = std::make_shared<const SpectralTexture>(imaging::readSpectralTexture(path));
+    } catch (const Error& e) {
+      n.fail(e.what());
+    }
+  }
+
+  // Only PRT objects shade spectral textures: the deferred pipeline reads no such texture.
+  void checkSpectralTexture(const Node& o, int material, const std::string& technique) const {
+    const Material& m = mScene.materials.at(static_cast<std::size_t>(material));
+    if (m.spectralTexture && technique != "prt")
+      o.fail("material '" + m.name + "' has a spectral texture, which only PRT objects (\"technique\": \"prt\") shade");
+  }
+
   Material material(const Node& n, const std::string& name) {
     n.expectObject({"base_colour", "base_colour_srgb", "metallic", "roughness", "lambertian",
-                    "reflectance", "conductor", "base_colour_texture", "metallic_roughness_texture", "normal_texture"});
+                    "reflectance", "conductor", "base_colour_texture", "metallic_roughness_texture", "normal_texture",
+                    "spectral_texture"});
     Material m;
     m.name = name;
     if (n.has("base_colour") && n.has("base_colour_srgb"))
@@ -261,6 +282,11 @@ class SceneParser {
     if (auto t = n.optionalChild("base_colour_texture")) m.baseColourTexture = texture(*t, true);
     if (auto t = n.optionalChild("metallic_roughness_texture")) m.metallicRoughnessTexture = texture(*t, false);
     if (auto t = n.optionalChild("normal_texture")) m.normalTexture = texture(*t, false);
+    if (auto t = n.optionalChild("spectral_texture")) {
+      for (const char* other : {"base_colour", "base_colour_srgb", "reflectance", "conductor", "base_colour_texture"})
+        if (n.has(other)) t->fail(std::string("a spectral texture is the reflectance: give it or ") + other + ", not both");
+      m.spectralTexture = spectralTexture(*t);
+    }
     return m;
   }
 
@@ -307,7 +333,10 @@ class SceneParser {
       fs::path path = file(g);
       GltfPlacement placement;
       if (auto t = o.optionalChild("transform")) placement.transform = transform(*t);
-      if (auto m = o.optionalChild("material")) placement.materialOverride = materialReference(*m);
+      if (auto m = o.optionalChild("material")) {
+        placement.materialOverride = materialReference(*m);
+        checkSpectralTexture(o, placement.materialOverride, technique);
+      }
       try {
         std::size_t first = mScene.meshes.size();
         appendGltf(path, mFolder, placement, mScene);
@@ -347,6 +376,7 @@ class SceneParser {
     mesh.name = name;
     mesh.technique = technique;
     mesh.material = materialReference(o.child("material"));
+    checkSpectralTexture(o, mesh.material, technique);
     mScene.meshes.push_back(std::move(mesh));
   }
 
@@ -355,6 +385,7 @@ class SceneParser {
   Scene mScene;
   std::map<std::string, int> mMaterialIndex;
   std::map<std::string, int> mTextureIndex;
+  std::map<std::string, std::shared_ptr<const SpectralTexture>> mSpectralTextures;  // by canonical path
   std::vector<std::pair<Node, std::string>> mObjectTechniques;  // an object's `technique` and its node
 };
 

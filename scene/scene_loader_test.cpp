@@ -171,7 +171,7 @@ TEST_F(SceneFolder, UnknownKeyListsTheAllowedOnes) {
   EXPECT_EQ(errorOf([&] { loadScene(f); }),
             f.string() + ": /materials/m/base_color: unknown key (allowed: base_colour, base_colour_srgb, "
                          "metallic, roughness, lambertian, reflectance, conductor, base_colour_texture, "
-                         "metallic_roughness_texture, normal_texture)");
+                         "metallic_roughness_texture, normal_texture, spectral_texture)");
 }
 
 TEST_F(SceneFolder, WrongTypesAndRangesNameThePlace) {

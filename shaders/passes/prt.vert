@@ -13,16 +13,19 @@
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in uint aMaterial;
+layout(location = 2) in vec2 aUv;
 layout(std430, binding = kPrtTransferBinding) readonly buffer Transfers { Sh25 transfers[]; };
 layout(std430, binding = kPrtEnvironmentBinding) readonly buffer Environment { PrtEnvironment environment; };
 uniform mat4 uViewProjection;
 out float vIrradiance[PRISM_PRT_BASIS_COUNT];
 flat out uint vMaterial;
+out vec2 vUv;
 invariant gl_Position;
 
 void main() {
   PrtBasisIrradiance e = prtVertexIrradiance(environment, transfers[gl_VertexID], PRISM_PRT_BASIS_COUNT);
   for (int j = 0; j < PRISM_PRT_BASIS_COUNT; ++j) vIrradiance[j] = e.e[j];
   vMaterial = aMaterial;
+  vUv = aUv;
   gl_Position = uViewProjection * vec4(aPosition, 1.0);
 }

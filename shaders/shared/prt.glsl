@@ -57,6 +57,9 @@ PRISM_INLINE vec3 prtXyz(IN(PrtBasisIrradiance) irradiance, IN(PrtReflectance) r
 const int kPrtTransferBinding = 7;
 const int kPrtEnvironmentBinding = 8;
 const int kPrtMaterialsBinding = 9;
+// A textured material's R̂ (techniques/prt/prt_texture.h): a sampler2DArray of RGBA16F, layer j
+// holding R̂_j in .rgb, sampled at the fragment's uv in place of the material's PrtGpuMaterial.
+const int kPrtReflectanceTextureUnit = 0;
 
 struct PrtGpuMaterial {
   vec4 r[16];  // .xyz = R̂_j, .w = 0

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <functional>
 #include <numbers>
 #include <span>
 
@@ -23,8 +24,9 @@ namespace {
 struct GpuVertex {  // prt.vert's attributes
   glm::vec3 positionW;
   std::uint32_t material;
+  glm::vec2 uv;
 };
-static_assert(sizeof(GpuVertex) == 16);
+static_assert(sizeof(GpuVertex) == 24);
 
 // An immutable buffer of the values, at least 16 bytes (a zero-sized buffer cannot be bound),
 // padded with zeros rather than read past the values' end.
@@ -78,6 +80,7 @@ void PrtPass::prepareGeometry(const Scene& scene) {
   std::vector<GpuVertex> vertices;
   d.meshes = bake.meshes;
   d.indices = bake.mesh.indices;
+  GLint first = 0;
   for (std::size_t i : d.meshes) {
     const Mesh& mesh = scene.meshes[i];
     auto slot = std::find(d.materials.begin(), d.materials.end(), mesh.material);
@@ -85,10 +88,22 @@ void PrtPass::prepareGeometry(const Scene& scene) {
     const int material = static_cast<int>(slot - d.materials.begin());
     for (const Vertex& v : mesh.vertices) {
       d.positionsW.push_back(v.position);
+      d.uvs.push_back(v.uv);
       d.vertexMaterial.push_back(material);
-      vertices.push_back({v.position, static_cast<std::uint32_t>(material)});
+      vertices.push_back({v.position, static_cast<std::uint32_t>(material), v.uv});
     }
+    // The mesh's indices follow its predecessors' in the bake's order (prt_scene_mesh.h).
+    const Material& m = scene.materials.at(static_cast<std::size_t>(mesh.material));
+    const int textured = m.spectralTexture || m.baseColourTexture >= 0 ? material : -1;
+    const GLsizei count = static_cast<GLsizei>(mesh.indices.size());
+    if (!mRanges.empty() && mRanges.back().material == -1 && textured == -1) {
+      mRanges.back().count += count;
+    } else {
+      mRanges.push_back({first, count, textured});
+    }
+    first += count;
   }
+  PRISM_CHECK(static_cast<std::size_t>(first) == d.indices.size());
   if (d.indices.empty()) return;
   // The transfer: from the cache when precompute() or an earlier run baked it; else baked here,
   // with percentages (the commands' progress bars sit above the renderer).
@@ -109,7 +124,8 @@ void PrtPass::prepareGeometry(const Scene& scene) {
   mIndices = bufferOf(std::span<const std::uint32_t>(d.indices), "PRT indices");
   mTransfer = bufferOf(std::span<const shared::Sh25>(d.transfer), "PRT transfer");
   gpu::VertexArrayDesc vao;
-  vao.attributes = {{0, 3, GL_FLOAT, false, false, 0}, {1, 1, GL_UNSIGNED_INT, false, true, 12}};
+  vao.attributes = {{0, 3, GL_FLOAT, false, false, 0}, {1, 1, GL_UNSIGNED_INT, false, true, 12},
+                    {2, 2, GL_FLOAT, false, false, 16}};
   vao.vertices = &mVertices;
   vao.strideBytes = sizeof(GpuVertex);
   vao.indices = &mIndices;
@@ -132,50 +148,104 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
       Eigen::VectorXd rho = sampleOnGrid(*material.reflectance);
       measured = rho.dot(Eigen::VectorXd::LinSpaced(rho.size(), 1.0, static_cast<double>(rho.size())));
     }
-    key += fmt::format("|{},{},{},{}", material.baseColour.x, material.baseColour.y, material.baseColour.z, measured);
+    key += fmt::format("|{},{},{},{},{},{}", material.baseColour.x, material.baseColour.y, material.baseColour.z, measured,
+                       material.baseColourTexture, static_cast<const void*>(material.spectralTexture.get()));
   }
   if (key == mProjectionKey) return;
   std::vector<Spectrum> reflectances;
+  std::vector<std::shared_ptr<const PrtTextureSource>> textures;
   for (int m : d.materials) {
     const Material& material = input.scene.materials.at(static_cast<std::size_t>(m));
-    reflectances.push_back(material.reflectance ? *material.reflectance
-                                                : RgbAlbedoSpectrum(input.table, material.baseColour).toDense());
+    std::shared_ptr<const PrtTextureSource> texture;
+    if (material.spectralTexture) {
+      // The sun of the spectral sky is the deferred pipeline's light, and it reads no spectral texture.
+      if (section.sky && section.sky->sunDisc)
+        throw Error(fmt::format("PRT: material '{}' has a spectral texture, which the spectral sky's sun (lit by the "
+                                "deferred pipeline) cannot read: set prt.environment.atmosphere.sun_disc to false",
+                                material.name));
+      texture = std::make_shared<const PrtTextureSource>(material.spectralTexture);
+    } else if (material.baseColourTexture >= 0) {
+      const Image& image = input.scene.textures.at(static_cast<std::size_t>(material.baseColourTexture));
+      texture = std::make_shared<const PrtTextureSource>(
+          PrtRgbTexels{image.width, image.height, image.rgba, image.srgb, material.baseColour}, input.table);
+    }
+    textures.push_back(texture);
+    // A textured material's R̂ comes from its texture; its slot in the projections stays black.
+    reflectances.push_back(texture                ? Spectrum::constant(0.0)
+                           : material.reflectance ? *material.reflectance
+                                                  : RgbAlbedoSpectrum(input.table, material.baseColour).toDense());
   }
   const RgbToSpectrumTable& srgb =
       input.table.gamut() == colourSpace("srgb").name ? input.table : rendererRgbToSpectrumTable("srgb");
   SpectralEnvironment environment = sectionEnvironment(section, srgb);
   // Radiance leaving a Lambertian surface is ρ/π times its irradiance: the 1/π that PRT's sums
   // leave out (prt_evaluation.h's XYZ are irradiance × reflectance), so that Y is luminance.
-  Eigen::MatrixXd grid = environmentOnGrid(environment) / std::numbers::pi;
-  std::vector<PrtProjection> projections;
+  const Eigen::MatrixXd grid = environmentOnGrid(environment) / std::numbers::pi;
+  std::function<std::vector<PrtProjection>(const std::vector<Spectrum>&)> project;
   int basisCount = 0;
   double energy = 0.0;
   if (mode == PrtMode::Spectral) {
-    // The basis of every reflectance of the PRT objects and every spectrum of the environment.
+    // The basis of every reflectance of the PRT objects (a texture's: texels on a lattice) and
+    // every spectrum of the environment.
     std::vector<Eigen::VectorXd> spectra;
-    for (const Spectrum& s : reflectances) spectra.push_back(sampleOnGrid(s));
+    for (std::size_t i = 0; i < reflectances.size(); ++i) {
+      if (!textures[i]) {
+        spectra.push_back(sampleOnGrid(reflectances[i]));
+      } else {
+        for (Eigen::VectorXd& s : textures[i]->representativeSpectra()) spectra.push_back(std::move(s));
+      }
+    }
     for (const EnvironmentTerm& t : environment.terms) spectra.push_back(sampleOnGrid(t.spectrum));
     SpectralBasis basis(spectra);
     basisCount = std::min(section.basis, basis.available());
     energy = basis.capturedEnergy(basisCount);
-    projections.push_back(projectSpectral(reflectances, grid, input.observer, basis.leading(basisCount)));
+    project = [&grid, &input, phi = basis.leading(basisCount)](const std::vector<Spectrum>& r) {
+      return std::vector<PrtProjection>{projectSpectral(r, grid, input.observer, phi)};
+    };
   } else if (mode == PrtMode::RgbPrt) {
     basisCount = 3;
-    projections.push_back(projectRgb(reflectances, grid, input.observer, colourSpace(input.scene.colourSpace)));
+    project = [&grid, &input](const std::vector<Spectrum>& r) {
+      return std::vector<PrtProjection>{projectRgb(r, grid, input.observer, colourSpace(input.scene.colourSpace))};
+    };
   } else {
-    projections = projectReference(reflectances, grid, input.observer);
+    project = [&grid, &input](const std::vector<Spectrum>& r) { return projectReference(r, grid, input.observer); };
   }
+  std::vector<PrtProjection> projections = project(reflectances);
+  const bool textured = std::any_of(textures.begin(), textures.end(), [](const auto& t) { return t != nullptr; });
+  std::vector<Eigen::MatrixXd> maps = textured ? gridReflectanceMaps(project) : std::vector<Eigen::MatrixXd>{};
   // Built whole before anything is replaced.
   std::vector<gpu::Buffer> environments, materials;
-  for (const PrtProjection& p : projections) {
+  std::vector<std::vector<gpu::Texture2DArray>> arrays(projections.size());
+  for (std::size_t c = 0; c < projections.size(); ++c) {
+    const PrtProjection& p = projections[c];
     environments.push_back(bufferOf(std::span<const shared::PrtEnvironment>(&p.environment, 1), "PRT environment"));
     std::vector<shared::PrtGpuMaterial> packed;
     for (const shared::PrtReflectance& r : p.reflectances) packed.push_back(shared::prtGpuMaterial(r));
     materials.push_back(bufferOf(std::span<const shared::PrtGpuMaterial>(packed), "PRT materials"));
+    arrays[c].resize(textures.size());
+    for (std::size_t m = 0; m < textures.size(); ++m) {
+      if (!textures[m]) continue;
+      const PrtTextureSource& source = *textures[m];
+      std::vector<std::uint16_t> layers = PrtTexelProjector(source, maps[c]).layers();
+      gpu::Texture2DArrayDesc desc;
+      desc.width = source.width();
+      desc.height = source.height();
+      desc.layers = p.basisCount;
+      desc.internalFormat = GL_RGBA16F;
+      desc.levels = 0;
+      desc.sampling.wrap = GL_REPEAT;
+      desc.label = fmt::format("PRT reflectance texture (material {}, projection {})", d.materials[m], c);
+      gpu::Texture2DArray& t = arrays[c][m] = gpu::Texture2DArray(desc);
+      t.upload({GL_RGBA, GL_HALF_FLOAT, std::as_bytes(std::span<const std::uint16_t>(layers))});
+      t.generateMipmaps();
+    }
   }
   mEnvironments = std::move(environments);
   mMaterials = std::move(materials);
+  mTextures = std::move(arrays);
   d.projections = std::move(projections);
+  d.textures = std::move(textures);
+  d.reflectanceMaps = std::move(maps);
   d.basisCount = basisCount;
   d.capturedEnergy = energy;
   mProjectionKey = std::move(key);
@@ -195,7 +265,11 @@ void PrtPass::drawForward(const ForwardDrawInput& input) {
     p.setUniform("uViewProjection", input.camera.viewProjection);
     mEnvironments[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtEnvironmentBinding);
     mMaterials[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtMaterialsBinding);
-    mVertexArray.draw();
+    for (const DrawRange& range : mRanges) {
+      p.setUniform("uTextured", GLint{range.material >= 0 ? 1 : 0});
+      if (range.material >= 0) mTextures[c][static_cast<std::size_t>(range.material)].bind(shared::kPrtReflectanceTextureUnit);
+      mVertexArray.draw(range.count, range.first);
+    }
   }
 }
 
@@ -203,6 +277,8 @@ std::size_t PrtPass::gpuMemoryBytes() const {
   std::size_t bytes = mVertices.sizeBytes() + mIndices.sizeBytes() + mTransfer.sizeBytes();
   for (const gpu::Buffer& b : mEnvironments) bytes += b.sizeBytes();
   for (const gpu::Buffer& b : mMaterials) bytes += b.sizeBytes();
+  for (const std::vector<gpu::Texture2DArray>& perMaterial : mTextures)
+    for (const gpu::Texture2DArray& t : perMaterial) bytes += t.sizeBytes();
   return bytes;
 }
 

@@ -10,6 +10,10 @@
 // RGB-PRT are one draw each; the 5 nm reference six, one per chunk of ≤ 16 wavelengths, summed by
 // the blending.
 //
+// Textured materials (a spectral texture, or an RGB base colour texture upsampled per texel) draw
+// R̂ from an m-layer RGBA16F array texture instead (prt_texture.h), sampled at the interpolated uv
+// with mipmaps; the draws go mesh range by mesh range, untextured neighbours together.
+//
 // Prepared on first use: the transfer from the cache (prism prt bake's, keyed by the meshes and
 // the bake settings) or baked (every PRT object occluding the others); the basis and projections
 // again whenever the section, the observer or the objects' materials change.
@@ -26,7 +30,9 @@
 #include "gpu/buffer.h"
 #include "gpu/program.h"
 #include "gpu/vertex_array.h"
+#include "gpu/texture.h"
 #include "techniques/prt/prt_evaluation.h"
+#include "techniques/prt/prt_texture.h"
 #include "techniques/technique_pass.h"
 
 namespace prism::prt {
@@ -36,10 +42,14 @@ struct PrtDrawData final : TechniqueTexels {
   std::vector<std::size_t> meshes;          // indices into Scene::meshes, in the order drawn
   std::vector<glm::vec3> positionsW;        // the scene's world space (y-up), as the G-buffer draws them
   std::vector<std::uint32_t> indices;       // into positionsW, three per triangle
+  std::vector<glm::vec2> uvs;               // per vertex, as the meshes give them
   std::vector<int> vertexMaterial;          // into each projection's reflectances
   std::vector<int> materials;               // Scene::materials index of each of those
   std::vector<shared::Sh25> transfer;       // per vertex, PRT's z-up frame
   std::vector<PrtProjection> projections;   // drawn and summed
+  // Per material: its reflectance texture, or null (then its R̂ is the projection's reflectance).
+  std::vector<std::shared_ptr<const PrtTextureSource>> textures;
+  std::vector<Eigen::MatrixXd> reflectanceMaps;  // per projection, its W (prt_texture.h), when a texture is drawn
   int basisCount = 0;                       // spectral: m after clamping to the basis's size
   double capturedEnergy = 0.0;              // spectral: of the m functions
 };
@@ -62,12 +72,21 @@ class PrtPass final : public TechniquePass {
   void prepareProjections(const ForwardDrawInput& input);
   const gpu::Program& program(int basisCount);
 
+  // Indices [first, first + count) of one material, or of untextured materials together.
+  struct DrawRange {
+    GLint first = 0;
+    GLsizei count = 0;
+    int material = -1;  // a textured material, or -1
+  };
+
   std::shared_ptr<PrtDrawData> mData;
+  std::vector<DrawRange> mRanges;
   bool mGeometryReady = false;
   std::string mProjectionKey;  // what the projections were made from
   gpu::Buffer mVertices, mIndices, mTransfer;
   gpu::VertexArray mVertexArray;
   std::vector<gpu::Buffer> mEnvironments, mMaterials;  // one each per projection
+  std::vector<std::vector<gpu::Texture2DArray>> mTextures;  // per projection, per material (textured ones)
   std::map<int, gpu::Program> mPrograms;               // per basis count
 };
 

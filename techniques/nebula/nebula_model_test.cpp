@@ -106,6 +106,41 @@ TEST(NebulaSpectra, FilterFitsFollowTheirData) {
   EXPECT_GT(hubble.channels[0].response.at(0.6718294), 0.1);
 }
 
+// A moved and resized passband is the fitted one, stretched about its support's centre and moved:
+// P'(c + shift + (λ − c)·scale) = P(λ), its integral × scale while it stays in the band; out of
+// the band or out of range, a one-line error naming it.
+TEST(NebulaSpectra, PassbandEditsMoveAndStretchTheFittedResponse) {
+  FilterSet hubble = hubblePalette(dataFile("hst_wfc3_uvis_filters.csv"));
+  const Passband& oiii = hubble.channels[2];  // F502N
+  const double centre = 0.5 * (oiii.response.lambdaMinUm() + oiii.response.lambdaMaxUm());
+  auto integral = [](const Passband& b) {
+    double sum = 0.0;
+    for (int i = 0; i < 40000; ++i) sum += b.response.at(kBandLoUm + (kBandHiUm - kBandLoUm) * (i + 0.5) / 40000);
+    return sum * (kBandHiUm - kBandLoUm) / 40000;
+  };
+  for (PassbandEdit e : {PassbandEdit{30.0, 1.0}, PassbandEdit{-12.5, 2.5}, PassbandEdit{0.0, 0.25}}) {
+    Passband edited = editedPassband(oiii, e);
+    for (int i = 0; i <= 50; ++i) {
+      const double lambda = oiii.response.lambdaMinUm() + (oiii.response.lambdaMaxUm() - oiii.response.lambdaMinUm()) * i / 50;
+      const double moved = centre + e.shiftNm * 1e-3 + (lambda - centre) * e.widthScale;
+      EXPECT_NEAR(edited.response.at(moved), oiii.response.at(lambda), 1e-9) << e.shiftNm << " " << e.widthScale << " " << lambda;
+    }
+    EXPECT_NEAR(integral(edited), e.widthScale * integral(oiii), 2e-3 * integral(oiii));
+  }
+  // Moved past the band's red end: what is left is clipped to it.
+  Passband clipped = editedPassband(oiii, {200.0, 4.0});
+  EXPECT_LE(clipped.response.lambdaMaxUm(), kBandHiUm);
+  EXPECT_THROW(editedPassband(hubble.channels[1], {200.0, 0.25}), Error);  // Hα at 856 nm: nothing left
+  EXPECT_THROW(editedPassband(oiii, {201.0, 1.0}), Error);
+  EXPECT_THROW(editedPassband(oiii, {0.0, 5.0}), Error);
+  try {
+    editedPassband(hubble.channels[1], {200.0, 0.25});
+  } catch (const Error& x) {
+    EXPECT_NE(std::string(x.what()).find("passband F656N: moved 200 nm and × 0.25 wide, nothing of it is left in 380–780 nm"),
+              std::string::npos) << x.what();
+  }
+}
+
 TEST(NebulaSpectra, EmissionLinesFromData) {
   auto lines = readEmissionLines(dataFile("nebula_lines.csv"));
   ASSERT_EQ(lines.size(), 15u);

@@ -123,7 +123,7 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
   const NebulaModel& m = pre.model;
   if (m.density.values.empty()) throw Error("nebula: no density");
   if (s.basisSize < 1 || s.basisSize > 8) throw Error("nebula: the basis size must be 1…8");
-  pre.filters = filterSet(m.filters);
+  pre.filters = editedFilterSet(filterSet(m.filters), m.passbands);
   std::size_t stages = m.stars.size() + 2, done = 0;
   auto tick = [&] {
     if (progress) progress(++done, stages);

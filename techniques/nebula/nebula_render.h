@@ -66,6 +66,7 @@ struct NebulaModel {
   StarModel starModel = StarModel::Planck;
   NebulaCamera camera;
   std::string filters = "hubble";  // "hubble" or "cie1931"
+  std::array<PassbandEdit, 3> passbands{};  // each channel's passband moved and resized
 };
 
 enum class Method { Reference, Analytic, Projection, LightDensity, PreIntegration };

@@ -36,11 +36,14 @@ struct Errors {
   double preIntegration, analytic, projection, projectionClosedForm, lightDensity, lightDensityTotal, referenceConvergence;
 };
 
-Errors measure(const std::string& filters, int stars, bool doublePrecision = false, bool distant = false) {
+Errors measure(const std::string& filters, int stars, bool doublePrecision = false, bool distant = false,
+               const std::array<PassbandEdit, 3>& passbands = {}) {
   RenderSettings s;
   s.doublePrecision = doublePrecision;
   s.emissionLines = false;
-  NebulaRenderer r(smallNebula(filters, stars, distant), s);
+  NebulaModel model = smallNebula(filters, stars, distant);
+  model.passbands = passbands;
+  NebulaRenderer r(std::move(model), s);
   s.method = Method::Reference;
   NebulaImage reference = r.render(s);
   s.referenceIntervals = 32;
@@ -87,6 +90,15 @@ TEST(NebulaRender, ProjectionWithFourElementsIsWithinTwoPercentOfTheReference) {
       EXPECT_LE(d.analytic, 1e-3);
     }
   }
+}
+
+// Passbands moved and resized (the viewer's filter controls) stay polynomials of their degree,
+// so every method integrates them as it did the fitted ones: projection within the 2 %.
+TEST(NebulaRender, EditedPassbandsKeepProjectionWithinTwoPercent) {
+  Errors e = measure("hubble", 1, false, false, {PassbandEdit{15.0, 1.5}, PassbandEdit{-10.0, 3.0}, PassbandEdit{30.0, 0.5}});
+  EXPECT_LT(e.referenceConvergence, 1e-4);
+  EXPECT_LE(e.projection, 0.02);
+  EXPECT_LE(e.preIntegration, 1e-3);
 }
 
 TEST(NebulaRender, ThreeStarsOfDifferentColours) {

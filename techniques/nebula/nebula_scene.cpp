@@ -103,6 +103,20 @@ DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, 
     if (m.filters != "hubble" && m.filters != "cie1931")
       n.child("filters").fail("must be 'hubble' or 'cie1931', not '" + excerpt(m.filters) + "'");
   }
+  if (auto bands = n.optionalChild("passbands")) {
+    if (bands->arraySize() != 3) bands->fail("expected three passband edits, one per channel");
+    for (std::size_t c = 0; c < 3; ++c) {
+      schema::Node e = bands->element(c);
+      e.expectObject({"shift_nm", "width"});
+      m.passbands[c] = {e.number("shift_nm", 0.0, schema::Range::closed(-kMaxPassbandShiftNm, kMaxPassbandShiftNm)),
+                        e.number("width", 1.0, schema::Range::closed(kMinPassbandWidthScale, kMaxPassbandWidthScale))};
+    }
+    try {
+      editedFilterSet(filterSet(m.filters), m.passbands);
+    } catch (const Error& e) {
+      bands->fail(e.what());
+    }
+  }
   if (n.has("steps")) steps = n.child("steps").integer(schema::Range::closed(1, 100000));
   return source;
 }
@@ -117,7 +131,7 @@ NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads)
   root.expectObject({"nebula"});
   schema::Node n = root.child("nebula");
   n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "stars",
-                  "star_model", "filters", "camera", "steps"});
+                  "star_model", "filters", "passbands", "camera", "steps"});
   NebulaScene scene;
   NebulaModel& m = scene.model;
   readNebulaKeys(n, m, scene.steps, threads);

@@ -36,13 +36,30 @@ TEST(NebulaScene, BadValuesNameTheirPlace) {
         "/nebula/density: give exactly one of 'noise' and 'file'");
   check("n4.json", R"({"nebula": {)" + noise + R"(, "stars": [], "colour": 1}})",
         "/nebula/colour: unknown key (allowed: density, extinction, scattering, scattering_spectrum, emission, "
-        "lines, stars, star_model, filters, camera, steps)");
+        "lines, stars, star_model, filters, passbands, camera, steps)");
   check("n5.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": [1, -2]}})",
         "/nebula/scattering_spectrum: the scattering spectrum is -0.56 at 780 nm: it must be ≥ 0 over 380–780 nm");
   check("n6.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": [1, 0, 0, 0, 1]}})",
         "/nebula/scattering_spectrum: expected 1 to 4 polynomial coefficients (up to a cubic), got 5");
   check("n7.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": "blue"}})",
         "/nebula/scattering_spectrum: must be 'grey', 'ccm' or 1 to 4 polynomial coefficients, not 'blue'");
+}
+
+TEST(NebulaScene, PassbandsAreMovedAndResizedPerChannel) {
+  const std::string noise = R"({"nebula": {"density": {"noise": {"resolution": 4}}, "stars": [])";
+  NebulaModel m = loadNebulaScene(writeTempFile(
+      "p1.json", noise + R"(, "passbands": [{"shift_nm": 12.5}, {}, {"width": 2, "shift_nm": -5}]}})")).model;
+  EXPECT_EQ(m.passbands[0], (PassbandEdit{12.5, 1.0}));
+  EXPECT_EQ(m.passbands[1], PassbandEdit{});
+  EXPECT_EQ(m.passbands[2], (PassbandEdit{-5.0, 2.0}));
+  auto error = [&](const std::string& name, const std::string& passbands) {
+    auto path = writeTempFile(name, noise + R"(, "passbands": )" + passbands + "}}");
+    return errorOf([&] { loadNebulaScene(path); }).substr(path.string().size());
+  };
+  EXPECT_EQ(error("p2.json", "[{}, {}]"), ": /nebula/passbands: expected three passband edits, one per channel");
+  EXPECT_EQ(error("p3.json", R"([{}, {"width": 8}, {}])"), ": /nebula/passbands/1/width: expected a number in [0.25, 4], got 8");
+  EXPECT_EQ(error("p4.json", R"([{}, {"shift_nm": 200, "width": 0.25}, {}])"),
+            ": /nebula/passbands: passband F656N: moved 200 nm and × 0.25 wide, nothing of it is left in 380–780 nm");
 }
 
 TEST(NebulaScene, TheScatteringSpectrum) {

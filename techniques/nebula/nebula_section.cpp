@@ -63,6 +63,7 @@ std::string NebulaSection::precomputationKey() const {
     key += fmt::format("noise {} {} {} {} {} {} {}|", p.resolution, p.octaves, p.frequency, p.amplitude, p.gain, p.bias,
                        p.seed);
   }
+  for (const PassbandEdit& e : m.passbands) key += fmt::format("{}×{}|", e.shiftNm, e.widthScale);
   for (const LineGroupStrength& l : m.lineGroups) key += fmt::format("{}={}|", l.group, l.strength);
   for (const NebulaStar& s : m.stars)
     key += fmt::format("{},{},{},{},{}|", s.position.x, s.position.y, s.position.z, s.temperatureK, s.luminosity);
@@ -76,7 +77,7 @@ void NebulaSection::regenerateDensity() {
 std::unique_ptr<TechniqueSection> NebulaSection::parse(const schema::Node& n, const TechniqueSections&) {
   using schema::Range;
   n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "stars",
-                  "star_model", "filters", "steps", "box", "method", "basis", "reference_samples", "intensity", "march_every_frame"});
+                  "star_model", "filters", "passbands", "steps", "box", "method", "basis", "reference_samples", "intensity", "march_every_frame"});
   auto s = std::make_unique<NebulaSection>();
   s->source = readNebulaKeys(n, s->model, s->steps, 0);
   s->density = std::make_shared<DensityGrid>(std::move(s->model.density));

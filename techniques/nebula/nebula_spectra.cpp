@@ -143,6 +143,44 @@ FilterSet filterSet(std::string_view name) {
   throw Error(fmt::format("unknown filter set '{}' (hubble, cie1931)", excerpt(name)));
 }
 
+Passband editedPassband(const Passband& band, const PassbandEdit& edit) {
+  if (!(std::abs(edit.shiftNm) <= kMaxPassbandShiftNm) ||
+      !(edit.widthScale >= kMinPassbandWidthScale && edit.widthScale <= kMaxPassbandWidthScale))
+    throw Error(fmt::format("passband {}: a shift of {} nm (at most ±{}) or a width × {} (within {}–{})", band.name,
+                            edit.shiftNm, kMaxPassbandShiftNm, edit.widthScale, kMinPassbandWidthScale,
+                            kMaxPassbandWidthScale));
+  if (edit == PassbandEdit{}) return band;
+  const double centre = 0.5 * (band.response.lambdaMinUm() + band.response.lambdaMaxUm());
+  const double moved = centre + edit.shiftNm * 1e-3, scale = edit.widthScale;
+  // P(αλ + β), α = 1/scale, β = centre − moved/scale: Σₙ aₙ(αλ + β)ⁿ expanded by the binomial theorem.
+  const double alpha = 1.0 / scale, beta = centre - moved / scale;
+  Passband out{band.name, {}, band.fitMaxErrorOfPeak};
+  for (const PolynomialPiece& piece : band.response.pieces) {
+    PolynomialPiece p;
+    p.lambda0Um = std::max(kBandLoUm, moved + (piece.lambda0Um - centre) * scale);
+    p.lambda1Um = std::min(kBandHiUm, moved + (piece.lambda1Um - centre) * scale);
+    if (!(p.lambda1Um > p.lambda0Um)) continue;
+    for (int n = 0; n <= kMaxDegree; ++n) {
+      double binomial = 1.0;  // C(n, k)
+      for (int k = 0; k <= n; ++k) {
+        p.coeffs[static_cast<std::size_t>(k)] +=
+            piece.coeffs[static_cast<std::size_t>(n)] * binomial * std::pow(alpha, k) * std::pow(beta, n - k);
+        binomial = binomial * (n - k) / (k + 1);
+      }
+    }
+    out.response.pieces.push_back(p);
+  }
+  if (out.response.pieces.empty())
+    throw Error(fmt::format("passband {}: moved {} nm and × {} wide, nothing of it is left in {}–{} nm", band.name,
+                            edit.shiftNm, edit.widthScale, kBandLoUm * 1e3, kBandHiUm * 1e3));
+  return out;
+}
+
+FilterSet editedFilterSet(FilterSet set, const std::array<PassbandEdit, 3>& edits) {
+  for (std::size_t c = 0; c < 3; ++c) set.channels[c] = editedPassband(set.channels[c], edits[c]);
+  return set;
+}
+
 namespace {
 constexpr double kHcOverKUmK = 14387.768775;  // hc/k in µm·K (CODATA 2018)
 }

@@ -76,6 +76,24 @@ FilterSet cieFilterSet();
 // By name ("hubble", "cie1931"); Error naming it when unknown.
 FilterSet filterSet(std::string_view name);
 
+// A passband moved and resized, as the viewer's filter controls edit it: its response stretched
+// `widthScale` times about the centre of its support (the same peak, a wider or narrower band),
+// then moved `shiftNm` along: P'(λ) = P(c + (λ − c − shift)/scale). Each fitted piece stays a
+// polynomial of its degree, so every method integrates the edited band as it did the fitted one.
+struct PassbandEdit {
+  double shiftNm = 0.0;     // in [−kMaxPassbandShiftNm, kMaxPassbandShiftNm]
+  double widthScale = 1.0;  // in [kMinPassbandWidthScale, kMaxPassbandWidthScale]
+  bool operator==(const PassbandEdit&) const = default;
+};
+inline constexpr double kMaxPassbandShiftNm = 200.0;
+inline constexpr double kMinPassbandWidthScale = 0.25;
+inline constexpr double kMaxPassbandWidthScale = 4.0;
+// Pieces are clipped to the band [kBandLoUm, kBandHiUm]; Error naming the passband when none of it
+// is left there, or when the edit is out of range.
+Passband editedPassband(const Passband& band, const PassbandEdit& edit);
+// Each channel by its edit; the set's name is kept.
+FilterSet editedFilterSet(FilterSet set, const std::array<PassbandEdit, 3>& edits);
+
 // Spectral radiance shapes of a star of temperature T (K) at λ (µm), up to a constant:
 // Planck's B(λ,T) ∝ λ⁻⁵/(e^(hc/λkT) − 1), and Wien's approximation A/λ⁵·e^(−B/λ), B = hc/kT.
 double planck(double lambdaUm, double temperatureK);

@@ -1,10 +1,14 @@
-// The nebula panel (techniques/nebula): method, basis size, steps, filters, intensity, the
-// medium, the density's noise and the stars. Sees only the PanelContext. Edits that make the
+// The nebula panel (techniques/nebula): method, basis size, steps, filters and their passbands
+// (moved and resized), intensity, the medium, the density's noise and the stars. Sees only the PanelContext. Edits that make the
 // pass precompute again (anything of the model: about half a second at 64³) or march again reach
 // the scene when a control is released, not while it is dragged; the intensity is live.
 #include <imgui.h>
 
+#include <map>
+
 #include <fmt/format.h>
+
+#include "core/error.h"
 
 #include "techniques/nebula/nebula_section.h"
 #include "techniques/nebula/viewer/nebula_viewer.h"
@@ -108,6 +112,37 @@ bool starControls(ReleasedEdits& edits, std::vector<nebula::NebulaStar>& stars) 
   return changed;
 }
 
+// Each channel's passband: moved (nm) and resized (× its width), or reset. An edit that would
+// leave no passband in the band is refused here, with its message, rather than by the pass.
+bool passbandControls(ReleasedEdits& edits, nebula::NebulaModel& model, const nebula::FilterSet& fitted, std::string& error) {
+  bool changed = false;
+  for (std::size_t c = 0; c < 3; ++c) {
+    ImGui::PushID(static_cast<int>(c));
+    ImGui::TextUnformatted(fitted.channels[c].name.c_str());
+    nebula::PassbandEdit e = model.passbands[c];
+    bool edited = edits.slider("shift", e.shiftNm, static_cast<float>(-nebula::kMaxPassbandShiftNm),
+                               static_cast<float>(nebula::kMaxPassbandShiftNm), "%+.0f nm");
+    edited |= edits.slider("width", e.widthScale, static_cast<float>(nebula::kMinPassbandWidthScale),
+                           static_cast<float>(nebula::kMaxPassbandWidthScale), "× %.2f", true);
+    if (ImGui::Button("reset")) {
+      e = {};
+      edited = true;
+    }
+    ImGui::PopID();
+    if (!edited) continue;
+    try {
+      nebula::editedPassband(fitted.channels[c], e);
+      model.passbands[c] = e;
+      error.clear();
+      changed = true;
+    } catch (const Error& x) {
+      error = x.what();
+    }
+  }
+  if (!error.empty()) ImGui::TextWrapped("%s", error.c_str());
+  return changed;
+}
+
 class NebulaPanel final : public Panel {
  public:
   const char* title() const override { return "Nebula"; }
@@ -124,6 +159,12 @@ class NebulaPanel final : public Panel {
     changed |= mEdits.slider("basis size", s.basis, 1, 8);
     changed |= mEdits.slider("steps", s.steps, 10, 400);
     changed |= stringCombo("filters", s.model.filters, {"hubble", "cie1931"});
+    if (ImGui::TreeNode("passbands")) {
+      auto fitted = mFilterSets.find(s.model.filters);
+      if (fitted == mFilterSets.end()) fitted = mFilterSets.emplace(s.model.filters, nebula::filterSet(s.model.filters)).first;
+      changed |= passbandControls(mEdits, s.model, fitted->second, mPassbandError);
+      ImGui::TreePop();
+    }
     // Live: the composite alone reads it.
     changed |= ImGui::SliderFloat("intensity", &s.intensity, 1e-3f, 1e4f, "%.3g", ImGuiSliderFlags_Logarithmic);
     changed |= mEdits.slider("extinction", s.model.extinction, 0.0f, 20.0f, "%.2f");
@@ -145,6 +186,8 @@ class NebulaPanel final : public Panel {
 
  private:
   ReleasedEdits mEdits;
+  std::map<std::string, nebula::FilterSet> mFilterSets;  // as fitted, by name: the passbands' names and checks
+  std::string mPassbandError;
 };
 
 }  // namespace

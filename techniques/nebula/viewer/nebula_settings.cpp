@@ -19,6 +19,27 @@ float nonNegative(const std::string& key, const std::string& value) {
 }
 
 constexpr std::string_view kStarPrefix = "nebula.star.";
+constexpr std::string_view kPassbandPrefix = "nebula.passband.";
+
+// A nebula.passband.C.shift_nm or .width key (C the channel, 0..2): false for any other key.
+bool setPassbandKey(nebula::NebulaSection* s, const std::string& key, const std::string& value) {
+  if (key.rfind(kPassbandPrefix, 0) != 0) return false;
+  const std::size_t dot = key.find('.', kPassbandPrefix.size());
+  const std::string what = dot == std::string::npos ? std::string() : key.substr(dot + 1);
+  if (what != "shift_nm" && what != "width") return false;
+  if (!s) throw Error("the scene has no nebula section");
+  const long channel = render::parseInteger(key, key.substr(kPassbandPrefix.size(), dot - kPassbandPrefix.size()), 0, 2);
+  std::array<nebula::PassbandEdit, 3> edits = s->model.passbands;
+  nebula::PassbandEdit& e = edits[static_cast<std::size_t>(channel)];
+  (what == "shift_nm" ? e.shiftNm : e.widthScale) = render::parseFloat(key, value);
+  try {
+    nebula::editedFilterSet(nebula::filterSet(s->model.filters), edits);
+  } catch (const Error& x) {
+    throw Error(key + ": " + x.what());
+  }
+  s->model.passbands = edits;
+  return true;
+}
 
 // What a nebula.star.I.<what> key sets ("temperature", "luminosity", "position"); empty for any
 // other key.
@@ -67,6 +88,7 @@ bool setNebulaKey(Scene& scene, const std::string& key, const std::string& value
   static const char* const kKeys[] = {"nebula.method",     "nebula.basis",      "nebula.steps",
                                       "nebula.filters",    "nebula.intensity",  "nebula.extinction",
                                       "nebula.scattering", "nebula.emission"};
+  if (setPassbandKey(scene.techniques.find<nebula::NebulaSection>(), key, value)) return true;
   bool known = !starKeyWhat(key).empty();
   for (const char* k : kKeys) known = known || key == k;
   if (!known) return false;

@@ -64,5 +64,26 @@ TEST(NebulaSetKeys, ChangeTheSectionAndRefuseBadValues) {
   EXPECT_EQ(s->basis, 3);
 }
 
+// nebula.passband.C.shift_nm and .width move and resize channel C's passband; an edit that leaves
+// nothing of it in the band, or a channel the set lacks, is refused and changes nothing.
+TEST(NebulaSetKeys, MoveAndResizePassbands) {
+  Scene scene;
+  EXPECT_EQ(nebulaKeyError(scene, "nebula.passband.0.width", "2"), "the scene has no nebula section");
+  scene.techniques.add(std::make_unique<nebula::NebulaSection>());
+  auto* s = scene.techniques.find<nebula::NebulaSection>();
+  EXPECT_TRUE(setNebulaKey(scene, "nebula.passband.1.shift_nm", "-20"));
+  EXPECT_TRUE(setNebulaKey(scene, "nebula.passband.1.width", "2"));
+  EXPECT_DOUBLE_EQ(s->model.passbands[1].shiftNm, -20.0);
+  EXPECT_DOUBLE_EQ(s->model.passbands[1].widthScale, 2.0);
+  EXPECT_EQ(s->model.passbands[0], nebula::PassbandEdit{});
+  EXPECT_FALSE(setNebulaKey(scene, "nebula.passband.1.centre", "3"));
+  EXPECT_NE(nebulaKeyError(scene, "nebula.passband.3.width", "2"), "");
+  EXPECT_NE(nebulaKeyError(scene, "nebula.passband.1.width", "9").find("nebula.passband.1.width: passband F656N"),
+            std::string::npos);
+  EXPECT_NE(nebulaKeyError(scene, "nebula.passband.1.shift_nm", "200").find("nothing of it is left"), std::string::npos);
+  EXPECT_DOUBLE_EQ(s->model.passbands[1].shiftNm, -20.0);
+  EXPECT_DOUBLE_EQ(s->model.passbands[1].widthScale, 2.0);
+}
+
 }  // namespace
 }  // namespace prism::viewer

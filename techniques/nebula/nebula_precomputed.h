@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <mutex>
 #include <vector>
 
@@ -73,8 +74,10 @@ struct NebulaPrecomputed {
   FilterSet filters;
   std::vector<StarSpectrum> spectra;
   std::vector<VoxelField> starDepth;  // g_s per voxel (µm), one field per star
-  // Emission lines: each line's λ and its response per channel (P_S(λₗ)·weight).
+  // Emission lines: each line's λ, its weight (its group's strength × its ratio) and its
+  // response per channel (P_S(λₗ)·weight).
   std::vector<double> lineLambdaUm;
+  std::vector<double> lineWeight;
   std::vector<glm::dvec3> lineResponse;
   // Analytic: per star, per channel, the pieces of P_S × P_L as float coefficients; for a Wien
   // star the pieces of P_S × its normalisation (c₀…c₃ in lo), integrated against λ⁻⁵ with
@@ -111,6 +114,10 @@ struct NebulaPrecomputed {
   VoxelField lightCoefficients;
   std::vector<double> lightU;  // [c][k][m] = ∫ P_S,c fₖ bₘ dλ, k < lightCount, m < card(B)
   int lightCount = 0;
+  std::function<double(int k, double lambdaUm)> lightFunction;  // fₖ(λ), the orthonormal 2D basis
+  // What depends on the filters (NebulaRenderer's refiltering constructor makes these again and
+  // copies the rest): filters, lineResponse, analyticPieces(F64), analyticWienExponentUm,
+  // projectionWeights, lightU, preIntegrated.
 };
 
 }  // namespace prism::nebula

@@ -113,35 +113,20 @@ VoxelField opticalDepthToStar(const DensityGrid& density, const NebulaStar& star
   return field;
 }
 
-}  // namespace
-
-NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
-                               const std::function<void(std::size_t, std::size_t)>& progress)
-    : mPre(std::make_unique<NebulaPrecomputed>()) {
-  NebulaPrecomputed& pre = *mPre;
-  pre.model = std::move(model);
+// What the filters change (NebulaPrecomputed says which fields): the set itself, the lines'
+// responses, the analytic pieces, projection's and light–density's finishing weights; the
+// pre-integration tables are built at their first render.
+void applyFilters(NebulaPrecomputed& pre) {
   const NebulaModel& m = pre.model;
-  if (m.density.values.empty()) throw Error("nebula: no density");
-  if (s.basisSize < 1 || s.basisSize > 8) throw Error("nebula: the basis size must be 1…8");
   pre.filters = editedFilterSet(filterSet(m.filters), m.passbands);
-  std::size_t stages = m.stars.size() + 2, done = 0;
-  auto tick = [&] {
-    if (progress) progress(++done, stages);
-  };
-  for (const auto& star : m.stars) {
-    pre.spectra.push_back(makeStarSpectrum(star.temperatureK, m.starModel, m.scatteringSpectrum));
-    pre.starDepth.push_back(opticalDepthToStar(m.density, star, m.extinction, s.threads));
-    tick();
-  }
-  // Emission lines: weight = the group's strength × the line's ratio within it.
-  for (const auto& line : readEmissionLines(dataFile("nebula_lines.csv"))) {
-    double strength = 0.0;
-    for (const auto& g : m.lineGroups)
-      if (g.group == line.group) strength = g.strength;
-    if (strength == 0.0) continue;
-    pre.lineLambdaUm.push_back(line.lambdaUm);
+  pre.lineResponse.clear();
+  pre.analyticPieces.clear();
+  pre.analyticPiecesF64.clear();
+  pre.analyticWienExponentUm.clear();
+  pre.projectionWeights.clear();
+  for (std::size_t l = 0; l < pre.lineLambdaUm.size(); ++l) {
     glm::dvec3 r;
-    for (int c = 0; c < 3; ++c) r[c] = pre.filters.channels[static_cast<std::size_t>(c)].response.at(line.lambdaUm) * strength * line.ratio;
+    for (int c = 0; c < 3; ++c) r[c] = pre.filters.channels[static_cast<std::size_t>(c)].response.at(pre.lineLambdaUm[l]) * pre.lineWeight[l];
     pre.lineResponse.push_back(r);
   }
   // Analytic: P_S × P_L per star and channel, in float for the shared integrals; a Wien star's
@@ -175,6 +160,55 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
     pre.analyticPieces.push_back(std::move(perChannel));
     pre.analyticPiecesF64.push_back(std::move(perChannelF64));
   }
+  const auto card = static_cast<int>(pre.basis.a.size());
+  for (std::size_t st = 0; st < pre.spectra.size(); ++st) {
+    std::array<std::array<double, 8>, 3> w{};
+    for (std::size_t c = 0; c < 3; ++c)
+      for (int k = 0; k < card; ++k)
+        w[c][static_cast<std::size_t>(k)] =
+            integratePassband(pre.filters.channels[c], [&](double l) { return pre.spectra[st].at(l) * pre.basis.at(k, l); });
+    pre.projectionWeights.push_back(w);
+  }
+  if (pre.lightCount > 0) {
+    const int kCount = pre.lightCount;
+    // U(c, k, m) = ∫ P_S,c fₖ bₘ dλ.
+    pre.lightU.assign(static_cast<std::size_t>(3 * kCount * 8), 0.0);
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < kCount; ++k)
+        for (int mm = 0; mm < card; ++mm)
+          pre.lightU[static_cast<std::size_t>((c * kCount + k) * 8 + mm)] =
+              integratePassband(pre.filters.channels[static_cast<std::size_t>(c)], [&](double l) { return pre.lightFunction(k, l) * pre.basis.at(mm, l); });
+  }
+}
+
+}  // namespace
+
+NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
+                               const std::function<void(std::size_t, std::size_t)>& progress)
+    : mPre(std::make_unique<NebulaPrecomputed>()) {
+  NebulaPrecomputed& pre = *mPre;
+  pre.model = std::move(model);
+  const NebulaModel& m = pre.model;
+  if (m.density.values.empty()) throw Error("nebula: no density");
+  if (s.basisSize < 1 || s.basisSize > 8) throw Error("nebula: the basis size must be 1…8");
+  std::size_t stages = m.stars.size() + 2, done = 0;
+  auto tick = [&] {
+    if (progress) progress(++done, stages);
+  };
+  for (const auto& star : m.stars) {
+    pre.spectra.push_back(makeStarSpectrum(star.temperatureK, m.starModel, m.scatteringSpectrum));
+    pre.starDepth.push_back(opticalDepthToStar(m.density, star, m.extinction, s.threads));
+    tick();
+  }
+  // Emission lines: weight = the group's strength × the line's ratio within it.
+  for (const auto& line : readEmissionLines(dataFile("nebula_lines.csv"))) {
+    double strength = 0.0;
+    for (const auto& g : m.lineGroups)
+      if (g.group == line.group) strength = g.strength;
+    if (strength == 0.0) continue;
+    pre.lineLambdaUm.push_back(line.lambdaUm);
+    pre.lineWeight.push_back(strength * line.ratio);
+  }
   // Projection: the 1D basis on the band and each star's filter integrals of it.
   pre.basis = findExpBasis(kBandLoUm, kBandHiUm, s.basisMaxDepthUm, 2.0, s.basisSize, s.basisSpacingUm);
   auto card = static_cast<int>(pre.basis.a.size());
@@ -188,14 +222,6 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
     pre.toCoefficients(raw, coefficients);
     pre.moments.lo.emplace_back(coefficients[0], coefficients[1], coefficients[2], coefficients[3]);
     pre.moments.hi.emplace_back(coefficients[4], coefficients[5], coefficients[6], coefficients[7]);
-  }
-  for (std::size_t st = 0; st < pre.spectra.size(); ++st) {
-    std::array<std::array<double, 8>, 3> w{};
-    for (std::size_t c = 0; c < 3; ++c)
-      for (int k = 0; k < card; ++k)
-        w[c][static_cast<std::size_t>(k)] =
-            integratePassband(pre.filters.channels[c], [&](double l) { return pre.spectra[st].at(l) * pre.basis.at(k, l); });
-    pre.projectionWeights.push_back(w);
   }
   tick();
   // Light–density: the 2D basis over the stars' temperature range.
@@ -229,8 +255,8 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
     pre.lightCount = static_cast<int>(pre.lightGreedy.chosen.size());
     int kCount = pre.lightCount;
     // Orthonormal fₖ = Σⱼ M2(k,j)·rawⱼ by the Cholesky factor of the raw Gram matrix (256 nodes).
-    auto raw = [&](int j, double l) {
-      int c = pre.lightGreedy.chosen[static_cast<std::size_t>(j)];
+    auto raw = [chosen = pre.lightGreedy.chosen, s0, s1, aCount, tCount, aMax](int j, double l) {
+      int c = chosen[static_cast<std::size_t>(j)];
       int t = c / aCount, a = c % aCount;
       double mix = t / (tCount - 1.0);
       return ((1 - mix) * s0.at(l) + mix * s1.at(l)) * std::exp(-aMax * a / (aCount - 1) / l);
@@ -245,18 +271,13 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
     if (llt.info() != Eigen::Success) throw Error("nebula: the light basis's Gram matrix is singular in double");
     Eigen::MatrixXd lower = llt.matrixL();
     Eigen::MatrixXd m2 = lower.triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(kCount, kCount));
-    auto f = [&](int k, double l) {
+    // fₖ, kept for the finish's weights U (applyFilters).
+    pre.lightFunction = [raw, m2](int k, double l) {
       double v = 0.0;
       for (int j = 0; j <= k; ++j) v += m2(k, j) * raw(j, l);
       return v;
     };
-    // U(c, k, m) = ∫ P_S,c fₖ bₘ dλ.
-    pre.lightU.assign(static_cast<std::size_t>(3 * kCount * 8), 0.0);
-    for (int c = 0; c < 3; ++c)
-      for (int k = 0; k < kCount; ++k)
-        for (int mm = 0; mm < card; ++mm)
-          pre.lightU[static_cast<std::size_t>((c * kCount + k) * 8 + mm)] =
-              integratePassband(pre.filters.channels[static_cast<std::size_t>(c)], [&](double l) { return f(k, l) * pre.basis.at(mm, l); });
+    const std::function<double(int, double)>& f = pre.lightFunction;
     // Per voxel: dₖ = Σ_s σ₁L_s/(16π²d²)·⟨S_s e^(−g_s/λ), fₖ⟩ (Gauss–Legendre, 48 nodes).
     std::vector<double> fAtNodes(static_cast<std::size_t>(kCount * kLightNodes));
     for (int k = 0; k < kCount; ++k)
@@ -293,7 +314,31 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
         }
     });
   }
+  applyFilters(pre);
   tick();
+}
+
+NebulaRenderer::NebulaRenderer(const NebulaRenderer& volume, const std::string& filters,
+                               const std::array<PassbandEdit, 3>& passbands)
+    : mPre(std::make_unique<NebulaPrecomputed>()) {
+  const NebulaPrecomputed& from = *volume.mPre;
+  NebulaPrecomputed& pre = *mPre;
+  pre.model = from.model;
+  pre.model.filters = filters;
+  pre.model.passbands = passbands;
+  pre.spectra = from.spectra;
+  pre.starDepth = from.starDepth;
+  pre.lineLambdaUm = from.lineLambdaUm;
+  pre.lineWeight = from.lineWeight;
+  pre.basis = from.basis;
+  pre.basisLo = from.basisLo;
+  pre.basisHi = from.basisHi;
+  pre.moments = from.moments;
+  pre.lightGreedy = from.lightGreedy;
+  pre.lightCoefficients = from.lightCoefficients;
+  pre.lightCount = from.lightCount;
+  pre.lightFunction = from.lightFunction;
+  applyFilters(pre);
 }
 
 NebulaRenderer::~NebulaRenderer() = default;

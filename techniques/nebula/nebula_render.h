@@ -111,6 +111,10 @@ class NebulaRenderer {
  public:
   NebulaRenderer(NebulaModel model, const RenderSettings& basisSettings,
                  const std::function<void(std::size_t, std::size_t)>& progress = {});
+  // The same volume through other filters or passbands: what the filters change is made again
+  // (milliseconds), the stars' optical depths, the bases and the light–density coefficients are
+  // copied. Renders as a renderer made from the edited model would, bit for bit.
+  NebulaRenderer(const NebulaRenderer& volume, const std::string& filters, const std::array<PassbandEdit, 3>& passbands);
   ~NebulaRenderer();
   NebulaRenderer(const NebulaRenderer&) = delete;
   NebulaRenderer& operator=(const NebulaRenderer&) = delete;

@@ -52,18 +52,23 @@ RenderSettings NebulaSection::renderSettings() const {
 }
 
 std::string NebulaSection::precomputationKey() const {
+  std::string key = volumeKey() + model.filters + "|";
+  for (const PassbandEdit& e : model.passbands) key += fmt::format("{}×{}|", e.shiftNm, e.widthScale);
+  return key;
+}
+
+std::string NebulaSection::volumeKey() const {
   const NebulaModel& m = model;
-  std::string key = fmt::format("{}|{}x{}x{}|{}|{}|{}|{},{},{},{}|{}|{}|{}|", source.file.string(), density->nx,
+  std::string key = fmt::format("{}|{}x{}x{}|{}|{}|{}|{},{},{},{}|{}|{}|", source.file.string(), density->nx,
                                 density->ny, density->nz, m.extinction, m.scattering, m.emission,
                                 m.scatteringSpectrum.coeffs[0], m.scatteringSpectrum.coeffs[1],
                                 m.scatteringSpectrum.coeffs[2], m.scatteringSpectrum.coeffs[3],
-                                static_cast<int>(m.starModel), m.filters, basis);
+                                static_cast<int>(m.starModel), basis);
   if (source.noise) {
     const NoiseParameters& p = *source.noise;
     key += fmt::format("noise {} {} {} {} {} {} {}|", p.resolution, p.octaves, p.frequency, p.amplitude, p.gain, p.bias,
                        p.seed);
   }
-  for (const PassbandEdit& e : m.passbands) key += fmt::format("{}×{}|", e.shiftNm, e.widthScale);
   for (const LineGroupStrength& l : m.lineGroups) key += fmt::format("{}={}|", l.group, l.strength);
   for (const NebulaStar& s : m.stars)
     key += fmt::format("{},{},{},{},{}|", s.position.x, s.position.y, s.position.z, s.temperatureK, s.luminosity);

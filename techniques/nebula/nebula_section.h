@@ -61,6 +61,9 @@ struct NebulaSection final : TechniqueSection {
   // Everything the pass's precomputation depends on (not the method, the steps or the intensity),
   // as text: the pass rebuilds its NebulaRenderer when it changes.
   std::string precomputationKey() const;
+  // The same but the filters and passbands: when only those changed, the pass refilters its
+  // NebulaRenderer (milliseconds) instead of building it again.
+  std::string volumeKey() const;
   // Generates the density again from `source.noise` (an editor changed it); no-op for a file.
   void regenerateDensity();
 

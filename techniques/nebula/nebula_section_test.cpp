@@ -79,6 +79,14 @@ TEST(NebulaSection, CopiesShareTheDensityAndTheKeyFollowsTheModel) {
   s.regenerateDensity();
   EXPECT_NE(s.precomputationKey(), key);
   EXPECT_NE(s.density->values, dynamic_cast<const NebulaSection&>(*copy).density->values);
+  // Filters and passbands change the precomputation, not the volume (the pass refilters).
+  const std::string full = s.precomputationKey(), volume = s.volumeKey();
+  s.model.passbands[2].shiftNm = 10.0;
+  EXPECT_NE(s.precomputationKey(), full);
+  s.model.filters = "cie1931";
+  EXPECT_EQ(s.volumeKey(), volume);
+  s.model.stars[0].luminosity = 2.0;
+  EXPECT_NE(s.volumeKey(), volume);
 }
 
 TEST(NebulaSection, TheBenchTimesThePapersBaselineAgainstEachMethod) {

@@ -24,11 +24,16 @@ const NebulaSection& sectionOf(const Scene& scene) {
 // voxel).
 std::shared_ptr<const NebulaRenderer> precomputation(const NebulaSection& section, const TechniqueProgress& progress) {
   static std::mutex mutex;
-  static std::string memoKey;
+  static std::string memoKey, memoVolumeKey;
   static std::shared_ptr<const NebulaRenderer> memo;
-  const std::string key = section.precomputationKey();
+  const std::string key = section.precomputationKey(), volumeKey = section.volumeKey();
   std::lock_guard lock(mutex);
   if (memo && memoKey == key) return memo;
+  if (memo && memoVolumeKey == volumeKey) {  // other filters or passbands through the same volume
+    memo = std::make_shared<const NebulaRenderer>(*memo, section.model.filters, section.model.passbands);
+    memoKey = key;
+    return memo;
+  }
   RenderSettings basis;
   basis.basisSize = section.basis;
   const auto start = std::chrono::steady_clock::now();
@@ -40,6 +45,7 @@ std::shared_ptr<const NebulaRenderer> precomputation(const NebulaSection& sectio
                section.density->ny, section.density->nz, section.model.stars.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   memo = renderer;
   memoKey = key;
+  memoVolumeKey = volumeKey;
   return renderer;
 }
 

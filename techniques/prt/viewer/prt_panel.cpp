@@ -11,6 +11,14 @@
 namespace prism::viewer {
 namespace {
 
+// Whether a PRT object's material has a spectral texture.
+bool hasSpectralTexture(const Scene& scene) {
+  for (const Mesh& mesh : scene.meshes)
+    if (mesh.technique == prt::PrtSection::kKey && scene.materials.at(static_cast<std::size_t>(mesh.material)).spectralTexture)
+      return true;
+  return false;
+}
+
 class PrtPanel final : public Panel {
  public:
   const char* title() const override { return "PRT"; }
@@ -38,7 +46,11 @@ class PrtPanel final : public Panel {
       changed |= ImGui::IsItemDeactivatedAfterEdit();
       ImGui::SliderFloat("sun azimuth deg", &s.sky->atmosphere.sunAzimuthDeg, -180.0f, 180.0f, "%.1f");
       changed |= ImGui::IsItemDeactivatedAfterEdit();
+      // The sun is the deferred pipeline's light, which reads no spectral texture: the pass
+      // refuses the two together, so the disc stays off while a PRT material has one.
+      ImGui::BeginDisabled(!s.sky->sunDisc && hasSpectralTexture(context.scene));
       changed |= ImGui::Checkbox("sun disc", &s.sky->sunDisc);
+      ImGui::EndDisabled();
     } else {
       changed |= stringCombo("illuminant", s.illuminant, mIlluminants);
       changed |= stringCombo("shape", s.shape, {"sky", "uniform"});

@@ -34,12 +34,7 @@ namespace {
 
 const std::filesystem::path kExampleScenes = PRISM_SCENES_DIR;
 
-struct PrtParityCase {
-  prt::PrtMode mode;
-  RenderMode frameMode;
-};
-
-class PrtGpuCpuParity : public testing::TestWithParam<PrtParityCase> {};
+class PrtGpuCpuParity : public testing::TestWithParam<PrtModeCase> {};
 
 TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSums) {
   gpu::HeadlessContext context;
@@ -85,16 +80,7 @@ TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSums) {
   EXPECT_LE(worst, 1e-4);
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, PrtGpuCpuParity,
-                         testing::Values(PrtParityCase{prt::PrtMode::Spectral, RenderMode::JakobHanika},
-                                         PrtParityCase{prt::PrtMode::Reference5nm, RenderMode::JakobHanika},
-                                         PrtParityCase{prt::PrtMode::Spectral, RenderMode::Rgb}),
-                         [](const testing::TestParamInfo<PrtParityCase>& param) {
-                           std::string name = std::string(prt::prtModeName(param.param.mode)) + "_frame_" +
-                                              std::string(renderModeName(param.param.frameMode));
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Modes, PrtGpuCpuParity, prtModeCases(), prtModeCaseName);
 
 // PRT objects are lit by the scene's lights too, in the lighting pass, as Lambertian surfaces with
 // shadow maps (the sun of PRT's spectral sky is such a light): at interior pixels of the metamer

@@ -28,12 +28,7 @@
 namespace prism::render {
 namespace {
 
-struct TexturedCase {
-  prt::PrtMode mode;
-  RenderMode frameMode;
-};
-
-class PrtTexturedParity : public testing::TestWithParam<TexturedCase> {};
+class PrtTexturedParity : public testing::TestWithParam<PrtModeCase> {};
 
 // The larger side, in texels, of the texture's step from pixel (x, y) to its right and upper
 // neighbours (GL's ρ); infinite when a neighbour leaves the material.
@@ -135,16 +130,7 @@ TEST_P(PrtTexturedParity, MagnifiedTexelsAgreeWithTheTwin) {
   EXPECT_LE(worstShare, 1.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, PrtTexturedParity,
-                         testing::Values(TexturedCase{prt::PrtMode::Spectral, RenderMode::JakobHanika},
-                                         TexturedCase{prt::PrtMode::Reference5nm, RenderMode::JakobHanika},
-                                         TexturedCase{prt::PrtMode::Spectral, RenderMode::Rgb}),
-                         [](const testing::TestParamInfo<TexturedCase>& param) {
-                           std::string name = std::string(prt::prtModeName(param.param.mode)) + "_frame_" +
-                                              std::string(renderModeName(param.param.frameMode));
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Modes, PrtTexturedParity, prtModeCases(), prtModeCaseName);
 
 // The spectral sky's sun is the deferred pipeline's light, which reads no spectral texture: such a
 // material under it is refused in one line naming the way out, before anything is drawn.

@@ -5,18 +5,44 @@
 // prtXyz summed over the very data the pass uploaded (PrtPass::readTexels).
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <utility>
 
 #include <glm/glm.hpp>
 
+#include "render/frame_settings.h"
+
 #include "scene/camera_transform.h"
 #include "techniques/prt/gpu/prt_pass.h"
+#include "techniques/prt/prt_section.h"
 #include "techniques/prt/prt_shared.h"
 
 namespace prism::render {
+
+// The modes the twin tests run: spectral PRT and the 5 nm reference in a spectral frame, and an
+// RGB frame (which draws RGB-PRT whatever the section says).
+struct PrtModeCase {
+  prt::PrtMode mode;
+  RenderMode frameMode;
+};
+
+inline auto prtModeCases() {
+  return testing::Values(PrtModeCase{prt::PrtMode::Spectral, RenderMode::JakobHanika},
+                         PrtModeCase{prt::PrtMode::Reference5nm, RenderMode::JakobHanika},
+                         PrtModeCase{prt::PrtMode::Spectral, RenderMode::Rgb});
+}
+
+inline std::string prtModeCaseName(const testing::TestParamInfo<PrtModeCase>& param) {
+  std::string name = std::string(prt::prtModeName(param.param.mode)) + "_frame_" +
+                     std::string(renderModeName(param.param.frameMode));
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+}
 
 struct Hit {
   std::size_t triangle = 0;

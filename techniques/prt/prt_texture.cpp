@@ -1,9 +1,8 @@
 #include "techniques/prt/prt_texture.h"
 
 #include <algorithm>
-#include <map>
+#include <unordered_map>
 
-#include <fmt/format.h>
 #include <glm/gtc/packing.hpp>
 
 #include "core/error.h"
@@ -22,12 +21,6 @@ std::vector<double> gridWavelengths() {
   std::vector<double> lambdas;
   for (int i = 0; i < kGridWavelengths; ++i) lambdas.push_back(gridWavelengthNm(i));
   return lambdas;
-}
-
-std::uint64_t fnv1a(const std::vector<std::uint8_t>& bytes) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (std::uint8_t b : bytes) h = (h ^ b) * 1099511628211ull;
-  return h;
 }
 
 shared::PrtReflectance reflectanceOf(const Eigen::VectorXd& rows, int basisCount) {  // 3·basisCount values
@@ -83,12 +76,6 @@ std::vector<Eigen::VectorXd> PrtTextureSource::representativeSpectra() const {
   return spectra;
 }
 
-std::string PrtTextureSource::key() const {
-  if (mSpectral) return fmt::format("spectral:{}@{}", mSpectral->source, static_cast<const void*>(mSpectral.get()));
-  return fmt::format("rgb:{:x},{}x{},{},{},{},{},{}", fnv1a(mRgb.rgba), mRgb.width, mRgb.height, mRgb.srgb,
-                     mRgb.baseColour.x, mRgb.baseColour.y, mRgb.baseColour.z, mTable->gamut());
-}
-
 std::vector<Eigen::MatrixXd> gridReflectanceMaps(
     const std::function<std::vector<PrtProjection>(const std::vector<Spectrum>&)>& project) {
   std::vector<Spectrum> hats;
@@ -139,7 +126,7 @@ std::vector<std::uint16_t> PrtTexelProjector::layers(unsigned threads) const {
     return out;
   }
   // An RGB texture: each distinct texel once (upsampling is the cost), in first-seen order.
-  std::map<std::uint32_t, std::size_t> distinct;
+  std::unordered_map<std::uint32_t, std::size_t> distinct;
   std::vector<std::pair<int, int>> firstAt;
   std::vector<std::size_t> texelColour(layerTexels);
   for (int y = 0; y < h; ++y) {

@@ -14,7 +14,6 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
@@ -51,8 +50,6 @@ class PrtTextureSource {
   std::vector<Eigen::VectorXd> representativeSpectra() const;
   // An RGB source's texel (x, y) as one number, its 8-bit R, G, B: equal keys, equal reflectance.
   std::uint32_t rgbKey(int x, int y) const;
-  // What it is made of, as text, for the projections' change key.
-  std::string key() const;
 
   const SpectralTexture* spectral() const { return mSpectral.get(); }
 

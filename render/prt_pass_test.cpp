@@ -40,12 +40,7 @@ TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSums) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kExampleScenes / "prt_metamers.json");
   scene.techniques.find<prt::PrtSection>()->mode = GetParam().mode;
-  FrameSettings settings;
-  settings.width = 160;
-  settings.height = 90;
-  settings.mode = GetParam().frameMode;
-  settings.shadowMapSize = 256;
-  settings.display.dither = false;
+  const FrameSettings settings = prtTwinSettings(GetParam(), 160, 90);
   Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   const TechniquePass* pass = renderer.techniquePass(prt::PrtSection::kKey);

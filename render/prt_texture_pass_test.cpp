@@ -75,12 +75,7 @@ TEST_P(PrtTexturedParity, MagnifiedTexelsAgreeWithTheTwin) {
   scene.techniques.find<prt::PrtSection>()->mode = GetParam().mode;
   scene.camera.position = glm::vec3(3.0f, 1.4f, 6.4f);
   scene.camera.target = glm::vec3(3.0f, 0.8f, 4.2f);
-  FrameSettings settings;
-  settings.width = 480;
-  settings.height = 270;
-  settings.mode = GetParam().frameMode;
-  settings.shadowMapSize = 256;
-  settings.display.dither = false;
+  const FrameSettings settings = prtTwinSettings(GetParam(), 480, 270);
   Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   auto data = std::dynamic_pointer_cast<const prt::PrtDrawData>(renderer.techniquePass(prt::PrtSection::kKey)->readTexels());

@@ -37,6 +37,17 @@ inline auto prtModeCases() {
                          PrtModeCase{prt::PrtMode::Spectral, RenderMode::Rgb});
 }
 
+// The twin tests' frame: the case's frame mode, small shadow maps, no dither.
+inline FrameSettings prtTwinSettings(const PrtModeCase& c, int width, int height) {
+  FrameSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.mode = c.frameMode;
+  settings.shadowMapSize = 256;
+  settings.display.dither = false;
+  return settings;
+}
+
 inline std::string prtModeCaseName(const testing::TestParamInfo<PrtModeCase>& param) {
   std::string name = std::string(prt::prtModeName(param.param.mode)) + "_frame_" +
                      std::string(renderModeName(param.param.frameMode));

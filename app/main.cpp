@@ -10,7 +10,7 @@
 #include "app/cluster_command.h"
 #include "app/colour_commands.h"
 #include "app/merge_command.h"
-#include "app/nebula_commands.h"
+#include "app/nebula_command_line.h"
 #include "app/number_list.h"
 #include "app/prt_commands.h"
 #include "app/reference_commands.h"
@@ -407,51 +407,7 @@ int main(int argc, char** argv) {
   atmEvaluate->add_flag("--json", atm.json, "JSON output");
   atmOptimise->add_option("-o,--output", atm.output, "where to write (the shipped fit is data/atmosphere_wavelengths.json: name it to replace it)")->required();
 
-  prism::app::NebulaBasisOptions nebBasis;
-  prism::app::NebulaRenderOptions nebRender;
-  std::string nebDomain;
-  std::filesystem::path nebDensityScene, nebDensityOut;
-  auto* nebulaCmd = app.add_subcommand("nebula", "spectral nebulae (Barrès 2023): the greedy basis, renders (CPU, or --gpu), the GPU bench");
-  nebulaCmd->require_subcommand(1);
-  auto* nebBasisCmd = nebulaCmd->add_subcommand("basis", "the greedy exp(-a/λ) basis and its worst projection error per element");
-  nebBasisCmd->add_option("--domain", nebDomain, "LO,HI µm of λ (default 0.38,0.78; the paper's: 0,1)");
-  nebBasisCmd->add_option("--max-depth", nebBasis.maxDepthUm, "the family e^(-g/λ): g up to this (µm)")->capture_default_str();
-  nebBasisCmd->add_option("--max-exponent", nebBasis.maxExponentUm, "candidates a up to this (µm)")->capture_default_str();
-  nebBasisCmd->add_option("--spacing", nebBasis.spacingUm, "minimum spacing of the exponents (µm; 0: free)")->capture_default_str();
-  nebBasisCmd->add_option("--count", nebBasis.count, "elements (1..8)")->capture_default_str();
-  nebBasisCmd->add_flag("--json", nebBasis.json, "JSON output");
-  nebBasisCmd->add_option("--plot", nebBasis.plotFile, "SVG of the error after each element to write");
-  prism::app::NebulaSweepOptions nebSweep;
-  auto* nebSweepCmd = nebulaCmd->add_subcommand("sweep", "projection's error against the basis size (CPU, against the reference)");
-  nebSweepCmd->add_option("scene", nebSweep.scene, "nebula scene file")->required();
-  nebSweepCmd->add_option("--filters", nebSweep.filters, "hubble or cie1931 (default: the scene's)");
-  nebSweepCmd->add_option("--steps", nebSweep.steps, "ray steps (default: the scene's)");
-  nebSweepCmd->add_option("--max-basis", nebSweep.maxBasis, "largest basis (1..8)")->capture_default_str();
-  nebSweepCmd->add_option("--size", nebSweep.size, "the camera's longer side in pixels (default: the scene's)");
-  nebSweepCmd->add_flag("--no-lines", nebSweep.noLines, "leave out the emission lines");
-  nebSweepCmd->add_flag("--json", nebSweep.json, "JSON output");
-  nebSweepCmd->add_option("--plot", nebSweep.plotFile, "SVG of the error against the basis size to write");
-  nebSweepCmd->add_option("--threads", nebSweep.threads, "threads (0: all)");
-  auto* nebRenderCmd = nebulaCmd->add_subcommand("render", "march a nebula scene (CPU, or --gpu) to an EXR (linear) or PNG");
-  nebRenderCmd->add_option("scene", nebRender.scene, "nebula scene file (JSON with a 'nebula' section)")->required();
-  nebRenderCmd->add_option("-o,--output", nebRender.output, "OUT.exr or OUT.png")->required();
-  nebRenderCmd->add_option("--method", nebRender.method, "reference, analytic, projection, light-density or pre-integration")->capture_default_str();
-  nebRenderCmd->add_option("--steps", nebRender.steps, "ray steps (default: the scene's)");
-  nebRenderCmd->add_option("--filters", nebRender.filters, "hubble or cie1931 (default: the scene's)");
-  nebRenderCmd->add_option("--basis", nebRender.basisSize, "elements of the exp(-a/λ) basis (1..8)")->capture_default_str();
-  nebRenderCmd->add_option("--light-basis", nebRender.lightBasisSize, "elements of the 2D light basis")->capture_default_str();
-  nebRenderCmd->add_option("--reference-intervals", nebRender.referenceIntervals, "reference: Simpson intervals per filter piece")->capture_default_str();
-  nebRenderCmd->add_option("--uniform-samples", nebRender.uniformSamples, "reference: that many λ per channel instead (trapezoid)");
-  nebRenderCmd->add_flag("--compare", nebRender.compare, "also render the reference; print the max relative error");
-  nebRenderCmd->add_flag("--no-lines", nebRender.noLines, "leave out the emission lines");
-  nebRenderCmd->add_flag("--gpu", nebRender.gpu, "march on the GPU (any method; headless EGL)");
-  nebRenderCmd->add_option("--threads", nebRender.threads, "threads (0: all)");
-  int nebBenchRepeats = 5;
-  auto* nebBenchCmd = nebulaCmd->add_subcommand("bench", "time the GPU marcher against the CPU's, 1, 6 and 32 stars");
-  nebBenchCmd->add_option("--repeats", nebBenchRepeats, "timed runs per cell (the median is printed)")->capture_default_str();
-  auto* nebDensityCmd = nebulaCmd->add_subcommand("density", "write a scene's density grid as a prism-density file");
-  nebDensityCmd->add_option("scene", nebDensityScene, "nebula scene file")->required();
-  nebDensityCmd->add_option("-o,--output", nebDensityOut, "OUT.density")->required();
+  prism::app::addNebulaCommands(app);
 
   auto* bench = app.add_subcommand(
       "bench", "GPU frame times of a scene (prism bench SCENE.json), or, without a scene, Prism's "
@@ -540,18 +496,6 @@ int main(int argc, char** argv) {
       if (atm.zeniths < 1 || atm.zeniths > 512 || atm.azimuths < 1 || atm.azimuths > 1024) throw prism::Error("--zeniths must be within 1..512 and --azimuths within 1..1024");
       runAtmosphereOptimise(atm);
     }
-    if (*nebBasisCmd) {
-      if (!nebDomain.empty()) {
-        auto d = prism::app::parseNumbers(nebDomain, "--domain");
-        if (d.size() != 2) throw prism::Error("--domain: expected LO,HI");
-        nebBasis.lambda0Um = d[0], nebBasis.lambda1Um = d[1];
-      }
-      prism::app::runNebulaBasis(nebBasis);
-    }
-    if (*nebRenderCmd) prism::app::runNebulaRender(nebRender);
-    if (*nebSweepCmd) prism::app::runNebulaSweep(nebSweep);
-    if (*nebDensityCmd) prism::app::runNebulaDensity(nebDensityScene, nebDensityOut);
-    if (*nebBenchCmd) prism::app::runNebulaBench(nebBenchRepeats);
     if (*validateCmd) return runValidate(val);
     if (*viewCmd) {
       view.settings = viewSettings.given();

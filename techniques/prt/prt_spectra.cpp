@@ -12,6 +12,12 @@ namespace prism::prt {
 
 double gridWavelengthNm(int i) { return kGridMinNm + kGridStepNm * i; }
 
+std::vector<double> gridWavelengthsNm() {
+  std::vector<double> lambdas;
+  for (int i = 0; i < kGridWavelengths; ++i) lambdas.push_back(gridWavelengthNm(i));
+  return lambdas;
+}
+
 Eigen::VectorXd sampleOnGrid(const Spectrum& spectrum) {
   Eigen::VectorXd v(kGridWavelengths);
   for (int i = 0; i < kGridWavelengths; ++i) v[i] = spectrum.at(gridWavelengthNm(i));

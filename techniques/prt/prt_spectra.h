@@ -24,6 +24,8 @@ inline constexpr double kGridMinNm = 380.0;
 inline constexpr double kGridStepNm = 5.0;
 
 double gridWavelengthNm(int i);
+// All 81 of them, in order.
+std::vector<double> gridWavelengthsNm();
 // The spectrum's values at the 81 grid wavelengths.
 Eigen::VectorXd sampleOnGrid(const Spectrum& spectrum);
 // The observer's three curves at the grid wavelengths (81 × 3).

@@ -17,12 +17,6 @@ namespace prism::shared {
 namespace prism::prt {
 namespace {
 
-std::vector<double> gridWavelengths() {
-  std::vector<double> lambdas;
-  for (int i = 0; i < kGridWavelengths; ++i) lambdas.push_back(gridWavelengthNm(i));
-  return lambdas;
-}
-
 shared::PrtReflectance reflectanceOf(const Eigen::VectorXd& rows, int basisCount) {  // 3·basisCount values
   shared::PrtReflectance r{};
   for (int j = 0; j < basisCount; ++j)
@@ -35,7 +29,7 @@ shared::PrtReflectance reflectanceOf(const Eigen::VectorXd& rows, int basisCount
 PrtTextureSource::PrtTextureSource(std::shared_ptr<const SpectralTexture> spectral)
     : mSpectral(std::move(spectral)) {
   PRISM_CHECK(mSpectral != nullptr);
-  mGridBasis = basisAt(*mSpectral, gridWavelengths());
+  mGridBasis = basisAt(*mSpectral, gridWavelengthsNm());
 }
 
 PrtTextureSource::PrtTextureSource(PrtRgbTexels rgb, const RgbToSpectrumTable& table)
@@ -82,7 +76,7 @@ std::vector<Eigen::MatrixXd> gridReflectanceMaps(
   for (int i = 0; i < kGridWavelengths; ++i) {
     std::vector<double> values(kGridWavelengths, 0.0);
     values[static_cast<std::size_t>(i)] = 1.0;
-    hats.push_back(TabulatedSpectrum(gridWavelengths(), values, Extrapolation::Clamp).toDense());
+    hats.push_back(TabulatedSpectrum(gridWavelengthsNm(), values, Extrapolation::Clamp).toDense());
   }
   std::vector<Eigen::MatrixXd> maps;
   for (const PrtProjection& p : project(hats)) {
@@ -102,7 +96,7 @@ PrtTexelProjector::PrtTexelProjector(const PrtTextureSource& source, const Eigen
   PRISM_CHECK(map.rows() % 3 == 0 && mBasisCount >= 1 && mBasisCount <= shared::kPrtMaxBasis &&
               map.cols() == kGridWavelengths);
   // A spectral texture's texel is k values: W·(G·B) once, then per texel a 3m × k product.
-  mMap = source.spectral() ? Eigen::MatrixXd(map * basisAt(*source.spectral(), gridWavelengths())) : map;
+  mMap = source.spectral() ? Eigen::MatrixXd(map * basisAt(*source.spectral(), gridWavelengthsNm())) : map;
 }
 
 shared::PrtReflectance PrtTexelProjector::texel(int x, int y) const {

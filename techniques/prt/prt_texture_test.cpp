@@ -20,12 +20,6 @@
 namespace prism::prt {
 namespace {
 
-std::vector<double> grid() {
-  std::vector<double> lambdas;
-  for (int i = 0; i < kGridWavelengths; ++i) lambdas.push_back(gridWavelengthNm(i));
-  return lambdas;
-}
-
 // The first `n` ColorChecker patches on the grid, as a 1-row samples-form texture and as the
 // spectra a material would hold (linear between the grid's wavelengths).
 struct Patches {
@@ -36,14 +30,14 @@ Patches patches(int n) {
   Patches p;
   p.texture->width = n;
   p.texture->height = 1;
-  p.texture->wavelengthsNm = grid();
+  p.texture->wavelengthsNm = gridWavelengthsNm();
   p.texture->basis = Eigen::MatrixXd::Identity(kGridWavelengths, kGridWavelengths);
   for (int i = 0; i < n; ++i) {
     Eigen::VectorXd rho = sampleOnGrid(colourChecker()[static_cast<std::size_t>(i)].reflectance);
     for (int k = 0; k < kGridWavelengths; ++k) p.texture->coefficients.push_back(static_cast<float>(rho[k]));
     std::vector<double> values(kGridWavelengths);
     for (int k = 0; k < kGridWavelengths; ++k) values[static_cast<std::size_t>(k)] = static_cast<float>(rho[k]);
-    p.spectra.push_back(TabulatedSpectrum(grid(), values, Extrapolation::Clamp).toDense());
+    p.spectra.push_back(TabulatedSpectrum(gridWavelengthsNm(), values, Extrapolation::Clamp).toDense());
   }
   return p;
 }
@@ -101,7 +95,7 @@ TEST(PrtTexture, TheCoefficientsFormIsTheSamplesFormThroughItsBasis) {
   auto coefficients = std::make_shared<SpectralTexture>();
   coefficients->width = 3;
   coefficients->height = 1;
-  coefficients->wavelengthsNm = grid();
+  coefficients->wavelengthsNm = gridWavelengthsNm();
   coefficients->sampled = false;
   coefficients->basis.resize(kGridWavelengths, 3);  // the three spectra, halved: coefficients 2
   for (int i = 0; i < 3; ++i) {

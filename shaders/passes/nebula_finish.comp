@@ -1,25 +1,31 @@
 #version 450
-// Finishes the nebula's pixels from the moments nebula_march.comp wrote: per channel c,
-//   colour_c = lines_c + Σ_v W[v][c]·moment_v,
-// v over (star, basis element) for projection (W = the filters' integrals of each star's light on
-// the orthonormalised basis) or (2D element, basis element) for light–density. A filter change
-// uploads new weights and re-runs this pass alone: the march does not depend on the filters.
-// The CPU marcher's last loop (NebulaRenderer::render), in the same order.
+// Finishes the nebula's pixels from what nebula_march.comp wrote: per channel c,
+//   colour_c = marched_c + Σ_l response_l,c·lineLight_l + Σ_v W[v][c]·moment_v,
+// marched the direct methods' colour (0 for the others), response_l,c = P_S,c(λₗ)·wₗ the filters'
+// response to line l times its weight, and v over (star, basis element) for projection (W = the
+// filters' integrals of each star's light on the orthonormalised basis) or (2D element, basis
+// element) for light–density. A filter change uploads new weights and responses and re-runs this
+// pass alone: for projection and light–density the march does not depend on the filters. The CPU
+// marcher's last loop (NebulaRenderer::render), in the same order.
 layout(local_size_x = 64) in;
 
+layout(std430, binding = 3) readonly buffer Lines { vec4 lines[]; };  // λ (µm), response per channel
 layout(std430, binding = 4) readonly buffer Moments { float moments[]; };  // [v·P + pixel]
-layout(std430, binding = 5) readonly buffer LineColour { vec4 lineColour[]; };
+layout(std430, binding = 5) readonly buffer MarchedColour { vec4 marchedColour[]; };
 layout(std430, binding = 6) readonly buffer Weights { float weights[]; };  // [(g·3 + c)·card + j]
 layout(std430, binding = 7) writeonly buffer Colour { vec4 colour[]; };
+layout(std430, binding = 8) readonly buffer LineLight { float lineLight[]; };  // [l·P + pixel]
 
 uniform int uPixelCount;
-uniform int uCount;  // stars (projection) or 2D elements (light–density)
+uniform int uCount;  // stars (projection) or 2D elements (light–density); 0 for the direct methods
 uniform int uCard;
+uniform int uLineCount;
 
 void main() {
   int pixel = int(gl_GlobalInvocationID.x);
   if (pixel >= uPixelCount) return;
-  vec3 c = lineColour[pixel].xyz;
+  vec3 c = marchedColour[pixel].xyz;
+  for (int l = 0; l < uLineCount; ++l) c += lineLight[l * uPixelCount + pixel] * lines[l].yzw;
   for (int g = 0; g < uCount; ++g)
     for (int ch = 0; ch < 3; ++ch)
       for (int j = 0; j < uCard; ++j)

@@ -7,7 +7,9 @@
 // nebula_finish.comp turns the moments into channels through the filters' weights, so a filter
 // change re-runs only that pass. The reference (the paper's double integration, its baseline)
 // integrates over wavelength at every sample, per star, through the renderer's nodes and weights,
-// into the colour directly. All add the emission lines' colour.
+// into the colour directly. Every method writes, per emission line, Σ ερΔt·e^(−g/λₗ): the line's
+// light reaching the camera, which the finish weighs by the filters' response at λₗ, so that the
+// lines, exact at their wavelengths, need no new march either.
 //
 // In a scene of the renderer (gpu/nebula_pass.h) the rays are its camera's and stop at its
 // surfaces (uSceneDepth); samples beyond a surface are left out, the others keep their steps.
@@ -36,12 +38,16 @@ layout(binding = 1) uniform sampler3D uField;
 layout(std430, binding = 0) readonly buffer MomentLo { vec4 momentLo[]; };
 layout(std430, binding = 1) readonly buffer MomentHi { vec4 momentHi[]; };
 layout(std430, binding = 2) readonly buffer Stars { vec4 stars[]; };  // position (unit cube), luminosity
-layout(std430, binding = 3) readonly buffer Lines { vec4 lines[]; };  // λ (µm), response per channel
+layout(std430, binding = 3) readonly buffer Lines { vec4 lines[]; };  // λ (µm); the finish reads the responses
 // Per pixel p of P, value v at moments[v·P + p] (neighbouring invocations write neighbouring
 // words): v = s·card + j (projection) or k·card + j (light–density). The ray accumulates into
 // them directly, so the number of stars has no limit but the buffer's size.
 layout(std430, binding = 4) buffer Moments { float moments[]; };
-layout(std430, binding = 5) writeonly buffer LineColour { vec4 lineColour[]; };
+// The colour the direct methods integrate in the march (0 for projection and light–density).
+layout(std430, binding = 5) writeonly buffer MarchedColour { vec4 marchedColour[]; };
+// Per line l of uLineCount (≤ kMaxNebulaLines), its light at lineLight[l·P + p].
+layout(std430, binding = 8) writeonly buffer LineLight { float lineLight[]; };
+const int kMaxNebulaLines = 16;
 #ifndef NEBULA_ANALYTIC  // its binding holds the analytic pieces' ranges there
 layout(std430, binding = 6) readonly buffer BasisMatrix { float basisM[]; };  // M(k, j) at [8k + j]
 #endif
@@ -220,6 +226,8 @@ void main() {
   float vy = (1.0f - 2.0f * (float(px.y) + 0.5f) / float(uSize.y)) * uTanHalf;
   vec3 dir = normalize(uForward + u * uRight + vy * uUp);
   vec3 colour = vec3(0.0f);
+  float lineSum[kMaxNebulaLines];
+  for (int l = 0; l < kMaxNebulaLines; ++l) lineSum[l] = 0.0f;
   float t0;
   float t1;
   float gCam = 0.0f;
@@ -237,8 +245,7 @@ void main() {
       float dg = uDepthPerDensity * rho * dt;
       float g = gCam + 0.5f * dg;  // the sample sees half of its own step's extinction
       gCam += dg;
-      for (int l = 0; l < uLineCount; ++l)
-        colour += uEmission * rho * dt * nebulaAttenuation(g, lines[l].x) * lines[l].yzw;
+      for (int l = 0; l < uLineCount; ++l) lineSum[l] += uEmission * rho * dt * nebulaAttenuation(g, lines[l].x);
 #ifdef NEBULA_LIGHT_DENSITY
       vec4 mLo;
       vec4 mHi;
@@ -330,6 +337,7 @@ void main() {
 #endif
     }
   }
-  lineColour[pixel] = vec4(colour, 0.0f);
+  marchedColour[pixel] = vec4(colour, 0.0f);
+  for (int l = 0; l < uLineCount; ++l) lineLight[l * pixelCount + pixel] = lineSum[l];
   imageStore(uOpticalDepth, ivec2(px.x, uSize.y - 1 - px.y), vec4(gCam));
 }

@@ -79,7 +79,7 @@ gpu::Buffer bufferOf(std::vector<T> values, const char* label) {
 }  // namespace
 
 NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
-    : mRenderer(renderer),
+    : mRenderer(&renderer),
       mProjection(computeProgram("nebula_march.comp", "nebula march (projection)")),
       mLightDensity(computeProgram("nebula_march.comp", "nebula march (light-density)", {{"NEBULA_LIGHT_DENSITY", ""}})),
       mReference(computeProgram("nebula_march.comp", "nebula march (reference)", {{"NEBULA_REFERENCE", ""}})),
@@ -105,21 +105,32 @@ NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
 
   mMomentLo = bufferOf(pre.moments.lo, "nebula moments 0-3");
   mMomentHi = bufferOf(pre.moments.hi, "nebula moments 4-7");
-  std::vector<glm::vec4> stars, lines;
+  std::vector<glm::vec4> stars;
   for (const NebulaStar& s : pre.model.stars) stars.emplace_back(glm::vec3(s.position), static_cast<float>(s.luminosity));
-  for (std::size_t l = 0; l < pre.lineLambdaUm.size(); ++l)
-    lines.emplace_back(static_cast<float>(pre.lineLambdaUm[l]), glm::vec3(pre.lineResponse[l]));
   mStars = bufferOf(stars, "nebula stars");
+  for (std::size_t l = 0; l < pre.lineWeight.size(); ++l)
+    if (pre.lineWeight[l] != 0.0) mActiveLines.push_back(l);
+  if (mActiveLines.size() > static_cast<std::size_t>(kMaxLines))
+    throw Error(fmt::format("nebula: {} emission lines of non-zero weight, the GPU march holds {}", mActiveLines.size(), kMaxLines));
   std::vector<float> basisM(64, 0.0f);
   for (Eigen::Index k = 0; k < pre.basis.m.rows(); ++k)
     for (Eigen::Index j = 0; j <= k; ++j) basisM[static_cast<std::size_t>(8 * k + j)] = static_cast<float>(pre.basis.m(k, j));
   mBasisMatrix = bufferOf(basisM, "nebula basis matrix");
+  uploadFilters();
+}
+
+void NebulaGpuMarcher::uploadFilters() {
+  const NebulaPrecomputed& pre = mRenderer->precomputed();
+  std::vector<glm::vec4> lines;
+  for (std::size_t l : mActiveLines) lines.emplace_back(static_cast<float>(pre.lineLambdaUm[l]), glm::vec3(pre.lineResponse[l]));
   mLines = bufferOf(lines, "nebula lines");
 
   // The finish's weights, [(group·3 + channel)·card + j].
   const auto card = pre.basis.a.size();
   std::vector<float>& projection = mProjectionWeightValues;
   std::vector<float>& light = mLightWeightValues;
+  projection.clear();
+  light.clear();
   for (const auto& perStar : pre.projectionWeights)
     for (std::size_t c = 0; c < 3; ++c)
       for (std::size_t j = 0; j < card; ++j) projection.push_back(static_cast<float>(perStar[c][j]));
@@ -129,6 +140,20 @@ NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
         light.push_back(static_cast<float>(pre.lightU[static_cast<std::size_t>((c * pre.lightCount + k) * 8) + j]));
   mProjectionWeights = bufferOf(projection, "nebula projection weights");
   mLightWeights = bufferOf(light, "nebula light-density weights");
+}
+
+bool NebulaGpuMarcher::refilter(const NebulaRenderer& renderer) {
+  const NebulaPrecomputed &from = mRenderer->precomputed(), &to = renderer.precomputed();
+  // The volume's own arrays stay uploaded: the refiltered copy has them bit for bit.
+  PRISM_CHECK(to.model.density.values.size() == from.model.density.values.size() &&
+              to.model.stars.size() == from.model.stars.size() && to.basis.a.size() == from.basis.a.size() &&
+              to.lightCount == from.lightCount && to.lineWeight == from.lineWeight);
+  mRenderer = &renderer;
+  uploadFilters();
+  mAnalyticRanges = {};
+  mAnalyticPieces = {};
+  mPreIntegrated = {};
+  return mMarched == Method::Projection || mMarched == Method::LightDensity;
 }
 
 MarchView marchView(const NebulaCamera& cam) {
@@ -148,11 +173,11 @@ MarchView marchView(const NebulaCamera& cam) {
   return v;
 }
 
-void NebulaGpuMarcher::march(const RenderSettings& s) { march(s, marchView(mRenderer.model().camera)); }
+void NebulaGpuMarcher::march(const RenderSettings& s) { march(s, marchView(mRenderer->model().camera)); }
 
 void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   if (s.steps < 1) throw Error("nebula: steps must be ≥ 1");
-  const NebulaPrecomputed& pre = mRenderer.precomputed();
+  const NebulaPrecomputed& pre = mRenderer->precomputed();
   const NebulaModel& m = pre.model;
   mCard = static_cast<int>(pre.basis.a.size());
   if (s.basisSize != mCard)
@@ -180,7 +205,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
     mAnalyticPieces = bufferOf(pieces, "nebula analytic pieces");
   }
   if (preIntegration && mPreIntegrated.sizeBytes() == 0) {  // each star's table, one after another
-    mRenderer.preparePreIntegration();
+    mRenderer->preparePreIntegration();
     std::vector<glm::vec4> tables;
     for (const MomentTable& t : pre.preIntegrated) {
       PRISM_CHECK(t.size == pre.moments.size && t.step == pre.moments.step);  // the march reads both with one spacing
@@ -191,7 +216,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   glm::ivec3 nodeCount(0);
   int nodeStride = 0;
   if (reference) {  // [(star·3 + channel)·stride + node]: (λ, weight), in chunks of 16 (nebula_march.comp)
-    NebulaRenderer::ReferenceNodes nodes = mRenderer.referenceNodes(s);
+    NebulaRenderer::ReferenceNodes nodes = mRenderer->referenceNodes(s);
     for (int c = 0; c < 3; ++c) {
       nodeCount[c] = (static_cast<int>(nodes.lambdaUm[static_cast<std::size_t>(c)].size()) + 15) / 16 * 16;
       nodeStride = std::max(nodeStride, nodeCount[c]);
@@ -208,8 +233,11 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   const std::size_t pixels = static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height);
   const std::size_t momentBytes = std::max<std::size_t>(1, static_cast<std::size_t>(mCount * mCard) * pixels) * sizeof(float);
   if (mMoments.sizeBytes() != momentBytes) mMoments = gpu::Buffer({momentBytes, nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula moments"});
-  if (mLineColour.sizeBytes() != pixels * sizeof(glm::vec4)) {
-    mLineColour = gpu::Buffer({pixels * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula line colour"});
+  mLineCount = s.emissionLines && m.emission != 0.0 ? static_cast<int>(mActiveLines.size()) : 0;
+  const std::size_t lineBytes = std::max<std::size_t>(1, static_cast<std::size_t>(mLineCount) * pixels) * sizeof(float);
+  if (mLineLight.sizeBytes() != lineBytes) mLineLight = gpu::Buffer({lineBytes, nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula line light"});
+  if (mMarchedColour.sizeBytes() != pixels * sizeof(glm::vec4)) {
+    mMarchedColour = gpu::Buffer({pixels * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula marched colour"});
     mColour = gpu::Buffer({pixels * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula colour"});
   }
   if (mOpticalDepth.id() == 0 || mOpticalDepth.width() != view.width || mOpticalDepth.height() != view.height) {
@@ -247,7 +275,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   setIfActive(p, "uCard", mCard);
   setIfActive(p, "uNodeCount", nodeCount);
   setIfActive(p, "uNodeStride", nodeStride);
-  setIfActive(p, "uLineCount", s.emissionLines ? static_cast<int>(pre.lineLambdaUm.size()) : 0);
+  setIfActive(p, "uLineCount", mLineCount);
   setIfActive(p, "uBasisLo", pre.basisLo);
   setIfActive(p, "uBasisHi", pre.basisHi);
   setIfActive(p, "uMomentStep", static_cast<float>(pre.moments.step));
@@ -261,7 +289,8 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   mStars.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
   mLines.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   mMoments.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
-  mLineColour.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  mMarchedColour.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  mLineLight.bindBase(GL_SHADER_STORAGE_BUFFER, 8);
   if (analytic) {
     mAnalyticRanges.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
     mAnalyticPieces.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
@@ -281,8 +310,11 @@ void NebulaGpuMarcher::finishOnGpu() {
   mFinish.setUniform("uPixelCount", pixels);
   mFinish.setUniform("uCount", mCount);
   mFinish.setUniform("uCard", mCard);
+  mFinish.setUniform("uLineCount", mLineCount);
+  mLines.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   mMoments.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
-  mLineColour.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  mMarchedColour.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  mLineLight.bindBase(GL_SHADER_STORAGE_BUFFER, 8);
   (mMarched == Method::LightDensity ? mLightWeights : mProjectionWeights).bindBase(GL_SHADER_STORAGE_BUFFER, 6);
   mColour.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   gpu::runCompute1D(mFinish, static_cast<std::size_t>(pixels));
@@ -310,7 +342,7 @@ const std::vector<float>& NebulaGpuMarcher::finishWeights() const {
 std::size_t NebulaGpuMarcher::gpuMemoryBytes() const {
   return mDensity.sizeBytes() + mStarDepth.sizeBytes() + mLightCoefficients.sizeBytes() + mMomentLo.sizeBytes() +
          mMomentHi.sizeBytes() + mBasisMatrix.sizeBytes() + mStars.sizeBytes() + mLines.sizeBytes() + mProjectionWeights.sizeBytes() +
-         mLightWeights.sizeBytes() + mMoments.sizeBytes() + mLineColour.sizeBytes() + mColour.sizeBytes() +
+         mLightWeights.sizeBytes() + mMoments.sizeBytes() + mMarchedColour.sizeBytes() + mLineLight.sizeBytes() + mColour.sizeBytes() +
          mReferenceNodes.sizeBytes() + mOpticalDepth.sizeBytes() + mAnalyticRanges.sizeBytes() + mAnalyticPieces.sizeBytes() +
          mPreIntegrated.sizeBytes();
 }

@@ -7,9 +7,10 @@
 // buffers; the reference's wavelength nodes and weights per march (they follow its settings); the
 // analytic method's passband pieces and pre-integration's tables when first marched.
 //   march   shaders/passes/nebula_march.comp: front to back, early termination, per pixel the
-//           moments on the basis (per star, or per 2D element) and the emission lines' colour
-//   finish  shaders/passes/nebula_finish.comp: the filters' weights times the moments; a filter
-//           change re-runs only this
+//           moments on the basis (per star, or per 2D element) and each emission line's light
+//   finish  shaders/passes/nebula_finish.comp: the filters' weights times the moments, and their
+//           responses at the lines times the lines' light; after projection or light–density a
+//           filter change (refilter) re-runs only this
 // Per pixel it computes what the CPU marcher computes, in float where the CPU accumulates in
 // double (nebula_gpu_test holds the two together). A GL 4.5 context must be current.
 #pragma once
@@ -47,8 +48,18 @@ MarchView marchView(const NebulaCamera& camera);
 class NebulaGpuMarcher {
  public:
   // Uploads the renderer's grids and tables; the renderer must outlive the marcher. Error when a
-  // field's slabs exceed GL_MAX_3D_TEXTURE_SIZE along z (nz·⌈stars/4⌉: 2048 allows 64 stars at 128³).
+  // field's slabs exceed GL_MAX_3D_TEXTURE_SIZE along z (nz·⌈stars/4⌉: 2048 allows 64 stars at 128³),
+  // or for more than kMaxLines emission lines of non-zero weight.
   explicit NebulaGpuMarcher(const NebulaRenderer& renderer);
+  static constexpr int kMaxLines = 16;  // nebula_march.comp's kMaxNebulaLines
+
+  // The same volume through other filters or passbands: `renderer` is the refiltered copy of this
+  // marcher's (NebulaRenderer's refiltering constructor) and replaces it (it must outlive the
+  // marcher). Uploads what the filters change: the lines' responses, the finish's weights; the
+  // analytic pieces and pre-integration tables are made again at their next march. True when the
+  // last march still holds, so that finish() shows the new filters without marching: after
+  // projection or light–density (the paper's point); false after the direct methods.
+  bool refilter(const NebulaRenderer& renderer);
 
   // Marches every pixel (settings: method, steps, emission lines; the basis sizes are the
   // renderer's). Error for a basis size the renderer was not built for.
@@ -72,23 +83,28 @@ class NebulaGpuMarcher {
   const std::vector<float>& finishWeights() const;
   int groups() const { return mCount; }
   int card() const { return mCard; }
+  int lines() const { return mLineCount; }  // lines the last march wrote
 
   std::size_t gpuMemoryBytes() const;
 
  private:
-  const NebulaRenderer& mRenderer;
+  void uploadFilters();  // the lines' responses and the finish's weights
+
+  const NebulaRenderer* mRenderer;
   gpu::Program mProjection, mLightDensity, mReference, mAnalytic, mPreIntegration, mFinish;
   gpu::Texture3D mDensity, mStarDepth, mLightCoefficients;
   gpu::Buffer mMomentLo, mMomentHi, mBasisMatrix, mStars, mLines;
   std::vector<float> mProjectionWeightValues, mLightWeightValues;
   gpu::Buffer mProjectionWeights, mLightWeights;
-  gpu::Buffer mMoments, mLineColour, mColour, mReferenceNodes;
+  std::vector<std::size_t> mActiveLines;  // the renderer's lines of non-zero weight, in order
+  gpu::Buffer mMoments, mMarchedColour, mLineLight, mColour, mReferenceNodes;
   gpu::Texture2D mOpticalDepth;
   gpu::Buffer mAnalyticRanges, mAnalyticPieces, mPreIntegrated;  // made when first marched
   Method mMarched = Method::Projection;
   glm::ivec2 mSize{0};  // of the last march's image
   int mCount = 0;  // moment groups of the last march: stars, or 2D elements (none for the direct methods)
   int mCard = 0;
+  int mLineCount = 0;
 };
 
 }  // namespace prism::nebula

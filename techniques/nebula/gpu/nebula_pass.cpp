@@ -100,13 +100,21 @@ void NebulaPass::run(const TechniqueBlock&, const Scene& scene, const CameraTran
                      const TechniqueFrame& frame) {
   const NebulaSection& section = sectionOf(scene);
   const std::string key = section.precomputationKey();
+  bool refiltered = false;
   if (!mRenderer || key != mPrecomputationKey) {
     std::shared_ptr<const NebulaRenderer> renderer = precomputation(section, {});
-    auto marcher = std::make_unique<NebulaGpuMarcher>(*renderer);  // before anything is replaced
-    mMarcher = std::move(marcher);
+    const std::string volumeKey = section.volumeKey();
+    if (mMarcher && volumeKey == mVolumeKey) {  // other filters or passbands: the same volume uploaded
+      if (!mMarcher->refilter(*renderer)) mMarchKey.clear();
+      refiltered = true;
+    } else {
+      auto marcher = std::make_unique<NebulaGpuMarcher>(*renderer);  // before anything is replaced
+      mMarcher = std::move(marcher);
+      mMarchKey.clear();
+    }
     mRenderer = std::move(renderer);
     mPrecomputationKey = key;
-    mMarchKey.clear();
+    mVolumeKey = volumeKey;
   }
   RenderSettings settings = section.renderSettings();
   if (frame.referenceMode) {  // the renderer's ground truth: the nebula's own
@@ -129,6 +137,8 @@ void NebulaPass::run(const TechniqueBlock&, const Scene& scene, const CameraTran
     mView = view;
     mSettings = settings;
     ++mMarches;
+  } else if (refiltered) {  // the moments stand: only the filters' weights changed
+    mMarcher->finishOnGpu();
   }
 }
 

@@ -11,7 +11,9 @@
 // stars' spectra, each star's optical depth per voxel, the bases) is made ahead with a progress
 // bar (precompute, from render, bench and view) or on first use, and again when the section's
 // model changes; the march runs again only when the camera or the section's settings change, so
-// frames accumulating a still view add the same image.
+// frames accumulating a still view add the same image. A change of the filters or passbands alone
+// refilters: the precomputation is copied with new filters (milliseconds), and after projection or
+// light–density the marcher's moments stand and only its finish runs again, no march.
 #pragma once
 
 #include <memory>
@@ -51,7 +53,7 @@ class NebulaPass final : public TechniquePass {
   gpu::VertexArray mEmpty;
   std::shared_ptr<const NebulaRenderer> mRenderer;
   std::unique_ptr<NebulaGpuMarcher> mMarcher;
-  std::string mPrecomputationKey, mMarchKey;
+  std::string mPrecomputationKey, mVolumeKey, mMarchKey;
   MarchView mView;
   RenderSettings mSettings;
   int mMarches = 0;

@@ -5,15 +5,16 @@
 // uploaded arrays at the same samples with the same shared formulas (nebula_march.glsl,
 // nebula_integrals.glsl) and the same float table of coefficients; the GPU rounds in float what
 // the CPU keeps in double: the ray's geometry, the camera's depth, and each pixel's moment sums
-// Σ w·cⱼ over ≤ N steps, then the finish's Σ Wⱼ·mⱼ over G·card terms (G stars or 2D elements).
-// Each addition and product rounds by ≤ 2⁻²⁴ of the magnitudes involved, so
-//   |GPU − CPU| ≤ (N + G·card)·2⁻²⁴·(Σⱼ |Wⱼ·mⱼ| + |CPU| + 1 % of the channel's peak),
+// Σ w·cⱼ over ≤ N steps, then the finish's Σ Wⱼ·mⱼ over G·card terms (G stars or 2D elements)
+// and its L lines' light times their responses. Each addition and product rounds by ≤ 2⁻²⁴ of the
+// magnitudes involved, so
+//   |GPU − CPU| ≤ (N + G·card + L)·2⁻²⁴·(Σⱼ |Wⱼ·mⱼ| + |CPU| + 1 % of the channel's peak),
 // with Σ|Wⱼ·mⱼ| computed per pixel from the GPU's own moments (it is what the rounding scales
 // with; |CPU| stands for the lines' term, and 1 % of the peak for a sample that the ray's float
 // geometry moves by ~1e-7 of the cube). On the twin nebula Σ|Wⱼ·mⱼ| is 1–3× the channel, since
 // the march accumulates coefficients on the orthonormal basis (nebula_precomputed.h says why).
 // The reference has no moments: it adds N·G sums of K node terms (K the most nodes a channel
-// has) into the colour, so N·G + K terms take the place of N + G·card.
+// has) into the colour, so N·G + K terms take the place of N + G·card; the lines' L stay.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -35,7 +36,8 @@ inline double twinRatio(const NebulaImage& gpuImage, const NebulaImage& cpu, con
   const std::size_t pixels = cpu.pixels.size();
   const auto card = static_cast<std::size_t>(gpu.card()), groups = static_cast<std::size_t>(gpu.groups());
   const double rounding =
-      static_cast<double>(referenceTerms > 0 ? referenceTerms : static_cast<std::size_t>(steps) + groups * card) * 0x1p-24;
+      static_cast<double>((referenceTerms > 0 ? referenceTerms : static_cast<std::size_t>(steps) + groups * card) +
+                          static_cast<std::size_t>(gpu.lines())) * 0x1p-24;
   double worst = 0.0;
   for (int c = 0; c < 3; ++c) {
     double peak = 0.0;

@@ -164,7 +164,8 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   s.emissionLines = !o.noLines;
   s.threads = o.threads;
   std::string filters = scene.model.filters;
-  harness::ProgressBar bar("nebula: optical depth to each star, bases");
+  harness::ProgressBar bar(scene.model.ionisation ? "nebula: optical depth to each star, ionisation zones, bases"
+                                                  : "nebula: optical depth to each star, bases");
   auto t0 = std::chrono::steady_clock::now();
   nebula::NebulaRenderer renderer(std::move(scene.model), s, [&bar](std::size_t d, std::size_t n) { bar.update(d, n); });
   auto t1 = std::chrono::steady_clock::now();

@@ -31,6 +31,11 @@ layout(binding = 0) uniform sampler3D uDensity;  // R32F, nx × ny × nz, x fast
 // RGBA32F, nx × ny × (nz · slabs): four values per voxel a slab, slab s at z ∈ [s·nz, (s+1)·nz):
 // projection, the optical depth g_s (µm) to stars 4s…4s+3; light–density, coefficients 4s…4s+3.
 layout(binding = 1) uniform sampler3D uField;
+// Ionisation zones (nebula_ionisation.h), the same layout: zone z in slab z/4, lane z%4; line l
+// glows in zone uLineZone[l]. uZoneCount 0: no zones, every line glows wherever the density is.
+layout(binding = 3) uniform sampler3D uZones;
+uniform int uZoneCount;  // ≤ 8
+uniform int uLineZone[16];
 
 // The coefficients cₖ(x) of e^(−x/λ) on the orthonormalised basis (nebula_precomputed.h's
 // MomentTable) at x = e·uMomentStep, entry e + 1 (one before 0, two after the end): elements 0…3
@@ -198,14 +203,14 @@ float densityAt(vec3 p, Cell c) {
 
 // VoxelField::sample for four values of slab `slab`: Σ over corners (x outer, z inner) of the
 // corner's weight × its values.
-vec4 fieldAt(Cell c, int slab, int nz) {
+vec4 fieldOf(sampler3D field, Cell c, int slab, int nz) {
   ivec3 i[2] = ivec3[2](c.i0, c.i1);
   vec3 w[2] = vec3[2](vec3(1.0f) - c.f, c.f);
   vec4 sum = vec4(0.0f);
   for (int a = 0; a < 2; ++a)
     for (int b = 0; b < 2; ++b)
       for (int d = 0; d < 2; ++d)
-        sum += (w[a].x * w[b].y * w[d].z) * texelFetch(uField, ivec3(i[a].x, i[b].y, i[d].z + slab * nz), 0);
+        sum += (w[a].x * w[b].y * w[d].z) * texelFetch(field, ivec3(i[a].x, i[b].y, i[d].z + slab * nz), 0);
   return sum;
 }
 
@@ -245,14 +250,21 @@ void main() {
       float dg = uDepthPerDensity * rho * dt;
       float g = gCam + 0.5f * dg;  // the sample sees half of its own step's extinction
       gCam += dg;
-      for (int l = 0; l < uLineCount; ++l) lineSum[l] += uEmission * rho * dt * nebulaAttenuation(g, lines[l].x);
+      if (uLineCount > 0) {
+        vec4 zone[2] = vec4[2](vec4(1.0f), vec4(1.0f));
+        for (int slab = 0; slab * 4 < uZoneCount; ++slab) zone[slab] = fieldOf(uZones, cell, slab, n.z);
+        for (int l = 0; l < uLineCount; ++l) {
+          float z = uZoneCount > 0 ? zone[uLineZone[l] / 4][uLineZone[l] % 4] : 1.0f;
+          lineSum[l] += uEmission * rho * dt * z * nebulaAttenuation(g, lines[l].x);
+        }
+      }
 #ifdef NEBULA_LIGHT_DENSITY
       vec4 mLo;
       vec4 mHi;
       coefficients8(g, mLo, mHi);
       float w = rho * dt;
       for (int slab = 0; slab * 4 < uCount; ++slab) {
-        vec4 d = fieldAt(cell, slab, n.z);
+        vec4 d = fieldOf(uField, cell, slab, n.z);
         for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
           int base = (slab * 4 + c) * uCard;
           for (int j = 0; j < uCard; ++j)
@@ -261,7 +273,7 @@ void main() {
       }
 #elif defined(NEBULA_REFERENCE)
       for (int slab = 0; slab * 4 < uCount; ++slab) {
-        vec4 gs = fieldAt(cell, slab, n.z);
+        vec4 gs = fieldOf(uField, cell, slab, n.z);
         for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
           int s = slab * 4 + c;
           vec3 toStar = stars[s].xyz - p;
@@ -282,7 +294,7 @@ void main() {
       }
 #elif defined(NEBULA_ANALYTIC)
       for (int slab = 0; slab * 4 < uCount; ++slab) {
-        vec4 gs = fieldAt(cell, slab, n.z);
+        vec4 gs = fieldOf(uField, cell, slab, n.z);
         for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
           int s = slab * 4 + c;
           vec3 toStar = stars[s].xyz - p;
@@ -304,7 +316,7 @@ void main() {
       }
 #elif defined(NEBULA_PRE_INTEGRATION)
       for (int slab = 0; slab * 4 < uCount; ++slab) {
-        vec4 gs = fieldAt(cell, slab, n.z);
+        vec4 gs = fieldOf(uField, cell, slab, n.z);
         for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
           int s = slab * 4 + c;
           vec3 toStar = stars[s].xyz - p;
@@ -322,7 +334,7 @@ void main() {
       }
 #else
       for (int slab = 0; slab * 4 < uCount; ++slab) {
-        vec4 gs = fieldAt(cell, slab, n.z);
+        vec4 gs = fieldOf(uField, cell, slab, n.z);
         for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
           int s = slab * 4 + c;
           vec3 toStar = stars[s].xyz - p;

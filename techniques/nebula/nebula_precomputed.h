@@ -79,6 +79,10 @@ struct NebulaPrecomputed {
   std::vector<double> lineLambdaUm;
   std::vector<double> lineWeight;
   std::vector<glm::dvec3> lineResponse;
+  // Ionisation zones (the model's, when it has them): per voxel one value per zone, and per line
+  // the zone it glows in (empty without zones: every line glows wherever the density is).
+  VoxelField lineZones;
+  std::vector<int> lineZone;
   // Analytic: per star, per channel, the pieces of P_S × P_L as float coefficients; for a Wien
   // star the pieces of P_S × its normalisation (c₀…c₃ in lo), integrated against λ⁻⁵ with
   // x = g + B, B its analyticWienExponentUm (0 for a Planck star).

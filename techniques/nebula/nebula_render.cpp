@@ -191,7 +191,19 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
   const NebulaModel& m = pre.model;
   if (m.density.values.empty()) throw Error("nebula: no density");
   if (s.basisSize < 1 || s.basisSize > 8) throw Error("nebula: the basis size must be 1…8");
-  std::size_t stages = m.stars.size() + 2, done = 0;
+  // Emission lines: weight = the group's strength × the line's ratio within it.
+  std::vector<std::string> lineGroups;
+  for (const auto& line : readEmissionLines(dataFile("nebula_lines.csv"))) {
+    double strength = 0.0;
+    for (const auto& g : m.lineGroups)
+      if (g.group == line.group) strength = g.strength;
+    if (strength == 0.0) continue;
+    pre.lineLambdaUm.push_back(line.lambdaUm);
+    pre.lineWeight.push_back(strength * line.ratio);
+    lineGroups.push_back(line.group);
+  }
+  const bool zoned = m.ionisation && !lineGroups.empty();
+  std::size_t stages = m.stars.size() * (zoned ? 2 : 1) + 2, done = 0;
   auto tick = [&] {
     if (progress) progress(++done, stages);
   };
@@ -200,15 +212,7 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
     pre.starDepth.push_back(opticalDepthToStar(m.density, star, m.extinction, s.threads));
     tick();
   }
-  // Emission lines: weight = the group's strength × the line's ratio within it.
-  for (const auto& line : readEmissionLines(dataFile("nebula_lines.csv"))) {
-    double strength = 0.0;
-    for (const auto& g : m.lineGroups)
-      if (g.group == line.group) strength = g.strength;
-    if (strength == 0.0) continue;
-    pre.lineLambdaUm.push_back(line.lambdaUm);
-    pre.lineWeight.push_back(strength * line.ratio);
-  }
+  if (zoned) buildLineZones(pre, lineGroups, s.threads, tick);
   // Projection: the 1D basis on the band and each star's filter integrals of it.
   pre.basis = findExpBasis(kBandLoUm, kBandHiUm, s.basisMaxDepthUm, 2.0, s.basisSize, s.basisSpacingUm);
   auto card = static_cast<int>(pre.basis.a.size());
@@ -330,6 +334,8 @@ NebulaRenderer::NebulaRenderer(const NebulaRenderer& volume, const std::string& 
   pre.starDepth = from.starDepth;
   pre.lineLambdaUm = from.lineLambdaUm;
   pre.lineWeight = from.lineWeight;
+  pre.lineZones = from.lineZones;
+  pre.lineZone = from.lineZone;
   pre.basis = from.basis;
   pre.basisLo = from.basisLo;
   pre.basisHi = from.basisHi;
@@ -457,7 +463,8 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
   };
   NebulaImage image{cam.width, cam.height, std::vector<glm::vec3>(static_cast<std::size_t>(cam.width) * cam.height)};
   parallelFor(static_cast<std::size_t>(cam.height), s.threads, [&](std::size_t row) {
-    std::vector<float> depths(starCount), lightD(static_cast<std::size_t>(std::max(pre.lightCount, 1)));
+    std::vector<float> depths(starCount), lightD(static_cast<std::size_t>(std::max(pre.lightCount, 1))),
+        zones(static_cast<std::size_t>(pre.lineZones.width));
     std::vector<double> moments(starCount * 8), lightAcc(static_cast<std::size_t>(std::max(pre.lightCount, 1)) * 8);
     for (int px = 0; px < cam.width; ++px) {
       double u = (2.0 * (px + 0.5) / cam.width - 1.0) * tanHalf * aspect;
@@ -480,9 +487,12 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
           double dg = kCtUm * m.extinction * rho * dt;
           double g = gCam + 0.5 * dg;  // the sample sees half of its own step's extinction
           gCam += dg;
-          if (s.emissionLines)
+          if (s.emissionLines) {
+            if (!pre.lineZone.empty()) pre.lineZones.sample(p, zones.data());
             for (std::size_t l = 0; l < pre.lineLambdaUm.size(); ++l)
-              colour += m.emission * rho * dt * shared::f64::nebulaAttenuation(g, pre.lineLambdaUm[l]) * pre.lineResponse[l];
+              colour += m.emission * rho * dt * (pre.lineZone.empty() ? 1.0 : zones[static_cast<std::size_t>(pre.lineZone[l])]) *
+                        shared::f64::nebulaAttenuation(g, pre.lineLambdaUm[l]) * pre.lineResponse[l];
+          }
           if (s.method == Method::LightDensity) {
             if (pre.lightCount == 0) continue;
             pre.lightCoefficients.sample(p, lightD.data());

@@ -15,12 +15,14 @@
 // transmittance is e^(−g/λ) with g = τ·C_T in µm); scattering σ₁ρ·P_σ(λ) with an isotropic phase
 // function (P_σ a polynomial, folded into each star's spectrum: StarSpectrum); stars as points of luminosity L and temperature T lighting each point
 // through their own optical depth g_s (per voxel, precomputed); emission lines ε·ρ·Σ wₗ δ(λ−λₗ)
-// (exact in every method). A channel is ∫ P_S(λ)·L(λ) dλ through its fitted passband P_S.
+// (exact in every method), each group's ε·ρ times its ionisation zone when the model has zones
+// (nebula_ionisation.h). A channel is ∫ P_S(λ)·L(λ) dλ through its fitted passband P_S.
 #pragma once
 
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,7 @@
 
 #include "techniques/nebula/nebula_basis.h"
 #include "techniques/nebula/nebula_density.h"
+#include "techniques/nebula/nebula_ionisation.h"
 #include "techniques/nebula/nebula_spectra.h"
 
 namespace prism::nebula {
@@ -62,6 +65,8 @@ struct NebulaModel {
   PolynomialPiece scatteringSpectrum = greyScattering();  // P_σ(λ), degree ≤ 3, ≥ 0 on the band
   double emission = 0.0;     // ε: emission per unit length at ρ = 1, times each group's strength
   std::vector<LineGroupStrength> lineGroups;
+  // Where each group glows: everywhere the density is (none), or in its zone around the stars.
+  std::optional<IonisationModel> ionisation;
   std::vector<NebulaStar> stars;
   StarModel starModel = StarModel::Planck;
   NebulaCamera camera;

@@ -110,6 +110,7 @@ TEST(NebulaRender, RefilteringIsAFreshRendererBitForBit) {
   NebulaModel model = smallNebula("hubble", 2);
   model.lineGroups = {{"H I Balmer (case B)", 1.0}, {"[O III] doublet", 0.5}};
   model.emission = 0.01;
+  model.ionisation = IonisationModel{0.4, 0.1};  // the zones are the volume's: copied
   NebulaRenderer volume(model, s);
   const std::array<PassbandEdit, 3> edits{PassbandEdit{20.0, 2.0}, PassbandEdit{}, PassbandEdit{-15.0, 0.5}};
   const auto start = std::chrono::steady_clock::now();

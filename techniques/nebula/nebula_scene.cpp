@@ -84,6 +84,13 @@ DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, 
     for (const std::string& key : lines->keys())
       m.lineGroups.push_back({key, lines->child(key).number(schema::Range::atLeast(0.0))});
   }
+  if (auto zones = n.optionalChild("ionisation")) {
+    zones->expectObject({"front_radius", "front_width"});
+    IonisationModel z;
+    z.frontRadius = zones->number("front_radius", z.frontRadius, schema::Range{0.0, kMaxFrontRadius, true, false});
+    z.frontWidth = zones->number("front_width", z.frontWidth, schema::Range{0.0, kMaxFrontWidth, true, false});
+    m.ionisation = z;
+  }
   schema::Node stars = n.child("stars");
   for (std::size_t i = 0; i < stars.arraySize(); ++i) {
     schema::Node s = stars.element(i);
@@ -130,8 +137,8 @@ NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads)
   schema::Node root(json, "", doc);
   root.expectObject({"nebula"});
   schema::Node n = root.child("nebula");
-  n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "stars",
-                  "star_model", "filters", "passbands", "camera", "steps"});
+  n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "ionisation",
+                  "stars", "star_model", "filters", "passbands", "camera", "steps"});
   NebulaScene scene;
   NebulaModel& m = scene.model;
   readNebulaKeys(n, m, scene.steps, threads);

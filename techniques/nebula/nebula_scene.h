@@ -35,7 +35,7 @@ struct DensitySource {
 };
 
 // Reads the keys a nebula scene file and a scene's "nebula" section share — density, extinction,
-// scattering, scattering_spectrum, emission, lines, stars, star_model, filters, passbands, steps — into `m`
+// scattering, scattering_spectrum, emission, lines, ionisation, stars, star_model, filters, passbands, steps — into `m`
 // and `steps`; the caller says which keys the node may have (schema::Node::expectObject).
 DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, unsigned threads);
 

@@ -36,13 +36,25 @@ TEST(NebulaScene, BadValuesNameTheirPlace) {
         "/nebula/density: give exactly one of 'noise' and 'file'");
   check("n4.json", R"({"nebula": {)" + noise + R"(, "stars": [], "colour": 1}})",
         "/nebula/colour: unknown key (allowed: density, extinction, scattering, scattering_spectrum, emission, "
-        "lines, stars, star_model, filters, passbands, camera, steps)");
+        "lines, ionisation, stars, star_model, filters, passbands, camera, steps)");
   check("n5.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": [1, -2]}})",
         "/nebula/scattering_spectrum: the scattering spectrum is -0.56 at 780 nm: it must be ≥ 0 over 380–780 nm");
   check("n6.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": [1, 0, 0, 0, 1]}})",
         "/nebula/scattering_spectrum: expected 1 to 4 polynomial coefficients (up to a cubic), got 5");
   check("n7.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": "blue"}})",
         "/nebula/scattering_spectrum: must be 'grey', 'ccm' or 1 to 4 polynomial coefficients, not 'blue'");
+  check("n8.json", R"({"nebula": {)" + noise + R"(, "stars": [], "ionisation": {"front_radius": 0}}})",
+        "/nebula/ionisation/front_radius: expected a number in (0, 4], got 0");
+  check("n9.json", R"({"nebula": {)" + noise + R"(, "stars": [], "ionisation": {"front_width": 0.6}}})",
+        "/nebula/ionisation/front_width: expected a number in (0, 0.5], got 0.6");
+}
+
+TEST(NebulaScene, IonisationZonesAreOptional) {
+  const std::string noise = R"({"nebula": {"density": {"noise": {"resolution": 4}}, "stars": [])";
+  EXPECT_FALSE(loadNebulaScene(writeTempFile("z1.json", noise + "}}")).model.ionisation.has_value());
+  const NebulaModel m =
+      loadNebulaScene(writeTempFile("z2.json", noise + R"(, "ionisation": {"front_radius": 0.45}}})")).model;
+  EXPECT_EQ(m.ionisation, (IonisationModel{0.45, 0.1}));
 }
 
 TEST(NebulaScene, PassbandsAreMovedAndResizedPerChannel) {

@@ -70,6 +70,7 @@ std::string NebulaSection::volumeKey() const {
                        p.seed);
   }
   for (const LineGroupStrength& l : m.lineGroups) key += fmt::format("{}={}|", l.group, l.strength);
+  if (m.ionisation) key += fmt::format("zones {} {}|", m.ionisation->frontRadius, m.ionisation->frontWidth);
   for (const NebulaStar& s : m.stars)
     key += fmt::format("{},{},{},{},{}|", s.position.x, s.position.y, s.position.z, s.temperatureK, s.luminosity);
   return key;
@@ -81,7 +82,7 @@ void NebulaSection::regenerateDensity() {
 
 std::unique_ptr<TechniqueSection> NebulaSection::parse(const schema::Node& n, const TechniqueSections&) {
   using schema::Range;
-  n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "stars",
+  n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "ionisation", "stars",
                   "star_model", "filters", "passbands", "steps", "box", "method", "basis", "reference_samples", "intensity", "march_every_frame"});
   auto s = std::make_unique<NebulaSection>();
   s->source = readNebulaKeys(n, s->model, s->steps, 0);

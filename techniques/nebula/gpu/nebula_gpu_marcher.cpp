@@ -102,6 +102,10 @@ NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
   for (const VoxelField& f : pre.starDepth) depths.push_back(&f);
   mStarDepth = fieldTexture(d.nx, d.ny, d.nz, static_cast<int>(depths.size()), depths, "nebula star depths");
   mLightCoefficients = fieldTexture(d.nx, d.ny, d.nz, pre.lightCount, {&pre.lightCoefficients}, "nebula light coefficients");
+  if (pre.lineZones.width > kMaxZones)
+    throw Error(fmt::format("nebula: {} ionisation zones, the GPU march holds {}", pre.lineZones.width, kMaxZones));
+  mZones = fieldTexture(d.nx, d.ny, d.nz, pre.lineZone.empty() ? 0 : pre.lineZones.width, {&pre.lineZones},
+                        "nebula ionisation zones");
 
   mMomentLo = bufferOf(pre.moments.lo, "nebula moments 0-3");
   mMomentHi = bufferOf(pre.moments.hi, "nebula moments 4-7");
@@ -276,6 +280,9 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   setIfActive(p, "uNodeCount", nodeCount);
   setIfActive(p, "uNodeStride", nodeStride);
   setIfActive(p, "uLineCount", mLineCount);
+  setIfActive(p, "uZoneCount", pre.lineZone.empty() ? 0 : pre.lineZones.width);
+  for (std::size_t l = 0; l < mActiveLines.size() && !pre.lineZone.empty(); ++l)
+    p.setUniform(fmt::format("uLineZone[{}]", l), pre.lineZone[mActiveLines[l]]);
   setIfActive(p, "uBasisLo", pre.basisLo);
   setIfActive(p, "uBasisHi", pre.basisHi);
   setIfActive(p, "uMomentStep", static_cast<float>(pre.moments.step));
@@ -284,6 +291,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   setIfActive(p, "uBandHiUm", static_cast<float>(kBandHiUm));
   mDensity.bind(0);
   (light ? mLightCoefficients : mStarDepth).bind(1);
+  mZones.bind(3);
   mMomentLo.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
   mMomentHi.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   mStars.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
@@ -340,7 +348,7 @@ const std::vector<float>& NebulaGpuMarcher::finishWeights() const {
 }
 
 std::size_t NebulaGpuMarcher::gpuMemoryBytes() const {
-  return mDensity.sizeBytes() + mStarDepth.sizeBytes() + mLightCoefficients.sizeBytes() + mMomentLo.sizeBytes() +
+  return mDensity.sizeBytes() + mStarDepth.sizeBytes() + mLightCoefficients.sizeBytes() + mZones.sizeBytes() + mMomentLo.sizeBytes() +
          mMomentHi.sizeBytes() + mBasisMatrix.sizeBytes() + mStars.sizeBytes() + mLines.sizeBytes() + mProjectionWeights.sizeBytes() +
          mLightWeights.sizeBytes() + mMoments.sizeBytes() + mMarchedColour.sizeBytes() + mLineLight.sizeBytes() + mColour.sizeBytes() +
          mReferenceNodes.sizeBytes() + mOpticalDepth.sizeBytes() + mAnalyticRanges.sizeBytes() + mAnalyticPieces.sizeBytes() +

@@ -3,7 +3,7 @@
 // NebulaRenderer precomputed
 // (nebula_precomputed.h), uploaded once: the density grid as a 3D texture, each star's optical
 // depth per voxel (projection) or the 2D basis's light coefficients per voxel (light–density) as
-// a second one, four values a texel; the table of the basis's coefficients, stars and lines as
+// a second one, four values a texel, and the ionisation zones (if any) as a third; the table of the basis's coefficients, stars and lines as
 // buffers; the reference's wavelength nodes and weights per march (they follow its settings); the
 // analytic method's passband pieces and pre-integration's tables when first marched.
 //   march   shaders/passes/nebula_march.comp: front to back, early termination, per pixel the
@@ -49,9 +49,10 @@ class NebulaGpuMarcher {
  public:
   // Uploads the renderer's grids and tables; the renderer must outlive the marcher. Error when a
   // field's slabs exceed GL_MAX_3D_TEXTURE_SIZE along z (nz·⌈stars/4⌉: 2048 allows 64 stars at 128³),
-  // or for more than kMaxLines emission lines of non-zero weight.
+  // or for more than kMaxLines emission lines of non-zero weight or kMaxZones ionisation zones.
   explicit NebulaGpuMarcher(const NebulaRenderer& renderer);
   static constexpr int kMaxLines = 16;  // nebula_march.comp's kMaxNebulaLines
+  static constexpr int kMaxZones = 8;   // its two slabs of uZones
 
   // The same volume through other filters or passbands: `renderer` is the refiltered copy of this
   // marcher's (NebulaRenderer's refiltering constructor) and replaces it (it must outlive the
@@ -92,7 +93,7 @@ class NebulaGpuMarcher {
 
   const NebulaRenderer* mRenderer;
   gpu::Program mProjection, mLightDensity, mReference, mAnalytic, mPreIntegration, mFinish;
-  gpu::Texture3D mDensity, mStarDepth, mLightCoefficients;
+  gpu::Texture3D mDensity, mStarDepth, mLightCoefficients, mZones;
   gpu::Buffer mMomentLo, mMomentHi, mBasisMatrix, mStars, mLines;
   std::vector<float> mProjectionWeightValues, mLightWeightValues;
   gpu::Buffer mProjectionWeights, mLightWeights;

@@ -49,6 +49,7 @@ struct TwinCase {
   Method method;
   bool lines;
   StarModel starModel = StarModel::Planck;
+  bool zones = false;  // ionisation zones, wide enough that the 25 000 K star's hold much of the cloud
 };
 
 class NebulaGpuTwin : public testing::TestWithParam<TwinCase> {};
@@ -76,6 +77,7 @@ TEST_P(NebulaGpuTwin, MatchesTheCpuMarcherPerPixel) {
   s.emissionLines = t.lines;
   NebulaModel model = smallNebula(t.filters, t.stars);
   model.starModel = t.starModel;
+  if (t.zones) model.ionisation = IonisationModel{1.5, 0.1};
   NebulaRenderer renderer(model, s);
   NebulaImage cpu = renderer.render(s);
   NebulaGpuMarcher gpu(renderer);
@@ -99,6 +101,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, NebulaGpuTwin,
                          testing::Values(TwinCase{"hubble", 3, Method::Projection, true},
                                          TwinCase{"cie1931", 1, Method::Projection, false},
                                          TwinCase{"cie1931", 5, Method::Projection, true},
+                                         TwinCase{"hubble", 3, Method::Projection, true, StarModel::Planck, true},
                                          TwinCase{"hubble", 3, Method::LightDensity, true},
                                          TwinCase{"cie1931", 5, Method::LightDensity, false},
                                          TwinCase{"hubble", 3, Method::Reference, true},
@@ -116,7 +119,8 @@ INSTANTIATE_TEST_SUITE_P(Cases, NebulaGpuTwin,
                            std::string method = methodName(p.param.method);
                            std::replace(method.begin(), method.end(), '-', '_');
                            return method + "_" + p.param.filters + "_" + std::to_string(p.param.stars) + "_stars" +
-                                  (p.param.lines ? "_lines" : "") + (p.param.starModel == StarModel::Wien ? "_wien" : "");
+                                  (p.param.lines ? "_lines" : "") + (p.param.starModel == StarModel::Wien ? "_wien" : "") +
+                                  (p.param.zones ? "_zones" : "");
                          });
 
 // The twin test can fail: a march one step shorter than the CPU's (99 of 100) is a real

@@ -1,5 +1,5 @@
 // The nebula panel (techniques/nebula): method, basis size, steps, filters and their passbands
-// (moved and resized), intensity, the medium, the density's noise and the stars. Sees only the PanelContext. Edits that make the
+// (moved and resized), intensity, the medium, the ionisation zones, the density's noise and the stars. Sees only the PanelContext. Edits that make the
 // pass precompute again (anything of the model: about half a second at 64³) or march again reach
 // the scene when a control is released, not while it is dragged; the intensity is live.
 #include <imgui.h>
@@ -170,6 +170,17 @@ class NebulaPanel final : public Panel {
     changed |= mEdits.slider("extinction", s.model.extinction, 0.0f, 20.0f, "%.2f");
     changed |= mEdits.slider("scattering", s.model.scattering, 0.0f, 10.0f, "%.2f");
     changed |= mEdits.slider("emission", s.model.emission, 0.0f, 0.02f, "%.4f");
+    bool zoned = s.model.ionisation.has_value();
+    if (ImGui::Checkbox("ionisation zones", &zoned)) {
+      s.model.ionisation = zoned ? std::optional<nebula::IonisationModel>(nebula::IonisationModel{}) : std::nullopt;
+      changed = true;
+    }
+    if (s.model.ionisation) {
+      changed |= mEdits.slider("front radius", s.model.ionisation->frontRadius, 0.01f,
+                               static_cast<float>(nebula::kMaxFrontRadius), "%.3f", true);
+      changed |= mEdits.slider("front width", s.model.ionisation->frontWidth, 0.01f,
+                               static_cast<float>(nebula::kMaxFrontWidth), "%.2f");
+    }
     if (s.source.noise && ImGui::TreeNode("density (noise)")) {
       if (noiseControls(mEdits, *s.source.noise)) {
         s.regenerateDensity();

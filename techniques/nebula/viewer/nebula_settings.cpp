@@ -87,7 +87,8 @@ bool setStarKey(nebula::NebulaSection& s, const std::string& key, const std::str
 bool setNebulaKey(Scene& scene, const std::string& key, const std::string& value) {
   static const char* const kKeys[] = {"nebula.method",     "nebula.basis",      "nebula.steps",
                                       "nebula.filters",    "nebula.intensity",  "nebula.extinction",
-                                      "nebula.scattering", "nebula.emission"};
+                                      "nebula.scattering", "nebula.emission",   "nebula.ionisation",
+                                      "nebula.ionisation.front_radius",         "nebula.ionisation.front_width"};
   if (setPassbandKey(scene.techniques.find<nebula::NebulaSection>(), key, value)) return true;
   bool known = !starKeyWhat(key).empty();
   for (const char* k : kKeys) known = known || key == k;
@@ -115,6 +116,17 @@ bool setNebulaKey(Scene& scene, const std::string& key, const std::string& value
     s->model.extinction = nonNegative(key, value);
   } else if (key == "nebula.scattering") {
     s->model.scattering = nonNegative(key, value);
+  } else if (key == "nebula.ionisation") {
+    if (value != "on" && value != "off") throw Error("nebula.ionisation: expected on or off, got '" + excerpt(value) + "'");
+    s->model.ionisation = value == "on" ? std::optional(s->model.ionisation.value_or(nebula::IonisationModel{})) : std::nullopt;
+  } else if (key.rfind("nebula.ionisation.", 0) == 0) {  // turns the zones on
+    const bool radius = key == "nebula.ionisation.front_radius";
+    const double most = radius ? nebula::kMaxFrontRadius : nebula::kMaxFrontWidth;
+    const float v = render::parseFloat(key, value);
+    if (!(v > 0.0f && v <= most)) throw Error(fmt::format("{}: expected a number in (0, {}], got {}", key, most, excerpt(value)));
+    nebula::IonisationModel zones = s->model.ionisation.value_or(nebula::IonisationModel{});
+    (radius ? zones.frontRadius : zones.frontWidth) = v;
+    s->model.ionisation = zones;
   } else {
     s->model.emission = nonNegative(key, value);
   }

@@ -85,5 +85,25 @@ TEST(NebulaSetKeys, MoveAndResizePassbands) {
   EXPECT_DOUBLE_EQ(s->model.passbands[1].widthScale, 2.0);
 }
 
+// nebula.ionisation on|off, and its front's radius and width (which turn the zones on); a value out
+// of range is refused and changes nothing.
+TEST(NebulaSetKeys, IonisationZones) {
+  Scene scene;
+  scene.techniques.add(std::make_unique<nebula::NebulaSection>());
+  auto* s = scene.techniques.find<nebula::NebulaSection>();
+  EXPECT_TRUE(setNebulaKey(scene, "nebula.ionisation.front_radius", "0.5"));
+  ASSERT_TRUE(s->model.ionisation.has_value());
+  EXPECT_DOUBLE_EQ(s->model.ionisation->frontRadius, 0.5);
+  EXPECT_TRUE(setNebulaKey(scene, "nebula.ionisation.front_width", "0.2"));
+  EXPECT_EQ(nebulaKeyError(scene, "nebula.ionisation.front_width", "0.7"),
+            "nebula.ionisation.front_width: expected a number in (0, 0.5], got 0.7");
+  EXPECT_EQ(nebulaKeyError(scene, "nebula.ionisation", "maybe"), "nebula.ionisation: expected on or off, got 'maybe'");
+  EXPECT_FLOAT_EQ(static_cast<float>(s->model.ionisation->frontWidth), 0.2f);
+  EXPECT_TRUE(setNebulaKey(scene, "nebula.ionisation", "off"));
+  EXPECT_FALSE(s->model.ionisation.has_value());
+  EXPECT_TRUE(setNebulaKey(scene, "nebula.ionisation", "on"));
+  EXPECT_EQ(s->model.ionisation, nebula::IonisationModel{});
+}
+
 }  // namespace
 }  // namespace prism::viewer

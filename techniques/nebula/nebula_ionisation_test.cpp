@@ -1,0 +1,121 @@
+// Ionisation zones (nebula_ionisation.h): the photon counts against Planck's law integrated over
+// wavelength, and the zones of a star in a uniform cloud against the nested Strömgren spheres'
+// closed form.
+#include "techniques/nebula/nebula_ionisation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "core/data_files.h"
+#include "techniques/nebula/nebula_precomputed.h"
+#include "techniques/nebula/nebula_render.h"
+
+namespace prism::nebula {
+namespace {
+
+// Photons above E per unit of band luminosity, from Planck's B_λ (any units) by composite Simpson
+// in λ: the photons ∫₀^λ_E B_λ·λ dλ (fine steps: the Wien tail is steep) over ∫ B_λ dλ on the band.
+double photonsByQuadrature(double energyEv, double temperatureK) {
+  constexpr double hcEvUm = 1.239841984, kEvPerK = 8.617333262e-5;
+  auto planck = [&](double lambdaUm) { return 1.0 / (std::pow(lambdaUm, 5) * std::expm1(hcEvUm / (lambdaUm * kEvPerK * temperatureK))); };
+  auto simpson = [](auto f, double a, double b, int n) {
+    const double h = (b - a) / n;
+    double sum = f(a) + f(b);
+    for (int i = 1; i < n; ++i) sum += (i % 2 ? 4.0 : 2.0) * f(a + i * h);
+    return sum * h / 3.0;
+  };
+  const double edge = hcEvUm / energyEv;
+  const double photons = simpson([&](double l) { return l > 0.0 ? planck(l) * l : 0.0; }, 1e-4, edge, 200000);
+  return photons / simpson(planck, kBandLoUm, kBandHiUm, 2000);
+}
+
+TEST(NebulaIonisation, PhotonCountsArePlancksLaw) {
+  const double reference = photonsByQuadrature(kHydrogenIonisationEv, 40000.0);
+  EXPECT_NEAR(ionisingPhotons(kHydrogenIonisationEv, 40000.0), 1.0, 1e-12);
+  for (double t : {10000.0, 25000.0, 40000.0, 80000.0})
+    for (double e : {13.598434, 24.587389, 35.12112, 54.93554}) {
+      const double expected = photonsByQuadrature(e, t) / reference;
+      EXPECT_NEAR(ionisingPhotons(e, t), expected, 1e-6 * expected) << e << " eV at " << t << " K";
+    }
+  // Hotter stars make more ionising photons for their visible light, and more energetic ones.
+  EXPECT_LT(ionisingPhotons(kHydrogenIonisationEv, 25000.0), ionisingPhotons(kHydrogenIonisationEv, 40000.0));
+  EXPECT_LT(ionisingPhotons(35.12112, 40000.0), ionisingPhotons(24.587389, 40000.0));
+}
+
+// One star of luminosity 1 in a cloud of density 1 filling the cube: every ion's zone is a
+// shell between the Strömgren radii R₀·q(E)^⅓ of the energies that make and destroy it (C = r³/3).
+// Bound per voxel: the column's midpoint rule over ∫₀ʳ s² ds in n = ⌈r/h⌉ steps (h = 1/64) is off
+// by 1/(4n²) relative, the radius ratio u = C^⅓ by 1/(12n²); each of a zone's two fronts turns
+// that into at most 1.5/(2w)·(1 + w)·u·1/(12n²), so the bound is twice that (w = 0.05), plus
+// float's storage.
+TEST(NebulaIonisation, AStarInAUniformCloudHasNestedStromgrenZones) {
+  NebulaModel m;
+  m.density = {32, 32, 32, std::vector<float>(32 * 32 * 32, 1.0f)};
+  const IonisationModel zones{0.3, 0.05};
+  const std::vector<std::string> groups = {"H I Balmer (case B)", "[O III] doublet", "[S II] doublet", "[O I] doublet"};
+  const std::vector<IonZone> table = readIonZones(dataFile("nebula_ions.csv"));
+  for (double t : {40000.0, 25000.0}) {
+    const NebulaStar star{{0.5, 0.5, 0.5}, t, 1.0};
+    const VoxelField field = ionisationZones(m.density, {star}, {recombinationColumn(m.density, star, 0)}, zones, groups, 0);
+    auto analytic = [&](const std::string& group, double r) {
+      auto f = [&](double e) { return 1.0 - glm::smoothstep(0.95, 1.05, r / (0.3 * std::cbrt(ionisingPhotons(e, t)))); };
+      for (const IonZone& z : table)
+        if (z.group == group)
+          return f(std::max(z.makeEv, kHydrogenIonisationEv)) * (std::isfinite(z.destroyEv) ? 1.0 - f(z.destroyEv) : 1.0);
+      return std::numeric_limits<double>::quiet_NaN();
+    };
+    double worst = 0.0, worstRatio = 0.0, oiiiPeak = 0.0;
+    for (int k = 0; k < 32; ++k)
+      for (int j = 0; j < 32; ++j)
+        for (int i = 0; i < 32; ++i) {
+          const double r = glm::length(glm::dvec3((i + 0.5) / 32, (j + 0.5) / 32, (k + 0.5) / 32) - star.position);
+          const std::size_t v = (static_cast<std::size_t>(k) * 32 + static_cast<std::size_t>(j)) * 32 + static_cast<std::size_t>(i);
+          const double n = std::ceil(r * 64.0);
+          const double bound = 2.0 * 1.5 / (2.0 * 0.05) * 1.05 / (12.0 * n * n) + 1e-6;
+          for (std::size_t g = 0; g < groups.size(); ++g) {
+            const double e = std::abs(field.values[v * groups.size() + g] - analytic(groups[g], r));
+            worst = std::max(worst, e);
+            worstRatio = std::max(worstRatio, e / bound);
+          }
+          oiiiPeak = std::max(oiiiPeak, static_cast<double>(field.values[v * groups.size() + 1]));
+        }
+    std::printf("%.0f K: zones against the nested Strömgren spheres, max difference %.2e (%.2f of the bound); "
+                "[O III] at most %.3g; hydrogen's front at r = %.3f, O++'s at %.3f\n",
+                t, worst, worstRatio, oiiiPeak, 0.3 * std::cbrt(ionisingPhotons(kHydrogenIonisationEv, t)),
+                0.3 * std::cbrt(ionisingPhotons(35.12112, t)));
+    EXPECT_LE(worstRatio, 1.0) << t;
+    if (t == 40000.0) EXPECT_GT(oiiiPeak, 0.99);  // an O star's core glows in [O III]
+    else EXPECT_LT(oiiiPeak, 1e-3);               // a B star's makes no O++
+  }
+}
+
+// A renderer with zones draws its lines only where they glow: with zones far smaller than the
+// cloud, each line group's light falls, and the lines of ions the stars cannot make vanish.
+TEST(NebulaIonisation, ZonesDimTheLinesOutsideThem) {
+  NebulaModel m;
+  NoiseParameters noise;
+  noise.resolution = 24;
+  noise.seed = 7;
+  m.density = generateFbm(noise, 0);
+  m.emission = 0.01;
+  m.scattering = 0.0;
+  m.lineGroups = {{"[O III] doublet", 1.0}};
+  m.stars = {{{0.5, 0.5, 0.5}, 10000.0, 1.0}};
+  m.filters = "cie1931";
+  m.camera.width = m.camera.height = 16;
+  RenderSettings s;
+  s.method = Method::Projection;
+  const NebulaImage everywhere = NebulaRenderer(m, s).render(s);
+  m.ionisation = IonisationModel{};
+  const NebulaImage zoned = NebulaRenderer(m, s).render(s);
+  double lit = 0.0, dark = 0.0;
+  for (std::size_t i = 0; i < everywhere.pixels.size(); ++i) lit += everywhere.pixels[i].y, dark += zoned.pixels[i].y;
+  EXPECT_GT(lit, 0.0);
+  EXPECT_LT(dark, 1e-3 * lit);
+}
+
+}  // namespace
+}  // namespace prism::nebula

@@ -47,25 +47,27 @@ struct NebulaEntry {
   double naturalError = 0.0;
 };
 
-// The nebula of `file` in `filters` ("hubble" or "cie1931"), at its camera's size or within
-// `most` pixels a side, written to `png`; returns the render's max relative error against the
-// reference.
-double renderNebula(const std::filesystem::path& file, const std::string& filters, int most,
-                    const std::filesystem::path& png) {
+// The nebula of `file` at its camera's size or within `most` pixels a side, in the Hubble palette
+// and in natural colour (one precomputation, refiltered), written to `stem`_hubble.png and
+// `stem`_natural.png; the entry holds each render's max relative error against the reference.
+void renderNebula(const std::filesystem::path& file, int most, const std::filesystem::path& stem, NebulaEntry& entry) {
   nebula::NebulaScene scene = nebula::loadNebulaScene(file);
-  scene.model.filters = filters;
+  scene.model.filters = "hubble";
   nebula::NebulaCamera& camera = scene.model.camera;
   if (camera.width > most || camera.height > most) nebula::scaleImage(camera, most);
   nebula::RenderSettings settings;
-  settings.method = nebula::Method::Projection;
   settings.steps = scene.steps;
-  nebula::NebulaRenderer renderer(std::move(scene.model), settings);
-  nebula::NebulaGpuMarcher marcher(renderer);
-  nebula::NebulaImage image = marcher.render(settings);
-  settings.method = nebula::Method::Reference;
-  const double error = nebula::maxRelativeError(image, renderer.render(settings));
-  nebulaDisplayPng(image, filters == "hubble").write(png);
-  return error;
+  const nebula::NebulaRenderer hubble(std::move(scene.model), settings);
+  const nebula::NebulaRenderer natural(hubble, "cie1931", hubble.model().passbands);
+  for (const nebula::NebulaRenderer* renderer : {&hubble, &natural}) {
+    const bool palette = renderer == &hubble;
+    settings.method = nebula::Method::Projection;
+    nebula::NebulaGpuMarcher marcher(*renderer);
+    nebula::NebulaImage image = marcher.render(settings);
+    settings.method = nebula::Method::Reference;
+    (palette ? entry.hubbleError : entry.naturalError) = nebula::maxRelativeError(image, renderer->render(settings));
+    nebulaDisplayPng(image, palette).write(stem.string() + (palette ? "_hubble.png" : "_natural.png"));
+  }
 }
 
 imaging::FloatImage tristimulus(const render::Renderer& renderer, int width, int height) {
@@ -238,10 +240,8 @@ void runGallery(const GalleryOptions& o) {
   for (std::size_t i = 0; i < nebulaFiles.size(); ++i) {
     NebulaEntry n;
     n.name = nebulaFiles[i].stem().string();
-    n.hubbleError = renderNebula(nebulaFiles[i], "hubble", o.height, o.output / (n.name + "_hubble.png"));
-    nebulaBar.update(2 * i + 1, 2 * nebulaFiles.size());
-    n.naturalError = renderNebula(nebulaFiles[i], "cie1931", o.height, o.output / (n.name + "_natural.png"));
-    nebulaBar.update(2 * i + 2, 2 * nebulaFiles.size());
+    renderNebula(nebulaFiles[i], o.height, o.output / n.name, n);
+    nebulaBar.update(i + 1, nebulaFiles.size());
     nebulae.push_back(std::move(n));
   }
   writeFileAtomically(o.output / "index.html", indexHtml(entries, nebulae, o));

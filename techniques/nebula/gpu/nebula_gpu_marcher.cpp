@@ -282,7 +282,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   setIfActive(p, "uLineCount", mLineCount);
   setIfActive(p, "uZoneCount", pre.lineZone.empty() ? 0 : pre.lineZones.width);
   for (std::size_t l = 0; l < mActiveLines.size() && !pre.lineZone.empty(); ++l)
-    p.setUniform(fmt::format("uLineZone[{}]", l), pre.lineZone[mActiveLines[l]]);
+    setIfActive(p, fmt::format("uLineZone[{}]", l), pre.lineZone[mActiveLines[l]]);
   setIfActive(p, "uBasisLo", pre.basisLo);
   setIfActive(p, "uBasisHi", pre.basisHi);
   setIfActive(p, "uMomentStep", static_cast<float>(pre.moments.step));

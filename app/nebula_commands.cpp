@@ -235,6 +235,7 @@ void runNebulaBench(int repeats) {
     s.steps = 100;
     s.emissionLines = false;
     nebula::NebulaRenderer renderer(nebula::benchNebulaModel(stars), s);
+    std::unique_ptr<nebula::NebulaRenderer> edited;  // the filter edits' renderers: they outlive the marcher
     nebula::NebulaGpuMarcher marcher(renderer);
     s.method = nebula::Method::Reference;
     s.uniformSamples = 7;  // 7 λ per channel, 21 a step: the paper's baseline (bench/nebula_bench.cpp)
@@ -249,7 +250,6 @@ void runNebulaBench(int repeats) {
     // same moments through the new weights (GPU), no march; alternately ±5 nm so each is an edit.
     s.method = nebula::Method::Projection;
     marcher.march(s);
-    std::unique_ptr<nebula::NebulaRenderer> edited;
     int edits = 0;
     double filterEdit = medianMs(repeats, [&] {
       std::array<nebula::PassbandEdit, 3> bands{};

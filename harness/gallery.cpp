@@ -48,8 +48,9 @@ struct NebulaEntry {
 };
 
 // The nebula of `file` at its camera's size or within `most` pixels a side, in the Hubble palette
-// and in natural colour (one precomputation, refiltered), written to `stem`_hubble.png and
-// `stem`_natural.png; the entry holds each render's max relative error against the reference.
+// and in natural colour (one precomputation and one march, refiltered and finished again), written
+// to `stem`_hubble.png and `stem`_natural.png; the entry holds each render's max relative error
+// against the reference.
 void renderNebula(const std::filesystem::path& file, int most, const std::filesystem::path& stem, NebulaEntry& entry) {
   nebula::NebulaScene scene = nebula::loadNebulaScene(file);
   scene.model.filters = "hubble";
@@ -59,11 +60,13 @@ void renderNebula(const std::filesystem::path& file, int most, const std::filesy
   settings.steps = scene.steps;
   const nebula::NebulaRenderer hubble(std::move(scene.model), settings);
   const nebula::NebulaRenderer natural(hubble, "cie1931", hubble.model().passbands);
+  settings.method = nebula::Method::Projection;
+  nebula::NebulaGpuMarcher marcher(hubble);
+  marcher.march(settings);
   for (const nebula::NebulaRenderer* renderer : {&hubble, &natural}) {
     const bool palette = renderer == &hubble;
-    settings.method = nebula::Method::Projection;
-    nebula::NebulaGpuMarcher marcher(*renderer);
-    nebula::NebulaImage image = marcher.render(settings);
+    if (!palette) PRISM_CHECK(marcher.refilter(natural));
+    const nebula::NebulaImage image = marcher.finish();
     settings.method = nebula::Method::Reference;
     (palette ? entry.hubbleError : entry.naturalError) = nebula::maxRelativeError(image, renderer->render(settings));
     nebulaDisplayPng(image, palette).write(stem.string() + (palette ? "_hubble.png" : "_natural.png"));

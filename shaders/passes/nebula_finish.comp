@@ -11,10 +11,9 @@ layout(local_size_x = 64) in;
 
 layout(std430, binding = 3) readonly buffer Lines { vec4 lines[]; };  // λ (µm), response per channel
 layout(std430, binding = 4) readonly buffer Moments { float moments[]; };  // [v·P + pixel]
-layout(std430, binding = 5) readonly buffer MarchedColour { vec4 marchedColour[]; };
+layout(std430, binding = 5) readonly buffer Marched { float marched[]; };  // [v·P + pixel]: colour, lines
 layout(std430, binding = 6) readonly buffer Weights { float weights[]; };  // [(g·3 + c)·card + j]
 layout(std430, binding = 7) writeonly buffer Colour { vec4 colour[]; };
-layout(std430, binding = 8) readonly buffer LineLight { float lineLight[]; };  // [l·P + pixel]
 
 uniform int uPixelCount;
 uniform int uCount;  // stars (projection) or 2D elements (light–density); 0 for the direct methods
@@ -24,8 +23,8 @@ uniform int uLineCount;
 void main() {
   int pixel = int(gl_GlobalInvocationID.x);
   if (pixel >= uPixelCount) return;
-  vec3 c = marchedColour[pixel].xyz;
-  for (int l = 0; l < uLineCount; ++l) c += lineLight[l * uPixelCount + pixel] * lines[l].yzw;
+  vec3 c = vec3(marched[pixel], marched[uPixelCount + pixel], marched[2 * uPixelCount + pixel]);
+  for (int l = 0; l < uLineCount; ++l) c += marched[(3 + l) * uPixelCount + pixel] * lines[l].yzw;
   for (int g = 0; g < uCount; ++g)
     for (int ch = 0; ch < 3; ++ch)
       for (int j = 0; j < uCard; ++j)

@@ -48,10 +48,10 @@ layout(std430, binding = 3) readonly buffer Lines { vec4 lines[]; };  // λ (µm
 // words): v = s·card + j (projection) or k·card + j (light–density). The ray accumulates into
 // them directly, so the number of stars has no limit but the buffer's size.
 layout(std430, binding = 4) buffer Moments { float moments[]; };
-// The colour the direct methods integrate in the march (0 for projection and light–density).
-layout(std430, binding = 5) writeonly buffer MarchedColour { vec4 marchedColour[]; };
-// Per line l of uLineCount (≤ kMaxNebulaLines), its light at lineLight[l·P + p].
-layout(std430, binding = 8) writeonly buffer LineLight { float lineLight[]; };
+// What the march made for the finish besides the moments, [v·P + p]: v = 0…2 the colour the direct
+// methods integrate in the march (0 for projection and light–density), v = 3 + l the light of
+// line l of uLineCount (≤ kMaxNebulaLines).
+layout(std430, binding = 5) writeonly buffer Marched { float marched[]; };
 const int kMaxNebulaLines = 16;
 #ifndef NEBULA_ANALYTIC  // its binding holds the analytic pieces' ranges there
 layout(std430, binding = 6) readonly buffer BasisMatrix { float basisM[]; };  // M(k, j) at [8k + j]
@@ -349,7 +349,7 @@ void main() {
 #endif
     }
   }
-  marchedColour[pixel] = vec4(colour, 0.0f);
-  for (int l = 0; l < uLineCount; ++l) lineLight[l * pixelCount + pixel] = lineSum[l];
+  for (int ch = 0; ch < 3; ++ch) marched[ch * pixelCount + pixel] = colour[ch];
+  for (int l = 0; l < uLineCount; ++l) marched[(3 + l) * pixelCount + pixel] = lineSum[l];
   imageStore(uOpticalDepth, ivec2(px.x, uSize.y - 1 - px.y), vec4(gCam));
 }

@@ -20,10 +20,10 @@ constexpr double kPlanckTimesLightEvUm = 1.239841984;  // hc
 constexpr double kReferenceTemperatureK = 40000.0;
 
 // ∫_{x₀}^∞ x²/(eˣ − 1) dx = Σₙ e^(−n·x₀)·(x₀²/n + 2x₀/n² + 2/n³): a blackbody's photons above
-// x₀ = E/kT, in units of (kT/h)³ up to a constant.
-double photonsAbove(double x0) {
+// x₀ = E/kT, in units of (kT/h)³ up to a constant; Wien's law (x²e^(−x)) is the first term.
+double photonsAbove(double x0, StarModel model) {
   double sum = 0.0;
-  for (int n = 1; n < 1000; ++n) {
+  for (int n = 1; n < (model == StarModel::Wien ? 2 : 1000); ++n) {
     const double term = std::exp(-n * x0) * (x0 * x0 / n + 2.0 * x0 / (n * n) + 2.0 / (n * n * static_cast<double>(n)));
     sum += term;
     if (term < 1e-18 * sum) break;
@@ -31,9 +31,9 @@ double photonsAbove(double x0) {
   return sum;
 }
 
-// ∫ x³/(eˣ − 1) dx over the band (x = hc/λkT): its luminosity there, in units of (kT)⁴ up to the
-// same constant.
-double bandLuminosity(double temperatureK) {
+// ∫ x³/(eˣ − 1) dx over the band (x = hc/λkT; Wien's law: x³e^(−x)): its luminosity there, in
+// units of (kT)⁴ up to the same constant.
+double bandLuminosity(double temperatureK, StarModel model) {
   static const auto unit = [] {
     std::pair<std::vector<double>, std::vector<double>> nw;
     gaussLegendre(64, 0.0, 1.0, nw.first, nw.second);
@@ -44,14 +44,14 @@ double bandLuminosity(double temperatureK) {
   double sum = 0.0;
   for (std::size_t q = 0; q < unit.first.size(); ++q) {
     const double x = x0 + (x1 - x0) * unit.first[q];
-    sum += (x1 - x0) * unit.second[q] * x * x * x / std::expm1(x);
+    sum += (x1 - x0) * unit.second[q] * x * x * x / (model == StarModel::Wien ? std::exp(x) : std::expm1(x));
   }
   return sum;
 }
 
-double photonsPerBandLuminosity(double energyEv, double temperatureK) {
+double photonsPerBandLuminosity(double energyEv, double temperatureK, StarModel model) {
   const double kt = kBoltzmannEvPerK * temperatureK;
-  return photonsAbove(energyEv / kt) / (kt * bandLuminosity(temperatureK));
+  return photonsAbove(energyEv / kt, model) / (kt * bandLuminosity(temperatureK, model));
 }
 
 double frontStep(double e0, double e1, double x) {  // smoothstep
@@ -78,9 +78,10 @@ std::vector<IonZone> readIonZones(const std::filesystem::path& csv) {
   return zones;
 }
 
-double ionisingPhotons(double energyEv, double temperatureK) {
-  static const double reference = photonsPerBandLuminosity(kHydrogenIonisationEv, kReferenceTemperatureK);
-  return photonsPerBandLuminosity(energyEv, temperatureK) / reference;
+double ionisingPhotons(double energyEv, double temperatureK, StarModel model) {
+  static const double reference =
+      photonsPerBandLuminosity(kHydrogenIonisationEv, kReferenceTemperatureK, StarModel::Planck);
+  return photonsPerBandLuminosity(energyEv, temperatureK, model) / reference;
 }
 
 VoxelField recombinationColumn(const DensityGrid& density, const NebulaStar& star, unsigned threads) {
@@ -120,7 +121,7 @@ VoxelField recombinationColumn(const DensityGrid& density, const NebulaStar& sta
   return field;
 }
 
-VoxelField ionisationZones(const DensityGrid& density, const std::vector<NebulaStar>& stars,
+VoxelField ionisationZones(const DensityGrid& density, const std::vector<NebulaStar>& stars, StarModel starModel,
                            const std::vector<VoxelField>& columns, const IonisationModel& model,
                            const std::vector<std::string>& groups, unsigned threads) {
   PRISM_CHECK(columns.size() == stars.size());
@@ -138,9 +139,10 @@ VoxelField ionisationZones(const DensityGrid& density, const std::vector<NebulaS
   for (std::size_t s = 0; s < stars.size(); ++s)
     for (std::size_t g = 0; g < count; ++g) {
       const double l = k * stars[s].luminosity;
-      makeBudget[s * count + g] = l * ionisingPhotons(std::max(zones[g].makeEv, kHydrogenIonisationEv), stars[s].temperatureK);
+      const double t = stars[s].temperatureK;
+      makeBudget[s * count + g] = l * ionisingPhotons(std::max(zones[g].makeEv, kHydrogenIonisationEv), t, starModel);
       destroyBudget[s * count + g] =
-          std::isfinite(zones[g].destroyEv) ? l * ionisingPhotons(zones[g].destroyEv, stars[s].temperatureK) : 0.0;
+          std::isfinite(zones[g].destroyEv) ? l * ionisingPhotons(zones[g].destroyEv, t, starModel) : 0.0;
     }
   const double w = model.frontWidth;
   auto ionised = [w](double column, double budget) {  // f: 1 inside the front, 0 beyond
@@ -180,7 +182,7 @@ void buildLineZones(NebulaPrecomputed& pre, const std::vector<std::string>& line
     columns.push_back(recombinationColumn(m.density, star, threads));
     if (tick) tick();
   }
-  pre.lineZones = ionisationZones(m.density, m.stars, columns, *m.ionisation, groups, threads);
+  pre.lineZones = ionisationZones(m.density, m.stars, m.starModel, columns, *m.ionisation, groups, threads);
 }
 
 }  // namespace prism::nebula

@@ -9,8 +9,8 @@
 // from star s to a point p, the front lies where C_s(p) = ∫ ρ² r² dr (r from the star) reaches
 // K·L_s·q(E, T_s), with
 //   q(E, T)  the star's photons above E per unit of its luminosity in the band (380–780 nm, as
-//            Prism normalises stars): Planck's, in closed form (a series) over a band quadrature,
-//            relative to q(13.6 eV, 40 000 K);
+//            Prism normalises stars), by the star's own law (Planck's or Wien's), in closed form
+//            (a series) over a band quadrature, relative to a Planck star's at 13.6 eV, 40 000 K;
 //   K        R₀³/3, so that a star of luminosity 1 at 40 000 K in a uniform density 1 ionises
 //            hydrogen out to the radius R₀ (the scene's front_radius, unit cube);
 // and the gas there is ionised by a fraction f = 1 − smoothstep(1 − w, 1 + w, (C/(K·L·q))^⅓), w
@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "techniques/nebula/nebula_density.h"
+#include "techniques/nebula/nebula_spectra.h"
 
 namespace prism::nebula {
 
@@ -53,9 +54,9 @@ struct IonZone {
 };
 std::vector<IonZone> readIonZones(const std::filesystem::path& csv);
 
-// q(E, T) above: photons above E per unit band luminosity of a blackbody at T, relative to
-// 13.6 eV at 40 000 K.
-double ionisingPhotons(double energyEv, double temperatureK);
+// q(E, T) above: photons above E per unit band luminosity of a star at T by `model` (Planck's law
+// or Wien's approximation, as the star's spectrum), relative to a Planck star at 13.6 eV, 40 000 K.
+double ionisingPhotons(double energyEv, double temperatureK, StarModel model = StarModel::Planck);
 
 // C_s(p) per voxel centre: ∫ ρ² r² dr along the segment from the star to the voxel, within the
 // cube (r and the length in the cube's units).
@@ -63,7 +64,7 @@ VoxelField recombinationColumn(const DensityGrid& density, const NebulaStar& sta
 
 // Per voxel, the zone of each of `groups` (one value each, in order); Error naming a group that
 // data/nebula_ions.csv lacks.
-VoxelField ionisationZones(const DensityGrid& density, const std::vector<NebulaStar>& stars,
+VoxelField ionisationZones(const DensityGrid& density, const std::vector<NebulaStar>& stars, StarModel starModel,
                            const std::vector<VoxelField>& columns, const IonisationModel& model,
                            const std::vector<std::string>& groups, unsigned threads);
 

@@ -1,6 +1,6 @@
-// Ionisation zones (nebula_ionisation.h): the photon counts against Planck's law integrated over
-// wavelength, and the zones of a star in a uniform cloud against the nested Strömgren spheres'
-// closed form.
+// Ionisation zones (nebula_ionisation.h): the photon counts against Planck's and Wien's laws
+// integrated over wavelength, and the zones of a star in a uniform cloud against the nested
+// Strömgren spheres' closed form.
 #include "techniques/nebula/nebula_ionisation.h"
 
 #include <gtest/gtest.h>
@@ -19,9 +19,12 @@ namespace {
 
 // Photons above E per unit of band luminosity, from Planck's B_λ (any units) by composite Simpson
 // in λ: the photons ∫₀^λ_E B_λ·λ dλ (fine steps: the Wien tail is steep) over ∫ B_λ dλ on the band.
-double photonsByQuadrature(double energyEv, double temperatureK) {
+double photonsByQuadrature(double energyEv, double temperatureK, StarModel model = StarModel::Planck) {
   constexpr double hcEvUm = 1.239841984, kEvPerK = 8.617333262e-5;
-  auto planck = [&](double lambdaUm) { return 1.0 / (std::pow(lambdaUm, 5) * std::expm1(hcEvUm / (lambdaUm * kEvPerK * temperatureK))); };
+  auto planck = [&](double lambdaUm) {
+    const double x = hcEvUm / (lambdaUm * kEvPerK * temperatureK);
+    return 1.0 / (std::pow(lambdaUm, 5) * (model == StarModel::Wien ? std::exp(x) : std::expm1(x)));
+  };
   auto simpson = [](auto f, double a, double b, int n) {
     const double h = (b - a) / n;
     double sum = f(a) + f(b);
@@ -38,8 +41,11 @@ TEST(NebulaIonisation, PhotonCountsArePlancksLaw) {
   EXPECT_NEAR(ionisingPhotons(kHydrogenIonisationEv, 40000.0), 1.0, 1e-12);
   for (double t : {10000.0, 25000.0, 40000.0, 80000.0})
     for (double e : {13.598434, 24.587389, 35.12112, 54.93554}) {
-      const double expected = photonsByQuadrature(e, t) / reference;
-      EXPECT_NEAR(ionisingPhotons(e, t), expected, 1e-6 * expected) << e << " eV at " << t << " K";
+      for (StarModel model : {StarModel::Planck, StarModel::Wien}) {
+        const double expected = photonsByQuadrature(e, t, model) / reference;
+        EXPECT_NEAR(ionisingPhotons(e, t, model), expected, 1e-6 * expected)
+            << e << " eV at " << t << " K, " << (model == StarModel::Wien ? "Wien" : "Planck");
+      }
     }
   // Hotter stars make more ionising photons for their visible light, and more energetic ones.
   EXPECT_LT(ionisingPhotons(kHydrogenIonisationEv, 25000.0), ionisingPhotons(kHydrogenIonisationEv, 40000.0));
@@ -60,7 +66,8 @@ TEST(NebulaIonisation, AStarInAUniformCloudHasNestedStromgrenZones) {
   const std::vector<IonZone> table = readIonZones(dataFile("nebula_ions.csv"));
   for (double t : {40000.0, 25000.0}) {
     const NebulaStar star{{0.5, 0.5, 0.5}, t, 1.0};
-    const VoxelField field = ionisationZones(m.density, {star}, {recombinationColumn(m.density, star, 0)}, zones, groups, 0);
+    const VoxelField field =
+        ionisationZones(m.density, {star}, StarModel::Planck, {recombinationColumn(m.density, star, 0)}, zones, groups, 0);
     auto analytic = [&](const std::string& group, double r) {
       auto f = [&](double e) { return 1.0 - glm::smoothstep(0.95, 1.05, r / (0.3 * std::cbrt(ionisingPhotons(e, t)))); };
       for (const IonZone& z : table)

@@ -238,12 +238,11 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   const std::size_t momentBytes = std::max<std::size_t>(1, static_cast<std::size_t>(mCount * mCard) * pixels) * sizeof(float);
   if (mMoments.sizeBytes() != momentBytes) mMoments = gpu::Buffer({momentBytes, nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula moments"});
   mLineCount = s.emissionLines && m.emission != 0.0 ? static_cast<int>(mActiveLines.size()) : 0;
-  const std::size_t lineBytes = std::max<std::size_t>(1, static_cast<std::size_t>(mLineCount) * pixels) * sizeof(float);
-  if (mLineLight.sizeBytes() != lineBytes) mLineLight = gpu::Buffer({lineBytes, nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula line light"});
-  if (mMarchedColour.sizeBytes() != pixels * sizeof(glm::vec4)) {
-    mMarchedColour = gpu::Buffer({pixels * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula marched colour"});
+  const std::size_t marchedBytes = static_cast<std::size_t>(3 + mLineCount) * pixels * sizeof(float);
+  if (mMarchedValues.sizeBytes() != marchedBytes)
+    mMarchedValues = gpu::Buffer({marchedBytes, nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula marched"});
+  if (mColour.sizeBytes() != pixels * sizeof(glm::vec4))
     mColour = gpu::Buffer({pixels * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula colour"});
-  }
   if (mOpticalDepth.id() == 0 || mOpticalDepth.width() != view.width || mOpticalDepth.height() != view.height) {
     gpu::Texture2DDesc depth;
     depth.width = view.width;
@@ -281,8 +280,9 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   setIfActive(p, "uNodeStride", nodeStride);
   setIfActive(p, "uLineCount", mLineCount);
   setIfActive(p, "uZoneCount", pre.lineZone.empty() ? 0 : pre.lineZones.width);
-  for (std::size_t l = 0; l < mActiveLines.size() && !pre.lineZone.empty(); ++l)
-    setIfActive(p, fmt::format("uLineZone[{}]", l), pre.lineZone[mActiveLines[l]]);
+  if (!pre.lineZone.empty() && p.hasUniform("uLineZone[0]"))  // where the shader reads it, every element
+    for (std::size_t l = 0; l < mActiveLines.size(); ++l)
+      p.setUniform(fmt::format("uLineZone[{}]", l), pre.lineZone[mActiveLines[l]]);
   setIfActive(p, "uBasisLo", pre.basisLo);
   setIfActive(p, "uBasisHi", pre.basisHi);
   setIfActive(p, "uMomentStep", static_cast<float>(pre.moments.step));
@@ -297,8 +297,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   mStars.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
   mLines.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   mMoments.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
-  mMarchedColour.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
-  mLineLight.bindBase(GL_SHADER_STORAGE_BUFFER, 8);
+  mMarchedValues.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
   if (analytic) {
     mAnalyticRanges.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
     mAnalyticPieces.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
@@ -321,8 +320,7 @@ void NebulaGpuMarcher::finishOnGpu() {
   mFinish.setUniform("uLineCount", mLineCount);
   mLines.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   mMoments.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
-  mMarchedColour.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
-  mLineLight.bindBase(GL_SHADER_STORAGE_BUFFER, 8);
+  mMarchedValues.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
   (mMarched == Method::LightDensity ? mLightWeights : mProjectionWeights).bindBase(GL_SHADER_STORAGE_BUFFER, 6);
   mColour.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   gpu::runCompute1D(mFinish, static_cast<std::size_t>(pixels));
@@ -350,7 +348,7 @@ const std::vector<float>& NebulaGpuMarcher::finishWeights() const {
 std::size_t NebulaGpuMarcher::gpuMemoryBytes() const {
   return mDensity.sizeBytes() + mStarDepth.sizeBytes() + mLightCoefficients.sizeBytes() + mZones.sizeBytes() + mMomentLo.sizeBytes() +
          mMomentHi.sizeBytes() + mBasisMatrix.sizeBytes() + mStars.sizeBytes() + mLines.sizeBytes() + mProjectionWeights.sizeBytes() +
-         mLightWeights.sizeBytes() + mMoments.sizeBytes() + mMarchedColour.sizeBytes() + mLineLight.sizeBytes() + mColour.sizeBytes() +
+         mLightWeights.sizeBytes() + mMoments.sizeBytes() + mMarchedValues.sizeBytes() + mColour.sizeBytes() +
          mReferenceNodes.sizeBytes() + mOpticalDepth.sizeBytes() + mAnalyticRanges.sizeBytes() + mAnalyticPieces.sizeBytes() +
          mPreIntegrated.sizeBytes();
 }

@@ -98,7 +98,7 @@ class NebulaGpuMarcher {
   std::vector<float> mProjectionWeightValues, mLightWeightValues;
   gpu::Buffer mProjectionWeights, mLightWeights;
   std::vector<std::size_t> mActiveLines;  // the renderer's lines of non-zero weight, in order
-  gpu::Buffer mMoments, mMarchedColour, mLineLight, mColour, mReferenceNodes;
+  gpu::Buffer mMoments, mMarchedValues, mColour, mReferenceNodes;  // mMarchedValues: nebula_march.comp's Marched
   gpu::Texture2D mOpticalDepth;
   gpu::Buffer mAnalyticRanges, mAnalyticPieces, mPreIntegrated;  // made when first marched
   Method mMarched = Method::Projection;

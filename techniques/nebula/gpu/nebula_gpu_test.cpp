@@ -77,7 +77,12 @@ TEST_P(NebulaGpuTwin, MatchesTheCpuMarcherPerPixel) {
   s.emissionLines = t.lines;
   NebulaModel model = smallNebula(t.filters, t.stars);
   model.starModel = t.starModel;
-  if (t.zones) model.ionisation = IonisationModel{1.5, 0.1};
+  if (t.zones) {  // every group: seven zones, both slabs of the zones' texture
+    model.ionisation = IonisationModel{1.5, 0.1};
+    model.lineGroups = {{"H I Balmer (case B)", 1.0}, {"He I (case B)", 0.5}, {"[O III] doublet", 0.8},
+                        {"[N II] doublet", 0.3},      {"[S II] doublet", 0.4}, {"[O II] doublet", 0.3},
+                        {"[O I] doublet", 0.6}};
+  }
   NebulaRenderer renderer(model, s);
   NebulaImage cpu = renderer.render(s);
   NebulaGpuMarcher gpu(renderer);

@@ -25,7 +25,9 @@ class ReleasedEdits {
   bool slider(const char* label, double& value, float lo, float hi, const char* format, bool logarithmic = false) {
     glm::vec3 v(static_cast<float>(value));
     const bool done = control(label, v, [&](float* p) {
-      return ImGui::SliderFloat(label, p, lo, hi, format, logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
+      // Clamped: a value typed in (ctrl-click) stays within the bounds the scene loader holds too.
+      return ImGui::SliderFloat(label, p, lo, hi, format,
+                                ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
     });
     if (done) value = v.x;
     return done;

@@ -122,8 +122,8 @@ bool setNebulaKey(Scene& scene, const std::string& key, const std::string& value
   } else if (key.rfind("nebula.ionisation.", 0) == 0) {  // turns the zones on
     const bool radius = key == "nebula.ionisation.front_radius";
     const double most = radius ? nebula::kMaxFrontRadius : nebula::kMaxFrontWidth;
-    const float v = render::parseFloat(key, value);
-    if (!(v > 0.0f && v <= most)) throw Error(fmt::format("{}: expected a number in (0, {}], got {}", key, most, excerpt(value)));
+    const double v = render::parseNumber(key, value);  // double, as the scene loader reads it
+    if (!(v > 0.0 && v <= most)) throw Error(fmt::format("{}: expected a number in (0, {}], got {}", key, most, excerpt(value)));
     nebula::IonisationModel zones = s->model.ionisation.value_or(nebula::IonisationModel{});
     (radius ? zones.frontRadius : zones.frontWidth) = v;
     s->model.ionisation = zones;

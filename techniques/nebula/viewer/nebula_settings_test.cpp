@@ -98,7 +98,7 @@ TEST(NebulaSetKeys, IonisationZones) {
   EXPECT_EQ(nebulaKeyError(scene, "nebula.ionisation.front_width", "0.7"),
             "nebula.ionisation.front_width: expected a number in (0, 0.5], got 0.7");
   EXPECT_EQ(nebulaKeyError(scene, "nebula.ionisation", "maybe"), "nebula.ionisation: expected on or off, got 'maybe'");
-  EXPECT_FLOAT_EQ(static_cast<float>(s->model.ionisation->frontWidth), 0.2f);
+  EXPECT_EQ(s->model.ionisation->frontWidth, 0.2);
   EXPECT_TRUE(setNebulaKey(scene, "nebula.ionisation", "off"));
   EXPECT_FALSE(s->model.ionisation.has_value());
   EXPECT_TRUE(setNebulaKey(scene, "nebula.ionisation", "on"));

@@ -15,6 +15,7 @@
 #include "spectral/illuminant.h"
 #include "spectral/rgb_intent.h"
 #include "techniques/prt/prt_environment_radiance.h"
+#include "techniques/prt/prt_sky_cache.h"
 
 namespace prism::prt {
 namespace {
@@ -221,7 +222,7 @@ std::shared_ptr<const SkyRadianceGrid> sectionSky(const PrtSky& sky) {
   if (!lastSky || !(lastSky->atmosphere.parameters == a.parameters) ||
       lastSky->atmosphere.sunElevationDeg != a.sunElevationDeg || lastSky->atmosphere.sunAzimuthDeg != a.sunAzimuthDeg ||
       lastSky->atmosphere.groundAltitudeM != a.groundAltitudeM) {
-    lastGrid = std::make_shared<const SkyRadianceGrid>(tabulateSky(sky));
+    lastGrid = std::make_shared<const SkyRadianceGrid>(cachedSky(sky));
     lastSky = sky;
   }
   return lastGrid;

@@ -5,14 +5,20 @@
 #include "techniques/prt/prt_sky.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <numbers>
+#include <string>
 
 #include "spectral/observer.h"
 #include "techniques/atmosphere/atmosphere_reference.h"
+#include "techniques/prt/prt_sky_cache.h"
 #include "techniques/prt/prt_spectra.h"
 
 namespace prism::prt {
@@ -86,6 +92,46 @@ TEST(PrtSky, TheSkyIsBlueAndTheSettingSunRed) {
   EXPECT_LT(zenith.x, 0.30);
   EXPECT_LT(zenith.y, 0.31);
   EXPECT_GT(sunLow.x, sunHigh.x + 0.05);
+}
+
+// The sky's cache (prt_sky_cache.h): the first call tabulates and writes the entry, the second
+// reads the same grid bit for bit; an entry with a flipped byte fails its checksum and is
+// tabulated and written again; another sun or size is another key. (Two tabulations: each takes
+// seconds under the sanitizers, whatever the grid's size.)
+TEST(PrtSky, TheCacheHoldsTheTabulatedGridBitForBit) {
+  const std::filesystem::path cache =
+      std::filesystem::path(::testing::TempDir()) / ("prism_prt_sky_cache_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(cache);
+  const char* previous = std::getenv("PRISM_CACHE_DIR");
+  const std::string restore = previous ? previous : "";
+  ::setenv("PRISM_CACHE_DIR", cache.c_str(), 1);
+  const PrtSky sky = skyAt(20.0f, 70.0f);
+  const SkyRadianceGrid tabulated = cachedSky(sky, 8, 4);  // no entry yet: tabulateSky's grid
+  auto same = [&](const SkyRadianceGrid& g) {
+    return g.width == 8 && g.height == 4 && g.radiance == tabulated.radiance &&
+           g.sunIrradiance == tabulated.sunIrradiance && g.sunDirection == tabulated.sunDirection;
+  };
+  const std::filesystem::path entry = std::filesystem::directory_iterator(cache / "prt_sky")->path();
+  const auto size = std::filesystem::file_size(entry);
+  ::testing::internal::CaptureStderr();
+  EXPECT_TRUE(same(cachedSky(sky, 8, 4)));
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  {
+    std::fstream f(entry, std::ios::in | std::ios::out | std::ios::binary);  // a radiance's byte flipped
+    f.seekg(static_cast<std::streamoff>(size / 2));
+    const char byte = static_cast<char>(f.get());
+    f.seekp(static_cast<std::streamoff>(size / 2));
+    f.put(static_cast<char>(~byte));
+  }
+  ::testing::internal::CaptureStderr();
+  EXPECT_TRUE(same(cachedSky(sky, 8, 4)));
+  EXPECT_NE(::testing::internal::GetCapturedStderr().find("is damaged (not a sky grid of this key)"), std::string::npos);
+  EXPECT_TRUE(same(cachedSky(sky, 8, 4)));  // written again, whole
+  EXPECT_NE(skyCacheKey(sky, 8, 4), skyCacheKey(skyAt(21.0f, 70.0f), 8, 4));
+  EXPECT_NE(skyCacheKey(sky, 8, 4), skyCacheKey(sky, 16, 8));
+  if (previous) ::setenv("PRISM_CACHE_DIR", restore.c_str(), 1);
+  else ::unsetenv("PRISM_CACHE_DIR");
+  std::filesystem::remove_all(cache);
 }
 
 }  // namespace

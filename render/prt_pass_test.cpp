@@ -16,8 +16,7 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
+#include "core/cache_dir_test_support.h"
 #include "gpu/headless_context.h"
 #include "gpu/texture.h"
 #include "render/cpu_shading.h"
@@ -134,12 +133,8 @@ TEST(PrtGpuCpuParity, PrtObjectsAreLitByTheScenesLightsToo) {
 // The bake ahead of the renderer (precomputeTechniques) fills the cache entry the pass then reads:
 // progress once, named, up to its total; nothing the second time, nor for a scene without PRT.
 TEST(PrtPrecompute, BakesAheadIntoTheCacheThePassReads) {
-  const std::filesystem::path cache =
-      std::filesystem::path(::testing::TempDir()) / ("prism_prt_precompute_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(cache);
-  const char* previous = std::getenv("PRISM_CACHE_DIR");
-  const std::string restore = previous ? previous : "";
-  ::setenv("PRISM_CACHE_DIR", cache.c_str(), 1);
+  const ScopedCacheDirectory scoped("prism_prt_precompute");
+  const std::filesystem::path& cache = scoped.path();
   Scene scene = loadScene(kExampleScenes / "prt_metamers.json");
   std::vector<std::string> names;
   std::size_t lastDone = 0, lastTotal = 0;
@@ -166,9 +161,6 @@ TEST(PrtPrecompute, BakesAheadIntoTheCacheThePassReads) {
   Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(cache / "prt"), {}), 1);
-  if (previous) ::setenv("PRISM_CACHE_DIR", restore.c_str(), 1);
-  else ::unsetenv("PRISM_CACHE_DIR");
-  std::filesystem::remove_all(cache);
 }
 
 }  // namespace

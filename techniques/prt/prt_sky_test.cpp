@@ -5,17 +5,16 @@
 #include "techniques/prt/prt_sky.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <numbers>
 #include <string>
 
+#include "core/cache_dir_test_support.h"
 #include "spectral/observer.h"
 #include "techniques/atmosphere/atmosphere_reference.h"
 #include "techniques/prt/prt_sky_cache.h"
@@ -99,19 +98,14 @@ TEST(PrtSky, TheSkyIsBlueAndTheSettingSunRed) {
 // tabulated and written again; another sun or size is another key. (Two tabulations: each takes
 // seconds under the sanitizers, whatever the grid's size, unless multiple scattering is off.)
 TEST(PrtSky, TheCacheHoldsTheTabulatedGridBitForBit) {
-  const std::filesystem::path cache =
-      std::filesystem::path(::testing::TempDir()) / ("prism_prt_sky_cache_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(cache);
-  const char* previous = std::getenv("PRISM_CACHE_DIR");
-  const std::string restore = previous ? previous : "";
-  ::setenv("PRISM_CACHE_DIR", cache.c_str(), 1);
+  const ScopedCacheDirectory cache("prism_prt_sky_cache");
   const PrtSky sky = skyAt(20.0f, 70.0f, false);  // single scattering: the cheapest to tabulate
   const SkyRadianceGrid tabulated = cachedSky(sky, 8, 4);  // no entry yet: tabulateSky's grid
   auto same = [&](const SkyRadianceGrid& g) {
     return g.width == 8 && g.height == 4 && g.radiance == tabulated.radiance &&
            g.sunIrradiance == tabulated.sunIrradiance && g.sunDirection == tabulated.sunDirection;
   };
-  const std::filesystem::path entry = std::filesystem::directory_iterator(cache / "prt_sky")->path();
+  const std::filesystem::path entry = std::filesystem::directory_iterator(cache.path() / "prt_sky")->path();
   const auto size = std::filesystem::file_size(entry);
   ::testing::internal::CaptureStderr();
   EXPECT_TRUE(same(cachedSky(sky, 8, 4)));
@@ -130,9 +124,6 @@ TEST(PrtSky, TheCacheHoldsTheTabulatedGridBitForBit) {
   EXPECT_NE(skyCacheKey(sky, 8, 4), skyCacheKey(skyAt(21.0f, 70.0f, false), 8, 4));
   EXPECT_NE(skyCacheKey(sky, 8, 4), skyCacheKey(skyAt(20.0f, 70.0f), 8, 4));
   EXPECT_NE(skyCacheKey(sky, 8, 4), skyCacheKey(sky, 16, 8));
-  if (previous) ::setenv("PRISM_CACHE_DIR", restore.c_str(), 1);
-  else ::unsetenv("PRISM_CACHE_DIR");
-  std::filesystem::remove_all(cache);
 }
 
 }  // namespace

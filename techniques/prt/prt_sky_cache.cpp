@@ -1,10 +1,13 @@
 #include "techniques/prt/prt_sky_cache.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -21,6 +24,7 @@ namespace {
 // Bump when tabulateSky or this format changes what a key's grid holds.
 constexpr int kSkyCacheVersion = 1;
 constexpr std::string_view kMagic = "prism-prt-sky\n";
+constexpr std::size_t kMostEntries = 32;  // 2.6 MB each at 128 × 64: a viewer's sun drags stay bounded
 
 std::string readBytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -65,6 +69,18 @@ std::optional<SkyRadianceGrid> parse(const std::string& bytes, std::uint64_t key
   return grid;
 }
 
+// Removes the oldest entries (by modification time) beyond kMostEntries; errors are ignored (another
+// process may be pruning too).
+void prune(const std::filesystem::path& folder) {
+  std::error_code ec;
+  std::vector<std::pair<std::filesystem::file_time_type, std::filesystem::path>> entries;
+  for (const auto& e : std::filesystem::directory_iterator(folder, ec))
+    if (e.path().extension() == ".bin") entries.emplace_back(e.last_write_time(ec), e.path());
+  if (entries.size() <= kMostEntries) return;
+  std::sort(entries.begin(), entries.end());
+  for (std::size_t i = 0; i + kMostEntries < entries.size(); ++i) std::filesystem::remove(entries[i].second, ec);
+}
+
 }  // namespace
 
 std::uint64_t skyCacheKey(const PrtSky& sky, int width, int height) {
@@ -93,6 +109,7 @@ SkyRadianceGrid cachedSky(const PrtSky& sky, int width, int height) {
   requireWritable(path);  // before the work, not after
   SkyRadianceGrid grid = tabulateSky(sky, width, height);
   writeFileAtomically(path, serialise(grid, key));
+  prune(path.parent_path());
   return grid;
 }
 

@@ -5,7 +5,8 @@
 // format's version, the atmosphere's parameters, the sun's position, the ground's altitude, the
 // grid's size and the bytes of data/atmosphere_spectra.csv (the solar spectrum and ozone). Written
 // atomically after requireWritable; an entry that is not this key's grid, or whose checksum fails,
-// is said so in one line on stderr and tabulated again.
+// is said so in one line on stderr and tabulated again. The 32 newest entries are kept (2.6 MB
+// each): dragging the sun in the viewer writes one a position.
 #pragma once
 
 #include <cstdint>

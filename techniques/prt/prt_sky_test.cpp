@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,8 @@
 #include <functional>
 #include <numbers>
 #include <string>
+
+#include <fmt/format.h>
 
 #include "core/cache_dir_test_support.h"
 #include "spectral/observer.h"
@@ -93,19 +96,33 @@ TEST(PrtSky, TheSkyIsBlueAndTheSettingSunRed) {
   EXPECT_GT(sunLow.x, sunHigh.x + 0.05);
 }
 
-// The sky's cache (prt_sky_cache.h): the first call tabulates and writes the entry, the second
-// reads the same grid bit for bit; an entry with a flipped byte fails its checksum and is
-// tabulated and written again; another sun or size is another key. (Two tabulations: each takes
-// seconds under the sanitizers, whatever the grid's size, unless multiple scattering is off.)
+// The sky's cache (prt_sky_cache.h): the first call tabulates and writes the entry, keeping the 32
+// newest; the second reads the same grid bit for bit; an entry with a flipped byte fails its
+// checksum and is tabulated and written again; another sun or size is another key. (Two
+// tabulations: each takes seconds under the sanitizers, whatever the grid's size, unless multiple
+// scattering is off.)
 TEST(PrtSky, TheCacheHoldsTheTabulatedGridBitForBit) {
   const ScopedCacheDirectory cache("prism_prt_sky_cache");
   const PrtSky sky = skyAt(20.0f, 70.0f, false);  // single scattering: the cheapest to tabulate
+  // 40 older entries of other skies: writing this one prunes them to the 32 newest.
+  const std::filesystem::path folder = cache.path() / "prt_sky";
+  std::filesystem::create_directories(folder);
+  for (int i = 0; i < 40; ++i) {
+    const std::filesystem::path old = folder / ("old" + std::to_string(i) + ".bin");
+    std::ofstream(old) << "another sky";
+    std::filesystem::last_write_time(old, std::filesystem::file_time_type::clock::now() - std::chrono::hours(1) +
+                                              std::chrono::seconds(i));
+  }
   const SkyRadianceGrid tabulated = cachedSky(sky, 8, 4);  // no entry yet: tabulateSky's grid
+  const std::filesystem::path entry = folder / fmt::format("{:016x}.bin", skyCacheKey(sky, 8, 4));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder), {}), 32);
+  EXPECT_TRUE(std::filesystem::exists(entry));
+  EXPECT_FALSE(std::filesystem::exists(folder / "old7.bin"));  // among the oldest
+  EXPECT_TRUE(std::filesystem::exists(folder / "old39.bin"));
   auto same = [&](const SkyRadianceGrid& g) {
     return g.width == 8 && g.height == 4 && g.radiance == tabulated.radiance &&
            g.sunIrradiance == tabulated.sunIrradiance && g.sunDirection == tabulated.sunDirection;
   };
-  const std::filesystem::path entry = std::filesystem::directory_iterator(cache.path() / "prt_sky")->path();
   const auto size = std::filesystem::file_size(entry);
   ::testing::internal::CaptureStderr();
   EXPECT_TRUE(same(cachedSky(sky, 8, 4)));

@@ -112,10 +112,8 @@ NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
   std::vector<glm::vec4> stars;
   for (const NebulaStar& s : pre.model.stars) stars.emplace_back(glm::vec3(s.position), static_cast<float>(s.luminosity));
   mStars = bufferOf(stars, "nebula stars");
-  for (std::size_t l = 0; l < pre.lineWeight.size(); ++l)
-    if (pre.lineWeight[l] != 0.0) mActiveLines.push_back(l);
-  if (mActiveLines.size() > static_cast<std::size_t>(kMaxLines))
-    throw Error(fmt::format("nebula: {} emission lines of non-zero weight, the GPU march holds {}", mActiveLines.size(), kMaxLines));
+  if (pre.lineLambdaUm.size() > static_cast<std::size_t>(kMaxLines))
+    throw Error(fmt::format("nebula: {} emission lines, the GPU march holds {}", pre.lineLambdaUm.size(), kMaxLines));
   std::vector<float> basisM(64, 0.0f);
   for (Eigen::Index k = 0; k < pre.basis.m.rows(); ++k)
     for (Eigen::Index j = 0; j <= k; ++j) basisM[static_cast<std::size_t>(8 * k + j)] = static_cast<float>(pre.basis.m(k, j));
@@ -126,7 +124,8 @@ NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
 void NebulaGpuMarcher::uploadFilters() {
   const NebulaPrecomputed& pre = mRenderer->precomputed();
   std::vector<glm::vec4> lines;
-  for (std::size_t l : mActiveLines) lines.emplace_back(static_cast<float>(pre.lineLambdaUm[l]), glm::vec3(pre.lineResponse[l]));
+  for (std::size_t l = 0; l < pre.lineLambdaUm.size(); ++l)
+    lines.emplace_back(static_cast<float>(pre.lineLambdaUm[l]), glm::vec3(pre.lineResponse[l]));
   mLines = bufferOf(lines, "nebula lines");
 
   // The finish's weights, [(group·3 + channel)·card + j].
@@ -237,7 +236,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   const std::size_t pixels = static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height);
   const std::size_t momentBytes = std::max<std::size_t>(1, static_cast<std::size_t>(mCount * mCard) * pixels) * sizeof(float);
   if (mMoments.sizeBytes() != momentBytes) mMoments = gpu::Buffer({momentBytes, nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula moments"});
-  mLineCount = s.emissionLines && m.emission != 0.0 ? static_cast<int>(mActiveLines.size()) : 0;
+  mLineCount = s.emissionLines && m.emission != 0.0 ? static_cast<int>(pre.lineLambdaUm.size()) : 0;
   const std::size_t marchedBytes = static_cast<std::size_t>(3 + mLineCount) * pixels * sizeof(float);
   if (mMarchedValues.sizeBytes() != marchedBytes)
     mMarchedValues = gpu::Buffer({marchedBytes, nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula marched"});
@@ -281,8 +280,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   setIfActive(p, "uLineCount", mLineCount);
   setIfActive(p, "uZoneCount", pre.lineZone.empty() ? 0 : pre.lineZones.width);
   if (!pre.lineZone.empty() && p.hasUniform("uLineZone[0]"))  // where the shader reads it, every element
-    for (std::size_t l = 0; l < mActiveLines.size(); ++l)
-      p.setUniform(fmt::format("uLineZone[{}]", l), pre.lineZone[mActiveLines[l]]);
+    for (std::size_t l = 0; l < pre.lineZone.size(); ++l) p.setUniform(fmt::format("uLineZone[{}]", l), pre.lineZone[l]);
   setIfActive(p, "uBasisLo", pre.basisLo);
   setIfActive(p, "uBasisHi", pre.basisHi);
   setIfActive(p, "uMomentStep", static_cast<float>(pre.moments.step));

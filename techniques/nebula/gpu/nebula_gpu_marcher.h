@@ -49,7 +49,7 @@ class NebulaGpuMarcher {
  public:
   // Uploads the renderer's grids and tables; the renderer must outlive the marcher. Error when a
   // field's slabs exceed GL_MAX_3D_TEXTURE_SIZE along z (nz·⌈stars/4⌉: 2048 allows 64 stars at 128³),
-  // or for more than kMaxLines emission lines of non-zero weight or kMaxZones ionisation zones.
+  // or for more than kMaxLines emission lines (those of the model's groups) or kMaxZones zones.
   explicit NebulaGpuMarcher(const NebulaRenderer& renderer);
   static constexpr int kMaxLines = 16;  // nebula_march.comp's kMaxNebulaLines
   static constexpr int kMaxZones = 8;   // its two slabs of uZones
@@ -97,7 +97,6 @@ class NebulaGpuMarcher {
   gpu::Buffer mMomentLo, mMomentHi, mBasisMatrix, mStars, mLines;
   std::vector<float> mProjectionWeightValues, mLightWeightValues;
   gpu::Buffer mProjectionWeights, mLightWeights;
-  std::vector<std::size_t> mActiveLines;  // the renderer's lines of non-zero weight, in order
   gpu::Buffer mMoments, mMarchedValues, mColour, mReferenceNodes;  // mMarchedValues: nebula_march.comp's Marched
   gpu::Texture2D mOpticalDepth;
   gpu::Buffer mAnalyticRanges, mAnalyticPieces, mPreIntegrated;  // made when first marched

@@ -249,6 +249,7 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
   for (const nlohmann::json& c : j["spectral"]) {
     EXPECT_LE(c["ratio_to_rgb_min"].get<double>(), c["ratio_to_rgb"].get<double>());
     EXPECT_GE(c["ratio_to_rgb_max"].get<double>(), c["ratio_to_rgb"].get<double>());
+    EXPECT_TRUE(c["ratio_to_rgb_ci_low"].is_null());  // two rounds give no 95 % interval
   }
   // The renderer's own count: at least the 64³ RGB32F upsampling table (9 MB).
   EXPECT_GT(j["gpu_memory_mb"]["rgb"].get<double>(), 9.0);

@@ -1,6 +1,7 @@
 #include "harness/scene_bench.h"
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <map>
 #include <memory>
@@ -66,9 +67,12 @@ RatioSpread ratio(const Config& test, const Config& baseline) {
   return perRoundRatios(test.frameMsPerRound(), baseline.frameMsPerRound());
 }
 
-// `key`: the median of the per-round ratios; `key`_min and _max: the extreme rounds.
+// `key`: the median of the per-round ratios; `key`_ci_low and _ci_high: its 95 % confidence
+// interval (null under 6 rounds); `key`_min and _max: the extreme rounds.
 void putRatio(nlohmann::json& j, const std::string& key, const RatioSpread& s) {
   j[key] = s.median;
+  j[key + "_ci_low"] = s.confidence.low;
+  j[key + "_ci_high"] = s.confidence.high;
   j[key + "_min"] = s.min;
   j[key + "_max"] = s.max;
 }
@@ -295,7 +299,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   }
   fmt::print("{} at {}x{} on {}; GPU timer queries, {} rounds of {} frames per configuration (after {} warm-up "
              "each), the configurations interleaved; medians over the rounds, × RGB the median of the "
-             "per-round ratios [lowest, highest round]\n",
+             "per-round ratios (its 95 % confidence interval) [lowest, highest round]\n",
              options.scene.string(), settings.width, settings.height, device, rounds, frames, options.warmup);
   std::vector<std::string> passes;
   for (const auto& [name, ms] : configs[rgb].medianMs()) {
@@ -303,13 +307,17 @@ void runSceneBench(const SceneBenchOptions& options) {
   }
   std::string header = fmt::format("{:>8} {:>10}", "mode", "frame ms");
   for (const std::string& p : passes) header += fmt::format(" {:>10}", p);
-  header += fmt::format(" {:>9} {:>15}", "× RGB", "rounds");
+  header += fmt::format(" {:>9} {:>17} {:>15}", "× RGB", "95 % interval", "rounds");
   fmt::print("{}\n", header);
+  auto confidence = [](const RatioSpread& s) {
+    return std::isnan(s.confidence.low) ? std::string("(under 6 rounds)")
+                                        : fmt::format("({:.3f}, {:.3f})", s.confidence.low, s.confidence.high);
+  };
   auto row = [&](const Config& c) {
     std::string line = fmt::format("{:>8} {:>10.3f}", c.label, c.frameMs());
     for (const std::string& p : passes) line += fmt::format(" {:>10.3f}", c.passMs(p.c_str()));
     RatioSpread s = ratio(c, configs[rgb]);
-    line += fmt::format(" {:>9.3f} {:>15}", s.median, fmt::format("[{:.3f}, {:.3f}]", s.min, s.max));
+    line += fmt::format(" {:>9.3f} {:>17} {:>15}", s.median, confidence(s), fmt::format("[{:.3f}, {:.3f}]", s.min, s.max));
     fmt::print("{}\n", line);
   };
   row(configs[rgb]);
@@ -319,7 +327,9 @@ void runSceneBench(const SceneBenchOptions& options) {
   fmt::print("GPU memory held by the renderer: RGB {:.2f} MB, n = {} {:.2f} MB (+{:.3f} MB)\n",
              megabytes(configs[rgb].gpuMemoryBytes), largest->wavelengths, megabytes(largest->gpuMemoryBytes),
              megabytes(largest->gpuMemoryBytes) - megabytes(configs[rgb].gpuMemoryBytes));
-  auto spread = [](const RatioSpread& s) { return fmt::format("{:.3f}× [{:.3f}, {:.3f}]", s.median, s.min, s.max); };
+  auto spread = [&](const RatioSpread& s) {
+    return fmt::format("{:.3f}× {} [{:.3f}, {:.3f}]", s.median, confidence(s), s.min, s.max);
+  };
   const Config& coefficients = configs[coefficients16];
   const Config& rgbAlbedoConfig = configs[rgbAlbedo16];
   fmt::print("G-buffer at 16 wavelengths, coefficients / RGB albedo: frame {:.3f} / {:.3f} ms = {} "

@@ -41,9 +41,9 @@ TEST_F(GpuTest, NebulaIntegralsMatchCpu) {
   // (≤ 2.4e-6 relative) plus the series' 16 roundings a side; above, exp(−u) within 3 + 2u ULP,
   // ≤ 163 ULP ≈ 1.9e-5 at u = 80, plus the continued fraction's 24 steps: 2.5e-5 relative.
   ParityReport e1("nebulaE1", {0.0, 2.5e-5, 0});
-  // The integrals: GLSL's exp (≤ 3 + 2·|x/λ| ≤ 9 ULP here) and log, amplified by the bounds'
-  // cancellation λ/(λ₁ − λ₀) ≤ 16 and the recurrence's ≤ 7 at x ≤ 1 µm (float against quadrature:
-  // 1.4e-5, nebula_test): 2e-4 relative.
+  // The integrals: GLSL's exp (≤ 3 + 2·|x/λ| ≤ 9 ULP here) and log (within 2⁻²¹ absolute in E₁'s
+  // series, E₂ = e^(−u) − u·E₁ ≥ 0.148 below u = 1), amplified by the bounds' cancellation
+  // λ/(λ₁ − λ₀) ≤ 16 (the exponential integrals' recurrences add no more, nebula_test): 2e-4 relative.
   ParityReport expIntegral("nebulaExpIntegral", {0.0, 2e-4, 0});
   ParityReport polyIntegral("nebulaPolyExpIntegral", {0.0, 2e-4, 0});
   ParityReport moments("nebulaExpMoments.w", {0.0, 2e-4, 0});

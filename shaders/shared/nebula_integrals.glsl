@@ -2,13 +2,15 @@
 // of nebulae", §4 and its appendix). Under the model's attenuation τ(λ) = τ·C_T/λ, light that
 // crossed an optical depth g = τ·C_T (µm) is attenuated by e^(−g/λ); the sensor's response to it
 // through a polynomial P(λ) = Σ cₙλⁿ (filter × star × scattering, λ in µm) is
-//   ∫ P(λ)·e^(−x/λ) dλ = Σ cₙ [Iₙ(λ₁) − Iₙ(λ₀)],   Iₙ(λ) an antiderivative of λⁿ·e^(−x/λ),
-// with (integration by parts; the paper's recurrence, written here with γₙ = x·αₙ so that x = 0,
-// where E₁(0) = ∞ but x·E₁(x/λ) → 0, needs no special case beyond xE₁):
-//   Iₙ = βₙ + γₙ/(n+1),  β₀ = λ·e^(−x/λ),  βₙ = λ·n/(n+1)·βₙ₋₁  (= λⁿ⁺¹e^(−x/λ)/(n+1)),
-//   γ₀ = −x·E₁(x/λ),     γₙ = −x·βₙ₋₁ − (x/n)·γₙ₋₁.
-// E₁ is evaluated once per bound. The recurrence runs forward: each step multiplies an error by
-// x/((n+1)λ), so in float its relative error grows with x/λ and n (tests/README give the figures).
+//   ∫ P(λ)·e^(−x/λ) dλ = Σ cₙ [Iₙ(λ₁) − Iₙ(λ₀)],   Iₙ(λ) an antiderivative of λⁿ·e^(−x/λ).
+// The paper's recurrence (integration by parts), Iₙ = βₙ + x/(n+1)·αₙ, β₀ = λe^(−x/λ),
+// α₀ = −E₁(x/λ), is the exponential integrals' recurrence E_{m+1}(z) = (e^(−z) − z·E_m(z))/m run
+// upwards from E₁ in disguise:
+//   Iₙ(λ) = λⁿ⁺¹·E_{n+2}(x/λ)    (d/dλ: E_m' = −E_{m−1} and the recurrence give λⁿe^(−x/λ)).
+// Run upwards it multiplies an error by z/m a step, which at z = x/λ ≫ m loses all of float's
+// digits (0.11 relative at n = 7, x = 10 µm); run downwards (E_m = (e^(−z) − m·E_{m+1})/z) by m/z.
+// So each z starts where neither grows: E_M by its continued fraction at M = ⌊z⌋ + 1 (up to 9),
+// or E₂ from E₁'s series below z = 1, then upwards above M and downwards below it.
 //
 // The file is compiled three times: as GLSL, and as C++ in float (what the GPU runs) and in double
 // (techniques/nebula/nebula_integrals.h), through NEBULA_REAL / NEBULA_VEC4.
@@ -17,15 +19,29 @@
 #define NEBULA_VEC4 vec4
 #endif
 
-// E₁(u) = ∫₁^∞ e^(−ut)/t dt for u > 0 (Abramowitz & Stegun 1964, 5.1.11 and 5.1.22). Below u = 1
-// its power series, −γ − ln u + Σ (−1)^(k+1) uᵏ/(k·k!), 16 terms (the 17th is < 1e-15); above,
-// the continued fraction e^(−u)/(u+1− 1²/(u+3− 2²/(u+5− …))) evaluated bottom-up from depth 24,
-// which at u = 1 (its slowest point) is within 5e-8 relative; float stays within 5e-7.
+// E_m(u) = ∫₁^∞ e^(−ut)/tᵐ dt for u ≥ 1 by its continued fraction (Abramowitz & Stegun 1964,
+// 5.1.22, in the even form e^(−u)/(u+m− 1·m/(u+m+2− 2(m+1)/(u+m+4− …)))), evaluated bottom-up
+// from depth 24: within 6e-8 relative for m = 1…9 at u ≥ 1 (its slowest point is u = 1).
 //
-// Its loops, and the series of nebulaInversePowerExpIntegrals, run in chunks of 8, loops of
-// constant count that shader compilers unroll: Mesa's llvmpipe stops a shader's loops after 65 535
-// iterations an invocation, nested loops counted together (nebula_march.comp), which the analytic
-// method's march (these per sample, star, channel and passband piece) would pass.
+// Its loop, and the series of nebulaE1 and nebulaInversePowerExpIntegrals, run in chunks of 8,
+// loops of constant count that shader compilers unroll: Mesa's llvmpipe stops a shader's loops
+// after 65 535 iterations an invocation, nested loops counted together (nebula_march.comp), which
+// the analytic method's march (these per sample, star, channel and passband piece) would pass.
+PRISM_INLINE NEBULA_REAL nebulaEnContinuedFraction(int m, NEBULA_REAL u) {
+  NEBULA_REAL order = NEBULA_REAL(m);
+  NEBULA_REAL f = 0.0f;
+  for (int k0 = 24; k0 >= 1; k0 -= 8) {
+    for (int j = 0; j < 8; ++j) {
+      NEBULA_REAL kk = NEBULA_REAL(k0 - j);
+      f = kk * (order + kk - 1.0f) / (u + order + 2.0f * kk - f);
+    }
+  }
+  return exp(-u) / (u + order - f);
+}
+
+// E₁(u) = ∫₁^∞ e^(−ut)/t dt for u > 0. Below u = 1 its power series (A&S 5.1.11),
+// −γ − ln u + Σ (−1)^(k+1) uᵏ/(k·k!), 16 terms (the 17th is < 1e-15); above, the continued
+// fraction. Float stays within 5e-7 relative.
 PRISM_INLINE NEBULA_REAL nebulaE1(NEBULA_REAL u) {
   if (u <= 1.0f) {
     NEBULA_REAL sum = 0.0f;
@@ -39,14 +55,34 @@ PRISM_INLINE NEBULA_REAL nebulaE1(NEBULA_REAL u) {
     }
     return NEBULA_REAL(-0.57721566490153286) - log(u) + sum;
   }
-  NEBULA_REAL f = 0.0f;
-  for (int k0 = 24; k0 >= 1; k0 -= 8) {
-    for (int j = 0; j < 8; ++j) {
-      NEBULA_REAL kk = NEBULA_REAL(k0 - j);
-      f = kk * kk / (u + 2.0f * kk + 1.0f - f);
-    }
+  return nebulaEnContinuedFraction(1, u);
+}
+
+// E₂(u) for u ≥ 0: e^(−u) − u·E₁(u) below u = 1 (1 at u = 0, where u·E₁(u) → 0; the two terms
+// cancel by at most 2.5×), the continued fraction above.
+PRISM_INLINE NEBULA_REAL nebulaE2(NEBULA_REAL u) {
+  if (u > 1.0f) return nebulaEnContinuedFraction(2, u);
+  return u > 0.0f ? exp(-u) - u * nebulaE1(u) : NEBULA_REAL(1.0f);
+}
+
+// E₂(u)…E₉(u) for u ≥ 0 (E₂…E₅ in lo, E₆…E₉ in hi), each within a few roundings of its value:
+// E_M directly (E₂ below u = 1, else the continued fraction at M = min(⌊u⌋ + 1, 9)), the orders above
+// M upwards and those below it downwards, so that no step multiplies an error by more than 1.
+PRISM_INLINE void nebulaExponentialIntegrals(NEBULA_REAL u, OUT(NEBULA_VEC4) lo, OUT(NEBULA_VEC4) hi) {
+  NEBULA_REAL e = exp(-u);
+  int start = u > 1.0f ? int(min(u, NEBULA_REAL(8.0f))) + 1 : 2;  // ⌊u⌋ + 1 ≥ u
+  NEBULA_REAL values[8];  // E₂…E₉
+  values[start - 2] = start == 2 ? nebulaE2(u) : nebulaEnContinuedFraction(start, u);
+  for (int m = 2; m < 9; ++m) {
+    if (m >= start) values[m - 1] = (e - u * values[m - 2]) / NEBULA_REAL(m);
   }
-  return exp(-u) / (u + 1.0f - f);
+  for (int m = 8; m >= 2; --m) {
+    if (m < start) values[m - 2] = (e - NEBULA_REAL(m) * values[m - 1]) / u;
+  }
+  for (int i = 0; i < 4; ++i) {
+    lo[i] = values[i];
+    hi[i] = values[i + 4];
+  }
 }
 
 // e^(−x/λ), x ≥ 0, λ ≥ 0: 1 at x = 0 even where λ = 0 (the paper's domain starts there), where
@@ -55,28 +91,24 @@ PRISM_INLINE NEBULA_REAL nebulaAttenuation(NEBULA_REAL x, NEBULA_REAL lambdaUm) 
   return x > 0.0f ? exp(-x / lambdaUm) : NEBULA_REAL(1.0f);
 }
 
-// x·E₁(x/λ), x ≥ 0, λ ≥ 0: 0 at x = 0 (its limit) and at λ = 0.
-PRISM_INLINE NEBULA_REAL nebulaXE1(NEBULA_REAL x, NEBULA_REAL lambdaUm) {
-  return x > 0.0f && lambdaUm > 0.0f ? x * nebulaE1(x / lambdaUm) : NEBULA_REAL(0.0f);
-}
-
-// I₀…I₇ at λ (µm) for optical depth x (µm): antiderivatives of λⁿ·e^(−x/λ), n = 0…3 in lo and
-// 4…7 in hi.
+// I₀…I₇ at λ (µm) for optical depth x (µm): Iₙ(λ) = λⁿ⁺¹·E_{n+2}(x/λ), antiderivatives of
+// λⁿ·e^(−x/λ), n = 0…3 in lo and 4…7 in hi; 0 at λ = 0 (their limit for x > 0; at x = 0 too).
 PRISM_INLINE void nebulaPowerExpAntiderivatives(NEBULA_REAL x, NEBULA_REAL lambdaUm, OUT(NEBULA_VEC4) lo,
                                                 OUT(NEBULA_VEC4) hi) {
-  NEBULA_REAL beta = lambdaUm * nebulaAttenuation(x, lambdaUm);
-  NEBULA_REAL gamma = -nebulaXE1(x, lambdaUm);
-  lo[0] = beta + gamma;
-  for (int n = 1; n < 8; ++n) {
-    NEBULA_REAL fn = NEBULA_REAL(n);
-    gamma = -x * beta - (x / fn) * gamma;
-    beta = lambdaUm * fn / (fn + 1.0f) * beta;
-    NEBULA_REAL value = beta + gamma / (fn + 1.0f);
+  if (lambdaUm <= 0.0f) {
+    lo = NEBULA_VEC4(0.0f);
+    hi = NEBULA_VEC4(0.0f);
+    return;
+  }
+  nebulaExponentialIntegrals(x / lambdaUm, lo, hi);
+  NEBULA_REAL power = lambdaUm;  // λⁿ⁺¹
+  for (int n = 0; n < 8; ++n) {
     if (n < 4) {
-      lo[n] = value;
+      lo[n] *= power;
     } else {
-      hi[n - 4] = value;
+      hi[n - 4] *= power;
     }
+    power *= lambdaUm;
   }
 }
 
@@ -166,11 +198,12 @@ PRISM_INLINE NEBULA_REAL nebulaWienPolyIntegral(IN(NEBULA_VEC4) c, NEBULA_REAL x
   return dot(c, nebulaInversePowerExpIntegrals(x, lambda0Um, lambda1Um));
 }
 
-// ∫_λ₀^λ₁ e^(−x/λ) dλ = I₀(λ₁) − I₀(λ₀): the inner product of two exponentials e^(−a/λ) and
-// e^(−b/λ) with x = a + b, which is all the projection on an exp(−a/λ) basis needs.
+// ∫_λ₀^λ₁ e^(−x/λ) dλ = I₀(λ₁) − I₀(λ₀), I₀(λ) = λ·E₂(x/λ): the inner product of two
+// exponentials e^(−a/λ) and e^(−b/λ) with x = a + b, which is all the projection on an exp(−a/λ)
+// basis needs.
 PRISM_INLINE NEBULA_REAL nebulaExpIntegral(NEBULA_REAL x, NEBULA_REAL lambda0Um, NEBULA_REAL lambda1Um) {
-  NEBULA_REAL i1 = lambda1Um * nebulaAttenuation(x, lambda1Um) - nebulaXE1(x, lambda1Um);
-  NEBULA_REAL i0 = lambda0Um * nebulaAttenuation(x, lambda0Um) - nebulaXE1(x, lambda0Um);
+  NEBULA_REAL i1 = lambda1Um > 0.0f ? lambda1Um * nebulaE2(x / lambda1Um) : NEBULA_REAL(0.0f);
+  NEBULA_REAL i0 = lambda0Um > 0.0f ? lambda0Um * nebulaE2(x / lambda0Um) : NEBULA_REAL(0.0f);
   return i1 - i0;
 }
 

@@ -1,7 +1,6 @@
 #include "harness/nebula_display.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -22,23 +21,41 @@ double whiteLevel(std::vector<double> values) {
 
 }  // namespace
 
-imaging::PngImage nebulaDisplayPng(const nebula::NebulaImage& image, bool hubble) {
-  const RgbColourSpace& srgb = colourSpace("srgb");
-  std::vector<Eigen::Vector3d> rgb;
-  std::array<std::vector<double>, 3> channels;
-  for (const auto& p : image.pixels) {
-    Eigen::Vector3d v(p.x, p.y, p.z);
-    if (!hubble) v = srgb.xyzToRgb * v;
-    rgb.push_back(v);
-    for (int c = 0; c < 3; ++c) channels[static_cast<std::size_t>(c)].push_back(hubble ? v[c] : p.y);
+NebulaWhite nebulaWhiteLevels(const nebula::NebulaImage& image, bool hubble) {
+  NebulaWhite white{};
+  for (int c = 0; c < 3; ++c) {
+    if (!hubble && c != 1) continue;
+    std::vector<double> values;
+    values.reserve(image.pixels.size());
+    for (const auto& p : image.pixels) values.push_back(p[c]);
+    white[static_cast<std::size_t>(c)] = whiteLevel(std::move(values));
   }
-  Eigen::Vector3d white(whiteLevel(channels[0]), whiteLevel(channels[1]), whiteLevel(channels[2]));
+  if (!hubble) white[0] = white[2] = white[1];
+  return white;
+}
+
+imaging::FloatImage nebulaDisplayLinear(const nebula::NebulaImage& image, const NebulaWhite& white) {
+  imaging::FloatImage linear(image.width, image.height, 3);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    for (std::size_t c = 0; c < 3; ++c)
+      linear.pixels[3 * i + c] = static_cast<float>(image.pixels[i][static_cast<int>(c)] / white[c]);
+  return linear;
+}
+
+imaging::PngImage nebulaDisplayPng(const nebula::NebulaImage& image, bool hubble) {
+  return nebulaDisplayPng(image, hubble, nebulaWhiteLevels(image, hubble));
+}
+
+imaging::PngImage nebulaDisplayPng(const nebula::NebulaImage& image, bool hubble, const NebulaWhite& white) {
+  const RgbColourSpace& srgb = colourSpace("srgb");
+  const imaging::FloatImage linear = nebulaDisplayLinear(image, white);
   imaging::PngImage png(image.width, image.height, {0, 0, 0});
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
-      Eigen::Vector3d v =
-          rgb[static_cast<std::size_t>(y * image.width + x)].cwiseQuotient(white).cwiseMax(0.0).cwiseMin(1.0);
-      Eigen::Vector3d e = srgb.encode(v);
+      const std::size_t i = 3 * static_cast<std::size_t>(y * image.width + x);
+      Eigen::Vector3d v(linear.pixels[i], linear.pixels[i + 1], linear.pixels[i + 2]);
+      if (!hubble) v = srgb.xyzToRgb * v;
+      Eigen::Vector3d e = srgb.encode(v.cwiseMax(0.0).cwiseMin(1.0));
       auto q = [](double u) { return static_cast<std::uint8_t>(std::lround(std::clamp(u, 0.0, 1.0) * 255.0)); };
       png.setPixel(x, y, {q(e[0]), q(e[1]), q(e[2])});
     }

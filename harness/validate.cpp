@@ -16,6 +16,7 @@
 #include "harness/progress_bar.h"
 #include "harness/technique_precompute.h"
 #include "harness/upsampling_table.h"
+#include "harness/validate_nebula.h"
 #include "harness/validate_parts.h"
 #include "imaging/exr_file.h"
 #include "imaging/heatmap.h"
@@ -131,6 +132,20 @@ constexpr Bound kBounds[] = {
     {"spheres_d65", "jakob-hanika-16", 0.5},
     {"spheres_blue_led", "jakob-hanika-16", 1.0},
 };
+// A nebula method's bounds on every nebula: projection and pre-integration below the
+// just-noticeable difference at every pixel (ΔE00 1; the paper: indistinguishable from the
+// reference); light–density, whose 2D basis misses the light near stars inside the cloud (README),
+// on the mean (the spheres' 0.5).
+struct NebulaBound {
+  nebula::Method method;
+  double maxMeanDeltaE;
+  double maxMaxDeltaE;
+};
+constexpr NebulaBound kNebulaBounds[] = {
+    {nebula::Method::Projection, 0.5, 1.0},
+    {nebula::Method::PreIntegration, 0.5, 1.0},
+    {nebula::Method::LightDensity, 0.5, std::numeric_limits<double>::infinity()},
+};
 // A mode's mean ΔE00 against the reference at most `maxExcess` above another mode's on the same
 // scene and reference: what the first adds to the second's error. Spectral PRT's basis (m = 8)
 // against its 5 nm reference through the same transfer: the path tracer's noise and the band
@@ -233,11 +248,7 @@ class Experiment {
         if (globalSpp > 0) addStats(sumVsGlobal, imaging::compareImages(input(global), input(image)).stats);
         if (k > 0) continue;  // the images shown are the first frame's
         displayImage(image, settings.display, observer(settings.observer), ev100).write(mOutput / fmt::format("{}_{}.png", name, m.name));
-        imaging::heatMap(d.deltaEMap, {.maxDeltaE = kHeatScale, .legend = true})
-            .write(mOutput / fmt::format("{}_{}_heatmap.png", name, m.name));
-        imaging::HistogramOptions histogram;
-        histogram.maxDeltaE = kHeatScale;
-        imaging::deltaEHistogram(d.deltaEMap, histogram).write(mOutput / fmt::format("{}_{}_histogram.png", name, m.name));
+        writePictures(d.deltaEMap, fmt::format("{}_{}", name, m.name));
       }
       Result r{name, m.name, averaged(sum, m.singles)};
       if (globalSpp > 0) r.meanVsGlobal = averaged(sumVsGlobal, m.singles).meanDeltaE;
@@ -246,8 +257,23 @@ class Experiment {
     }
   }
 
+  // A nebula's methods against its reference (validate_nebula.h).
+  void runNebula(const NebulaExperiment& nebula, const std::filesystem::path& sceneDir, std::vector<Result>& results) {
+    for (NebulaMethodDifference& m : runNebulaExperiment(nebula, sceneDir, mSizes.height, mOutput, [this] { step(); })) {
+      writePictures(m.difference.deltaEMap, fmt::format("{}_{}", nebula.name, m.mode));
+      results.push_back({nebula.name, m.mode, m.difference.stats});
+    }
+  }
+
  private:
   void step() { mBar.update(++mDone, mTotal); }
+  // STEM_heatmap.png and STEM_histogram.png of a ΔE00 map.
+  void writePictures(const imaging::FloatImage& deltaE, const std::string& stem) {
+    imaging::heatMap(deltaE, {.maxDeltaE = kHeatScale, .legend = true}).write(mOutput / (stem + "_heatmap.png"));
+    imaging::HistogramOptions histogram;
+    histogram.maxDeltaE = kHeatScale;
+    imaging::deltaEHistogram(deltaE, histogram).write(mOutput / (stem + "_histogram.png"));
+  }
   void writeImages(const imaging::FloatImage& image, const std::string& stem, float ev100, double white) {
     render::DisplaySettings display;
     display.ev100 = ev100;
@@ -290,7 +316,10 @@ std::string indexHtml(const std::vector<Result>& results, const std::vector<std:
       "averaged, their images are the first's. Spectral PRT's scenes are lit by their environments, which the path "
       "tracer traces before any projection (direct lighting, {} paths per pixel): the difference of the 5 nm "
       "mode is the SH-5 band limit and the path tracer's noise, what the spectral mode (m = 8) adds to it is its "
-      "basis's, RGB-PRT's its three channels'.",
+      "basis's, RGB-PRT's its three channels'. The nebulae are rendered by each method of the GPU marcher against "
+      "the CPU's reference (the paper's double integration over wavelength), ΔE00 as the screen shows them before "
+      "its clip: natural colour as XYZ relative to Y's white level (its 99.5th percentile), the Hubble palette as "
+      "linear sRGB after each channel's stretch to its own, both by the reference's levels.",
       sizes.width, sizes.height, sizes.spheresSpp, sizes.reefSpp, sizes.reefGlobalSpp, kHeatScale, kSingleFrames,
       sizes.spheresSpp));
   if (failures.empty()) {
@@ -307,23 +336,35 @@ std::string indexHtml(const std::vector<Result>& results, const std::vector<std:
                     std::isnan(r.meanVsGlobal) ? "" : fmt::format("{:.3f}", r.meanVsGlobal)});
   }
   page.table({"scene", "mode", "mean ΔE00", "median", "p95", "max", "MAE", "mean ΔE00 vs multiple scattering"}, rows);
-  auto section = [&](const std::string& name, const std::string& title, bool global, std::span<const Mode> modes) {
+  auto section = [&](const std::string& name, const std::string& title, bool global, const std::vector<std::string>& modes) {
     page.beginSection("", title);
     page.figure({{name + "_reference.png", "reference"}}, global ? "reference (single scattering)" : "reference");
     if (global) page.figure({{name + "_reference_global.png", "multiple scattering"}}, "reference (multiple scattering)");
     page.lineBreak();
-    for (const Mode& m : modes) {
-      const std::string stem = fmt::format("{}_{}", name, m.name);
-      page.figure({{stem + ".png", m.name}, {stem + "_heatmap.png", "ΔE00 heat map"},
-                   {stem + "_histogram.png", "ΔE00 histogram", 320}}, m.name);
+    for (const std::string& m : modes) {
+      const std::string stem = fmt::format("{}_{}", name, m);
+      page.figure({{stem + ".png", m}, {stem + "_heatmap.png", "ΔE00 heat map"},
+                   {stem + "_histogram.png", "ΔE00 histogram", 320}}, m);
     }
     page.endSection();
   };
-  for (const SphereScene& e : kSphereScenes) section(e.name, fmt::format("{} — under {}", e.name, e.light), false, kModes);
+  auto names = [](std::span<const Mode> modes) {
+    std::vector<std::string> v;
+    for (const Mode& m : modes) v.push_back(m.name);
+    return v;
+  };
+  for (const SphereScene& e : kSphereScenes) section(e.name, fmt::format("{} — under {}", e.name, e.light), false, names(kModes));
   for (float depth : kReefDepthsM) {
-    section(reefName(depth), fmt::format("the reef, Jerlov I, camera {:g} m deep", depth), true, kModes);
+    section(reefName(depth), fmt::format("the reef, Jerlov I, camera {:g} m deep", depth), true, names(kModes));
   }
-  for (const PrtScene& p : kPrtScenes) section(p.name, fmt::format("{} — spectral PRT under {}", p.name, p.environment), false, kPrtModes);
+  for (const PrtScene& p : kPrtScenes)
+    section(p.name, fmt::format("{} — spectral PRT under {}", p.name, p.environment), false, names(kPrtModes));
+  std::vector<std::string> nebulaModes;
+  for (nebula::Method m : kNebulaMethods) nebulaModes.push_back(nebula::methodName(m));
+  for (const NebulaExperiment& n : kNebulaExperiments)
+    section(n.name, fmt::format("{} — a spectral nebula, {}", n.name,
+                                std::string(n.filters) == "hubble" ? "the Hubble palette" : "natural colour (CIE 1931)"),
+            false, nebulaModes);
   return page.html();
 }
 
@@ -373,20 +414,24 @@ nlohmann::json toJson(const std::vector<Result>& results, const std::vector<std:
   return json;
 }
 
-// The experiments, in the order of the report: the sphere scenes, the reef's depths, PRT's scenes.
+// The experiments, in the order of the report: the sphere scenes, the reef's depths, PRT's scenes,
+// the nebulae.
 constexpr std::size_t kReefBegin = std::size(kSphereScenes);
 constexpr std::size_t kPrtBegin = kReefBegin + std::size(kReefDepthsM);
-constexpr std::size_t kExperiments = kPrtBegin + std::size(kPrtScenes);
+constexpr std::size_t kNebulaBegin = kPrtBegin + std::size(kPrtScenes);
+constexpr std::size_t kExperiments = kNebulaBegin + std::size(kNebulaExperiments);
 std::string experimentName(std::size_t e) {
   if (e < kReefBegin) return kSphereScenes[e].name;
   if (e < kPrtBegin) return reefName(kReefDepthsM[e - kReefBegin]);
-  return kPrtScenes[e - kPrtBegin].name;
+  if (e < kNebulaBegin) return kPrtScenes[e - kPrtBegin].name;
+  return kNebulaExperiments[e - kNebulaBegin].name;
 }
 // Progress steps: the reference (the reef's two), then one per mode.
 std::size_t experimentSteps(std::size_t e) {
   if (e < kReefBegin) return 1 + std::size(kModes);
   if (e < kPrtBegin) return 2 + std::size(kModes);
-  return 1 + std::size(kPrtModes);
+  if (e < kNebulaBegin) return 1 + std::size(kPrtModes);
+  return 1 + std::size(kNebulaMethods);
 }
 
 // results.json and index.html of all the experiments, the table (or the JSON) printed and the
@@ -399,6 +444,15 @@ int report(const ValidateOptions& o, const Sizes& sizes, const std::vector<Resul
         failures.push_back(fmt::format("{} {}: mean ΔE00 {:.3f} > {}", b.scene, b.mode, r.stats.meanDeltaE,
                                        b.maxMeanDeltaE));
       }
+    }
+  }
+  for (const NebulaBound& b : kNebulaBounds) {
+    for (const Result& r : results) {
+      if (r.mode != nebula::methodName(b.method)) continue;
+      if (!(r.stats.meanDeltaE <= b.maxMeanDeltaE))
+        failures.push_back(fmt::format("{} {}: mean ΔE00 {:.3f} > {}", r.scene, r.mode, r.stats.meanDeltaE, b.maxMeanDeltaE));
+      if (!(r.stats.maxDeltaE <= b.maxMaxDeltaE))
+        failures.push_back(fmt::format("{} {}: max ΔE00 {:.3f} > {}", r.scene, r.mode, r.stats.maxDeltaE, b.maxMaxDeltaE));
     }
   }
   for (const RelativeBound& b : kRelativeBounds) {
@@ -483,12 +537,14 @@ int runValidate(const ValidateOptions& o) {
       const float depth = kReefDepthsM[k - kReefBegin];
       Scene reef = load("reef", {"water.type=I", fmt::format("water.depth={:g}", depth)});
       experiment.run(reef, reefName(depth), true, sizes.reefSpp, sizes.reefGlobalSpp, kModes, {}, results);
-    } else {
+    } else if (k < kNebulaBegin) {
       const char* name = kPrtScenes[k - kPrtBegin].name;
       Scene prt = load(name, {});
       precomputeTechniques(prt);  // the transfer, from its cache or baked (shared by the modes)
       experiment.run(prt, name, false, sizes.spheresSpp, 0, kPrtModes,
                      [&](const char* set) { return load(name, {set}); }, results);
+    } else {
+      experiment.runNebula(kNebulaExperiments[k - kNebulaBegin], sceneDir, results);
     }
   }
   if (partPath.empty()) return report(o, sizes, results);

@@ -16,8 +16,13 @@
 // (spectral m = 8, RGB-PRT, the 5 nm reference) against the path tracer under the same
 // environment before projection (the SH-5 band limit and the noise common to all three):
 //   spectral PRT: mean ΔE00 at most 0.05 above the 5 nm reference's (what its basis adds)
+// And the example nebulae, in the Hubble palette and in natural colour, by the GPU marcher's
+// projection, light–density and pre-integration against the CPU's reference (validate_nebula.h):
+//   projection and pre-integration: ΔE00 ≤ 1 at every pixel (mean ≤ 0.5)
+//   light–density: mean ΔE00 ≤ 0.5
 // Split across tasks (a Slurm array, validate_parts.h): `--task I/N` runs task I's share of the
-// eleven experiments (four sphere scenes, five reef depths, two PRT scenes) and writes its part
+// sixteen experiments (four sphere scenes, five reef depths, three PRT scenes, four nebulae) and
+// writes its part
 // (validateExperimentCount() of them at most); `--collect`
 // writes DIR/results.json and DIR/index.html from the parts, the same files a whole run writes.
 #pragma once

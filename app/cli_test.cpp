@@ -404,6 +404,13 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   EXPECT_NE(slurp(dir / "sweep.svg").find("the issue's bound, 2 %"), std::string::npos);
   expectOneLineError("nebula sweep " + tiny + " --max-basis 9", "--max-basis: 9 is not within 1..8");
   expectOneLineError("nebula sweep " + tiny + " --plot " + dir.string(), "is a folder");
+
+  // The GPU's timings at a size of one's own, without the CPU's columns.
+  Result bench = run("nebula bench --repeats 1 --size 8 --no-cpu");
+  ASSERT_EQ(bench.exitCode, 0) << bench.err;
+  EXPECT_NE(bench.out.find("nebula bench: 8x8"), std::string::npos) << bench.out;
+  EXPECT_NE(bench.out.find("—"), std::string::npos) << bench.out;
+  expectOneLineError("nebula bench --size 0", "--size must be 1 to 8192 pixels");
 }
 
 TEST(Cli, PrtCommandsCheckTheirInput) {

@@ -18,7 +18,7 @@ struct NebulaCommandOptions {
   NebulaRenderOptions render;
   std::string domain;
   std::filesystem::path densityScene, densityOut;
-  int benchRepeats = 5;
+  NebulaBenchOptions bench;
 };
 
 }  // namespace
@@ -60,7 +60,10 @@ void addNebulaCommands(CLI::App& app) {
   nebRenderCmd->add_flag("--gpu", o->render.gpu, "march on the GPU (any method; headless EGL)");
   nebRenderCmd->add_option("--threads", o->render.threads, "threads (0: all)");
   auto* nebBenchCmd = nebulaCmd->add_subcommand("bench", "time the GPU marcher against the CPU's, 1, 6 and 32 stars");
-  nebBenchCmd->add_option("--repeats", o->benchRepeats, "timed runs per cell (the median is printed)")->capture_default_str();
+  nebBenchCmd->add_option("--repeats", o->bench.repeats, "timed runs per cell (the median is printed)")->capture_default_str();
+  nebBenchCmd->add_option("--size", o->bench.size, "pixels a side (a GPU's march needs more than the default to show)")
+      ->capture_default_str();
+  nebBenchCmd->add_flag("--no-cpu{false}", o->bench.cpu, "leave out the CPU's columns");
   auto* nebDensityCmd = nebulaCmd->add_subcommand("density", "write a scene's density grid as a prism-density file");
   nebDensityCmd->add_option("scene", o->densityScene, "nebula scene file")->required();
   nebDensityCmd->add_option("-o,--output", o->densityOut, "OUT.density")->required();
@@ -75,7 +78,7 @@ void addNebulaCommands(CLI::App& app) {
   });
   nebSweepCmd->callback([o] { runNebulaSweep(o->sweep); });
   nebRenderCmd->callback([o] { runNebulaRender(o->render); });
-  nebBenchCmd->callback([o] { runNebulaBench(o->benchRepeats); });
+  nebBenchCmd->callback([o] { runNebulaBench(o->bench); });
   nebDensityCmd->callback([o] { runNebulaDensity(o->densityScene, o->densityOut); });
 }
 

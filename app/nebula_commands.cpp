@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -222,11 +224,13 @@ double medianMs(int repeats, F&& f) {
 
 }  // namespace
 
-void runNebulaBench(int repeats) {
+void runNebulaBench(const NebulaBenchOptions& o) {
+  const int repeats = o.repeats;
   if (repeats < 1) throw Error("nebula bench: --repeats must be ≥ 1");
+  if (o.size < 1 || o.size > 8192) throw Error("nebula bench: --size must be 1 to 8192 pixels");
   gpu::HeadlessContext context;
-  fmt::print("nebula bench: 64x64, 100 steps, 32^3 cloud, Hubble palette, no lines; median of {} runs (ms); "
-             "CPU one thread; GPU: {}\n", repeats, reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  fmt::print("nebula bench: {0}x{0}, 100 steps, 32^3 cloud, Hubble palette, no lines; median of {1} runs (ms); "
+             "CPU one thread; GPU: {2}\n", o.size, repeats, reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   fmt::print("{:>5} {:>14} {:>14} {:>14} {:>14} {:>16} {:>15} {:>15} {:>16}\n", "stars", "CPU ref (21λ)", "CPU projection",
              "GPU ref (21λ)", "GPU projection", "GPU light-dens.", "GPU ref/proj", "GPU ref/l-d", "GPU filter edit");
   for (int stars : {1, 6, 32}) {
@@ -234,15 +238,18 @@ void runNebulaBench(int repeats) {
     s.threads = 1;
     s.steps = 100;
     s.emissionLines = false;
-    nebula::NebulaRenderer renderer(nebula::benchNebulaModel(stars), s);
+    nebula::NebulaModel model = nebula::benchNebulaModel(stars);
+    model.camera.width = model.camera.height = o.size;
+    nebula::NebulaRenderer renderer(std::move(model), s);
     std::unique_ptr<nebula::NebulaRenderer> edited;  // the filter edits' renderers: they outlive the marcher
     nebula::NebulaGpuMarcher marcher(renderer);
     s.method = nebula::Method::Reference;
     s.uniformSamples = 7;  // 7 λ per channel, 21 a step: the paper's baseline (bench/nebula_bench.cpp)
-    double reference = medianMs(repeats, [&] { renderer.render(s); });
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    double reference = o.cpu ? medianMs(repeats, [&] { renderer.render(s); }) : none;
     double gpuReference = medianMs(repeats, [&] { marcher.render(s); });
     s.method = nebula::Method::Projection;
-    double cpuProjection = medianMs(repeats, [&] { renderer.render(s); });
+    double cpuProjection = o.cpu ? medianMs(repeats, [&] { renderer.render(s); }) : none;
     double gpuProjection = medianMs(repeats, [&] { marcher.render(s); });
     s.method = nebula::Method::LightDensity;
     double gpuLight = medianMs(repeats, [&] { marcher.render(s); });
@@ -259,9 +266,10 @@ void runNebulaBench(int repeats) {
       edited = std::move(next);  // after the marcher let go of the last one
       marcher.finish();
     });
-    fmt::print("{:>5} {:>14.1f} {:>14.1f} {:>14.1f} {:>14.1f} {:>16.1f} {:>14.1f}x {:>14.1f}x {:>16.1f}\n", stars,
-               reference, cpuProjection, gpuReference, gpuProjection, gpuLight, gpuReference / gpuProjection,
-               gpuReference / gpuLight, filterEdit);
+    auto cpuCell = [](double ms) { return std::isnan(ms) ? std::string("—") : fmt::format("{:.1f}", ms); };
+    fmt::print("{:>5} {:>14} {:>14} {:>14.1f} {:>14.1f} {:>16.1f} {:>14.1f}x {:>14.1f}x {:>16.1f}\n", stars,
+               cpuCell(reference), cpuCell(cpuProjection), gpuReference, gpuProjection, gpuLight,
+               gpuReference / gpuProjection, gpuReference / gpuLight, filterEdit);
   }
 }
 

@@ -57,9 +57,16 @@ void runNebulaRender(const NebulaRenderOptions& options);
 
 void runNebulaDensity(const std::filesystem::path& scene, const std::filesystem::path& output);
 
-// On benchNebulaModel (32³, 64×64, 100 steps, Hubble, no lines), for 1, 6 and 32 stars: the CPU's
-// double integration (21 λ a step, one thread) and projection (one thread), and the GPU's
-// projection and light–density marches (march + finish + read-back), the median of `repeats`.
-void runNebulaBench(int repeats);
+// On benchNebulaModel (32³, 100 steps, Hubble, no lines) at size × size pixels (64 by default),
+// for 1, 6 and 32 stars: the CPU's double integration (21 λ a step, one thread) and projection
+// (one thread), unless `cpu` is false (a GPU's run at a large size, where the CPU's would take
+// minutes), and the GPU's reference, projection and light–density marches (march + finish +
+// read-back) and a filter edit, the median of `repeats`.
+struct NebulaBenchOptions {
+  int repeats = 5;
+  int size = 64;
+  bool cpu = true;
+};
+void runNebulaBench(const NebulaBenchOptions& options);
 
 }  // namespace prism::app

@@ -230,7 +230,8 @@ void runNebulaBench(const NebulaBenchOptions& o) {
   if (o.size < 1 || o.size > 8192) throw Error("nebula bench: --size must be 1 to 8192 pixels");
   gpu::HeadlessContext context;
   fmt::print("nebula bench: {0}x{0}, 100 steps, 32^3 cloud, Hubble palette, no lines; median of {1} runs (ms); "
-             "CPU one thread; GPU: {2}\n", o.size, repeats, reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+             "{2}GPU: {3}\n", o.size, repeats, o.cpu ? "CPU one thread; " : "",
+             reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   fmt::print("{:>5} {:>14} {:>14} {:>14} {:>14} {:>16} {:>15} {:>15} {:>16}\n", "stars", "CPU ref (21λ)", "CPU projection",
              "GPU ref (21λ)", "GPU projection", "GPU light-dens.", "GPU ref/proj", "GPU ref/l-d", "GPU filter edit");
   for (int stars : {1, 6, 32}) {

@@ -62,6 +62,35 @@ TEST_F(GpuTest, NebulaIntegralsMatchCpu) {
   moments.finish();
 }
 
+// E₂…E₉ over u ∈ {0} ∪ [1e-6, 80] and at the start orders' edges, so that every start order (E₂
+// below u = 2, the continued fraction at ⌊u⌋ + 1 up to 9) and both directions of the recurrence
+// run in GLSL.
+TEST_F(GpuTest, NebulaExponentialIntegralsMatchCpu) {
+  testing::InputGenerator gen(0x0eb01a02u);
+  std::vector<float> us = {0.0f, 1e-6f, 1.0f, std::nextafter(1.0f, 2.0f), 2.0f, 2.5f, 7.99f, 8.0f, 8.01f, 9.0f, 20.0f, 80.0f};
+  while (us.size() < 2048) us.push_back(std::pow(10.0f, gen.uniform(-6.0f, 1.9f)));
+  std::vector<vec4> a, b;
+  for (float u : us)
+    for (float half : {0.0f, 1.0f}) a.push_back(vec4(u, half, 0.0f, 0.0f)), b.push_back(vec4(0.0f));
+  Program kernel = testing::parityKernel("nebula_exponential_integrals.comp");
+  std::vector<vec4> gpu = testing::runParityKernel<vec4>(kernel, std::span<const vec4>(a), std::span<const vec4>(b));
+  // GLSL's exp within 3 + 2·u ULP (≤ 163 ULP ≈ 1.9e-5 at u = 80), its log within 2⁻²¹ absolute in
+  // E₁'s series below u = 1 (E₂ ≥ 0.148 there: ≤ 3.2e-6 relative), carried by recurrence steps
+  // that multiply an error by at most 1, plus their own roundings: 3e-5 relative.
+  ParityReport report("nebulaExponentialIntegrals", {0.0, 3e-5, 0});
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    vec4 lo, hi;
+    shared::nebulaExponentialIntegrals(a[i].x, lo, hi);
+    const vec4 cpu = a[i].y > 0.5f ? hi : lo;
+    for (int m = 0; m < 4; ++m) {
+      char input[96];
+      std::snprintf(input, sizeof input, "(u %.9g, E%d)", a[i].x, (a[i].y > 0.5f ? 6 : 2) + m);
+      report.compare(gpu[i][m], cpu[m], input);
+    }
+  }
+  report.finish();
+}
+
 TEST_F(GpuTest, NebulaNegativePowersMatchCpu) {
   testing::InputGenerator gen(0x0eb01a01u);
   std::vector<vec4> a, b;

@@ -383,12 +383,17 @@ Result resultFromJson(const nlohmann::json& row) {
   try {
     r.scene = row.at("scene").get<std::string>();
     r.mode = row.at("mode").get<std::string>();
-    r.stats.meanDeltaE = row.at("mean_delta_e").get<double>();
-    r.stats.medianDeltaE = row.at("median_delta_e").get<double>();
-    r.stats.p95DeltaE = row.at("p95_delta_e").get<double>();
-    r.stats.maxDeltaE = row.at("max_delta_e").get<double>();
-    r.stats.mae8 = row.at("mae_8bit").get<double>();
-    r.stats.relativeError = row.at("relative_error").get<double>();
+    // A statistic over a pixel that is not finite is +∞, which JSON writes as null.
+    auto statistic = [&row](const char* key) {
+      const nlohmann::json& v = row.at(key);
+      return v.is_null() ? std::numeric_limits<double>::infinity() : v.get<double>();
+    };
+    r.stats.meanDeltaE = statistic("mean_delta_e");
+    r.stats.medianDeltaE = statistic("median_delta_e");
+    r.stats.p95DeltaE = statistic("p95_delta_e");
+    r.stats.maxDeltaE = statistic("max_delta_e");
+    r.stats.mae8 = statistic("mae_8bit");
+    r.stats.relativeError = statistic("relative_error");
     if (row.contains("mean_delta_e_vs_multiple_scattering"))
       r.meanVsGlobal = row.at("mean_delta_e_vs_multiple_scattering").get<double>();
   } catch (const nlohmann::json::exception& e) {

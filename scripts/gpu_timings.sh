@@ -14,9 +14,11 @@
 #   to check on any machine that the run goes through.
 set -euo pipefail
 [ $# -ge 2 ] || { echo "usage: scripts/gpu_timings.sh PRISM OUTDIR [--quick]" >&2; exit 2; }
-prism=$(realpath "$1")
+prism=$(command -v "$1") || { echo "gpu_timings: no executable $1" >&2; exit 2; }
+prism=$(realpath "$prism")
 out=$(realpath -m "$2")
 quick=${3:-}
+case "$quick" in "" | --quick) ;; *) echo "gpu_timings: unknown option $quick (only --quick)" >&2; exit 2 ;; esac
 cd "$(dirname "$0")/.."
 mkdir -p "$out"
 

@@ -177,7 +177,7 @@ PRISM_INLINE NEBULA_VEC4 nebulaInversePowerExpIntegrals(NEBULA_REAL x, NEBULA_RE
       NEBULA_REAL t1 = t0;
       NEBULA_REAL sum0 = t0;
       NEBULA_REAL sum1 = t1;
-      for (int n0 = 1; n0 < 40; n0 += 8) {  // in chunks of 8 (nebulaE1 says why)
+      for (int n0 = 1; n0 < 40; n0 += 8) {  // in chunks of 8 (nebulaEnContinuedFraction says why)
         for (int j = 0; j < 8 && n0 + j < 40; ++j) {
           t0 *= z0 / NEBULA_REAL(m + 1 + n0 + j);
           t1 *= z1 / NEBULA_REAL(m + 1 + n0 + j);

@@ -1,5 +1,6 @@
-// E₁ and the power–exponential recurrence (shaders/shared/nebula_integrals.glsl) against adaptive
-// Simpson quadrature in long double, independent of both (it shares no formula with them).
+// E₁…E₉, the power–exponential antiderivatives and the negative powers
+// (shaders/shared/nebula_integrals.glsl) against adaptive Simpson quadrature in long double,
+// independent of them (it shares no formula with them).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -94,8 +94,8 @@ struct RenderSettings {
   // Projection and light–density: read the coefficients cₖ(x) = Σⱼ M(k,j)·mⱼ(x) of e^(−x/λ) on
   // the orthonormal basis (mⱼ(x) = ∫ e^(−(x+aⱼ)/λ) dλ) from a table over x (4096 entries on
   // [0, 16] µm, Catmull–Rom, float: what the GPU marcher reads too), built per frame from the
-  // shared closed form in double, instead of evaluating E₁ per sample; beyond the table, the
-  // closed form.
+  // shared closed form in double, instead of evaluating the closed form (λ·E₂ at both bounds)
+  // per sample; beyond the table, the closed form.
   bool momentTable = true;
   // Where each pixel's ray stops (a scene's surface in front of or inside the nebula), as a
   // distance from the camera in the cube's units, row 0 at the top; samples beyond it are left

@@ -28,9 +28,9 @@ inline constexpr NebulaExperiment kNebulaExperiments[] = {
     {"ionised_hubble", "nebula/ionised", "hubble"},
     {"ionised_natural", "nebula/ionised", "cie1931"},
 };
-// The paper's two and its rejected alternative. Not the closed form per step (analytic): it costs
-// ten times the reference, and its float fails on the Hubble passbands' narrow pieces (README,
-// "Spectral nebulae", where its errors are).
+// The paper's two and its rejected alternative. Not yet the closed form per step (analytic),
+// left out while its float failed on the Hubble passbands' narrow pieces; since their series
+// (nebula_integrals.glsl) it holds there too (README, "Spectral nebulae").
 inline constexpr nebula::Method kNebulaMethods[] = {nebula::Method::Projection, nebula::Method::LightDensity,
                                                     nebula::Method::PreIntegration};
 

@@ -59,10 +59,9 @@ layout(std430, binding = 6) readonly buffer BasisMatrix { float basisM[]; };  //
 #if defined(NEBULA_ANALYTIC)
 // Analytic (bindings of the basis matrix and the reference's nodes, which it does not read): per
 // star s and channel c, analyticRanges[s·3 + c] = (first piece, pieces, the Wien exponent B as
-// float bits, 0); piece k is three vec4 at analyticPieces[3k]: P_S·P_L's c₀…c₃ and c₄…c₇ (a Wien
-// star: P_S times its normalisation, c₀…c₃), then (λ₀, λ₁, 0, 0) in µm.
+// float bits, 0), indices into analyticPieces (nebula_integrals.glsl's NebulaAnalyticPiece).
 layout(std430, binding = 6) readonly buffer AnalyticRanges { ivec4 analyticRanges[]; };
-layout(std430, binding = 7) readonly buffer AnalyticPieces { vec4 analyticPieces[]; };
+layout(std430, binding = 7) readonly buffer AnalyticPieces { NebulaAnalyticPiece analyticPieces[]; };
 #elif defined(NEBULA_PRE_INTEGRATION)
 // Pre-integration: star s's three channels' ∫ P_S·S_s·e^(−x/λ) dλ at x = e·uMomentStep, entry
 // e + 1 of [s·(uMomentSize + 3), …) (the moment table's spacing; one before 0, two after the end).
@@ -304,12 +303,8 @@ void main() {
           for (int ch = 0; ch < 3; ++ch) {
             ivec4 range = analyticRanges[s * 3 + ch];
             float wienB = intBitsToFloat(range.z);
-            for (int k = range.x; k < range.x + range.y; ++k) {
-              vec4 bounds = analyticPieces[3 * k + 2];
-              sum[ch] += wienB > 0.0f ? nebulaWienPolyIntegral(analyticPieces[3 * k], x + wienB, bounds.x, bounds.y)
-                                      : nebulaPolyExpIntegral(analyticPieces[3 * k], analyticPieces[3 * k + 1], x,
-                                                              bounds.x, bounds.y);
-            }
+            for (int k = range.x; k < range.x + range.y; ++k)
+              sum[ch] += nebulaAnalyticPieceIntegral(analyticPieces[k], x + wienB, wienB > 0.0f);
           }
           colour += w * sum;
         }

@@ -198,6 +198,50 @@ PRISM_INLINE NEBULA_REAL nebulaWienPolyIntegral(IN(NEBULA_VEC4) c, NEBULA_REAL x
   return dot(c, nebulaInversePowerExpIntegrals(x, lambda0Um, lambda1Um));
 }
 
+// The closed forms above lose their digits on a narrow piece: over [λ₀, λ₁] with centre c and
+// half-width h, P's coefficients in powers of λ are about (c/h)^degree times its values, and
+// Σ cₙIₙ cancels them (a 0.8 nm piece of a Hubble passband at 656 nm, P_S quadratic and P_L
+// quintic: not a digit left, even in double). There the analytic method takes the same integral
+// as a series in the optical depth. With λ = c + h·s, ε = h/c and G = 1/(1 − ε),
+//   e^(−x/λ) = e^(−x/c)·e^(u·γ(s)),  u = x·h·G/c²,  γ(s) = s/((1 + ε·s)·G),  |γ| ≤ 1 for |s| ≤ 1,
+// so ∫_λ₀^λ₁ P(λ)·e^(−x/λ) dλ = e^(−x/c)·Σ_d V_d·u^d with V_d = h/d!·∫₋₁¹ P(c + h·s)·γ(s)^d ds,
+// made ahead in double from P's factors (nebula_analytic_pieces.h). Twelve terms: for u ≤ 1 what
+// is left out is below Σ_{d≥12} 1/d! ≈ 2.3e-9 of ∫|P| dλ, and the sum's terms, each at most
+// u^d/d!·∫|P| dλ, cancel by at most e^(2u) ≈ 7.4 where P ≥ 0. u ≤ 1 up to x = c²/(h·G): about
+// 1 000 µm for that Hubble piece (far past float's range of e^(−x/λ)), 12 µm for the bluest 25 nm
+// CIE piece; beyond, the closed form, where x/c > (1 − ε)/ε already dims the piece below
+// e^(1 − 1/ε). (In double the V_d's own error is P's: a narrow quadratic filter piece evaluated in
+// powers of λ is good to about (c/h)²·1e-16.)
+const NEBULA_REAL kNebulaSeriesMaxU = 1.0f;
+
+// One piece of the analytic method's P (filter × star fit × scattering; for a Wien star, filter
+// × normalisation × scattering against λ⁻⁵ with x + B), in both forms: V₀…V₁₁ in series0…2;
+// bounds = (λ₀, λ₁, 1/c, h·G/c²) in µm; P's c₀…c₃ in cLo and c₄…c₇ in cHi (a Wien star: its
+// cubic Q of λ⁻⁵·Q in cLo) for the closed form.
+struct NebulaAnalyticPiece {
+  NEBULA_VEC4 series0;
+  NEBULA_VEC4 series1;
+  NEBULA_VEC4 series2;
+  NEBULA_VEC4 bounds;
+  NEBULA_VEC4 cLo;
+  NEBULA_VEC4 cHi;
+};
+
+// ∫_λ₀^λ₁ P(λ)·e^(−x/λ) dλ over one piece, x ≥ 0 (for a Wien star, wien true and x already
+// holding its B): the series where u ≤ 1, else the closed form.
+PRISM_INLINE NEBULA_REAL nebulaAnalyticPieceIntegral(IN(NebulaAnalyticPiece) piece, NEBULA_REAL x, bool wien) {
+  NEBULA_REAL u = x * piece.bounds.w;
+  if (u <= kNebulaSeriesMaxU) {
+    NEBULA_REAL sum = piece.series2[3];
+    for (int d = 2; d >= 0; --d) sum = sum * u + piece.series2[d];
+    for (int d = 3; d >= 0; --d) sum = sum * u + piece.series1[d];
+    for (int d = 3; d >= 0; --d) sum = sum * u + piece.series0[d];
+    return exp(-x * piece.bounds.z) * sum;
+  }
+  return wien ? nebulaWienPolyIntegral(piece.cLo, x, piece.bounds.x, piece.bounds.y)
+              : nebulaPolyExpIntegral(piece.cLo, piece.cHi, x, piece.bounds.x, piece.bounds.y);
+}
+
 // ∫_λ₀^λ₁ e^(−x/λ) dλ = I₀(λ₁) − I₀(λ₀), I₀(λ) = λ·E₂(x/λ): the inner product of two
 // exponentials e^(−a/λ) and e^(−b/λ) with x = a + b, which is all the projection on an exp(−a/λ)
 // basis needs.

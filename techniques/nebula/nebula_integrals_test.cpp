@@ -1,13 +1,15 @@
-// E₁…E₉, the power–exponential antiderivatives and the negative powers
-// (shaders/shared/nebula_integrals.glsl) against adaptive Simpson quadrature in long double,
+// E₁…E₉, the power–exponential antiderivatives, the negative powers and the analytic method's
+// integral per passband piece (shaders/shared/nebula_integrals.glsl) against adaptive Simpson quadrature in long double,
 // independent of them (it shares no formula with them).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
 #include <vector>
 
+#include "techniques/nebula/nebula_analytic_pieces.h"
 #include "techniques/nebula/nebula_integrals.h"
 
 namespace {
@@ -175,4 +177,83 @@ TEST(NebulaIntegrals, NegativePowersMatchQuadrature) {
   EXPECT_LE(worstFloat.error, 1e-4);
 }
 
+// The analytic method's integral per piece, ∫ P_S·P_L·e^(−x/λ) dλ (a Wien star: P_S·N·P_σ·λ⁻⁵
+// with x + B), over every piece of the Hubble and CIE filters times a Planck star's fit and a
+// Wien star, x from 0 to 30 µm: the series where u ≤ 1, the closed form beyond. Error relative to
+// ∫|P|·e^(−x/λ) dλ (a fitted passband dips below 0 at its edges, where the integral can vanish).
+TEST(NebulaIntegrals, AnalyticPiecesMatchQuadrature) {
+  using prism::nebula::PolynomialPiece;
+  const double xs[] = {0.0, 1e-3, 0.1, 1.0, 3.0, 10.0, 30.0};
+  Worst seriesDouble, seriesFloat, closedDouble, closedFloat, closedFormOnNarrow;
+  for (const char* filters : {"hubble", "cie1931"})
+    for (auto model : {prism::nebula::StarModel::Planck, prism::nebula::StarModel::Wien}) {
+      const auto star = prism::nebula::makeStarSpectrum(6000.0, model);
+      const bool wien = model == prism::nebula::StarModel::Wien;
+      const double b = wien ? prism::nebula::wienExponentUm(star.temperatureK) : 0.0;
+      PolynomialPiece wienFactor = star.scattering;
+      for (double& c : wienFactor.coeffs) c *= star.normalisation;
+      const auto factors = wien ? std::vector<PolynomialPiece>{wienFactor} : star.fit.pieces;
+      for (const auto& channel : prism::nebula::filterSet(filters).channels)
+        for (const auto& filter : channel.response.pieces)
+          for (const auto& factor : factors) {
+            const double l0 = std::max(filter.lambda0Um, factor.lambda0Um), l1 = std::min(filter.lambda1Um, factor.lambda1Um);
+            if (l1 <= l0) continue;
+            const auto piece = prism::nebula::analyticPiece(filter, factor, l0, l1, wien);
+            const auto pieceFloat = prism::nebula::toFloat(piece);
+            for (double x0 : xs) {
+              const double x = x0 + b;
+              // In long double: P's powers of λ in double lose ~1e-10 to their cancellation, noise
+              // that adaptive Simpson would chase.
+              auto polynomial = [](const PolynomialPiece& q, LD l) {
+                LD v = 0;
+                for (int n = prism::nebula::kMaxDegree; n >= 0; --n) v = v * l + static_cast<LD>(q.coeffs[static_cast<std::size_t>(n)]);
+                return v;
+              };
+              auto p = [&](LD l) {
+                LD v = polynomial(filter, l) * polynomial(factor, l);
+                return wien ? v / std::pow(l, 5) : v;
+              };
+              auto absolute = [&](LD l) { return std::fabs(p(l)) * std::exp(-static_cast<LD>(x) / l); };
+              LD rough = 0;  // the largest of 65 samples times the width, for the tolerances
+              for (int i = 0; i <= 64; ++i) rough = std::max(rough, absolute(l0 + (l1 - l0) * i / 64.0L));
+              rough *= l1 - l0;
+              if (rough == 0) continue;
+              const LD scale = integrate(absolute, l0, l1, rough * 1e-10L);
+              const LD reference = integrate([&](LD l) { return p(l) * std::exp(-static_cast<LD>(x) / l); }, l0, l1, rough * 1e-12L);
+              auto error = [&](double value) { return static_cast<double>(std::fabs(static_cast<LD>(value) - reference) / scale); };
+              const double d = error(prism::shared::f64::nebulaAnalyticPieceIntegral(piece, x, wien));
+              const double f = error(prism::shared::nebulaAnalyticPieceIntegral(pieceFloat, static_cast<float>(x), wien));
+              if (x * piece.bounds.w <= prism::shared::f64::kNebulaSeriesMaxU) {
+                seriesDouble.update(d, 0, x, l0, l1);
+                seriesFloat.update(f / (1.0 + x / l0), 0, x, l0, l1);
+                if (l1 - l0 < 0.002)  // what the paper's closed form makes of a narrow piece
+                  closedFormOnNarrow.update(error(wien ? prism::shared::f64::nebulaWienPolyIntegral(piece.cLo, x, l0, l1)
+                                                       : prism::shared::f64::nebulaPolyExpIntegral(piece.cLo, piece.cHi, x, l0, l1)),
+                                            0, x, l0, l1);
+              } else {
+                closedDouble.update(d, 0, x, l0, l1);
+                closedFloat.update(f / (1.0 + x / l0), 0, x, l0, l1);
+              }
+            }
+          }
+    }
+  auto show = [](const char* what, const Worst& w) {
+    std::printf("%s: %.3g (x=%g [%g,%g])\n", what, w.error, w.x, w.l0, w.l1);
+  };
+  show("analytic pieces, series, double", seriesDouble);
+  show("analytic pieces, series, float over its condition 1 + x/λ₀", seriesFloat);
+  show("analytic pieces, closed form where u > 1, double", closedDouble);
+  show("analytic pieces, closed form where u > 1, float over its condition", closedFloat);
+  show("the closed form on the narrow pieces (not used there), double", closedFormOnNarrow);
+  // The series leaves out ≤ 2.3e-9 of e^(−x/c)·∫|P|, which is at most e times ∫|P|·e^(−x/λ).
+  EXPECT_LE(seriesDouble.error, 1e-8);
+  // Float: as the closed forms, a few roundings of the exponent x/λ, which e^(−x/λ) makes x/λ
+  // times larger (x in float is already that far off), divided out as in the positive powers' bound.
+  EXPECT_LE(seriesFloat.error, 8.0 * 0x1p-24);
+  EXPECT_LE(closedDouble.error, 1e-6);
+  EXPECT_GT(closedDouble.x, 0.0);  // both forms were taken
+  EXPECT_GT(closedFormOnNarrow.error, 1e-3);  // and the series is needed where it is taken
+}
+
 }  // namespace
+

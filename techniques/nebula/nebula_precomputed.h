@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <glm/glm.hpp>
 
+#include "techniques/nebula/nebula_analytic_pieces.h"
 #include "techniques/nebula/nebula_basis.h"
 #include "techniques/nebula/nebula_density.h"
 #include "techniques/nebula/nebula_integrals.h"
@@ -83,20 +84,8 @@ struct NebulaPrecomputed {
   // the zone it glows in (empty without zones: every line glows wherever the density is).
   VoxelField lineZones;
   std::vector<int> lineZone;
-  // Analytic: per star, per channel, the pieces of P_S × P_L as float coefficients; for a Wien
-  // star the pieces of P_S × its normalisation (c₀…c₃ in lo), integrated against λ⁻⁵ with
-  // x = g + B, B its analyticWienExponentUm (0 for a Planck star).
-  struct FloatPiece {
-    float l0, l1;
-    glm::vec4 lo, hi;
-  };
-  std::vector<std::array<std::vector<FloatPiece>, 3>> analyticPieces;
-  struct DoublePiece {
-    double l0, l1;
-    glm::dvec4 lo, hi;
-  };
-  std::vector<std::array<std::vector<DoublePiece>, 3>> analyticPiecesF64;
-  std::vector<double> analyticWienExponentUm;
+  // Analytic: per star and channel, its pieces (nebula_analytic_pieces.h).
+  AnalyticPieces analytic;
   // Projection: the 1D basis and its table of coefficients.
   ExpBasis basis;
   glm::vec4 basisLo{0.0f}, basisHi{0.0f};  // exponents a₀…a₇ (unused ones are never read)
@@ -120,7 +109,7 @@ struct NebulaPrecomputed {
   int lightCount = 0;
   std::function<double(int k, double lambdaUm)> lightFunction;  // fₖ(λ), the orthonormal 2D basis
   // What depends on the filters (NebulaRenderer's refiltering constructor makes these again and
-  // copies the rest): filters, lineResponse, analyticPieces(F64), analyticWienExponentUm,
+  // copies the rest): filters, lineResponse, analytic,
   // projectionWeights, lightU, preIntegrated.
 };
 

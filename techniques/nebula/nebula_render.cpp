@@ -120,46 +120,13 @@ void applyFilters(NebulaPrecomputed& pre) {
   const NebulaModel& m = pre.model;
   pre.filters = editedFilterSet(filterSet(m.filters), m.passbands);
   pre.lineResponse.clear();
-  pre.analyticPieces.clear();
-  pre.analyticPiecesF64.clear();
-  pre.analyticWienExponentUm.clear();
   pre.projectionWeights.clear();
   for (std::size_t l = 0; l < pre.lineLambdaUm.size(); ++l) {
     glm::dvec3 r;
     for (int c = 0; c < 3; ++c) r[c] = pre.filters.channels[static_cast<std::size_t>(c)].response.at(pre.lineLambdaUm[l]) * pre.lineWeight[l];
     pre.lineResponse.push_back(r);
   }
-  // Analytic: P_S × P_L per star and channel, in float for the shared integrals; a Wien star's
-  // λ⁻⁵e^(−B/λ) exactly (P_S × P_σ × its normalisation against λ⁻⁵, B added to the optical
-  // depth) while that product stays cubic (the shared negative powers: λ⁻⁵…λ⁻²).
-  for (const auto& spectrum : pre.spectra) {
-    std::array<std::vector<NebulaPrecomputed::FloatPiece>, 3> perChannel;
-    std::array<std::vector<NebulaPrecomputed::DoublePiece>, 3> perChannelF64;
-    bool wien = spectrum.model == StarModel::Wien;
-    for (const auto& channel : pre.filters.channels)
-      for (const auto& piece : channel.response.pieces) wien = wien && degree(piece) + degree(spectrum.scattering) <= 3;
-    pre.analyticWienExponentUm.push_back(wien ? wienExponentUm(spectrum.temperatureK) : 0.0);
-    PolynomialPiece wienFactor = spectrum.scattering;  // N·P_σ
-    for (double& c : wienFactor.coeffs) c *= spectrum.normalisation;
-    for (std::size_t c = 0; c < 3; ++c)
-      for (PolynomialPiece piece : multiply(pre.filters.channels[c].response,
-                                            wien ? PiecewisePolynomial{{wienFactor}} : spectrum.fit).pieces) {
-        NebulaPrecomputed::DoublePiece d{piece.lambda0Um, piece.lambda1Um, {}, {}};
-        for (int n = 0; n < 4; ++n) {
-          d.lo[n] = piece.coeffs[static_cast<std::size_t>(n)];
-          d.hi[n] = piece.coeffs[static_cast<std::size_t>(n + 4)];
-        }
-        perChannelF64[c].push_back(d);
-        NebulaPrecomputed::FloatPiece f{static_cast<float>(piece.lambda0Um), static_cast<float>(piece.lambda1Um), {}, {}};
-        for (int n = 0; n < 4; ++n) {
-          f.lo[n] = static_cast<float>(piece.coeffs[static_cast<std::size_t>(n)]);
-          f.hi[n] = static_cast<float>(piece.coeffs[static_cast<std::size_t>(n + 4)]);
-        }
-        perChannel[c].push_back(f);
-      }
-    pre.analyticPieces.push_back(std::move(perChannel));
-    pre.analyticPiecesF64.push_back(std::move(perChannelF64));
-  }
+  pre.analytic = makeAnalyticPieces(pre.filters, pre.spectra);
   const auto card = static_cast<int>(pre.basis.a.size());
   for (std::size_t st = 0; st < pre.spectra.size(); ++st) {
     std::array<std::array<double, 8>, 3> w{};
@@ -520,17 +487,15 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
                 }
                 break;
               case Method::Analytic: {
-                const double wienB = pre.analyticWienExponentUm[st];
+                const double wienB = pre.analytic.wienExponentUm[st];
                 for (std::size_t c = 0; c < 3; ++c) {
                   double sum = 0.0;
                   if (s.doublePrecision)
-                    for (const auto& piece : pre.analyticPiecesF64[st][c])
-                      sum += wienB > 0.0 ? shared::f64::nebulaWienPolyIntegral(piece.lo, x + wienB, piece.l0, piece.l1)
-                                         : shared::f64::nebulaPolyExpIntegral(piece.lo, piece.hi, x, piece.l0, piece.l1);
+                    for (const auto& piece : pre.analytic.f64[st][c])
+                      sum += shared::f64::nebulaAnalyticPieceIntegral(piece, x + wienB, wienB > 0.0);
                   else
-                    for (const auto& piece : pre.analyticPieces[st][c])
-                      sum += wienB > 0.0 ? shared::nebulaWienPolyIntegral(piece.lo, static_cast<float>(x + wienB), piece.l0, piece.l1)
-                                         : shared::nebulaPolyExpIntegral(piece.lo, piece.hi, static_cast<float>(x), piece.l0, piece.l1);
+                    for (const auto& piece : pre.analytic.f32[st][c])
+                      sum += shared::nebulaAnalyticPieceIntegral(piece, static_cast<float>(x + wienB), wienB > 0.0);
                   colour[static_cast<int>(c)] += w * sum;
                 }
                 break;

@@ -192,17 +192,14 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   mCount = light ? pre.lightCount : direct ? 0 : static_cast<int>(m.stars.size());
   if (analytic && mAnalyticRanges.sizeBytes() == 0) {  // [star·3 + channel]: (first, count, B bits, 0)
     std::vector<glm::ivec4> ranges;
-    std::vector<glm::vec4> pieces;
+    std::vector<shared::NebulaAnalyticPiece> pieces;
+    static_assert(sizeof(shared::NebulaAnalyticPiece) == 6 * 16, "std430: six vec4, no padding");
     for (std::size_t st = 0; st < m.stars.size(); ++st)
       for (std::size_t c = 0; c < 3; ++c) {
-        const auto& list = pre.analyticPieces[st][c];
-        const auto wienB = static_cast<float>(pre.analyticWienExponentUm[st]);
-        ranges.emplace_back(static_cast<int>(pieces.size() / 3), static_cast<int>(list.size()), std::bit_cast<int>(wienB), 0);
-        for (const auto& piece : list) {
-          pieces.push_back(piece.lo);
-          pieces.push_back(piece.hi);
-          pieces.emplace_back(piece.l0, piece.l1, 0.0f, 0.0f);
-        }
+        const auto& list = pre.analytic.f32[st][c];
+        const auto wienB = static_cast<float>(pre.analytic.wienExponentUm[st]);
+        ranges.emplace_back(static_cast<int>(pieces.size()), static_cast<int>(list.size()), std::bit_cast<int>(wienB), 0);
+        pieces.insert(pieces.end(), list.begin(), list.end());
       }
     mAnalyticRanges = bufferOf(ranges, "nebula analytic ranges");
     mAnalyticPieces = bufferOf(pieces, "nebula analytic pieces");

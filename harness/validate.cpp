@@ -132,7 +132,7 @@ constexpr Bound kBounds[] = {
     {"spheres_d65", "jakob-hanika-16", 0.5},
     {"spheres_blue_led", "jakob-hanika-16", 1.0},
 };
-// A nebula method's bounds on every nebula: projection and pre-integration below the
+// A nebula method's bounds on every nebula: projection, analytic and pre-integration below the
 // just-noticeable difference at every pixel (ΔE00 1; the paper: indistinguishable from the
 // reference); light–density, whose 2D basis misses the light near stars inside the cloud (README),
 // on the mean (the spheres' 0.5).
@@ -143,6 +143,7 @@ struct NebulaBound {
 };
 constexpr NebulaBound kNebulaBounds[] = {
     {nebula::Method::Projection, 0.5, 1.0},
+    {nebula::Method::Analytic, 0.5, 1.0},
     {nebula::Method::PreIntegration, 0.5, 1.0},
     {nebula::Method::LightDensity, 0.5, std::numeric_limits<double>::infinity()},
 };

@@ -17,8 +17,9 @@
 // environment before projection (the SH-5 band limit and the noise common to all three):
 //   spectral PRT: mean ΔE00 at most 0.05 above the 5 nm reference's (what its basis adds)
 // And the example nebulae, in the Hubble palette and in natural colour, by the GPU marcher's
-// projection, light–density and pre-integration against the CPU's reference (validate_nebula.h):
-//   projection and pre-integration: ΔE00 ≤ 1 at every pixel (mean ≤ 0.5)
+// projection, light–density, analytic and pre-integration against the CPU's reference
+// (validate_nebula.h):
+//   projection, analytic and pre-integration: ΔE00 ≤ 1 at every pixel (mean ≤ 0.5)
 //   light–density: mean ΔE00 ≤ 0.5
 // Split across tasks (a Slurm array, validate_parts.h): `--task I/N` runs task I's share of the
 // sixteen experiments (four sphere scenes, five reef depths, three PRT scenes, four nebulae) and

@@ -28,11 +28,9 @@ inline constexpr NebulaExperiment kNebulaExperiments[] = {
     {"ionised_hubble", "nebula/ionised", "hubble"},
     {"ionised_natural", "nebula/ionised", "cie1931"},
 };
-// The paper's two and its rejected alternative. Not yet the closed form per step (analytic),
-// left out while its float failed on the Hubble passbands' narrow pieces; since their series
-// (nebula_integrals.glsl) it holds there too (README, "Spectral nebulae").
+// The paper's two, its closed form per step (analytic) and its rejected alternative.
 inline constexpr nebula::Method kNebulaMethods[] = {nebula::Method::Projection, nebula::Method::LightDensity,
-                                                    nebula::Method::PreIntegration};
+                                                    nebula::Method::Analytic, nebula::Method::PreIntegration};
 
 struct NebulaMethodDifference {
   std::string mode;                 // the method's name

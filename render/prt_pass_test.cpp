@@ -58,7 +58,7 @@ TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSums) {
     int x = px(rng), y = py(rng);  // GL rows
     std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
     if (!hit) continue;
-    glm::dvec3 expected = cpuTristimulus(*data, *hit);
+    glm::dvec3 expected = cpuTristimulus(*data, *hit, renderer.cameraTransform().position);
     std::size_t i = static_cast<std::size_t>(y * w + x);
     glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
     double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
@@ -75,6 +75,53 @@ TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSums) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, PrtGpuCpuParity, prtModeCases(), prtModeCaseName);
+
+// Under water (a Jerlov II ocean whose surface lies 2 m above the camera, the objects 3–4 m
+// down): the fragment shader's sum over the projection's nodes, dimmed by the water between the
+// camera and the fragment and above the fragment (shared/prt_medium.glsl), against the same sum
+// on the CPU; and the water takes a visible share of the light.
+class PrtUnderWaterParity : public testing::TestWithParam<PrtModeCase> {};
+
+TEST_P(PrtUnderWaterParity, RandomPixelsAgreeWithTheSharedSumsThroughTheWater) {
+  gpu::HeadlessContext context;
+  Scene scene = loadScene(kExampleScenes / "prt_metamers.json", {R"(water={"type": "II", "depth": 2})"});
+  scene.techniques.find<prt::PrtSection>()->mode = GetParam().mode;
+  const FrameSettings settings = prtTwinSettings(GetParam(), 160, 90);
+  Renderer renderer(scene, cachedTestTable(), settings);
+  renderer.renderFrame();
+  auto data = std::dynamic_pointer_cast<const prt::PrtDrawData>(renderer.techniquePass(prt::PrtSection::kKey)->readTexels());
+  ASSERT_TRUE(data);
+  ASSERT_TRUE(data->medium);
+  prt::PrtDrawData dry = *data;
+  dry.medium.reset();
+  std::vector<float> lit = gpu::readTexture2DFloat(renderer.accumulation(), 4);
+  const int w = settings.width, h = settings.height;
+  std::mt19937 rng(16);
+  std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
+  double worst = 0.0, kept = 0.0;
+  int compared = 0;
+  for (int n = 0; n < 400; ++n) {
+    int x = px(rng), y = py(rng);
+    std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
+    if (!hit) continue;
+    const glm::dvec3 expected = cpuTristimulus(*data, *hit, renderer.cameraTransform().position);
+    std::size_t i = static_cast<std::size_t>(y * w + x);
+    glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
+    double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
+    worst = std::max(worst, glm::length(actual - expected) / scale);
+    kept += expected.y / cpuTristimulus(dry, *hit, renderer.cameraTransform().position).y;
+    ++compared;
+  }
+  kept /= std::max(compared, 1);
+  std::printf("PRT %s (frame %s) under water: %d pixels compared; relative error max %.3g; the water keeps %.3f of Y\n",
+              std::string(prt::prtModeName(GetParam().mode)).c_str(),
+              std::string(renderModeName(GetParam().frameMode)).c_str(), compared, worst, kept);
+  EXPECT_GT(compared, 100);
+  EXPECT_LE(worst, 1e-4);
+  EXPECT_LT(kept, 0.8);
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, PrtUnderWaterParity, prtModeCases(), prtModeCaseName);
 
 // PRT objects are lit by the scene's lights too, in the lighting pass, as Lambertian surfaces with
 // shadow maps (the sun of PRT's spectral sky is such a light): at interior pixels of the metamer
@@ -115,7 +162,7 @@ TEST(PrtGpuCpuParity, PrtObjectsAreLitByTheScenesLightsToo) {
     ASSERT_NE(t.materialId & shared::kTechniqueShadedBit, 0u);
     glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(w), (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
     const glm::dvec3 lights(cpu.shade(t, uv, renderer.cameraTransform()));
-    const glm::dvec3 expected = lights + cpuTristimulus(*data, *hit);
+    const glm::dvec3 expected = lights + cpuTristimulus(*data, *hit, renderer.cameraTransform().position);
     const glm::dvec3 actual(g.accumulated(i));
     const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
     worst = std::max(worst, glm::length(actual - expected) / scale);

@@ -97,7 +97,7 @@ TEST_P(PrtTexturedParity, MagnifiedTexelsAgreeWithTheTwin) {
     std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
     if (!hit || texelFootprint(*data, renderer.cameraTransform(), *hit, x, y, w, h) > 0.75 || !uniformTexels(*data, *hit))
       continue;
-    const glm::dvec3 expected = cpuTristimulus(*data, *hit);
+    const glm::dvec3 expected = cpuTristimulus(*data, *hit, renderer.cameraTransform().position);
     const std::size_t i = static_cast<std::size_t>(y * w + x);
     const glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
     const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
@@ -108,7 +108,7 @@ TEST_P(PrtTexturedParity, MagnifiedTexelsAgreeWithTheTwin) {
     for (glm::dvec2 o : {glm::dvec2(1.0 / 512.0, 0.0), glm::dvec2(0.0, 1.0 / 512.0)}) {
       auto [origin, dir] = pixelRay(renderer.cameraTransform(), x + 0.5 + o.x, y + 0.5 + o.y, w, h);
       std::optional<Hit> moved = intersect(*data, origin, dir);
-      if (moved) snap += glm::length(cpuTristimulus(*data, *moved) - expected) / scale;
+      if (moved) snap += glm::length(cpuTristimulus(*data, *moved, renderer.cameraTransform().position) - expected) / scale;
     }
     const double error = glm::length(actual - expected) / scale;
     worst = std::max(worst, error);

@@ -2,7 +2,8 @@
 // prt_texture_pass_test.cpp): the pixel's triangle found by a ray through its centre, the
 // vertices' Ê interpolated with the hit's barycentrics (perspective-correct interpolation is
 // interpolation on the triangle in space), R̂ the material's or its texture's at the hit's uv, and
-// prtXyz summed over the very data the pass uploaded (PrtPass::readTexels).
+// prtXyz summed over the very data the pass uploaded (PrtPass::readTexels), through the medium's
+// nodes when the scene has one.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -135,7 +136,12 @@ inline shared::PrtReflectance sampledReflectance(const prt::PrtTextureSource& so
 
 // The fragment shader's sum on the CPU: Ê interpolated with the hit's barycentrics, then prtXyz,
 // for every projection (the 5 nm reference has six); a textured material's R̂ sampled at the hit.
-inline glm::dvec3 cpuTristimulus(const prt::PrtDrawData& d, const Hit& hit) {
+// Inside the scene's medium, the sum over the projection's nodes dimmed by the medium between
+// the camera and the hit (prt_medium.h).
+inline glm::dvec3 cpuTristimulus(const prt::PrtDrawData& d, const Hit& hit, const glm::vec3& cameraPositionW) {
+  glm::dvec3 point(0.0);
+  for (int k = 0; k < 3; ++k)
+    point += hit.barycentric[k] * glm::dvec3(d.positionsW[d.indices[hit.triangle + static_cast<std::size_t>(k)]]);
   glm::dvec3 sum(0.0);
   const int material = d.vertexMaterial[d.indices[hit.triangle]];
   const prt::PrtTextureSource* texture = d.textures.empty() ? nullptr : d.textures[static_cast<std::size_t>(material)].get();
@@ -150,7 +156,9 @@ inline glm::dvec3 cpuTristimulus(const prt::PrtDrawData& d, const Hit& hit) {
     const shared::PrtReflectance r =
         texture ? sampledReflectance(*texture, prt::PrtTexelProjector(*texture, d.reflectanceMaps[c]), hitUv(d, hit))
                 : p.reflectances[static_cast<std::size_t>(material)];
-    sum += glm::dvec3(shared::prtXyz(e, r, p.basisCount));
+    sum += glm::dvec3(d.medium ? prt::prtXyzThroughMedium(e, r, p.basisCount, d.mediumNodes[c], *d.medium,
+                                                          cameraPositionW, glm::vec3(point))
+                               : shared::prtXyz(e, r, p.basisCount));
   }
   return sum;
 }

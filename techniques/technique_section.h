@@ -56,6 +56,10 @@ struct TechniqueMedium {
   float g = 0.0f;
   glm::vec3 regionMin{0.0f};
   glm::vec3 regionMax{0.0f};
+  // The diffuse attenuation (1/m) of light from above reaching depth z below the region's top,
+  // e^(−Kd·z), which the rasteriser's passes apply to distant light (PRT's environment under
+  // water); none: σa + σs.
+  std::optional<Spectrum> downwellingKd;
 };
 
 // The distant light a technique surrounds the scene with (PRT's environment), as the reference

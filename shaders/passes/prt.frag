@@ -3,17 +3,25 @@
 // (shared/prt.glsl's prtXyz) over the interpolated irradiance, added to the accumulation with
 // alpha 0 (the lighting pass counted the frame; it left this pixel black). R̂ is the material's,
 // or for a textured material its texture's layers at the fragment's uv (filtered: R̂ is linear in
-// the reflectance).
+// the reflectance). Inside the scene's medium (the water) each wavelength node of the projection
+// is dimmed by its transmittance (shared/prt_medium.glsl).
 #include "shared/prelude.glsl"
 #include "shared/spherical_harmonics.glsl"
 #include "shared/prt.glsl"
+#include "shared/prt_medium.glsl"
 
 layout(std430, binding = kPrtMaterialsBinding) readonly buffer Materials { PrtGpuMaterial materials[]; };
 layout(binding = kPrtReflectanceTextureUnit) uniform sampler2DArray uReflectanceTexture;
+layout(std430, binding = kPrtMediumNodesBinding) readonly buffer MediumNodes { PrtMediumNode mediumNodes[]; };
 uniform int uTextured;  // 1: R̂ from uReflectanceTexture
+uniform int uMediumNodeCount;  // 0: no medium
+uniform vec3 uMediumBoxMin;
+uniform vec3 uMediumBoxMax;
+uniform vec3 uCameraPositionW;
 in float vIrradiance[PRISM_PRT_BASIS_COUNT];
 flat in uint vMaterial;
 in vec2 vUv;
+in vec3 vPositionW;
 layout(location = 0) out vec4 oTristimulus;
 
 void main() {
@@ -27,5 +35,16 @@ void main() {
   } else {
     r = prtReflectance(materials[vMaterial]);
   }
-  oTristimulus = vec4(prtXyz(e, r, PRISM_PRT_BASIS_COUNT), 0.0);
+  if (uMediumNodeCount == 0) {
+    oTristimulus = vec4(prtXyz(e, r, PRISM_PRT_BASIS_COUNT), 0.0);
+    return;
+  }
+  float path = prtMediumViewPath(uCameraPositionW, vPositionW, uMediumBoxMin, uMediumBoxMax);
+  float depth = prtMediumDepth(vPositionW, uMediumBoxMin, uMediumBoxMax);
+  vec3 xyz = vec3(0.0);
+  for (int q = 0; q < uMediumNodeCount; ++q) {
+    xyz += prtMediumTransmittance(mediumNodes[q], path, depth) *
+           prtMediumNodeXyz(e, r, PRISM_PRT_BASIS_COUNT, mediumNodes[q]);
+  }
+  oTristimulus = vec4(xyz, 0.0);
 }

@@ -20,6 +20,7 @@ uniform mat4 uViewProjection;
 out float vIrradiance[PRISM_PRT_BASIS_COUNT];
 flat out uint vMaterial;
 out vec2 vUv;
+out vec3 vPositionW;  // for a medium's path and depth (prt_medium.glsl)
 invariant gl_Position;
 
 void main() {
@@ -27,5 +28,6 @@ void main() {
   for (int j = 0; j < PRISM_PRT_BASIS_COUNT; ++j) vIrradiance[j] = e.e[j];
   vMaterial = aMaterial;
   vUv = aUv;
+  vPositionW = aPosition;
   gl_Position = uViewProjection * vec4(aPosition, 1.0);
 }

@@ -10,6 +10,7 @@
 #include "spectral/colour_checker.h"
 #include "spectral/colour_difference.h"
 #include "spectral/illuminant.h"
+#include "spectral/sampling.h"
 
 namespace prism::prt {
 namespace {
@@ -178,6 +179,8 @@ PrtProjection projectSpectral(const std::vector<Spectrum>& reflectances, const E
   PrtProjection p;
   p.basisCount = static_cast<int>(basis.cols());
   p.environment = environmentBlock(basis.transpose() * environmentGrid);  // L̃ = Φᵀ L
+  p.nodeWavelengthsNm = gridWavelengthsNm();  // a_qj = φ_j(λ_q), orthonormal on the grid
+  p.nodeBasis = basis;
   for (const Spectrum& s : reflectances) {  // R̂ (3 × m): Σ_i φ_j(λ_i) f_r(λ_i) c̄(λ_i) · 5 nm
     Eigen::VectorXd rho = sampleOnGrid(s);
     p.reflectances.push_back(
@@ -193,6 +196,9 @@ PrtProjection projectRgb(const std::vector<Spectrum>& reflectances, const Eigen:
   p.basisCount = 3;
   // The environment's RGB per SH coefficient (3 × 25; linear, so per coefficient is exact).
   p.environment = environmentBlock(space.xyzToRgb * (cmf.transpose() * environmentGrid) * kGridStepNm);
+  // A medium's T(λ) at the wavelengths R, G and B stand for, per channel.
+  p.nodeWavelengthsNm.assign(kRgbStandInWavelengthsNm.begin(), kRgbStandInWavelengthsNm.end());
+  p.nodeBasis = Eigen::MatrixXd::Identity(3, 3);
   // Albedos as an artist authors them: the reflectance's colour under CIE D65, the white of
   // sRGB, Display P3 and Rec.2020 (the spaces RGB-PRT is meant for).
   const Spectrum white = illuminant("D65");
@@ -212,6 +218,8 @@ std::vector<PrtProjection> projectReference(const std::vector<Spectrum>& reflect
     PrtProjection& p = chunks.emplace_back();
     p.basisCount = std::min(shared::kPrtMaxBasis, kGridWavelengths - first);
     p.environment = environmentBlock(environmentGrid.middleRows(first, p.basisCount));
+    for (int i = 0; i < p.basisCount; ++i) p.nodeWavelengthsNm.push_back(gridWavelengthNm(first + i));
+    p.nodeBasis = Eigen::MatrixXd::Identity(p.basisCount, p.basisCount);
     for (const Spectrum& s : reflectances) {
       Eigen::VectorXd rho = sampleOnGrid(s).segment(first, p.basisCount);
       p.reflectances.push_back(reflectanceBlock(

@@ -98,6 +98,10 @@ struct PrtProjection {
   int basisCount = 0;
   shared::PrtEnvironment environment{};
   std::vector<shared::PrtReflectance> reflectances;
+  // Where the basis functions are sampled in wavelength, for a medium's T(λ) (prt_medium.h):
+  // node q at nodeWavelengthsNm[q] with a_qj = nodeBasis(q, j) (j < basisCount).
+  std::vector<double> nodeWavelengthsNm;
+  Eigen::MatrixXd nodeBasis;
 };
 // Spectral PRT: L̃ = Φᵀ L, R̂_j = Σ_i φ_j(λ_i) f_r(λ_i) c̄(λ_i) · 5 nm; basis 81 × m, m ≤ 16.
 PrtProjection projectSpectral(const std::vector<Spectrum>& reflectances, const Eigen::MatrixXd& environmentGrid,

@@ -58,6 +58,7 @@ std::optional<TechniqueMedium> WaterSection::medium(const glm::vec3& sceneCamera
   water.sigmaS = sigmaS;
   water.regionMin = glm::vec3(-kFar);
   water.regionMax = glm::vec3(kFar, surfaceY(sceneCameraPositionW.y), kFar);
+  water.downwellingKd = kd;
   return water;
 }
 

@@ -39,7 +39,8 @@ struct WaterSection final : TechniqueSection {
   // and Kd at its wavelengths (in RGB mode at 680, 550 and 440 nm, the wavelengths RGB renderers
   // commonly stand R, G and B for): underwater.glsl's layout.
   TechniqueBlock pack(const FramePackInput& input) const override;
-  // Everything below the surface, scattering isotropically as the analytic model assumes.
+  // Everything below the surface, scattering isotropically as the analytic model assumes, with
+  // its Kd (by which PRT's forward pass dims the environment reaching its objects).
   std::optional<TechniqueMedium> medium(const glm::vec3& sceneCameraPositionW) const override;
   // The water term's cost: the same frames with the water taken out, RGB and 16 wavelengths.
   TechniqueBench bench() const override;

@@ -51,6 +51,19 @@ CachedTransfer sceneTransfer(const Scene& scene, const PrtMesh& mesh, const Tech
       [](const std::string& note) { fmt::print(stderr, "prism: {}\n", note); });
 }
 
+// The medium of the scene's techniques the lighting pass dims surfaces by (the water), as PRT's
+// objects take it: σt = σa + σs and Kd (σt where the medium gives none).
+std::optional<PrtMedium> sceneMedium(const Scene& scene) {
+  for (const auto& section : scene.techniques.all()) {
+    if (std::optional<TechniqueMedium> m = section->medium(scene.camera.position)) {
+      Spectrum sigmaT = m->sigmaA + m->sigmaS;
+      Spectrum kd = m->downwellingKd ? *m->downwellingKd : sigmaT;
+      return PrtMedium{m->regionMin, m->regionMax, std::move(sigmaT), std::move(kd)};
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 void PrtPass::precompute(const Scene& scene, const TechniqueProgress& progress) {
@@ -151,6 +164,10 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
     key += fmt::format("|{},{},{},{},{},{}", material.baseColour.x, material.baseColour.y, material.baseColour.z, measured,
                        material.baseColourTexture, static_cast<const void*>(material.spectralTexture.get()));
   }
+  if (d.medium) {  // the basis takes the light as the medium leaves it
+    const Eigen::VectorXd ramp = Eigen::VectorXd::LinSpaced(kGridWavelengths, 1.0, kGridWavelengths);
+    key += fmt::format("|medium {},{}", sampleOnGrid(d.medium->sigmaT).dot(ramp), sampleOnGrid(d.medium->kd).dot(ramp));
+  }
   if (key == mProjectionKey) return;
   std::vector<Spectrum> reflectances;
   std::vector<std::shared_ptr<const PrtTextureSource>> textures;
@@ -195,7 +212,11 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
         for (Eigen::VectorXd& s : textures[i]->representativeSpectra()) spectra.push_back(std::move(s));
       }
     }
-    for (const EnvironmentTerm& t : environment.terms) spectra.push_back(sampleOnGrid(t.spectrum));
+    std::vector<Eigen::VectorXd> light;
+    for (const EnvironmentTerm& t : environment.terms) light.push_back(sampleOnGrid(t.spectrum));
+    spectra.insert(spectra.end(), light.begin(), light.end());
+    if (d.medium)
+      for (Eigen::VectorXd& s : attenuatedSpectra(light, *d.medium)) spectra.push_back(std::move(s));
     SpectralBasis basis(spectra);
     basisCount = std::min(section.basis, basis.available());
     energy = basis.capturedEnergy(basisCount);
@@ -251,20 +272,44 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
   mProjectionKey = std::move(key);
 }
 
+// Every frame, since the viewer edits the water: the nodes of each projection (81 at most) are
+// cheap to redo, and the buffers are replaced only when they change.
+void PrtPass::prepareMediumNodes() {
+  PrtDrawData& d = *mData;
+  std::vector<std::vector<shared::PrtMediumNode>> nodes;
+  for (const PrtProjection& p : d.projections) nodes.push_back(mediumNodes(p, d.medium ? &*d.medium : nullptr));
+  const auto same = [](const std::vector<shared::PrtMediumNode>& a, const std::vector<shared::PrtMediumNode>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(shared::PrtMediumNode)) == 0;
+  };
+  if (nodes.size() == d.mediumNodes.size() && std::equal(nodes.begin(), nodes.end(), d.mediumNodes.begin(), same)) return;
+  std::vector<gpu::Buffer> buffers;
+  for (const auto& n : nodes) buffers.push_back(bufferOf(std::span<const shared::PrtMediumNode>(n), "PRT medium nodes"));
+  mMediumNodes = std::move(buffers);
+  d.mediumNodes = std::move(nodes);
+}
+
 void PrtPass::drawForward(const ForwardDrawInput& input) {
   if (!mGeometryReady) {
     prepareGeometry(input.scene);
     mGeometryReady = true;
   }
   if (mData->indices.empty()) return;  // no PRT objects
+  mData->medium = sceneMedium(input.scene);
   prepareProjections(input);
+  prepareMediumNodes();
+  const std::optional<PrtMedium>& medium = mData->medium;
   mTransfer.bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtTransferBinding);
   for (std::size_t c = 0; c < mData->projections.size(); ++c) {
     const gpu::Program& p = program(mData->projections[c].basisCount);
     p.use();
     p.setUniform("uViewProjection", input.camera.viewProjection);
+    p.setUniform("uMediumNodeCount", GLint{medium ? static_cast<GLint>(mData->mediumNodes[c].size()) : 0});
+    p.setUniform("uMediumBoxMin", medium ? medium->boxMin : glm::vec3(0.0f));
+    p.setUniform("uMediumBoxMax", medium ? medium->boxMax : glm::vec3(0.0f));
+    p.setUniform("uCameraPositionW", input.camera.position);
     mEnvironments[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtEnvironmentBinding);
     mMaterials[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtMaterialsBinding);
+    mMediumNodes[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtMediumNodesBinding);
     for (const DrawRange& range : mRanges) {
       p.setUniform("uTextured", GLint{range.material >= 0 ? 1 : 0});
       if (range.material >= 0) mTextures[c][static_cast<std::size_t>(range.material)].bind(shared::kPrtReflectanceTextureUnit);
@@ -277,6 +322,7 @@ std::size_t PrtPass::gpuMemoryBytes() const {
   std::size_t bytes = mVertices.sizeBytes() + mIndices.sizeBytes() + mTransfer.sizeBytes();
   for (const gpu::Buffer& b : mEnvironments) bytes += b.sizeBytes();
   for (const gpu::Buffer& b : mMaterials) bytes += b.sizeBytes();
+  for (const gpu::Buffer& b : mMediumNodes) bytes += b.sizeBytes();
   for (const std::vector<gpu::Texture2DArray>& perMaterial : mTextures)
     for (const gpu::Texture2DArray& t : perMaterial) bytes += t.sizeBytes();
   return bytes;

@@ -10,6 +10,12 @@
 // RGB-PRT are one draw each; the 5 nm reference six, one per chunk of ≤ 16 wavelengths, summed by
 // the blending.
 //
+// Inside the scene's technique medium (the water: TechniqueSection::medium) the fragment shader
+// dims each projection's sum by the medium's transmittance at the projection's nodes
+// (shaders/shared/prt_medium.glsl): the environment through e^(−Kd·depth), the view ray through
+// e^(−σt·path), as the lighting pass dims the scene's other surfaces; the spectral basis then also
+// holds the environment as the medium leaves it (attenuatedSpectra).
+//
 // Textured materials (a spectral texture, or an RGB base colour texture upsampled per texel) draw
 // R̂ from an m-layer RGBA16F array texture instead (prt_texture.h), sampled at the interpolated uv
 // with mipmaps; the draws go mesh range by mesh range, untextured neighbours together.
@@ -22,6 +28,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +39,7 @@
 #include "gpu/vertex_array.h"
 #include "gpu/texture.h"
 #include "techniques/prt/prt_evaluation.h"
+#include "techniques/prt/prt_medium.h"
 #include "techniques/prt/prt_texture.h"
 #include "techniques/technique_pass.h"
 
@@ -52,6 +60,10 @@ struct PrtDrawData final : TechniqueTexels {
   std::vector<Eigen::MatrixXd> reflectanceMaps;  // per projection, its W (prt_texture.h), when a texture is drawn
   int basisCount = 0;                       // spectral: m after clamping to the basis's size
   double capturedEnergy = 0.0;              // spectral: of the m functions
+  // The scene's technique medium (the water) the objects are dimmed by, if any, and per
+  // projection its nodes (prt_medium.h; with no medium they are uploaded but unused).
+  std::optional<PrtMedium> medium;
+  std::vector<std::vector<shared::PrtMediumNode>> mediumNodes;
 };
 
 class PrtPass final : public TechniquePass {
@@ -70,6 +82,7 @@ class PrtPass final : public TechniquePass {
  private:
   void prepareGeometry(const Scene& scene);
   void prepareProjections(const ForwardDrawInput& input);
+  void prepareMediumNodes();
   const gpu::Program& program(int basisCount);
 
   // Indices [first, first + count) of one material, or of untextured materials together.
@@ -85,7 +98,7 @@ class PrtPass final : public TechniquePass {
   std::string mProjectionKey;  // what the projections were made from
   gpu::Buffer mVertices, mIndices, mTransfer;
   gpu::VertexArray mVertexArray;
-  std::vector<gpu::Buffer> mEnvironments, mMaterials;  // one each per projection
+  std::vector<gpu::Buffer> mEnvironments, mMaterials, mMediumNodes;  // one each per projection
   std::vector<std::vector<gpu::Texture2DArray>> mTextures;  // per projection, per material (textured ones)
   std::map<int, gpu::Program> mPrograms;               // per basis count
 };

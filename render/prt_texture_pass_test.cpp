@@ -69,17 +69,20 @@ bool uniformTexels(const prt::PrtDrawData& d, const Hit& hit) {
   return true;
 }
 
-TEST_P(PrtTexturedParity, MagnifiedTexelsAgreeWithTheTwin) {
+// Under water (`sets`: a water section) the textured materials take ρ from R̂'s projection at the
+// nodes (shared/prt_medium.glsl), dimmed; the twin does the same.
+void expectMagnifiedTexelsAgreeWithTheTwin(const PrtModeCase& mode, const std::vector<std::string>& sets) {
   gpu::HeadlessContext context;
-  Scene scene = loadScene(std::filesystem::path(PRISM_SCENES_DIR) / "prt_textures.json");
-  scene.techniques.find<prt::PrtSection>()->mode = GetParam().mode;
+  Scene scene = loadScene(std::filesystem::path(PRISM_SCENES_DIR) / "prt_textures.json", sets);
+  scene.techniques.find<prt::PrtSection>()->mode = mode.mode;
   scene.camera.position = glm::vec3(3.0f, 1.4f, 6.4f);
   scene.camera.target = glm::vec3(3.0f, 0.8f, 4.2f);
-  const FrameSettings settings = prtTwinSettings(GetParam(), 480, 270);
+  const FrameSettings settings = prtTwinSettings(mode, 480, 270);
   Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   auto data = std::dynamic_pointer_cast<const prt::PrtDrawData>(renderer.techniquePass(prt::PrtSection::kKey)->readTexels());
   ASSERT_TRUE(data);
+  ASSERT_EQ(data->medium.has_value(), !sets.empty());
   ASSERT_EQ(data->textures.size(), 3u);
   for (const auto& texture : data->textures) ASSERT_TRUE(texture);
   std::vector<float> lit = gpu::readTexture2DFloat(renderer.accumulation(), 4);
@@ -116,13 +119,19 @@ TEST_P(PrtTexturedParity, MagnifiedTexelsAgreeWithTheTwin) {
     materials.insert(data->vertexMaterial[data->indices[hit->triangle]]);
     ++compared;
   }
-  std::printf("textured PRT %s (frame %s): %d magnified pixels of %zu materials; relative error max %.3g, "
+  std::printf("textured PRT %s (frame %s)%s: %d magnified pixels of %zu materials; relative error max %.3g, "
               "at most %.2f of its bound\n",
-              std::string(prt::prtModeName(GetParam().mode)).c_str(),
-              std::string(renderModeName(GetParam().frameMode)).c_str(), compared, materials.size(), worst, worstShare);
+              std::string(prt::prtModeName(mode.mode)).c_str(), std::string(renderModeName(mode.frameMode)).c_str(),
+              sets.empty() ? "" : " under water", compared, materials.size(), worst, worstShare);
   EXPECT_GT(compared, 100);
   EXPECT_EQ(materials.size(), 3u);
   EXPECT_LE(worstShare, 1.0);
+}
+
+TEST_P(PrtTexturedParity, MagnifiedTexelsAgreeWithTheTwin) { expectMagnifiedTexelsAgreeWithTheTwin(GetParam(), {}); }
+
+TEST_P(PrtTexturedParity, MagnifiedTexelsAgreeWithTheTwinUnderWater) {
+  expectMagnifiedTexelsAgreeWithTheTwin(GetParam(), {R"(water={"type": "IB", "depth": 1})"});
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, PrtTexturedParity, prtModeCases(), prtModeCaseName);

@@ -3,8 +3,9 @@
 // (shared/prt.glsl's prtXyz) over the interpolated irradiance, added to the accumulation with
 // alpha 0 (the lighting pass counted the frame; it left this pixel black). R̂ is the material's,
 // or for a textured material its texture's layers at the fragment's uv (filtered: R̂ is linear in
-// the reflectance). Inside the scene's medium (the water) each wavelength node of the projection
-// is dimmed by its transmittance (shared/prt_medium.glsl).
+// the reflectance). Inside the scene's medium (the water) the sum runs over the projection's
+// wavelength nodes, each dimmed by its transmittance (shared/prt_medium.glsl), with an untextured
+// material's exact reflectance per node.
 #include "shared/prelude.glsl"
 #include "shared/spherical_harmonics.glsl"
 #include "shared/prt.glsl"
@@ -13,6 +14,7 @@
 layout(std430, binding = kPrtMaterialsBinding) readonly buffer Materials { PrtGpuMaterial materials[]; };
 layout(binding = kPrtReflectanceTextureUnit) uniform sampler2DArray uReflectanceTexture;
 layout(std430, binding = kPrtMediumNodesBinding) readonly buffer MediumNodes { PrtMediumNode mediumNodes[]; };
+layout(std430, binding = kPrtNodeReflectancesBinding) readonly buffer NodeReflectances { vec4 nodeReflectances[]; };
 uniform int uTextured;  // 1: R̂ from uReflectanceTexture
 uniform int uMediumNodeCount;  // 0: no medium
 uniform vec3 uMediumBoxMin;
@@ -43,8 +45,10 @@ void main() {
   float depth = prtMediumDepth(vPositionW, uMediumBoxMin, uMediumBoxMax);
   vec3 xyz = vec3(0.0);
   for (int q = 0; q < uMediumNodeCount; ++q) {
+    vec3 rho = uTextured != 0 ? prtNodeReflectance(r, PRISM_PRT_BASIS_COUNT, mediumNodes[q])
+                              : nodeReflectances[int(vMaterial) * uMediumNodeCount + q].xyz;
     xyz += prtMediumTransmittance(mediumNodes[q], path, depth) *
-           prtMediumNodeXyz(e, r, PRISM_PRT_BASIS_COUNT, mediumNodes[q]);
+           prtNodeIrradiance(e, PRISM_PRT_BASIS_COUNT, mediumNodes[q]) * rho;
   }
   oTristimulus = vec4(xyz, 0.0);
 }

@@ -4,17 +4,23 @@
 // fills a box; a point at depth z below the box's top receives the distant environment through
 // e^(−Kd·z) (the diffuse attenuation of light from above; σt for a medium that gives no Kd), and
 // the camera sees it through e^(−σt·s), s the length of the view segment inside the box. With
-// T(λ) their product, the fragment's tristimulus is
-//   XYZ = Σ_q T(λ_q)·(Σ_j Ê_j a_qj)·(Σ_k R̂_k a_qk)
-// over the projection's nodes q (prt_evaluation.h's PrtProjection::nodes): for spectral PRT the
-// 81 grid wavelengths with a_qj = φ_j(λ_q), on which the basis is orthonormal, so that T ≡ 1 gives
-// prtXyz back; for the 5 nm reference its chunk's wavelengths, a_q the q-th delta (T exact per
-// wavelength); for RGB-PRT the wavelengths R, G and B stand for. It is Êᵀ·M(T)·R̂ with
-// M_jk = Σ_q T(λ_q)·a_qj·a_qk, the medium's product projected back on the basis. The medium's
-// light scattered into the view ray is the lighting pass's (the scene's directional lights).
+// T(λ) their product, the fragment's tristimulus is a sum over the projection's nodes q
+// (prt_evaluation.h's PrtProjection):
+//   XYZ = Σ_q T(λ_q)·e_q·ρ_q,   e_q = Σ_j Ê_j a_qj   (the irradiance at λ_q),
+// for spectral PRT the 81 grid wavelengths with a_qj = φ_j(λ_q), on which the basis is
+// orthonormal; for the 5 nm reference its chunk's wavelengths, a_q the q-th delta; for RGB-PRT
+// the wavelengths R, G and B stand for. The reflectance side ρ_q is, for an untextured material,
+// f_r(λ_q)·c̄(λ_q)·5 nm itself (RGB-PRT: its R̂_q), so the sum is exact wherever the light E lies
+// in the basis's span, whatever T; a textured material has only its projection R̂, and takes
+// ρ_q = Σ_k R̂_k a_qk: then the sum is Êᵀ·M(T)·R̂, M_jk = Σ_q T(λ_q)·a_qj·a_qk, exact only where
+// T·E lies in the span too (which is why the basis takes attenuated light among its columns).
+// With T ≡ 1 both give prtXyz back. The medium's light scattered into the view ray is the
+// lighting pass's (the scene's directional lights).
 
-// Per node, an std430 storage buffer of the forward pass (80 bytes, as in C++).
+// Per node, an std430 storage buffer of the forward pass (80 bytes, as in C++); and per material
+// and node its ρ_q (vec4s: .xyz, at material · nodeCount + q).
 const int kPrtMediumNodesBinding = 10;
+const int kPrtNodeReflectancesBinding = 11;
 struct PrtMediumNode {
   vec4 a[4];          // a_qj for j < 16: a[j / 4][j % 4]
   vec4 coefficients;  // σt (1/m), Kd (1/m), λ (nm), 0
@@ -53,15 +59,16 @@ PRISM_INLINE float prtMediumTransmittance(IN(PrtMediumNode) node, float viewPath
   return exp(-node.coefficients.x * viewPathM - node.coefficients.y * depthM);
 }
 
-// (Σ_j Ê_j a_qj)·(Σ_k R̂_k a_qk) over j, k < basisCount: node q's term before T.
-PRISM_INLINE vec3 prtMediumNodeXyz(IN(PrtBasisIrradiance) irradiance, IN(PrtReflectance) reflectance, int basisCount,
-                                   IN(PrtMediumNode) node) {
+// e_q = Σ_j Ê_j a_qj over j < basisCount.
+PRISM_INLINE float prtNodeIrradiance(IN(PrtBasisIrradiance) irradiance, int basisCount, IN(PrtMediumNode) node) {
   float e = 0.0f;
+  for (int j = 0; j < basisCount; ++j) e += irradiance.e[j] * prtNodeBasis(node, j);
+  return e;
+}
+
+// A textured material's ρ_q: its projection, Σ_k R̂_k a_qk over k < basisCount.
+PRISM_INLINE vec3 prtNodeReflectance(IN(PrtReflectance) reflectance, int basisCount, IN(PrtMediumNode) node) {
   vec3 r = vec3(0.0f);
-  for (int j = 0; j < basisCount; ++j) {
-    float a = prtNodeBasis(node, j);
-    e += irradiance.e[j] * a;
-    r += reflectance.r[j] * a;
-  }
-  return e * r;
+  for (int k = 0; k < basisCount; ++k) r += reflectance.r[k] * prtNodeBasis(node, k);
+  return r;
 }

@@ -38,6 +38,14 @@ shared::PrtEnvironment environmentBlock(const Eigen::MatrixXd& rows) {  // n × 
   return e;
 }
 
+// The rows of an n × 3 matrix as vec3s.
+std::vector<glm::vec3> nodeRows(const Eigen::MatrixXd& rows) {
+  std::vector<glm::vec3> v;
+  for (Eigen::Index q = 0; q < rows.rows(); ++q)
+    v.emplace_back(static_cast<float>(rows(q, 0)), static_cast<float>(rows(q, 1)), static_cast<float>(rows(q, 2)));
+  return v;
+}
+
 // XYZ per vertex for one projection, through the shared run-time sums.
 void accumulate(const PrtObject& object, const std::vector<shared::Sh25>& transfer, const PrtProjection& projection,
                 std::vector<Eigen::Vector3d>& xyz) {
@@ -183,8 +191,9 @@ PrtProjection projectSpectral(const std::vector<Spectrum>& reflectances, const E
   p.nodeBasis = basis;
   for (const Spectrum& s : reflectances) {  // R̂ (3 × m): Σ_i φ_j(λ_i) f_r(λ_i) c̄(λ_i) · 5 nm
     Eigen::VectorXd rho = sampleOnGrid(s);
-    p.reflectances.push_back(
-        reflectanceBlock((cmf.array().colwise() * rho.array()).matrix().transpose() * basis * kGridStepNm));
+    const Eigen::MatrixXd rhoCmf = (cmf.array().colwise() * rho.array()).matrix() * kGridStepNm;  // 81 × 3
+    p.reflectances.push_back(reflectanceBlock(rhoCmf.transpose() * basis));
+    p.nodeReflectances.push_back(nodeRows(rhoCmf));
   }
   return p;
 }
@@ -205,6 +214,7 @@ PrtProjection projectRgb(const std::vector<Spectrum>& reflectances, const Eigen:
   for (const Spectrum& s : reflectances) {  // R̂_c = albedo_c · (primary c's XYZ)
     Eigen::Vector3d albedo = space.xyzToRgb * reflectanceTristimulus(observer, s, white);
     p.reflectances.push_back(reflectanceBlock(space.rgbToXyz * albedo.asDiagonal()));
+    p.nodeReflectances.push_back(nodeRows((space.rgbToXyz * albedo.asDiagonal()).transpose()));
   }
   return p;
 }
@@ -222,8 +232,10 @@ std::vector<PrtProjection> projectReference(const std::vector<Spectrum>& reflect
     p.nodeBasis = Eigen::MatrixXd::Identity(p.basisCount, p.basisCount);
     for (const Spectrum& s : reflectances) {
       Eigen::VectorXd rho = sampleOnGrid(s).segment(first, p.basisCount);
-      p.reflectances.push_back(reflectanceBlock(
-          (cmf.middleRows(first, p.basisCount).array().colwise() * rho.array()).matrix().transpose() * kGridStepNm));
+      const Eigen::MatrixXd rhoCmf =
+          (cmf.middleRows(first, p.basisCount).array().colwise() * rho.array()).matrix() * kGridStepNm;
+      p.reflectances.push_back(reflectanceBlock(rhoCmf.transpose()));
+      p.nodeReflectances.push_back(nodeRows(rhoCmf));
     }
   }
   return chunks;

@@ -102,6 +102,8 @@ struct PrtProjection {
   // node q at nodeWavelengthsNm[q] with a_qj = nodeBasis(q, j) (j < basisCount).
   std::vector<double> nodeWavelengthsNm;
   Eigen::MatrixXd nodeBasis;
+  // Per reflectance, per node, its ρ_q: f_r(λ_q)·c̄(λ_q)·5 nm (RGB-PRT: R̂_q).
+  std::vector<std::vector<glm::vec3>> nodeReflectances;
 };
 // Spectral PRT: L̃ = Φᵀ L, R̂_j = Σ_i φ_j(λ_i) f_r(λ_i) c̄(λ_i) · 5 nm; basis 81 × m, m ≤ 16.
 PrtProjection projectSpectral(const std::vector<Spectrum>& reflectances, const Eigen::MatrixXd& environmentGrid,

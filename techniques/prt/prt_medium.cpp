@@ -34,14 +34,18 @@ std::vector<shared::PrtMediumNode> mediumNodes(const PrtProjection& projection, 
 }
 
 glm::vec3 prtXyzThroughMedium(const shared::PrtBasisIrradiance& irradiance, const shared::PrtReflectance& reflectance,
-                              int basisCount, const std::vector<shared::PrtMediumNode>& nodes, const PrtMedium& medium,
+                              int basisCount, const std::vector<shared::PrtMediumNode>& nodes,
+                              const std::vector<glm::vec3>* nodeReflectances, const PrtMedium& medium,
                               const glm::vec3& camera, const glm::vec3& point) {
+  PRISM_CHECK(!nodeReflectances || nodeReflectances->size() == nodes.size());
   const float path = shared::prtMediumViewPath(camera, point, medium.boxMin, medium.boxMax);
   const float depth = shared::prtMediumDepth(point, medium.boxMin, medium.boxMax);
   glm::vec3 xyz(0.0f);
-  for (const shared::PrtMediumNode& node : nodes)
-    xyz += shared::prtMediumTransmittance(node, path, depth) *
-           shared::prtMediumNodeXyz(irradiance, reflectance, basisCount, node);
+  for (std::size_t q = 0; q < nodes.size(); ++q) {
+    const glm::vec3 rho = nodeReflectances ? (*nodeReflectances)[q] : shared::prtNodeReflectance(reflectance, basisCount, nodes[q]);
+    xyz += shared::prtMediumTransmittance(nodes[q], path, depth) *
+           shared::prtNodeIrradiance(irradiance, basisCount, nodes[q]) * rho;
+  }
   return xyz;
 }
 

@@ -25,17 +25,21 @@ struct PrtMedium {
 
 // Columns for the SVD basis of a scene inside the medium: each environment spectrum (on the 5 nm
 // grid) through e^(−σt·s − Kd·z) for view paths s and depths z on {0, 1, 2, 4, 8, 16, 32} m, the
-// pair (0, 0) left out. The node sum is exact where T·E lies in the basis's span as E does
-// (prt_medium.glsl), so the basis holds the light as the medium leaves it too.
+// pair (0, 0) left out. A textured material's node sum is exact only where T·E lies in the
+// basis's span as E does (prt_medium.glsl), so its basis holds the light as the medium leaves it
+// too.
 std::vector<Eigen::VectorXd> attenuatedSpectra(const std::vector<Eigen::VectorXd>& environment, const PrtMedium& medium);
 
 // The projection's nodes with the medium's σt and Kd at their wavelengths (no medium: zeros, T ≡ 1).
 std::vector<shared::PrtMediumNode> mediumNodes(const PrtProjection& projection, const PrtMedium* medium);
 
 // The fragment shader's tristimulus of one projection at a point seen from `camera`:
-// Σ_q T(λ_q)·prtMediumNodeXyz over the nodes.
+// Σ_q T(λ_q)·e_q·ρ_q over the nodes, ρ_q from `nodeReflectances` (an untextured material's
+// exact one, PrtProjection::nodeReflectances) or, when null, from the projection R̂ (a textured
+// material's).
 glm::vec3 prtXyzThroughMedium(const shared::PrtBasisIrradiance& irradiance, const shared::PrtReflectance& reflectance,
-                              int basisCount, const std::vector<shared::PrtMediumNode>& nodes, const PrtMedium& medium,
+                              int basisCount, const std::vector<shared::PrtMediumNode>& nodes,
+                              const std::vector<glm::vec3>* nodeReflectances, const PrtMedium& medium,
                               const glm::vec3& camera, const glm::vec3& point);
 
 }  // namespace prism::prt

@@ -215,7 +215,9 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
     std::vector<Eigen::VectorXd> light;
     for (const EnvironmentTerm& t : environment.terms) light.push_back(sampleOnGrid(t.spectrum));
     spectra.insert(spectra.end(), light.begin(), light.end());
-    if (d.medium)
+    // Textured materials take ρ from R̂'s projection, which needs the light as the medium leaves
+    // it in the span; untextured ones take it exact per node and do better without (prt_medium.glsl).
+    if (d.medium && std::any_of(textures.begin(), textures.end(), [](const auto& t) { return t != nullptr; }))
       for (Eigen::VectorXd& s : attenuatedSpectra(light, *d.medium)) spectra.push_back(std::move(s));
     SpectralBasis basis(spectra);
     basisCount = std::min(section.basis, basis.available());
@@ -235,7 +237,7 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
   const bool textured = std::any_of(textures.begin(), textures.end(), [](const auto& t) { return t != nullptr; });
   std::vector<Eigen::MatrixXd> maps = textured ? gridReflectanceMaps(project) : std::vector<Eigen::MatrixXd>{};
   // Built whole before anything is replaced.
-  std::vector<gpu::Buffer> environments, materials;
+  std::vector<gpu::Buffer> environments, materials, nodeReflectances;
   std::vector<std::vector<gpu::Texture2DArray>> arrays(projections.size());
   for (std::size_t c = 0; c < projections.size(); ++c) {
     const PrtProjection& p = projections[c];
@@ -243,6 +245,10 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
     std::vector<shared::PrtGpuMaterial> packed;
     for (const shared::PrtReflectance& r : p.reflectances) packed.push_back(shared::prtGpuMaterial(r));
     materials.push_back(bufferOf(std::span<const shared::PrtGpuMaterial>(packed), "PRT materials"));
+    std::vector<glm::vec4> rho;  // material · nodeCount + q
+    for (const std::vector<glm::vec3>& perMaterial : p.nodeReflectances)
+      for (const glm::vec3& r : perMaterial) rho.emplace_back(r, 0.0f);
+    nodeReflectances.push_back(bufferOf(std::span<const glm::vec4>(rho), "PRT node reflectances"));
     arrays[c].resize(textures.size());
     for (std::size_t m = 0; m < textures.size(); ++m) {
       if (!textures[m]) continue;
@@ -263,6 +269,7 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
   }
   mEnvironments = std::move(environments);
   mMaterials = std::move(materials);
+  mNodeReflectances = std::move(nodeReflectances);
   mTextures = std::move(arrays);
   d.projections = std::move(projections);
   d.textures = std::move(textures);
@@ -310,6 +317,7 @@ void PrtPass::drawForward(const ForwardDrawInput& input) {
     mEnvironments[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtEnvironmentBinding);
     mMaterials[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtMaterialsBinding);
     mMediumNodes[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtMediumNodesBinding);
+    mNodeReflectances[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtNodeReflectancesBinding);
     for (const DrawRange& range : mRanges) {
       p.setUniform("uTextured", GLint{range.material >= 0 ? 1 : 0});
       if (range.material >= 0) mTextures[c][static_cast<std::size_t>(range.material)].bind(shared::kPrtReflectanceTextureUnit);
@@ -323,6 +331,7 @@ std::size_t PrtPass::gpuMemoryBytes() const {
   for (const gpu::Buffer& b : mEnvironments) bytes += b.sizeBytes();
   for (const gpu::Buffer& b : mMaterials) bytes += b.sizeBytes();
   for (const gpu::Buffer& b : mMediumNodes) bytes += b.sizeBytes();
+  for (const gpu::Buffer& b : mNodeReflectances) bytes += b.sizeBytes();
   for (const std::vector<gpu::Texture2DArray>& perMaterial : mTextures)
     for (const gpu::Texture2DArray& t : perMaterial) bytes += t.sizeBytes();
   return bytes;

@@ -13,8 +13,10 @@
 // Inside the scene's technique medium (the water: TechniqueSection::medium) the fragment shader
 // dims each projection's sum by the medium's transmittance at the projection's nodes
 // (shaders/shared/prt_medium.glsl): the environment through e^(−Kd·depth), the view ray through
-// e^(−σt·path), as the lighting pass dims the scene's other surfaces; the spectral basis then also
-// holds the environment as the medium leaves it (attenuatedSpectra).
+// e^(−σt·path), as the lighting pass dims the scene's other surfaces, with each untextured
+// material's exact reflectance at the nodes (a fourth buffer); when textured materials are drawn
+// the spectral basis also holds the environment as the medium leaves it (attenuatedSpectra),
+// which their projected reflectance needs.
 //
 // Textured materials (a spectral texture, or an RGB base colour texture upsampled per texel) draw
 // R̂ from an m-layer RGBA16F array texture instead (prt_texture.h), sampled at the interpolated uv
@@ -98,7 +100,7 @@ class PrtPass final : public TechniquePass {
   std::string mProjectionKey;  // what the projections were made from
   gpu::Buffer mVertices, mIndices, mTransfer;
   gpu::VertexArray mVertexArray;
-  std::vector<gpu::Buffer> mEnvironments, mMaterials, mMediumNodes;  // one each per projection
+  std::vector<gpu::Buffer> mEnvironments, mMaterials, mNodeReflectances, mMediumNodes;  // one each per projection
   std::vector<std::vector<gpu::Texture2DArray>> mTextures;  // per projection, per material (textured ones)
   std::map<int, gpu::Program> mPrograms;               // per basis count
 };

@@ -6,6 +6,8 @@
 #                                   the CPU's columns) and 1024² (the march, not launches)
 #   prt.json                        issue 14: spectral PRT (m = 8) against RGB-PRT at 1920×1080 on
 #                                   the 100k-vertex terrain (techniques.prt.ratio_spectral8_to_rgb_prt)
+#   prt_water.json                  PRT under water: the same terrain in Jerlov IB, the water's 16
+#                                   wet / 16 dry frame ratio (techniques.water), the PRT pass's nodes
 #   spheres.json                    issue 16: the wavelength strategies' frame cost (strategies_16),
 #                                   and the frame time against the wavelength count at 1920×1080
 #   gpu.txt                         the GL renderer, and nvidia-smi where there is one
@@ -43,6 +45,9 @@ grep -m1 'GPU:' "$out/nebula_64.txt" >>"$out/gpu.txt"
 step "issue 14: spectral PRT against RGB-PRT, ${width}x${height}, 100k vertices"
 "$prism" bench bench/scenes/prt_terrain_100k.json --width "$width" --height "$height" --wavelengths 16 \
   --frames "$frames" --rounds "$rounds" --warmup 3 --json >"$out/prt.json"
+step "PRT under water, ${width}x${height}, 100k vertices"
+"$prism" bench bench/scenes/prt_terrain_100k_water.json --width "$width" --height "$height" --wavelengths 16 \
+  --frames "$frames" --rounds "$rounds" --warmup 3 --json >"$out/prt_water.json"
 step "issue 16: wavelength strategies and the wavelength count, ${width}x${height}"
 "$prism" bench scenes/spheres_d65.json --width "$width" --height "$height" --wavelengths "$wavelengths" \
   --frames "$frames" --rounds "$rounds" --warmup 3 --json >"$out/spheres.json"

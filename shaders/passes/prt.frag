@@ -37,12 +37,12 @@ void main() {
   } else {
     r = prtReflectance(materials[vMaterial]);
   }
-  if (uMediumNodeCount == 0) {
+  float path = uMediumNodeCount == 0 ? 0.0 : prtMediumViewPath(uCameraPositionW, vPositionW, uMediumBoxMin, uMediumBoxMax);
+  float depth = uMediumNodeCount == 0 ? 0.0 : prtMediumDepth(vPositionW, uMediumBoxMin, uMediumBoxMax);
+  if (path == 0.0 && depth == 0.0) {  // nothing dims: the node sum is prtXyz (prt_medium.glsl)
     oTristimulus = vec4(prtXyz(e, r, PRISM_PRT_BASIS_COUNT), 0.0);
     return;
   }
-  float path = prtMediumViewPath(uCameraPositionW, vPositionW, uMediumBoxMin, uMediumBoxMax);
-  float depth = prtMediumDepth(vPositionW, uMediumBoxMin, uMediumBoxMax);
   vec3 xyz = vec3(0.0);
   for (int q = 0; q < uMediumNodeCount; ++q) {
     vec3 rho = uTextured != 0 ? prtNodeReflectance(r, PRISM_PRT_BASIS_COUNT, mediumNodes[q])

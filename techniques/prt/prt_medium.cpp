@@ -40,6 +40,7 @@ glm::vec3 prtXyzThroughMedium(const shared::PrtBasisIrradiance& irradiance, cons
   PRISM_CHECK(!nodeReflectances || nodeReflectances->size() == nodes.size());
   const float path = shared::prtMediumViewPath(camera, point, medium.boxMin, medium.boxMax);
   const float depth = shared::prtMediumDepth(point, medium.boxMin, medium.boxMax);
+  if (path == 0.0f && depth == 0.0f) return shared::prtXyz(irradiance, reflectance, basisCount);  // as prt.frag
   glm::vec3 xyz(0.0f);
   for (std::size_t q = 0; q < nodes.size(); ++q) {
     const glm::vec3 rho = nodeReflectances ? (*nodeReflectances)[q] : shared::prtNodeReflectance(reflectance, basisCount, nodes[q]);

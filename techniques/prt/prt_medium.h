@@ -36,7 +36,7 @@ std::vector<shared::PrtMediumNode> mediumNodes(const PrtProjection& projection, 
 // The fragment shader's tristimulus of one projection at a point seen from `camera`:
 // Σ_q T(λ_q)·e_q·ρ_q over the nodes, ρ_q from `nodeReflectances` (an untextured material's
 // exact one, PrtProjection::nodeReflectances) or, when null, from the projection R̂ (a textured
-// material's).
+// material's). Where nothing dims (no path, no depth in the medium) it is prtXyz, as in prt.frag.
 glm::vec3 prtXyzThroughMedium(const shared::PrtBasisIrradiance& irradiance, const shared::PrtReflectance& reflectance,
                               int basisCount, const std::vector<shared::PrtMediumNode>& nodes,
                               const std::vector<glm::vec3>* nodeReflectances, const PrtMedium& medium,

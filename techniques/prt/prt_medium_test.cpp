@@ -86,8 +86,9 @@ TEST(PrtMedium, WithNothingToDimTheNodeSumIsPrtXyz) {
   // The basis is orthonormal on the grid: Σ_q a_qj a_qk = δ_jk, so T ≡ 1 gives Σ_j Ê_j R̂_j with
   // R̂'s projection; and with the exact ρ_q too, since Σ_q e_q ρ_q = ⟨PE, ρc̄⟩ = ⟨PE, P(ρc̄)⟩.
   const UnderwaterMacbeth& mb = underwaterMacbeth();
-  PrtMedium air = water("I");
-  air.boxMax = air.boxMin;  // an empty box: nothing dims
+  PrtMedium air = water("I");  // a water that absorbs nothing: the node sum runs with T ≡ 1
+  air.sigmaT = Spectrum();
+  air.kd = Spectrum();
   for (const PrtProjection& p : {projectSpectral(mb.object.reflectances, mb.grid, cie1931Observer(), macbethBasis(8)),
                                  projectRgb(mb.object.reflectances, mb.grid, cie1931Observer(), colourSpace("srgb"))}) {
     const std::vector<shared::PrtMediumNode> nodes = mediumNodes(p, &air);
@@ -98,7 +99,7 @@ TEST(PrtMedium, WithNothingToDimTheNodeSumIsPrtXyz) {
       const shared::PrtReflectance& r = p.reflectances[material];
       glm::vec3 plain = shared::prtXyz(e, r, p.basisCount);
       for (const std::vector<glm::vec3>* rho : {&p.nodeReflectances[material], static_cast<const std::vector<glm::vec3>*>(nullptr)}) {
-        glm::vec3 sum = prtXyzThroughMedium(e, r, p.basisCount, nodes, rho, air, {0, 1, 0}, {0, 0, 0});
+        glm::vec3 sum = prtXyzThroughMedium(e, r, p.basisCount, nodes, rho, air, {0, -1, 0}, {0, -2, 1});
         worst = std::max(worst, static_cast<double>(glm::length(sum - plain) / glm::length(plain)));
       }
     }

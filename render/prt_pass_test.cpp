@@ -26,6 +26,8 @@
 #include "spectral/illuminant.h"
 #include "spectral/table_test_support.h"
 #include "techniques/prt/gpu/prt_pass.h"
+#include "techniques/nebula/nebula_cpu_twin.h"
+#include "techniques/nebula/nebula_section.h"
 #include "techniques/prt/prt_section.h"
 
 namespace prism::render {
@@ -122,6 +124,59 @@ TEST_P(PrtUnderWaterParity, RandomPixelsAgreeWithTheSharedSumsThroughTheWater) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, PrtUnderWaterParity, prtModeCases(), prtModeCaseName);
+
+// Inside a nebula (scenes/nebula_field.json, its moon a PRT object under a uniform D65
+// environment; the scene's light, the nebula's emission and scattering taken out so that the
+// moon's pixels hold PRT's sums alone): the fragment shader dims each node by e^(−g/λ), g the
+// nebula's optical depth at the pixel, which the renderer binds for the forward pass as for
+// lighting; the CPU twin reads the same g back (NebulaPass::readTexels).
+TEST(PrtGpuCpuParity, PrtObjectsInsideANebulaAreDimmedByIt) {
+  gpu::HeadlessContext context;
+  Scene scene = loadScene(kExampleScenes / "nebula_field.json",
+                          {R"(prt={"environment": {"illuminant": "D65", "shape": "uniform", "luminance": 2}})",
+                           "objects.1.technique=prt", "nebula.emission=0", "nebula.scattering=0"});
+  scene.lights.clear();
+  FrameSettings settings;
+  settings.width = 160;
+  settings.height = 90;
+  settings.shadowMapSize = 256;
+  settings.display.dither = false;
+  Renderer renderer(scene, cachedTestTable(), settings);
+  renderer.renderFrame();
+  auto data = std::dynamic_pointer_cast<const prt::PrtDrawData>(renderer.techniquePass(prt::PrtSection::kKey)->readTexels());
+  auto nebula = std::dynamic_pointer_cast<const nebula::NebulaTexels>(
+      renderer.techniquePass(nebula::NebulaSection::kKey)->readTexels());
+  ASSERT_TRUE(data);
+  ASSERT_TRUE(nebula);
+  ASSERT_FALSE(data->medium);
+  const int w = settings.width, h = settings.height;
+  ASSERT_EQ(nebula->width, w);
+  ASSERT_EQ(nebula->height, h);
+  std::vector<float> lit = gpu::readTexture2DFloat(renderer.accumulation(), 4);
+  double worst = 0.0, kept = 1.0, depth = 0.0;
+  int compared = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
+      if (!hit) continue;
+      const std::size_t i = static_cast<std::size_t>(y * w + x);
+      const float g = nebula->opticalDepthUm[i];
+      const glm::dvec3 expected = cpuTristimulus(*data, *hit, renderer.cameraTransform().position, g);
+      const glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
+      const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
+      worst = std::max(worst, glm::length(actual - expected) / scale);
+      kept = std::min(kept, expected.y / cpuTristimulus(*data, *hit, renderer.cameraTransform().position).y);
+      depth = std::max(depth, static_cast<double>(g));
+      ++compared;
+    }
+  }
+  std::printf("PRT moon inside the nebula: %d pixels compared; relative error max %.3g; optical depth up to %.3f µm, "
+              "keeping down to %.3f of Y\n",
+              compared, worst, depth, kept);
+  EXPECT_GT(compared, 100);
+  EXPECT_LE(worst, 1e-4);
+  EXPECT_LT(kept, 0.9);
+}
 
 // PRT objects are lit by the scene's lights too, in the lighting pass, as Lambertian surfaces with
 // shadow maps (the sun of PRT's spectral sky is such a light): at interior pixels of the metamer

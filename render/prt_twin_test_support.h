@@ -136,9 +136,11 @@ inline shared::PrtReflectance sampledReflectance(const prt::PrtTextureSource& so
 
 // The fragment shader's sum on the CPU: Ê interpolated with the hit's barycentrics, then prtXyz,
 // for every projection (the 5 nm reference has six); a textured material's R̂ sampled at the hit.
-// Inside the scene's medium, the sum over the projection's nodes dimmed by the medium between
-// the camera and the hit, with an untextured material's exact reflectance per node (prt_medium.h).
-inline glm::dvec3 cpuTristimulus(const prt::PrtDrawData& d, const Hit& hit, const glm::vec3& cameraPositionW) {
+// Inside the scene's medium or behind `nebulaDepthUm` of its nebula (the nebula pass's optical
+// depth at the pixel), the sum over the projection's nodes dimmed by them, with an untextured
+// material's exact reflectance per node (prt_medium.h).
+inline glm::dvec3 cpuTristimulus(const prt::PrtDrawData& d, const Hit& hit, const glm::vec3& cameraPositionW,
+                                  float nebulaDepthUm = 0.0f) {
   glm::dvec3 point(0.0);
   for (int k = 0; k < 3; ++k)
     point += hit.barycentric[k] * glm::dvec3(d.positionsW[d.indices[hit.triangle + static_cast<std::size_t>(k)]]);
@@ -156,10 +158,10 @@ inline glm::dvec3 cpuTristimulus(const prt::PrtDrawData& d, const Hit& hit, cons
     const shared::PrtReflectance r =
         texture ? sampledReflectance(*texture, prt::PrtTexelProjector(*texture, d.reflectanceMaps[c]), hitUv(d, hit))
                 : p.reflectances[static_cast<std::size_t>(material)];
-    sum += glm::dvec3(d.medium ? prt::prtXyzThroughMedium(e, r, p.basisCount, d.mediumNodes[c],
-                                                          texture ? nullptr : &p.nodeReflectances[static_cast<std::size_t>(material)],
-                                                          *d.medium, cameraPositionW, glm::vec3(point))
-                               : shared::prtXyz(e, r, p.basisCount));
+    sum += glm::dvec3(prt::prtXyzThroughMedium(e, r, p.basisCount, d.mediumNodes[c],
+                                               texture ? nullptr : &p.nodeReflectances[static_cast<std::size_t>(material)],
+                                               d.medium ? &*d.medium : nullptr, cameraPositionW, glm::vec3(point),
+                                               nebulaDepthUm));
   }
   return sum;
 }

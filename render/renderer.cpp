@@ -386,6 +386,11 @@ void Renderer::forwardTechniques() {
       depthCopied = true;
     }
     hook(block.key);
+    // What the lighting pass reads of every technique, a forward pass may read too (PRT's
+    // fragments read the nebula's optical depth); another forward pass may have rebound it.
+    for (const TechniqueBlock& b : mFrame.techniques) {
+      if (const TechniquePass* p = techniquePass(b.key)) p->bindForLighting();
+    }
     mTargets.forwardTarget.bind();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);

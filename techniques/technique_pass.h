@@ -46,6 +46,9 @@ struct TechniqueFrame {
 // denominator. Tristimulus is the lighting pass's: XYZ of `observer`, or a camera's RGB when
 // `observer` is a camera's curves. Its vertex shader must declare `invariant gl_Position` and
 // compute it as gbuffer.vert does (viewProjection × world position) for the depths to be equal.
+// What every technique binds for the lighting pass (bindForLighting) is bound again before each
+// forward pass, so a pass compiled with the scene's technique defines may read it as the lighting
+// pass does (PRT's fragments read the nebula's optical depth).
 struct ForwardDrawInput {
   const Scene& scene;
   const CameraTransform& camera;

@@ -1,10 +1,12 @@
 // Requires: spherical_harmonics.glsl prt.glsl
-// PRT objects inside a medium (the scene's water: TechniqueSection::medium), dimmed as the
-// lighting pass dims the rest of the scene (underwater.glsl), in PRT's spectral basis. The medium
-// fills a box; a point at depth z below the box's top receives the distant environment through
-// e^(−Kd·z) (the diffuse attenuation of light from above; σt for a medium that gives no Kd), and
-// the camera sees it through e^(−σt·s), s the length of the view segment inside the box. With
-// T(λ) their product, the fragment's tristimulus is a sum over the projection's nodes q
+// PRT objects inside a medium (the scene's water: TechniqueSection::medium) or behind a nebula,
+// dimmed as the lighting pass dims the rest of the scene (underwater.glsl, nebula_lighting.glsl),
+// in PRT's spectral basis. The medium fills a box; a point at depth z below the box's top
+// receives the distant environment through e^(−Kd·z) (the diffuse attenuation of light from
+// above; σt for a medium that gives no Kd), and the camera sees it through e^(−σt·s), s the
+// length of the view segment inside the box; a nebula's optical depth g in front of it (µm, its
+// march's) dims it by e^(−g/λ). With T(λ) their product, the fragment's tristimulus is a sum over
+// the projection's nodes q
 // (prt_evaluation.h's PrtProjection):
 //   XYZ = Σ_q T(λ_q)·e_q·ρ_q,   e_q = Σ_j Ê_j a_qj   (the irradiance at λ_q),
 // for spectral PRT the 81 grid wavelengths with a_qj = φ_j(λ_q), on which the basis is
@@ -54,9 +56,10 @@ PRISM_INLINE float prtMediumDepth(IN(vec3) point, IN(vec3) boxMin, IN(vec3) boxM
   return boxMax.y - point.y;
 }
 
-// T(λ_q) = e^(−σt·viewPath − Kd·depth).
-PRISM_INLINE float prtMediumTransmittance(IN(PrtMediumNode) node, float viewPathM, float depthM) {
-  return exp(-node.coefficients.x * viewPathM - node.coefficients.y * depthM);
+// T(λ_q) = e^(−σt·viewPath − Kd·depth − g/λ_q), g the nebula's optical depth in µm.
+PRISM_INLINE float prtMediumTransmittance(IN(PrtMediumNode) node, float viewPathM, float depthM, float nebulaDepthUm) {
+  return exp(-node.coefficients.x * viewPathM - node.coefficients.y * depthM -
+             nebulaDepthUm * 1000.0f / node.coefficients.z);
 }
 
 // e_q = Σ_j Ê_j a_qj over j < basisCount.

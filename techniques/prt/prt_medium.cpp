@@ -35,16 +35,17 @@ std::vector<shared::PrtMediumNode> mediumNodes(const PrtProjection& projection, 
 
 glm::vec3 prtXyzThroughMedium(const shared::PrtBasisIrradiance& irradiance, const shared::PrtReflectance& reflectance,
                               int basisCount, const std::vector<shared::PrtMediumNode>& nodes,
-                              const std::vector<glm::vec3>* nodeReflectances, const PrtMedium& medium,
-                              const glm::vec3& camera, const glm::vec3& point) {
+                              const std::vector<glm::vec3>* nodeReflectances, const PrtMedium* medium,
+                              const glm::vec3& camera, const glm::vec3& point, float nebulaDepthUm) {
   PRISM_CHECK(!nodeReflectances || nodeReflectances->size() == nodes.size());
-  const float path = shared::prtMediumViewPath(camera, point, medium.boxMin, medium.boxMax);
-  const float depth = shared::prtMediumDepth(point, medium.boxMin, medium.boxMax);
-  if (path == 0.0f && depth == 0.0f) return shared::prtXyz(irradiance, reflectance, basisCount);  // as prt.frag
+  const float path = medium ? shared::prtMediumViewPath(camera, point, medium->boxMin, medium->boxMax) : 0.0f;
+  const float depth = medium ? shared::prtMediumDepth(point, medium->boxMin, medium->boxMax) : 0.0f;
+  if (path == 0.0f && depth == 0.0f && nebulaDepthUm <= 0.0f)
+    return shared::prtXyz(irradiance, reflectance, basisCount);  // as prt.frag
   glm::vec3 xyz(0.0f);
   for (std::size_t q = 0; q < nodes.size(); ++q) {
     const glm::vec3 rho = nodeReflectances ? (*nodeReflectances)[q] : shared::prtNodeReflectance(reflectance, basisCount, nodes[q]);
-    xyz += shared::prtMediumTransmittance(nodes[q], path, depth) *
+    xyz += shared::prtMediumTransmittance(nodes[q], path, depth, nebulaDepthUm) *
            shared::prtNodeIrradiance(irradiance, basisCount, nodes[q]) * rho;
   }
   return xyz;

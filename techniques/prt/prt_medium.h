@@ -1,5 +1,6 @@
-// PRT objects inside a medium (the scene's water), on the CPU side: the medium's coefficients at
-// each projection's nodes for the forward pass's buffer, and the fragment shader's sum over them
+// PRT objects inside a medium (the scene's water) or behind a nebula, on the CPU side: the
+// medium's coefficients at each projection's nodes for the forward pass's buffer, and the
+// fragment shader's sum over them
 // (shaders/shared/prt_medium.glsl says what the sum is and why it is exact for the 5 nm
 // reference and reduces to prtXyz for spectral PRT when nothing dims).
 #pragma once
@@ -33,13 +34,14 @@ std::vector<Eigen::VectorXd> attenuatedSpectra(const std::vector<Eigen::VectorXd
 // The projection's nodes with the medium's σt and Kd at their wavelengths (no medium: zeros, T ≡ 1).
 std::vector<shared::PrtMediumNode> mediumNodes(const PrtProjection& projection, const PrtMedium* medium);
 
-// The fragment shader's tristimulus of one projection at a point seen from `camera`:
-// Σ_q T(λ_q)·e_q·ρ_q over the nodes, ρ_q from `nodeReflectances` (an untextured material's
-// exact one, PrtProjection::nodeReflectances) or, when null, from the projection R̂ (a textured
-// material's). Where nothing dims (no path, no depth in the medium) it is prtXyz, as in prt.frag.
+// The fragment shader's tristimulus of one projection at a point seen from `camera`, inside the
+// medium (null: none) and behind `nebulaDepthUm` of a nebula: Σ_q T(λ_q)·e_q·ρ_q over the nodes,
+// ρ_q from `nodeReflectances` (an untextured material's exact one,
+// PrtProjection::nodeReflectances) or, when null, from the projection R̂ (a textured material's).
+// Where nothing dims it is prtXyz, as in prt.frag.
 glm::vec3 prtXyzThroughMedium(const shared::PrtBasisIrradiance& irradiance, const shared::PrtReflectance& reflectance,
                               int basisCount, const std::vector<shared::PrtMediumNode>& nodes,
-                              const std::vector<glm::vec3>* nodeReflectances, const PrtMedium& medium,
-                              const glm::vec3& camera, const glm::vec3& point);
+                              const std::vector<glm::vec3>* nodeReflectances, const PrtMedium* medium,
+                              const glm::vec3& camera, const glm::vec3& point, float nebulaDepthUm = 0.0f);
 
 }  // namespace prism::prt

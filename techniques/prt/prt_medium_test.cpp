@@ -53,7 +53,7 @@ enum class Side { Exact, Projected };
 // Per vertex, the fragment shader's sum over the projections' nodes, the object `depth` metres
 // under the surface and seen through `path` metres of water.
 std::vector<Eigen::Vector3d> throughWater(const std::vector<PrtProjection>& projections, const PrtMedium& medium,
-                                          float depth, float path, Side side = Side::Exact) {
+                                          float depth, float path, Side side = Side::Exact, float nebulaDepthUm = 0.0f) {
   const UnderwaterMacbeth& mb = underwaterMacbeth();
   std::vector<Eigen::Vector3d> xyz(mb.transfer.size(), Eigen::Vector3d::Zero());
   const glm::vec3 point(0.0f, -depth, 0.0f), camera(0.0f, -depth, path);
@@ -63,7 +63,8 @@ std::vector<Eigen::Vector3d> throughWater(const std::vector<PrtProjection>& proj
       shared::PrtBasisIrradiance e = shared::prtVertexIrradiance(p.environment, mb.transfer[v], p.basisCount);
       const auto material = static_cast<std::size_t>(mb.object.vertexMaterial[v]);
       glm::vec3 c = prtXyzThroughMedium(e, p.reflectances[material], p.basisCount, nodes,
-                                        side == Side::Exact ? &p.nodeReflectances[material] : nullptr, medium, camera, point);
+                                        side == Side::Exact ? &p.nodeReflectances[material] : nullptr, &medium, camera, point,
+                                        nebulaDepthUm);
       xyz[v] += Eigen::Vector3d(c.x, c.y, c.z);
     }
   }
@@ -99,7 +100,7 @@ TEST(PrtMedium, WithNothingToDimTheNodeSumIsPrtXyz) {
       const shared::PrtReflectance& r = p.reflectances[material];
       glm::vec3 plain = shared::prtXyz(e, r, p.basisCount);
       for (const std::vector<glm::vec3>* rho : {&p.nodeReflectances[material], static_cast<const std::vector<glm::vec3>*>(nullptr)}) {
-        glm::vec3 sum = prtXyzThroughMedium(e, r, p.basisCount, nodes, rho, air, {0, -1, 0}, {0, -2, 1});
+        glm::vec3 sum = prtXyzThroughMedium(e, r, p.basisCount, nodes, rho, &air, {0, -1, 0}, {0, -2, 1});
         worst = std::max(worst, static_cast<double>(glm::length(sum - plain) / glm::length(plain)));
       }
     }
@@ -107,13 +108,14 @@ TEST(PrtMedium, WithNothingToDimTheNodeSumIsPrtXyz) {
   }
 }
 
-TEST(PrtMedium, TheReferenceThroughWaterIsTheFiveNanometreSumWrittenOut) {
-  // Σ_i e^(−σt(λ_i)·s − Kd(λ_i)·z)·E_i(v)·ρ(λ_i)·c̄(λ_i)·5 nm, E_i(v) = Σ_k L_ik T̃_k(v): no basis.
+TEST(PrtMedium, TheReferenceThroughWaterAndANebulaIsTheFiveNanometreSumWrittenOut) {
+  // Σ_i e^(−σt(λ_i)·s − Kd(λ_i)·z − g/λ_i)·E_i(v)·ρ(λ_i)·c̄(λ_i)·5 nm, E_i(v) = Σ_k L_ik T̃_k(v):
+  // no basis (g = 0.25 µm of a nebula in front, as well as the water).
   const UnderwaterMacbeth& mb = underwaterMacbeth();
   const PrtMedium m = water("II");
-  const float depth = 4.0f, path = 6.0f;
-  std::vector<Eigen::Vector3d> nodes =
-      throughWater(projectReference(mb.object.reflectances, mb.grid, cie1931Observer()), m, depth, path);
+  const float depth = 4.0f, path = 6.0f, nebula = 0.25f;
+  std::vector<Eigen::Vector3d> nodes = throughWater(projectReference(mb.object.reflectances, mb.grid, cie1931Observer()),
+                                                    m, depth, path, Side::Exact, nebula);
   const Eigen::MatrixXd cmf = observerOnGrid(cie1931Observer());
   double worst = 0.0;
   for (std::size_t v = 0; v < mb.transfer.size(); v += 5) {
@@ -123,7 +125,7 @@ TEST(PrtMedium, TheReferenceThroughWaterIsTheFiveNanometreSumWrittenOut) {
       double e = 0.0;
       for (int k = 0; k < 25; ++k) e += mb.grid(i, k) * mb.transfer[v].c[k];
       const double l = gridWavelengthNm(i);
-      const double t = std::exp(-m.sigmaT.at(l) * path - m.kd.at(l) * depth);
+      const double t = std::exp(-m.sigmaT.at(l) * path - m.kd.at(l) * depth - nebula * 1000.0 / l);
       expect += t * e * rho(i) * cmf.row(i).transpose() * kGridStepNm;
     }
     worst = std::max(worst, (nodes[v] - expect).norm() / expect.norm());
@@ -162,7 +164,7 @@ TEST(PrtMedium, ThroughJerlovWatersEightFunctionsHoldToTheReference) {
         shared::PrtBasisIrradiance e =
             shared::prtVertexIrradiance(p.environment, shared::shClampedCosine(glm::vec3(0.0f, 0.0f, 1.0f)), p.basisCount);
         glm::vec3 c = prtXyzThroughMedium(e, p.reflectances[0], p.basisCount, mediumNodes(p, &m), &p.nodeReflectances[0],
-                                          m, {0.0f, -metres, metres}, {0.0f, -metres, 0.0f});
+                                          &m, {0.0f, -metres, metres}, {0.0f, -metres, 0.0f});
         whiteXyz += Eigen::Vector3d(c.x, c.y, c.z);
       }
       const std::vector<Eigen::Vector3d> truth = throughWater(reference, m, metres, metres);

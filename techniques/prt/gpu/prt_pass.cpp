@@ -75,16 +75,25 @@ PrtPass::PrtPass() : mData(std::make_shared<PrtDrawData>()) {}
 
 void PrtPass::run(const TechniqueBlock&, const Scene&, const CameraTransform&, const TechniqueFrame&) {}
 
-const gpu::Program& PrtPass::program(int basisCount) {
-  auto it = mPrograms.find(basisCount);
+// Compiled per basis count and per set of the scene's techniques (their shader defines: the
+// fragment shader reads what the lighting pass reads of a nebula).
+const gpu::Program& PrtPass::program(int basisCount, const Scene& scene) {
+  std::vector<gpu::ShaderDefine> defines = {{"PRISM_PRT_BASIS_COUNT", std::to_string(basisCount)}};
+  std::string key = std::to_string(basisCount);
+  for (const auto& section : scene.techniques.all()) {
+    if (section->shaderDefine().empty()) continue;
+    defines.push_back({std::string(section->shaderDefine()), "1"});
+    key += fmt::format(" {}", section->shaderDefine());
+  }
+  auto it = mPrograms.find(key);
   if (it != mPrograms.end()) return it->second;
   gpu::ProgramDesc desc;
   desc.vertex = shaderDirectory() / "passes" / "prt.vert";
   desc.fragment = shaderDirectory() / "passes" / "prt.frag";
   desc.includeDirs = {shaderDirectory()};
-  desc.defines = {{"PRISM_PRT_BASIS_COUNT", std::to_string(basisCount)}};
-  desc.label = fmt::format("PRT forward pass (m = {})", basisCount);
-  return mPrograms.emplace(basisCount, gpu::Program(desc)).first->second;
+  desc.defines = std::move(defines);
+  desc.label = fmt::format("PRT forward pass (m = {})", key);
+  return mPrograms.emplace(key, gpu::Program(desc)).first->second;
 }
 
 void PrtPass::prepareGeometry(const Scene& scene) {
@@ -307,13 +316,16 @@ void PrtPass::drawForward(const ForwardDrawInput& input) {
   const std::optional<PrtMedium>& medium = mData->medium;
   mTransfer.bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtTransferBinding);
   for (std::size_t c = 0; c < mData->projections.size(); ++c) {
-    const gpu::Program& p = program(mData->projections[c].basisCount);
+    const gpu::Program& p = program(mData->projections[c].basisCount, input.scene);
     p.use();
     p.setUniform("uViewProjection", input.camera.viewProjection);
-    p.setUniform("uMediumNodeCount", GLint{medium ? static_cast<GLint>(mData->mediumNodes[c].size()) : 0});
+    p.setUniform("uMediumNodeCount", static_cast<GLint>(mData->mediumNodes[c].size()));
+    p.setUniform("uMediumBox", GLint{medium ? 1 : 0});
     p.setUniform("uMediumBoxMin", medium ? medium->boxMin : glm::vec3(0.0f));
     p.setUniform("uMediumBoxMax", medium ? medium->boxMax : glm::vec3(0.0f));
     p.setUniform("uCameraPositionW", input.camera.position);
+    if (p.hasUniform("uFrameSize"))  // read with a nebula only
+      p.setUniform("uFrameSize", glm::vec2(static_cast<float>(input.frame.width), static_cast<float>(input.frame.height)));
     mEnvironments[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtEnvironmentBinding);
     mMaterials[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtMaterialsBinding);
     mMediumNodes[c].bindBase(GL_SHADER_STORAGE_BUFFER, shared::kPrtMediumNodesBinding);

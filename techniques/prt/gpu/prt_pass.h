@@ -10,10 +10,11 @@
 // RGB-PRT are one draw each; the 5 nm reference six, one per chunk of ≤ 16 wavelengths, summed by
 // the blending.
 //
-// Inside the scene's technique medium (the water: TechniqueSection::medium) the fragment shader
-// dims each projection's sum by the medium's transmittance at the projection's nodes
+// Inside the scene's technique medium (the water: TechniqueSection::medium) or behind its nebula
+// the fragment shader dims each projection's sum by the transmittance at the projection's nodes
 // (shaders/shared/prt_medium.glsl): the environment through e^(−Kd·depth), the view ray through
-// e^(−σt·path), as the lighting pass dims the scene's other surfaces, with each untextured
+// e^(−σt·path) and the nebula's e^(−g/λ) (its optical depth, which the renderer binds for forward
+// passes as for lighting), as the lighting pass dims the scene's other surfaces, with each untextured
 // material's exact reflectance at the nodes (a fourth buffer); when textured materials are drawn
 // the spectral basis also holds the environment as the medium leaves it (attenuatedSpectra),
 // which their projected reflectance needs.
@@ -85,7 +86,7 @@ class PrtPass final : public TechniquePass {
   void prepareGeometry(const Scene& scene);
   void prepareProjections(const ForwardDrawInput& input);
   void prepareMediumNodes();
-  const gpu::Program& program(int basisCount);
+  const gpu::Program& program(int basisCount, const Scene& scene);
 
   // Indices [first, first + count) of one material, or of untextured materials together.
   struct DrawRange {
@@ -102,7 +103,7 @@ class PrtPass final : public TechniquePass {
   gpu::VertexArray mVertexArray;
   std::vector<gpu::Buffer> mEnvironments, mMaterials, mNodeReflectances, mMediumNodes;  // one each per projection
   std::vector<std::vector<gpu::Texture2DArray>> mTextures;  // per projection, per material (textured ones)
-  std::map<int, gpu::Program> mPrograms;               // per basis count
+  std::map<std::string, gpu::Program> mPrograms;       // per basis count and the scene's techniques
 };
 
 }  // namespace prism::prt

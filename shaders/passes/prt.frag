@@ -55,10 +55,10 @@ void main() {
   }
   vec3 xyz = vec3(0.0);
   for (int q = 0; q < uMediumNodeCount; ++q) {
-    vec3 rho = uTextured != 0 ? prtNodeReflectance(r, PRISM_PRT_BASIS_COUNT, mediumNodes[q])
+    PrtMediumNode node = mediumNodes[q];
+    vec3 rho = uTextured != 0 ? prtNodeReflectance(r, PRISM_PRT_BASIS_COUNT, node)
                               : nodeReflectances[int(vMaterial) * uMediumNodeCount + q].xyz;
-    xyz += prtMediumTransmittance(mediumNodes[q], path, depth, nebulaDepthUm) *
-           prtNodeIrradiance(e, PRISM_PRT_BASIS_COUNT, mediumNodes[q]) * rho;
+    xyz += prtMediumTransmittance(node, path, depth, nebulaDepthUm) * prtNodeIrradiance(e, PRISM_PRT_BASIS_COUNT, node) * rho;
   }
   oTristimulus = vec4(xyz, 0.0);
 }

@@ -31,7 +31,8 @@ struct PrtMedium {
 // too.
 std::vector<Eigen::VectorXd> attenuatedSpectra(const std::vector<Eigen::VectorXd>& environment, const PrtMedium& medium);
 
-// The projection's nodes with the medium's σt and Kd at their wavelengths (no medium: zeros, T ≡ 1).
+// The projection's nodes with the medium's σt and Kd at their wavelengths (no medium: zeros; a
+// nebula still dims by the nodes' wavelengths).
 std::vector<shared::PrtMediumNode> mediumNodes(const PrtProjection& projection, const PrtMedium* medium);
 
 // The fragment shader's tristimulus of one projection at a point seen from `camera`, inside the

@@ -92,7 +92,7 @@ const gpu::Program& PrtPass::program(int basisCount, const Scene& scene) {
   desc.fragment = shaderDirectory() / "passes" / "prt.frag";
   desc.includeDirs = {shaderDirectory()};
   desc.defines = std::move(defines);
-  desc.label = fmt::format("PRT forward pass (m = {})", key);
+  desc.label = fmt::format("PRT forward pass (m = {}{})", basisCount, key.substr(std::to_string(basisCount).size()));
   return mPrograms.emplace(key, gpu::Program(desc)).first->second;
 }
 
@@ -173,7 +173,11 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
     key += fmt::format("|{},{},{},{},{},{}", material.baseColour.x, material.baseColour.y, material.baseColour.z, measured,
                        material.baseColourTexture, static_cast<const void*>(material.spectralTexture.get()));
   }
-  if (d.medium) {  // the basis takes the light as the medium leaves it
+  const bool anyTextured = std::any_of(d.materials.begin(), d.materials.end(), [&](int m) {
+    const Material& material = input.scene.materials.at(static_cast<std::size_t>(m));
+    return material.spectralTexture || material.baseColourTexture >= 0;
+  });
+  if (d.medium && mode == PrtMode::Spectral && anyTextured) {  // the basis takes the light as the medium leaves it
     const Eigen::VectorXd ramp = Eigen::VectorXd::LinSpaced(kGridWavelengths, 1.0, kGridWavelengths);
     key += fmt::format("|medium {},{}", sampleOnGrid(d.medium->sigmaT).dot(ramp), sampleOnGrid(d.medium->kd).dot(ramp));
   }
@@ -226,7 +230,7 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
     spectra.insert(spectra.end(), light.begin(), light.end());
     // Textured materials take ρ from R̂'s projection, which needs the light as the medium leaves
     // it in the span; untextured ones take it exact per node and do better without (prt_medium.glsl).
-    if (d.medium && std::any_of(textures.begin(), textures.end(), [](const auto& t) { return t != nullptr; }))
+    if (d.medium && anyTextured)
       for (Eigen::VectorXd& s : attenuatedSpectra(light, *d.medium)) spectra.push_back(std::move(s));
     SpectralBasis basis(spectra);
     basisCount = std::min(section.basis, basis.available());

@@ -15,7 +15,7 @@
 // (shaders/shared/prt_medium.glsl): the environment through e^(−Kd·depth), the view ray through
 // e^(−σt·path) and the nebula's e^(−g/λ) (its optical depth, which the renderer binds for forward
 // passes as for lighting), as the lighting pass dims the scene's other surfaces, with each untextured
-// material's exact reflectance at the nodes (a fourth buffer); when textured materials are drawn
+// material's exact reflectance at the nodes (a fifth buffer); when textured materials are drawn
 // the spectral basis also holds the environment as the medium leaves it (attenuatedSpectra),
 // which their projected reflectance needs.
 //
@@ -64,7 +64,8 @@ struct PrtDrawData final : TechniqueTexels {
   int basisCount = 0;                       // spectral: m after clamping to the basis's size
   double capturedEnergy = 0.0;              // spectral: of the m functions
   // The scene's technique medium (the water) the objects are dimmed by, if any, and per
-  // projection its nodes (prt_medium.h; with no medium they are uploaded but unused).
+  // projection its nodes (prt_medium.h; their σt and Kd zero without a medium, where a nebula
+  // alone may still dim).
   std::optional<PrtMedium> medium;
   std::vector<std::vector<shared::PrtMediumNode>> mediumNodes;
 };

@@ -35,13 +35,15 @@ namespace {
 
 const std::filesystem::path kExampleScenes = PRISM_SCENES_DIR;
 
-class PrtGpuCpuParity : public testing::TestWithParam<PrtModeCase> {};
-
-TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSums) {
+// `prt_metamers` (with `sets` applied) in the case's mode: at 400 random pixels' interior ones, the
+// accumulated tristimulus against the twin, within the renderer's 1e-4. Under water, the water
+// must also take a visible share of the light (what the twin keeps of its dry sum, on average).
+void expectRandomPixelsAgreeWithTheSharedSums(const PrtModeCase& mode, const std::vector<std::string>& sets,
+                                              unsigned seed) {
   gpu::HeadlessContext context;
-  Scene scene = loadScene(kExampleScenes / "prt_metamers.json");
-  scene.techniques.find<prt::PrtSection>()->mode = GetParam().mode;
-  const FrameSettings settings = prtTwinSettings(GetParam(), 160, 90);
+  Scene scene = loadScene(kExampleScenes / "prt_metamers.json", sets);
+  scene.techniques.find<prt::PrtSection>()->mode = mode.mode;
+  const FrameSettings settings = prtTwinSettings(mode, 160, 90);
   Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   const TechniquePass* pass = renderer.techniquePass(prt::PrtSection::kKey);
@@ -49,81 +51,48 @@ TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSums) {
   auto data = std::dynamic_pointer_cast<const prt::PrtDrawData>(pass->readTexels());
   ASSERT_TRUE(data);
   ASSERT_FALSE(data->projections.empty());
+  ASSERT_EQ(data->medium.has_value(), !sets.empty());
+  prt::PrtDrawData dry = *data;
+  dry.medium.reset();
   std::vector<float> lit = gpu::readTexture2DFloat(renderer.accumulation(), 4);
 
   const int w = settings.width, h = settings.height;
-  std::mt19937 rng(14);
-  std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
-  double worst = 0.0, sum = 0.0;
-  int compared = 0;
-  for (int n = 0; n < 400; ++n) {
-    int x = px(rng), y = py(rng);  // GL rows
-    std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
-    if (!hit) continue;
-    glm::dvec3 expected = cpuTristimulus(*data, *hit, renderer.cameraTransform().position);
-    std::size_t i = static_cast<std::size_t>(y * w + x);
-    glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
-    double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
-    double error = glm::length(actual - expected) / scale;
+  const glm::vec3 camera = renderer.cameraTransform().position;
+  double worst = 0.0, sum = 0.0, kept = 0.0;
+  const int compared = forRandomInteriorPixels(*data, renderer.cameraTransform(), w, h, seed, 400, [&](int x, int y, const Hit& hit) {
+    const glm::dvec3 expected = cpuTristimulus(*data, hit, camera);
+    const std::size_t i = static_cast<std::size_t>(y * w + x);
+    const glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
+    const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
+    const double error = glm::length(actual - expected) / scale;
     worst = std::max(worst, error);
     sum += error;
-    ++compared;
-  }
-  std::printf("PRT %s (frame %s): %d pixels compared; relative error mean %.3g, max %.3g\n",
-              std::string(prt::prtModeName(GetParam().mode)).c_str(),
-              std::string(renderModeName(GetParam().frameMode)).c_str(), compared, sum / std::max(compared, 1), worst);
+    kept += expected.y / cpuTristimulus(dry, hit, camera).y;
+  });
+  kept /= std::max(compared, 1);
+  std::printf("PRT %s (frame %s)%s: %d pixels compared; relative error mean %.3g, max %.3g; the medium keeps %.3f of Y\n",
+              std::string(prt::prtModeName(mode.mode)).c_str(), std::string(renderModeName(mode.frameMode)).c_str(),
+              sets.empty() ? "" : " under water", compared, sum / std::max(compared, 1), worst, kept);
   EXPECT_GT(compared, 100);
   EXPECT_LE(worst, 1e-4);
+  if (!sets.empty()) {
+    EXPECT_LT(kept, 0.8);
+  }
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, PrtGpuCpuParity, prtModeCases(), prtModeCaseName);
+class PrtGpuCpuParity : public testing::TestWithParam<PrtModeCase> {};
+
+TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSums) { expectRandomPixelsAgreeWithTheSharedSums(GetParam(), {}, 14); }
 
 // Under water (a Jerlov II ocean whose surface lies 2 m above the camera, the objects 3–4 m
 // down): the fragment shader's sum over the projection's nodes, dimmed by the water between the
 // camera and the fragment and above the fragment (shared/prt_medium.glsl), against the same sum
-// on the CPU; and the water takes a visible share of the light.
-class PrtUnderWaterParity : public testing::TestWithParam<PrtModeCase> {};
-
-TEST_P(PrtUnderWaterParity, RandomPixelsAgreeWithTheSharedSumsThroughTheWater) {
-  gpu::HeadlessContext context;
-  Scene scene = loadScene(kExampleScenes / "prt_metamers.json", {R"(water={"type": "II", "depth": 2})"});
-  scene.techniques.find<prt::PrtSection>()->mode = GetParam().mode;
-  const FrameSettings settings = prtTwinSettings(GetParam(), 160, 90);
-  Renderer renderer(scene, cachedTestTable(), settings);
-  renderer.renderFrame();
-  auto data = std::dynamic_pointer_cast<const prt::PrtDrawData>(renderer.techniquePass(prt::PrtSection::kKey)->readTexels());
-  ASSERT_TRUE(data);
-  ASSERT_TRUE(data->medium);
-  prt::PrtDrawData dry = *data;
-  dry.medium.reset();
-  std::vector<float> lit = gpu::readTexture2DFloat(renderer.accumulation(), 4);
-  const int w = settings.width, h = settings.height;
-  std::mt19937 rng(16);
-  std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
-  double worst = 0.0, kept = 0.0;
-  int compared = 0;
-  for (int n = 0; n < 400; ++n) {
-    int x = px(rng), y = py(rng);
-    std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
-    if (!hit) continue;
-    const glm::dvec3 expected = cpuTristimulus(*data, *hit, renderer.cameraTransform().position);
-    std::size_t i = static_cast<std::size_t>(y * w + x);
-    glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
-    double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
-    worst = std::max(worst, glm::length(actual - expected) / scale);
-    kept += expected.y / cpuTristimulus(dry, *hit, renderer.cameraTransform().position).y;
-    ++compared;
-  }
-  kept /= std::max(compared, 1);
-  std::printf("PRT %s (frame %s) under water: %d pixels compared; relative error max %.3g; the water keeps %.3f of Y\n",
-              std::string(prt::prtModeName(GetParam().mode)).c_str(),
-              std::string(renderModeName(GetParam().frameMode)).c_str(), compared, worst, kept);
-  EXPECT_GT(compared, 100);
-  EXPECT_LE(worst, 1e-4);
-  EXPECT_LT(kept, 0.8);
+// on the CPU.
+TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSumsThroughTheWater) {
+  expectRandomPixelsAgreeWithTheSharedSums(GetParam(), {R"(water={"type": "II", "depth": 2})"}, 16);
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, PrtUnderWaterParity, prtModeCases(), prtModeCaseName);
+INSTANTIATE_TEST_SUITE_P(Modes, PrtGpuCpuParity, prtModeCases(), prtModeCaseName);
 
 // Inside a nebula (scenes/nebula_field.json, its moon a PRT object under a uniform D65
 // environment; the scene's light, the nebula's emission and scattering taken out so that the
@@ -136,11 +105,7 @@ TEST(PrtGpuCpuParity, PrtObjectsInsideANebulaAreDimmedByIt) {
                           {R"(prt={"environment": {"illuminant": "D65", "shape": "uniform", "luminance": 2}})",
                            "objects.1.technique=prt", "nebula.emission=0", "nebula.scattering=0"});
   scene.lights.clear();
-  FrameSettings settings;
-  settings.width = 160;
-  settings.height = 90;
-  settings.shadowMapSize = 256;
-  settings.display.dither = false;
+  const FrameSettings settings = prtTwinSettings({prt::PrtMode::Spectral, RenderMode::JakobHanika}, 160, 90);
   Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   auto data = std::dynamic_pointer_cast<const prt::PrtDrawData>(renderer.techniquePass(prt::PrtSection::kKey)->readTexels());
@@ -191,11 +156,7 @@ TEST(PrtGpuCpuParity, PrtObjectsAreLitByTheScenesLightsToo) {
   sun.spd = normalisedLightSpectrum(illuminant("D65"));
   sun.intensity = 3000.0f;
   scene.lights.push_back(sun);
-  FrameSettings settings;
-  settings.width = 160;
-  settings.height = 90;
-  settings.shadowMapSize = 256;
-  settings.display.dither = false;
+  const FrameSettings settings = prtTwinSettings({prt::PrtMode::Spectral, RenderMode::JakobHanika}, 160, 90);
   Renderer renderer(scene, cachedTestTable(), settings);
   renderer.renderFrame();
   auto data = std::dynamic_pointer_cast<const prt::PrtDrawData>(renderer.techniquePass(prt::PrtSection::kKey)->readTexels());
@@ -204,26 +165,19 @@ TEST(PrtGpuCpuParity, PrtObjectsAreLitByTheScenesLightsToo) {
   GBufferReadback g(renderer);
   CpuShading cpu(renderer.frameData(), cachedTestTable(), g.shadowLayers);
 
-  std::mt19937 rng(15);
-  std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
   double worst = 0.0, lightShare = 0.0;
-  int compared = 0;
-  for (int n = 0; n < 400; ++n) {
-    int x = px(rng), y = py(rng);
-    std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
-    if (!hit) continue;
+  const int compared = forRandomInteriorPixels(*data, renderer.cameraTransform(), w, h, 15, 400, [&](int x, int y, const Hit& hit) {
     std::size_t i = static_cast<std::size_t>(y * w + x);
     GBufferTexel t = g.texel(i);
-    ASSERT_NE(t.materialId & shared::kTechniqueShadedBit, 0u);
+    EXPECT_NE(t.materialId & shared::kTechniqueShadedBit, 0u);
     glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(w), (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
     const glm::dvec3 lights(cpu.shade(t, uv, renderer.cameraTransform()));
-    const glm::dvec3 expected = lights + cpuTristimulus(*data, *hit, renderer.cameraTransform().position);
+    const glm::dvec3 expected = lights + cpuTristimulus(*data, hit, renderer.cameraTransform().position);
     const glm::dvec3 actual(g.accumulated(i));
     const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
     worst = std::max(worst, glm::length(actual - expected) / scale);
     lightShare += lights.y / expected.y;
-    ++compared;
-  }
+  });
   lightShare /= std::max(compared, 1);
   std::printf("PRT objects under a light: %d pixels compared; relative error max %.3g; the light's mean share of Y %.2f\n",
               compared, worst, lightShare);

@@ -88,19 +88,14 @@ void expectMagnifiedTexelsAgreeWithTheTwin(const PrtModeCase& mode, const std::v
   std::vector<float> lit = gpu::readTexture2DFloat(renderer.accumulation(), 4);
 
   const int w = settings.width, h = settings.height;
-  std::mt19937 rng(16);
-  std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
   std::set<int> materials;
   // Float sums against double, as for the untextured objects (prt_pass_test.cpp).
   constexpr double kSums = 1e-4;
   double worst = 0.0, worstShare = 0.0;
   int compared = 0;
-  for (int n = 0; n < 600; ++n) {
-    const int x = px(rng), y = py(rng);  // GL rows
-    std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
-    if (!hit || texelFootprint(*data, renderer.cameraTransform(), *hit, x, y, w, h) > 0.75 || !uniformTexels(*data, *hit))
-      continue;
-    const glm::dvec3 expected = cpuTristimulus(*data, *hit, renderer.cameraTransform().position);
+  forRandomInteriorPixels(*data, renderer.cameraTransform(), w, h, 16, 600, [&](int x, int y, const Hit& hit) {
+    if (texelFootprint(*data, renderer.cameraTransform(), hit, x, y, w, h) > 0.75 || !uniformTexels(*data, hit)) return;
+    const glm::dvec3 expected = cpuTristimulus(*data, hit, renderer.cameraTransform().position);
     const std::size_t i = static_cast<std::size_t>(y * w + x);
     const glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
     const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
@@ -116,9 +111,9 @@ void expectMagnifiedTexelsAgreeWithTheTwin(const PrtModeCase& mode, const std::v
     const double error = glm::length(actual - expected) / scale;
     worst = std::max(worst, error);
     worstShare = std::max(worstShare, error / (kSums + snap));
-    materials.insert(data->vertexMaterial[data->indices[hit->triangle]]);
+    materials.insert(data->vertexMaterial[data->indices[hit.triangle]]);
     ++compared;
-  }
+  });
   std::printf("textured PRT %s (frame %s)%s: %d magnified pixels of %zu materials; relative error max %.3g, "
               "at most %.2f of its bound\n",
               std::string(prt::prtModeName(mode.mode)).c_str(), std::string(renderModeName(mode.frameMode)).c_str(),

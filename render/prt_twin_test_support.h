@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <random>
 #include <string>
 #include <utility>
 
@@ -132,6 +133,24 @@ inline shared::PrtReflectance sampledReflectance(const prt::PrtTextureSource& so
     r.r[j] = glm::vec3(glm::mix(top, bottom, fy));
   }
   return r;
+}
+
+// Calls f(x, y, hit) at the interior pixels (interiorHit; y a GL row) among `samples` random ones
+// drawn from `seed`; returns how many.
+template <class F>
+int forRandomInteriorPixels(const prt::PrtDrawData& d, const CameraTransform& camera, int w, int h, unsigned seed,
+                            int samples, F&& f) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
+  int visited = 0;
+  for (int n = 0; n < samples; ++n) {
+    const int x = px(rng), y = py(rng);
+    if (std::optional<Hit> hit = interiorHit(d, camera, x, y, w, h)) {
+      f(x, y, *hit);
+      ++visited;
+    }
+  }
+  return visited;
 }
 
 // The fragment shader's sum on the CPU: Ê interpolated with the hit's barycentrics, then prtXyz,

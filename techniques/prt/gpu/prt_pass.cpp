@@ -79,12 +79,13 @@ void PrtPass::run(const TechniqueBlock&, const Scene&, const CameraTransform&, c
 // fragment shader reads what the lighting pass reads of a nebula).
 const gpu::Program& PrtPass::program(int basisCount, const Scene& scene) {
   std::vector<gpu::ShaderDefine> defines = {{"PRISM_PRT_BASIS_COUNT", std::to_string(basisCount)}};
-  std::string key = std::to_string(basisCount);
+  std::string techniques;
   for (const auto& section : scene.techniques.all()) {
     if (section->shaderDefine().empty()) continue;
     defines.push_back({std::string(section->shaderDefine()), "1"});
-    key += fmt::format(" {}", section->shaderDefine());
+    techniques += fmt::format(" {}", section->shaderDefine());
   }
+  const std::string key = std::to_string(basisCount) + techniques;
   auto it = mPrograms.find(key);
   if (it != mPrograms.end()) return it->second;
   gpu::ProgramDesc desc;
@@ -92,7 +93,7 @@ const gpu::Program& PrtPass::program(int basisCount, const Scene& scene) {
   desc.fragment = shaderDirectory() / "passes" / "prt.frag";
   desc.includeDirs = {shaderDirectory()};
   desc.defines = std::move(defines);
-  desc.label = fmt::format("PRT forward pass (m = {}{})", basisCount, key.substr(std::to_string(basisCount).size()));
+  desc.label = fmt::format("PRT forward pass (m = {}{})", basisCount, techniques);
   return mPrograms.emplace(key, gpu::Program(desc)).first->second;
 }
 

@@ -141,11 +141,8 @@ float mean4(const vec4& v) { return 0.25f * (v.x + v.y + v.z + v.w); }
 // The medium the paths cross: a technique's (the water's: everything below its surface), else
 // the scene's, if any.
 std::optional<HomogeneousMedium> effectiveMedium(const Scene& scene) {
-  for (const auto& section : scene.techniques.all()) {
-    if (std::optional<TechniqueMedium> m = section->medium(scene.camera.position)) {
-      return HomogeneousMedium{m->sigmaA, m->sigmaS, m->g, Bounds{m->regionMin, m->regionMax}};
-    }
-  }
+  if (std::optional<TechniqueMedium> m = scene.techniques.medium(scene.camera.position))
+    return HomogeneousMedium{m->sigmaA, m->sigmaS, m->g, Bounds{m->regionMin, m->regionMax}};
   return scene.medium;
 }
 

@@ -230,6 +230,13 @@ class TechniqueSections {
     return nullptr;
   }
   const std::vector<std::unique_ptr<TechniqueSection>>& all() const { return mSections; }
+  // The first technique medium (the water), for a scene whose file puts the camera at
+  // sceneCameraPositionW: the one the path tracer traces and PRT's objects are dimmed by.
+  std::optional<TechniqueMedium> medium(const glm::vec3& sceneCameraPositionW) const {
+    for (const auto& s : mSections)
+      if (std::optional<TechniqueMedium> m = s->medium(sceneCameraPositionW)) return m;
+    return std::nullopt;
+  }
 
  private:
   std::vector<std::unique_ptr<TechniqueSection>> mSections;

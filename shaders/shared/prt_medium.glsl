@@ -6,8 +6,7 @@
 // above; σt for a medium that gives no Kd), and the camera sees it through e^(−σt·s), s the
 // length of the view segment inside the box; a nebula's optical depth g in front of it (µm, its
 // march's) dims it by e^(−g/λ). With T(λ) their product, the fragment's tristimulus is a sum over
-// the projection's nodes q
-// (prt_evaluation.h's PrtProjection):
+// the projection's nodes q (prt_evaluation.h's PrtProjection):
 //   XYZ = Σ_q T(λ_q)·e_q·ρ_q,   e_q = Σ_j Ê_j a_qj   (the irradiance at λ_q),
 // for spectral PRT the 81 grid wavelengths with a_qj = φ_j(λ_q), on which the basis is
 // orthonormal; for the 5 nm reference its chunk's wavelengths, a_q the q-th delta; for RGB-PRT

@@ -213,8 +213,9 @@ PrtProjection projectRgb(const std::vector<Spectrum>& reflectances, const Eigen:
   const Spectrum white = illuminant("D65");
   for (const Spectrum& s : reflectances) {  // R̂_c = albedo_c · (primary c's XYZ)
     Eigen::Vector3d albedo = space.xyzToRgb * reflectanceTristimulus(observer, s, white);
-    p.reflectances.push_back(reflectanceBlock(space.rgbToXyz * albedo.asDiagonal()));
-    p.nodeReflectances.push_back(nodeRows((space.rgbToXyz * albedo.asDiagonal()).transpose()));
+    const Eigen::Matrix3d block = space.rgbToXyz * albedo.asDiagonal();  // column c: R̂_c
+    p.reflectances.push_back(reflectanceBlock(block));
+    p.nodeReflectances.push_back(nodeRows(block.transpose()));
   }
   return p;
 }

@@ -54,14 +54,11 @@ CachedTransfer sceneTransfer(const Scene& scene, const PrtMesh& mesh, const Tech
 // The medium of the scene's techniques the lighting pass dims surfaces by (the water), as PRT's
 // objects take it: σt = σa + σs and Kd (σt where the medium gives none).
 std::optional<PrtMedium> sceneMedium(const Scene& scene) {
-  for (const auto& section : scene.techniques.all()) {
-    if (std::optional<TechniqueMedium> m = section->medium(scene.camera.position)) {
-      Spectrum sigmaT = m->sigmaA + m->sigmaS;
-      Spectrum kd = m->downwellingKd ? *m->downwellingKd : sigmaT;
-      return PrtMedium{m->regionMin, m->regionMax, std::move(sigmaT), std::move(kd)};
-    }
-  }
-  return std::nullopt;
+  std::optional<TechniqueMedium> m = scene.techniques.medium(scene.camera.position);
+  if (!m) return std::nullopt;
+  Spectrum sigmaT = m->sigmaA + m->sigmaS;
+  Spectrum kd = m->downwellingKd ? *m->downwellingKd : sigmaT;
+  return PrtMedium{m->regionMin, m->regionMax, std::move(sigmaT), std::move(kd)};
 }
 
 }  // namespace
@@ -248,8 +245,7 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
     project = [&grid, &input](const std::vector<Spectrum>& r) { return projectReference(r, grid, input.observer); };
   }
   std::vector<PrtProjection> projections = project(reflectances);
-  const bool textured = std::any_of(textures.begin(), textures.end(), [](const auto& t) { return t != nullptr; });
-  std::vector<Eigen::MatrixXd> maps = textured ? gridReflectanceMaps(project) : std::vector<Eigen::MatrixXd>{};
+  std::vector<Eigen::MatrixXd> maps = anyTextured ? gridReflectanceMaps(project) : std::vector<Eigen::MatrixXd>{};
   // Built whole before anything is replaced.
   std::vector<gpu::Buffer> environments, materials, nodeReflectances;
   std::vector<std::vector<gpu::Texture2DArray>> arrays(projections.size());

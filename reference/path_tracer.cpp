@@ -163,7 +163,7 @@ class PathTracer {
         mScale(absoluteTristimulusScale(mObserver)),
         mSampler(
             sceneWavelengthSampler(settings.wavelengths, mObserver, scene, colourSpace(scene.colourSpace), table)),
-        mRays(scene),
+        mRays(sceneRays(scene)),
         mBackground(backgroundRadiance(scene, colourSpace(scene.colourSpace), table)),
         mCamera(cameraTransform(scene.camera, settings.width, settings.height)),
         mMedium(effectiveMedium(scene)),
@@ -387,7 +387,7 @@ class PathTracer {
     const bool global = mSettings.transport == LightTransport::Global;
     vec4 radiance(0.0f), throughput(1.0f);
     for (int depth = 0;; ++depth) {
-      std::optional<RayHit> found = mRays.intersect(origin, direction, 0.0f, kInfinity);
+      std::optional<rays::TriangleHit> found = mRays.intersect(origin, direction, 0.0f, kInfinity);
       const float tSurface = found ? found->distance : kInfinity;
       bool scattered = false;
       if (mMedium) {
@@ -486,7 +486,7 @@ class PathTracer {
   const Observer& mObserver;
   double mScale;
   WavelengthSampler mSampler;
-  RayScene mRays;
+  rays::TriangleBvh mRays;
   RgbIlluminantSpectrum mBackground;
   CameraTransform mCamera;
   std::vector<LightInput> mLights;

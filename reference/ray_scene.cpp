@@ -1,120 +1,19 @@
 #include "reference/ray_scene.h"
 
-#include <embree3/rtcore.h>
-
-#include <cstring>
-#include <limits>
-#include <string>
-
-#include <fmt/format.h>
-
-#include "core/error.h"
+#include <vector>
 
 namespace prism::reference {
-namespace {
 
-const char* embreeErrorName(RTCError error) {
-  switch (error) {
-    case RTC_ERROR_NONE: return "no error";
-    case RTC_ERROR_UNKNOWN: return "unknown error";
-    case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
-    case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
-    case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
-    case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
-    case RTC_ERROR_CANCELLED: return "cancelled";
+rays::TriangleBvh sceneRays(const Scene& scene) {
+  std::vector<std::vector<glm::vec3>> positions(scene.meshes.size());
+  std::vector<rays::TriangleMesh> meshes;
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
+    positions[m].reserve(mesh.vertices.size());
+    for (const Vertex& vertex : mesh.vertices) positions[m].push_back(vertex.position);
+    meshes.push_back({static_cast<std::uint32_t>(m), positions[m], mesh.indices});
   }
-  return "error";
-}
-
-void check(RTCDevice device, const char* what) {
-  RTCError error = rtcGetDeviceError(device);
-  if (error != RTC_ERROR_NONE) {
-    throw Error(fmt::format("Embree: {} failed ({})", what, embreeErrorName(error)));
-  }
-}
-
-RTCRay makeRay(const glm::vec3& origin, const glm::vec3& direction, float tMin, float tMax) {
-  RTCRay ray{};
-  ray.org_x = origin.x;
-  ray.org_y = origin.y;
-  ray.org_z = origin.z;
-  ray.dir_x = direction.x;
-  ray.dir_y = direction.y;
-  ray.dir_z = direction.z;
-  ray.tnear = tMin;
-  ray.tfar = tMax;
-  ray.mask = std::numeric_limits<unsigned>::max();
-  return ray;
-}
-
-}  // namespace
-
-struct RayScene::Handles {
-  RTCDevice device = nullptr;
-  RTCScene scene = nullptr;
-  ~Handles() {
-    if (scene) rtcReleaseScene(scene);
-    if (device) rtcReleaseDevice(device);
-  }
-};
-
-RayScene::RayScene(const Scene& scene) : mHandles(new Handles) {
-  try {
-    mHandles->device = rtcNewDevice(nullptr);
-    if (!mHandles->device) {
-      throw Error(fmt::format("Embree: cannot create a device ({})", embreeErrorName(rtcGetDeviceError(nullptr))));
-    }
-    mHandles->scene = rtcNewScene(mHandles->device);
-    check(mHandles->device, "rtcNewScene");
-    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-      const Mesh& mesh = scene.meshes[m];
-      if (mesh.indices.empty()) continue;  // ids are explicit: the others keep theirs
-      RTCGeometry geometry = rtcNewGeometry(mHandles->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-      auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(
-          geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
-      auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-          geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.indices.size() / 3));
-      check(mHandles->device, "rtcSetNewGeometryBuffer");
-      for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-        std::memcpy(positions + 3 * i, &mesh.vertices[i].position, 3 * sizeof(float));
-      }
-      std::memcpy(indices, mesh.indices.data(), (mesh.indices.size() / 3) * 3 * sizeof(unsigned));
-      rtcCommitGeometry(geometry);
-      rtcAttachGeometryByID(mHandles->scene, geometry, static_cast<unsigned>(m));
-      rtcReleaseGeometry(geometry);
-      check(mHandles->device, "adding a mesh");
-    }
-    rtcSetSceneBuildQuality(mHandles->scene, RTC_BUILD_QUALITY_HIGH);
-    rtcCommitScene(mHandles->scene);
-    check(mHandles->device, "building the BVH");
-  } catch (...) {
-    delete mHandles;
-    throw;
-  }
-}
-
-RayScene::~RayScene() { delete mHandles; }
-
-std::optional<RayHit> RayScene::intersect(const glm::vec3& origin, const glm::vec3& direction,
-                                          float tMin, float tMax) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRayHit rayHit{};
-  rayHit.ray = makeRay(origin, direction, tMin, tMax);
-  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(mHandles->scene, &context, &rayHit);
-  if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-  return RayHit{rayHit.ray.tfar, rayHit.hit.geomID, rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v};
-}
-
-bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction, float tMin,
-                        float tMax) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRay ray = makeRay(origin, direction, tMin, tMax);
-  rtcOccluded1(mHandles->scene, &context, &ray);
-  return ray.tfar < 0.0f;  // Embree sets tfar to −∞ on a hit
+  return rays::TriangleBvh(meshes);
 }
 
 }  // namespace prism::reference

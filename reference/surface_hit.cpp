@@ -40,9 +40,9 @@ glm::vec4 sampleTexture(const Image& image, const glm::vec2& uv) {
   return glm::mix(top, bottom, fy);
 }
 
-SurfaceHit surfaceHit(const Scene& scene, const RayHit& hit, const glm::vec3& origin,
+SurfaceHit surfaceHit(const Scene& scene, const rays::TriangleHit& hit, const glm::vec3& origin,
                       const glm::vec3& direction) {
-  const Mesh& mesh = scene.meshes[hit.mesh];
+  const Mesh& mesh = scene.meshes[hit.geometry];
   const Material& material = scene.materials[static_cast<std::size_t>(mesh.material)];
   const Vertex& a = mesh.vertices[mesh.indices[3 * hit.triangle]];
   const Vertex& b = mesh.vertices[mesh.indices[3 * hit.triangle + 1]];

@@ -5,7 +5,7 @@
 
 #include <glm/glm.hpp>
 
-#include "reference/ray_scene.h"
+#include "rays/triangle_bvh.h"
 #include "scene/scene.h"
 
 namespace prism::reference {
@@ -27,7 +27,7 @@ struct SurfaceHit {
 // `direction` is the unit direction of the ray that made `hit`. The shading normal is turned as
 // the rasteriser turns it: flipped where the triangle's winding faces away from the ray
 // (gl_FrontFacing false).
-SurfaceHit surfaceHit(const Scene& scene, const RayHit& hit, const glm::vec3& origin,
+SurfaceHit surfaceHit(const Scene& scene, const rays::TriangleHit& hit, const glm::vec3& origin,
                       const glm::vec3& direction);
 
 // Bilinear filtering with repeat wrapping at uv (glTF convention: v = 0 is the image's top row),

@@ -1,7 +1,5 @@
 #include "techniques/prt/transfer_bake.h"
 
-#include <embree3/rtcore.h>
-
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -9,6 +7,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <span>
 
 #include <fmt/format.h>
 
@@ -16,6 +15,7 @@
 #include "core/error.h"
 #include "core/fnv1a.h"
 #include "core/parallel_for.h"
+#include "rays/triangle_bvh.h"
 
 namespace prism::prt {
 namespace {
@@ -23,67 +23,6 @@ namespace {
 constexpr char kMagic[8] = {'P', 'R', 'I', 'S', 'M', 'P', 'R', 'T'};
 constexpr std::uint32_t kVersion = 1;
 constexpr std::size_t kHeaderBytes = 8 + 4 + 4 + 8 + 4 + 4;
-
-// The object's triangles in an Embree BVH, for occlusion only.
-class Occluder {
- public:
-  explicit Occluder(const PrtMesh& mesh) {
-    mDevice = rtcNewDevice(nullptr);
-    if (!mDevice) throw Error("Embree: cannot create a device");
-    mScene = rtcNewScene(mDevice);
-    RTCGeometry geometry = rtcNewGeometry(mDevice, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
-    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.indices.size() / 3));
-    if (!positions || !indices) {
-      rtcReleaseGeometry(geometry);
-      release();
-      throw Error("Embree: cannot allocate the object's buffers");
-    }
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) std::memcpy(positions + 3 * i, &mesh.positions[i], 3 * sizeof(float));
-    std::memcpy(indices, mesh.indices.data(), mesh.indices.size() * sizeof(unsigned));
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(mScene, geometry);
-    rtcReleaseGeometry(geometry);
-    rtcSetSceneBuildQuality(mScene, RTC_BUILD_QUALITY_HIGH);
-    rtcCommitScene(mScene);
-    if (rtcGetDeviceError(mDevice) != RTC_ERROR_NONE) {
-      release();
-      throw Error("Embree: building the object's BVH failed");
-    }
-  }
-  ~Occluder() { release(); }
-  Occluder(const Occluder&) = delete;
-  Occluder& operator=(const Occluder&) = delete;
-
-  bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tMax) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRay ray{};
-    ray.org_x = origin.x;
-    ray.org_y = origin.y;
-    ray.org_z = origin.z;
-    ray.dir_x = direction.x;
-    ray.dir_y = direction.y;
-    ray.dir_z = direction.z;
-    ray.tnear = 0.0f;
-    ray.tfar = tMax;
-    ray.mask = std::numeric_limits<unsigned>::max();
-    rtcOccluded1(mScene, &context, &ray);
-    return ray.tfar < 0.0f;  // Embree sets tfar to −∞ on a hit
-  }
-
- private:
-  void release() {
-    if (mScene) rtcReleaseScene(mScene);
-    if (mDevice) rtcReleaseDevice(mDevice);
-    mScene = nullptr;
-    mDevice = nullptr;
-  }
-  RTCDevice mDevice = nullptr;
-  RTCScene mScene = nullptr;
-};
 
 double radicalInverseBase2(std::uint32_t i) {
   i = (i << 16u) | (i >> 16u);
@@ -153,8 +92,11 @@ std::vector<shared::Sh25> bakeTransfer(const PrtMesh& mesh, const BakeSettings& 
                   static_cast<float>(std::sqrt(std::max(0.0, 1.0 - u1))));
   }
 
-  std::optional<Occluder> occluder;
-  if (settings.shadows) occluder.emplace(mesh);
+  std::optional<rays::TriangleBvh> occluder;
+  if (settings.shadows) {
+    const rays::TriangleMesh object{0, mesh.positions, mesh.indices};
+    occluder.emplace(std::span(&object, 1));
+  }
   std::vector<shared::Sh25> transfer(static_cast<std::size_t>(vertices.size()));
   parallelFor(
       transfer.size(), threads,
@@ -166,7 +108,7 @@ std::vector<shared::Sh25> bakeTransfer(const PrtMesh& mesh, const BakeSettings& 
         double sum[25] = {};
         for (const glm::vec3& d : local) {
           glm::vec3 dir = glm::normalize(d.x * t + d.y * b + d.z * normal);
-          if (occluder && occluder->occluded(origin, dir, tMax)) continue;
+          if (occluder && occluder->occluded(origin, dir, 0.0f, tMax)) continue;
           shared::Sh25 y = shared::shEvaluate(dir);
           for (int k = 0; k < 25; ++k) sum[k] += y.c[k];
         }

@@ -62,29 +62,35 @@ SigmoidFit SigmoidFitter::fit(const Eigen::Vector3d& linearRgb, const Eigen::Vec
   Eigen::Vector3d rgb = linearRgb.cwiseMax(0.0).cwiseMin(1.0);
   Eigen::Vector3d targetLab = lab(mGamut.rgbToXyz * rgb, mWhiteXyz);
 
-  // Residual r = Lab(a) − target and its Jacobian ∂r/∂a.
-  auto evaluate = [&](const Eigen::Vector3d& a, Eigen::Matrix3d* jacobian) {
+  // Residual r = Lab(a) − target.
+  auto residual = [&](const Eigen::Vector3d& a) {
     Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d dXyz = Eigen::Matrix3d::Zero();
     for (std::size_t i = 0; i < mT.size(); ++i) {
       double t = mT[i];
       auto x = static_cast<float>((a[0] * t + a[1]) * t + a[2]);
       xyz += mWeights[i] * static_cast<double>(shared::sigmoid(x));
-      if (jacobian) {
-        double ds = shared::sigmoidDerivative(x);
-        dXyz.col(0) += mWeights[i] * (ds * t * t);
-        dXyz.col(1) += mWeights[i] * (ds * t);
-        dXyz.col(2) += mWeights[i] * ds;
-      }
     }
-    if (jacobian) *jacobian = labJacobian(xyz, mWhiteXyz) * dXyz;
-    return Eigen::Vector3d(lab(xyz, mWhiteXyz) - targetLab);
+    return std::pair{Eigen::Vector3d(lab(xyz, mWhiteXyz) - targetLab), xyz};
+  };
+  // Its Jacobian ∂r/∂a, at a point whose XYZ is known: taken only where a step is accepted, so
+  // the steps Levenberg–Marquardt rejects (most of them near the gamut's edge) cost half.
+  auto jacobian = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& xyz) {
+    Eigen::Matrix3d dXyz = Eigen::Matrix3d::Zero();
+    for (std::size_t i = 0; i < mT.size(); ++i) {
+      double t = mT[i];
+      auto x = static_cast<float>((a[0] * t + a[1]) * t + a[2]);
+      double ds = shared::sigmoidDerivative(x);
+      dXyz.col(0) += mWeights[i] * (ds * t * t);
+      dXyz.col(1) += mWeights[i] * (ds * t);
+      dXyz.col(2) += mWeights[i] * ds;
+    }
+    return Eigen::Matrix3d(labJacobian(xyz, mWhiteXyz) * dXyz);
   };
 
   SigmoidFit result;
   Eigen::Vector3d a = seed;
-  Eigen::Matrix3d j;
-  Eigen::Vector3d r = evaluate(a, &j);
+  auto [r, xyz] = residual(a);
+  Eigen::Matrix3d j = jacobian(a, xyz);
   double lambda = 1e-3;
   constexpr int kMaxIterations = 200;
   for (result.iterations = 0; result.iterations < kMaxIterations && r.norm() > 1e-5;
@@ -97,10 +103,9 @@ SigmoidFit SigmoidFitter::fit(const Eigen::Vector3d& linearRgb, const Eigen::Vec
       damped.diagonal() += lambda * (jtj.diagonal().array() + 1e-12).matrix();
       Eigen::Vector3d step = damped.partialPivLu().solve(-g);
       Eigen::Vector3d candidate = a + step;
-      Eigen::Matrix3d jc;
-      Eigen::Vector3d rc = evaluate(candidate, &jc);
+      auto [rc, xyzc] = residual(candidate);
       if (rc.allFinite() && rc.norm() < r.norm()) {
-        a = candidate, r = rc, j = jc;
+        a = candidate, r = rc, j = jacobian(candidate, xyzc);
         lambda = std::max(lambda / 3.0, 1e-9);
         improved = true;
       } else {

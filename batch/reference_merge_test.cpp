@@ -6,12 +6,16 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "core/error.h"
 #include "imaging/exr_file.h"
 #include "scene/scene_loader.h"
+#include "spectral/spectral_texture.h"
+#include "techniques/prt/prt_section.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 
 namespace prism::batch {
@@ -92,6 +96,36 @@ TEST_F(ReferenceParts, APartRoundTripsItsHeaderAndPixels) {
   edited = *sScene;  // or a spectrum
   edited.lights[0].spd *= 1.001;
   EXPECT_NE(sceneHash(kScene, {}, *sScene), sceneHash(kScene, {}, edited));
+}
+
+// What a scene loads besides meshes, textures and spectra: a spectral texture's values, and what
+// a technique's section read from its own files (PRT's environment map). A task that finds its
+// part complete skips it (the Slurm test), so an edited file must make another render.
+TEST(SceneHash, CoversSpectralTexturesAndWhatSectionsLoad) {
+  const std::filesystem::path textured = std::filesystem::path(PRISM_SCENES_DIR) / "prt_textures.json";
+  const Scene scene = loadScene(textured);
+  const std::string hash = sceneHash(textured, {}, scene);
+  Scene edited = scene;
+  auto it = std::find_if(edited.materials.begin(), edited.materials.end(),
+                         [](const Material& m) { return m.spectralTexture != nullptr; });
+  ASSERT_NE(it, edited.materials.end());
+  auto texture = std::make_shared<SpectralTexture>(*it->spectralTexture);
+  texture->coefficients[texture->coefficients.size() / 2] += 1e-3f;
+  it->spectralTexture = texture;
+  EXPECT_NE(hash, sceneHash(textured, {}, edited));
+
+  const std::filesystem::path mapped = std::filesystem::path(PRISM_SCENES_DIR) / "prt_rock.json";
+  const Scene rock = loadScene(mapped);
+  const auto* prt = rock.techniques.find<prt::PrtSection>();
+  ASSERT_TRUE(prt && prt->map);
+  Scene remapped = rock;
+  auto section = std::make_unique<prt::PrtSection>(*prt);
+  auto map = std::make_shared<prt::PrtMap>(*prt->map);
+  map->linearRgb[0] *= 1.01f;
+  section->map = map;
+  remapped.techniques.add(std::move(section));
+  EXPECT_NE(sceneHash(mapped, {}, rock), sceneHash(mapped, {}, remapped));
+  EXPECT_EQ(sceneHash(mapped, {}, rock), sceneHash(mapped, {}, Scene(rock)));
 }
 
 TEST_F(ReferenceParts, RowsMergeIntoTheWholeRenderBitForBit) {

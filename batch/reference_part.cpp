@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "core/fnv1a.h"
 #include "core/task_split.h"
+#include "spectral/spectral_texture.h"
 #include "imaging/exr_band.h"
 #include "imaging/float_image.h"
 #include "spectral/observer.h"
@@ -110,12 +111,18 @@ std::string sceneHash(const std::filesystem::path& scene, const std::vector<std:
   for (const Image& texture : loaded.textures) hash = fnv1a(texture.rgba.data(), texture.rgba.size(), hash);
   for (const Material& material : loaded.materials) {
     if (material.reflectance) values(material.reflectance->values());
+    if (const SpectralTexture* t = material.spectralTexture.get()) {
+      values(t->wavelengthsNm);
+      values(std::span(t->basis.data(), static_cast<std::size_t>(t->basis.size())));
+      hash = fnv1a(t->coefficients.data(), t->coefficients.size() * sizeof(float), hash);
+    }
     if (material.conductor) {
       values(material.conductor->n.values());
       values(material.conductor->k.values());
     }
   }
   for (const Light& light : loaded.lights) values(light.spd.values());
+  for (const auto& section : loaded.techniques.all()) hash = section->hashLoadedData(hash);
   return fmt::format("{:016x}", hash);
 }
 

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <memory>
 #include <optional>
@@ -190,6 +191,11 @@ class TechniqueSection {
   // Why the reference path tracer cannot trace the technique, naming the technique's own
   // references (it refuses such scenes with this); empty when it traces it.
   virtual std::string_view notTracedBecause() const { return {}; }
+  // `hash` (core/fnv1a.h) chained with what the section loaded from files other than the scene
+  // file (an environment map's texels, a density grid), so that what is keyed by a scene's
+  // identity (the parts of a split reference render, batch/reference_part.h) sees such a file
+  // change; `hash` itself when it reads none. The scene file's bytes cover the section's keys.
+  virtual std::uint64_t hashLoadedData(std::uint64_t hash) const { return hash; }
   // What the scene bench measures of its cost besides the run's own configurations.
   virtual TechniqueBench bench() const { return {}; }
   // Its own optimised wavelengths, if it has them (scenes with such a technique are compared in

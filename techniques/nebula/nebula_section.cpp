@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/fnv1a.h"
 
 namespace prism::nebula {
 
@@ -10,6 +11,12 @@ TechniqueBlock NebulaSection::pack(const FramePackInput&) const {
   TechniqueBlock block;
   block.key = kKey;
   return block;
+}
+
+std::uint64_t NebulaSection::hashLoadedData(std::uint64_t hash) const {
+  const std::int32_t size[3] = {density->nx, density->ny, density->nz};
+  hash = fnv1a(size, sizeof size, hash);
+  return fnv1a(density->values.data(), density->values.size() * sizeof(float), hash);
 }
 
 std::string_view NebulaSection::notTracedBecause() const {

@@ -49,6 +49,8 @@ struct NebulaSection final : TechniqueSection {
   // No block: the pass uploads what it marches when the section changes.
   TechniqueBlock pack(const FramePackInput& input) const override;
   std::string_view notTracedBecause() const override;
+  // The density grid's size and values (a file's, or the noise's).
+  std::uint64_t hashLoadedData(std::uint64_t hash) const override;
   // The section's method against the others on this scene, the nebula's pass timed in each,
   // marching every frame: the reference at the paper's settings (100 steps, 21 wavelengths a step)
   // over projection and over light–density (prism bench's ratios).

@@ -3,6 +3,7 @@
 // key follows the model and not the march's settings.
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 
 #include "core/error_test_support.h"
@@ -45,6 +46,19 @@ TEST(NebulaSection, ReadsTheModelAndWhereItLies) {
   EXPECT_EQ(d.boxMin, glm::vec3(0.0f));
   EXPECT_EQ(d.boxSize, 1.0f);
   EXPECT_EQ(d.referenceSamples, 0);
+}
+
+// A split render keyed by the scene must see a density grid change: a file's is not in the scene's bytes.
+TEST(NebulaSection, ItsLoadedDataHashFollowsTheDensity) {
+  auto parsed = parseSection("{" + kNoise + "}");
+  auto& s = dynamic_cast<NebulaSection&>(*parsed);
+  const std::uint64_t hash = s.hashLoadedData(7);
+  EXPECT_NE(hash, 7u);
+  EXPECT_EQ(hash, s.clone()->hashLoadedData(7));
+  auto edited = std::make_shared<DensityGrid>(*s.density);
+  edited->values[3] += 1e-4f;
+  s.density = edited;
+  EXPECT_NE(hash, s.hashLoadedData(7));
 }
 
 TEST(NebulaSection, BadValuesNameTheirPlace) {

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "core/fnv1a.h"
 #include "shared_cpp.h"
 #include "imaging/exr_file.h"
 #include "imaging/radiance_hdr.h"
@@ -81,6 +82,13 @@ TechniqueBlock PrtSection::pack(const FramePackInput&) const {
 
 std::shared_ptr<const TechniqueEnvironment> PrtSection::environment(const RgbToSpectrumTable& table) const {
   return environmentRadiance(*this, table);
+}
+
+std::uint64_t PrtSection::hashLoadedData(std::uint64_t hash) const {
+  if (!map) return hash;
+  const std::int32_t size[2] = {map->width, map->height};
+  hash = fnv1a(size, sizeof size, hash);
+  return fnv1a(map->linearRgb.data(), map->linearRgb.size() * sizeof(float), hash);
 }
 
 std::optional<TechniqueLight> PrtSection::light() const {

@@ -60,6 +60,8 @@ struct PrtSection final : TechniqueSection {
   std::optional<TechniqueLight> light() const override;
   // The environment as radiance per direction, for the reference path tracer (prt_environment_radiance.h).
   std::shared_ptr<const TechniqueEnvironment> environment(const RgbToSpectrumTable& table) const override;
+  // The environment map's size and texels, when there is one.
+  std::uint64_t hashLoadedData(std::uint64_t hash) const override;
   // Spectral PRT with m = 8 against RGB-PRT, both on this scene, the PRT pass timed in each.
   TechniqueBench bench() const override;
   bool shadesObjects() const override { return true; }

@@ -233,11 +233,15 @@ class SceneParser {
     }
   }
 
-  // Only PRT objects shade spectral textures: the deferred pipeline reads no such texture.
-  void checkSpectralTexture(const Node& o, int material, const std::string& technique) const {
+  // Only PRT objects shade spectral textures: the deferred pipeline reads no such texture. PRT
+  // objects are diffuse by definition, so a conductor, which PRT cannot shade and the reference
+  // would trace with its own spectra, is refused on them.
+  void checkTechniqueMaterial(const Node& o, int material, const std::string& technique) const {
     const Material& m = mScene.materials.at(static_cast<std::size_t>(material));
     if (m.spectralTexture && technique != "prt")
       o.fail("material '" + m.name + "' has a spectral texture, which only PRT objects (\"technique\": \"prt\") shade");
+    if (m.conductor && technique == "prt")
+      o.fail("material '" + m.name + "' is a conductor, which PRT objects (diffuse by definition) cannot shade");
   }
 
   Material material(const Node& n, const std::string& name) {
@@ -335,7 +339,7 @@ class SceneParser {
       if (auto t = o.optionalChild("transform")) placement.transform = transform(*t);
       if (auto m = o.optionalChild("material")) {
         placement.materialOverride = materialReference(*m);
-        checkSpectralTexture(o, placement.materialOverride, technique);
+        checkTechniqueMaterial(o, placement.materialOverride, technique);
       }
       try {
         std::size_t first = mScene.meshes.size();
@@ -376,7 +380,7 @@ class SceneParser {
     mesh.name = name;
     mesh.technique = technique;
     mesh.material = materialReference(o.child("material"));
-    checkSpectralTexture(o, mesh.material, technique);
+    checkTechniqueMaterial(o, mesh.material, technique);
     mScene.meshes.push_back(std::move(mesh));
   }
 

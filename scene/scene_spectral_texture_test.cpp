@@ -1,5 +1,6 @@
 // Materials with a spectral texture (docs/spectral-texture.md): read once per file, shaded only
-// by PRT objects, and refused in one line when the file or its use is wrong.
+// by PRT objects, and refused in one line when the file or its use is wrong; and conductors,
+// which PRT objects (diffuse) refuse.
 #include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
@@ -59,6 +60,12 @@ TEST_F(SpectralTextureScene, OtherObjectsOtherReflectancesAndBadFilesAreRefused)
   f = sphere(R"({"spectral_texture": "rgb.exr"})", R"(, "technique": "prt")");
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f); }),
                          f.string() + ": /materials/m/spectral_texture: " + (mDir / "rgb.exr").string() + ": "));
+}
+
+TEST_F(SpectralTextureScene, AConductorOnAPrtObjectIsRefused) {
+  fs::path f = sphere(R"({"conductor": "Au", "metallic": 1})", "");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /objects/1: material 'n' is a conductor, which PRT objects (diffuse by definition) cannot shade");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 
@@ -48,6 +49,9 @@ RTCRay makeRay(const glm::vec3& origin, const glm::vec3& direction, float tMin, 
 
 // Attaches one mesh's copy to the scene; the geometry is released on every path.
 void attach(RTCDevice device, RTCScene scene, const TriangleMesh& mesh) {
+  PRISM_CHECK(mesh.indices.size() % 3 == 0);
+  PRISM_CHECK(std::all_of(mesh.indices.begin(), mesh.indices.end(),
+                          [&](std::uint32_t i) { return i < mesh.positions.size(); }));
   RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   check(device, "rtcNewGeometry");
   try {
@@ -60,7 +64,7 @@ void attach(RTCDevice device, RTCScene scene, const TriangleMesh& mesh) {
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
       std::memcpy(positions + 3 * i, &mesh.positions[i], 3 * sizeof(float));
     }
-    std::memcpy(indices, mesh.indices.data(), (mesh.indices.size() / 3) * 3 * sizeof(unsigned));
+    std::memcpy(indices, mesh.indices.data(), mesh.indices.size() * sizeof(unsigned));
     rtcCommitGeometry(geometry);
     rtcAttachGeometryByID(scene, geometry, mesh.id);
     check(device, "adding a mesh");

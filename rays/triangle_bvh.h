@@ -13,8 +13,9 @@
 
 namespace prism::rays {
 
-// One mesh to trace: its positions and its triangles (three indices each, < positions.size()),
-// under an id that hits report; ids need not be dense. Read at construction only (copied).
+// One mesh to trace: its positions and its triangles (three indices each, < positions.size(),
+// PRISM_CHECKed: the loaders refuse such meshes first), under an id that hits report; ids need
+// not be dense. Read at construction only (copied).
 struct TriangleMesh {
   std::uint32_t id = 0;
   std::span<const glm::vec3> positions;

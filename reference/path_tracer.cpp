@@ -146,13 +146,6 @@ std::optional<HomogeneousMedium> effectiveMedium(const Scene& scene) {
   return scene.medium;
 }
 
-// The first distant light of the scene's techniques (PRT's environment), if any.
-std::shared_ptr<const TechniqueEnvironment> techniqueEnvironment(const Scene& scene, const RgbToSpectrumTable& table) {
-  for (const auto& section : scene.techniques.all())
-    if (std::shared_ptr<const TechniqueEnvironment> e = section->environment(table)) return e;
-  return nullptr;
-}
-
 class PathTracer {
  public:
   PathTracer(const Scene& scene, const RgbToSpectrumTable& table, const ReferenceSettings& settings)
@@ -167,7 +160,7 @@ class PathTracer {
         mBackground(backgroundRadiance(scene, colourSpace(scene.colourSpace), table)),
         mCamera(cameraTransform(scene.camera, settings.width, settings.height)),
         mMedium(effectiveMedium(scene)),
-        mEnvironment(techniqueEnvironment(scene, table)) {
+        mEnvironment(scene.techniques.environment(table)) {
     for (const Light& light : scene.lights) {
       int type = light.type == LightType::Directional ? shared::kLightDirectional
                  : light.type == LightType::Point     ? shared::kLightPoint
@@ -248,6 +241,17 @@ class PathTracer {
     const vec3 origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
     if (mRays.occluded(origin, l, 0.0f, kInfinity)) return vec4(0.0f);
     return weight * escapedAt(1, l, lambdaNm) * transmittance(origin, l, kInfinity, medium);
+  }
+
+  // Direct transport's one sample of the environment at a scattering point in the medium: a
+  // direction drawn from the phase function (its weight 1), the environment's radiance where no
+  // surface is in the way, through what is left of the medium (the water's surface, looking up;
+  // nothing through an unbounded medium).
+  vec4 mediumEnvironmentLight(const vec3& point, const vec3& direction, const vec4& lambdaNm, const MediumAt& medium,
+                              PathRandom& random) const {
+    const vec3 l = sampleHenyeyGreenstein(direction, mMedium->g, random.next(), random.next());
+    if (mRays.occluded(point, l, 0.0f, kInfinity)) return vec4(0.0f);
+    return escapedAt(1, l, lambdaNm) * transmittance(point, l, kInfinity, medium);
   }
 
   // The spectra of a surface at the path's wavelengths: albedo (or n) and conductor k.
@@ -415,6 +419,7 @@ class PathTracer {
             radiance += throughput * weight * directLight(point, point, lambdaNm, medium, [&](const vec3& toLight) {
                           return vec4(henyeyGreenstein(glm::dot(toLight, direction), mMedium->g));
                         });
+            if (mEnvironment) radiance += throughput * weight * mediumEnvironmentLight(point, direction, lambdaNm, medium, random);
           }
           vec4 pass(0.0f);
           for (int j = 0; j < 4; ++j) pass[j] = std::isinf(length) ? (medium.sigmaT[j] > 0.0f ? 0.0f : 1.0f)

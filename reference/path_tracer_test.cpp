@@ -442,6 +442,51 @@ TEST(PathTracer, WaterIsTheMediumBelowItsSurface) {
   EXPECT_LT(a.tristimulus.at(24, 16, 1), 0.5f * dry.tristimulus.at(24, 16, 1));
 }
 
+// Direct transport scatters the environment once in the water, as it does the lights. Looking
+// level from depth z into open water under L(ω) = L·max(0, ω·y) (SkyFromAbove): the light reaching
+// depth z from above is ∫ L·μ·e^(−σt·z/μ) dω = 2πL·E₃(σt·z), and what the ray gathers of it,
+// isotropically, ∫₀^∞ σs/(4π)·2πL·E₃(σt·z)·e^(−σt·s) ds = σs·L·E₃(σt·z)/(2σt) per wavelength.
+TEST(PathTracer, TheWaterScattersTheEnvironmentIntoTheView) {
+  Scene scene;
+  scene.camera.position = {0.0f, 0.0f, 0.0f};
+  scene.camera.target = {0.0f, 0.0f, -1.0f};
+  scene.camera.verticalFovDeg = 30.0f;
+  scene.techniques.add(coastalWater());
+  scene.techniques.add(std::make_unique<SkyFromAbove>(600.0));
+  const auto& water = *scene.techniques.find<underwater::WaterSection>();
+  const double depthM = water.depthM;
+  auto e3 = [](double tau) {  // E₃(τ) = ∫₀¹ μ·e^(−τ/μ) dμ, Simpson
+    constexpr int kSteps = 2000;
+    double sum = 0.0;
+    for (int i = 1; i <= kSteps; ++i) {
+      double mu = static_cast<double>(i) / kSteps;
+      sum += (i == kSteps ? 1.0 : i % 2 ? 4.0 : 2.0) * mu * std::exp(-tau / mu);
+    }
+    return sum / (3.0 * kSteps);
+  };
+  Spectrum sky = illuminant("D65");
+  sky *= 600.0 / luminousIntegral(sky);
+  const Spectrum gathered = Spectrum::fromFunction([&](double lambdaNm) {
+    const double s = water.sigmaS.at(lambdaNm), t = s + water.sigmaA.at(lambdaNm);
+    return s * sky.at(lambdaNm) * e3(t * depthM) / (2.0 * t);
+  });
+  const Eigen::Vector3d xyz = observer("cie1931").integrate(gathered);
+  const Eigen::Vector3d expected = xyz * (luminousIntegral(gathered) / xyz.y());  // absolute: 683 lm/W
+
+  ReferenceSettings settings = small(131072);
+  settings.width = settings.height = 1;  // the view ray level, through the pixel's centre
+  settings.transport = LightTransport::Direct;
+  const ReferenceImage image = renderReference(scene, srgbTable(), settings);
+  for (int c = 0; c < 3; ++c) {
+    const double got = image.tristimulus.pixels[static_cast<std::size_t>(c)];
+    const double sigma = std::sqrt(image.variance.pixels[static_cast<std::size_t>(c)]);
+    std::printf("channel %d: %.5g against %.5g (σ %.2g)\n", c, got, expected[c], sigma);
+    EXPECT_GT(expected[c], 0.01);
+    EXPECT_LT(std::abs(got - expected[c]), 5.0 * sigma) << "channel " << c;
+    EXPECT_LT(sigma, 0.01 * expected[c]) << "channel " << c;
+  }
+}
+
 TEST(PathTracer, BadSettingsAreErrorsNamingThem) {
   Scene scene = litPlane(0.5, 1000.0f);
   ReferenceSettings settings = small(4);

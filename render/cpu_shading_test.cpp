@@ -9,6 +9,8 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <memory>
+#include <numbers>
 
 #include "render/display_transform.h"
 #include "scene/scene_loader.h"
@@ -16,6 +18,8 @@
 #include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 #include "spectral/table_test_support.h"
+#include "techniques/prt/prt_section.h"
+#include "techniques/underwater/water_section.h"
 
 namespace prism::render {
 namespace {
@@ -135,6 +139,47 @@ TEST(CpuShading, ConductorAtNormalIncidenceReflectsItsFresnelReflectance) {
   double ratio = shadeOnce(scene, settings, metal).y / shadeOnce(scene, settings, white).y;
   double expected = ((0.5 - 1) * (0.5 - 1) + 2.5 * 2.5) / ((0.5 + 1) * (0.5 + 1) + 2.5 * 2.5);
   EXPECT_NEAR(ratio, expected, 1e-4);
+}
+
+// Under water a distant environment in-scatters as the sun does (shared/underwater.glsl), with its
+// radiance over the sky as E(0): looking level from depth z into open water under a uniform
+// environment of radiance L, with no light, the background is σs·2πL·e^(−Kd·z)/(4π·σt) per
+// wavelength — against that spectrum's 1 nm integral.
+TEST(CpuShading, UnderWaterTheEnvironmentInScattersAsTheSunDoes) {
+  Scene scene;
+  scene.file = "test.json";
+  scene.camera.position = {0.0f, 0.0f, 0.0f};
+  scene.camera.target = {0.0f, 0.0f, -1.0f};
+  scene.background = glm::vec3(0.0f);
+  auto water = std::make_unique<underwater::WaterSection>();
+  water->type.assign("IB");
+  water->depthM = 3.0f;
+  water->resolve();
+  const underwater::WaterSection& w = *water;
+  scene.techniques.add(std::move(water));
+  auto environment = std::make_unique<prt::PrtSection>();
+  environment->illuminant = "D65";
+  environment->shape = "uniform";
+  environment->luminanceCdM2 = 2000.0f;
+  scene.techniques.add(std::move(environment));
+  const auto sky = scene.techniques.find<prt::PrtSection>()->environment(productionTable());
+  const Spectrum expected = Spectrum::fromFunction([&](double lambdaNm) {
+    const double s = w.sigmaS.at(lambdaNm), t = s + w.sigmaA.at(lambdaNm);
+    const double l = sky->radiance(glm::vec3(0.0f, 1.0f, 0.0f), lambdaNm);
+    return s * 2.0 * std::numbers::pi * l * std::exp(-w.kd.at(lambdaNm) * 3.0) / (4.0 * std::numbers::pi * t);
+  });
+  const double luminance = luminousIntegral(expected);
+
+  FrameSettings settings;
+  settings.mode = RenderMode::Reference;
+  const CameraTransform camera = cameraTransform(scene.camera, settings.width, settings.height);
+  FrameData frame = buildFrameData(scene, settings, frameContext(settings, scene, productionTable()), productionTable(),
+                                   {}, 0, camera);
+  CpuShading shading(frame, productionTable(), {});
+  const glm::vec3 background = shading.shade(GBufferTexel{}, glm::vec2(0.5f), camera);
+  std::printf("level background under water: Y %.5g against %.5g\n", background.y, luminance);
+  EXPECT_GT(luminance, 1.0);
+  EXPECT_NEAR(background.y, luminance, 2e-3 * luminance);
 }
 
 TEST(Brdf, ConductorFresnelAtOneAngleMatchesTheComplexFresnelEquations) {

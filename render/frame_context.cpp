@@ -12,6 +12,11 @@ FrameContext frameContext(const FrameSettings& settings, const Scene& scene, con
   c.display = resolveDisplay(settings.display, *c.tristimulusObserver);
   c.wavelengths = std::make_shared<const WavelengthSampler>(
       sceneWavelengthSampler(effectiveSampling(settings), *c.observer, scene, *c.sceneColourSpace, table));
+  if (scene.techniques.medium(scene.camera.position)) {
+    if (std::shared_ptr<const TechniqueEnvironment> e = scene.techniques.environment(table)) {
+      c.environmentFromAbove = std::make_shared<const Spectrum>(downwellingScalarIrradiance(*e));
+    }
+  }
   return c;
 }
 

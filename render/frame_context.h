@@ -1,5 +1,5 @@
 // What a frame's settings name, resolved: the observer, the scene's colour space, the display
-// transform's inputs and the wavelength sampler. Built once whenever the settings change
+// transform's inputs, the wavelength sampler and the environment's light over a medium. Built once whenever the settings change
 // (Renderer's constructor and setSettings) or the scene's lights do (Renderer::sceneChanged: the
 // Lights strategy's pdf follows them) and handed to frame assembly and the display transform, so
 // no frame looks a name up or tabulates a pdf again.
@@ -26,6 +26,9 @@ struct FrameContext {
   // Draws each frame's wavelengths (effectiveSampling(settings); Lights follows the scene's
   // emission, scene/scene_emission.h). Shared: copies of a context share one pdf.
   std::shared_ptr<const WavelengthSampler> wavelengths;
+  // The distant environment's downwellingScalarIrradiance (techniques/technique_section.h) where
+  // a technique medium scatters it (PRT's environment over the water); null otherwise.
+  std::shared_ptr<const Spectrum> environmentFromAbove;
 };
 
 // Error on an unknown name. The pointers are to data that lives as long as the program. `table` is

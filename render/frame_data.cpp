@@ -182,6 +182,17 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
   if (frame.materials.empty()) frame.materials.push_back(shared::GpuMaterial{});
   if (frame.materialSpectra.empty()) frame.materialSpectra.push_back(glm::vec4(0.0f));
 
+  // The environment's light from above, in the lights' units (RGB mode: as a light's colour).
+  std::vector<glm::vec4> environmentFromAbove;
+  if (const Spectrum* e = context.environmentFromAbove.get()) {
+    if (rgbMode) {
+      Eigen::Vector3d xyz = double(shared::kLumensPerWatt) * cie1931Observer().integrate(*e);
+      environmentFromAbove.push_back(toVec4(space.xyzToRgb * xyz));
+    } else {
+      for (const shared::GpuBatch& batch : frame.batches) environmentFromAbove.push_back(at4(*e, batch.lambdaNm));
+    }
+  }
+
   // The techniques' blocks, each packed by its technique (techniques/technique_section.h).
   for (const auto& section : scene.techniques.all()) {
     FramePackInput input;
@@ -190,6 +201,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
     input.cameraPositionW = camera.position;
     input.sceneCameraPositionW = scene.camera.position;
     input.lightSpectra = frame.lightSpectra;
+    input.environmentFromAbove = environmentFromAbove;
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
       if (scene.lights[i].technique != section->key()) continue;
       input.ownLight = static_cast<int>(i);

@@ -42,4 +42,24 @@ struct GBufferReadback {
   std::vector<std::vector<float>> shadowLayers;
 };
 
+// What the lighting pass left at each pixel, by its CPU twin: for PRT objects, whose forward pass
+// adds its sums on top, the scene's lights and, under water, the in-scattering along the view ray.
+class LightingTwin {
+ public:
+  LightingTwin(const Renderer& renderer, const RgbToSpectrumTable& table)
+      : mReadback(renderer), mShading(renderer.frameData(), table, mReadback.shadowLayers),
+        mCamera(renderer.cameraTransform()), mWidth(renderer.settings().width), mHeight(renderer.settings().height) {}
+  glm::dvec3 at(int x, int y) {
+    const glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(mWidth),
+                       (static_cast<float>(y) + 0.5f) / static_cast<float>(mHeight));
+    return glm::dvec3(mShading.shade(mReadback.texel(static_cast<std::size_t>(y * mWidth + x)), uv, mCamera));
+  }
+
+ private:
+  GBufferReadback mReadback;
+  CpuShading mShading;
+  CameraTransform mCamera;
+  int mWidth, mHeight;
+};
+
 }  // namespace prism::render

@@ -36,8 +36,9 @@ namespace {
 const std::filesystem::path kExampleScenes = PRISM_SCENES_DIR;
 
 // `prt_metamers` (with `sets` applied) in the case's mode: at 400 random pixels' interior ones, the
-// accumulated tristimulus against the twin, within the renderer's 1e-4. Under water, the water
-// must also take a visible share of the light (what the twin keeps of its dry sum, on average).
+// accumulated tristimulus against the twins (the lighting pass's, then the PRT sums), within the
+// renderer's 1e-4. Under water, the water must also take a visible share of the light (what the
+// twin keeps of its dry sum, on average) and add its in-scattering of the environment.
 void expectRandomPixelsAgreeWithTheSharedSums(const PrtModeCase& mode, const std::vector<std::string>& sets,
                                               unsigned seed) {
   gpu::HeadlessContext context;
@@ -55,28 +56,36 @@ void expectRandomPixelsAgreeWithTheSharedSums(const PrtModeCase& mode, const std
   prt::PrtDrawData dry = *data;
   dry.medium.reset();
   std::vector<float> lit = gpu::readTexture2DFloat(renderer.accumulation(), 4);
+  LightingTwin lighting(renderer, cachedTestTable());
 
   const int w = settings.width, h = settings.height;
   const glm::vec3 camera = renderer.cameraTransform().position;
-  double worst = 0.0, sum = 0.0, kept = 0.0;
+  double worst = 0.0, sum = 0.0, kept = 0.0, haze = 0.0;
   const int compared = forRandomInteriorPixels(*data, renderer.cameraTransform(), w, h, seed, 400, [&](int x, int y, const Hit& hit) {
-    const glm::dvec3 expected = cpuTristimulus(*data, hit, camera);
+    const glm::dvec3 prtSums = cpuTristimulus(*data, hit, camera), lit0 = lighting.at(x, y);
+    const glm::dvec3 expected = prtSums + lit0;
     const std::size_t i = static_cast<std::size_t>(y * w + x);
     const glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
     const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
     const double error = glm::length(actual - expected) / scale;
     worst = std::max(worst, error);
     sum += error;
-    kept += expected.y / cpuTristimulus(dry, hit, camera).y;
+    kept += prtSums.y / cpuTristimulus(dry, hit, camera).y;
+    haze += lit0.y / expected.y;
   });
   kept /= std::max(compared, 1);
-  std::printf("PRT %s (frame %s)%s: %d pixels compared; relative error mean %.3g, max %.3g; the medium keeps %.3f of Y\n",
+  haze /= std::max(compared, 1);
+  std::printf("PRT %s (frame %s)%s: %d pixels compared; relative error mean %.3g, max %.3g; the medium keeps %.3f "
+              "of Y, the lighting pass adds %.3f of it\n",
               std::string(prt::prtModeName(mode.mode)).c_str(), std::string(renderModeName(mode.frameMode)).c_str(),
-              sets.empty() ? "" : " under water", compared, sum / std::max(compared, 1), worst, kept);
+              sets.empty() ? "" : " under water", compared, sum / std::max(compared, 1), worst, kept, haze);
   EXPECT_GT(compared, 100);
   EXPECT_LE(worst, 1e-4);
-  if (!sets.empty()) {
+  if (sets.empty()) {
+    EXPECT_EQ(haze, 0.0);  // no light but the environment, which PRT's sums carry
+  } else {
     EXPECT_LT(kept, 0.8);
+    EXPECT_GT(haze, 0.05);  // the water's in-scattering of the environment
   }
 }
 

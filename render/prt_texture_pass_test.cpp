@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "gpu/headless_context.h"
 #include "gpu/texture.h"
+#include "render/gbuffer_readback_test_support.h"
 #include "render/prt_twin_test_support.h"
 #include "scene/scene_loader.h"
 #include "spectral/table_test_support.h"
@@ -70,7 +71,8 @@ bool uniformTexels(const prt::PrtDrawData& d, const Hit& hit) {
 }
 
 // Under water (`sets`: a water section) the textured materials take ρ from R̂'s projection at the
-// nodes (shared/prt_medium.glsl), dimmed; the twin does the same.
+// nodes (shared/prt_medium.glsl), dimmed; the twin does the same, and the lighting pass's twin
+// adds the water's in-scattering below them.
 void expectMagnifiedTexelsAgreeWithTheTwin(const PrtModeCase& mode, const std::vector<std::string>& sets) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(std::filesystem::path(PRISM_SCENES_DIR) / "prt_textures.json", sets);
@@ -86,6 +88,7 @@ void expectMagnifiedTexelsAgreeWithTheTwin(const PrtModeCase& mode, const std::v
   ASSERT_EQ(data->textures.size(), 3u);
   for (const auto& texture : data->textures) ASSERT_TRUE(texture);
   std::vector<float> lit = gpu::readTexture2DFloat(renderer.accumulation(), 4);
+  LightingTwin lighting(renderer, cachedTestTable());
 
   const int w = settings.width, h = settings.height;
   std::set<int> materials;
@@ -95,7 +98,8 @@ void expectMagnifiedTexelsAgreeWithTheTwin(const PrtModeCase& mode, const std::v
   int compared = 0;
   forRandomInteriorPixels(*data, renderer.cameraTransform(), w, h, 16, 600, [&](int x, int y, const Hit& hit) {
     if (texelFootprint(*data, renderer.cameraTransform(), hit, x, y, w, h) > 0.75 || !uniformTexels(*data, hit)) return;
-    const glm::dvec3 expected = cpuTristimulus(*data, hit, renderer.cameraTransform().position);
+    const glm::dvec3 below = lighting.at(x, y);
+    const glm::dvec3 expected = below + cpuTristimulus(*data, hit, renderer.cameraTransform().position);
     const std::size_t i = static_cast<std::size_t>(y * w + x);
     const glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
     const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
@@ -106,7 +110,7 @@ void expectMagnifiedTexelsAgreeWithTheTwin(const PrtModeCase& mode, const std::v
     for (glm::dvec2 o : {glm::dvec2(1.0 / 512.0, 0.0), glm::dvec2(0.0, 1.0 / 512.0)}) {
       auto [origin, dir] = pixelRay(renderer.cameraTransform(), x + 0.5 + o.x, y + 0.5 + o.y, w, h);
       std::optional<Hit> moved = intersect(*data, origin, dir);
-      if (moved) snap += glm::length(cpuTristimulus(*data, *moved, renderer.cameraTransform().position) - expected) / scale;
+      if (moved) snap += glm::length(below + cpuTristimulus(*data, *moved, renderer.cameraTransform().position) - expected) / scale;
     }
     const double error = glm::length(actual - expected) / scale;
     worst = std::max(worst, error);

@@ -1,8 +1,30 @@
 #include "techniques/technique_section.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace prism {
+
+Spectrum downwellingScalarIrradiance(const TechniqueEnvironment& environment) {
+  constexpr int kCosines = 32, kAzimuths = 64;
+  constexpr double kCellSolidAngle = 2.0 * std::numbers::pi / (kCosines * kAzimuths);
+  std::vector<glm::vec3> directions;
+  directions.reserve(kCosines * kAzimuths);
+  for (int i = 0; i < kCosines; ++i) {
+    const double cosine = (i + 0.5) / kCosines, sine = std::sqrt(1.0 - cosine * cosine);
+    for (int j = 0; j < kAzimuths; ++j) {
+      const double phi = 2.0 * std::numbers::pi * (j + 0.5) / kAzimuths;
+      directions.emplace_back(static_cast<float>(sine * std::cos(phi)), static_cast<float>(cosine),
+                              static_cast<float>(sine * std::sin(phi)));
+    }
+  }
+  return Spectrum::fromFunction([&](double lambdaNm) {
+    double sum = 0.0;
+    for (const glm::vec3& d : directions) sum += environment.radiance(d, lambdaNm);
+    return sum * kCellSolidAngle;
+  });
+}
 
 TechniqueSections::TechniqueSections(const TechniqueSections& other) { *this = other; }
 

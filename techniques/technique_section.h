@@ -78,6 +78,14 @@ class TechniqueEnvironment {
   virtual double radiance(const glm::vec3& directionW, double lambdaNm) const = 0;
 };
 
+// An environment's radiance over the sky's hemisphere (directions with world y > 0), ∫ L dω
+// without the cosine, W·m⁻²·nm⁻¹ at each nanometre: the scalar irradiance it sends down through a
+// horizontal plane, which a medium below scatters per unit of its phase function (the water's
+// in-scattering, shaders/shared/underwater.glsl). A midpoint rule over 32 × 64 cells of equal
+// solid angle (cos θ and azimuth), exact for an environment that is uniform or a function of
+// elevation linear in cos θ within each cell.
+Spectrum downwellingScalarIrradiance(const TechniqueEnvironment& environment);
+
 // What a technique's block is packed from: the frame's wavelength batches (in RGB mode one batch
 // whose channels are R, G, B), where the frame is seen from and where the scene file put the
 // camera (which anchors e.g. the water's surface), and the light the technique added (its
@@ -91,6 +99,10 @@ struct FramePackInput {
   std::span<const glm::vec4> lightSpectra;
   int ownLight = -1;
   float ownLightIntensity = 0.0f;
+  // Per batch, the scene's distant environment's downwellingScalarIrradiance in the lights'
+  // units (at the batch's wavelengths; in RGB mode its linear RGB, as lightSpectra's); empty when
+  // the scene has no environment or nothing takes it (FrameContext::environmentFromAbove).
+  std::span<const glm::vec4> environmentFromAbove;
 };
 
 // A technique's part of one frame, as the GPU reads it: `constants` for a std140 uniform block at
@@ -242,6 +254,13 @@ class TechniqueSections {
     for (const auto& s : mSections)
       if (std::optional<TechniqueMedium> m = s->medium(sceneCameraPositionW)) return m;
     return std::nullopt;
+  }
+  // The first distant light (PRT's environment), if any: what the path tracer traces and the
+  // water in-scatters.
+  std::shared_ptr<const TechniqueEnvironment> environment(const RgbToSpectrumTable& table) const {
+    for (const auto& s : mSections)
+      if (std::shared_ptr<const TechniqueEnvironment> e = s->environment(table)) return e;
+    return nullptr;
   }
 
  private:

@@ -22,8 +22,10 @@
 // Under water (PRISM_TECHNIQUE_WATER, underwater.glsl) a directional light is the sun above the
 // surface: its irradiance at a point is attenuated by e^(−Kd·depth), and it single-scatters into
 // every view ray; point and spot lights are under water with the camera and lose e^(−σt·r) over
-// their distance r (and add no in-scattering: the model's is the sun's). What the camera sees at
-// distance S is then surface radiance · e^(−σt·S) + the sun's in-scattering over S.
+// their distance r (and add no in-scattering: the model's is the light from above). A distant
+// environment (PRT's) in-scatters too, as the sun does, with its radiance over the sky in place
+// of the sun's irradiance. What the camera sees at distance S is then surface radiance ·
+// e^(−σt·S) + the in-scattering over S of the sun and the environment.
 //
 // With a sky (PRISM_TECHNIQUE_ATMOSPHERE, atmosphere_lighting.glsl) the background is the sky-view
 // table and the sun's disc; the light that is the sun is attenuated by the sun's transmittance
@@ -83,10 +85,11 @@ PRISM_INLINE vec3 integrateBatch(IN(GpuBatch) batch, IN(vec4) radiance) {
 }
 
 #ifdef PRISM_TECHNIQUE_WATER
-// Irradiance at the water surface from the lights above it (the directional ones), per
-// wavelength of batch b: E(0) of underwater.glsl.
-PRISM_INLINE vec4 sunIrradianceAtSurface(IN(FrameConstants) fc, int b) {
-  vec4 e = vec4(0.0f);
+// The light arriving at the water surface from above, per wavelength of batch b: E(0) of
+// underwater.glsl, the directional lights' irradiance and the distant environment's radiance
+// over the sky (a scalar irradiance, as a collimated sun's is its irradiance).
+PRISM_INLINE vec4 irradianceAtSurface(IN(FrameConstants) fc, int b) {
+  vec4 e = frameWaterSpectrum(b, 3);
   for (int l = 0; l < fc.lightCount; ++l) {
     GpuLight light = frameLight(l);
     if (light.type == kLightDirectional && light.direction.y < 0.0f) {
@@ -97,8 +100,9 @@ PRISM_INLINE vec4 sunIrradianceAtSurface(IN(FrameConstants) fc, int b) {
 }
 
 // What the water does to radiance leaving a point `distanceM` along the unit view direction
-// `viewDir` from the camera: transmittance, then the sun's in-scattering, over the part of that
-// distance below the surface (a ray that looks up leaves the water after depth / viewDir.y).
+// `viewDir` from the camera: transmittance, then the in-scattering of the light from above, over
+// the part of that distance below the surface (a ray that looks up leaves the water after
+// depth / viewDir.y).
 PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, IN(vec3) viewDir,
                                float distanceM) {
   vec4 sigmaS = frameWaterSpectrum(b, 0);
@@ -107,7 +111,7 @@ PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, 
   float inWaterM = viewDir.y > 0.0f ? min(distanceM, frameWater().depthM / viewDir.y) : distanceM;
   return radiance * waterTransmittance(sigmaT, inWaterM) +
          waterInScattering(sigmaS, sigmaT, kd, frameWater().depthM, -viewDir.y, inWaterM) *
-             sunIrradianceAtSurface(fc, b);
+             irradianceAtSurface(fc, b);
 }
 #endif
 

@@ -22,7 +22,9 @@
 
 // The water's block of the lighting pass (techniques/underwater/water_section.h packs it): its
 // constants in a std140 uniform block, and per batch σs (j = 0), σt = σa + σs (j = 1) and Kd
-// (j = 2), 1/m, in a storage buffer at waterSpectrumIndex(b, j).
+// (j = 2), 1/m, and the scene's distant environment's part of E(0) (j = 3: its radiance over the
+// sky's hemisphere, ∫ L dω, in the lights' units; 0 when the scene has no environment) in a
+// storage buffer at waterSpectrumIndex(b, j).
 const int kWaterConstantsBinding = 1;
 const int kWaterSpectraBinding = 5;
 struct WaterConstants {
@@ -31,7 +33,7 @@ struct WaterConstants {
   float pad0;
   float pad1;
 };
-PRISM_INLINE int waterSpectrumIndex(int batch, int j) { return batch * 3 + j; }
+PRISM_INLINE int waterSpectrumIndex(int batch, int j) { return batch * 4 + j; }
 
 // The single-scattered radiance reaching the camera over S metres of the ray, per unit of
 // downwelling irradiance at the surface (multiply by E(0)).

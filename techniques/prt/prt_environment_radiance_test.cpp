@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <numbers>
 #include <optional>
 
 #include "shared_cpp.h"
@@ -69,6 +70,52 @@ TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironment) {
   std::printf("SH-5 coefficients of the projected radiance against the section's, worst relative to the constant "
               "term: sky %.2g, map turned 30° %.2g\n",
               projectionDifference(sky, 550.0), turned);
+}
+
+// What the water in-scatters of an environment (downwellingScalarIrradiance, ∫ L dω over the
+// sky): 2π·L for a uniform one, exactly; for the overcast gradient, linear in cos θ above the
+// horizon, 2π·L_z·(1 + 2·½)/3 whatever the rotation, its ground below left out; for a map, the
+// sky's texels weighted by their solid angles, within the midpoint rule's error.
+TEST(EnvironmentRadiance, ItsScalarIrradianceFromAboveIsTheSkysIntegral) {
+  const RgbToSpectrumTable& table = smallSrgbTable();
+  PrtSection uniform;
+  uniform.illuminant = "A";
+  uniform.shape = "uniform";
+  const auto flat = environmentRadiance(uniform, table);
+  const Spectrum e = downwellingScalarIrradiance(*flat);
+  for (double lambdaNm : {400.0, 555.0, 700.0}) {
+    const double l = flat->radiance(glm::vec3(0.0f, 1.0f, 0.0f), lambdaNm);
+    EXPECT_NEAR(e.at(lambdaNm), 2.0 * std::numbers::pi * l, 1e-12 * l) << lambdaNm;
+  }
+
+  PrtSection sky;
+  sky.illuminant = "F4";
+  sky.rotationDeg = 70.0f;
+  const auto overcast = environmentRadiance(sky, table);
+  const double zenith = overcast->radiance(glm::vec3(0.0f, 1.0f, 0.0f), 545.0);
+  EXPECT_NEAR(downwellingScalarIrradiance(*overcast).at(545.0), 2.0 * std::numbers::pi * zenith * 2.0 / 3.0, 1e-9 * zenith);
+
+  auto map = std::make_shared<PrtMap>();
+  map->file = "test map";
+  map->width = 64;
+  map->height = 32;
+  for (int y = 0; y < map->height; ++y)
+    for (int x = 0; x < map->width; ++x)
+      map->linearRgb.insert(map->linearRgb.end(), {0.2f + 0.01f * static_cast<float>(y), 0.3f, 0.1f + 0.005f * static_cast<float>(x)});
+  PrtSection mapped;
+  mapped.map = map;
+  const auto texels = environmentRadiance(mapped, table);
+  // The map's upper half summed texel by texel (its rows 0–15 lie above the horizon).
+  double expected = 0.0;
+  for (int y = 0; y < map->height / 2; ++y) {
+    for (int x = 0; x < map->width; ++x) {
+      const EquirectangularTexel t = equirectangularTexel(x, y, map->width, map->height);
+      expected += t.solidAngle * texels->radiance(glm::vec3(t.direction.x, t.direction.z, -t.direction.y), 610.0);
+    }
+  }
+  const double got = downwellingScalarIrradiance(*texels).at(610.0);
+  std::printf("scalar irradiance from above of a 64 × 32 map at 610 nm: %.6g, its texels' sum %.6g\n", got, expected);
+  EXPECT_NEAR(got, expected, 2e-3 * expected);
 }
 
 // Prism's spectral sky, the sun 25° high at azimuth 130°, turned 40° about the zenith.

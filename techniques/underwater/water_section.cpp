@@ -35,12 +35,13 @@ TechniqueBlock WaterSection::pack(const FramePackInput& input) const {
   block.constantsBinding = shared::kWaterConstantsBinding;
   block.setConstants(constants);
   block.dataBinding = shared::kWaterSpectraBinding;
-  for (const shared::GpuBatch& batch : input.batches) {
-    glm::vec4 lambdaNm = input.rgbMode ? rgbStandInWavelengths(kRgbStandInWavelengthsNm[1]) : batch.lambdaNm;
+  for (std::size_t b = 0; b < input.batches.size(); ++b) {
+    glm::vec4 lambdaNm = input.rgbMode ? rgbStandInWavelengths(kRgbStandInWavelengthsNm[1]) : input.batches[b].lambdaNm;
     glm::vec4 s = at4(sigmaS, lambdaNm), a = at4(sigmaA, lambdaNm);
     block.appendData(s);
     block.appendData(a + s);
     block.appendData(at4(kd, lambdaNm));
+    block.appendData(b < input.environmentFromAbove.size() ? input.environmentFromAbove[b] : glm::vec4(0.0f));
   }
   return block;
 }

@@ -37,6 +37,19 @@ double projectionDifference(const PrtSection& section, double lambdaNm, const Pr
   return worst;
 }
 
+// A width × height map, no two texels alike.
+std::shared_ptr<const PrtMap> testMap(int width, int height) {
+  auto map = std::make_shared<PrtMap>();
+  map->file = "test map";
+  map->width = width;
+  map->height = height;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      map->linearRgb.insert(map->linearRgb.end(), {0.1f + 0.01f * static_cast<float>(x), 0.2f + 0.02f * static_cast<float>(y),
+                                                   0.3f + 0.001f * static_cast<float>(x * y)});
+  return map;
+}
+
 TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironment) {
   PrtSection sky;
   sky.illuminant = "F4";
@@ -49,18 +62,10 @@ TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironment) {
   uniform.shape = "uniform";
   EXPECT_LT(projectionDifference(uniform, 600.0), 1e-6);
 
-  // A 128 × 64 map, no two texels alike, turned 30° about the zenith (the section projects each
-  // texel by its centre's direction times its solid angle, which on 16 × 8 texels is 2 % off).
-  auto map = std::make_shared<PrtMap>();
-  map->file = "test map";
-  map->width = 128;
-  map->height = 64;
-  for (int y = 0; y < map->height; ++y)
-    for (int x = 0; x < map->width; ++x)
-      map->linearRgb.insert(map->linearRgb.end(), {0.1f + 0.01f * static_cast<float>(x), 0.2f + 0.02f * static_cast<float>(y),
-                                                   0.3f + 0.001f * static_cast<float>(x * y)});
+  // A 128 × 64 map turned 30° about the zenith (the section projects each texel by its centre's
+  // direction times its solid angle, which on 16 × 8 texels is 2 % off).
   PrtSection mapped;
-  mapped.map = map;
+  mapped.map = testMap(128, 64);
   mapped.rotationDeg = 30.0f;
   const double turned = projectionDifference(mapped, 500.0);
   EXPECT_LT(turned, 1e-3);
@@ -95,21 +100,15 @@ TEST(EnvironmentRadiance, ItsScalarIrradianceFromAboveIsTheSkysIntegral) {
   const double zenith = overcast->radiance(glm::vec3(0.0f, 1.0f, 0.0f), 545.0);
   EXPECT_NEAR(downwellingScalarIrradiance(*overcast).at(545.0), 2.0 * std::numbers::pi * zenith * 2.0 / 3.0, 1e-9 * zenith);
 
-  auto map = std::make_shared<PrtMap>();
-  map->file = "test map";
-  map->width = 64;
-  map->height = 32;
-  for (int y = 0; y < map->height; ++y)
-    for (int x = 0; x < map->width; ++x)
-      map->linearRgb.insert(map->linearRgb.end(), {0.2f + 0.01f * static_cast<float>(y), 0.3f, 0.1f + 0.005f * static_cast<float>(x)});
   PrtSection mapped;
-  mapped.map = map;
+  mapped.map = testMap(64, 32);
+  const PrtMap& map = *mapped.map;
   const auto texels = environmentRadiance(mapped, table);
   // The map's upper half summed texel by texel (its rows 0–15 lie above the horizon).
   double expected = 0.0;
-  for (int y = 0; y < map->height / 2; ++y) {
-    for (int x = 0; x < map->width; ++x) {
-      const EquirectangularTexel t = equirectangularTexel(x, y, map->width, map->height);
+  for (int y = 0; y < map.height / 2; ++y) {
+    for (int x = 0; x < map.width; ++x) {
+      const EquirectangularTexel t = equirectangularTexel(x, y, map.width, map.height);
       expected += t.solidAngle * texels->radiance(glm::vec3(t.direction.x, t.direction.z, -t.direction.y), 610.0);
     }
   }

@@ -14,9 +14,9 @@
 #include "core/error.h"
 #include "imaging/exr_file.h"
 #include "scene/scene_loader.h"
+#include "spectral/rgb_to_spectrum_cache.h"
 #include "spectral/spectral_texture.h"
 #include "techniques/prt/prt_section.h"
-#include "spectral/rgb_to_spectrum_cache.h"
 
 namespace prism::batch {
 namespace {

@@ -12,10 +12,10 @@
 #include "core/error.h"
 #include "core/fnv1a.h"
 #include "core/task_split.h"
-#include "spectral/spectral_texture.h"
 #include "imaging/exr_band.h"
 #include "imaging/float_image.h"
 #include "spectral/observer.h"
+#include "spectral/spectral_texture.h"
 
 namespace prism::batch {
 namespace {
@@ -112,6 +112,8 @@ std::string sceneHash(const std::filesystem::path& scene, const std::vector<std:
   for (const Material& material : loaded.materials) {
     if (material.reflectance) values(material.reflectance->values());
     if (const SpectralTexture* t = material.spectralTexture.get()) {
+      const std::int32_t size[2] = {t->width, t->height};
+      hash = fnv1a(size, sizeof size, hash);
       values(t->wavelengthsNm);
       values(std::span(t->basis.data(), static_cast<std::size_t>(t->basis.size())));
       hash = fnv1a(t->coefficients.data(), t->coefficients.size() * sizeof(float), hash);

@@ -15,7 +15,7 @@ find_package(OpenEXR 3 REQUIRED CONFIG)
 find_package(TinyGLTF 2.7 REQUIRED CONFIG)
 # libepoxy loads OpenGL and EGL for prism::gpu (no CMake config of its own).
 pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
-# Embree 3 traces the reference path tracer's rays (Debian: libembree-dev): target embree.
+# Embree 3 traces the CPU's rays (prism::rays: the path tracer, PRT's bake; Debian: libembree-dev).
 find_package(embree 3 REQUIRED CONFIG)
 find_package(Threads REQUIRED)
 find_package(NLopt 2.7 REQUIRED CONFIG)  # Nelder–Mead for the atmosphere's wavelength optimiser

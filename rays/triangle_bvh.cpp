@@ -97,7 +97,7 @@ TriangleBvh::TriangleBvh(std::span<const TriangleMesh> meshes) : mHandles(std::m
   mHandles->scene = rtcNewScene(mHandles->device);
   check(mHandles->device, "rtcNewScene");
   for (const TriangleMesh& mesh : meshes) {
-    if (mesh.indices.size() >= 3) attach(mHandles->device, mHandles->scene, mesh);
+    if (!mesh.indices.empty()) attach(mHandles->device, mHandles->scene, mesh);
   }
   rtcSetSceneBuildQuality(mHandles->scene, RTC_BUILD_QUALITY_HIGH);
   rtcCommitScene(mHandles->scene);

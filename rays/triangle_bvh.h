@@ -14,8 +14,8 @@
 namespace prism::rays {
 
 // One mesh to trace: its positions and its triangles (three indices each, < positions.size(),
-// PRISM_CHECKed: the loaders refuse such meshes first), under an id that hits report; ids need
-// not be dense. Read at construction only (copied).
+// PRISM_CHECKed: the loaders refuse such meshes first), under an id that hits report; ids are
+// distinct but need not be dense. Read at construction only (copied).
 struct TriangleMesh {
   std::uint32_t id = 0;
   std::span<const glm::vec3> positions;
@@ -31,7 +31,7 @@ struct TriangleHit {
 
 class TriangleBvh {
  public:
-  // Meshes without triangles are left out. Error when Embree cannot create its device, allocate
+  // Meshes without indices are left out. Error when Embree cannot create its device, allocate
   // the buffers or build the BVH (high quality: built once, traced many times).
   explicit TriangleBvh(std::span<const TriangleMesh> meshes);
   ~TriangleBvh();

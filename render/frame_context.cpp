@@ -4,7 +4,8 @@
 
 namespace prism::render {
 
-FrameContext frameContext(const FrameSettings& settings, const Scene& scene, const RgbToSpectrumTable& table) {
+FrameContext frameContext(const FrameSettings& settings, const Scene& scene, const RgbToSpectrumTable& table,
+                          std::optional<std::shared_ptr<const Spectrum>> environmentFromAbove) {
   FrameContext c;
   c.observer = &observer(settings.observer);
   c.tristimulusObserver = settings.mode == RenderMode::Rgb ? &cie1931Observer() : c.observer;
@@ -12,9 +13,11 @@ FrameContext frameContext(const FrameSettings& settings, const Scene& scene, con
   c.display = resolveDisplay(settings.display, *c.tristimulusObserver);
   c.wavelengths = std::make_shared<const WavelengthSampler>(
       sceneWavelengthSampler(effectiveSampling(settings), *c.observer, scene, *c.sceneColourSpace, table));
-  if (scene.techniques.medium(scene.camera.position)) {
+  if (environmentFromAbove) {
+    c.environmentFromAbove = std::move(*environmentFromAbove);
+  } else if (scene.techniques.medium(scene.camera.position)) {
     if (std::shared_ptr<const TechniqueEnvironment> e = scene.techniques.environment(table)) {
-      c.environmentFromAbove = std::make_shared<const Spectrum>(downwellingScalarIrradiance(*e));
+      c.environmentFromAbove = std::make_shared<const Spectrum>(e->scalarIrradianceFromAbove());
     }
   }
   return c;

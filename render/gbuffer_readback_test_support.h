@@ -1,5 +1,6 @@
 // A rendered frame's G-buffer, shadow maps and accumulation read back from the GPU, for tests that
-// hold the lighting pass to its CPU twin (render/cpu_shading.h) pixel by pixel.
+// hold the lighting pass to its CPU twin (render/cpu_shading.h) pixel by pixel; and that twin's
+// value at a pixel (LightingTwin), for tests of passes that draw on top of the lighting pass.
 #pragma once
 
 #include <cstdint>

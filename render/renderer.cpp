@@ -118,7 +118,7 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
 
 void Renderer::setSettings(const FrameSettings& settings) {
   validate(settings);
-  FrameContext context = frameContext(settings, mScene, mTable);
+  FrameContext context = frameContext(settings, mScene, mTable, mContext.environmentFromAbove);
   DisplayTransform display = displayTransform(settings.display, context.display, mCamera.ev100);
   bool resized = settings.width != mSettings.width || settings.height != mSettings.height ||
                  settings.gbufferAlbedo != mSettings.gbufferAlbedo;

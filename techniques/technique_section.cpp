@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace prism {
 
-Spectrum downwellingScalarIrradiance(const TechniqueEnvironment& environment) {
+Spectrum TechniqueEnvironment::scalarIrradianceFromAbove() const {
   constexpr int kCosines = 32, kAzimuths = 64;
   constexpr double kCellSolidAngle = 2.0 * std::numbers::pi / (kCosines * kAzimuths);
+  constexpr double kStepNm = 5.0;
   std::vector<glm::vec3> directions;
   directions.reserve(kCosines * kAzimuths);
   for (int i = 0; i < kCosines; ++i) {
@@ -19,11 +21,14 @@ Spectrum downwellingScalarIrradiance(const TechniqueEnvironment& environment) {
                               static_cast<float>(sine * std::sin(phi)));
     }
   }
-  return Spectrum::fromFunction([&](double lambdaNm) {
+  std::vector<double> lambdasNm, sums;
+  for (double lambdaNm = kLambdaMinNm; lambdaNm <= kLambdaMaxNm; lambdaNm += kStepNm) {
     double sum = 0.0;
-    for (const glm::vec3& d : directions) sum += environment.radiance(d, lambdaNm);
-    return sum * kCellSolidAngle;
-  });
+    for (const glm::vec3& d : directions) sum += radiance(d, lambdaNm);
+    lambdasNm.push_back(lambdaNm);
+    sums.push_back(sum * kCellSolidAngle);
+  }
+  return TabulatedSpectrum(std::move(lambdasNm), std::move(sums), Extrapolation::Clamp).toDense();
 }
 
 TechniqueSections::TechniqueSections(const TechniqueSections& other) { *this = other; }

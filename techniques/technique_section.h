@@ -68,7 +68,8 @@ struct TechniqueMedium {
 // scene's lights are (683 lm/W · ∫ L ȳ dλ is its luminance in cd/m²), everywhere beyond the scene. The path
 // tracer lights the scene with it where the rasteriser's technique does: paths that leave the
 // scene after a bounce gather it (camera rays still see the scene's background, as the
-// rasteriser draws it), and with direct transport each surface point samples it once. A sun is
+// rasteriser draws it), and with direct transport each surface point and each scattering point in
+// a medium samples it once (the rasteriser's water in-scatters it: scalarIrradianceFromAbove). A sun is
 // not part of it: a technique adds that as a light (TechniqueSection::light), which every
 // renderer samples directly.
 class TechniqueEnvironment {
@@ -76,15 +77,14 @@ class TechniqueEnvironment {
   virtual ~TechniqueEnvironment() = default;
   // `directionW`: unit, world space, towards where the light comes from.
   virtual double radiance(const glm::vec3& directionW, double lambdaNm) const = 0;
+  // Its radiance over the sky's hemisphere (world y > 0), ∫ L dω without the cosine, W·m⁻²·nm⁻¹:
+  // the scalar irradiance it sends down through a horizontal plane, which a medium below scatters
+  // per unit of its phase function (the water's in-scattering, shaders/shared/underwater.glsl).
+  // By default a midpoint rule over 32 × 64 cells of equal solid angle (cos θ and azimuth) at
+  // every 5 nm, linear between, for smooth environments; one made of texels or of closed forms
+  // overrides it with its exact sum (a map's sun, a texel, would fall between the cells).
+  virtual Spectrum scalarIrradianceFromAbove() const;
 };
-
-// An environment's radiance over the sky's hemisphere (directions with world y > 0), ∫ L dω
-// without the cosine, W·m⁻²·nm⁻¹ at each nanometre: the scalar irradiance it sends down through a
-// horizontal plane, which a medium below scatters per unit of its phase function (the water's
-// in-scattering, shaders/shared/underwater.glsl). A midpoint rule over 32 × 64 cells of equal
-// solid angle (cos θ and azimuth), exact for an environment that is uniform or a function of
-// elevation linear in cos θ within each cell.
-Spectrum downwellingScalarIrradiance(const TechniqueEnvironment& environment);
 
 // What a technique's block is packed from: the frame's wavelength batches (in RGB mode one batch
 // whose channels are R, G, B), where the frame is seen from and where the scene file put the
@@ -99,7 +99,7 @@ struct FramePackInput {
   std::span<const glm::vec4> lightSpectra;
   int ownLight = -1;
   float ownLightIntensity = 0.0f;
-  // Per batch, the scene's distant environment's downwellingScalarIrradiance in the lights'
+  // Per batch, the scene's distant environment's scalarIrradianceFromAbove in the lights'
   // units (at the batch's wavelengths; in RGB mode its linear RGB, as lightSpectra's); empty when
   // the scene has no environment or nothing takes it (FrameContext::environmentFromAbove).
   std::span<const glm::vec4> environmentFromAbove;
@@ -194,7 +194,8 @@ class TechniqueSection {
   virtual std::optional<TechniqueMedium> medium(const glm::vec3& /*sceneCameraPositionW*/) const {
     return std::nullopt;
   }
-  // Its distant light for the reference, if it has one; `table` is the scene's colour space's
+  // Its distant light for the reference and for the water's in-scattering, if it has one; `table`
+  // is the scene's colour space's
   // upsampling table (what its RGB content is upsampled by). The scene's objects it shades
   // itself (shadesObjects) are traced as Lambertian surfaces of their material's albedo.
   virtual std::shared_ptr<const TechniqueEnvironment> environment(const RgbToSpectrumTable& /*table*/) const {

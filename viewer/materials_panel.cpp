@@ -42,11 +42,18 @@ class MaterialsPanel final : public Panel {
     std::vector<std::string> conductors{"none"};
     for (const std::string& c : listConductors()) conductors.push_back(c);
     std::string conductor = m.conductor ? m.conductor->name : "none";
+    // PRT objects are diffuse: the scene loader refuses a conductor on them, and so does the panel.
+    const bool onPrt = std::any_of(context.scene.meshes.begin(), context.scene.meshes.end(), [&](const Mesh& mesh) {
+      return static_cast<std::size_t>(mesh.material) == mMaterial && mesh.technique == "prt";
+    });
+    ImGui::BeginDisabled(onPrt && !m.conductor);
     if (stringCombo("conductor", conductor, conductors)) {
       if (conductor == "none") m.conductor.reset();
       else m.conductor = conductorIor(conductor);
       changed = true;
     }
+    ImGui::EndDisabled();
+    if (onPrt && !m.conductor) ImGui::TextDisabled("(PRT objects use it: they are diffuse)");
     reflectancePlot(m, context.table);
   }
 

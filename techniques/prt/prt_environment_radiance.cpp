@@ -55,6 +55,31 @@ class SectionEnvironment final : public TechniqueEnvironment {
                         .at(static_cast<float>(lambdaNm));
   }
 
+  // Exact, whatever the rotation about the zenith: the uniform sky 2π·L, the overcast gradient
+  // 2π·L_z·∫₀¹ (1 + 2μ)/3 dμ = 4π·L_z/3, a map its texels' radiance times the part of their
+  // solid angle above the horizon, (2π/width)·(max(cos θ₀, 0) − max(cos θ₁, 0)) (at every 5 nm,
+  // linear between: texels' spectra are smooth); the spectral sky by the default quadrature.
+  Spectrum scalarIrradianceFromAbove() const override {
+    if (mSky) return TechniqueEnvironment::scalarIrradianceFromAbove();
+    if (!mMap) return mSpd * (mUniform ? 2.0 * std::numbers::pi : 4.0 * std::numbers::pi / 3.0);
+    const int w = mMap->width, h = mMap->height;
+    std::vector<double> lambdasNm, sums;
+    for (int lambdaNm = kLambdaMinNm; lambdaNm <= kLambdaMaxNm; lambdaNm += 5) lambdasNm.push_back(lambdaNm);
+    sums.assign(lambdasNm.size(), 0.0);
+    for (int y = 0; y < h; ++y) {
+      const double cos0 = std::cos(std::numbers::pi * y / h), cos1 = std::cos(std::numbers::pi * (y + 1) / h);
+      const double above = std::max(cos0, 0.0) - std::max(cos1, 0.0);
+      if (above <= 0.0) break;  // rows run from the zenith down
+      const double solidAngle = 2.0 * std::numbers::pi / w * above;
+      for (int x = 0; x < w; ++x) {
+        const RgbUnboundedSpectrum& texel = mTexels[static_cast<std::size_t>(y * w + x)];
+        for (std::size_t i = 0; i < lambdasNm.size(); ++i) sums[i] += solidAngle * texel.at(static_cast<float>(lambdasNm[i]));
+      }
+    }
+    for (double& s : sums) s *= mScale;
+    return TabulatedSpectrum(std::move(lambdasNm), std::move(sums), Extrapolation::Clamp).toDense();
+  }
+
  private:
   std::shared_ptr<const PrtMap> mMap;
   std::shared_ptr<const SkyRadianceGrid> mSky;

@@ -77,17 +77,18 @@ TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironment) {
               projectionDifference(sky, 550.0), turned);
 }
 
-// What the water in-scatters of an environment (downwellingScalarIrradiance, ∫ L dω over the
-// sky): 2π·L for a uniform one, exactly; for the overcast gradient, linear in cos θ above the
-// horizon, 2π·L_z·(1 + 2·½)/3 whatever the rotation, its ground below left out; for a map, the
-// sky's texels weighted by their solid angles, within the midpoint rule's error.
+// What the water in-scatters of an environment (scalarIrradianceFromAbove, ∫ L dω over the sky):
+// 2π·L for a uniform one; for the overcast gradient, linear in cos θ above the horizon,
+// 2π·L_z·(1 + 2·½)/3 whatever the rotation, its ground below left out; for a map with a sun (one
+// texel a thousand times the others), the sky's texels weighted by their solid angles — where the
+// default quadrature, whose cells are 50 times a texel of a 0.5° sun, is off.
 TEST(EnvironmentRadiance, ItsScalarIrradianceFromAboveIsTheSkysIntegral) {
   const RgbToSpectrumTable& table = smallSrgbTable();
   PrtSection uniform;
   uniform.illuminant = "A";
   uniform.shape = "uniform";
   const auto flat = environmentRadiance(uniform, table);
-  const Spectrum e = downwellingScalarIrradiance(*flat);
+  const Spectrum e = flat->scalarIrradianceFromAbove();
   for (double lambdaNm : {400.0, 555.0, 700.0}) {
     const double l = flat->radiance(glm::vec3(0.0f, 1.0f, 0.0f), lambdaNm);
     EXPECT_NEAR(e.at(lambdaNm), 2.0 * std::numbers::pi * l, 1e-12 * l) << lambdaNm;
@@ -98,13 +99,15 @@ TEST(EnvironmentRadiance, ItsScalarIrradianceFromAboveIsTheSkysIntegral) {
   sky.rotationDeg = 70.0f;
   const auto overcast = environmentRadiance(sky, table);
   const double zenith = overcast->radiance(glm::vec3(0.0f, 1.0f, 0.0f), 545.0);
-  EXPECT_NEAR(downwellingScalarIrradiance(*overcast).at(545.0), 2.0 * std::numbers::pi * zenith * 2.0 / 3.0, 1e-9 * zenith);
+  EXPECT_NEAR(overcast->scalarIrradianceFromAbove().at(545.0), 2.0 * std::numbers::pi * zenith * 2.0 / 3.0, 1e-9 * zenith);
 
+  auto sunny = std::make_shared<PrtMap>(*testMap(61, 30));
+  for (int c = 0; c < 3; ++c) sunny->linearRgb[3 * (5 * 61 + 17) + static_cast<std::size_t>(c)] *= 1000.0f;
   PrtSection mapped;
-  mapped.map = testMap(64, 32);
+  mapped.map = sunny;
   const PrtMap& map = *mapped.map;
   const auto texels = environmentRadiance(mapped, table);
-  // The map's upper half summed texel by texel (its rows 0–15 lie above the horizon).
+  // The map's upper half summed texel by texel (its rows 0–14 lie above the horizon).
   double expected = 0.0;
   for (int y = 0; y < map.height / 2; ++y) {
     for (int x = 0; x < map.width; ++x) {
@@ -112,9 +115,24 @@ TEST(EnvironmentRadiance, ItsScalarIrradianceFromAboveIsTheSkysIntegral) {
       expected += t.solidAngle * texels->radiance(glm::vec3(t.direction.x, t.direction.z, -t.direction.y), 610.0);
     }
   }
-  const double got = downwellingScalarIrradiance(*texels).at(610.0);
-  std::printf("scalar irradiance from above of a 64 × 32 map at 610 nm: %.6g, its texels' sum %.6g\n", got, expected);
-  EXPECT_NEAR(got, expected, 2e-3 * expected);
+  const double got = texels->scalarIrradianceFromAbove().at(610.0);
+  const double quadrature = texels->TechniqueEnvironment::scalarIrradianceFromAbove().at(610.0);
+  std::printf("scalar irradiance from above of a 61 × 30 map with a sun at 610 nm: %.6g, its texels' sum %.6g, "
+              "the default quadrature %.6g\n", got, expected, quadrature);
+  EXPECT_NEAR(got, expected, 1e-9 * expected);
+  EXPECT_GT(std::abs(quadrature - expected), 0.01 * expected);
+}
+
+// The default quadrature, on a smooth environment: L = L_z·max(0, cos θ) gives π·L_z, exactly at
+// its 5 nm nodes (the rule is exact for radiance linear in cos θ).
+TEST(EnvironmentRadiance, TheDefaultScalarIrradianceIsExactForACosineSky) {
+  struct CosineSky final : TechniqueEnvironment {
+    double radiance(const glm::vec3& d, double lambdaNm) const override { return std::max(0.0f, d.y) * (1.0 + lambdaNm / 1000.0); }
+  };
+  const Spectrum e = CosineSky().scalarIrradianceFromAbove();
+  for (double lambdaNm : {360.0, 545.0, 830.0}) {
+    EXPECT_NEAR(e.at(lambdaNm), std::numbers::pi * (1.0 + lambdaNm / 1000.0), 1e-9) << lambdaNm;
+  }
 }
 
 // Prism's spectral sky, the sun 25° high at azimuth 130°, turned 40° about the zenith.

@@ -37,7 +37,8 @@ struct WaterSection final : TechniqueSection {
   std::unique_ptr<TechniqueSection> clone() const override { return std::make_unique<WaterSection>(*this); }
   // WaterConstants (the surface and the camera's depth below it) and, per batch, σs, σt = σa + σs
   // and Kd at its wavelengths (in RGB mode at 680, 550 and 440 nm, the wavelengths RGB renderers
-  // commonly stand R, G and B for): underwater.glsl's layout.
+  // commonly stand R, G and B for), then the environment's light from above as the frame gives it
+  // (FramePackInput::environmentFromAbove; 0 without): underwater.glsl's layout.
   TechniqueBlock pack(const FramePackInput& input) const override;
   // Everything below the surface, scattering isotropically as the analytic model assumes, with
   // its Kd (by which PRT's forward pass dims the environment reaching its objects).

@@ -30,6 +30,12 @@ glm::vec4 reflectanceRgb(const Spectrum& reflectance, const RgbColourSpace& spac
   return toVec4(rgb);
 }
 
+// Linear RGB (scene colour space) of a light's spectrum, as RGB mode carries lights: its
+// tristimulus at 683 lm/W, unclamped.
+glm::vec4 emissionRgb(const Spectrum& spd, const RgbColourSpace& space) {
+  return toVec4(space.xyzToRgb * (double(shared::kLumensPerWatt) * cie1931Observer().integrate(spd)));
+}
+
 glm::vec4 at4(const Spectrum& s, const glm::vec4& lambdaNm, float scale = 1.0f) {
   glm::vec4 v;
   for (int j = 0; j < 4; ++j) v[j] = static_cast<float>(s.at(lambdaNm[j])) * scale;
@@ -129,8 +135,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
     }
     frame.lights.push_back(g);
     if (rgbMode) {
-      Eigen::Vector3d xyz = double(shared::kLumensPerWatt) * cie1931Observer().integrate(light.spd);
-      frame.lightSpectra.push_back(toVec4(space.xyzToRgb * xyz));
+      frame.lightSpectra.push_back(emissionRgb(light.spd, space));
     } else {
       for (const shared::GpuBatch& batch : frame.batches) {
         frame.lightSpectra.push_back(at4(light.spd, batch.lambdaNm));
@@ -186,8 +191,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
   std::vector<glm::vec4> environmentFromAbove;
   if (const Spectrum* e = context.environmentFromAbove.get()) {
     if (rgbMode) {
-      Eigen::Vector3d xyz = double(shared::kLumensPerWatt) * cie1931Observer().integrate(*e);
-      environmentFromAbove.push_back(toVec4(space.xyzToRgb * xyz));
+      environmentFromAbove.push_back(emissionRgb(*e, space));
     } else {
       for (const shared::GpuBatch& batch : frame.batches) environmentFromAbove.push_back(at4(*e, batch.lambdaNm));
     }

@@ -33,7 +33,7 @@ glm::vec4 reflectanceRgb(const Spectrum& reflectance, const RgbColourSpace& spac
 // Linear RGB (scene colour space) of a light's spectrum, as RGB mode carries lights: its
 // tristimulus at 683 lm/W, unclamped.
 glm::vec4 emissionRgb(const Spectrum& spd, const RgbColourSpace& space) {
-  return toVec4(space.xyzToRgb * (double(shared::kLumensPerWatt) * cie1931Observer().integrate(spd)));
+  return toVec4(space.xyzToRgb * luminousTristimulus(spd));
 }
 
 glm::vec4 at4(const Spectrum& s, const glm::vec4& lambdaNm, float scale = 1.0f) {
@@ -206,6 +206,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
     input.sceneCameraPositionW = scene.camera.position;
     input.lightSpectra = frame.lightSpectra;
     input.environmentFromAbove = environmentFromAbove;
+    input.colourSpace = &space;
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
       if (scene.lights[i].technique != section->key()) continue;
       input.ownLight = static_cast<int>(i);

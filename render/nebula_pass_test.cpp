@@ -32,8 +32,10 @@ namespace {
 constexpr int kSize = 40;
 
 // A 4 m cube of the twin tests' small nebula in front of a camera 4 m from it; `wall`: a black
-// box whose face at z = 0 (the cube's middle) covers x ∈ [0, 2] m, the image's left half.
-std::string sceneJson(bool wall, const char* method, const char* wallColour = "[0, 0, 0]", const char* lights = "") {
+// box whose face at z = 0 (the cube's middle) covers x ∈ [0, 2] m, the image's left half;
+// `starsLightSurfaces`: the nebula's stars light it (off: the wall holds the scene's lights alone).
+std::string sceneJson(bool wall, const char* method, const char* wallColour = "[0, 0, 0]", const char* lights = "",
+                      bool starsLightSurfaces = false) {
   return fmt::format(R"json({{
   "camera": {{"position": [0, 0, -6], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 40, "near": 0.1, "far": 100, "ev100": 0}},
   "materials": {{"black": {{"base_colour_srgb": {}}}}},
@@ -44,11 +46,13 @@ std::string sceneJson(bool wall, const char* method, const char* wallColour = "[
     "extinction": 3, "scattering": 1, "emission": 0.002,
     "lines": {{"H I Balmer (case B)": 1.0, "[O III] doublet": 0.8}},
     "stars": [{{"position": [0.5, 0.55, 0.45], "temperature": 12000}}, {{"position": [0.3, 0.4, 0.6], "temperature": 4000, "luminosity": 0.6}}],
-    "filters": "cie1931", "box": {{"min": [-2, -2, -2], "size": 4}}, "method": "{}", "intensity": 1
+    "filters": "cie1931", "box": {{"min": [-2, -2, -2], "size": 4}}, "method": "{}", "intensity": 1,
+    "light_surfaces": {}
   }}
 }})json",
                      wallColour, lights,
-                     wall ? R"({"box": {"centre": [1, 0, 0.5], "size": [2, 6, 1]}, "material": "black"})" : "", method);
+                     wall ? R"({"box": {"centre": [1, 0, 0.5], "size": [2, 6, 1]}, "material": "black"})" : "", method,
+                     starsLightSurfaces);
 }
 
 struct Frame {
@@ -227,6 +231,54 @@ TEST(NebulaPass, WhatLiesBehindIsDimmedPerWavelength) {
     EXPECT_LE(worst, 1e-4);
     EXPECT_LT(dimming, 0.95);
     EXPECT_LT(zOverY, 0.97 * zOverYUndimmed);  // blue is dimmed most: e^(−g/λ)
+  }
+}
+
+// The nebula's stars light the scene's surfaces (shared/nebula_lighting.glsl): the white wall
+// through the cube with no other light, in 16-wavelength frames and in RGB, is at every pixel the
+// CPU twin's lighting of its G-buffer texel — each star's intensity from the section's block, its
+// dimming from the star depths the pass marched with — plus the nebula's channels; the stars are
+// all that lights it.
+TEST(NebulaPass, ItsStarsLightTheScenesSurfaces) {
+  gpu::HeadlessContext context;
+  Scene scene = loadScene(writeTempFile("nebula_star_lit_wall.json", sceneJson(true, "projection", "[0.8, 0.8, 0.8]", "", true)));
+  for (RenderMode mode : {RenderMode::JakobHanika, RenderMode::Rgb}) {
+    FrameSettings settings;
+    settings.width = settings.height = kSize;
+    settings.mode = mode;
+    settings.lookup = UpsamplingLookup::Manual;
+    settings.display.dither = false;
+    Renderer renderer(scene, cachedTestTable(), settings);
+    renderer.renderFrame();
+    const TechniquePass* technique = renderer.techniquePass(nebula::NebulaSection::kKey);
+    const auto* pass = dynamic_cast<const nebula::NebulaPass*>(technique);
+    ASSERT_NE(pass, nullptr);
+    const std::vector<glm::vec4> nebulaColour = pass->marcher()->colour().read<glm::vec4>();
+    GBufferReadback g(renderer);
+    CpuShading cpu(renderer.frameData(), cachedTestTable(), g.shadowLayers,
+                   {{std::string(nebula::NebulaSection::kKey), technique->readTexels()}});
+    double worst = 0.0, wallY = 0.0;
+    int wall = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y * kSize + x);
+        const glm::vec2 uv((static_cast<float>(x) + 0.5f) / kSize, (static_cast<float>(y) + 0.5f) / kSize);
+        const GBufferTexel t = g.texel(i);
+        const glm::dvec3 lit(cpu.shade(t, uv, renderer.cameraTransform()));
+        const glm::dvec3 expected = lit + glm::dvec3(nebulaColour[static_cast<std::size_t>((kSize - 1 - y) * kSize + x)]);
+        const glm::dvec3 actual(g.accumulated(i));
+        const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z), 1e-3});
+        worst = std::max(worst, glm::length(actual - expected) / scale);
+        if (t.materialId == 0) continue;
+        wallY += lit.y;
+        ++wall;
+      }
+    std::printf("the wall lit by the nebula's stars alone, %s: %d pixels, mean Y %.4g; GPU against the CPU twin, "
+                "relative error max %.3g\n",
+                std::string(renderModeName(mode)).c_str(), wall, wallY / wall, worst);
+    EXPECT_GT(wall, kSize * kSize / 3);
+    EXPECT_GT(wallY / wall, 1e-4);
+    EXPECT_LE(worst, 1e-4);
   }
 }
 

@@ -104,7 +104,7 @@ TEST_P(PrtGpuCpuParity, RandomPixelsAgreeWithTheSharedSumsThroughTheWater) {
 INSTANTIATE_TEST_SUITE_P(Modes, PrtGpuCpuParity, prtModeCases(), prtModeCaseName);
 
 // Inside a nebula (scenes/nebula_field.json, its moon a PRT object under a uniform D65
-// environment; the scene's light, the nebula's emission and scattering taken out so that the
+// environment; the scene's light, the nebula's emission, scattering and star light taken out so that the
 // moon's pixels hold PRT's sums alone): the fragment shader dims each node by e^(−g/λ), g the
 // nebula's optical depth at the pixel, which the renderer binds for the forward pass as for
 // lighting; the CPU twin reads the same g back (NebulaPass::readTexels).
@@ -112,7 +112,8 @@ TEST(PrtGpuCpuParity, PrtObjectsInsideANebulaAreDimmedByIt) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kExampleScenes / "nebula_field.json",
                           {R"(prt={"environment": {"illuminant": "D65", "shape": "uniform", "luminance": 2}})",
-                           "objects.1.technique=prt", "nebula.emission=0", "nebula.scattering=0"});
+                           "objects.1.technique=prt", "nebula.emission=0", "nebula.scattering=0",
+                           "nebula.light_surfaces=false"});
   scene.lights.clear();
   const FrameSettings settings = prtTwinSettings({prt::PrtMode::Spectral, RenderMode::JakobHanika}, 160, 90);
   Renderer renderer(scene, cachedTestTable(), settings);

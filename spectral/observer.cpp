@@ -126,8 +126,10 @@ double absoluteTristimulusScale(const Observer& obs) {
   return kLumensPerWatt * observer("cie1931").integrate(d65).y() / obs.integrate(d65).y();
 }
 
-double luminousIntegral(const Spectrum& spd) {
-  return double(shared::kLumensPerWatt) * cie1931Observer().integrate(spd)[1];
+double luminousIntegral(const Spectrum& spd) { return luminousTristimulus(spd)[1]; }
+
+Eigen::Vector3d luminousTristimulus(const Spectrum& spd) {
+  return double(shared::kLumensPerWatt) * cie1931Observer().integrate(spd);
 }
 
 }  // namespace prism

@@ -58,5 +58,8 @@ double absoluteTristimulusScale(const Observer& obs);
 // quantity of one unit of S (luminance in cd/m² when S is radiance in W·sr⁻¹·m⁻²·nm⁻¹). A scene's
 // lights are divided by it on load, light colours and the background scaled by it.
 double luminousIntegral(const Spectrum& spd);
+// 683 lm/W · the CIE 1931 XYZ of S (Y is luminousIntegral's): how RGB renderers carry a light, as
+// their colour space's xyzToRgb of it.
+Eigen::Vector3d luminousTristimulus(const Spectrum& spd);
 
 }  // namespace prism

@@ -29,6 +29,7 @@
 namespace prism {
 
 class RgbToSpectrumTable;
+struct RgbColourSpace;
 
 // A directional light a technique puts into the scene (the sky's sun). The scene loader adds it
 // to the scene's lights like any other, normalised photometrically (spd is absolute, W/m²/nm;
@@ -103,6 +104,9 @@ struct FramePackInput {
   // units (at the batch's wavelengths; in RGB mode its linear RGB, as lightSpectra's); empty when
   // the scene has no environment or nothing takes it (FrameContext::environmentFromAbove).
   std::span<const glm::vec4> environmentFromAbove;
+  // The scene's colour space: in RGB mode a light a technique adds itself is its linear RGB there
+  // (xyzToRgb of luminousTristimulus, as the frame's lights).
+  const RgbColourSpace* colourSpace = nullptr;
 };
 
 // A technique's part of one frame, as the GPU reads it: `constants` for a std140 uniform block at

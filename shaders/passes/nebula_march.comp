@@ -19,13 +19,13 @@
 // piece), NEBULA_PRE_INTEGRATION pre-integration (each star's tabulated channels over x), else
 // projection. The reference, analytic and pre-integration add into the colour directly.
 //
-// Grids are read with texelFetch and interpolated here, between voxel centres as the CPU does
-// (nebula_march.glsl's axis), not by the sampler: hardware trilinear filtering quantises its
-// weights (to 1/256 on most GPUs), which the twin test would measure instead of the march.
+// Grids are read with texelFetch and interpolated between voxel centres as the CPU does
+// (common_nebula_fields.glsl), not by the sampler, whose quantised weights the twin test would measure.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/prelude.glsl"
 #include "shared/nebula_integrals.glsl"
 #include "shared/nebula_march.glsl"
+#include "common_nebula_fields.glsl"
 
 layout(binding = 0) uniform sampler3D uDensity;  // R32F, nx × ny × nz, x fastest
 // RGBA32F, nx × ny × (nz · slabs): four values per voxel a slab, slab s at z ∈ [s·nz, (s+1)·nz):
@@ -159,27 +159,6 @@ bool clipToCube(vec3 p, vec3 d, out float t0, out float t1) {
   return t1 > t0;
 }
 
-// Where a point falls in the grid: the corners and weights along each axis.
-struct Cell {
-  ivec3 i0;
-  ivec3 i1;
-  vec3 f;
-};
-
-Cell cellAt(vec3 p, ivec3 n) {
-  Cell c;
-  for (int a = 0; a < 3; ++a) {
-    int i0;
-    int i1;
-    float f;
-    nebulaTrilinearAxis(p[a], n[a], i0, i1, f);
-    c.i0[a] = i0;
-    c.i1[a] = i1;
-    c.f[a] = f;
-  }
-  return c;
-}
-
 // DensityGrid::sample: nested lerps, x then y then z; 0 outside the cube.
 float densityAt(vec3 p, Cell c) {
   if (any(lessThan(p, vec3(0.0f))) || any(greaterThan(p, vec3(1.0f)))) return 0.0f;
@@ -198,19 +177,6 @@ float densityAt(vec3 p, Cell c) {
   float c0 = c00 + (c10 - c00) * c.f.y;
   float c1 = c01 + (c11 - c01) * c.f.y;
   return c0 + (c1 - c0) * c.f.z;
-}
-
-// VoxelField::sample for four values of slab `slab`: Σ over corners (x outer, z inner) of the
-// corner's weight × its values.
-vec4 fieldOf(sampler3D field, Cell c, int slab, int nz) {
-  ivec3 i[2] = ivec3[2](c.i0, c.i1);
-  vec3 w[2] = vec3[2](vec3(1.0f) - c.f, c.f);
-  vec4 sum = vec4(0.0f);
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b)
-      for (int d = 0; d < 2; ++d)
-        sum += (w[a].x * w[b].y * w[d].z) * texelFetch(field, ivec3(i[a].x, i[b].y, i[d].z + slab * nz), 0);
-  return sum;
 }
 
 void main() {

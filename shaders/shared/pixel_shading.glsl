@@ -36,7 +36,8 @@
 // With a nebula (PRISM_TECHNIQUE_NEBULA, nebula_lighting.glsl) what the camera sees of a surface
 // or of the background is dimmed by e^(−g/λ) per wavelength, g the optical depth of the nebula in
 // front of it (nebulaOpticalDepthAt(uv), from the nebula's march); the nebula's own light its
-// pass adds after this one.
+// pass adds after this one. Its stars light surfaces as point lights of their own, dimmed by the
+// dust between (nebulaStarsReflected).
 //
 // Loop order: per light, the wavelength-independent terms (incidence, shadow, D·G) once; then
 // per batch the albedo spectrum once and every light's contribution, accumulated straight into
@@ -165,6 +166,36 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
   return tristimulus;
 }
 
+#ifdef PRISM_TECHNIQUE_NEBULA
+// The light of the nebula's stars that the surface reflects towards v at batch b (lambdaNm: the
+// wavelengths its dimming is taken at): each star a point light of the block's radiant intensity,
+// dimmed by e^(−g_s/λ) (shared/nebula_lighting.glsl).
+PRISM_INLINE vec4 nebulaStarsReflected(IN(FrameConstants) fc, IN(SurfaceSample) s, IN(vec3) v, bool lambertian,
+                                       int b, IN(vec4) lambdaNm, IN(vec4) albedo, bool spectralConductor,
+                                       IN(vec4) conductorK, float metallic) {
+  NebulaLightConstants nebula = frameNebula();
+  vec3 boxMin = vec3(nebula.boxMinSize.x, nebula.boxMinSize.y, nebula.boxMinSize.z);
+  vec3 pCube = (s.position - boxMin) / nebula.boxMinSize.w;
+  vec4 radiance = vec4(0.0f);
+  for (int star = 0; star < nebula.starCount; ++star) {
+    vec4 position = nebulaStarData(nebulaStarPositionIndex(star, fc.batchCount));
+    vec3 positionW = vec3(position.x, position.y, position.z);
+    LightIncidence li = lightIncidence(kLightPoint, positionW, vec3(0.0f, -1.0f, 0.0f), 1.0f, 1.0f, 0.0f, s.position);
+    MicrofacetTerms terms = microfacetTerms(s.normal, v, li.toLight, s.roughness);
+    if (lambertian) terms = lambertianTerms(terms);
+    if (terms.cosLight <= 0.0f) continue;
+    vec3 at;
+    float depthUm = nebulaStarDepthPoint(pCube, (positionW - boxMin) / nebula.boxMinSize.w, at)
+                        ? nebulaStarDepthAt(star, at)
+                        : 0.0f;
+    vec4 arriving = nebulaStarData(nebulaStarSpectrumIndex(star, b, fc.batchCount)) * li.irradiance *
+                    nebulaTransmittance4(depthUm, lambdaNm);
+    radiance += surfaceReflection(terms, spectralConductor, albedo, conductorK, metallic) * arriving;
+  }
+  return radiance;
+}
+#endif
+
 // uv: the pixel's centre in [0, 1]² (the aerial-perspective volume's screen coordinates).
 PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
                                IN(vec3) cameraPosition, IN(vec2) uv) {
@@ -246,6 +277,11 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 #endif
       radiance += reflection * arriving;
     }
+#ifdef PRISM_TECHNIQUE_NEBULA
+    vec4 nebulaLambdaNm = fc.mode == kModeRgb ? kNebulaRgbStandInNm : batch.lambdaNm;
+    radiance += nebulaStarsReflected(fc, s, v, lambertian, b, nebulaLambdaNm, albedo, spectralConductor, conductorK,
+                                     metallic);
+#endif
 #ifdef PRISM_TECHNIQUE_WATER
     PRISM_PRECISE vec3 fromCamera = s.position - cameraPosition;
     float distanceM = length(fromCamera);
@@ -259,7 +295,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     radiance = radiance * ap.transmittance + ap.inScattering;
 #endif
 #ifdef PRISM_TECHNIQUE_NEBULA
-    radiance *= nebulaTransmittance4(nebulaDepthUm, fc.mode == kModeRgb ? kNebulaRgbStandInNm : batch.lambdaNm);
+    radiance *= nebulaTransmittance4(nebulaDepthUm, nebulaLambdaNm);
 #endif
     tristimulus += integrateBatch(batch, radiance);
   }

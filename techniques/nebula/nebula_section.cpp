@@ -1,16 +1,65 @@
 #include "techniques/nebula/nebula_section.h"
 
+#include <numbers>
+
 #include <fmt/format.h>
 
 #include "core/error.h"
 #include "core/fnv1a.h"
+#include "spectral/colour_space.h"
+#include "spectral/observer.h"
+#include "techniques/nebula/nebula_cpu_twin.h"
 
 namespace prism::nebula {
 
-TechniqueBlock NebulaSection::pack(const FramePackInput&) const {
+TechniqueBlock NebulaSection::pack(const FramePackInput& input) const {
   TechniqueBlock block;
   block.key = kKey;
+  shared::NebulaLightConstants constants{};
+  constants.boxMinSize = glm::vec4(boxMin, boxSize);
+  constants.starCount = lightSurfaces ? static_cast<int>(model.stars.size()) : 0;
+  block.constantsBinding = shared::kNebulaLightConstantsBinding;
+  block.setConstants(constants);
+  block.dataBinding = shared::kNebulaStarLightsBinding;
+  for (int s = 0; s < constants.starCount; ++s) {
+    const NebulaStar& star = model.stars[static_cast<std::size_t>(s)];
+    block.appendData(glm::vec4(starPositionW(star), 0.0f));
+    if (input.rgbMode) {
+      PRISM_CHECK(input.colourSpace);
+      const Eigen::Vector3d rgb = input.colourSpace->xyzToRgb * luminousTristimulus(starRadiantIntensity(star));
+      block.appendData(glm::vec4(static_cast<float>(rgb.x()), static_cast<float>(rgb.y()), static_cast<float>(rgb.z()), 0.0f));
+      continue;
+    }
+    const StarSpectrum shape = starShape(star.temperatureK, model.starModel);
+    const double scale = starRadiantScale(star);
+    for (const shared::GpuBatch& batch : input.batches) {
+      glm::vec4 v;
+      for (int j = 0; j < 4; ++j) v[j] = static_cast<float>(scale * shape.shape(batch.lambdaNm[j] * 1e-3));
+      block.appendData(v);
+    }
+  }
+  if (block.data.empty()) block.appendData(glm::vec4(0.0f));  // GL buffers are never empty
   return block;
+}
+
+Spectrum NebulaSection::starRadiantIntensity(const NebulaStar& star) const {
+  const StarSpectrum shape = starShape(star.temperatureK, model.starModel);
+  const double scale = starRadiantScale(star);
+  Spectrum radiant;
+  for (int i = 0; i < kSpectrumSamples; ++i) radiant[i] = scale * shape.shape((kLambdaMinNm + i) * 1e-3);
+  return radiant;
+}
+
+double NebulaSection::starRadiantScale(const NebulaStar& star) const {
+  // The nebula's radiance is intensity/(683·1000) W·m⁻²·sr⁻¹·nm⁻¹ per unit of its model's (ȳ over
+  // λ in µm, lengths in the cube's side): a star of luminosity L in the cube's units radiates
+  // L·size² of the world's, over 4π sr.
+  return intensity * star.luminosity * double(boxSize) * double(boxSize) /
+         (4.0 * std::numbers::pi * double(shared::kLumensPerWatt) * 1000.0);
+}
+
+glm::vec3 NebulaSection::starPositionW(const NebulaStar& star) const {
+  return boxMin + glm::vec3(star.position) * boxSize;
 }
 
 std::uint64_t NebulaSection::hashLoadedData(std::uint64_t hash) const {
@@ -40,6 +89,14 @@ TechniqueBench NebulaSection::bench() const {
   b.configs.push_back({"nebula reference (paper)", {}, false, 0, reference});
   b.ratios.push_back({"ratio_reference_to_projection", "nebula reference (paper)", "nebula projection"});
   b.ratios.push_back({"ratio_reference_to_light_density", "nebula reference (paper)", "nebula light-density"});
+  // What the stars' light on surfaces costs a still view (the lighting pass; the march runs once).
+  auto lit = std::make_shared<NebulaSection>(*this);
+  lit->lightSurfaces = true;
+  auto unlit = std::make_shared<NebulaSection>(*this);
+  unlit->lightSurfaces = false;
+  b.configs.push_back({"nebula stars light surfaces", {}, false, 0, lit});
+  b.configs.push_back({"nebula stars light nothing", {}, false, 0, unlit});
+  b.ratios.push_back({"ratio_star_light_to_none", "nebula stars light surfaces", "nebula stars light nothing"});
   return b;
 }
 
@@ -90,7 +147,8 @@ void NebulaSection::regenerateDensity() {
 std::unique_ptr<TechniqueSection> NebulaSection::parse(const schema::Node& n, const TechniqueSections&) {
   using schema::Range;
   n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "ionisation", "stars",
-                  "star_model", "filters", "passbands", "steps", "box", "method", "basis", "reference_samples", "intensity", "march_every_frame"});
+                  "star_model", "filters", "passbands", "steps", "box", "method", "basis", "reference_samples", "intensity", "march_every_frame",
+                  "light_surfaces"});
   auto s = std::make_unique<NebulaSection>();
   s->source = readNebulaKeys(n, s->model, s->steps, 0);
   s->density = std::make_shared<DensityGrid>(std::move(s->model.density));
@@ -117,6 +175,7 @@ std::unique_ptr<TechniqueSection> NebulaSection::parse(const schema::Node& n, co
   }
   s->intensity = static_cast<float>(n.number("intensity", s->intensity, Range::atLeast(0.0)));
   s->marchEveryFrame = n.boolean("march_every_frame", s->marchEveryFrame);
+  s->lightSurfaces = n.boolean("light_surfaces", s->lightSurfaces);
   return s;
 }
 

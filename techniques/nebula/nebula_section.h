@@ -6,7 +6,12 @@
 //
 // Its channels are its filters': "cie1931" gives the CIE 1931 XYZ of the light, added as the
 // frame's XYZ; "hubble" gives the palette's R, G, B, added as linear sRGB (Rec. 709, D65) turned
-// to XYZ. Either is times `intensity` (cd/m² of Y per unit of the nebula's channels). The nebula
+// to XYZ. Either is times `intensity` (cd/m² of Y per unit of the nebula's channels).
+//
+// Its stars light the scene's surfaces (`light_surfaces`, on by default), each a point light of
+// the radiant intensity that gives the nebula's own light in natural colour: I(λ) = intensity·L·
+// size²·S(λ)/(4π·683·1000) W·sr⁻¹·nm⁻¹ (starRadiantIntensity; S the star's normalised spectrum in
+// µm⁻¹), dimmed by the dust between (shared/nebula_lighting.glsl). The nebula
 // is its own reference (the paper's double integration, the renderer's reference mode), so the
 // path tracer refuses it.
 #pragma once
@@ -42,18 +47,27 @@ struct NebulaSection final : TechniqueSection {
   // March every frame, not only when the view or the section changed: what a moving camera
   // costs (the bench's configurations; scene key "march_every_frame").
   bool marchEveryFrame = false;
+  // Its stars light the scene's surfaces (scene key "light_surfaces").
+  bool lightSurfaces = true;
 
   std::string_view key() const override { return kKey; }
   std::string_view shaderDefine() const override { return "PRISM_TECHNIQUE_NEBULA"; }
   std::unique_ptr<TechniqueSection> clone() const override { return std::make_unique<NebulaSection>(*this); }
-  // No block: the pass uploads what it marches when the section changes.
+  // The stars' lights (shared/nebula_lighting.glsl's block); the pass uploads what it marches
+  // when the section changes.
   TechniqueBlock pack(const FramePackInput& input) const override;
+  // A star's radiant intensity (W·sr⁻¹·nm⁻¹): its light as the nebula's natural colour sees it,
+  // whatever the filters (the header says why).
+  Spectrum starRadiantIntensity(const NebulaStar& star) const;
+  // Where the star is in the world (m).
+  glm::vec3 starPositionW(const NebulaStar& star) const;
   std::string_view notTracedBecause() const override;
   // The density grid's size and values (a file's, or the noise's).
   std::uint64_t hashLoadedData(std::uint64_t hash) const override;
   // The section's method against the others on this scene, the nebula's pass timed in each,
   // marching every frame: the reference at the paper's settings (100 steps, 21 wavelengths a step)
-  // over projection and over light–density (prism bench's ratios).
+  // over projection and over light–density (prism bench's ratios); and a still view with the
+  // stars lighting the surfaces over one without.
   TechniqueBench bench() const override;
 
   // The model with the density, as a NebulaRenderer takes it.
@@ -70,6 +84,10 @@ struct NebulaSection final : TechniqueSection {
   void regenerateDensity();
 
   static std::unique_ptr<TechniqueSection> parse(const schema::Node& node, const TechniqueSections& earlier);
+
+ private:
+  // I(λ) per unit of the star's normalised spectrum S(λ) (µm⁻¹).
+  double starRadiantScale(const NebulaStar& star) const;
 };
 
 }  // namespace prism::nebula

@@ -103,18 +103,26 @@ TEST(NebulaSection, CopiesShareTheDensityAndTheKeyFollowsTheModel) {
   EXPECT_NE(s.volumeKey(), volume);
 }
 
-TEST(NebulaSection, TheBenchTimesThePapersBaselineAgainstEachMethod) {
+TEST(NebulaSection, TheBenchTimesThePapersBaselineAgainstEachMethodAndTheStarLight) {
   auto parsed = parseSection("{" + kNoise + "}");
   TechniqueBench b = parsed->bench();
-  ASSERT_EQ(b.configs.size(), 3u);
+  ASSERT_EQ(b.configs.size(), 5u);
   const auto& reference = dynamic_cast<const NebulaSection&>(*b.configs[2].section);
   EXPECT_EQ(reference.method, Method::Reference);
   EXPECT_EQ(reference.renderSettings().uniformSamples, 7);  // 21 wavelengths a step
   EXPECT_EQ(reference.steps, 100);
-  for (const auto& c : b.configs) EXPECT_TRUE(dynamic_cast<const NebulaSection&>(*c.section).marchEveryFrame) << c.label;
-  ASSERT_EQ(b.ratios.size(), 2u);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_TRUE(dynamic_cast<const NebulaSection&>(*b.configs[static_cast<std::size_t>(i)].section).marchEveryFrame);
+  ASSERT_EQ(b.ratios.size(), 3u);
   EXPECT_EQ(b.ratios[0].numerator, b.configs[2].label);
   EXPECT_EQ(b.ratios[0].denominator, b.configs[0].label);
+  // The stars' light on surfaces, a still view with and without it.
+  const auto& lit = dynamic_cast<const NebulaSection&>(*b.configs[3].section);
+  const auto& unlit = dynamic_cast<const NebulaSection&>(*b.configs[4].section);
+  EXPECT_TRUE(lit.lightSurfaces && !lit.marchEveryFrame);
+  EXPECT_FALSE(unlit.lightSurfaces || unlit.marchEveryFrame);
+  EXPECT_EQ(b.ratios[2].numerator, b.configs[3].label);
+  EXPECT_EQ(b.ratios[2].denominator, b.configs[4].label);
 }
 
 // The lighting pass dims an RGB frame's R, G, B at the wavelengths the rest of Prism stands them for.

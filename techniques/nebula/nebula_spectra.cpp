@@ -237,20 +237,26 @@ int degree(const PolynomialPiece& p) {
   return 0;
 }
 
-double StarSpectrum::at(double lambdaUm) const {
-  return normalisation * scattering.at(lambdaUm) *
-         (model == StarModel::Planck ? planck(lambdaUm, temperatureK) : wien(lambdaUm, temperatureK));
+double StarSpectrum::at(double lambdaUm) const { return scattering.at(lambdaUm) * shape(lambdaUm); }
+
+double StarSpectrum::shape(double lambdaUm) const {
+  return normalisation * (model == StarModel::Planck ? planck(lambdaUm, temperatureK) : wien(lambdaUm, temperatureK));
 }
 
-StarSpectrum makeStarSpectrum(double temperatureK, StarModel model, const PolynomialPiece& scattering) {
+StarSpectrum starShape(double temperatureK, StarModel model) {
   StarSpectrum s;
   s.temperatureK = temperatureK;
   s.model = model;
   std::vector<double> nodes, weights;
   gaussLegendre(48, kBandLoUm, kBandHiUm, nodes, weights);
   double integral = 0.0;
-  for (std::size_t i = 0; i < nodes.size(); ++i) integral += weights[i] * s.at(nodes[i]);
+  for (std::size_t i = 0; i < nodes.size(); ++i) integral += weights[i] * s.shape(nodes[i]);
   s.normalisation = 1.0 / integral;
+  return s;
+}
+
+StarSpectrum makeStarSpectrum(double temperatureK, StarModel model, const PolynomialPiece& scattering) {
+  StarSpectrum s = starShape(temperatureK, model);
   s.scattering = scattering;
   std::vector<double> lambdaUm, values;
   for (int i = 0; i <= 400; ++i) {

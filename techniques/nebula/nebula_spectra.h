@@ -126,7 +126,11 @@ struct StarSpectrum {
   PiecewisePolynomial fit;
   double fitMaxRelativeError = 0.0;
   double at(double lambdaUm) const;
+  // The star's own light, normalised but without P_σ, at any λ (not only the band's).
+  double shape(double lambdaUm) const;
 };
+// The star's normalisation alone (no P_σ, no fit): what shape() needs, for the light it sheds.
+StarSpectrum starShape(double temperatureK, StarModel model);
 StarSpectrum makeStarSpectrum(double temperatureK, StarModel model, const PolynomialPiece& scattering = greyScattering());
 
 // An emission line of ionised gas: a Dirac at λ (vacuum, µm) with a weight.

@@ -75,6 +75,9 @@ class NebulaGpuMarcher {
   // The last march's optical depth g (µm) from the camera to where each ray stopped, R32F, the
   // image's size, row 0 at the bottom (shared/nebula_lighting.glsl).
   const gpu::Texture2D& opticalDepth() const { return mOpticalDepth; }
+  // Each star's optical depth g_s (µm) per voxel, RGBA32F, star s in lane s % 4 of the z-slab s / 4
+  // (nebula_march.comp's uField for projection; a 1×1×1 zero texel without stars).
+  const gpu::Texture3D& starDepth() const { return mStarDepth; }
   // march + finish.
   NebulaImage render(const RenderSettings& settings);
 

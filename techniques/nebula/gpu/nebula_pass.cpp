@@ -143,7 +143,9 @@ void NebulaPass::run(const TechniqueBlock&, const Scene& scene, const CameraTran
 }
 
 void NebulaPass::bindForLighting() const {
-  if (mMarcher) mMarcher->opticalDepth().bind(static_cast<GLuint>(shared::kNebulaOpticalDepthUnit));
+  if (!mMarcher) return;
+  mMarcher->opticalDepth().bind(static_cast<GLuint>(shared::kNebulaOpticalDepthUnit));
+  mMarcher->starDepth().bind(static_cast<GLuint>(shared::kNebulaStarDepthUnit));
 }
 
 std::shared_ptr<const TechniqueTexels> NebulaPass::readTexels() const {
@@ -152,6 +154,7 @@ std::shared_ptr<const TechniqueTexels> NebulaPass::readTexels() const {
   texels->width = mView.width;
   texels->height = mView.height;
   texels->opticalDepthUm = gpu::readTexture2DFloat(mMarcher->opticalDepth(), 1);
+  texels->precomputation = mRenderer;
   return texels;
 }
 

@@ -1,7 +1,8 @@
 // The nebula panel (techniques/nebula): method, basis size, steps, filters and their passbands
-// (moved and resized), intensity, the medium, the ionisation zones, the density's noise and the stars. Sees only the PanelContext. Edits that make the
-// pass precompute again (anything of the model: about half a second at 64³) or march again reach
-// the scene when a control is released, not while it is dragged; the intensity is live.
+// (moved and resized), intensity, the medium, the ionisation zones, the density's noise, the stars
+// and whether they light the surfaces. Sees only the PanelContext. Edits that make the pass
+// precompute again (anything of the model: about half a second at 64³) or march again reach the
+// scene when a control is released, not while it is dragged; the intensity and the star light are live.
 #include <imgui.h>
 
 #include <map>
@@ -191,6 +192,7 @@ class NebulaPanel final : public Panel {
       ImGui::TreePop();
     }
     if (ImGui::TreeNode("stars")) {
+      changed |= ImGui::Checkbox("light the surfaces", &s.lightSurfaces);  // live: the lighting pass reads it
       changed |= starControls(mEdits, s.model.stars);
       ImGui::TreePop();
     }

@@ -88,7 +88,8 @@ bool setNebulaKey(Scene& scene, const std::string& key, const std::string& value
   static const char* const kKeys[] = {"nebula.method",     "nebula.basis",      "nebula.steps",
                                       "nebula.filters",    "nebula.intensity",  "nebula.extinction",
                                       "nebula.scattering", "nebula.emission",   "nebula.ionisation",
-                                      "nebula.ionisation.front_radius",         "nebula.ionisation.front_width"};
+                                      "nebula.ionisation.front_radius",         "nebula.ionisation.front_width",
+                                      "nebula.light_surfaces"};
   if (setPassbandKey(scene.techniques.find<nebula::NebulaSection>(), key, value)) return true;
   bool known = !starKeyWhat(key).empty();
   for (const char* k : kKeys) known = known || key == k;
@@ -119,6 +120,9 @@ bool setNebulaKey(Scene& scene, const std::string& key, const std::string& value
   } else if (key == "nebula.ionisation") {
     if (value != "on" && value != "off") throw Error("nebula.ionisation: expected on or off, got '" + excerpt(value) + "'");
     s->model.ionisation = value == "on" ? std::optional(s->model.ionisation.value_or(nebula::IonisationModel{})) : std::nullopt;
+  } else if (key == "nebula.light_surfaces") {
+    if (value != "on" && value != "off") throw Error("nebula.light_surfaces: expected on or off, got '" + excerpt(value) + "'");
+    s->lightSurfaces = value == "on";
   } else if (key.rfind("nebula.ionisation.", 0) == 0) {  // turns the zones on
     const bool radius = key == "nebula.ionisation.front_radius";
     const double most = radius ? nebula::kMaxFrontRadius : nebula::kMaxFrontWidth;

@@ -105,5 +105,19 @@ TEST(NebulaSetKeys, IonisationZones) {
   EXPECT_EQ(s->model.ionisation, nebula::IonisationModel{});
 }
 
+// nebula.light_surfaces on|off: whether the stars light the scene's surfaces.
+TEST(NebulaSetKeys, StarsLightSurfacesOrNot) {
+  Scene scene;
+  scene.techniques.add(std::make_unique<nebula::NebulaSection>());
+  auto* s = scene.techniques.find<nebula::NebulaSection>();
+  EXPECT_TRUE(s->lightSurfaces);
+  EXPECT_TRUE(setNebulaKey(scene, "nebula.light_surfaces", "off"));
+  EXPECT_FALSE(s->lightSurfaces);
+  EXPECT_EQ(nebulaKeyError(scene, "nebula.light_surfaces", "1"), "nebula.light_surfaces: expected on or off, got '1'");
+  EXPECT_FALSE(s->lightSurfaces);
+  EXPECT_TRUE(setNebulaKey(scene, "nebula.light_surfaces", "on"));
+  EXPECT_TRUE(s->lightSurfaces);
+}
+
 }  // namespace
 }  // namespace prism::viewer

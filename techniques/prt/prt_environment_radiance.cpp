@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <memory>
+#include <mutex>
 #include <numbers>
 #include <vector>
 
@@ -15,6 +18,56 @@
 namespace prism::prt {
 namespace {
 
+// A map's texels as spectra (per unit of the section's scale) and their radiance over the sky,
+// exactly: what the environment's rotation about the zenith and its luminance leave alone.
+struct MapSpectra {
+  std::vector<RgbUnboundedSpectrum> texels;
+  Spectrum fromAbove;  // Σ over the texels above the horizon of their radiance × solid angle there
+};
+
+// Texel (x, y) covers the part of its solid angle above the horizon, (2π/width)·(max(cos θ₀, 0) −
+// max(cos θ₁, 0)); the sum runs at every 5 nm, linear between (texels' spectra are smooth).
+Spectrum sumAboveHorizon(const std::vector<RgbUnboundedSpectrum>& texels, int w, int h) {
+  std::vector<double> lambdasNm, sums;
+  for (int lambdaNm = kLambdaMinNm; lambdaNm <= kLambdaMaxNm; lambdaNm += 5) lambdasNm.push_back(lambdaNm);
+  sums.assign(lambdasNm.size(), 0.0);
+  for (int y = 0; y < h; ++y) {
+    const double cos0 = std::cos(std::numbers::pi * y / h), cos1 = std::cos(std::numbers::pi * (y + 1) / h);
+    const double above = std::max(cos0, 0.0) - std::max(cos1, 0.0);
+    if (above <= 0.0) break;  // rows run from the zenith down
+    const double solidAngle = 2.0 * std::numbers::pi / w * above;
+    for (int x = 0; x < w; ++x) {
+      const RgbUnboundedSpectrum& texel = texels[static_cast<std::size_t>(y * w + x)];
+      for (std::size_t i = 0; i < lambdasNm.size(); ++i) sums[i] += solidAngle * texel.at(static_cast<float>(lambdasNm[i]));
+    }
+  }
+  return TabulatedSpectrum(std::move(lambdasNm), std::move(sums), Extrapolation::Clamp).toDense();
+}
+
+// The last map's spectra, kept for the process: every change of a scene with a PRT map under water
+// asks for its sum (about 20 ms for a 256 × 128 map, seconds for 4K), and the PRT panel's rotation
+// and luminance sliders change the scene on every frame of a drag. Keyed by the map's identity
+// (the section shares it between copies of the scene) and the table's.
+std::shared_ptr<const MapSpectra> mapSpectra(const std::shared_ptr<const PrtMap>& map, const RgbToSpectrumTable& table) {
+  static std::mutex mutex;
+  static std::weak_ptr<const PrtMap> lastMap;
+  static const RgbToSpectrumTable* lastTable = nullptr;
+  static std::uint32_t lastTableHash = 0;
+  static std::shared_ptr<const MapSpectra> last;
+  std::lock_guard lock(mutex);
+  if (last && lastMap.lock() == map && lastTable == &table && lastTableHash == table.inputsHash()) return last;
+  auto spectra = std::make_shared<MapSpectra>();
+  spectra->texels.reserve(map->linearRgb.size() / 3);
+  for (std::size_t i = 0; i < map->linearRgb.size(); i += 3)
+    spectra->texels.emplace_back(table, glm::vec3(map->linearRgb[i], map->linearRgb[i + 1], map->linearRgb[i + 2]));
+  spectra->fromAbove = sumAboveHorizon(spectra->texels, map->width, map->height);
+  lastMap = map;
+  lastTable = &table;
+  lastTableHash = table.inputsHash();
+  last = spectra;
+  return spectra;
+}
+
 class SectionEnvironment final : public TechniqueEnvironment {
  public:
   SectionEnvironment(const PrtSection& section, const RgbToSpectrumTable& table) : mMap(section.map) {
@@ -27,9 +80,7 @@ class SectionEnvironment final : public TechniqueEnvironment {
     if (section.sky) {
       mSky = sectionSky(*section.sky);  // radiance in W·m⁻²·sr⁻¹·nm⁻¹ already; its sun is a light
     } else if (mMap) {
-      mTexels.reserve(mMap->linearRgb.size() / 3);
-      for (std::size_t i = 0; i < mMap->linearRgb.size(); i += 3)
-        mTexels.emplace_back(table, glm::vec3(mMap->linearRgb[i], mMap->linearRgb[i + 1], mMap->linearRgb[i + 2]));
+      mSpectra = mapSpectra(mMap, table);
       mScale = section.luminanceCdM2 / gridLuminance(RgbUnboundedSpectrum(table, glm::vec3(1.0f)).toDense()) /
                double(shared::kLumensPerWatt);
     } else {
@@ -51,33 +102,18 @@ class SectionEnvironment final : public TechniqueEnvironment {
     }
     const glm::ivec2 t = equirectangularTexelOf(d, mMap->width, mMap->height);
     const int x = t.x, y = t.y;
-    return mScale * mTexels[static_cast<std::size_t>(y) * static_cast<std::size_t>(mMap->width) + static_cast<std::size_t>(x)]
-                        .at(static_cast<float>(lambdaNm));
+    return mScale *
+           mSpectra->texels[static_cast<std::size_t>(y) * static_cast<std::size_t>(mMap->width) + static_cast<std::size_t>(x)]
+               .at(static_cast<float>(lambdaNm));
   }
 
   // Exact, whatever the rotation about the zenith: the uniform sky 2π·L, the overcast gradient
-  // 2π·L_z·∫₀¹ (1 + 2μ)/3 dμ = 4π·L_z/3, a map its texels' radiance times the part of their
-  // solid angle above the horizon, (2π/width)·(max(cos θ₀, 0) − max(cos θ₁, 0)) (at every 5 nm,
-  // linear between: texels' spectra are smooth); the spectral sky by the default quadrature.
+  // 2π·L_z·∫₀¹ (1 + 2μ)/3 dμ = 4π·L_z/3, a map its texels' sum (sumAboveHorizon, made once per
+  // map); the spectral sky by the default quadrature.
   Spectrum scalarIrradianceFromAbove() const override {
     if (mSky) return TechniqueEnvironment::scalarIrradianceFromAbove();
     if (!mMap) return mSpd * (mUniform ? 2.0 * std::numbers::pi : 4.0 * std::numbers::pi / 3.0);
-    const int w = mMap->width, h = mMap->height;
-    std::vector<double> lambdasNm, sums;
-    for (int lambdaNm = kLambdaMinNm; lambdaNm <= kLambdaMaxNm; lambdaNm += 5) lambdasNm.push_back(lambdaNm);
-    sums.assign(lambdasNm.size(), 0.0);
-    for (int y = 0; y < h; ++y) {
-      const double cos0 = std::cos(std::numbers::pi * y / h), cos1 = std::cos(std::numbers::pi * (y + 1) / h);
-      const double above = std::max(cos0, 0.0) - std::max(cos1, 0.0);
-      if (above <= 0.0) break;  // rows run from the zenith down
-      const double solidAngle = 2.0 * std::numbers::pi / w * above;
-      for (int x = 0; x < w; ++x) {
-        const RgbUnboundedSpectrum& texel = mTexels[static_cast<std::size_t>(y * w + x)];
-        for (std::size_t i = 0; i < lambdasNm.size(); ++i) sums[i] += solidAngle * texel.at(static_cast<float>(lambdasNm[i]));
-      }
-    }
-    for (double& s : sums) s *= mScale;
-    return TabulatedSpectrum(std::move(lambdasNm), std::move(sums), Extrapolation::Clamp).toDense();
+    return mSpectra->fromAbove * mScale;
   }
 
  private:
@@ -86,7 +122,7 @@ class SectionEnvironment final : public TechniqueEnvironment {
   glm::dmat3 mToEnvironment{1.0};
   Spectrum mSpd;
   bool mUniform = false;
-  std::vector<RgbUnboundedSpectrum> mTexels;
+  std::shared_ptr<const MapSpectra> mSpectra;
   double mScale = 1.0;
 };
 

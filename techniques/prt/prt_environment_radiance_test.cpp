@@ -123,6 +123,24 @@ TEST(EnvironmentRadiance, ItsScalarIrradianceFromAboveIsTheSkysIntegral) {
   EXPECT_GT(std::abs(quadrature - expected), 0.01 * expected);
 }
 
+// A map's sum is made once per map and kept (under water the scene asks for it on every change):
+// turning the environment about the zenith keeps it, its luminance scales it, and a new map — an
+// edit makes one; copies of the scene share the old — gets its own.
+TEST(EnvironmentRadiance, AMapsSumIsKeptPerMapAndFollowsItsEdits) {
+  const RgbToSpectrumTable& table = smallSrgbTable();
+  PrtSection section;
+  section.map = testMap(40, 20);
+  const double first = environmentRadiance(section, table)->scalarIrradianceFromAbove().at(550.0);
+  section.rotationDeg = 120.0f;
+  EXPECT_EQ(environmentRadiance(section, table)->scalarIrradianceFromAbove().at(550.0), first);
+  section.luminanceCdM2 *= 3.0f;
+  EXPECT_NEAR(environmentRadiance(section, table)->scalarIrradianceFromAbove().at(550.0), 3.0 * first, 1e-12 * first);
+  auto edited = std::make_shared<PrtMap>(*section.map);
+  for (float& v : edited->linearRgb) v *= 2.0f;
+  section.map = edited;
+  EXPECT_NEAR(environmentRadiance(section, table)->scalarIrradianceFromAbove().at(550.0), 6.0 * first, 1e-6 * first);
+}
+
 // The default quadrature, on a smooth environment: L = L_z·max(0, cos θ) gives π·L_z, exactly at
 // its 5 nm nodes (the rule is exact for radiance linear in cos θ).
 TEST(EnvironmentRadiance, TheDefaultScalarIrradianceIsExactForACosineSky) {

@@ -196,6 +196,55 @@ TEST(PrtGpuCpuParity, PrtObjectsAreLitByTheScenesLightsToo) {
   EXPECT_GT(lightShare, 0.3);
 }
 
+// Inside a nebula whose stars light surfaces (the moon of the test above, the star light on): the
+// lighting pass lights the PRT object with the stars as it does any surface, so the accumulation is
+// the CPU twin's lighting of the G-buffer texel (the star depths the nebula's pass marched with)
+// plus the PRT sums dimmed by the nebula in front, and the stars add a visible share.
+TEST(PrtGpuCpuParity, PrtObjectsInsideANebulaAreLitByItsStars) {
+  gpu::HeadlessContext context;
+  Scene scene = loadScene(kExampleScenes / "nebula_field.json",
+                          {R"(prt={"environment": {"illuminant": "D65", "shape": "uniform", "luminance": 2}})",
+                           "objects.1.technique=prt", "nebula.emission=0", "nebula.scattering=0"});
+  scene.lights.clear();
+  FrameSettings settings = prtTwinSettings({prt::PrtMode::Spectral, RenderMode::JakobHanika}, 160, 90);
+  settings.lookup = UpsamplingLookup::Manual;  // the CPU's lookup, bit for bit, for the moon's 1 % albedo
+  Renderer renderer(scene, cachedTestTable(), settings);
+  renderer.renderFrame();
+  auto data = std::dynamic_pointer_cast<const prt::PrtDrawData>(renderer.techniquePass(prt::PrtSection::kKey)->readTexels());
+  const std::shared_ptr<const TechniqueTexels> texels = renderer.techniquePass(nebula::NebulaSection::kKey)->readTexels();
+  auto nebula = std::dynamic_pointer_cast<const nebula::NebulaTexels>(texels);
+  ASSERT_TRUE(data);
+  ASSERT_TRUE(nebula);
+  const int w = settings.width, h = settings.height;
+  GBufferReadback g(renderer);
+  CpuShading cpu(renderer.frameData(), cachedTestTable(), g.shadowLayers, {{std::string(nebula::NebulaSection::kKey), texels}});
+  double worst = 0.0, starShare = 0.0;
+  int compared = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
+      if (!hit) continue;
+      const std::size_t i = static_cast<std::size_t>(y * w + x);
+      const glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(w), (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
+      const glm::dvec3 stars(cpu.shade(g.texel(i), uv, renderer.cameraTransform()));
+      const glm::dvec3 expected =
+          stars + cpuTristimulus(*data, *hit, renderer.cameraTransform().position, nebula->opticalDepthUm[i]);
+      const glm::dvec3 actual(g.accumulated(i));
+      const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
+      worst = std::max(worst, glm::length(actual - expected) / scale);
+      starShare += stars.y / expected.y;
+      ++compared;
+    }
+  }
+  starShare /= std::max(compared, 1);
+  std::printf("PRT moon lit by the nebula's stars: %d pixels compared; relative error max %.3g; the stars' mean share "
+              "of Y %.3f\n",
+              compared, worst, starShare);
+  EXPECT_GT(compared, 100);
+  EXPECT_LE(worst, 1e-4);
+  EXPECT_GT(starShare, 0.3);
+}
+
 // The bake ahead of the renderer (precomputeTechniques) fills the cache entry the pass then reads:
 // progress once, named, up to its total; nothing the second time, nor for a scene without PRT.
 TEST(PrtPrecompute, BakesAheadIntoTheCacheThePassReads) {

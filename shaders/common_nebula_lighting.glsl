@@ -21,7 +21,6 @@ vec4 nebulaStarData(int i) { return nebulaStarLights[i]; }
 
 float nebulaStarDepthAt(int star, vec3 pCube) {
   ivec3 size = textureSize(uNebulaStarDepth, 0);
-  int nz = size.z / ((nebulaLight.starCount + 3) / 4);
-  ivec3 n = ivec3(size.x, size.y, nz);
-  return fieldOf(uNebulaStarDepth, cellAt(pCube, n), star / 4, nz)[star % 4];
+  int nz = nebulaLight.voxelsZ;
+  return fieldOf(uNebulaStarDepth, cellAt(pCube, ivec3(size.x, size.y, nz)), star / 4, nz)[star % 4];
 }

@@ -28,10 +28,10 @@ const int kNebulaStarLightsBinding = 12;
 // The section's block (techniques/nebula/nebula_section.h, pack).
 struct NebulaLightConstants {
   vec4 boxMinSize;  // xyz: the unit cube's corner in the world (m); w: its side (m)
-  int starCount;    // the stars that light surfaces (0: none do)
+  int starCount;    // the stars that light surfaces (0: none do), all of the model's or none
+  int voxelsZ;      // the density's nz: one slab of the star depths' texture
   int pad0;
   int pad1;
-  int pad2;
 };
 // Star s's entries of the block's data, each a vec4: its position (world, m) at the first, then
 // per batch b its radiant intensity I(λ) (W·sr⁻¹·nm⁻¹) at the batch's four wavelengths (RGB mode:

@@ -13,6 +13,9 @@
 //   SkyConstants frameSky();  GpuAtmosphere frameAtmosphere(int b);        (variants with a sky:
 //     its block, atmosphere_model.glsl), and the tables' accessors of atmosphere_luts.glsl and
 //     atmosphere_lighting.glsl
+//   float nebulaOpticalDepthAt(vec2 uv);  NebulaLightConstants frameNebula();
+//     vec4 nebulaStarData(int i);  float nebulaStarDepthAt(int star, vec3 pCube);
+//     (variants with a nebula: its march's textures and block, nebula_lighting.glsl)
 //
 // Techniques specialise the file at compile time, never by a run-time test per pixel: the
 // includer defines PRISM_TECHNIQUE_<NAME> for each technique of the scene (the renderer compiles
@@ -42,7 +45,9 @@
 // Loop order: per light, the wavelength-independent terms (incidence, shadow, D·G) once; then
 // per batch the albedo spectrum once and every light's contribution, accumulated straight into
 // tristimulus through the batch's integration matrix (integration is linear, so the order of
-// lights and batches does not matter).
+// lights and batches does not matter). A nebula's stars are the exception: any number of them,
+// so no per-pixel array holds their terms, and each batch takes every star's incidence, D·G and
+// dimming grid lookup again (its cost grows as stars × batches).
 // Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl underwater.glsl atmosphere_model.glsl pixel_shading_accessors.glsl atmosphere_luts_accessors.glsl atmosphere_luts.glsl atmosphere_lighting_accessors.glsl atmosphere_lighting.glsl nebula_lighting.glsl nebula_lighting_accessors.glsl
 
 // m·(p, 1), summed column by column in this order on both sides: a built-in mat4 × vec4 is

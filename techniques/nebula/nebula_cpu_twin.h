@@ -9,14 +9,10 @@
 #include <string_view>
 #include <vector>
 
-#include "shared_cpp.h"
+#include "techniques/nebula/nebula_layout.h"
 #include "techniques/nebula/nebula_precomputed.h"
 #include "techniques/nebula/nebula_section.h"
 #include "techniques/technique_cpu_twin.h"
-
-namespace prism::shared {
-#include "nebula_lighting.glsl"
-}  // namespace prism::shared
 
 namespace prism::nebula {
 
@@ -53,8 +49,10 @@ class NebulaCpuTwin {
   }
   vec4 nebulaStarData(int i) const { return mBlock.dataAt<vec4>(static_cast<std::size_t>(i)); }
   float nebulaStarDepthAt(int star, vec3 pCube) const {
+    const auto& depths = mTexels->precomputation->precomputed().starDepth;
+    PRISM_CHECK(static_cast<std::size_t>(star) < depths.size());
     float depth = 0.0f;
-    mTexels->precomputation->precomputed().starDepth[static_cast<std::size_t>(star)].sample(glm::dvec3(pCube), &depth);
+    depths[static_cast<std::size_t>(star)].sample(glm::dvec3(pCube), &depth);
     return depth;
   }
 

@@ -8,7 +8,7 @@
 #include "core/fnv1a.h"
 #include "spectral/colour_space.h"
 #include "spectral/observer.h"
-#include "techniques/nebula/nebula_cpu_twin.h"
+#include "techniques/nebula/nebula_layout.h"
 
 namespace prism::nebula {
 
@@ -18,6 +18,7 @@ TechniqueBlock NebulaSection::pack(const FramePackInput& input) const {
   shared::NebulaLightConstants constants{};
   constants.boxMinSize = glm::vec4(boxMin, boxSize);
   constants.starCount = lightSurfaces ? static_cast<int>(model.stars.size()) : 0;
+  constants.voxelsZ = density->nz;
   block.constantsBinding = shared::kNebulaLightConstantsBinding;
   block.setConstants(constants);
   block.dataBinding = shared::kNebulaStarLightsBinding;
@@ -92,7 +93,8 @@ TechniqueBench NebulaSection::bench() const {
   // What the stars' light on surfaces costs a still view (the lighting pass; the march runs once).
   auto lit = std::make_shared<NebulaSection>(*this);
   lit->lightSurfaces = true;
-  auto unlit = std::make_shared<NebulaSection>(*this);
+  lit->marchEveryFrame = false;
+  auto unlit = std::make_shared<NebulaSection>(*lit);
   unlit->lightSurfaces = false;
   b.configs.push_back({"nebula stars light surfaces", {}, false, 0, lit});
   b.configs.push_back({"nebula stars light nothing", {}, false, 0, unlit});

@@ -18,11 +18,13 @@
 namespace prism::prt {
 namespace {
 
-// A map's texels as spectra (per unit of the section's scale) and their radiance over the sky,
-// exactly: what the environment's rotation about the zenith and its luminance leave alone.
+// A map's texels as spectra (per unit of the section's scale) and, when first asked for, their
+// radiance over the sky: what the environment's rotation about the zenith and its luminance leave
+// alone.
 struct MapSpectra {
   std::vector<RgbUnboundedSpectrum> texels;
-  Spectrum fromAbove;  // Σ over the texels above the horizon of their radiance × solid angle there
+  mutable std::once_flag summed;
+  mutable Spectrum fromAbove;  // Σ over the texels above the horizon of their radiance × solid angle there
 };
 
 // Texel (x, y) covers the part of its solid angle above the horizon, (2π/width)·(max(cos θ₀, 0) −
@@ -44,10 +46,11 @@ Spectrum sumAboveHorizon(const std::vector<RgbUnboundedSpectrum>& texels, int w,
   return TabulatedSpectrum(std::move(lambdasNm), std::move(sums), Extrapolation::Clamp).toDense();
 }
 
-// The last map's spectra, kept for the process: every change of a scene with a PRT map under water
-// asks for its sum (about 20 ms for a 256 × 128 map, seconds for 4K), and the PRT panel's rotation
-// and luminance sliders change the scene on every frame of a drag. Keyed by the map's identity
-// (the section shares it between copies of the scene) and the table's.
+// The last map's spectra, kept for the process (a 4K map's hold about 130 MB until another map
+// replaces them): every change of a scene with a PRT map under water asks for its sum (about 20 ms
+// for a 256 × 128 map, seconds for 4K), and the PRT panel's rotation and luminance sliders change
+// the scene on every frame of a drag. Keyed by the map's identity (the section shares it between
+// copies of the scene) and the table's.
 std::shared_ptr<const MapSpectra> mapSpectra(const std::shared_ptr<const PrtMap>& map, const RgbToSpectrumTable& table) {
   static std::mutex mutex;
   static std::weak_ptr<const PrtMap> lastMap;
@@ -60,7 +63,6 @@ std::shared_ptr<const MapSpectra> mapSpectra(const std::shared_ptr<const PrtMap>
   spectra->texels.reserve(map->linearRgb.size() / 3);
   for (std::size_t i = 0; i < map->linearRgb.size(); i += 3)
     spectra->texels.emplace_back(table, glm::vec3(map->linearRgb[i], map->linearRgb[i + 1], map->linearRgb[i + 2]));
-  spectra->fromAbove = sumAboveHorizon(spectra->texels, map->width, map->height);
   lastMap = map;
   lastTable = &table;
   lastTableHash = table.inputsHash();
@@ -113,7 +115,9 @@ class SectionEnvironment final : public TechniqueEnvironment {
   Spectrum scalarIrradianceFromAbove() const override {
     if (mSky) return TechniqueEnvironment::scalarIrradianceFromAbove();
     if (!mMap) return mSpd * (mUniform ? 2.0 * std::numbers::pi : 4.0 * std::numbers::pi / 3.0);
-    return mSpectra->fromAbove * mScale;
+    const MapSpectra& m = *mSpectra;
+    std::call_once(m.summed, [&] { m.fromAbove = sumAboveHorizon(m.texels, mMap->width, mMap->height); });
+    return m.fromAbove * mScale;
   }
 
  private:

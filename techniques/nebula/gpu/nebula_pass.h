@@ -2,7 +2,8 @@
 // (nebula_gpu_marcher.h) marches the scene's nebula from the renderer's camera, each ray stopping
 // at the scene's surfaces (the G-buffer's depth), into the nebula's channels and the optical depth
 // in front of each pixel, which the lighting pass reads (bindForLighting) to dim what lies behind
-// by e^(−g/λ) (shared/nebula_lighting.glsl). After it (drawForward), a fullscreen draw adds the
+// by e^(−g/λ), beside the stars' optical depths per voxel, which dim the stars' light on surfaces
+// (shared/nebula_lighting.glsl). After it (drawForward), a fullscreen draw adds the
 // channels to the frame's tristimulus (nebula_section.h says how), so that the post pass
 // finishes the nebula with the rest.
 //
@@ -36,7 +37,8 @@ class NebulaPass final : public TechniquePass {
   void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera,
            const TechniqueFrame& frame) override;
   void bindForLighting() const override;
-  // The optical depth the lighting pass reads (NebulaTexels). Stalls: for tests.
+  // The optical depth the lighting pass reads and the precomputation whose star depths it reads
+  // (NebulaTexels). Stalls: for tests.
   std::shared_ptr<const TechniqueTexels> readTexels() const override;
   std::size_t gpuMemoryBytes() const override;
   bool drawsForward() const override { return true; }

@@ -175,6 +175,46 @@ TEST(NebulaPass, RaysStopAtTheScenesSurfaces) {
   EXPECT_LT(walledGpu, 0.9 * walledOpen);
 }
 
+// One 40 × 40 frame of a nebula scene in `mode` against the CPU twin: at every pixel the
+// accumulation against the twin's lighting of its G-buffer texel (with the nebula pass's texels
+// read back: its optical depth and star depths) plus the nebula's channels. At the pixels of an
+// object `onObject(lit, open)` sees that lighting and the twin's without the nebula's texels
+// (nothing dimmed, no star light); returns the largest relative difference.
+template <class OnObject>
+double compareWithTheTwin(const Scene& scene, RenderMode mode, OnObject onObject) {
+  FrameSettings settings;
+  settings.width = settings.height = kSize;
+  settings.mode = mode;
+  settings.shadowMapSize = 256;
+  settings.lookup = UpsamplingLookup::Manual;  // the CPU's lookup, bit for bit
+  settings.display.dither = false;
+  Renderer renderer(scene, cachedTestTable(), settings);
+  renderer.renderFrame();
+  const TechniquePass* technique = renderer.techniquePass(nebula::NebulaSection::kKey);
+  const auto* pass = dynamic_cast<const nebula::NebulaPass*>(technique);
+  EXPECT_NE(pass, nullptr);
+  if (!pass) return 1e30;
+  const std::vector<glm::vec4> nebulaColour = pass->marcher()->colour().read<glm::vec4>();  // row 0 at the top
+  GBufferReadback g(renderer);
+  CpuShading cpu(renderer.frameData(), cachedTestTable(), g.shadowLayers,
+                 {{std::string(nebula::NebulaSection::kKey), technique->readTexels()}});
+  CpuShading undimmed(renderer.frameData(), cachedTestTable(), g.shadowLayers);
+  double worst = 0.0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y * kSize + x);
+      const glm::vec2 uv((static_cast<float>(x) + 0.5f) / kSize, (static_cast<float>(y) + 0.5f) / kSize);
+      const GBufferTexel t = g.texel(i);
+      const glm::dvec3 lit(cpu.shade(t, uv, renderer.cameraTransform()));
+      const glm::dvec3 expected = lit + glm::dvec3(nebulaColour[static_cast<std::size_t>((kSize - 1 - y) * kSize + x)]);
+      const glm::dvec3 actual(g.accumulated(i));
+      const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z), 1e-3});
+      worst = std::max(worst, glm::length(actual - expected) / scale);
+      if (t.materialId != 0) onObject(lit, glm::dvec3(undimmed.shade(t, uv, renderer.cameraTransform())));
+    }
+  return worst;
+}
+
 // What lies behind the nebula is dimmed per wavelength by e^(−g/λ) in the lighting pass, g the
 // optical depth the march left in front of each pixel: a lit white wall through the middle of the
 // cube, in 16-wavelength frames and in RGB (at R, G and B's stand-in wavelengths), is the CPU
@@ -188,41 +228,14 @@ TEST(NebulaPass, WhatLiesBehindIsDimmedPerWavelength) {
       sceneJson(true, "projection", "[0.8, 0.8, 0.8]",
                 R"({"type": "directional", "direction": [0.2, -0.3, 1], "spd": "D65", "intensity": 3})")));
   for (RenderMode mode : {RenderMode::JakobHanika, RenderMode::Rgb}) {
-    FrameSettings settings;
-    settings.width = settings.height = kSize;
-    settings.mode = mode;
-    settings.shadowMapSize = 256;
-    settings.lookup = UpsamplingLookup::Manual;  // the CPU's lookup, bit for bit
-    settings.display.dither = false;
-    Renderer renderer(scene, cachedTestTable(), settings);
-    renderer.renderFrame();
-    const TechniquePass* technique = renderer.techniquePass(nebula::NebulaSection::kKey);
-    const auto* pass = dynamic_cast<const nebula::NebulaPass*>(technique);
-    ASSERT_NE(pass, nullptr);
-    const std::vector<glm::vec4> nebulaColour = pass->marcher()->colour().read<glm::vec4>();  // row 0 at the top
-    GBufferReadback g(renderer);
-    CpuShading cpu(renderer.frameData(), cachedTestTable(), g.shadowLayers,
-                   {{std::string(nebula::NebulaSection::kKey), technique->readTexels()}});
-    CpuShading undimmed(renderer.frameData(), cachedTestTable(), g.shadowLayers);
-    double worst = 0.0, dimming = 0.0, zOverY = 0.0, zOverYUndimmed = 0.0;
+    double dimming = 0.0, zOverY = 0.0, zOverYUndimmed = 0.0;
     int wall = 0;
-    for (int y = 0; y < kSize; ++y)
-      for (int x = 0; x < kSize; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y * kSize + x);
-        const glm::vec2 uv((static_cast<float>(x) + 0.5f) / kSize, (static_cast<float>(y) + 0.5f) / kSize);
-        const GBufferTexel t = g.texel(i);
-        const glm::dvec3 lit(cpu.shade(t, uv, renderer.cameraTransform()));
-        const glm::dvec3 expected = lit + glm::dvec3(nebulaColour[static_cast<std::size_t>((kSize - 1 - y) * kSize + x)]);
-        const glm::dvec3 actual(g.accumulated(i));
-        const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z), 1e-3});
-        worst = std::max(worst, glm::length(actual - expected) / scale);
-        if (t.materialId == 0) continue;
-        const glm::dvec3 open(undimmed.shade(t, uv, renderer.cameraTransform()));
-        dimming += lit.y / open.y;
-        zOverY += lit.z / lit.y;
-        zOverYUndimmed += open.z / open.y;
-        ++wall;
-      }
+    const double worst = compareWithTheTwin(scene, mode, [&](const glm::dvec3& lit, const glm::dvec3& open) {
+      dimming += lit.y / open.y;
+      zOverY += lit.z / lit.y;
+      zOverYUndimmed += open.z / open.y;
+      ++wall;
+    });
     dimming /= wall;
     std::printf("the lit wall behind the nebula, %s: %d pixels; GPU against the CPU twin, relative error max %.3g; "
                 "Y dimmed to %.3f on average, Z/Y %.3f → %.3f\n",
@@ -238,46 +251,24 @@ TEST(NebulaPass, WhatLiesBehindIsDimmedPerWavelength) {
 // through the cube with no other light, in 16-wavelength frames and in RGB, is at every pixel the
 // CPU twin's lighting of its G-buffer texel — each star's intensity from the section's block, its
 // dimming from the star depths the pass marched with — plus the nebula's channels; the stars are
-// all that lights it.
+// all that lights it (the twin without the pass's texels has no star light).
 TEST(NebulaPass, ItsStarsLightTheScenesSurfaces) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(writeTempFile("nebula_star_lit_wall.json", sceneJson(true, "projection", "[0.8, 0.8, 0.8]", "", true)));
   for (RenderMode mode : {RenderMode::JakobHanika, RenderMode::Rgb}) {
-    FrameSettings settings;
-    settings.width = settings.height = kSize;
-    settings.mode = mode;
-    settings.lookup = UpsamplingLookup::Manual;
-    settings.display.dither = false;
-    Renderer renderer(scene, cachedTestTable(), settings);
-    renderer.renderFrame();
-    const TechniquePass* technique = renderer.techniquePass(nebula::NebulaSection::kKey);
-    const auto* pass = dynamic_cast<const nebula::NebulaPass*>(technique);
-    ASSERT_NE(pass, nullptr);
-    const std::vector<glm::vec4> nebulaColour = pass->marcher()->colour().read<glm::vec4>();
-    GBufferReadback g(renderer);
-    CpuShading cpu(renderer.frameData(), cachedTestTable(), g.shadowLayers,
-                   {{std::string(nebula::NebulaSection::kKey), technique->readTexels()}});
-    double worst = 0.0, wallY = 0.0;
+    double wallY = 0.0, withoutStars = 0.0;
     int wall = 0;
-    for (int y = 0; y < kSize; ++y)
-      for (int x = 0; x < kSize; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y * kSize + x);
-        const glm::vec2 uv((static_cast<float>(x) + 0.5f) / kSize, (static_cast<float>(y) + 0.5f) / kSize);
-        const GBufferTexel t = g.texel(i);
-        const glm::dvec3 lit(cpu.shade(t, uv, renderer.cameraTransform()));
-        const glm::dvec3 expected = lit + glm::dvec3(nebulaColour[static_cast<std::size_t>((kSize - 1 - y) * kSize + x)]);
-        const glm::dvec3 actual(g.accumulated(i));
-        const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z), 1e-3});
-        worst = std::max(worst, glm::length(actual - expected) / scale);
-        if (t.materialId == 0) continue;
-        wallY += lit.y;
-        ++wall;
-      }
+    const double worst = compareWithTheTwin(scene, mode, [&](const glm::dvec3& lit, const glm::dvec3& open) {
+      wallY += lit.y;
+      withoutStars += open.y;
+      ++wall;
+    });
     std::printf("the wall lit by the nebula's stars alone, %s: %d pixels, mean Y %.4g; GPU against the CPU twin, "
                 "relative error max %.3g\n",
                 std::string(renderModeName(mode)).c_str(), wall, wallY / wall, worst);
     EXPECT_GT(wall, kSize * kSize / 3);
     EXPECT_GT(wallY / wall, 1e-4);
+    EXPECT_EQ(withoutStars, 0.0);
     EXPECT_LE(worst, 1e-4);
   }
 }

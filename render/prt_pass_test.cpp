@@ -129,22 +129,16 @@ TEST(PrtGpuCpuParity, PrtObjectsInsideANebulaAreDimmedByIt) {
   ASSERT_EQ(nebula->height, h);
   std::vector<float> lit = gpu::readTexture2DFloat(renderer.accumulation(), 4);
   double worst = 0.0, kept = 1.0, depth = 0.0;
-  int compared = 0;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
-      if (!hit) continue;
-      const std::size_t i = static_cast<std::size_t>(y * w + x);
-      const float g = nebula->opticalDepthUm[i];
-      const glm::dvec3 expected = cpuTristimulus(*data, *hit, renderer.cameraTransform().position, g);
-      const glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
-      const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
-      worst = std::max(worst, glm::length(actual - expected) / scale);
-      kept = std::min(kept, expected.y / cpuTristimulus(*data, *hit, renderer.cameraTransform().position).y);
-      depth = std::max(depth, static_cast<double>(g));
-      ++compared;
-    }
-  }
+  const int compared = forInteriorPixels(*data, renderer.cameraTransform(), w, h, [&](int x, int y, const Hit& hit) {
+    const std::size_t i = static_cast<std::size_t>(y * w + x);
+    const float g = nebula->opticalDepthUm[i];
+    const glm::dvec3 expected = cpuTristimulus(*data, hit, renderer.cameraTransform().position, g);
+    const glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
+    const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
+    worst = std::max(worst, glm::length(actual - expected) / scale);
+    kept = std::min(kept, expected.y / cpuTristimulus(*data, hit, renderer.cameraTransform().position).y);
+    depth = std::max(depth, static_cast<double>(g));
+  });
   std::printf("PRT moon inside the nebula: %d pixels compared; relative error max %.3g; optical depth up to %.3f µm, "
               "keeping down to %.3f of Y\n",
               compared, worst, depth, kept);
@@ -219,23 +213,17 @@ TEST(PrtGpuCpuParity, PrtObjectsInsideANebulaAreLitByItsStars) {
   GBufferReadback g(renderer);
   CpuShading cpu(renderer.frameData(), cachedTestTable(), g.shadowLayers, {{std::string(nebula::NebulaSection::kKey), texels}});
   double worst = 0.0, starShare = 0.0;
-  int compared = 0;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      std::optional<Hit> hit = interiorHit(*data, renderer.cameraTransform(), x, y, w, h);
-      if (!hit) continue;
-      const std::size_t i = static_cast<std::size_t>(y * w + x);
-      const glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(w), (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
-      const glm::dvec3 stars(cpu.shade(g.texel(i), uv, renderer.cameraTransform()));
-      const glm::dvec3 expected =
-          stars + cpuTristimulus(*data, *hit, renderer.cameraTransform().position, nebula->opticalDepthUm[i]);
-      const glm::dvec3 actual(g.accumulated(i));
-      const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
-      worst = std::max(worst, glm::length(actual - expected) / scale);
-      starShare += stars.y / expected.y;
-      ++compared;
-    }
-  }
+  const int compared = forInteriorPixels(*data, renderer.cameraTransform(), w, h, [&](int x, int y, const Hit& hit) {
+    const std::size_t i = static_cast<std::size_t>(y * w + x);
+    const glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(w), (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
+    const glm::dvec3 stars(cpu.shade(g.texel(i), uv, renderer.cameraTransform()));
+    const glm::dvec3 expected =
+        stars + cpuTristimulus(*data, hit, renderer.cameraTransform().position, nebula->opticalDepthUm[i]);
+    const glm::dvec3 actual(g.accumulated(i));
+    const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
+    worst = std::max(worst, glm::length(actual - expected) / scale);
+    starShare += stars.y / expected.y;
+  });
   starShare /= std::max(compared, 1);
   std::printf("PRT moon lit by the nebula's stars: %d pixels compared; relative error max %.3g; the stars' mean share "
               "of Y %.3f\n",

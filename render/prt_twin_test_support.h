@@ -135,6 +135,19 @@ inline shared::PrtReflectance sampledReflectance(const prt::PrtTextureSource& so
   return r;
 }
 
+// Calls f(x, y, hit) at every interior pixel (interiorHit; y a GL row); returns how many.
+template <class F>
+int forInteriorPixels(const prt::PrtDrawData& d, const CameraTransform& camera, int w, int h, F&& f) {
+  int visited = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (std::optional<Hit> hit = interiorHit(d, camera, x, y, w, h)) {
+        f(x, y, *hit);
+        ++visited;
+      }
+  return visited;
+}
+
 // Calls f(x, y, hit) at the interior pixels (interiorHit; y a GL row) among `samples` random ones
 // drawn from `seed`; returns how many.
 template <class F>

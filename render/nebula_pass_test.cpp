@@ -251,20 +251,26 @@ TEST(NebulaPass, WhatLiesBehindIsDimmedPerWavelength) {
 // through the cube with no other light, in 16-wavelength frames and in RGB, is at every pixel the
 // CPU twin's lighting of its G-buffer texel — each star's intensity from the section's block, its
 // dimming from the star depths the pass marched with — plus the nebula's channels; the stars are
-// all that lights it (the twin without the pass's texels has no star light).
+// all that lights it (the twin without the pass's texels has no star light). With 18 stars, more
+// than the lighting pass keeps lookups for (kMaxLights), as well.
 TEST(NebulaPass, ItsStarsLightTheScenesSurfaces) {
   gpu::HeadlessContext context;
-  Scene scene = loadScene(writeTempFile("nebula_star_lit_wall.json", sceneJson(true, "projection", "[0.8, 0.8, 0.8]", "", true)));
-  for (RenderMode mode : {RenderMode::JakobHanika, RenderMode::Rgb}) {
+  Scene twoStars = loadScene(writeTempFile("nebula_star_lit_wall.json", sceneJson(true, "projection", "[0.8, 0.8, 0.8]", "", true)));
+  Scene manyStars = twoStars;
+  auto& stars = manyStars.techniques.find<nebula::NebulaSection>()->model.stars;
+  for (int k = 0; k < 16; ++k) stars.push_back({{0.1 + 0.05 * k, 0.2 + 0.04 * k, 0.05 + 0.02 * k}, 3000.0 + 1000.0 * k, 0.3});
+  for (auto [scene, mode] : {std::pair{&twoStars, RenderMode::JakobHanika}, std::pair{&twoStars, RenderMode::Rgb},
+                             std::pair{&manyStars, RenderMode::JakobHanika}}) {
     double wallY = 0.0, withoutStars = 0.0;
     int wall = 0;
-    const double worst = compareWithTheTwin(scene, mode, [&](const glm::dvec3& lit, const glm::dvec3& open) {
+    const double worst = compareWithTheTwin(*scene, mode, [&](const glm::dvec3& lit, const glm::dvec3& open) {
       wallY += lit.y;
       withoutStars += open.y;
       ++wall;
     });
-    std::printf("the wall lit by the nebula's stars alone, %s: %d pixels, mean Y %.4g; GPU against the CPU twin, "
-                "relative error max %.3g\n",
+    std::printf("the wall lit by the nebula's %zu stars alone, %s: %d pixels, mean Y %.4g; GPU against the CPU "
+                "twin, relative error max %.3g\n",
+                scene->techniques.find<nebula::NebulaSection>()->model.stars.size(),
                 std::string(renderModeName(mode)).c_str(), wall, wallY / wall, worst);
     EXPECT_GT(wall, kSize * kSize / 3);
     EXPECT_GT(wallY / wall, 1e-4);

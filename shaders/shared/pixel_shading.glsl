@@ -45,9 +45,9 @@
 // Loop order: per light, the wavelength-independent terms (incidence, shadow, D·G) once; then
 // per batch the albedo spectrum once and every light's contribution, accumulated straight into
 // tristimulus through the batch's integration matrix (integration is linear, so the order of
-// lights and batches does not matter). A nebula's stars are the exception: any number of them,
-// so no per-pixel array holds their terms, and each batch takes every star's incidence, D·G and
-// dimming grid lookup again (its cost grows as stars × batches).
+// lights and batches does not matter). A nebula's stars, of any number, keep only their dimming
+// grid lookup (the costly part) for the first kMaxLights of them; each batch takes every star's
+// incidence and D·G again, and a further star's lookup too.
 // Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl underwater.glsl atmosphere_model.glsl pixel_shading_accessors.glsl atmosphere_luts_accessors.glsl atmosphere_luts.glsl atmosphere_lighting_accessors.glsl atmosphere_lighting.glsl nebula_lighting.glsl nebula_lighting_accessors.glsl
 
 // m·(p, 1), summed column by column in this order on both sides: a built-in mat4 × vec4 is
@@ -172,27 +172,39 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
 }
 
 #ifdef PRISM_TECHNIQUE_NEBULA
+// Where star `star` is (world) and its optical depth (µm) to the surface point p, 0 where its
+// light cannot reach the surface's front (it then adds nothing): the grid lookup, the costly part
+// of a star's light.
+PRISM_INLINE vec3 nebulaStarPositionW(IN(FrameConstants) fc, int star) {
+  vec4 position = nebulaStarData(nebulaStarPositionIndex(star, fc.batchCount));
+  return vec3(position.x, position.y, position.z);
+}
+PRISM_INLINE float nebulaStarDepthTo(IN(FrameConstants) fc, IN(SurfaceSample) s, int star) {
+  NebulaLightConstants nebula = frameNebula();
+  vec3 positionW = nebulaStarPositionW(fc, star);
+  if (dot(s.normal, positionW - s.position) <= 0.0f) return 0.0f;
+  vec3 boxMin = vec3(nebula.boxMinSize.x, nebula.boxMinSize.y, nebula.boxMinSize.z);
+  vec3 at;
+  return nebulaStarDepthPoint((s.position - boxMin) / nebula.boxMinSize.w, (positionW - boxMin) / nebula.boxMinSize.w, at)
+             ? nebulaStarDepthAt(star, at)
+             : 0.0f;
+}
+
 // The light of the nebula's stars that the surface reflects towards v at batch b (lambdaNm: the
 // wavelengths its dimming is taken at): each star a point light of the block's radiant intensity,
-// dimmed by e^(−g_s/λ) (shared/nebula_lighting.glsl).
+// dimmed by e^(−g_s/λ) (shared/nebula_lighting.glsl). `depthsUm`: the first kMaxLights stars'
+// nebulaStarDepthTo, looked up once for every batch; further stars look theirs up per batch.
 PRISM_INLINE vec4 nebulaStarsReflected(IN(FrameConstants) fc, IN(SurfaceSample) s, IN(vec3) v, bool lambertian,
                                        int b, IN(vec4) lambdaNm, IN(vec4) albedo, bool spectralConductor,
-                                       IN(vec4) conductorK, float metallic) {
-  NebulaLightConstants nebula = frameNebula();
-  vec3 boxMin = vec3(nebula.boxMinSize.x, nebula.boxMinSize.y, nebula.boxMinSize.z);
-  vec3 pCube = (s.position - boxMin) / nebula.boxMinSize.w;
+                                       IN(vec4) conductorK, float metallic, float depthsUm[kMaxLights]) {
   vec4 radiance = vec4(0.0f);
-  for (int star = 0; star < nebula.starCount; ++star) {
-    vec4 position = nebulaStarData(nebulaStarPositionIndex(star, fc.batchCount));
-    vec3 positionW = vec3(position.x, position.y, position.z);
-    LightIncidence li = lightIncidence(kLightPoint, positionW, vec3(0.0f, -1.0f, 0.0f), 1.0f, 1.0f, 0.0f, s.position);
+  for (int star = 0; star < frameNebula().starCount; ++star) {
+    LightIncidence li = lightIncidence(kLightPoint, nebulaStarPositionW(fc, star), vec3(0.0f, -1.0f, 0.0f), 1.0f, 1.0f,
+                                       0.0f, s.position);
     MicrofacetTerms terms = microfacetTerms(s.normal, v, li.toLight, s.roughness);
     if (lambertian) terms = lambertianTerms(terms);
     if (terms.cosLight <= 0.0f) continue;
-    vec3 at;
-    float depthUm = nebulaStarDepthPoint(pCube, (positionW - boxMin) / nebula.boxMinSize.w, at)
-                        ? nebulaStarDepthAt(star, at)
-                        : 0.0f;
+    float depthUm = star < kMaxLights ? depthsUm[star] : nebulaStarDepthTo(fc, s, star);
     vec4 arriving = nebulaStarData(nebulaStarSpectrumIndex(star, b, fc.batchCount)) * li.irradiance *
                     nebulaTransmittance4(depthUm, lambdaNm);
     radiance += surfaceReflection(terms, spectralConductor, albedo, conductorK, metallic) * arriving;
@@ -247,6 +259,10 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 
 #ifdef PRISM_TECHNIQUE_NEBULA
   float nebulaDepthUm = nebulaOpticalDepthAt(uv);
+  float nebulaStarDepthsUm[kMaxLights];
+  for (int star = 0; star < kMaxLights; ++star) {
+    nebulaStarDepthsUm[star] = star < frameNebula().starCount ? nebulaStarDepthTo(fc, s, star) : 0.0f;
+  }
 #endif
   vec3 tristimulus = vec3(0.0f);
   for (int b = 0; b < fc.batchCount; ++b) {
@@ -285,7 +301,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 #ifdef PRISM_TECHNIQUE_NEBULA
     vec4 nebulaLambdaNm = fc.mode == kModeRgb ? kNebulaRgbStandInNm : batch.lambdaNm;
     radiance += nebulaStarsReflected(fc, s, v, lambertian, b, nebulaLambdaNm, albedo, spectralConductor, conductorK,
-                                     metallic);
+                                     metallic, nebulaStarDepthsUm);
 #endif
 #ifdef PRISM_TECHNIQUE_WATER
     PRISM_PRECISE vec3 fromCamera = s.position - cameraPosition;

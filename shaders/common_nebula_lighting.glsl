@@ -2,8 +2,8 @@
 // (techniques/nebula/gpu/nebula_pass.h, bindForLighting), the star depths it marched with, and the
 // section's block of star lights, at the units and bindings shared/nebula_lighting.glsl declares,
 // and the accessors shared/pixel_shading.glsl reads them through.
-#include "shared/nebula_lighting.glsl"
 #include "shared/nebula_march.glsl"
+#include "shared/nebula_lighting.glsl"
 #include "common_nebula_fields.glsl"
 
 layout(binding = kNebulaOpticalDepthUnit) uniform sampler2D uNebulaOpticalDepth;

@@ -142,23 +142,6 @@ void coefficients8(float x, out vec4 lo, out vec4 hi) {
 }
 #endif
 
-// The segment p + t·d inside the unit cube, as [t0, t1]; false when the ray misses it.
-bool clipToCube(vec3 p, vec3 d, out float t0, out float t1) {
-  t0 = 0.0f;
-  t1 = 1e30f;
-  for (int i = 0; i < 3; ++i) {
-    if (abs(d[i]) < 1e-15f) {
-      if (p[i] < 0.0f || p[i] > 1.0f) return false;
-      continue;
-    }
-    float a = (0.0f - p[i]) / d[i];
-    float b = (1.0f - p[i]) / d[i];
-    t0 = max(t0, min(a, b));
-    t1 = min(t1, max(a, b));
-  }
-  return t1 > t0;
-}
-
 // DensityGrid::sample: nested lerps, x then y then z; 0 outside the cube.
 float densityAt(vec3 p, Cell c) {
   if (any(lessThan(p, vec3(0.0f))) || any(greaterThan(p, vec3(1.0f)))) return 0.0f;
@@ -201,7 +184,7 @@ void main() {
   float t0;
   float t1;
   float gCam = 0.0f;
-  if (clipToCube(uCameraPosition, dir, t0, t1)) {
+  if (nebulaClipToCube(uCameraPosition, dir, 1e30f, t0, t1)) {
     float dt = (t1 - t0) / float(uSteps);
     float tLimit = rayLimit(px);
     for (int i = 0; i < uSteps; ++i) {

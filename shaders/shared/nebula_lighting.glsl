@@ -18,7 +18,7 @@
 // and the stars' accessors over the section's block and the star depths' texture:
 //   NebulaLightConstants frameNebula();  vec4 nebulaStarData(int i);
 //   float nebulaStarDepthAt(int star, vec3 pCube);   (trilinear between voxel centres)
-// Requires: prelude.glsl
+// Requires: prelude.glsl nebula_march.glsl
 
 const int kNebulaOpticalDepthUnit = 11;
 const int kNebulaStarDepthUnit = 12;      // the march's star depths (nebula_march.comp's uField)
@@ -48,19 +48,9 @@ PRISM_INLINE bool nebulaStarDepthPoint(IN(vec3) pCube, IN(vec3) starCube, OUT(ve
   at = pCube;
   if (min(min(pCube.x, pCube.y), pCube.z) >= 0.0f && max(max(pCube.x, pCube.y), pCube.z) <= 1.0f) return true;
   vec3 d = starCube - pCube;
-  float t0 = 0.0f;
-  float t1 = 1.0f;
-  for (int i = 0; i < 3; ++i) {
-    if (abs(d[i]) < 1e-12f) {
-      if (pCube[i] < 0.0f || pCube[i] > 1.0f) return false;
-      continue;
-    }
-    float a = -pCube[i] / d[i];
-    float b = (1.0f - pCube[i]) / d[i];
-    t0 = max(t0, min(a, b));
-    t1 = min(t1, max(a, b));
-  }
-  if (!(t1 > t0)) return false;
+  float t0;
+  float t1;
+  if (!nebulaClipToCube(pCube, d, 1.0f, t0, t1)) return false;
   at = pCube + d * t0;
   return true;
 }

@@ -11,6 +11,29 @@
 #define NEBULA_REAL float
 #define NEBULA_VEC4 vec4
 #endif
+#ifndef NEBULA_VEC3
+#define NEBULA_VEC3 vec3
+#endif
+
+// The part of the segment p + t·d, t ∈ [0, tMax], inside the unit cube, as [t0, t1]; false when
+// it misses the cube. The march clips its rays with it, the precomputation each voxel's segment to
+// a star, and the lighting pass a surface point's (nebula_lighting.glsl).
+PRISM_INLINE bool nebulaClipToCube(IN(NEBULA_VEC3) p, IN(NEBULA_VEC3) d, NEBULA_REAL tMax, OUT(NEBULA_REAL) t0,
+                                   OUT(NEBULA_REAL) t1) {
+  t0 = NEBULA_REAL(0.0f);
+  t1 = tMax;
+  for (int i = 0; i < 3; ++i) {
+    if (abs(d[i]) < NEBULA_REAL(1e-15f)) {
+      if (p[i] < NEBULA_REAL(0.0f) || p[i] > NEBULA_REAL(1.0f)) return false;
+      continue;
+    }
+    NEBULA_REAL a = (NEBULA_REAL(0.0f) - p[i]) / d[i];
+    NEBULA_REAL b = (NEBULA_REAL(1.0f) - p[i]) / d[i];
+    t0 = max(t0, min(a, b));
+    t1 = min(t1, max(a, b));
+  }
+  return t1 > t0;
+}
 
 // One axis of a trilinear lookup between voxel centres, clamped at the faces: the voxels i0 and
 // i1 around u ∈ [0, 1] on an axis of n voxels (centres at (i + ½)/n), and i1's weight f.

@@ -48,7 +48,7 @@
 // lights and batches does not matter). A nebula's stars, of any number, keep only their dimming
 // grid lookup (the costly part) for the first kMaxLights of them; each batch takes every star's
 // incidence and D·G again, and a further star's lookup too.
-// Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl underwater.glsl atmosphere_model.glsl pixel_shading_accessors.glsl atmosphere_luts_accessors.glsl atmosphere_luts.glsl atmosphere_lighting_accessors.glsl atmosphere_lighting.glsl nebula_lighting.glsl nebula_lighting_accessors.glsl
+// Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl underwater.glsl atmosphere_model.glsl pixel_shading_accessors.glsl atmosphere_luts_accessors.glsl atmosphere_luts.glsl atmosphere_lighting_accessors.glsl atmosphere_lighting.glsl nebula_march.glsl nebula_lighting.glsl nebula_lighting_accessors.glsl
 
 // m·(p, 1), summed column by column in this order on both sides: a built-in mat4 × vec4 is
 // free to sum in another order (and to fuse), and shadow-map weights amplify the difference.

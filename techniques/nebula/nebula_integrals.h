@@ -15,6 +15,7 @@ using glm::log;
 #include "nebula_march.glsl"
 #undef NEBULA_REAL
 #undef NEBULA_VEC4
+#undef NEBULA_VEC3
 
 namespace f64 {
 using vec4 = glm::dvec4;
@@ -22,9 +23,11 @@ using std::exp;
 using std::log;
 #define NEBULA_REAL double
 #define NEBULA_VEC4 vec4
+#define NEBULA_VEC3 glm::dvec3
 #include "nebula_integrals.glsl"
 #include "nebula_march.glsl"
 #undef NEBULA_REAL
 #undef NEBULA_VEC4
+#undef NEBULA_VEC3
 }  // namespace f64
 }  // namespace prism::shared

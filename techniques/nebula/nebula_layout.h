@@ -4,6 +4,7 @@
 #pragma once
 
 #include "shared_cpp.h"
+#include "techniques/nebula/nebula_integrals.h"  // nebula_march.glsl, which nebula_lighting.glsl requires
 
 namespace prism::shared {
 #include "nebula_lighting.glsl"

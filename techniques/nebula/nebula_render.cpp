@@ -46,23 +46,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr int kLightNodes = 48;  // Gauss–Legendre nodes over the band for the 2D basis's projections
 
-// The part of the segment p + t·d, t ∈ [0, tMax], inside the unit cube, as [t0, t1]; false when
-// it misses.
-bool clipToCube(const glm::dvec3& p, const glm::dvec3& d, double tMax, double& t0, double& t1) {
-  t0 = 0.0;
-  t1 = tMax;
-  for (int i = 0; i < 3; ++i) {
-    if (std::abs(d[i]) < 1e-15) {
-      if (p[i] < 0.0 || p[i] > 1.0) return false;
-      continue;
-    }
-    double a = (0.0 - p[i]) / d[i], b = (1.0 - p[i]) / d[i];
-    if (a > b) std::swap(a, b);
-    t0 = std::max(t0, a);
-    t1 = std::min(t1, b);
-  }
-  return t1 > t0;
-}
 
 }  // namespace
 
@@ -98,7 +81,7 @@ VoxelField opticalDepthToStar(const DensityGrid& density, const NebulaStar& star
         glm::dvec3 p((i + 0.5) / density.nx, (j + 0.5) / density.ny, (static_cast<double>(k) + 0.5) / density.nz);
         glm::dvec3 d = star.position - p;
         double length = glm::length(d), t0 = 0.0, t1 = 0.0, column = 0.0;
-        if (length > 0.0 && clipToCube(p, d, 1.0, t0, t1)) {  // up to the star
+        if (length > 0.0 && shared::f64::nebulaClipToCube(p, d, 1.0, t0, t1)) {  // up to the star
           double segment = (t1 - t0) * length;
           int n = std::max(1, static_cast<int>(std::ceil(segment / step)));
           double dt = (t1 - t0) / n;
@@ -441,7 +424,7 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
       glm::dvec3 colour(0.0);
       std::fill(moments.begin(), moments.end(), 0.0f);
       std::fill(lightAcc.begin(), lightAcc.end(), 0.0f);
-      if (clipToCube(cam.position, dir, 1e30, t0, t1)) {
+      if (shared::f64::nebulaClipToCube(cam.position, dir, 1e30, t0, t1)) {
         double dt = (t1 - t0) / s.steps, gCam = 0.0;
         const double tLimit = s.rayLimits.empty() ? 1e30 : s.rayLimits[row * static_cast<std::size_t>(cam.width) + static_cast<std::size_t>(px)];
         for (int i = 0; i < s.steps; ++i) {

@@ -179,8 +179,8 @@ PRISM_INLINE vec3 nebulaStarPositionW(IN(FrameConstants) fc, int star) {
   vec4 position = nebulaStarData(nebulaStarPositionIndex(star, fc.batchCount));
   return vec3(position.x, position.y, position.z);
 }
-PRISM_INLINE float nebulaStarDepthTo(IN(FrameConstants) fc, IN(SurfaceSample) s, int star) {
-  NebulaLightConstants nebula = frameNebula();
+PRISM_INLINE float nebulaStarDepthTo(IN(FrameConstants) fc, IN(NebulaLightConstants) nebula, IN(SurfaceSample) s,
+                                     int star) {
   vec3 positionW = nebulaStarPositionW(fc, star);
   if (dot(s.normal, positionW - s.position) <= 0.0f) return 0.0f;
   vec3 boxMin = vec3(nebula.boxMinSize.x, nebula.boxMinSize.y, nebula.boxMinSize.z);
@@ -194,17 +194,17 @@ PRISM_INLINE float nebulaStarDepthTo(IN(FrameConstants) fc, IN(SurfaceSample) s,
 // wavelengths its dimming is taken at): each star a point light of the block's radiant intensity,
 // dimmed by e^(−g_s/λ) (shared/nebula_lighting.glsl). `depthsUm`: the first kMaxLights stars'
 // nebulaStarDepthTo, looked up once for every batch; further stars look theirs up per batch.
-PRISM_INLINE vec4 nebulaStarsReflected(IN(FrameConstants) fc, IN(SurfaceSample) s, IN(vec3) v, bool lambertian,
-                                       int b, IN(vec4) lambdaNm, IN(vec4) albedo, bool spectralConductor,
+PRISM_INLINE vec4 nebulaStarsReflected(IN(FrameConstants) fc, IN(NebulaLightConstants) nebula, IN(SurfaceSample) s,
+                                       IN(vec3) v, bool lambertian, int b, IN(vec4) lambdaNm, IN(vec4) albedo, bool spectralConductor,
                                        IN(vec4) conductorK, float metallic, float depthsUm[kMaxLights]) {
   vec4 radiance = vec4(0.0f);
-  for (int star = 0; star < frameNebula().starCount; ++star) {
+  for (int star = 0; star < nebula.starCount; ++star) {
     LightIncidence li = lightIncidence(kLightPoint, nebulaStarPositionW(fc, star), vec3(0.0f, -1.0f, 0.0f), 1.0f, 1.0f,
                                        0.0f, s.position);
     MicrofacetTerms terms = microfacetTerms(s.normal, v, li.toLight, s.roughness);
     if (lambertian) terms = lambertianTerms(terms);
     if (terms.cosLight <= 0.0f) continue;
-    float depthUm = star < kMaxLights ? depthsUm[star] : nebulaStarDepthTo(fc, s, star);
+    float depthUm = star < kMaxLights ? depthsUm[star] : nebulaStarDepthTo(fc, nebula, s, star);
     vec4 arriving = nebulaStarData(nebulaStarSpectrumIndex(star, b, fc.batchCount)) * li.irradiance *
                     nebulaTransmittance4(depthUm, lambdaNm);
     radiance += surfaceReflection(terms, spectralConductor, albedo, conductorK, metallic) * arriving;
@@ -259,9 +259,10 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 
 #ifdef PRISM_TECHNIQUE_NEBULA
   float nebulaDepthUm = nebulaOpticalDepthAt(uv);
+  NebulaLightConstants nebula = frameNebula();
   float nebulaStarDepthsUm[kMaxLights];
   for (int star = 0; star < kMaxLights; ++star) {
-    nebulaStarDepthsUm[star] = star < frameNebula().starCount ? nebulaStarDepthTo(fc, s, star) : 0.0f;
+    nebulaStarDepthsUm[star] = star < nebula.starCount ? nebulaStarDepthTo(fc, nebula, s, star) : 0.0f;
   }
 #endif
   vec3 tristimulus = vec3(0.0f);
@@ -300,8 +301,8 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     }
 #ifdef PRISM_TECHNIQUE_NEBULA
     vec4 nebulaLambdaNm = fc.mode == kModeRgb ? kNebulaRgbStandInNm : batch.lambdaNm;
-    radiance += nebulaStarsReflected(fc, s, v, lambertian, b, nebulaLambdaNm, albedo, spectralConductor, conductorK,
-                                     metallic, nebulaStarDepthsUm);
+    radiance += nebulaStarsReflected(fc, nebula, s, v, lambertian, b, nebulaLambdaNm, albedo, spectralConductor,
+                                     conductorK, metallic, nebulaStarDepthsUm);
 #endif
 #ifdef PRISM_TECHNIQUE_WATER
     PRISM_PRECISE vec3 fromCamera = s.position - cameraPosition;

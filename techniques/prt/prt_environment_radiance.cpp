@@ -46,9 +46,9 @@ Spectrum sumAboveHorizon(const std::vector<RgbUnboundedSpectrum>& texels, int w,
   return TabulatedSpectrum(std::move(lambdasNm), std::move(sums), Extrapolation::Clamp).toDense();
 }
 
-// The last map's spectra, kept for the process (a 4K map's hold about 130 MB until another map
-// replaces them): every change of a scene with a PRT map under water asks for its sum (about 20 ms
-// for a 256 × 128 map, seconds for 4K), and the PRT panel's rotation and luminance sliders change
+// The last map's spectra, kept for the process (16 bytes a texel: a 4K map's hold about 130 MB
+// until another map replaces them): every change of a scene with a PRT map under water asks for
+// its sum (about 20 ms for a 256 × 128 map; 256 times that, by its texel count, for 4K), and the PRT panel's rotation and luminance sliders change
 // the scene on every frame of a drag. Keyed by the map's identity (the section shares it between
 // copies of the scene) and the table's.
 std::shared_ptr<const MapSpectra> mapSpectra(const std::shared_ptr<const PrtMap>& map, const RgbToSpectrumTable& table) {

@@ -253,6 +253,7 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
   }
   // The renderer's own count: at least the 64³ RGB32F upsampling table (9 MB).
   EXPECT_GT(j["gpu_memory_mb"]["rgb"].get<double>(), 9.0);
+  EXPECT_GT(j["still_camera_16"]["ratio_to_moving"].get<double>(), 0.0);
   EXPECT_NE(slurp(dir / "plot.svg").find("<svg"), std::string::npos);
 
   Result demo = run("demo -o " + (dir / "gallery").string() + " --width 64 --height 36");

@@ -38,6 +38,7 @@ struct Config {
   render::FrameSettings settings;
   int warmup = 0, frames = 0;  // per round
   int wavelengths = 0;         // spectral configurations of the fit; 0 otherwise
+  bool still = false;          // frames accumulate as under a still camera; else each restarts
   std::vector<PassTimes> rounds;  // per round, the median of its frames
   std::size_t gpuMemoryBytes = 0;  // held by the renderer after the first round
 
@@ -79,7 +80,9 @@ void putRatio(nlohmann::json& j, const std::string& key, const RatioSpread& s) {
 
 double megabytes(std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
 
-PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, int frames,
+// Every frame a moving camera's (accumulation restarts: shadow maps and G-buffer drawn), or with
+// `still` the frames after the first accumulate as a still camera's do.
+PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, int frames, bool still,
                   ProgressBar& bar, std::size_t& done, std::size_t total) {
   std::map<std::string, std::vector<double>> samples;
   auto collect = [&](const gpu::GpuTimings& timings) {
@@ -98,6 +101,7 @@ PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, 
   for (int f = 0; f < warmup + frames + kFramesInFlight; ++f) {
     timer.beginFrame();
     if (f >= warmup + kFramesInFlight) collect(timer.latest());
+    if (!still || f == 0) renderer.resetAccumulation();
     renderer.renderFrame();
     timer.endFrame();
     if (f < warmup + frames) bar.update(++done, total);
@@ -162,6 +166,13 @@ void runSceneBench(const SceneBenchOptions& options) {
   coefficientAlbedo.gbufferAlbedo = render::GBufferAlbedo::Coefficients;
   const std::size_t coefficients16 = add("16 coefficients", renderer, coefficientAlbedo);
   const std::size_t rgbAlbedo16 = add("16 rgb albedo", renderer, rgbAlbedo);
+  // A still camera's frame at 16 wavelengths, which draws from the lighting pass on (the shadow
+  // maps and G-buffer hold while frames accumulate), against a moving camera's with its settings.
+  const std::size_t still16 = add("16 still", renderer, spectralSettings(16));
+  configs[still16].still = true;
+  configs[still16].warmup = std::max(options.warmup, 1);
+  const std::size_t moving16 =
+      settings.gbufferAlbedo == render::GBufferAlbedo::Coefficients ? coefficients16 : rgbAlbedo16;
 
   // What each wavelength strategy costs a frame at 16 wavelengths (issue 16): the GPU draws 16
   // whatever the strategy; the CPU draws the set and builds its matrices per frame (the pdf or the
@@ -226,7 +237,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   for (int r = 0; r < rounds; ++r) {
     for (Config& c : configs) {
       c.renderer->setSettings(c.settings);
-      c.rounds.push_back(measure(*c.renderer, timer, c.warmup, c.frames, bar, done, total));
+      c.rounds.push_back(measure(*c.renderer, timer, c.warmup, c.frames, c.still, bar, done, total));
       if (r == 0) c.gpuMemoryBytes = c.renderer->gpuMemoryBytes();
     }
   }
@@ -283,6 +294,9 @@ void runSceneBench(const SceneBenchOptions& options) {
          {"rgb_median_ms", configs[rgbAlbedo16].medianMs()},
          {"coefficients_median_ms", configs[coefficients16].medianMs()}};
     putRatio(g, "ratio_coefficients_to_rgb", ratio(configs[coefficients16], configs[rgbAlbedo16]));
+    nlohmann::json& st = j["still_camera_16"];
+    st["median_ms"] = configs[still16].medianMs();
+    putRatio(st, "ratio_to_moving", ratio(configs[still16], configs[moving16]));
     for (const auto& [strategy, i] : strategies16) {
       nlohmann::json& e = j["strategies_16"][std::string(samplingStrategyName(strategy))];
       e["median_ms"] = configs[i].medianMs();
@@ -343,6 +357,9 @@ void runSceneBench(const SceneBenchOptions& options) {
     strategyLine += fmt::format(" {} {}", samplingStrategyName(strategy), spread(ratio(configs[i], configs[strategies16.front().second])));
   }
   fmt::print("{}\n", strategyLine);
+  fmt::print("a still camera at 16 wavelengths (shadow maps and G-buffer kept while frames accumulate), frame / a "
+             "moving camera's: {:.3f} / {:.3f} ms = {}\n",
+             configs[still16].frameMs(), configs[moving16].frameMs(), spread(ratio(configs[still16], configs[moving16])));
   // Per technique, each ratio with its frames and, when the technique has a pass of its own
   // (named by its key), that pass's time in both.
   for (const TechniqueRun& run : techniqueRuns) {

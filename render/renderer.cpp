@@ -252,10 +252,12 @@ void Renderer::renderFrame() {
   // A new set of wavelengths every frame (every strategy but Uniform moves between frames).
   mFrame = buildFrameData(mScene, mSettings, mContext, mTable, mShadows.views, mFrameIndex++, mCameraTransform);
   uploadFrameData();
-  hook("shadow");
-  shadowPass();
-  hook("gbuffer");
-  gbufferPass();
+  if (mAccumulated == 0) {  // what the last frames drew there holds while they accumulate
+    hook("shadow");
+    shadowPass();
+    hook("gbuffer");
+    gbufferPass();
+  }
   techniquePasses();
   hook("lighting");
   lightingPass();

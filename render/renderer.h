@@ -2,7 +2,9 @@
 // the G-buffer, the techniques' passes, the spectral lighting pass (accumulating into a
 // tristimulus target), the forward passes of objects techniques shade themselves (PRT's) and of
 // light gizmos over the G-buffer's copied depth, and the post pass to an 8-bit display image. Settings change between frames without a restart;
-// accumulation restarts whenever they (or the camera) change.
+// accumulation restarts whenever they (or the camera, or the scene) change. Nothing drawn into the
+// shadow maps or the G-buffer changes while frames accumulate (no jitter: pixel centres), so only
+// a frame that restarts accumulation draws them; the others draw from the lighting pass on.
 //
 // The per-frame CPU work is small (wavelengths, integration matrices and spectra at them:
 // buildFrameData); everything per pixel runs in shaders/passes over shaders/shared.
@@ -56,6 +58,7 @@ class Renderer {
   // gpu::GpuError with the first error as FILE:LINE and keeps the programs it had.
   void reloadShaders();
   const Camera& camera() const { return mCamera; }
+  // The next frame starts a new accumulation and draws the shadow maps and the G-buffer again.
   void resetAccumulation() { mAccumulated = 0; }
 
   // Pass boundaries for timing (e.g. gpu timer scopes): called with "shadow", "gbuffer",
@@ -65,7 +68,8 @@ class Renderer {
   using PassHook = std::function<void(std::string_view pass)>;
   void setPassHook(PassHook hook) { mPassHook = std::move(hook); }
 
-  // Renders one frame into the accumulation and display targets.
+  // Renders one frame into the accumulation and display targets (the shadow maps and the
+  // G-buffer only when accumulation restarts: "shadow" and "gbuffer" are then not hooked).
   void renderFrame();
   int accumulatedFrames() const { return mAccumulated; }
 

@@ -12,6 +12,8 @@
 #include <cstdlib>
 #include <ostream>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "gpu/headless_context.h"
 #include "imaging/image_difference.h"
@@ -381,6 +383,44 @@ TEST(Renderer, SettingsChangeWithoutRestartAndRestartAccumulation) {
   renderer.renderFrame();
   EXPECT_EQ(renderer.accumulatedFrames(), 2);
   EXPECT_EQ(renderer.frameData().batches.size(), std::size_t{8});
+}
+
+// Frames that accumulate light what the frame that restarted drew into the shadow maps and the
+// G-buffer: under the same wavelengths every frame, the second adds exactly what the first did.
+TEST(Renderer, OnlyARestartDrawsTheShadowMapsAndTheGBuffer) {
+  gpu::HeadlessContext context;
+  Scene scene = loadScene(kScenes / "spheres_d65.json");
+  FrameSettings settings = smallFrame(RenderMode::JakobHanika);
+  settings.sampling.strategy = SamplingStrategy::Uniform;
+  Renderer renderer(scene, cachedTestTable(), settings);
+  ASSERT_FALSE(renderer.shadowViews().empty());
+  std::vector<std::string> passes;
+  renderer.setPassHook([&](std::string_view pass) { passes.emplace_back(pass); });
+  auto frame = [&] {
+    passes.clear();
+    renderer.renderFrame();
+    return std::count(passes.begin(), passes.end(), "shadow") + std::count(passes.begin(), passes.end(), "gbuffer");
+  };
+  EXPECT_EQ(frame(), 2);
+  const std::vector<float> first = renderer.readMeanTristimulus();
+  EXPECT_EQ(frame(), 0);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "lighting"), 1);
+  EXPECT_EQ(renderer.accumulatedFrames(), 2);
+  EXPECT_EQ(renderer.readMeanTristimulus(), first);
+  // Whatever restarts accumulation draws them again; a display-only change does not.
+  settings.display.toneMap = ToneMap::Reinhard;
+  renderer.setSettings(settings);
+  EXPECT_EQ(frame(), 0);
+  renderer.setCamera(renderer.camera());
+  EXPECT_EQ(frame(), 2);
+  renderer.sceneChanged();
+  EXPECT_EQ(frame(), 2);
+  settings.sampling.count = 8;
+  renderer.setSettings(settings);
+  EXPECT_EQ(frame(), 2);
+  renderer.resetAccumulation();
+  EXPECT_EQ(frame(), 2);
+  EXPECT_EQ(frame(), 0);
 }
 
 // Coefficients stored in the G-buffer give the image the RGB albedo gives (the same lookup, per

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "batch/slurm_script.h"
 #include "core/error.h"
@@ -133,7 +134,7 @@ void printReferenceClusterScript(const ClusterOptions& o) {
 
 void printValidateClusterScript(const ClusterOptions& o) {
   const harness::ValidateOptions& v = o.validate;
-  const int experiments = harness::validateExperimentCount();
+  const int experiments = harness::validateExperimentCount(v.only);
   if (o.tasks > experiments) throw Error(fmt::format("--tasks {}: the {} experiments make at most {} tasks", o.tasks, experiments, experiments));
   batch::SlurmScript s = scriptBase(o, "prism-validate");
   const std::filesystem::path output = std::filesystem::absolute(v.output);
@@ -143,6 +144,7 @@ void printValidateClusterScript(const ClusterOptions& o) {
   std::string common = v.quick ? " --quick" : "";
   common += " -o " + shellQuote(output.string());
   if (!v.scenes.empty()) common += " --scenes " + shellQuote(std::filesystem::absolute(v.scenes).string());
+  if (!v.only.empty()) common += " --only " + shellQuote(fmt::format("{}", fmt::join(v.only, ",")));
   // The rasteriser runs on the GPU (EGL; Mesa's llvmpipe on a node without one, whose threads
   // follow the CPUs Slurm gives: LP_NUM_THREADS).
   s.array.command = "env LP_NUM_THREADS=\"$SLURM_CPUS_PER_TASK\" " + shellQuote(prismExecutable()) +

@@ -332,10 +332,12 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   scriptReferenceCmd->add_option("--parts", cluster.parts, "folder of the parts and job logs (default: OUT.parts)");
   auto* scriptValidateCmd = scriptCmd->add_subcommand(
-      "validate", "`prism validate --task I/N` (at most 11 tasks, one experiment or more each), then --collect");
+      "validate", "`prism validate --task I/N` (at most one task per experiment), then --collect");
   scriptValidateCmd->add_option("-o,--output", cluster.validate.output, "folder to write")->capture_default_str();
   scriptValidateCmd->add_option("--scenes", cluster.validate.scenes, "folder of the scene files (default: the example scenes)");
   scriptValidateCmd->add_flag("--quick", cluster.validate.quick, "240x135 and fewer paths per pixel");
+  scriptValidateCmd->add_option("--only", cluster.validate.only, "only these experiments (names as in results.json)")
+      ->delimiter(',');
   addClusterOptions(scriptValidateCmd);
   auto* scriptPrtCmd = scriptCmd->add_subcommand(
       "prt", "`prism prt bake --part I/N` (a share of the vertices each), then `prism merge` into the cache's transfer file");
@@ -376,6 +378,8 @@ int main(int argc, char** argv) {
                           "I/N: only task I of N's share of the experiments, as a part in OUT/parts (a Slurm array task)");
   validateCmd->add_flag("--collect", val.collect, "the report from the parts in OUT/parts (after every --task)")
       ->excludes("--task");
+  validateCmd->add_option("--only", val.only, "only these experiments (names as in results.json, e.g. spheres_d65,reef_5m)")
+      ->delimiter(',');
 
   ViewOptions view;
   CliSettings viewSettings;

@@ -1,5 +1,6 @@
 #include "harness/validate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -8,6 +9,7 @@
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "gpu/headless_context.h"
@@ -488,29 +490,48 @@ int report(const ValidateOptions& o, const Sizes& sizes, const std::vector<Resul
   return failures.empty() ? 0 : 1;
 }
 
+// The experiments `only` names, in the report's order (every one when it is empty).
+std::vector<std::size_t> chosenExperiments(const std::vector<std::string>& only) {
+  std::vector<std::size_t> chosen;
+  std::vector<std::string> all;
+  for (std::size_t e = 0; e < kExperiments; ++e) all.push_back(experimentName(e));
+  for (const std::string& name : only) {
+    if (std::find(all.begin(), all.end(), name) == all.end())
+      throw Error(fmt::format("--only: no experiment \"{}\" ({})", name, fmt::join(all, ", ")));
+  }
+  for (std::size_t e = 0; e < kExperiments; ++e) {
+    if (only.empty() || std::find(only.begin(), only.end(), all[e]) != only.end()) chosen.push_back(e);
+  }
+  return chosen;
+}
+
 }  // namespace
 
-int validateExperimentCount() { return static_cast<int>(kExperiments); }
+int validateExperimentCount(const std::vector<std::string>& only) {
+  return static_cast<int>(chosenExperiments(only).size());
+}
 
 int runValidate(const ValidateOptions& o) {
   const Sizes sizes = o.quick ? Sizes{240, 135, 64, 32, 8, 64} : Sizes{640, 360, 256, 128, 64, 360};
   const std::filesystem::path sceneDir = o.scenes.empty() ? exampleSceneDirectory() : o.scenes;
   const nlohmann::json identity = {{"sizes", sizesJson(sizes)}, {"scenes", std::filesystem::absolute(sceneDir).string()}};
+  const std::vector<std::size_t> chosen = chosenExperiments(o.only);
+  const int count = static_cast<int>(chosen.size());
   std::vector<std::string> names;
-  for (std::size_t e = 0; e < kExperiments; ++e) names.push_back(experimentName(e));
+  for (std::size_t e : chosen) names.push_back(experimentName(e));
 
   if (o.collect) {
     std::vector<Result> results;
     for (const nlohmann::json& row : collectValidateParts(o.output, identity, names)) results.push_back(resultFromJson(row));
     return report(o, sizes, results);
   }
-  IndexRange share{0, static_cast<int>(kExperiments)};
+  IndexRange share{0, count};
   std::filesystem::path partPath;
   if (!o.task.empty()) {
     TaskIndex task = parseTaskIndex(o.task, "--task");
-    if (task.count > static_cast<int>(kExperiments))
-      throw Error(fmt::format("--task {}: the {} experiments make at most {} tasks", o.task, kExperiments, kExperiments));
-    share = shareOf(task, static_cast<int>(kExperiments));
+    if (task.count > count)
+      throw Error(fmt::format("--task {}: the {} experiments make at most {} tasks", o.task, count, count));
+    share = shareOf(task, count);
     partPath = validatePartPath(o.output, task);
     try {
       ValidatePart existing = readValidatePart(partPath);
@@ -529,13 +550,13 @@ int runValidate(const ValidateOptions& o) {
   std::vector<Result> results;
   ProgressBar bar("validate");
   std::size_t total = 0;
-  for (int e = share.begin; e < share.end; ++e) total += experimentSteps(static_cast<std::size_t>(e));
+  for (int e = share.begin; e < share.end; ++e) total += experimentSteps(chosen[static_cast<std::size_t>(e)]);
   Experiment experiment(o.output, sizes, bar, total);
   auto load = [&](const std::string& name, const std::vector<std::string>& sets) {
     return loadScene(sceneDir / (name + ".json"), sets);
   };
   for (int e = share.begin; e < share.end; ++e) {
-    const std::size_t k = static_cast<std::size_t>(e);
+    const std::size_t k = chosen[static_cast<std::size_t>(e)];
     if (k < std::size(kSphereScenes)) {
       const SphereScene& sphere = kSphereScenes[k];
       std::vector<std::string> sets;
@@ -561,7 +582,7 @@ int runValidate(const ValidateOptions& o) {
                     nlohmann::json::array()};
   for (const Result& r : results) part.results.push_back(resultJson(r));
   writeValidatePart(partPath, part);
-  fmt::print("wrote {} ({} of {} experiments)\n", partPath.string(), share.size(), kExperiments);
+  fmt::print("wrote {} ({} of {} experiments)\n", partPath.string(), share.size(), count);
   return 0;
 }
 

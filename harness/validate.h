@@ -26,9 +26,13 @@
 // writes its part
 // (validateExperimentCount() of them at most); `--collect`
 // writes DIR/results.json and DIR/index.html from the parts, the same files a whole run writes.
+// `--only NAME,…` runs those experiments alone (results.json's "scene" names), split and
+// collected the same way, and checks the bounds of what it ran.
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace prism::harness {
 
@@ -39,11 +43,13 @@ struct ValidateOptions {
   bool json = false;             // print results.json instead of the table
   std::string task;              // "I/N": only task I of N's experiments, into DIR/parts (skipped when there)
   bool collect = false;          // the report from DIR/parts instead of running experiments
+  std::vector<std::string> only;  // experiment names, in any order; empty: every one
 };
 // 0 when every bound holds, 1 otherwise (the report is written either way); a task: 0.
 int runValidate(const ValidateOptions& options);
 
-// How many experiments a sweep runs: the most tasks it splits into.
-int validateExperimentCount();
+// How many experiments a sweep of `only` runs (every one when empty): the most tasks it splits
+// into. Error "--only: no experiment "NAME" (…)" for a name that is none.
+int validateExperimentCount(const std::vector<std::string>& only);
 
 }  // namespace prism::harness

@@ -2,7 +2,9 @@
 # (tests/slurm/slurm_cluster_test.sh, scripts/slurm_scaling.sh): Debian's munged, slurmctld and
 # slurmd, with their own munge key and socket, a generated slurm.conf (the current user as
 # SlurmUser and SlurmdUser, proctrack/linuxproc and task/none: no cgroups or systemd needed; one
-# node of this machine's CPUs and memory; free ports) and every file under DIR. Source it, then:
+# node of this machine's CPUs and memory; free ports; batch jobs scheduled as soon as CPUs free
+# up, not after the default 3 s batch_sched_delay, which made an 8-task array and its merge take
+# 15 s rather than 6) and every file under DIR. Source it, then:
 #   start_local_cluster DIR   starts the three daemons and waits until the node is idle; exports
 #                             SLURM_CONF for sbatch, squeue, scancel, scontrol and sinfo
 #   stop_local_cluster DIR    cancels every job and stops the daemons (for a trap: never fails)
@@ -51,6 +53,7 @@ JobAcctGatherType=jobacct_gather/none
 AccountingStorageType=accounting_storage/none
 MpiDefault=none
 SchedulerType=sched/builtin
+SchedulerParameters=batch_sched_delay=0
 SelectType=select/cons_tres
 SelectTypeParameters=CR_Core
 SlurmdParameters=config_overrides

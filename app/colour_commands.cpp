@@ -3,7 +3,6 @@
 #include <fmt/core.h>
 
 #include <Eigen/Core>
-#include <Eigen/SVD>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <filesystem>
@@ -21,6 +20,7 @@
 #include "spectral/rgb_to_spectrum_cache.h"
 #include "spectral/sampling.h"
 #include "spectral/sigmoid_fit.h"
+#include "spectral/thin_svd.h"
 #include "spectral/colour_checker.h"
 #include "techniques/prt/metamer.h"
 
@@ -256,8 +256,7 @@ void colourSpectralTexture(const SpectralTextureOptions& o) {
   t.basis = Eigen::MatrixXd::Identity(81, 81);
   double worst = 0.0;
   if (!t.sampled) {
-    Eigen::BDCSVD<Eigen::MatrixXd> svd(spectra, Eigen::ComputeThinU);
-    t.basis = svd.matrixU().leftCols(o.basis);
+    t.basis = leftSingularVectors(spectra).vectors.leftCols(o.basis);
     patchValues = t.basis.transpose() * spectra;
     Eigen::MatrixXd reconstructed = t.basis * patchValues;
     worst = (reconstructed - spectra).cwiseAbs().maxCoeff();

@@ -1,12 +1,12 @@
-// The only translation unit that instantiates Eigen's SVD in prism::prt (≈ 40 s to compile).
 #include "techniques/prt/prt_spectra.h"
 
 #include <cmath>
+#include <utility>
 
-#include <Eigen/SVD>
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "spectral/thin_svd.h"
 
 namespace prism::prt {
 
@@ -40,9 +40,9 @@ SpectralBasis::SpectralBasis(const std::vector<Eigen::VectorXd>& spectra) {
     columns.col(used++) = s / norm;
   }
   if (used == 0) throw Error("spectral basis: no non-zero spectrum to decompose");
-  Eigen::BDCSVD<Eigen::MatrixXd> svd(columns.leftCols(used), Eigen::ComputeThinU);
-  mVectors = svd.matrixU();
-  mSingularValues = svd.singularValues();
+  LeftSingularVectors svd = leftSingularVectors(columns.leftCols(used));
+  mVectors = std::move(svd.vectors);
+  mSingularValues = std::move(svd.values);
 }
 
 Eigen::MatrixXd SpectralBasis::leading(int m) const {

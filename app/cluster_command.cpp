@@ -135,12 +135,12 @@ void printReferenceClusterScript(const ClusterOptions& o) {
 void printValidateClusterScript(const ClusterOptions& o) {
   const harness::ValidateOptions& v = o.validate;
   const int experiments = harness::validateExperimentCount(v.only);
-  if (o.tasks > experiments) throw Error(fmt::format("--tasks {}: the {} experiments make at most {} tasks", o.tasks, experiments, experiments));
+  if (o.tasks > experiments) throw Error(fmt::format("--tasks {}: at most {} tasks, one per experiment", o.tasks, experiments));
   batch::SlurmScript s = scriptBase(o, "prism-validate");
   const std::filesystem::path output = std::filesystem::absolute(v.output);
   s.logs = output / "parts";
-  s.summary = fmt::format("prism validate{} as {} tasks, then prism validate --collect into {}", v.quick ? " --quick" : "",
-                          o.tasks, output.string());
+  s.summary = fmt::format("prism validate{}{} as {} tasks, then prism validate --collect into {}", v.quick ? " --quick" : "",
+                          v.only.empty() ? "" : fmt::format(" --only {}", fmt::join(v.only, ",")), o.tasks, output.string());
   std::string common = v.quick ? " --quick" : "";
   common += " -o " + shellQuote(output.string());
   if (!v.scenes.empty()) common += " --scenes " + shellQuote(std::filesystem::absolute(v.scenes).string());

@@ -341,6 +341,7 @@ std::string indexHtml(const std::vector<Result>& results, const std::vector<std:
   }
   page.table({"scene", "mode", "mean ΔE00", "median", "p95", "max", "MAE", "mean ΔE00 vs multiple scattering"}, rows);
   auto section = [&](const std::string& name, const std::string& title, bool global, const std::vector<std::string>& modes) {
+    if (std::none_of(results.begin(), results.end(), [&](const Result& r) { return r.scene == name; })) return;  // --only
     page.beginSection("", title);
     page.figure({{name + "_reference.png", "reference"}}, global ? "reference (single scattering)" : "reference");
     if (global) page.figure({{name + "_reference_global.png", "multiple scattering"}}, "reference (multiple scattering)");
@@ -530,7 +531,7 @@ int runValidate(const ValidateOptions& o) {
   if (!o.task.empty()) {
     TaskIndex task = parseTaskIndex(o.task, "--task");
     if (task.count > count)
-      throw Error(fmt::format("--task {}: the {} experiments make at most {} tasks", o.task, count, count));
+      throw Error(fmt::format("--task {}: at most {} tasks, one per experiment", o.task, count));
     share = shareOf(task, count);
     partPath = validatePartPath(o.output, task);
     try {

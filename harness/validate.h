@@ -24,7 +24,7 @@
 // Split across tasks (a Slurm array, validate_parts.h): `--task I/N` runs task I's share of the
 // sixteen experiments (four sphere scenes, five reef depths, three PRT scenes, four nebulae) and
 // writes its part
-// (validateExperimentCount() of them at most); `--collect`
+// (validateExperimentCount(only) of them at most); `--collect`
 // writes DIR/results.json and DIR/index.html from the parts, the same files a whole run writes.
 // `--only NAME,…` runs those experiments alone (results.json's "scene" names), split and
 // collected the same way, and checks the bounds of what it ran.

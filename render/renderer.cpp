@@ -247,11 +247,27 @@ void Renderer::hook(std::string_view pass) const {
   if (mPassHook) mPassHook(pass);
 }
 
+namespace {
+
+// Write masks are set here rather than assumed: clears and depth writes obey them, and a host
+// (a viewer's UI) may have left them off.
+void setOpaqueState() {
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);  // both faces: thin and open meshes must still cast and show
+}
+
+}  // namespace
+
 void Renderer::renderFrame() {
   mCameraTransform = prism::cameraTransform(mCamera, mSettings.width, mSettings.height);
   // A new set of wavelengths every frame (every strategy but Uniform moves between frames).
   mFrame = buildFrameData(mScene, mSettings, mContext, mTable, mShadows.views, mFrameIndex++, mCameraTransform);
   uploadFrameData();
+  setOpaqueState();  // every frame, for the passes after these two as well
   if (mAccumulated == 0) {  // what the last frames drew there holds while they accumulate
     hook("shadow");
     shadowPass();
@@ -286,21 +302,6 @@ void Renderer::uploadFrameData() {
     upload(buffers.data, block.data, (block.key + " data").c_str());
   }
 }
-
-namespace {
-
-// Write masks are set here rather than assumed: clears and depth writes obey them, and a host
-// (a viewer's UI) may have left them off.
-void setOpaqueState() {
-  glDepthMask(GL_TRUE);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);  // both faces: thin and open meshes must still cast and show
-}
-
-}  // namespace
 
 void Renderer::shadowPass() {
   setOpaqueState();

@@ -421,6 +421,12 @@ TEST(Renderer, OnlyARestartDrawsTheShadowMapsAndTheGBuffer) {
   renderer.resetAccumulation();
   EXPECT_EQ(frame(), 2);
   EXPECT_EQ(frame(), 0);
+  // An edited material reaches the image through the G-buffer drawn again after sceneChanged.
+  const std::vector<float> before = renderer.readMeanTristimulus();
+  for (Material& m : scene.materials) m.baseColour = glm::vec3(1.0f) - m.baseColour;
+  renderer.sceneChanged();
+  EXPECT_EQ(frame(), 2);
+  EXPECT_NE(renderer.readMeanTristimulus(), before);
 }
 
 // Coefficients stored in the G-buffer give the image the RGB albedo gives (the same lookup, per

@@ -1,6 +1,6 @@
 // The left singular vectors and singular values of a matrix: its thin singular value
 // decomposition, for the spectral bases of PRT and of spectral textures (Peercy 1993). Eigen's
-// one-sided Jacobi SVD, the most accurate of its two and, at Prism's sizes (81 wavelengths by
+// Jacobi SVD (two-sided, after a QR), the more accurate of its two and, at Prism's sizes (81 wavelengths by
 // tens to thousands of spectra), milliseconds. Kept in one translation unit: the decomposition's
 // templates cost 8 s to compile (20 s under the sanitizers), the divide-and-conquer one's 33 s
 // (65 s), and two files each compiled their own.

@@ -90,7 +90,8 @@ TechniqueBench NebulaSection::bench() const {
   b.configs.push_back({"nebula reference (paper)", {}, false, 0, reference});
   b.ratios.push_back({"ratio_reference_to_projection", "nebula reference (paper)", "nebula projection"});
   b.ratios.push_back({"ratio_reference_to_light_density", "nebula reference (paper)", "nebula light-density"});
-  // What the stars' light on surfaces costs a still view (the lighting pass; the march runs once).
+  // What the stars' light on surfaces costs a frame (the lighting pass; the camera held, the march
+  // runs once).
   auto lit = std::make_shared<NebulaSection>(*this);
   lit->lightSurfaces = true;
   lit->marchEveryFrame = false;

@@ -66,8 +66,8 @@ struct NebulaSection final : TechniqueSection {
   std::uint64_t hashLoadedData(std::uint64_t hash) const override;
   // The section's method against the others on this scene, the nebula's pass timed in each,
   // marching every frame: the reference at the paper's settings (100 steps, 21 wavelengths a step)
-  // over projection and over light–density (prism bench's ratios); and a still view with the
-  // stars lighting the surfaces over one without.
+  // over projection and over light–density (prism bench's ratios); and, the camera held so that
+  // the march runs once, the stars lighting the surfaces over not.
   TechniqueBench bench() const override;
 
   // The model with the density, as a NebulaRenderer takes it.

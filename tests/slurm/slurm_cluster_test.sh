@@ -98,7 +98,7 @@ echo "   largest relative difference from the single-process render: $difference
 
 echo "== 3. validate --quick --only (two experiments) as 2 tasks, then --collect"
 V=(validate --quick --only spheres_d65,nebula_natural)
-"$prism" "${V[@]}" -o "$T/validated" >/dev/null 2>&1 || fail "prism ${V[*]} failed"
+"$prism" "${V[@]}" -o "$T/validated" >"$T/validated.log" 2>&1 || { tail -n 5 "$T/validated.log"; fail "prism ${V[*]} failed"; }
 "$prism" cluster script "${V[@]}" --tasks 2 -o "$T/validate" >"$T/validate.sh"
 submit "$T/validate.sh"
 expect_completed "$finish" "validate --collect after 2 tasks"

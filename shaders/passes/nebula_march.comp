@@ -11,6 +11,11 @@
 // light reaching the camera, which the finish weighs by the filters' response at λₗ, so that the
 // lines, exact at their wavelengths, need no new march either.
 //
+// Projection and light–density march once per group of lanes (stars or 2D elements): eight lanes
+// (two slabs of uField) for card(B) ≤ 4, else four; the group's moments stay in registers, eight
+// vec4, and are written at the ray's end. Added in global memory at every sample, as before, they
+// made the march a chain of read-modify-writes. The CPU twin sums in the same order.
+//
 // In a scene of the renderer (gpu/nebula_pass.h) the rays are its camera's and stop at its
 // surfaces (uSceneDepth); samples beyond a surface are left out, the others keep their steps.
 //
@@ -18,6 +23,7 @@
 // reference, NEBULA_ANALYTIC the analytic method (the closed form per sample, star and passband
 // piece), NEBULA_PRE_INTEGRATION pre-integration (each star's tabulated channels over x), else
 // projection. The reference, analytic and pre-integration add into the colour directly.
+// NEBULA_NODE_CHUNK: the reference's node loop's chunk (16 unless set).
 //
 // Grids are read with texelFetch and interpolated between voxel centres as the CPU does
 // (common_nebula_fields.glsl), not by the sampler, whose quantised weights the twin test would measure.
@@ -45,9 +51,9 @@ layout(std430, binding = 1) readonly buffer MomentHi { vec4 momentHi[]; };
 layout(std430, binding = 2) readonly buffer Stars { vec4 stars[]; };  // position (unit cube), luminosity
 layout(std430, binding = 3) readonly buffer Lines { vec4 lines[]; };  // λ (µm); the finish reads the responses
 // Per pixel p of P, value v at moments[v·P + p] (neighbouring invocations write neighbouring
-// words): v = s·card + j (projection) or k·card + j (light–density). The ray accumulates into
-// them directly, so the number of stars has no limit but the buffer's size.
-layout(std430, binding = 4) buffer Moments { float moments[]; };
+// words): v = s·card + j (projection) or k·card + j (light–density), written once per group at the
+// ray's end, so the number of stars has no limit but the buffer's size.
+layout(std430, binding = 4) writeonly buffer Moments { float moments[]; };
 // What the march made for the finish besides the moments, [v·P + p]: v = 0…2 the colour the direct
 // methods integrate in the march (0 for projection and light–density), v = 3 + l the light of
 // line l of uLineCount (≤ kMaxNebulaLines).
@@ -68,7 +74,11 @@ layout(std430, binding = 7) readonly buffer AnalyticPieces { NebulaAnalyticPiece
 layout(std430, binding = 7) readonly buffer PreIntegrated { vec4 preIntegrated[]; };
 #else
 // Reference: per star s and channel c, node k at [(s·3 + c)·uNodeStride + k]: (λ µm, weight),
-// each channel's nodes padded to a multiple of 16 with weight 0.
+// each channel's nodes padded to a multiple of NEBULA_NODE_CHUNK (16, or 4 for a few nodes a
+// channel) with weight 0.
+#ifndef NEBULA_NODE_CHUNK
+#define NEBULA_NODE_CHUNK 16
+#endif
 layout(std430, binding = 7) readonly buffer ReferenceNodes { vec2 referenceNodes[]; };
 #endif
 
@@ -168,11 +178,11 @@ void main() {
   int pixel = px.y * uSize.x + px.x;  // row 0 at the top, as the CPU's image
   int pixelCount = uSize.x * uSize.y;
 #if defined(NEBULA_REFERENCE) || defined(NEBULA_ANALYTIC) || defined(NEBULA_PRE_INTEGRATION)
-  int values = 0;  // the colour directly, no moments
+  const int groups = 1;  // every star in the one march, into the colour
 #else
-  int values = uCount * uCard;
+  int lanes = uCard <= 4 ? 8 : 4;
+  int groups = max(1, (uCount + lanes - 1) / lanes);  // a march per group of stars or 2D elements
 #endif
-  for (int v = 0; v < values; ++v) moments[v * pixelCount + pixel] = 0.0f;
   ivec3 n = textureSize(uDensity, 0);
 
   float u = (2.0f * (float(px.x) + 0.5f) / float(uSize.x) - 1.0f) * uTanHalf * uAspect;
@@ -184,10 +194,15 @@ void main() {
   float t0;
   float t1;
   float gCam = 0.0f;
-  if (nebulaClipToCube(uCameraPosition, dir, 1e30f, t0, t1)) {
-    float dt = (t1 - t0) / float(uSteps);
-    float tLimit = rayLimit(px);
-    for (int i = 0; i < uSteps; ++i) {
+  bool inside = nebulaClipToCube(uCameraPosition, dir, 1e30f, t0, t1);
+  float tLimit = rayLimit(px);
+  for (int group = 0; group < groups; ++group) {
+    // The group's moments: lane c's elements j < 4 in acc[c][j]; with four lanes, 4…7 in acc[4 + c].
+    vec4 acc[8];
+    for (int k = 0; k < 8; ++k) acc[k] = vec4(0.0f);
+    gCam = 0.0f;
+    float dt = inside ? (t1 - t0) / float(uSteps) : 0.0f;
+    for (int i = 0; inside && i < uSteps; ++i) {
       if (nebulaRayOpaque(gCam)) break;
       float t = t0 + (float(i) + 0.5f) * dt;
       if (t > tLimit) break;  // behind the scene's surface
@@ -198,7 +213,7 @@ void main() {
       float dg = uDepthPerDensity * rho * dt;
       float g = gCam + 0.5f * dg;  // the sample sees half of its own step's extinction
       gCam += dg;
-      if (uLineCount > 0) {
+      if (group == 0 && uLineCount > 0) {  // the lines once, in the first group's march
         vec4 zone[2] = vec4[2](vec4(1.0f), vec4(1.0f));
         for (int slab = 0; slab * 4 < uZoneCount; ++slab) zone[slab] = fieldOf(uZones, cell, slab, n.z);
         for (int l = 0; l < uLineCount; ++l) {
@@ -210,13 +225,13 @@ void main() {
       vec4 mLo;
       vec4 mHi;
       coefficients8(g, mLo, mHi);
-      float w = rho * dt;
-      for (int slab = 0; slab * 4 < uCount; ++slab) {
-        vec4 d = fieldOf(uField, cell, slab, n.z);
-        for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
-          int base = (slab * 4 + c) * uCard;
-          for (int j = 0; j < uCard; ++j)
-            moments[(base + j) * pixelCount + pixel] += w * d[c] * (j < 4 ? mLo[j] : mHi[j - 4]);
+      for (int part = 0; part * 4 < lanes; ++part) {  // the group's slabs
+        int slab = group * (lanes / 4) + part;
+        if (slab * 4 >= uCount) break;
+        vec4 d = (rho * dt) * fieldOf(uField, cell, slab, n.z);
+        for (int c = 0; c < 4; ++c) {
+          acc[part * 4 + c] += d[c] * mLo;
+          if (lanes == 4) acc[4 + c] += d[c] * mHi;
         }
       }
 #elif defined(NEBULA_REFERENCE)
@@ -228,12 +243,12 @@ void main() {
           float w = nebulaStarWeight(uScattering * rho * dt, stars[s].w, dot(toStar, toStar));
           float x = g + gs[c];
           vec3 sum = vec3(0.0f);
-          // In chunks of 16 (padded with zero weights), a loop of constant count the compiler
-          // unrolls: Mesa's llvmpipe stops a shader's loops after 65 535 iterations an invocation,
-          // nested loops counted together, which a node loop over 100 steps × stars would pass.
+          // In chunks (padded with zero weights), a loop of constant count the compiler unrolls:
+          // Mesa's llvmpipe stops a shader's loops after 65 535 iterations an invocation, nested
+          // loops counted together, which a node loop over 100 steps × stars would pass.
           for (int ch = 0; ch < 3; ++ch)
-            for (int k0 = 0; k0 < uNodeCount[ch]; k0 += 16)
-              for (int u = 0; u < 16; ++u) {
+            for (int k0 = 0; k0 < uNodeCount[ch]; k0 += NEBULA_NODE_CHUNK)
+              for (int u = 0; u < NEBULA_NODE_CHUNK; ++u) {
                 vec2 node = referenceNodes[(s * 3 + ch) * uNodeStride + k0 + u];
                 sum[ch] += node.y * nebulaAttenuation(x, node.x);
               }
@@ -277,21 +292,29 @@ void main() {
         }
       }
 #else
-      for (int slab = 0; slab * 4 < uCount; ++slab) {
+      for (int part = 0; part * 4 < lanes; ++part) {  // the group's slabs
+        int slab = group * (lanes / 4) + part;
+        if (slab * 4 >= uCount) break;
         vec4 gs = fieldOf(uField, cell, slab, n.z);
-        for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
+        for (int c = 0; c < 4; ++c) {
           int s = slab * 4 + c;
+          if (s >= uCount) break;
           vec3 toStar = stars[s].xyz - p;
           float w = nebulaStarWeight(uScattering * rho * dt, stars[s].w, dot(toStar, toStar));
           vec4 mLo;
           vec4 mHi;
           coefficients8(g + gs[c], mLo, mHi);
-          for (int j = 0; j < uCard; ++j)
-            moments[(s * uCard + j) * pixelCount + pixel] += w * (j < 4 ? mLo[j] : mHi[j - 4]);
+          acc[part * 4 + c] += w * mLo;
+          if (lanes == 4) acc[4 + c] += w * mHi;
         }
       }
 #endif
     }
+#if !defined(NEBULA_REFERENCE) && !defined(NEBULA_ANALYTIC) && !defined(NEBULA_PRE_INTEGRATION)
+    for (int c = 0; c < lanes && group * lanes + c < uCount; ++c)
+      for (int j = 0; j < uCard; ++j)
+        moments[((group * lanes + c) * uCard + j) * pixelCount + pixel] = j < 4 ? acc[c][j] : acc[4 + c][j - 4];
+#endif
   }
   for (int ch = 0; ch < 3; ++ch) marched[ch * pixelCount + pixel] = colour[ch];
   for (int l = 0; l < uLineCount; ++l) marched[(3 + l) * pixelCount + pixel] = lineSum[l];

@@ -215,10 +215,19 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   }
   glm::ivec3 nodeCount(0);
   int nodeStride = 0;
-  if (reference) {  // [(star·3 + channel)·stride + node]: (λ, weight), in chunks of 16 (nebula_march.comp)
+  int nodeChunk = 16;  // nebula_march.comp's NEBULA_NODE_CHUNK
+  if (reference) {  // [(star·3 + channel)·stride + node]: (λ, weight), in chunks (nebula_march.comp)
     NebulaRenderer::ReferenceNodes nodes = mRenderer->referenceNodes(s);
+    std::size_t most = 0;
+    for (const auto& channel : nodes.lambdaUm) most = std::max(most, channel.size());
+    if (most <= static_cast<std::size_t>(kNarrowNodes)) {
+      nodeChunk = 4;
+      if (!mReferenceNarrow)
+        mReferenceNarrow.emplace(computeProgram("nebula_march.comp", "nebula march (reference, narrow)",
+                                                {{"NEBULA_REFERENCE", ""}, {"NEBULA_NODE_CHUNK", "4"}}));
+    }
     for (int c = 0; c < 3; ++c) {
-      nodeCount[c] = (static_cast<int>(nodes.lambdaUm[static_cast<std::size_t>(c)].size()) + 15) / 16 * 16;
+      nodeCount[c] = (static_cast<int>(nodes.lambdaUm[static_cast<std::size_t>(c)].size()) + nodeChunk - 1) / nodeChunk * nodeChunk;
       nodeStride = std::max(nodeStride, nodeCount[c]);
     }
     // Padding: weight 0 at 1 µm (a finite e^(−x/λ) times nothing).
@@ -250,7 +259,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   mSize = {view.width, view.height};
 
   const gpu::Program& p = light            ? mLightDensity
-                          : reference      ? mReference
+                          : reference      ? (nodeChunk == 4 ? *mReferenceNarrow : mReference)
                           : analytic       ? mAnalytic
                           : preIntegration ? mPreIntegration
                                            : mProjection;

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -96,6 +97,11 @@ class NebulaGpuMarcher {
 
   const NebulaRenderer* mRenderer;
   gpu::Program mProjection, mLightDensity, mReference, mAnalytic, mPreIntegration, mFinish;
+  // The reference for at most kNarrowNodes nodes a channel (the paper's baseline, 7): its node loop
+  // in chunks of 4, not 16, so that it evaluates 8 nodes a channel and not 16. Compiled at its
+  // first march.
+  static constexpr int kNarrowNodes = 16;
+  std::optional<gpu::Program> mReferenceNarrow;
   gpu::Texture3D mDensity, mStarDepth, mLightCoefficients, mZones;
   gpu::Buffer mMomentLo, mMomentHi, mBasisMatrix, mStars, mLines;
   std::vector<float> mProjectionWeightValues, mLightWeightValues;

@@ -1,6 +1,7 @@
 // The GPU marcher (llvmpipe in CI) against its CPU twin, NebulaRenderer::render, per pixel, and
 // the example nebula against its golden images (PRISM_UPDATE_GOLDEN=1 rewrites them). The twin
 // bound: nebula_twin_test_support.h.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -50,6 +51,8 @@ struct TwinCase {
   bool lines;
   StarModel starModel = StarModel::Planck;
   bool zones = false;  // ionisation zones, wide enough that the 25 000 K star's hold much of the cloud
+  int uniformSamples = 0;  // reference: λ per channel (the paper's baseline, 7: the narrow node loop)
+  int basis = 4;           // card(B): above 4 the march keeps four lanes a group, not eight
 };
 
 class NebulaGpuTwin : public testing::TestWithParam<TwinCase> {};
@@ -75,6 +78,8 @@ TEST_P(NebulaGpuTwin, MatchesTheCpuMarcherPerPixel) {
   RenderSettings s;
   s.method = t.method;
   s.emissionLines = t.lines;
+  s.uniformSamples = t.uniformSamples;
+  s.basisSize = t.basis;
   NebulaModel model = smallNebula(t.filters, t.stars);
   model.starModel = t.starModel;
   if (t.zones) {  // every group: seven zones, both slabs of the zones' texture
@@ -111,8 +116,11 @@ INSTANTIATE_TEST_SUITE_P(Cases, NebulaGpuTwin,
                                          TwinCase{"hubble", 3, Method::Projection, true, StarModel::Planck, true},
                                          TwinCase{"hubble", 3, Method::LightDensity, true},
                                          TwinCase{"cie1931", 5, Method::LightDensity, false},
+                                         TwinCase{"hubble", 5, Method::Projection, false, StarModel::Planck, false, 0, 6},
+                                         TwinCase{"hubble", 3, Method::LightDensity, false, StarModel::Planck, false, 0, 6},
                                          TwinCase{"hubble", 3, Method::Reference, true},
                                          TwinCase{"cie1931", 5, Method::Reference, false},
+                                         TwinCase{"hubble", 5, Method::Reference, false, StarModel::Planck, false, 7},
                                          // Analytic: the closed form (CIE 1931's broad pieces,
                                          // a Wien star: negative powers) and the series (the HST
                                          // bands' narrow pieces). One star under CIE 1931: five
@@ -127,7 +135,9 @@ INSTANTIATE_TEST_SUITE_P(Cases, NebulaGpuTwin,
                            std::replace(method.begin(), method.end(), '-', '_');
                            return method + "_" + p.param.filters + "_" + std::to_string(p.param.stars) + "_stars" +
                                   (p.param.lines ? "_lines" : "") + (p.param.starModel == StarModel::Wien ? "_wien" : "") +
-                                  (p.param.zones ? "_zones" : "");
+                                  (p.param.zones ? "_zones" : "") +
+                                  (p.param.uniformSamples ? fmt::format("_{}_samples", p.param.uniformSamples) : "") +
+                                  (p.param.basis != 4 ? fmt::format("_basis_{}", p.param.basis) : "");
                          });
 
 // The twin test can fail: a march one step shorter than the CPU's (99 of 100) is a real

@@ -6,12 +6,14 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "core/error.h"
 #include "gpu/headless_context.h"
+#include "gpu/timer_query.h"
 #include "core/atomic_file.h"
 #include "harness/log_plot.h"
 #include "harness/nebula_display.h"
@@ -207,6 +209,11 @@ void runNebulaDensity(const std::filesystem::path& scenePath, const std::filesys
 
 namespace {
 
+double median(std::vector<double> times) {
+  std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2), times.end());
+  return times[times.size() / 2];
+}
+
 // The median wall time of `repeats` calls, after one untimed call (first-use costs: the GPU's
 // shader specialisation, the CPU's caches).
 template <class F>
@@ -218,8 +225,24 @@ double medianMs(int repeats, F&& f) {
     f();
     times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
-  std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2), times.end());
-  return times[times.size() / 2];
+  return median(std::move(times));
+}
+
+// The same for the GPU's work of a march and its finish, by timestamps around them: what a frame
+// spends on the nebula, without reading the image back (16 MB at 1024², which a frame never does
+// and which the GPU's bus, not its march, would time).
+double medianGpuMs(gpu::GpuTimer& timer, int repeats, nebula::NebulaGpuMarcher& marcher, const nebula::RenderSettings& s) {
+  auto once = [&] {
+    timer.beginFrame();
+    marcher.march(s);
+    marcher.finishOnGpu();
+    timer.endFrame();
+    return timer.resolve().front().second;  // "frame": beginFrame to endFrame
+  };
+  once();
+  std::vector<double> times;
+  for (int r = 0; r < repeats; ++r) times.push_back(once());
+  return median(std::move(times));
 }
 
 }  // namespace
@@ -229,9 +252,10 @@ void runNebulaBench(const NebulaBenchOptions& o) {
   if (repeats < 1) throw Error("nebula bench: --repeats must be ≥ 1");
   if (o.size < 1 || o.size > 8192) throw Error("nebula bench: --size must be 1 to 8192 pixels");
   gpu::HeadlessContext context;
+  gpu::GpuTimer timer;
   fmt::print("nebula bench: {0}x{0}, 100 steps, 32^3 cloud, Hubble palette, no lines; median of {1} runs (ms); "
-             "{2}GPU: {3}\n", o.size, repeats, o.cpu ? "CPU one thread; " : "",
-             reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+             "{2}GPU: {3}, march + finish by timestamps (no read-back); filter edit: wall, refilter + finish\n",
+             o.size, repeats, o.cpu ? "CPU one thread; " : "", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   fmt::print("{:>5} {:>14} {:>14} {:>14} {:>14} {:>16} {:>15} {:>15} {:>16}\n", "stars", "CPU ref (21λ)", "CPU projection",
              "GPU ref (21λ)", "GPU projection", "GPU light-dens.", "GPU ref/proj", "GPU ref/l-d", "GPU filter edit");
   for (int stars : {1, 6, 32}) {
@@ -248,12 +272,12 @@ void runNebulaBench(const NebulaBenchOptions& o) {
     s.uniformSamples = 7;  // 7 λ per channel, 21 a step: the paper's baseline (bench/nebula_bench.cpp)
     const double none = std::numeric_limits<double>::quiet_NaN();
     double reference = o.cpu ? medianMs(repeats, [&] { renderer.render(s); }) : none;
-    double gpuReference = medianMs(repeats, [&] { marcher.render(s); });
+    double gpuReference = medianGpuMs(timer, repeats, marcher, s);
     s.method = nebula::Method::Projection;
     double cpuProjection = o.cpu ? medianMs(repeats, [&] { renderer.render(s); }) : none;
-    double gpuProjection = medianMs(repeats, [&] { marcher.render(s); });
+    double gpuProjection = medianGpuMs(timer, repeats, marcher, s);
     s.method = nebula::Method::LightDensity;
-    double gpuLight = medianMs(repeats, [&] { marcher.render(s); });
+    double gpuLight = medianGpuMs(timer, repeats, marcher, s);
     // A passband moved after a projection march: refiltering the volume (CPU) and finishing the
     // same moments through the new weights (GPU), no march; alternately ±5 nm so each is an edit.
     s.method = nebula::Method::Projection;
@@ -265,7 +289,8 @@ void runNebulaBench(const NebulaBenchOptions& o) {
       auto next = std::make_unique<nebula::NebulaRenderer>(renderer, renderer.model().filters, bands);
       if (!marcher.refilter(*next)) throw Error("nebula bench: a projection march did not stand a filter edit");
       edited = std::move(next);  // after the marcher let go of the last one
-      marcher.finish();
+      marcher.finishOnGpu();
+      glFinish();
     });
     auto cpuCell = [](double ms) { return std::isnan(ms) ? std::string("—") : fmt::format("{:.1f}", ms); };
     fmt::print("{:>5} {:>14} {:>14} {:>14.1f} {:>14.1f} {:>16.1f} {:>14.1f}x {:>14.1f}x {:>16.1f}\n", stars,

@@ -60,8 +60,9 @@ void runNebulaDensity(const std::filesystem::path& scene, const std::filesystem:
 // On benchNebulaModel (32³, 100 steps, Hubble, no lines) at size × size pixels (64 by default),
 // for 1, 6 and 32 stars: the CPU's double integration (21 λ a step, one thread) and projection
 // (one thread), unless `cpu` is false (a GPU's run at a large size, where the CPU's would take
-// minutes), and the GPU's reference, projection and light–density marches (march + finish +
-// read-back) and a filter edit, the median of `repeats`.
+// minutes), and the GPU's reference, projection and light–density marches (march + finish, GPU
+// time by timestamps) and a filter edit (wall: the CPU's refiltering and the finish), the median of
+// `repeats`.
 struct NebulaBenchOptions {
   int repeats = 5;
   int size = 64;

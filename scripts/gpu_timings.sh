@@ -29,7 +29,7 @@ if [ "$quick" = --quick ]; then
   nebula_repeats=1 nebula_size=16 width=160 height=90 frames=20 rounds=2 wavelengths=4,16
   limit_nebula=300 limit_bench=300 limit_large=300
 else
-  nebula_repeats=9 nebula_size=1024 width=1920 height=1080 frames=240 rounds=20 wavelengths=4,8,16,32,64,128
+  nebula_repeats=9 nebula_size=1024 width=1920 height=1080 frames=240 rounds=20 wavelengths=4,8,16,32,64
   limit_nebula=90 limit_bench=110 limit_large=60
 fi
 

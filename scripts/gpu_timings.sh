@@ -27,10 +27,12 @@ mkdir -p "$out" || exit 2
 
 if [ "$quick" = --quick ]; then
   nebula_repeats=1 nebula_size=16 width=160 height=90 frames=20 rounds=2 wavelengths=4,16
+  water_frames=20 water_rounds=2
   limit_nebula=300 limit_bench=300 limit_large=300
 else
   nebula_repeats=9 nebula_size=1024 width=1920 height=1080 frames=240 rounds=20 wavelengths=4,8,16,32,64
-  limit_nebula=90 limit_bench=110 limit_large=60
+  water_frames=60 water_rounds=10  # its 81-node sums: 240 frames × 20 rounds passed 60 s on an H200
+  limit_nebula=90 limit_bench=110 limit_large=90
 fi
 
 {
@@ -40,29 +42,33 @@ fi
 : >"$out/steps.txt"
 failed=0
 # step NAME LIMIT_S OUTFILE COMMAND…: COMMAND's stdout to OUTDIR/OUTFILE (through a temporary
-# file: a step cut off leaves no half-written output), its status and time to steps.txt.
+# file: a step cut off leaves no half-written output, and no earlier run's output stays to pass
+# for this one's), its status and time to steps.txt; a text output is shown too.
 step() {
   local name=$1 limit=$2 file=$3 start status
   shift 3
   echo "== $name (at most ${limit} s)" >&2
   start=$SECONDS
-  timeout "$limit" "$@" >"$out/$file.tmp"
+  rm -f "$out/$file"
+  timeout -k 10 "$limit" "$@" >"$out/$file.tmp"
   status=$?
   if [ "$status" -eq 0 ]; then mv "$out/$file.tmp" "$out/$file"; else rm -f "$out/$file.tmp"; failed=1; fi
+  case "$file" in *.txt) [ -f "$out/$file" ] && cat "$out/$file" >&2 ;; esac
   echo "$name: exit $status, $((SECONDS - start)) s" | tee -a "$out/steps.txt" >&2
 }
-sizes=(--width "$width" --height "$height" --frames "$frames" --rounds "$rounds" --warmup 3 --json)
+sizes=(--width "$width" --height "$height" --warmup 3 --json)
 
 step "issue 15: nebula marches, 64x64 (with the CPU's columns)" "$limit_nebula" nebula_64.txt \
   "$prism" nebula bench --repeats "$nebula_repeats"
 step "issue 14: spectral PRT against RGB-PRT, ${width}x${height}, 100k vertices" "$limit_bench" prt.json \
-  "$prism" bench bench/scenes/prt_terrain_100k.json "${sizes[@]}" --wavelengths 16
+  "$prism" bench bench/scenes/prt_terrain_100k.json "${sizes[@]}" --frames "$frames" --rounds "$rounds" --wavelengths 16
 step "issue 16: wavelength strategies and the wavelength count, ${width}x${height}" "$limit_bench" spheres.json \
-  "$prism" bench scenes/spheres_d65.json "${sizes[@]}" --wavelengths "$wavelengths"
+  "$prism" bench scenes/spheres_d65.json "${sizes[@]}" --frames "$frames" --rounds "$rounds" --wavelengths "$wavelengths"
 step "issue 15: nebula marches, ${nebula_size}x${nebula_size}" "$limit_large" "nebula_$nebula_size.txt" \
   "$prism" nebula bench --repeats "$nebula_repeats" --size "$nebula_size" --no-cpu
 step "PRT under water, ${width}x${height}, 100k vertices" "$limit_large" prt_water.json \
-  "$prism" bench bench/scenes/prt_terrain_100k_water.json "${sizes[@]}" --wavelengths 16
-grep -hm1 'GPU:' "$out"/nebula_*.txt >>"$out/gpu.txt" 2>/dev/null
+  "$prism" bench bench/scenes/prt_terrain_100k_water.json "${sizes[@]}" --frames "$water_frames" --rounds "$water_rounds" \
+  --wavelengths 16
+grep -m1 'GPU:' "$out/nebula_64.txt" >>"$out/gpu.txt" 2>/dev/null
 echo "wrote $out" >&2
 exit "$failed"

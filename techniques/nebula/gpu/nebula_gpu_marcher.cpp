@@ -156,6 +156,7 @@ bool NebulaGpuMarcher::refilter(const NebulaRenderer& renderer) {
   mAnalyticRanges = {};
   mAnalyticPieces = {};
   mPreIntegrated = {};
+  mNodes = {};  // the nodes' weights hold the filters
   return mMarched == Method::Projection || mMarched == Method::LightDensity;
 }
 
@@ -174,6 +175,37 @@ MarchView marchView(const NebulaCamera& cam) {
   v.width = cam.width;
   v.height = cam.height;
   return v;
+}
+
+void NebulaGpuMarcher::uploadReferenceNodes(const RenderSettings& s) {
+  const glm::ivec2 key(s.uniformSamples, s.referenceIntervals);
+  if (mNodes.chunk != 0 && mNodes.key == key) return;
+  // [(star·3 + channel)·stride + node]: (λ, weight), in chunks (nebula_march.comp)
+  NebulaRenderer::ReferenceNodes nodes = mRenderer->referenceNodes(s);
+  const std::size_t starCount = mRenderer->precomputed().model.stars.size();
+  NodeLayout layout;
+  layout.key = key;
+  std::size_t most = 0;
+  for (const auto& channel : nodes.lambdaUm) most = std::max(most, channel.size());
+  layout.chunk = most <= static_cast<std::size_t>(kNarrowNodes) ? 4 : 16;
+  if (layout.chunk == 4 && !mReferenceNarrow)
+    mReferenceNarrow.emplace(computeProgram("nebula_march.comp", "nebula march (reference, narrow)",
+                                            {{"NEBULA_REFERENCE", ""}, {"NEBULA_NODE_CHUNK", "4"}}));
+  for (int c = 0; c < 3; ++c) {
+    const int n = static_cast<int>(nodes.lambdaUm[static_cast<std::size_t>(c)].size());
+    layout.count[c] = (n + layout.chunk - 1) / layout.chunk * layout.chunk;
+    layout.stride = std::max(layout.stride, layout.count[c]);
+  }
+  // Padding: weight 0 at 1 µm (a finite e^(−x/λ) times nothing).
+  const auto stride = static_cast<std::size_t>(layout.stride);
+  std::vector<glm::vec2> packed(starCount * 3 * stride, glm::vec2(1.0f, 0.0f));
+  for (std::size_t st = 0; st < starCount; ++st)
+    for (std::size_t c = 0; c < 3; ++c)
+      for (std::size_t k = 0; k < nodes.lambdaUm[c].size(); ++k)
+        packed[(st * 3 + c) * stride + k] =
+            glm::vec2(static_cast<float>(nodes.lambdaUm[c][k]), static_cast<float>(nodes.weights[st][c][k]));
+  mReferenceNodes = bufferOf(packed, "nebula reference nodes");
+  mNodes = layout;
 }
 
 void NebulaGpuMarcher::march(const RenderSettings& s) { march(s, marchView(mRenderer->model().camera)); }
@@ -213,32 +245,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
     }
     mPreIntegrated = bufferOf(tables, "nebula pre-integration tables");
   }
-  glm::ivec3 nodeCount(0);
-  int nodeStride = 0;
-  int nodeChunk = 16;  // nebula_march.comp's NEBULA_NODE_CHUNK
-  if (reference) {  // [(star·3 + channel)·stride + node]: (λ, weight), in chunks (nebula_march.comp)
-    NebulaRenderer::ReferenceNodes nodes = mRenderer->referenceNodes(s);
-    std::size_t most = 0;
-    for (const auto& channel : nodes.lambdaUm) most = std::max(most, channel.size());
-    if (most <= static_cast<std::size_t>(kNarrowNodes)) {
-      nodeChunk = 4;
-      if (!mReferenceNarrow)
-        mReferenceNarrow.emplace(computeProgram("nebula_march.comp", "nebula march (reference, narrow)",
-                                                {{"NEBULA_REFERENCE", ""}, {"NEBULA_NODE_CHUNK", "4"}}));
-    }
-    for (int c = 0; c < 3; ++c) {
-      nodeCount[c] = (static_cast<int>(nodes.lambdaUm[static_cast<std::size_t>(c)].size()) + nodeChunk - 1) / nodeChunk * nodeChunk;
-      nodeStride = std::max(nodeStride, nodeCount[c]);
-    }
-    // Padding: weight 0 at 1 µm (a finite e^(−x/λ) times nothing).
-    std::vector<glm::vec2> packed(m.stars.size() * 3 * static_cast<std::size_t>(nodeStride), glm::vec2(1.0f, 0.0f));
-    for (std::size_t st = 0; st < m.stars.size(); ++st)
-      for (std::size_t c = 0; c < 3; ++c)
-        for (std::size_t k = 0; k < nodes.lambdaUm[c].size(); ++k)
-          packed[(st * 3 + c) * static_cast<std::size_t>(nodeStride) + k] =
-              glm::vec2(static_cast<float>(nodes.lambdaUm[c][k]), static_cast<float>(nodes.weights[st][c][k]));
-    mReferenceNodes = bufferOf(packed, "nebula reference nodes");
-  }
+  if (reference) uploadReferenceNodes(s);
   const std::size_t pixels = static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height);
   const std::size_t momentBytes = std::max<std::size_t>(1, static_cast<std::size_t>(mCount * mCard) * pixels) * sizeof(float);
   if (mMoments.sizeBytes() != momentBytes) mMoments = gpu::Buffer({momentBytes, nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula moments"});
@@ -259,7 +266,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   mSize = {view.width, view.height};
 
   const gpu::Program& p = light            ? mLightDensity
-                          : reference      ? (nodeChunk == 4 ? *mReferenceNarrow : mReference)
+                          : reference      ? (mNodes.chunk == 4 ? *mReferenceNarrow : mReference)
                           : analytic       ? mAnalytic
                           : preIntegration ? mPreIntegration
                                            : mProjection;
@@ -281,8 +288,8 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   setIfActive(p, "uEmission", static_cast<float>(m.emission));
   p.setUniform("uCount", direct ? static_cast<int>(m.stars.size()) : mCount);
   setIfActive(p, "uCard", mCard);
-  setIfActive(p, "uNodeCount", nodeCount);
-  setIfActive(p, "uNodeStride", nodeStride);
+  setIfActive(p, "uNodeCount", mNodes.count);
+  setIfActive(p, "uNodeStride", mNodes.stride);
   setIfActive(p, "uLineCount", mLineCount);
   setIfActive(p, "uZoneCount", pre.lineZone.empty() ? 0 : pre.lineZones.width);
   if (!pre.lineZone.empty() && p.hasUniform("uLineZone[0]"))  // where the shader reads it, every element

@@ -4,7 +4,7 @@
 // (nebula_precomputed.h), uploaded once: the density grid as a 3D texture, each star's optical
 // depth per voxel (projection) or the 2D basis's light coefficients per voxel (light–density) as
 // a second one, four values a texel, and the ionisation zones (if any) as a third; the table of the basis's coefficients, stars and lines as
-// buffers; the reference's wavelength nodes and weights per march (they follow its settings); the
+// buffers; the reference's wavelength nodes and weights when its settings change; the
 // analytic method's passband pieces and pre-integration's tables when first marched.
 //   march   shaders/passes/nebula_march.comp: front to back, early termination, per pixel the
 //           moments on the basis (per star, or per 2D element) and each emission line's light
@@ -94,14 +94,24 @@ class NebulaGpuMarcher {
 
  private:
   void uploadFilters();  // the lines' responses and the finish's weights
+  // The reference's nodes and weights for these settings, unless the last upload was for them.
+  void uploadReferenceNodes(const RenderSettings& settings);
 
   const NebulaRenderer* mRenderer;
   gpu::Program mProjection, mLightDensity, mReference, mAnalytic, mPreIntegration, mFinish;
   // The reference for at most kNarrowNodes nodes a channel (the paper's baseline, 7): its node loop
-  // in chunks of 4, not 16, so that it evaluates 8 nodes a channel and not 16. Compiled at its
-  // first march.
-  static constexpr int kNarrowNodes = 16;
+  // in chunks of 4, not 16, so that it evaluates 8 nodes a channel and not 16 — and runs at most
+  // twice the loop iterations, which llvmpipe caps (nebula_march.comp). Compiled at its first march.
+  static constexpr int kNarrowNodes = 8;
   std::optional<gpu::Program> mReferenceNarrow;
+  // How mReferenceNodes is laid out, and for which settings (uniform samples, Simpson intervals):
+  // per channel, its nodes padded to a multiple of the chunk; chunk 0: none uploaded.
+  struct NodeLayout {
+    glm::ivec2 key{0};
+    glm::ivec3 count{0};
+    int stride = 0, chunk = 0;
+  };
+  NodeLayout mNodes;
   gpu::Texture3D mDensity, mStarDepth, mLightCoefficients, mZones;
   gpu::Buffer mMomentLo, mMomentHi, mBasisMatrix, mStars, mLines;
   std::vector<float> mProjectionWeightValues, mLightWeightValues;

@@ -190,6 +190,31 @@ TEST(NebulaGpu, RefiltersWithoutAnotherMarch) {
   EXPECT_FALSE(gpu.refilter(edited));
 }
 
+// The marcher keeps the reference's nodes between marches: a change of samples (narrow chunks of 4
+// to Simpson's chunks of 16 and back) or of filters must upload them again.
+TEST(NebulaGpu, TheReferenceFollowsItsSamplesAndFilters) {
+  gpu::HeadlessContext context;
+  RenderSettings s;
+  s.method = Method::Reference;
+  s.emissionLines = false;
+  const NebulaRenderer renderer(smallNebula("cie1931", 2), s);
+  const NebulaRenderer edited(renderer, "hubble", {PassbandEdit{15.0, 1.5}, PassbandEdit{-10.0, 3.0}, PassbandEdit{30.0, 0.5}});
+  NebulaGpuMarcher gpu(renderer);
+  auto expectTwin = [&](const NebulaRenderer& cpuRenderer, int samples, const char* what) {
+    s.uniformSamples = samples;
+    const NebulaImage image = gpu.render(s);
+    const NebulaImage cpu = cpuRenderer.render(s);
+    const double ratio = twinRatio(image, cpu, gpu, s.steps, directTerms(cpuRenderer, s, s.method, s.steps, 2));
+    std::printf("reference, %s: GPU against CPU, max relative %.3g, %.3g of the bound\n", what, relativeError(image, cpu), ratio);
+    EXPECT_LE(ratio, 1.0) << what;
+  };
+  expectTwin(renderer, 7, "7 samples");
+  expectTwin(renderer, 0, "then Simpson");
+  expectTwin(renderer, 5, "then 5 samples");
+  EXPECT_FALSE(gpu.refilter(edited));
+  expectTwin(edited, 5, "refiltered, 5 samples");
+}
+
 // The example nebula (scenes/nebula/nebula.json) at 64×64 against goldens rendered on llvmpipe.
 // Deterministic: another driver differs by its own float rounding, which the twin test bounds
 // per pixel by (N + G·card)·2⁻²⁴ ≈ 7e-6 times 1–3× the channel: 1e-4 of the channel (floored at

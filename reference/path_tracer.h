@@ -16,8 +16,8 @@
 // Light transport.
 // - Direct: what the rasteriser computes. At the first hit, every light (directional, point,
 //   spot: delta lights) by next-event estimation with an exact shadow ray for lights that cast
-//   shadows (point lights included, which the rasteriser cannot shadow yet: it has no cube
-//   maps); a camera ray that escapes sees the background. The only noise is the wavelengths'
+//   shadows (the rasteriser's shadow maps are PCF-soft); a camera ray that escapes sees the
+//   background. The only noise is the wavelengths'
 //   (and the pixel footprint's with the box filter).
 // - Global: paths continue by sampling the BRDF (cosine-weighted for the diffuse lobe, GGX
 //   normals for the specular one, combined by their one-sample mixture pdf), next-event

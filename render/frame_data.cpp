@@ -127,8 +127,10 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
     g.shadowLayer = -1;
     g.shadowFromWorld = glm::mat4(1.0f);
     for (const ShadowView& view : shadows) {
-      if (view.lightIndex != static_cast<int>(i)) continue;
+      if (view.lightIndex != static_cast<int>(i) || g.shadowLayer >= 0) continue;  // a point light's first face
       g.shadowLayer = view.layer;
+      g.shadowNearM = view.nearM;
+      g.shadowFarM = view.farM;
       g.shadowNormalOffsetM = view.normalOffsetM;
       g.shadowDepthBias = view.depthBias;
       g.shadowFromWorld = view.viewProjection;

@@ -119,6 +119,8 @@ INSTANTIATE_TEST_SUITE_P(
                     ParityCase{"spheres_blue_led.json", RenderMode::Naive},
                     ParityCase{"spheres_led.json", RenderMode::Rgb},
                     ParityCase{"conductors_f11.json", RenderMode::JakobHanika},
+                    // A point light's six shadow faces (render/tests: a fixture, not an example).
+                    ParityCase{PRISM_RENDER_TEST_DIR "/point_lamp.json", RenderMode::JakobHanika},
                     ParityCase{"cook_torrance_sweep.json", RenderMode::JakobHanika},
                     ParityCase{"textured_gltf.json", RenderMode::JakobHanika},
                     ParityCase{"reef.json", RenderMode::JakobHanika},  // under water

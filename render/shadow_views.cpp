@@ -5,6 +5,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/shared_shading.h"
+
 namespace prism::render {
 namespace {
 
@@ -24,7 +26,28 @@ std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize) {
   std::vector<ShadowView> views;
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
-    if (!light.castsShadows || light.type == LightType::Point) continue;
+    if (!light.castsShadows) continue;
+    if (light.type == LightType::Point) {
+      // The depth range spans the scene's bounding sphere; normal offset and bias as a spot's, the
+      // texel taken at the farther of the scene's centre and its radius (a light inside the scene
+      // lights surfaces about a radius away).
+      float distance = glm::length(centre - light.position);
+      float nearPlane = std::max(0.05f, distance - radius);
+      float farPlane = std::max(nearPlane * 2.0f, distance + radius);
+      float texelM = 2.0f * std::max(distance, radius) / (shared::pointShadowScale(mapSize) * size);
+      for (int face = 0; face < 6; ++face) {
+        ShadowView view;
+        view.lightIndex = static_cast<int>(i);
+        view.layer = static_cast<int>(views.size());
+        view.viewProjection = shared::pointShadowFromWorld(light.position, face, nearPlane, farPlane, mapSize);
+        view.normalOffsetM = 1.5f * texelM;
+        view.depthBias = 5e-5f;
+        view.nearM = nearPlane;
+        view.farM = farPlane;
+        views.push_back(view);
+      }
+      continue;
+    }
     ShadowView view;
     view.lightIndex = static_cast<int>(i);
     view.layer = static_cast<int>(views.size());

@@ -1,7 +1,7 @@
 // Which lights get a shadow map and how each sees the scene: directional lights an orthographic
 // view fitted around the scene's bounding sphere, spot lights a perspective view over their
-// outer cone. Point lights cast no shadows (no cube maps yet). One layer per view in the shadow
-// map array, in light order.
+// outer cone, point lights six perspective faces (shared::pointShadowFromWorld, a cube map's
+// faces as layers of the same array). One layer per view in the shadow map array, in light order.
 #pragma once
 
 #include <vector>
@@ -18,6 +18,8 @@ struct ShadowView {
   glm::mat4 viewProjection{1.0f};  // world → light clip space
   float normalOffsetM = 0.0f;      // receivers are offset along their normal by this much
   float depthBias = 0.0f;          // in the map's [0, 1] depth
+  float nearM = 0.0f;              // point lights: the faces' depth range
+  float farM = 0.0f;
 };
 
 std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize);

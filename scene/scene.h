@@ -46,7 +46,7 @@ struct Light {
   Spectrum spd;                                 // photometrically normalised (see above)
   std::string spdLabel;                         // what the file said, e.g. "D65", "blackbody:2700"
   float intensity = 1.0f;                       // lux (directional) or candela (point, spot)
-  bool castsShadows = true;                     // directional and spot only
+  bool castsShadows = true;                     // a point light six shadow maps, the others one
   // The technique that put it in the scene (the sky's sun: "atmosphere"; techniques/
   // technique_section.h), kept in step with its section by applyTechniqueLights; empty for the
   // scene file's own lights.

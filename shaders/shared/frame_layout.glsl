@@ -49,13 +49,13 @@ struct GpuLight {
   float intensity;         // lux (directional) or candela (point, spot)
   float cosInner;          // spot: cosine of the inner half-angle
   float cosOuter;          // spot: cosine of the outer half-angle
-  int shadowLayer;         // layer of the shadow-map array; < 0: casts none
+  int shadowLayer;         // layer of the shadow-map array (point: the first of six); < 0: none
   float shadowNormalOffsetM;
   float shadowDepthBias;
+  float shadowNearM;       // point: its six faces' depth range (pointShadowFromWorld)
+  float shadowFarM;
   float pad0;
-  float pad1;
-  float pad2;
-  mat4 shadowFromWorld;    // world → the light's clip space
+  mat4 shadowFromWorld;    // world → the light's clip space (directional, spot)
 };
 
 struct GpuMaterial {

@@ -70,7 +70,13 @@ PRISM_INLINE float shadowVisibility(IN(GpuLight) light, IN(vec3) position, IN(ve
   int layer = light.shadowLayer;
   if (layer < 0) return 1.0f;
   PRISM_PRECISE vec3 offsetPosition = position + normal * light.shadowNormalOffsetM;
-  vec4 clip = transformPoint(light.shadowFromWorld, offsetPosition);
+  mat4 fromWorld = light.shadowFromWorld;
+  if (light.type == kLightPoint) {
+    int face = pointShadowFace(offsetPosition - light.positionW);
+    layer += face;
+    fromWorld = pointShadowFromWorld(light.positionW, face, light.shadowNearM, light.shadowFarM, size);
+  }
+  vec4 clip = transformPoint(fromWorld, offsetPosition);
   ShadowFootprint f = shadowFootprint(clip, size);
   if (!f.inside) return 1.0f;
   float visible = 0.0f;

@@ -39,6 +39,38 @@ PRISM_INLINE float shadowTapWeight(int i, float frac) {
   return 1.0f / 3.0f;
 }
 
+// Point lights: six perspective faces, a layer each from the light's first, looking along +x, −x,
+// +y, −y, +z, −z; a point is looked up in the face of its direction's largest component. Each
+// face sees a little more than its 90° (four texels a side), so that the 4×4 PCF footprint of a
+// point on a seam stays inside the face. The shadow pass renders with these very matrices.
+PRISM_INLINE int pointShadowFace(IN(vec3) fromLight) {
+  vec3 a = abs(fromLight);
+  int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+  return 2 * axis + (fromLight[axis] >= 0.0f ? 0 : 1);
+}
+
+// The faces' 1 / tan(half-angle): four texels of margin on each side of the 90°.
+PRISM_INLINE float pointShadowScale(int size) { return 1.0f - 8.0f / float(size); }
+
+// World → face's clip space: the view basis (right r, up u, back z = −forward) and the perspective
+// of a square frustum of half-width 1/scale, depth range [nearM, farM], as lookAt and perspective
+// would build them.
+PRISM_INLINE mat4 pointShadowFromWorld(IN(vec3) lightPosition, int face, float nearM, float farM, int size) {
+  int axis = face / 2;
+  vec3 forward = vec3(0.0f);
+  forward[axis] = face % 2 == 0 ? 1.0f : -1.0f;
+  vec3 u = axis == 1 ? vec3(0.0f, 0.0f, 1.0f) : vec3(0.0f, 1.0f, 0.0f);
+  vec3 z = -forward;
+  vec3 r = cross(u, z);
+  PRISM_PRECISE float scale = pointShadowScale(size);
+  PRISM_PRECISE float a = -(farM + nearM) / (farM - nearM);
+  PRISM_PRECISE float b = -2.0f * farM * nearM / (farM - nearM);
+  PRISM_PRECISE float tz = b - a * dot(z, lightPosition);
+  return mat4(vec4(scale * r.x, scale * u.x, a * z.x, forward.x), vec4(scale * r.y, scale * u.y, a * z.y, forward.y),
+              vec4(scale * r.z, scale * u.z, a * z.z, forward.z),
+              vec4(-scale * dot(r, lightPosition), -scale * dot(u, lightPosition), tz, -dot(forward, lightPosition)));
+}
+
 // 1 when the receiver (with its bias) is no farther from the light than the stored occluder.
 PRISM_INLINE float shadowTest(float storedDepth, float receiverDepth, float bias) {
   return receiverDepth - bias <= storedDepth ? 1.0f : 0.0f;

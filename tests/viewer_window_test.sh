@@ -5,7 +5,9 @@
 # - the left view's tristimulus (EXR) in the two modes differ by the renderer's own measure;
 # - the split view's heat map compares the two modes and finds them apart;
 # - under the spectral sky, moving the sun (the sky panel's setting) changes the view;
-# - in the nebula scene, the palette changes the view and the reference mode does not.
+# - in the nebula scene, the palette changes the view and the reference mode does not;
+# - a point light's shadows and position, set by the script (the lights panel's controls),
+#   change the view.
 # Usage: viewer_window_test.sh PRISM SCENES_DIR SCRATCH_DIR
 set -euo pipefail
 prism=$1 scenes=$2 scratch=$3
@@ -88,3 +90,25 @@ palette=$(mean "$scratch/nebula_hubble.exr" "$scratch/nebula_natural.exr")
 method=$(mean "$scratch/nebula_natural.exr" "$scratch/nebula_reference.exr")
 echo "nebula, Hubble palette vs natural colour: mean ΔE00 $palette; projection vs reference: mean ΔE00 $method"
 [ -n "$palette" ] && [ -n "$method" ] && awk -v p="$palette" -v m="$method" 'BEGIN { exit !(p > 3.0 && m < 0.5) }'
+
+# A point light alone (the sun at 0 lux) brought near the spheres: its shadows turned on, then the
+# light moved (the conductors' point light has "shadows": false in the scene file).
+cat >"$scratch/lights_script" <<SCRIPT
+set mode jakob-hanika
+set light.0.intensity 0
+set light.1.position -1,1.5,1.5
+frames 1
+screenshot $scratch/lamp_unshadowed.exr
+set light.1.shadows on
+frames 1
+screenshot $scratch/lamp_shadowed.exr
+set light.1.position 1.5,1.5,1.5
+frames 1
+screenshot $scratch/lamp_moved.exr
+SCRIPT
+xvfb-run -a -s "-screen 0 1024x768x24" "$prism" view "$scenes/conductors_d65.json" --width 320 --height 180 \
+  --script "$scratch/lights_script"
+shadowed=$(share "$scratch/lamp_unshadowed.exr" "$scratch/lamp_shadowed.exr")
+moved=$(share "$scratch/lamp_shadowed.exr" "$scratch/lamp_moved.exr")
+echo "conductors, the point light's shadows on: $shadowed % above ΔE00 1; the light moved: $moved %"
+[ -n "$shadowed" ] && [ -n "$moved" ] && awk -v s="$shadowed" -v m="$moved" 'BEGIN { exit !(s > 1.0 && m > 1.0) }'

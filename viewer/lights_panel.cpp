@@ -1,5 +1,6 @@
 // The lights panel: for each light its SPD (a named illuminant, a blackbody, an LED or a CSV
-// file), its intensity and, unless it is a point light, its direction as azimuth and elevation.
+// file), its intensity, whether it casts shadows, its position (point and spot lights) and,
+// unless it is a point light, its direction as azimuth and elevation.
 #include <imgui.h>
 
 #include <algorithm>
@@ -71,6 +72,10 @@ class LightsPanel final : public Panel {
     }
     if (ImGui::SliderFloat("intensity", &light.intensity, 1.0f, 200000.0f, "%.0f", ImGuiSliderFlags_Logarithmic)) {
       changed = true;
+    }
+    changed |= ImGui::Checkbox("casts shadows", &light.castsShadows);
+    if (light.type != LightType::Directional) {
+      changed |= ImGui::DragFloat3("position m", &light.position.x, 0.05f, -1000.0f, 1000.0f, "%.2f");
     }
     if (light.type != LightType::Point) {
       glm::vec3 d = glm::normalize(light.direction);

@@ -12,7 +12,7 @@
 
 #include "core/error.h"
 #include "render/setting_keys.h"
-#include "viewer/light_spectrum.h"
+#include "viewer/scene_settings.h"
 #include "viewer/soak.h"
 #include "viewer/technique_settings.h"
 #include "viewer/viewer_settings.h"
@@ -40,47 +40,6 @@ std::vector<ScriptLine> readScript(const std::filesystem::path& path) {
   return lines;
 }
 
-glm::vec3 parseVec3(const std::string& what, const std::string& text) {
-  glm::vec3 v;
-  std::stringstream in(text);
-  std::string part;
-  for (int i = 0; i < 3; ++i) {
-    if (!std::getline(in, part, ',')) throw Error(fmt::format("{}: expected X,Y,Z, got \"{}\"", what, excerpt(text)));
-    v[i] = render::parseFloat(what, part);
-  }
-  return v;
-}
-
-// light.N.spd NAME, light.N.intensity X, light.N.direction X,Y,Z (parts: light, N, what).
-void setLightKey(Scene& scene, const std::string& key, const std::vector<std::string>& parts,
-                 const std::string& value) {
-  if (scene.lights.empty()) throw Error(fmt::format("{}: the scene has no lights", excerpt(key)));
-  auto i = static_cast<std::size_t>(
-      render::parseInteger("light index", parts[1], 0, static_cast<long>(scene.lights.size()) - 1));
-  Light& light = scene.lights[i];
-  if (parts[2] == "spd") setLightSpd(light, value);
-  else if (parts[2] == "intensity") light.intensity = std::max(0.0f, render::parseFloat(key, value));
-  else if (parts[2] == "direction") {
-    glm::vec3 d = parseVec3(key, value);
-    if (!(glm::length(d) > 0.0f)) throw Error(fmt::format("{}: expected a non-zero direction", excerpt(key)));
-    light.direction = glm::normalize(d);
-  } else {
-    throw Error(fmt::format("unknown setting \"{}\" (light.N.spd, intensity, direction)", excerpt(key)));
-  }
-}
-
-// material.NAME.base-colour R,G,B, material.NAME.roughness X, material.NAME.metallic X.
-void setMaterialKey(Scene& scene, const std::string& key, const std::vector<std::string>& parts,
-                    const std::string& value) {
-  auto it = std::find_if(scene.materials.begin(), scene.materials.end(),
-                         [&](const Material& m) { return m.name == parts[1]; });
-  if (it == scene.materials.end()) throw Error(fmt::format("{}: no material \"{}\"", excerpt(key), excerpt(parts[1])));
-  if (parts[2] == "base-colour") it->baseColour = glm::clamp(parseVec3(key, value), glm::vec3(0.0f), glm::vec3(1.0f));
-  else if (parts[2] == "roughness") it->roughness = std::clamp(render::parseFloat(key, value), 0.0f, 1.0f);
-  else if (parts[2] == "metallic") it->metallic = std::clamp(render::parseFloat(key, value), 0.0f, 1.0f);
-  else throw Error(fmt::format("unknown setting \"{}\" (material.NAME.base-colour, roughness, metallic)", excerpt(key)));
-}
-
 void set(Viewer& viewer, const std::string& key, const std::string& value) {
   Changes& changes = viewer.changes();
   if (applyViewSetting(viewer.view(), key, value)) {
@@ -99,16 +58,7 @@ void set(Viewer& viewer, const std::string& key, const std::string& value) {
       return;
     }
   }
-  std::vector<std::string> parts;
-  std::stringstream in(key);
-  for (std::string p; std::getline(in, p, '.');) parts.push_back(p);
-  if (parts.size() == 3 && parts[0] == "light") {
-    setLightKey(scene, key, parts, value);
-    changes.scene = true;
-    return;
-  }
-  if (parts.size() == 3 && parts[0] == "material") {
-    setMaterialKey(scene, key, parts, value);
+  if (applySceneSetting(scene, key, value)) {
     changes.scene = true;
     return;
   }

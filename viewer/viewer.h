@@ -8,6 +8,7 @@
 //   set KEY VALUE        a frame key of viewer_settings.h for the left (or only) view,
 //                        right.KEY for the right one, or: split on|off, heat-map on|off, fov DEG,
 //                        light.N.spd NAME, light.N.intensity X, light.N.direction X,Y,Z,
+//                        light.N.position X,Y,Z (point, spot), light.N.shadows on|off,
 //                        material.NAME.base-colour R,G,B, material.NAME.roughness X,
 //                        material.NAME.metallic X, water.type T, water.depth M, sky.*,
 //                        prt.mode M, prt.basis N, prt.illuminant NAME, prt.rotation DEG

@@ -1,0 +1,68 @@
+#include "viewer/scene_settings.h"
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+
+namespace prism::viewer {
+namespace {
+
+Scene twoLights() {
+  Scene scene;
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = {0.0f, -1.0f, 0.0f};
+  Light lamp;
+  lamp.type = LightType::Point;
+  lamp.position = {0.0f, 2.0f, 0.0f};
+  lamp.castsShadows = false;
+  scene.lights = {sun, lamp};
+  Material floor;
+  floor.name = "floor";
+  scene.materials = {floor};
+  return scene;
+}
+
+std::string error(Scene& scene, const std::string& key, const std::string& value) {
+  try {
+    applySceneSetting(scene, key, value);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SceneSettings, MovesAPointLightAndTurnsItsShadowsOnAndOff) {
+  Scene scene = twoLights();
+  EXPECT_TRUE(applySceneSetting(scene, "light.1.position", "1.5,2,-3"));
+  EXPECT_EQ(scene.lights[1].position, glm::vec3(1.5f, 2.0f, -3.0f));
+  EXPECT_TRUE(applySceneSetting(scene, "light.1.shadows", "on"));
+  EXPECT_TRUE(scene.lights[1].castsShadows);
+  EXPECT_TRUE(applySceneSetting(scene, "light.1.shadows", "off"));
+  EXPECT_FALSE(scene.lights[1].castsShadows);
+  EXPECT_TRUE(applySceneSetting(scene, "light.0.intensity", "250"));
+  EXPECT_EQ(scene.lights[0].intensity, 250.0f);
+  EXPECT_TRUE(applySceneSetting(scene, "material.floor.roughness", "0.3"));
+  EXPECT_EQ(scene.materials[0].roughness, 0.3f);
+}
+
+TEST(SceneSettings, OtherKeysAreNotItsOwn) {
+  Scene scene = twoLights();
+  EXPECT_FALSE(applySceneSetting(scene, "mode", "rgb"));
+  EXPECT_FALSE(applySceneSetting(scene, "sky.elevation", "30"));
+  EXPECT_FALSE(applySceneSetting(scene, "light.1", "on"));
+}
+
+TEST(SceneSettings, BadValuesAreOneLineErrorsNamingTheKey) {
+  Scene scene = twoLights();
+  EXPECT_EQ(error(scene, "light.0.position", "1,2,3"), "light.0.position: light 0 is directional: it has no position");
+  EXPECT_EQ(error(scene, "light.1.shadows", "yes"), "light.1.shadows: expected on or off, got \"yes\"");
+  EXPECT_NE(error(scene, "light.1.position", "1,2"), "");
+  EXPECT_NE(error(scene, "light.7.intensity", "1"), "");
+  EXPECT_NE(error(scene, "light.1.colour", "1"), "");
+  EXPECT_NE(error(scene, "material.wood.roughness", "1"), "");
+  EXPECT_EQ(scene.lights[1].position, glm::vec3(0.0f, 2.0f, 0.0f));  // nothing half-set
+}
+
+}  // namespace
+}  // namespace prism::viewer

@@ -13,6 +13,8 @@ set -euo pipefail
 prism=$1 scenes=$2 scratch=$3
 rm -rf "$scratch"
 mkdir -p "$scratch"
+# prism view SCENE [OPTIONS…] in a virtual screen.
+view() { xvfb-run -a -s "-screen 0 1024x768x24" "$prism" view "$@"; }
 cat >"$scratch/script" <<SCRIPT
 set mode rgb
 frames 3
@@ -35,8 +37,7 @@ save-settings $scratch/settings.json
 reload-shaders
 frames 1
 SCRIPT
-out=$(xvfb-run -a -s "-screen 0 1024x768x24" "$prism" view "$scenes/spheres_blue_led.json" --width 640 --height 400 \
-        --script "$scratch/script")
+out=$(view "$scenes/spheres_blue_led.json" --width 640 --height 400 --script "$scratch/script")
 echo "$out"
 for f in rgb.png rgb_again.png spectral.png split.png rgb.exr spectral.exr; do
   [ -s "$scratch/$f" ] || { echo "no $f" >&2; exit 1; }
@@ -66,8 +67,7 @@ set sky.elevation 30
 frames 2
 screenshot $scratch/sky_high.exr
 SCRIPT
-xvfb-run -a -s "-screen 0 1024x768x24" "$prism" view "$scenes/sunset.json" --width 480 --height 270 \
-  --script "$scratch/sky_script"
+view "$scenes/sunset.json" --width 480 --height 270 --script "$scratch/sky_script"
 sky=$(mean "$scratch/sky_low.exr" "$scratch/sky_high.exr")
 echo "sunset, sun at 3° vs 30°: mean ΔE00 $sky"
 [ -n "$sky" ] && awk -v d="$sky" 'BEGIN { exit !(d > 3.0) }'
@@ -84,8 +84,7 @@ set mode reference
 frames 1
 screenshot $scratch/nebula_reference.exr
 SCRIPT
-xvfb-run -a -s "-screen 0 1024x768x24" "$prism" view "$scenes/nebula_field.json" --width 160 --height 160 \
-  --script "$scratch/nebula_script"
+view "$scenes/nebula_field.json" --width 160 --height 160 --script "$scratch/nebula_script"
 palette=$(mean "$scratch/nebula_hubble.exr" "$scratch/nebula_natural.exr")
 method=$(mean "$scratch/nebula_natural.exr" "$scratch/nebula_reference.exr")
 echo "nebula, Hubble palette vs natural colour: mean ΔE00 $palette; projection vs reference: mean ΔE00 $method"
@@ -106,8 +105,7 @@ set light.1.position 1.5,1.5,1.5
 frames 1
 screenshot $scratch/lamp_moved.exr
 SCRIPT
-xvfb-run -a -s "-screen 0 1024x768x24" "$prism" view "$scenes/conductors_d65.json" --width 320 --height 180 \
-  --script "$scratch/lights_script"
+view "$scenes/conductors_d65.json" --width 320 --height 180 --script "$scratch/lights_script"
 shadowed=$(share "$scratch/lamp_unshadowed.exr" "$scratch/lamp_shadowed.exr")
 moved=$(share "$scratch/lamp_shadowed.exr" "$scratch/lamp_moved.exr")
 echo "conductors, the point light's shadows on: $shadowed % above ΔE00 1; the light moved: $moved %"

@@ -129,8 +129,9 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
     for (const ShadowView& view : shadows) {
       if (view.lightIndex != static_cast<int>(i) || g.shadowLayer >= 0) continue;  // a point light's first face
       g.shadowLayer = view.layer;
-      g.shadowNearM = view.nearM;
-      g.shadowFarM = view.farM;
+      g.shadowFaceScale = view.pointProjection.x;
+      g.shadowDepthA = view.pointProjection.y;
+      g.shadowDepthB = view.pointProjection.z;
       g.shadowNormalOffsetM = view.normalOffsetM;
       g.shadowDepthBias = view.depthBias;
       g.shadowFromWorld = view.viewProjection;

@@ -34,16 +34,16 @@ std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize) {
       float distance = glm::length(centre - light.position);
       float nearPlane = std::max(0.05f, distance - radius);
       float farPlane = std::max(nearPlane * 2.0f, distance + radius);
-      float texelM = 2.0f * std::max(distance, radius) / (shared::pointShadowScale(mapSize) * size);
+      const glm::vec3 projection = shared::pointShadowProjection(nearPlane, farPlane, mapSize);
+      float texelM = 2.0f * std::max(distance, radius) / (projection.x * size);
       for (int face = 0; face < 6; ++face) {
         ShadowView view;
         view.lightIndex = static_cast<int>(i);
         view.layer = static_cast<int>(views.size());
-        view.viewProjection = shared::pointShadowFromWorld(light.position, face, nearPlane, farPlane, mapSize);
+        view.viewProjection = shared::pointShadowFromWorld(light.position, face, projection);
         view.normalOffsetM = 1.5f * texelM;
         view.depthBias = 5e-5f;
-        view.nearM = nearPlane;
-        view.farM = farPlane;
+        view.pointProjection = projection;
         views.push_back(view);
       }
       continue;

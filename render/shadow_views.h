@@ -18,8 +18,7 @@ struct ShadowView {
   glm::mat4 viewProjection{1.0f};  // world → light clip space
   float normalOffsetM = 0.0f;      // receivers are offset along their normal by this much
   float depthBias = 0.0f;          // in the map's [0, 1] depth
-  float nearM = 0.0f;              // point lights: the faces' depth range
-  float farM = 0.0f;
+  glm::vec3 pointProjection{0.0f};  // point lights: shared::pointShadowProjection of the faces
 };
 
 std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize);

@@ -22,12 +22,13 @@ TEST(PointShadowFaces, AreTheViewsLookAtAndPerspectiveBuild) {
   const float nearM = 0.05f, farM = 12.0f;
   const int size = 1024;
   const glm::vec3 forward[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  const float fov = 2.0f * std::atan(1.0f / shared::pointShadowScale(size));
+  const glm::vec3 projection = shared::pointShadowProjection(nearM, farM, size);
+  const float fov = 2.0f * std::atan(1.0f / projection.x);
   for (int face = 0; face < 6; ++face) {
     const glm::vec3 up = face / 2 == 1 ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
     const glm::mat4 expected =
         glm::perspective(fov, 1.0f, nearM, farM) * glm::lookAt(lamp, lamp + forward[face], up);
-    const glm::mat4 actual = shared::pointShadowFromWorld(lamp, face, nearM, farM, size);
+    const glm::mat4 actual = shared::pointShadowFromWorld(lamp, face, projection);
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) EXPECT_NEAR(actual[c][r], expected[c][r], 1e-5f) << "face " << face;
     // Looking along its axis: a point ahead in the middle of the map.
@@ -51,7 +52,9 @@ TEST(PointShadowFaces, EveryDirectionFallsInsideItsFaceWithTheFootprintsRoom) {
       const glm::vec3 p = lamp + glm::normalize(d) * (0.2f + std::abs(normal(rng)));  // within [near, far]
       const int face = shared::pointShadowFace(p - lamp);
       const shared::ShadowFootprint f =
-          shared::shadowFootprint(shared::pointShadowFromWorld(lamp, face, 0.05f, 100.0f, size) * glm::vec4(p, 1.0f), size);
+          shared::shadowFootprint(shared::pointShadowFromWorld(lamp, face, shared::pointShadowProjection(0.05f, 100.0f, size)) *
+                                      glm::vec4(p, 1.0f),
+                                  size);
       ASSERT_TRUE(f.inside) << "size " << size << ", direction " << d.x << " " << d.y << " " << d.z;
       // The 4×4 taps from (x0, y0) need no clamping.
       EXPECT_GE(f.x0, 0);
@@ -82,10 +85,13 @@ TEST(ShadowViews, APointLightTakesSixConsecutiveLayers) {
     const ShadowView& v = views[static_cast<std::size_t>(1 + face)];
     EXPECT_EQ(v.lightIndex, 2);
     EXPECT_EQ(v.layer, 1 + face);
-    EXPECT_GT(v.nearM, 0.0f);
-    EXPECT_GT(v.farM, v.nearM);
-    EXPECT_EQ(v.viewProjection, shared::pointShadowFromWorld(point.position, face, v.nearM, v.farM, 256));
+    EXPECT_EQ(v.pointProjection, views[1].pointProjection);
+    EXPECT_EQ(v.viewProjection, shared::pointShadowFromWorld(point.position, face, v.pointProjection));
   }
+  // The faces' depth range holds the scene: the sphere's centre is inside its face's frustum.
+  const glm::vec3 ball(0.0f, 0.5f, 0.0f);
+  const ShadowView& seen = views[static_cast<std::size_t>(1 + shared::pointShadowFace(ball - point.position))];
+  EXPECT_TRUE(shared::shadowFootprint(seen.viewProjection * glm::vec4(ball, 1.0f), 256).inside);
 }
 
 }  // namespace

@@ -52,9 +52,9 @@ struct GpuLight {
   int shadowLayer;         // layer of the shadow-map array (point: the first of six); < 0: none
   float shadowNormalOffsetM;
   float shadowDepthBias;
-  float shadowNearM;       // point: its six faces' depth range (pointShadowFromWorld)
-  float shadowFarM;
-  float pad0;
+  float shadowFaceScale;   // point: its six faces' pointShadowProjection, x, y, z
+  float shadowDepthA;
+  float shadowDepthB;
   mat4 shadowFromWorld;    // world → the light's clip space (directional, spot)
 };
 

@@ -74,7 +74,8 @@ PRISM_INLINE float shadowVisibility(IN(GpuLight) light, IN(vec3) position, IN(ve
   if (light.type == kLightPoint) {
     int face = pointShadowFace(offsetPosition - light.positionW);
     layer += face;
-    fromWorld = pointShadowFromWorld(light.positionW, face, light.shadowNearM, light.shadowFarM, size);
+    fromWorld = pointShadowFromWorld(light.positionW, face,
+                                     vec3(light.shadowFaceScale, light.shadowDepthA, light.shadowDepthB));
   }
   vec4 clip = transformPoint(fromWorld, offsetPosition);
   ShadowFootprint f = shadowFootprint(clip, size);

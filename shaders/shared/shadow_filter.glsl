@@ -49,23 +49,24 @@ PRISM_INLINE int pointShadowFace(IN(vec3) fromLight) {
   return 2 * axis + (fromLight[axis] >= 0.0f ? 0 : 1);
 }
 
-// The faces' 1 / tan(half-angle): four texels of margin on each side of the 90°.
-PRISM_INLINE float pointShadowScale(int size) { return 1.0f - 8.0f / float(size); }
+// A light's projection for its six faces, made once per light (the CPU's frame data): x the faces'
+// 1 / tan(half-angle), four texels of margin on each side of the 90°; y and z the perspective's
+// depth terms for the range [nearM, farM].
+PRISM_INLINE vec3 pointShadowProjection(float nearM, float farM, int size) {
+  return vec3(1.0f - 8.0f / float(size), -(farM + nearM) / (farM - nearM), -2.0f * farM * nearM / (farM - nearM));
+}
 
 // World → face's clip space: the view basis (right r, up u, back z = −forward) and the perspective
-// of a square frustum of half-width 1/scale, depth range [nearM, farM], as lookAt and perspective
-// would build them.
-PRISM_INLINE mat4 pointShadowFromWorld(IN(vec3) lightPosition, int face, float nearM, float farM, int size) {
+// of a square frustum of half-width 1/projection.x, as lookAt and perspective would build them.
+PRISM_INLINE mat4 pointShadowFromWorld(IN(vec3) lightPosition, int face, IN(vec3) projection) {
   int axis = face / 2;
   vec3 forward = vec3(0.0f);
   forward[axis] = face % 2 == 0 ? 1.0f : -1.0f;
   vec3 u = axis == 1 ? vec3(0.0f, 0.0f, 1.0f) : vec3(0.0f, 1.0f, 0.0f);
   vec3 z = -forward;
   vec3 r = cross(u, z);
-  PRISM_PRECISE float scale = pointShadowScale(size);
-  PRISM_PRECISE float a = -(farM + nearM) / (farM - nearM);
-  PRISM_PRECISE float b = -2.0f * farM * nearM / (farM - nearM);
-  PRISM_PRECISE float tz = b - a * dot(z, lightPosition);
+  float scale = projection.x, a = projection.y;
+  PRISM_PRECISE float tz = projection.z - a * dot(z, lightPosition);
   return mat4(vec4(scale * r.x, scale * u.x, a * z.x, forward.x), vec4(scale * r.y, scale * u.y, a * z.y, forward.y),
               vec4(scale * r.z, scale * u.z, a * z.z, forward.z),
               vec4(-scale * dot(r, lightPosition), -scale * dot(u, lightPosition), tz, -dot(forward, lightPosition)));

@@ -15,6 +15,18 @@ glm::vec3 upFor(const glm::vec3& direction) {
   return std::abs(direction.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
+// A perspective view's depth range from a light `distance` away from the centre of the scene's
+// bounding sphere: the sphere, from no nearer than 5 cm.
+struct DepthRange {
+  float nearM, farM;
+};
+DepthRange depthRange(float distance, float radius) {
+  const float nearM = std::max(0.05f, distance - radius);
+  return {nearM, std::max(nearM * 2.0f, distance + radius)};
+}
+
+constexpr float kPerspectiveDepthBias = 5e-5f;  // in the map's [0, 1] depth
+
 }  // namespace
 
 std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize) {
@@ -28,13 +40,11 @@ std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize) {
     const Light& light = scene.lights[i];
     if (!light.castsShadows) continue;
     if (light.type == LightType::Point) {
-      // The depth range spans the scene's bounding sphere; normal offset and bias as a spot's, the
-      // texel taken at the farther of the scene's centre and its radius (a light inside the scene
+      // Depth range, normal offset and bias as a spot's, the texel taken at the farther of the scene's centre and its radius (a light inside the scene
       // lights surfaces about a radius away).
       float distance = glm::length(centre - light.position);
-      float nearPlane = std::max(0.05f, distance - radius);
-      float farPlane = std::max(nearPlane * 2.0f, distance + radius);
-      const glm::vec3 projection = shared::pointShadowProjection(nearPlane, farPlane, mapSize);
+      const DepthRange range = depthRange(distance, radius);
+      const glm::vec3 projection = shared::pointShadowProjection(range.nearM, range.farM, mapSize);
       float texelM = 2.0f * std::max(distance, radius) / (projection.x * size);
       for (int face = 0; face < 6; ++face) {
         ShadowView view;
@@ -42,7 +52,7 @@ std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize) {
         view.layer = static_cast<int>(views.size());
         view.viewProjection = shared::pointShadowFromWorld(light.position, face, projection);
         view.normalOffsetM = 1.5f * texelM;
-        view.depthBias = 5e-5f;
+        view.depthBias = kPerspectiveDepthBias;
         view.pointProjection = projection;
         views.push_back(view);
       }
@@ -62,16 +72,15 @@ std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize) {
       view.depthBias = 1.0f / size;  // one texel's width of depth: the range is 2·radius deep
     } else {
       float distance = glm::length(centre - light.position);
-      float nearPlane = std::max(0.05f, distance - radius);
-      float farPlane = std::max(nearPlane * 2.0f, distance + radius);
+      const DepthRange range = depthRange(distance, radius);
       glm::mat4 lightView =
           glm::lookAt(light.position, light.position + direction, upFor(direction));
       float fov = 2.0f * glm::radians(std::min(light.outerConeDeg + 2.0f, 89.0f));
-      glm::mat4 projection = glm::perspective(fov, 1.0f, nearPlane, farPlane);
+      glm::mat4 projection = glm::perspective(fov, 1.0f, range.nearM, range.farM);
       view.viewProjection = projection * lightView;
       float texelM = 2.0f * distance * std::tan(0.5f * fov) / size;
       view.normalOffsetM = 1.5f * texelM;
-      view.depthBias = 5e-5f;
+      view.depthBias = kPerspectiveDepthBias;
     }
     views.push_back(view);
   }

@@ -13,6 +13,10 @@
 namespace prism::app {
 
 void runMerge(const MergeOptions& o) {
+  for (const std::filesystem::path& part : o.parts) {
+    requireOtherFile(o.output, part, "a part it merges");
+    requireOtherFile(o.variance, part, "a part it merges");
+  }
   if (!o.parts.empty() && isTablePart(o.parts.front())) {
     if (!o.variance.empty()) throw Error("--variance: parts of an upsampling table have none");
     requireWritable(o.output);

@@ -10,8 +10,21 @@
 #include "core/error.h"
 
 namespace prism {
+namespace {
+
+// A folder, device, pipe or socket where the file would go: the rename would replace it.
+void requireNoOtherKindOfFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  const std::filesystem::file_status s = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(s)) throw Error(path.string() + ": is a folder");
+  if (std::filesystem::exists(s) && !std::filesystem::is_regular_file(s))
+    throw Error(path.string() + ": is not a plain file (a device, pipe or socket); Prism writes only plain files");
+}
+
+}  // namespace
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
+  requireNoOtherKindOfFile(path);
   std::error_code ec;
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
   if (ec) throw Error(path.string() + ": cannot create folder: " + ec.message());
@@ -32,8 +45,8 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
 }
 
 void requireWritable(const std::filesystem::path& path) {
+  requireNoOtherKindOfFile(path);
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(path.string() + ": is a folder");
   std::filesystem::path folder = std::filesystem::absolute(path, ec).parent_path();
   while (!std::filesystem::exists(folder, ec) && folder.has_relative_path()) folder = folder.parent_path();
   if (!std::filesystem::is_directory(folder, ec))
@@ -43,6 +56,21 @@ void requireWritable(const std::filesystem::path& path) {
   if (!f) throw Error(path.string() + ": cannot write: " + std::strerror(errno));
   std::fclose(f);
   std::filesystem::remove(probe, ec);
+}
+
+void requireOtherFile(const std::filesystem::path& output, const std::filesystem::path& other,
+                      std::string_view role) {
+  if (output.empty() || other.empty()) return;
+  std::error_code a, b;
+  bool same = false;
+  if (std::filesystem::exists(output, a) && std::filesystem::exists(other, b)) {
+    same = std::filesystem::equivalent(output, other, a);
+  } else {
+    const std::filesystem::path x = std::filesystem::weakly_canonical(std::filesystem::absolute(output), a);
+    const std::filesystem::path y = std::filesystem::weakly_canonical(std::filesystem::absolute(other), b);
+    same = !a && !b && x == y;
+  }
+  if (same) throw Error(output.string() + ": is also " + std::string(role) + "; write it to another file");
 }
 
 }  // namespace prism

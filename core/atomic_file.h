@@ -7,14 +7,21 @@
 
 namespace prism {
 
-// Creates missing parent folders. Error naming the path when anything fails; the temporary
-// file is removed then.
+// Creates missing parent folders. Error naming the path when anything fails, or when a folder,
+// device, pipe or socket is there (never replaced); the temporary file is removed then.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
 // Before long work whose result goes to `path` (a table, a render): Error "PATH: cannot write:
 // why" (or "PATH: is a folder") unless a file can be created where it goes — in its folder, or
 // in the nearest existing folder above when folders are still to be made (made by
-// writeFileAtomically, not here). Leaves nothing behind.
+// writeFileAtomically, not here); "PATH: is not a plain file" for a device, pipe or socket, which
+// neither function replaces. Leaves nothing behind.
 void requireWritable(const std::filesystem::path& path);
+
+// Before writing `output`: Error "OUTPUT: is also ROLE; write it to another file" when it names
+// the same file as `other` (an input the command reads, or another of its outputs), through
+// links and `..` too. An empty `other` is none.
+void requireOtherFile(const std::filesystem::path& output, const std::filesystem::path& other,
+                      std::string_view role);
 
 }  // namespace prism

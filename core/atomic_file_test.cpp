@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <fstream>
 #include <sstream>
 
@@ -61,6 +63,57 @@ TEST(RequireWritable, RefusesAFolderAFileAsAFolderAndAPlaceWithoutFiles) {
   }
   // /proc takes no new files, even from root.
   EXPECT_THROW(requireWritable("/proc/prism-out.png"), Error);
+}
+
+TEST(AtomicFile, APipeOrDeviceWhereTheFileGoesIsRefusedAndKept) {
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "atomic_special";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path fifo = dir / "out.exr";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string expected = fifo.string() + ": is not a plain file (a device, pipe or socket); Prism writes only plain files";
+  for (auto write : {+[](const std::filesystem::path& p) { writeFileAtomically(p, "x"); },
+                     +[](const std::filesystem::path& p) { requireWritable(p); }}) {
+    try {
+      write(fifo);
+      ADD_FAILURE() << "a pipe was taken for a file";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), expected);
+    }
+    EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  }
+  EXPECT_THROW(requireWritable("/dev/null"), Error);  // a device, even one that takes writes
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);
+}
+
+TEST(RequireOtherFile, AnOutputThatIsAnInputOrAnotherOutputIsAnError) {
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "atomic_other_file";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "sub");
+  writeFileAtomically(dir / "in.png", "input");
+  std::filesystem::create_symlink(dir / "in.png", dir / "link.png");
+  auto errorOf = [](const std::filesystem::path& out, const std::filesystem::path& other) {
+    try {
+      requireOtherFile(out, other, "the reference image");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::filesystem::path viaDots = dir / "sub" / ".." / "in.png";
+  EXPECT_EQ(errorOf(viaDots, dir / "in.png"),
+            viaDots.string() + ": is also the reference image; write it to another file");
+  EXPECT_NE(errorOf(dir / "link.png", dir / "in.png"), "");              // through a link
+  EXPECT_NE(errorOf(dir / "new.exr", dir / "sub" / ".." / "new.exr"), "");  // two outputs, neither made yet
+  EXPECT_EQ(errorOf(dir / "out.png", dir / "in.png"), "");
+  EXPECT_EQ(errorOf(dir / "new.exr", dir / "new_variance.exr"), "");
+  EXPECT_EQ(errorOf(dir / "out.png", ""), "");
+  const std::filesystem::path here = std::filesystem::current_path();
+  std::filesystem::current_path(dir);
+  EXPECT_NE(errorOf("v.exr", "./v.exr"), "");  // relative, neither there yet
+  std::filesystem::current_path(here);
+  EXPECT_EQ(slurp(dir / "in.png"), "input");
 }
 
 }  // namespace

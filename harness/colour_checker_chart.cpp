@@ -6,6 +6,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "core/error.h"
 #include "imaging/png_file.h"
 #include "spectral/colour_checker.h"
 #include "spectral/colour_space.h"
@@ -68,6 +69,8 @@ std::vector<std::vector<ChartPatch>> writeColourCheckerChart(const DemoOptions& 
 }
 
 void runDemo(const DemoOptions& options) {
+  if (options.output.extension() != ".png")
+    throw Error(fmt::format("{}: the chart is written as a .png file", options.output.string()));
   std::vector<std::vector<ChartPatch>> all = writeColourCheckerChart(options);
   if (options.json) {
     nlohmann::json json = nlohmann::json::object();

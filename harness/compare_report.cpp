@@ -10,7 +10,9 @@
 #include "imaging/heatmap.h"
 #include "imaging/image_difference.h"
 #include "imaging/png_file.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/json_schema.h"
 
 namespace prism::harness {
 namespace {
@@ -51,13 +53,19 @@ Loaded load(const std::filesystem::path& path, const std::optional<double>& whit
 }  // namespace
 
 void runCompare(const CompareOptions& o) {
-  if (o.white && !(*o.white > 0.0)) throw Error("--white: must be a positive luminance");
-  if (!(o.threshold >= 0.0)) throw Error("--threshold: must be ≥ 0");
-  if (!(o.scaleMax > 0.0)) throw Error("--scale-max: must be > 0");
+  const auto within = [](double v, double lo) { return v >= lo && v <= schema::kFloatInputLimit; };
+  if (o.white && !(*o.white > 0.0 && within(*o.white, 0.0)))
+    throw Error(fmt::format("--white: must be a positive luminance up to {:g}", schema::kFloatInputLimit));
+  if (!within(o.threshold, 0.0)) throw Error(fmt::format("--threshold: must be within 0–{:g}", schema::kFloatInputLimit));
+  if (!(o.scaleMax > 0.0 && within(o.scaleMax, 0.0)))
+    throw Error(fmt::format("--scale-max: must be > 0 and up to {:g}", schema::kFloatInputLimit));
   for (const auto& [option, path] : {std::pair{"--heatmap", &o.heatmap}, std::pair{"--histogram", &o.histogram}}) {
     if (!path->empty() && path->extension() != ".png")
       throw Error(fmt::format("{} {}: the picture is written as a .png file", option, path->string()));
+    requireOtherFile(*path, o.reference, "the reference image");
+    requireOtherFile(*path, o.test, "the test image");
   }
+  requireOtherFile(o.histogram, o.heatmap, "the heat map");
   Loaded reference = load(o.reference, o.white);
   Loaded test = load(o.test, o.white);
   // Both linear sides must be put into CIELAB against one white: the one they agree on, the one

@@ -118,6 +118,11 @@ void runSceneBench(const SceneBenchOptions& options) {
   if (options.wavelengths.empty()) throw Error("--wavelengths: give at least one count");
   if (options.frames < 1 || options.warmup < 0 || options.rounds < 1)
     throw Error("--frames and --rounds must be ≥ 1, --warmup ≥ 0");
+  if (!options.plot.empty()) {
+    if (options.plot.extension() != ".svg")
+      throw Error(fmt::format("--plot {}: the plot is written as an .svg file", options.plot.string()));
+    requireWritable(options.plot);
+  }
   const render::FrameSettings& settings = options.settings;
   for (int n : options.wavelengths) {
     render::FrameSettings check = settings;

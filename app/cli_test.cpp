@@ -72,6 +72,16 @@ TEST(Cli, BadDataFilesAreOneLineErrorsWithTheirPlace) {
 
 TEST(Cli, DaylightOutOfRange) { expectOneLineError("colour cct 1000", "4000–25000 K"); }
 
+TEST(Cli, ColourCommandsRefuseNumbersBeyondTheirRange) {
+  expectOneLineError("colour convert --from srgb --to rec2020 1e39,0,0", "colour convert: 1e39 is beyond ±1e+12");
+  expectOneLineError("colour delta-e --lab 50,0,0 --lab 1e300,0,0", "--lab: 1e300 is beyond ±1e+12");
+  expectOneLineError("colour delta-e --lab -50,0,0 --lab 50,0,0", "--lab: L* -50 is negative");
+  std::filesystem::path bright = writeTemp("bright_reflectance.csv", "wavelength_nm,value\n380,0.5\n700,1.5\n");
+  expectOneLineError("colour xyz --reflectance " + bright.string(), "bright_reflectance.csv:3:2: value 1.5 is outside [0, 1]");
+  std::filesystem::path headless = writeTemp("headless_reflectance.csv", "380,0.5\n700,0.5\n780,0.5\n");
+  expectOneLineError("colour xyz --reflectance " + headless.string(), "headless_reflectance.csv:1: expected a header line");
+}
+
 TEST(Cli, DeltaEPrintsTheValue) {
   Result r = run("colour delta-e --lab 50,2.6772,-79.7751 --lab 50,0,-82.7485");
   EXPECT_EQ(r.exitCode, 0);
@@ -129,11 +139,13 @@ TEST(Cli, ChartWritesTheColourChecker) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(std::filesystem::is_regular_file(out));
   EXPECT_NE(r.out.find("dark skin"), std::string::npos);
+  expectOneLineError("chart -o chart.jpg", "chart.jpg: the chart is written as a .png file");
 }
 
 TEST(Cli, LutAndUpsampleCheckTheirInput) {
   expectOneLineError("lut --gamut adobe -o x.prismlut", "unknown colour space 'adobe'");
-  expectOneLineError("lut --res 1 -o x.prismlut", "resolution must be within 2–256");
+  expectOneLineError("lut --res 1 -o x.prismlut", "resolution must be within 5–256");
+  expectOneLineError("lut --res 4 -o x.prismlut", "resolution must be within 5–256");
   expectOneLineError("upsample --rgb 0.5,0.5", "--rgb");
   expectOneLineError("upsample --rgb 0.5,0.5,0.5 --wavelengths 300:830:5", "--wavelengths");
   expectOneLineError("upsample --rgb 0.5,0.5,0.5 --wavelengths 360:830:1e-9", "at most 47001 wavelengths");
@@ -302,6 +314,12 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("reference " + scene + " -o x.exr --range 300,700", "360–830");
   expectOneLineError("reference " + scene + " -o x.exr --set lights.0.intensity=-1", "/lights/0/intensity");
   expectOneLineError("reference " + scenes + "/sunset.json -o x.exr", "does not trace the atmosphere");
+  expectOneLineError("reference " + scene + " -o v.exr --variance ./v.exr", "./v.exr: is also the image (-o)");
+  // An exposure whose display white float cannot hold (2^128 overflows) is refused before any work.
+  expectOneLineError("reference " + scene + " -o x.exr --ev 200", "exposure (EV100) 200 must be within ±50");
+  expectOneLineError("reference " + scene + " -o x.exr --ev 1e39", "--ev: 1e39 is beyond ±1e+12");
+  expectOneLineError("render " + scene + " -o x.exr --ev -60", "exposure (EV100) -60 must be within ±50");
+  expectOneLineError("render " + scene + " -o x.exr --set camera.ev100=300", "/camera/ev100");
 
   std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "compare_input";
   std::filesystem::create_directories(dir);
@@ -314,6 +332,9 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("compare " + a + " " + (dir / "b.exr").string(), "reference 4 × 3, test 5 × 3");
   expectOneLineError("compare " + a + " " + (dir / "cam.exr").string(), "camera-rgb");
   expectOneLineError("compare " + a + " " + a + " --white -1", "--white");
+  expectOneLineError("compare " + a + " " + a + " --white inf", "--white: must be a positive luminance up to 1e+12");
+  const std::string heat = (dir / "heat.png").string();
+  expectOneLineError("compare " + a + " " + a + " --heatmap " + heat + " --histogram " + heat, "is also the heat map");
   prism::imaging::writeExr(dir / "w1.exr", small, {.colour = prism::imaging::ColourMeaning::Xyz, .displayWhite = 100.0});
   prism::imaging::writeExr(dir / "w2.exr", small, {.colour = prism::imaging::ColourMeaning::Xyz, .displayWhite = 400.0});
   expectOneLineError("compare " + (dir / "w1.exr").string() + " " + (dir / "w2.exr").string(),
@@ -403,7 +424,16 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   ASSERT_EQ(errors.size(), 3u) << sweep.out;
   EXPECT_GT(errors[0].get<double>(), errors[2].get<double>()) << sweep.out;
   EXPECT_NE(slurp(dir / "sweep.svg").find("the issue's bound, 2 %"), std::string::npos);
-  expectOneLineError("nebula sweep " + tiny + " --max-basis 9", "--max-basis: 9 is not within 1..8");
+  expectOneLineError("nebula sweep " + tiny + " --max-basis 7", "--max-basis: 7 is not within 1..6");
+  expectOneLineError("nebula sweep " + tiny + " --steps 0", "nebula: steps 0 is not within 1..100000");
+  expectOneLineError("nebula render " + tiny + " -o x.exr --basis 7", "nebula: basis size 7 is not within 1..6");
+  expectOneLineError("nebula render " + tiny + " -o x.exr --steps -1", "nebula: steps -1 is not within 1..100000");
+  expectOneLineError("nebula render " + tiny + " -o x.exr --light-basis 0", "nebula: light basis size 0 is not within 1..16");
+  expectOneLineError("nebula render " + tiny + " -o x.exr --uniform-samples 1", "nebula: reference samples 1 is not within 2..1000");
+  expectOneLineError("nebula render " + tiny + " -o x.exr --reference-intervals 3", "nebula: reference intervals 3 is odd");
+  expectOneLineError("nebula basis --max-exponent inf", "max depth and max exponent within (0, 1000]");
+  expectOneLineError("nebula basis --spacing nan", "spacing within [0, max exponent]");
+  expectOneLineError("nebula basis --spacing 1.5 --count 3", "only 2 of 3 elements found");
   expectOneLineError("nebula sweep " + tiny + " --plot " + dir.string(), "is a folder");
 
   // The GPU's timings at a size of one's own, without the CPU's columns.

@@ -54,7 +54,7 @@ void colourXyz(const XyzOptions& o) {
   json out = {{"illuminant", o.illuminant}, {"observer", o.observer}};
   Spectrum reflectance = Spectrum::constant(1.0);
   if (!o.reflectanceFile.empty()) {
-    reflectance = readSpectrumCsv(o.reflectanceFile, Extrapolation::Clamp).toDense();
+    reflectance = readSpectrumCsv(o.reflectanceFile, Extrapolation::Clamp, 0.0, 1.0).toDense();
     out["reflectance"] = o.reflectanceFile;
   } else if (!o.rgb.empty()) {
     requireThree(o.rgb, "--rgb");
@@ -141,12 +141,15 @@ void colourXyz(const XyzOptions& o) {
 
 void colourDeltaE(const DeltaEOptions& o) {
   if (o.labs.size() != 2) throw Error("colour delta-e: give --lab exactly twice");
-  requireThree(o.labs[0], "--lab");
-  requireThree(o.labs[1], "--lab");
+  for (const std::vector<double>& lab : o.labs) {
+    requireThree(lab, "--lab");
+    if (lab[0] < 0.0) throw Error(fmt::format("--lab: L* {:g} is negative", lab[0]));
+  }
   DeltaEFormula formula = deltaEFormulaFromName(o.formula);
   Eigen::Vector3d a(o.labs[0][0], o.labs[0][1], o.labs[0][2]);
   Eigen::Vector3d b(o.labs[1][0], o.labs[1][1], o.labs[1][2]);
   double d = deltaE(a, b, formula);
+  if (!std::isfinite(d)) throw Error(fmt::format("colour delta-e: the difference of these colours is {}", d));
   if (o.json)
     fmt::print("{}\n", json{{"formula", o.formula}, {"deltaE", d}}.dump(2));
   else
@@ -238,7 +241,7 @@ Spectrum patchOrFileReflectance(const std::string& text, const std::string& opti
     if (p.name == text) return p.reflectance;
   if (!std::filesystem::is_regular_file(text))
     throw Error(option + ": '" + text + "' is neither a ColorChecker patch name nor a file");
-  return readSpectrumCsv(text, Extrapolation::Clamp).toDense();
+  return readSpectrumCsv(text, Extrapolation::Clamp, 0.0, 1.0).toDense();
 }
 
 void colourSpectralTexture(const SpectralTextureOptions& o) {

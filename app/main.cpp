@@ -3,6 +3,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -205,7 +207,7 @@ int main(int argc, char** argv) {
   auto* prtBakeCmd = prtCmd->add_subcommand("bake", "bake (or read from the cache) the SH-5 transfer of a scene's or model's vertices");
   prtBakeCmd->add_option("input", prtBake.input, "scene (.json) or glTF model (.gltf, .glb)")->required();
   prtBakeCmd->add_option("--samples", prtBake.samples, "directions per vertex")->capture_default_str();
-  prtBakeCmd->add_flag("!--shadows", prtBake.shadows, "unshadowed transfer (--no-shadows)");
+  prtBakeCmd->add_flag("--no-shadows{false}", prtBake.shadows, "unshadowed transfer");
   prtBakeCmd->add_option("--cache", prtBake.cacheDir, "cache folder (default: Prism's cache)");
   prtBakeCmd->add_option("--part", prtBake.part, "I/N: only task I of N's share of the vertices, as a part for `prism merge` (-o)");
   prtBakeCmd->add_option("-o,--output", prtBake.output, "the part's file (with --part)");
@@ -239,7 +241,7 @@ int main(int argc, char** argv) {
   LutOptions lut;
   auto* lutCmd = app.add_subcommand("lut", "build a Jakob–Hanika upsampling table with Prism's optimiser");
   lutCmd->add_option("--gamut", lut.gamut, "srgb, display-p3, rec2020, acescg, aces2065-1")->capture_default_str();
-  lutCmd->add_option("--res", lut.resolution, "nodes per axis (2–256)")->capture_default_str();
+  lutCmd->add_option("--res", lut.resolution, "nodes per axis (5–256)")->capture_default_str();
   lutCmd->add_option("-o,--output", lut.output, "table file to write")->required();
   lutCmd->add_option("--threads", lut.threads, "worker threads (0: all)");
   lutCmd->add_flag("--report", lut.report, "measure node and round-trip CIEDE2000 after building");
@@ -343,13 +345,13 @@ int main(int argc, char** argv) {
       "prt", "`prism prt bake --part I/N` (a share of the vertices each), then `prism merge` into the cache's transfer file");
   scriptPrtCmd->add_option("input", cluster.prt.input, "scene (.json) or glTF model (.gltf, .glb)")->required();
   scriptPrtCmd->add_option("--samples", cluster.prt.samples, "directions per vertex")->capture_default_str();
-  scriptPrtCmd->add_flag("!--shadows", cluster.prt.shadows, "unshadowed transfer (--no-shadows)");
+  scriptPrtCmd->add_flag("--no-shadows{false}", cluster.prt.shadows, "unshadowed transfer");
   scriptPrtCmd->add_option("--cache", cluster.prt.cacheDir, "cache folder the merged bake goes to (default: Prism's cache)");
   addClusterOptions(scriptPrtCmd);
   auto* scriptLutCmd = scriptCmd->add_subcommand(
       "lut", "`prism lut --part I/N` (a share of the table's 3·res² columns each), then `prism merge`");
   scriptLutCmd->add_option("--gamut", cluster.lut.gamut, "srgb, display-p3, rec2020, acescg, aces2065-1")->capture_default_str();
-  scriptLutCmd->add_option("--res", cluster.lut.resolution, "nodes per axis (2–256)")->capture_default_str();
+  scriptLutCmd->add_option("--res", cluster.lut.resolution, "nodes per axis (5–256)")->capture_default_str();
   scriptLutCmd->add_option("-o,--output", cluster.lut.output, "table file to write")->required();
   addClusterOptions(scriptLutCmd);
 
@@ -511,7 +513,13 @@ int main(int argc, char** argv) {
       sceneBench.settings.mode = prism::render::RenderMode::Rgb;  // the bench sets the mode per configuration
       if (!benchWavelengths.empty()) {
         sceneBench.wavelengths.clear();
-        for (double n : prism::app::parseNumbers(benchWavelengths, "--wavelengths")) sceneBench.wavelengths.push_back(static_cast<int>(n));
+        for (double n : prism::app::parseNumbers(benchWavelengths, "--wavelengths")) {
+          if (n != std::trunc(n) || std::abs(n) > 1e6)
+            throw prism::Error(fmt::format("--wavelengths: {:g} is not a whole number of wavelengths", n));
+          if (std::ranges::count(sceneBench.wavelengths, static_cast<int>(n)) > 0)
+            throw prism::Error(fmt::format("--wavelengths: {:g} is given twice", n));
+          sceneBench.wavelengths.push_back(static_cast<int>(n));
+        }
       } else if (sceneBench.settings.sampling.strategy == prism::SamplingStrategy::Optimised) {
         // A fitted set has at most 64 wavelengths: the default sweep stops there.
         std::erase_if(sceneBench.wavelengths, [](int n) { return n > prism::kMaxFittedWavelengths; });

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <string_view>
 
+#include <fmt/format.h>
+
 #include "core/error.h"
+#include "core/json_schema.h"
 
 namespace prism::app {
 
@@ -18,6 +21,10 @@ std::vector<double> parseNumbers(const std::string& text, const std::string& opt
     auto result = std::from_chars(field.data(), field.data() + field.size(), v);
     if (field.empty() || result.ec != std::errc() || result.ptr != field.data() + field.size() || !std::isfinite(v))
       throw Error(option + ": '" + text + "' is not a '" + separator + "'-separated list of numbers");
+    if (std::abs(v) > schema::kFloatInputLimit) {
+      throw Error(fmt::format("{}: {} is beyond ±{:g}, the most any number Prism reads may reach", option,
+                              std::string(field), schema::kFloatInputLimit));
+    }
     values.push_back(v);
     if (comma == std::string::npos) break;
     start = comma + 1;

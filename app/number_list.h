@@ -7,7 +7,8 @@
 
 namespace prism::app {
 
-// Finite numbers separated by `separator`; Error naming the option otherwise.
+// Finite numbers within ±schema::kFloatInputLimit (a scene's limit) separated by `separator`;
+// Error naming the option otherwise.
 std::vector<double> parseNumbers(const std::string& text, const std::string& option, char separator = ',');
 
 }  // namespace prism::app

@@ -11,6 +11,7 @@
 #include "harness/upsampling_table.h"
 #include "imaging/exr_file.h"
 #include "render/display_transform.h"
+#include "render/frame_settings.h"
 #include "scene/scene_loader.h"
 #include "spectral/observer.h"
 
@@ -106,6 +107,7 @@ void checkReferenceOutputs(const std::filesystem::path& output, const std::files
   if (!variance.empty() && variance.extension() != ".exr") {
     throw Error(fmt::format("{}: the variance image must be an .exr file", variance.string()));
   }
+  requireOtherFile(variance, output, "the image (-o)");
 }
 
 void writeReferenceImage(const reference::ReferenceImage& image, const std::string& observerName, float ev100,
@@ -127,6 +129,7 @@ void writeReferenceImage(const reference::ReferenceImage& image, const std::stri
 }
 
 void runReference(const ReferenceOptions& o) {
+  if (o.ev100) render::validateEv100(*o.ev100);
   if (o.tile.empty() && o.samples.empty()) checkReferenceOutputs(o.output, o.variance);
   Scene scene = loadScene(o.scene, o.sets);
   reference::ReferenceSettings settings = referenceSettings(o);

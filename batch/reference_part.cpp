@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <span>
@@ -12,6 +13,7 @@
 #include "core/error.h"
 #include "core/fnv1a.h"
 #include "core/task_split.h"
+#include "scene/scene.h"
 #include "imaging/exr_band.h"
 #include "imaging/float_image.h"
 #include "spectral/observer.h"
@@ -68,6 +70,7 @@ ReferencePartHeader parseHeader(const std::filesystem::path& path, const imaging
   h.samplesPerPixel = a.number<int>("prism:samplesPerPixel");
   h.observer = a.text("prism:observer");
   h.ev100 = a.number<float>("prism:ev100");
+  if (!(std::abs(h.ev100) <= kEv100Limit)) a.fail(fmt::format("prism:ev100 {} is beyond ±{:g}", h.ev100, kEv100Limit));
   IndexRange samples;
   try {
     samples = parseIndexRange(a.text("prism:samples"), "prism:samples");

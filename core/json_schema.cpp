@@ -44,9 +44,11 @@ TextPosition textPosition(std::string_view text, std::size_t offset) {
 namespace {
 
 // %g: "0", "90", "0.5", "1e-06": what a user would have typed.
+// Whole numbers below 1e9 in full (a range [1, 1048576], not [1, 1.04858e+06]), others as %g.
 std::string formatNumber(double v) {
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", v);
+  if (v == std::trunc(v) && std::abs(v) < 1e9) std::snprintf(buffer, sizeof buffer, "%.0f", v);
+  else std::snprintf(buffer, sizeof buffer, "%g", v);
   return buffer;
 }
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "scene/scene.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 
@@ -52,11 +53,15 @@ void validate(const FrameSettings& settings) {
   validate(settings.display);
 }
 
+void validateEv100(float ev100) {
+  if (!(std::abs(ev100) <= kEv100Limit)) {
+    throw Error(fmt::format("exposure (EV100) {} must be within ±{:g}", ev100, kEv100Limit));
+  }
+}
+
 void validate(const DisplaySettings& settings) {
   if (settings.whiteBalance != "none") illuminant(settings.whiteBalance);  // Error when unknown
-  if (settings.ev100 && !std::isfinite(*settings.ev100)) {
-    throw Error("exposure (EV100) must be a finite number");
-  }
+  if (settings.ev100) validateEv100(*settings.ev100);
   if (settings.colourSpace != "srgb" && settings.colourSpace != "display-p3" &&
       settings.colourSpace != "p3" && settings.colourSpace != "rec2020") {
     throw Error(fmt::format("unknown display \"{}\" (srgb, display-p3, rec2020)",

@@ -67,6 +67,8 @@ struct FrameSettings {
 // Error naming the setting for sizes, counts and names out of range.
 void validate(const FrameSettings& settings);
 void validate(const DisplaySettings& settings);
+// Error unless the exposure lies within ±kEv100Limit (scene/scene.h).
+void validateEv100(float ev100);
 
 // The wavelength sampling the mode actually uses (RGB and optimised4 use none: uniform, unused).
 SamplingSettings effectiveSampling(const FrameSettings& settings);

@@ -25,6 +25,10 @@
 
 namespace prism {
 
+// How far an exposure may go either way (EV100): 1.2 · 2^±50 cd/m² of display white is past
+// any scene, and float's 2^ev100 overflows at 128 (a display white of ∞ or 0 in the EXR).
+inline constexpr float kEv100Limit = 50.0f;
+
 struct Camera {
   glm::vec3 position{0.0f, 1.0f, 5.0f};
   glm::vec3 target{0.0f, 1.0f, 0.0f};

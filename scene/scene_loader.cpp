@@ -113,7 +113,7 @@ class SceneParser {
     c.farPlane = n.numberF("far", c.farPlane, Range::above(c.nearPlane));
     if (!n.has("far") && !(c.farPlane > c.nearPlane))
       n.child("near").fail("expected a number < far (" + schema::describe(c.farPlane) + ")");
-    c.ev100 = n.numberF("ev100", c.ev100);
+    c.ev100 = n.numberF("ev100", c.ev100, Range::closed(-kEv100Limit, kEv100Limit));
     glm::vec3 view = c.target - c.position;
     if (!(glm::length(view) > 0.0f)) (n.has("target") ? n.child("target") : n).fail("target equals position");
     if (!(glm::length(glm::cross(view, c.up)) > 1e-6f * glm::length(view) * glm::length(c.up)))
@@ -341,13 +341,20 @@ class SceneParser {
         placement.materialOverride = materialReference(*m);
         checkTechniqueMaterial(o, placement.materialOverride, technique);
       }
+      std::size_t first = mScene.meshes.size();
       try {
-        std::size_t first = mScene.meshes.size();
         appendGltf(path, mFolder, placement, mScene);
         for (std::size_t i = first; i < mScene.meshes.size(); ++i) mScene.meshes[i].technique = technique;
       } catch (const Error& e) {
         g.fail(e.what());
       }
+      // The nodes' transforms times the object's: a vertex must land within the scene's ±1e12.
+      for (std::size_t i = first; i < mScene.meshes.size(); ++i)
+        for (const Vertex& v : mScene.meshes[i].vertices)
+          if (!(glm::all(glm::lessThanEqual(glm::abs(v.position), glm::vec3(schema::kFloatInputLimit)))))
+            (o.has("transform") ? o.child("transform") : g)
+                .fail(fmt::format("a vertex lands at ({}, {}, {}) once placed: past ±1e12", v.position.x, v.position.y,
+                                  v.position.z));
       return;
     }
 

@@ -1,6 +1,7 @@
 #include "spectral/spectrum_csv.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -48,6 +49,11 @@ TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path, Extrapolati
   if (csv.header().size() != 2)
     throw Error(csv.path() + ":1: a spectrum file has two columns (wavelength in nm, value), found " +
                 std::to_string(csv.header().size()));
+  double number = 0.0;
+  const std::string& first = csv.header().front();
+  const auto parsed = std::from_chars(first.data(), first.data() + first.size(), number);
+  if (!first.empty() && parsed.ec == std::errc() && parsed.ptr == first.data() + first.size())
+    throw Error(csv.path() + ":1: expected a header line (e.g. wavelength_nm,value) before the numbers, got " + first);
   std::vector<double> lambdas, values;
   std::vector<int> lines;
   for (const CsvRow& row : csv.rows()) {

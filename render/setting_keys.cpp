@@ -257,4 +257,11 @@ float parseFloat(std::string_view what, std::string_view text) {
   return static_cast<float>(v);
 }
 
+float parseFloatWithin(std::string_view what, std::string_view text, float min, float max) {
+  const float v = parseFloat(what, text);
+  if (!(v >= min && v <= max))
+    throw Error(fmt::format("{}: expected a number within {:g}–{:g}, got \"{}\"", what, min, max, excerpt(text)));
+  return v;
+}
+
 }  // namespace prism::render

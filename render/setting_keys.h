@@ -54,5 +54,8 @@ std::vector<std::pair<std::string, std::string>> frameSettingValues(const FrameS
 double parseNumber(std::string_view what, std::string_view text);
 long parseInteger(std::string_view what, std::string_view text, long min, long max);
 float parseFloat(std::string_view what, std::string_view text);  // parseNumber, as a float
+// parseFloat within [min, max]: Error "WHAT: expected a number within MIN–MAX, got "TEXT"" (never
+// clamped: a script or settings file says what it means).
+float parseFloatWithin(std::string_view what, std::string_view text, float min, float max);
 
 }  // namespace prism::render

@@ -31,7 +31,7 @@ glm::vec3 CameraController::right() const {
 }
 
 void CameraController::setFieldOfView(float verticalDeg) {
-  mCamera.verticalFovDeg = std::clamp(verticalDeg, 5.0f, 150.0f);
+  mCamera.verticalFovDeg = std::clamp(verticalDeg, kMinFieldOfViewDeg, kMaxFieldOfViewDeg);
 }
 
 void CameraController::orbit(float yaw, float pitch) {

@@ -11,6 +11,10 @@
 
 namespace prism::viewer {
 
+// The viewer's field of view (vertical, degrees): the panel's and the script's range.
+inline constexpr float kMinFieldOfViewDeg = 5.0f;
+inline constexpr float kMaxFieldOfViewDeg = 150.0f;
+
 // Radians per degree: the viewer's controls and script take angles in degrees.
 constexpr float kDegrees = glm::pi<float>() / 180.0f;
 
@@ -20,7 +24,7 @@ class CameraController {
 
   const Camera& camera() const { return mCamera; }
   void reset() { mCamera = mInitial; }
-  void setFieldOfView(float verticalDeg);  // clamped to [5, 150]
+  void setFieldOfView(float verticalDeg);  // clamped to [kMinFieldOfViewDeg, kMaxFieldOfViewDeg]
 
   // The camera moves on the sphere about the target, angles in radians: yaw about world +y,
   // pitch positive to rise above the target (the view looks further down).

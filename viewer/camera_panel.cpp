@@ -13,7 +13,7 @@ class CameraPanel final : public Panel {
 
   void draw(PanelContext& context) override {
     float fov = context.camera.camera().verticalFovDeg;
-    if (ImGui::SliderFloat("field of view", &fov, 5.0f, 150.0f, "%.0f°")) {
+    if (ImGui::SliderFloat("field of view", &fov, kMinFieldOfViewDeg, kMaxFieldOfViewDeg, "%.0f°")) {
       context.camera.setFieldOfView(fov);
       context.changes.camera = true;
     }

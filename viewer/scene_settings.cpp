@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/json_schema.h"
 #include "render/setting_keys.h"
 #include "viewer/light_spectrum.h"
 
@@ -33,7 +34,7 @@ void setLightKey(Scene& scene, const std::string& key, const std::vector<std::st
       render::parseInteger("light index", parts[1], 0, static_cast<long>(scene.lights.size()) - 1));
   Light& light = scene.lights[i];
   if (parts[2] == "spd") setLightSpd(light, value);
-  else if (parts[2] == "intensity") light.intensity = std::max(0.0f, render::parseFloat(key, value));
+  else if (parts[2] == "intensity") light.intensity = render::parseFloatWithin(key, value, 0.0f, static_cast<float>(schema::kFloatInputLimit));
   else if (parts[2] == "direction") {
     glm::vec3 d = parseVec3(key, value);
     if (!(glm::length(d) > 0.0f)) throw Error(fmt::format("{}: expected a non-zero direction", excerpt(key)));
@@ -57,9 +58,13 @@ void setMaterialKey(Scene& scene, const std::string& key, const std::vector<std:
   auto it = std::find_if(scene.materials.begin(), scene.materials.end(),
                          [&](const Material& m) { return m.name == parts[1]; });
   if (it == scene.materials.end()) throw Error(fmt::format("{}: no material \"{}\"", excerpt(key), excerpt(parts[1])));
-  if (parts[2] == "base-colour") it->baseColour = glm::clamp(parseVec3(key, value), glm::vec3(0.0f), glm::vec3(1.0f));
-  else if (parts[2] == "roughness") it->roughness = std::clamp(render::parseFloat(key, value), 0.0f, 1.0f);
-  else if (parts[2] == "metallic") it->metallic = std::clamp(render::parseFloat(key, value), 0.0f, 1.0f);
+  if (parts[2] == "base-colour") {
+    const glm::vec3 c = parseVec3(key, value);
+    if (glm::any(glm::lessThan(c, glm::vec3(0.0f))) || glm::any(glm::greaterThan(c, glm::vec3(1.0f))))
+      throw Error(fmt::format("{}: expected R,G,B within 0–1, got \"{}\"", excerpt(key), excerpt(value)));
+    it->baseColour = c;
+  } else if (parts[2] == "roughness") it->roughness = render::parseFloatWithin(key, value, 0.0f, 1.0f);
+  else if (parts[2] == "metallic") it->metallic = render::parseFloatWithin(key, value, 0.0f, 1.0f);
   else throw Error(fmt::format("unknown setting \"{}\" (material.NAME.base-colour, roughness, metallic)", excerpt(key)));
 }
 

@@ -61,6 +61,12 @@ TEST(SceneSettings, BadValuesAreOneLineErrorsNamingTheKey) {
   EXPECT_NE(error(scene, "light.7.intensity", "1"), "");
   EXPECT_NE(error(scene, "light.1.colour", "1"), "");
   EXPECT_NE(error(scene, "material.wood.roughness", "1"), "");
+  // Out of range is refused, never clamped: a script says what it means.
+  EXPECT_EQ(error(scene, "light.0.intensity", "-3"), "light.0.intensity: expected a number within 0–1e+12, got \"-3\"");
+  EXPECT_EQ(error(scene, "material.floor.roughness", "1.5"),
+            "material.floor.roughness: expected a number within 0–1, got \"1.5\"");
+  EXPECT_EQ(error(scene, "material.floor.base-colour", "0.5,2,0"),
+            "material.floor.base-colour: expected R,G,B within 0–1, got \"0.5,2,0\"");
   EXPECT_EQ(scene.lights[1].position, glm::vec3(0.0f, 2.0f, 0.0f));  // nothing half-set
 }
 

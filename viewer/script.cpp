@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "render/setting_keys.h"
+#include "viewer/camera_controller.h"
 #include "viewer/scene_settings.h"
 #include "viewer/soak.h"
 #include "viewer/technique_settings.h"
@@ -47,7 +48,7 @@ void set(Viewer& viewer, const std::string& key, const std::string& value) {
     return;
   }
   if (key == "fov") {
-    viewer.camera().setFieldOfView(render::parseFloat(key, value));
+    viewer.camera().setFieldOfView(render::parseFloatWithin(key, value, kMinFieldOfViewDeg, kMaxFieldOfViewDeg));
     changes.camera = true;
     return;
   }

@@ -161,8 +161,7 @@ void printValidateClusterScript(const ClusterOptions& o) {
 void printLutClusterScript(const ClusterOptions& o) {
   const LutOptions& l = o.lut;
   const std::string gamut = colourSpace(l.gamut).name;
-  if (l.resolution < 2 || l.resolution > 256)
-    throw Error(fmt::format("upsampling table resolution must be within 2–256, got {}", l.resolution));
+  requireBuildableResolution(l.resolution);
   if (o.tasks > tableColumns(l.resolution)) {
     throw Error(fmt::format("--tasks {}: a {}³ table has {} columns, at most {} tasks", o.tasks, l.resolution,
                             tableColumns(l.resolution), tableColumns(l.resolution)));

@@ -45,8 +45,7 @@ void printError(const char* what, const UpsamplingError& e) {
 // Task I of N's columns of the table, as a part for `prism merge`.
 void runLutPart(const LutOptions& o, const std::string& gamut) {
   if (o.report || o.json) throw Error("--report, --json: measure the merged table (prism lut --part writes a part)");
-  if (o.resolution < 2 || o.resolution > 256)
-    throw Error(fmt::format("upsampling table resolution must be within 2–256, got {}", o.resolution));
+  requireBuildableResolution(o.resolution);
   const TaskIndex task = parseTaskIndex(o.part, "--part");
   const int columns = tableColumns(o.resolution);
   if (task.count > columns) {

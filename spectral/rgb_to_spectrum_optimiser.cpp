@@ -1,5 +1,7 @@
 #include "spectral/rgb_to_spectrum_optimiser.h"
 
+#include <string>
+
 #include "spectral/colour_space.h"
 #include "spectral/observer.h"
 #include "core/error.h"
@@ -10,11 +12,19 @@ namespace prism {
 
 int tableColumns(int resolution) { return 3 * resolution * resolution; }
 
+void requireBuildableResolution(int resolution) {
+  if (resolution < kMinBuiltTableResolution || resolution > kMaxBuiltTableResolution) {
+    throw Error("upsampling table resolution must be within " + std::to_string(kMinBuiltTableResolution) + "–" +
+                std::to_string(kMaxBuiltTableResolution) + ", got " + std::to_string(resolution));
+  }
+}
+
 RgbToSpectrumTable buildRgbToSpectrumTable(const TableBuildOptions& options) {
   return buildRgbToSpectrumTable(options, {0, tableColumns(options.resolution)});
 }
 
 RgbToSpectrumTable buildRgbToSpectrumTable(const TableBuildOptions& options, IndexRange columns) {
+  requireBuildableResolution(options.resolution);
   const RgbColourSpace& gamut = colourSpace(options.gamut);
   RgbToSpectrumTable table(options.gamut, options.resolution);
   const SigmoidFitter fitter(gamut, gamutWhiteIlluminant(gamut), observer("cie1931"));

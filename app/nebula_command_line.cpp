@@ -39,7 +39,7 @@ void addNebulaCommands(CLI::App& app) {
   nebSweepCmd->add_option("scene", o->sweep.scene, "nebula scene file")->required();
   nebSweepCmd->add_option("--filters", o->sweep.filters, "hubble or cie1931 (default: the scene's)");
   nebSweepCmd->add_option("--steps", o->sweep.steps, "ray steps (default: the scene's)");
-  nebSweepCmd->add_option("--max-basis", o->sweep.maxBasis, "largest basis (1..8)")->capture_default_str();
+  nebSweepCmd->add_option("--max-basis", o->sweep.maxBasis, "largest basis (1..6)")->capture_default_str();
   nebSweepCmd->add_option("--size", o->sweep.size, "the camera's longer side in pixels (default: the scene's)");
   nebSweepCmd->add_flag("--no-lines", o->sweep.noLines, "leave out the emission lines");
   nebSweepCmd->add_flag("--json", o->sweep.json, "JSON output");
@@ -51,8 +51,8 @@ void addNebulaCommands(CLI::App& app) {
   nebRenderCmd->add_option("--method", o->render.method, "reference, analytic, projection, light-density or pre-integration")->capture_default_str();
   nebRenderCmd->add_option("--steps", o->render.steps, "ray steps (default: the scene's)");
   nebRenderCmd->add_option("--filters", o->render.filters, "hubble or cie1931 (default: the scene's)");
-  nebRenderCmd->add_option("--basis", o->render.basisSize, "elements of the exp(-a/λ) basis (1..8)")->capture_default_str();
-  nebRenderCmd->add_option("--light-basis", o->render.lightBasisSize, "elements of the 2D light basis")->capture_default_str();
+  nebRenderCmd->add_option("--basis", o->render.basisSize, "elements of the exp(-a/λ) basis (1..6; 4 is the most accurate)")->capture_default_str();
+  nebRenderCmd->add_option("--light-basis", o->render.lightBasisSize, "elements of the 2D light basis (1..16)")->capture_default_str();
   nebRenderCmd->add_option("--reference-intervals", o->render.referenceIntervals, "reference: Simpson intervals per filter piece")->capture_default_str();
   nebRenderCmd->add_option("--uniform-samples", o->render.uniformSamples, "reference: that many λ per channel instead (trapezoid)");
   nebRenderCmd->add_flag("--compare", o->render.compare, "also render the reference; print the max relative error");

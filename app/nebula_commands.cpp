@@ -27,12 +27,18 @@
 namespace prism::app {
 
 void runNebulaBasis(const NebulaBasisOptions& o) {
-  if (!(o.lambda0Um >= 0.0 && o.lambda1Um > o.lambda0Um) || o.count < 1 || o.count > 8 || o.maxDepthUm <= 0.0 ||
-      o.maxExponentUm <= 0.0 || o.spacingUm < 0.0)
-    throw Error("nebula basis: need 0 ≤ λ0 < λ1, 1 ≤ count ≤ 8, max depth and max exponent > 0, spacing ≥ 0");
+  // NaN fails every comparison, so each bound is written to be true of a good value.
+  if (!(o.lambda0Um >= 0.0 && o.lambda1Um > o.lambda0Um && o.lambda1Um <= 100.0) || o.count < 1 || o.count > 8 ||
+      !(o.maxDepthUm > 0.0 && o.maxDepthUm <= 1000.0) || !(o.maxExponentUm > 0.0 && o.maxExponentUm <= 1000.0) ||
+      !(o.spacingUm >= 0.0 && o.spacingUm <= o.maxExponentUm))
+    throw Error("nebula basis: need 0 ≤ λ0 < λ1 ≤ 100 µm, 1 ≤ count ≤ 8, max depth and max exponent within (0, 1000] µm, "
+                "spacing within [0, max exponent]");
   if (!o.plotFile.empty()) requireWritable(o.plotFile);
   nebula::ExpBasis b = nebula::findExpBasis(o.lambda0Um, o.lambda1Um, o.maxDepthUm, o.maxExponentUm, o.count,
                                             o.spacingUm, /*orthonormalise=*/false);
+  if (static_cast<int>(b.a.size()) < o.count)
+    throw Error(fmt::format("nebula basis: only {} of {} elements found: no other exponent within 0–{:g} µm keeps the "
+                            "spacing of {:g} µm and adds a new direction", b.a.size(), o.count, o.maxExponentUm, o.spacingUm));
   if (o.json) {
     fmt::print("{{\"lambda_um\": [{}, {}], \"max_depth_um\": {}, \"spacing_um\": {}, \"elements\": [", o.lambda0Um,
                o.lambda1Um, o.maxDepthUm, o.spacingUm);
@@ -65,9 +71,13 @@ void runNebulaBasis(const NebulaBasisOptions& o) {
 }
 
 void runNebulaSweep(const NebulaSweepOptions& o) {
-  if (o.maxBasis < 1 || o.maxBasis > 8) throw Error(fmt::format("--max-basis: {} is not within 1..8", o.maxBasis));
+  if (o.maxBasis < 1 || o.maxBasis > nebula::kMaxBasisSize)
+    throw Error(fmt::format("--max-basis: {} is not within 1..{}", o.maxBasis, nebula::kMaxBasisSize));
   if (o.size < 0 || o.size > 4096) throw Error(fmt::format("--size: {} is not within 1..4096", o.size));
   if (!o.plotFile.empty()) requireWritable(o.plotFile);
+  nebula::RenderSettings s;
+  s.steps = o.steps.value_or(s.steps);
+  nebula::validate(s);
   nebula::NebulaScene scene = nebula::loadNebulaScene(o.scene, o.threads);
   if (!o.filters.empty()) {
     if (o.filters != "hubble" && o.filters != "cie1931")
@@ -76,8 +86,7 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
   }
   nebula::NebulaCamera& camera = scene.model.camera;
   if (o.size > 0) nebula::scaleImage(camera, o.size);
-  nebula::RenderSettings s;
-  s.steps = o.steps > 0 ? o.steps : scene.steps;
+  s.steps = o.steps.value_or(scene.steps);
   s.emissionLines = !o.noLines;
   s.threads = o.threads;
   std::vector<double> errors;
@@ -153,19 +162,22 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   if (o.output.extension() != ".exr" && o.output.extension() != ".png")
     throw Error(fmt::format("{}: the output must be .exr or .png", o.output.string()));
   nebula::Method method = nebula::methodFromName(o.method);
+  nebula::RenderSettings s;
+  s.method = method;
+  s.steps = o.steps.value_or(s.steps);
+  s.basisSize = o.basisSize;
+  s.lightBasisSize = o.lightBasisSize;
+  s.referenceIntervals = o.referenceIntervals;
+  s.uniformSamples = o.uniformSamples;
+  nebula::validate(s);
+  requireWritable(o.output);
   nebula::NebulaScene scene = nebula::loadNebulaScene(o.scene, o.threads);
   if (!o.filters.empty()) {
     if (o.filters != "hubble" && o.filters != "cie1931")
       throw Error(fmt::format("--filters: '{}' is not hubble or cie1931", excerpt(o.filters)));
     scene.model.filters = o.filters;
   }
-  nebula::RenderSettings s;
-  s.method = method;
-  s.steps = o.steps > 0 ? o.steps : scene.steps;
-  s.basisSize = o.basisSize;
-  s.lightBasisSize = o.lightBasisSize;
-  s.referenceIntervals = o.referenceIntervals;
-  s.uniformSamples = o.uniformSamples;
+  s.steps = o.steps.value_or(scene.steps);
   s.emissionLines = !o.noLines;
   s.threads = o.threads;
   std::string filters = scene.model.filters;

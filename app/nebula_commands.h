@@ -7,6 +7,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace prism::app {
@@ -28,7 +29,7 @@ void runNebulaBasis(const NebulaBasisOptions& options);
 struct NebulaSweepOptions {
   std::filesystem::path scene;
   std::string filters;           // empty: the scene's
-  int steps = 0;                 // 0: the scene's
+  std::optional<int> steps;      // unset: the scene's
   int maxBasis = 5;
   int size = 0;                  // > 0: the camera's longer side, in pixels (the aspect kept)
   bool noLines = false;
@@ -43,7 +44,7 @@ struct NebulaRenderOptions {
   std::filesystem::path output;  // .exr or .png
   std::string method = "projection";
   std::string filters;           // empty: the scene's ("hubble" or "cie1931")
-  int steps = 0;                 // 0: the scene's
+  std::optional<int> steps;      // unset: the scene's
   int basisSize = 4;
   int lightBasisSize = 8;
   int referenceIntervals = 16;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include <Eigen/Dense>
+#include <fmt/format.h>
 
 #include "core/error.h"
 #include "core/gauss_legendre.h"
@@ -84,7 +85,8 @@ Eigen::MatrixXd orthonormaliser(const std::vector<double>& a, double l0, double 
         g(i, j) += weights[q] * std::exp(-(a[static_cast<std::size_t>(i)] + a[static_cast<std::size_t>(j)]) / nodes[q]);
   Eigen::LLT<Eigen::MatrixXd> llt(g);
   if (llt.info() != Eigen::Success)
-    throw Error("nebula basis: the exponentials' Gram matrix is not positive definite in double (elements too close: raise the minimum spacing)");
+    throw Error(fmt::format("nebula basis: {} exponentials cannot be orthonormalised in double (their Gram matrix is "
+                            "singular to its rounding); use fewer elements", n));
   Eigen::MatrixXd l = llt.matrixL();
   return l.triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(n, n));
 }

@@ -133,6 +133,18 @@ void applyFilters(NebulaPrecomputed& pre) {
 
 }  // namespace
 
+void validate(const RenderSettings& s) {
+  auto within = [](std::string_view what, int v, int lo, int hi) {
+    if (v < lo || v > hi) throw Error(fmt::format("nebula: {} {} is not within {}..{}", what, v, lo, hi));
+  };
+  within("steps", s.steps, 1, kMaxSteps);
+  within("basis size", s.basisSize, 1, kMaxBasisSize);
+  within("light basis size", s.lightBasisSize, 1, kMaxLightBasisSize);
+  within("reference intervals", s.referenceIntervals, 2, kMaxReferenceIntervals);
+  if (s.referenceIntervals % 2) throw Error(fmt::format("nebula: reference intervals {} is odd (Simpson's rule)", s.referenceIntervals));
+  if (s.uniformSamples != 0) within("reference samples", s.uniformSamples, 2, kMaxUniformSamples);
+}
+
 NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
                                const std::function<void(std::size_t, std::size_t)>& progress)
     : mPre(std::make_unique<NebulaPrecomputed>()) {
@@ -140,7 +152,7 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
   pre.model = std::move(model);
   const NebulaModel& m = pre.model;
   if (m.density.values.empty()) throw Error("nebula: no density");
-  if (s.basisSize < 1 || s.basisSize > 8) throw Error("nebula: the basis size must be 1…8");
+  validate(s);
   // Emission lines: weight = the group's strength × the line's ratio within it.
   std::vector<std::string> lineGroups;
   for (const auto& line : readEmissionLines(dataFile("nebula_lines.csv"))) {
@@ -328,7 +340,7 @@ void NebulaRenderer::preparePreIntegration() const {
 
 NebulaRenderer::ReferenceNodes NebulaRenderer::referenceNodes(const RenderSettings& s) const {
   const NebulaPrecomputed& pre = *mPre;
-  if (s.referenceIntervals < 2 || s.referenceIntervals % 2) throw Error("nebula: reference intervals must be even and ≥ 2");
+  validate(s);
   const std::size_t starCount = pre.model.stars.size();
   ReferenceNodes nodes;
   auto& refLambda = nodes.lambdaUm;
@@ -338,7 +350,7 @@ NebulaRenderer::ReferenceNodes NebulaRenderer::referenceNodes(const RenderSettin
     const Passband& band = pre.filters.channels[c];
     std::vector<double> w;
     if (s.uniformSamples > 0) {
-      int n = std::max(2, s.uniformSamples);
+      const int n = s.uniformSamples;
       double a = band.response.lambdaMinUm(), b = band.response.lambdaMaxUm(), h = (b - a) / (n - 1);
       for (int i = 0; i < n; ++i) {
         double l = a + h * i;
@@ -369,10 +381,9 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
   const NebulaPrecomputed& pre = *mPre;
   if (s.method == Method::PreIntegration) preparePreIntegration();
   const NebulaModel& m = pre.model;
-  if (s.steps < 1) throw Error("nebula: steps must be ≥ 1");
+  validate(s);
   if (!s.rayLimits.empty() && s.rayLimits.size() != static_cast<std::size_t>(m.camera.width) * static_cast<std::size_t>(m.camera.height))
     throw Error("nebula: ray limits must be one a pixel");
-  if (s.referenceIntervals < 2 || s.referenceIntervals % 2) throw Error("nebula: reference intervals must be even and ≥ 2");
   const int card = static_cast<int>(pre.basis.a.size());
   if (s.basisSize != card && (s.method == Method::Projection || s.method == Method::LightDensity))
     throw Error(fmt::format("nebula: the renderer was built for a basis of {} elements, not {}", card, s.basisSize));

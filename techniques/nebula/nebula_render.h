@@ -78,6 +78,16 @@ enum class Method { Reference, Analytic, Projection, LightDensity, PreIntegratio
 const char* methodName(Method m);
 Method methodFromName(std::string_view name);  // Error naming it when unknown
 
+// The settings' ranges (validate() below; a scene's keys, the command line and the viewer share them).
+inline constexpr int kMaxSteps = 100000;
+// The projection basis's elements: up to six orthonormalise in double (the Gram matrix's condition
+// is 7e14 at six, 7e17 at seven, past double's 4.5e15); four is the most accurate (README: five and
+// six amplify the moments' rounding more than they gain).
+inline constexpr int kMaxBasisSize = 6;
+inline constexpr int kMaxLightBasisSize = 16;
+inline constexpr int kMaxReferenceIntervals = 1024;
+inline constexpr int kMaxUniformSamples = 1000;
+
 struct RenderSettings {
   Method method = Method::Reference;
   int steps = 100;               // ray samples between the cube's faces
@@ -103,6 +113,10 @@ struct RenderSettings {
   std::vector<double> rayLimits;
   unsigned threads = 0;
 };
+
+// Error "nebula: steps 0 is not within 1..100000" (or the basis size, the light basis's, the
+// reference's intervals or samples) unless every setting is within its range.
+void validate(const RenderSettings& settings);
 
 struct NebulaImage {
   int width = 0, height = 0;

@@ -31,7 +31,7 @@ PolynomialPiece readScatteringSpectrum(const schema::Node& n) {
   const std::size_t count = n.arraySize();
   if (count < 1 || count > 4) n.fail(fmt::format("expected 1 to 4 polynomial coefficients (up to a cubic), got {}", count));
   PolynomialPiece p = greyScattering();
-  for (std::size_t i = 0; i < count; ++i) p.coeffs[i] = n.element(i).number(schema::Range::any());
+  for (std::size_t i = 0; i < count; ++i) p.coeffs[i] = n.element(i).number(schema::Range::any().forFloat());
   double lowest = 0.0, lowestAt = 0.0;  // the most negative value over the band, if any
   for (int i = 0; i <= 400; ++i) {
     const double lambdaUm = kBandLoUm + (kBandHiUm - kBandLoUm) * i / 400.0;
@@ -56,8 +56,8 @@ DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, 
     NoiseParameters p;
     if (noise->has("resolution")) p.resolution = noise->child("resolution").integer(schema::Range::closed(2, 512));
     if (noise->has("octaves")) p.octaves = noise->child("octaves").integer(schema::Range::closed(1, 16));
-    p.frequency = noise->number("frequency", p.frequency, schema::Range::above(0.0));
-    p.amplitude = noise->number("amplitude", p.amplitude, schema::Range::atLeast(0.0));
+    p.frequency = noise->number("frequency", p.frequency, schema::Range::above(0.0).forFloat());
+    p.amplitude = noise->number("amplitude", p.amplitude, schema::Range::atLeast(0.0).forFloat());
     p.gain = noise->number("gain", p.gain, schema::Range::closed(0.0, 1.0));
     p.bias = noise->number("bias", p.bias, schema::Range::closed(-10.0, 10.0));
     if (noise->has("seed")) p.seed = static_cast<std::uint64_t>(noise->child("seed").integer(schema::Range::atLeast(0)));
@@ -74,15 +74,15 @@ DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, 
     }
     m.density = readDensityFile(source.file);
   }
-  m.extinction = n.number("extinction", m.extinction, schema::Range::atLeast(0.0));
-  m.scattering = n.number("scattering", m.scattering, schema::Range::atLeast(0.0));
+  m.extinction = n.number("extinction", m.extinction, schema::Range::atLeast(0.0).forFloat());
+  m.scattering = n.number("scattering", m.scattering, schema::Range::atLeast(0.0).forFloat());
   if (auto spectrum = n.optionalChild("scattering_spectrum")) m.scatteringSpectrum = readScatteringSpectrum(*spectrum);
-  m.emission = n.number("emission", m.emission, schema::Range::atLeast(0.0));
+  m.emission = n.number("emission", m.emission, schema::Range::atLeast(0.0).forFloat());
   if (auto lines = n.optionalChild("lines")) {
     std::vector<std::string_view> allowed(std::begin(kLineGroups), std::end(kLineGroups));
     lines->expectObject(allowed);
     for (const std::string& key : lines->keys())
-      m.lineGroups.push_back({key, lines->child(key).number(schema::Range::atLeast(0.0))});
+      m.lineGroups.push_back({key, lines->child(key).number(schema::Range::atLeast(0.0).forFloat())});
   }
   if (auto zones = n.optionalChild("ionisation")) {
     zones->expectObject({"front_radius", "front_width"});
@@ -97,7 +97,7 @@ DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, 
     s.expectObject({"position", "temperature", "luminosity"});
     m.stars.push_back({dvec3(s.child("position"), schema::Range::closed(-100.0, 100.0)),
                        s.child("temperature").number(schema::Range::closed(kMinStarTemperatureK, kMaxStarTemperatureK)),
-                       s.number("luminosity", 1.0, schema::Range::atLeast(0.0))});
+                       s.number("luminosity", 1.0, schema::Range::atLeast(0.0).forFloat())});
   }
   if (n.has("star_model")) {
     std::string model = n.child("star_model").string();
@@ -124,7 +124,7 @@ DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, 
       bands->fail(e.what());
     }
   }
-  if (n.has("steps")) steps = n.child("steps").integer(schema::Range::closed(1, 100000));
+  if (n.has("steps")) steps = n.child("steps").integer(schema::Range::closed(1, kMaxSteps));
   return source;
 }
 

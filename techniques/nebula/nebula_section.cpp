@@ -171,12 +171,12 @@ std::unique_ptr<TechniqueSection> NebulaSection::parse(const schema::Node& n, co
       m->fail(e.what());
     }
   }
-  if (n.has("basis")) s->basis = n.child("basis").integer(Range::closed(1, 8));
+  if (n.has("basis")) s->basis = n.child("basis").integer(Range::closed(1, kMaxBasisSize));
   if (auto r = n.optionalChild("reference_samples")) {
-    s->referenceSamples = r->integer(Range::closed(0, 1000));
+    s->referenceSamples = r->integer(Range::closed(0, kMaxUniformSamples));
     if (s->referenceSamples == 1) r->fail("must be 0 (Simpson over each passband piece) or at least 2 wavelengths a channel");
   }
-  s->intensity = static_cast<float>(n.number("intensity", s->intensity, Range::atLeast(0.0)));
+  s->intensity = static_cast<float>(n.number("intensity", s->intensity, Range::atLeast(0.0).forFloat()));
   s->marchEveryFrame = n.boolean("march_every_frame", s->marchEveryFrame);
   s->lightSurfaces = n.boolean("light_surfaces", s->lightSurfaces);
   return s;

@@ -159,7 +159,7 @@ class NebulaPanel final : public Panel {
       s.method = nebula::methodFromName(method);
       changed = true;
     }
-    changed |= mEdits.slider("basis size", s.basis, 1, 8);
+    changed |= mEdits.slider("basis size", s.basis, 1, nebula::kMaxBasisSize);
     changed |= mEdits.slider("steps", s.steps, 10, 400);
     changed |= stringCombo("filters", s.model.filters, {"hubble", "cie1931"});
     if (ImGui::TreeNode("passbands")) {

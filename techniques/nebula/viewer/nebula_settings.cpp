@@ -104,9 +104,9 @@ bool setNebulaKey(Scene& scene, const std::string& key, const std::string& value
       throw Error(std::string("nebula.method: ") + e.what());
     }
   } else if (key == "nebula.basis") {
-    s->basis = static_cast<int>(render::parseInteger(key, value, 1, 8));
+    s->basis = static_cast<int>(render::parseInteger(key, value, 1, nebula::kMaxBasisSize));
   } else if (key == "nebula.steps") {
-    s->steps = static_cast<int>(render::parseInteger(key, value, 1, 100000));
+    s->steps = static_cast<int>(render::parseInteger(key, value, 1, nebula::kMaxSteps));
   } else if (key == "nebula.filters") {
     if (value != "hubble" && value != "cie1931")
       throw Error("nebula.filters: expected hubble or cie1931, got '" + excerpt(value) + "'");

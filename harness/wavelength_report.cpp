@@ -63,7 +63,8 @@ WavelengthReport wavelengthReport(const Scene& scene, const render::FrameSetting
   const WavelengthSampler lightsSampler(lights, obs, sceneEmission(scene, space, table));
   for (const Spectrum& light : problem.lights) {
     LightErrors l;
-    l.light = "background";
+    // Not a scene light: the background's, or the equal energy fitted when nothing lights the scene.
+    l.light = scene.backgroundLuminance > 0.0f ? "background" : "equal energy (no light or background)";
     for (const Light& sceneLight : scene.lights)
       if (sceneLight.spd == light) {
         l.light = sceneLight.spdLabel;

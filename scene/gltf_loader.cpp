@@ -150,8 +150,8 @@ class Converter {
     if (values.size() != n) fail(pointer, "expected " + str(n) + " numbers, got " + str(values.size()));
     std::vector<float> out;
     for (std::size_t i = 0; i < n; ++i) {
-      if (!std::isfinite(values[i]) || std::abs(values[i]) > std::numeric_limits<float>::max())
-        fail(pointer + "/" + str(i), "expected a finite number, got " + schema::describe(values[i]));
+      if (!(std::abs(values[i]) <= schema::kFloatInputLimit))
+        fail(pointer + "/" + str(i), "expected a number within ±1e12, got " + schema::describe(values[i]));
       out.push_back(static_cast<float>(values[i]));
     }
     return out;
@@ -184,6 +184,12 @@ class Converter {
     if (mOnPath[static_cast<std::size_t>(index)]) fail(at, "the node is its own ancestor");
     mOnPath[static_cast<std::size_t>(index)] = true;
     glm::mat4 world = parent * localMatrix(node, at);
+    // A zero scale (a node hidden by its transform) draws nothing: skipped with what hangs below
+    // it, rather than collapsed to triangles without area or normals.
+    if (glm::determinant(glm::mat3(world)) == 0.0f) {
+      mOnPath[static_cast<std::size_t>(index)] = false;
+      return;
+    }
     if (node.mesh >= 0) {
       const tinygltf::Mesh& mesh = item(mModel.meshes, node.mesh, "mesh", at + "/mesh");
       for (std::size_t p = 0; p < mesh.primitives.size(); ++p)

@@ -4,6 +4,10 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include <nlohmann/json.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -44,6 +48,32 @@ TEST(GltfLoader, NodeTransformsApplyToPositionsNormalsAndTangents) {
     EXPECT_EQ(v.tangent.w, 1.0f);
   }
   EXPECT_EQ(quad.vertices[3].uv, glm::vec2(0.0f, 0.0f));
+}
+
+// quad.gltf with one node edited, written beside the fixtures' copy in a scratch folder.
+fs::path editedQuad(const std::string& name, const std::function<void(nlohmann::json&)>& edit) {
+  std::ifstream in(kGltfFixtures / "quad.gltf");
+  nlohmann::json gltf = nlohmann::json::parse(in);
+  edit(gltf);
+  const fs::path file = fs::path(::testing::TempDir()) / name;
+  std::ofstream(file) << gltf.dump();
+  return file;
+}
+
+TEST(GltfLoader, NodeNumbersStayWithinTheScenesRangeAndAZeroScaleHidesItsNode) {
+  const fs::path far = editedQuad("far_quad.gltf", [](nlohmann::json& g) { g["nodes"][0]["translation"] = {1e30, 0, 0}; });
+  try {
+    Scene scene;
+    appendGltf(far, far.parent_path(), {}, scene);
+    ADD_FAILURE() << "a node 1e30 m away was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nodes/0/translation/0: expected a number within ±1e12, got 1e+30"),
+              std::string::npos) << e.what();
+  }
+  const fs::path hidden = editedQuad("hidden_quad.gltf", [](nlohmann::json& g) { g["nodes"][0]["scale"] = {0, 0, 0}; });
+  Scene scene;
+  appendGltf(hidden, hidden.parent_path(), {}, scene);
+  EXPECT_TRUE(scene.meshes.empty());  // the parent's zero scale hides its child's mesh too
 }
 
 TEST(GltfLoader, PlacementAppliesAfterTheNodeTransforms) {

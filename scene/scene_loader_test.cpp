@@ -376,6 +376,15 @@ TEST_F(SceneFolder, GltfPrimitivesMustBeTriangles) {
   EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), "m.gltf: /meshes/0/primitives/0/mode: only triangles (mode 4) are supported, got 1"));
 }
 
+TEST_F(SceneFolder, GltfVerticesMustLandWithinTheScenesRange) {
+  copyFixture("quad.gltf");  // its vertices reach (1, 3, 4) through its nodes
+  fs::path f = scene(R"("a": {})", "", R"({"gltf": "quad.gltf", "transform": {"scale": 2e11}})");
+  EXPECT_NO_THROW(loadScene(f));  // 8e11 at most
+  f = scene(R"("a": {})", "", R"({"gltf": "quad.gltf", "transform": {"scale": 1e12}})");
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), "/objects/0/transform: a vertex lands at ("));
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), "once placed: past ±1e12"));
+}
+
 TEST_F(SceneFolder, GltfMustBeVersionTwo) {
   std::string text;
   {

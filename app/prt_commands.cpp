@@ -212,13 +212,17 @@ void runPrtReport(const PrtReportOptions& o) {
     environment = prt::rotateEnvironment(environment, rotation);
     environment.name += fmt::format(" turned {}° about ({}, {}, {})", o.rotate[3], axis.x, axis.y, axis.z);
   }
+  // ΔE needs a white: a sky whose sun is far enough below the horizon holds no light to compare in.
+  if (!(prt::sceneWhite(prt::environmentOnGrid(environment), cie1931Observer()).y() > 0.0))
+    throw Error(fmt::format("prt report: {} holds no light (its white's luminance is 0): nothing to compare", environment.name));
   if (o.patchVertices < 2 || o.patchVertices > 256)
     throw Error(fmt::format("--patch-vertices: {} out of range 2..256", o.patchVertices));
   prt::PrtObject object = o.input.empty() ? prt::makeColourCheckerObject(o.patchVertices) : loadPrtObject(o.input, true);
   // Checked before the bake: the basis has at most one function per spectrum of the scene.
   int mMax = std::min(static_cast<int>(object.reflectances.size() + environment.terms.size()), 16);
-  if (!o.coloursFile.empty() && (o.coloursM < 0 || o.coloursM > mMax))
-    throw Error(fmt::format("--colours-m: {} out of range 0..{}", o.coloursM, mMax));
+  const int coloursM = o.coloursM.value_or(std::min(8, mMax));
+  if (!o.coloursFile.empty() && (coloursM < 0 || coloursM > mMax))
+    throw Error(fmt::format("--colours-m: {} out of range 0..{}", coloursM, mMax));
   prt::CachedTransfer transfer = transferFor(object.mesh, {o.samples, true}, "");
   const Observer& obs = cie1931Observer();
   prt::PrtReport report = prt::basisSweep(object, transfer.transfer, environment, obs);
@@ -237,10 +241,9 @@ void runPrtReport(const PrtReportOptions& o) {
     Eigen::Vector3d white = prt::sceneWhite(grid, obs);
     std::vector<Eigen::VectorXd> spectra;  // as basisSweep builds its basis
     for (const Spectrum& r : object.reflectances) spectra.push_back(prt::sampleOnGrid(r));
-    for (const prt::EnvironmentTerm& t : environment.terms) spectra.push_back(prt::sampleOnGrid(t.spectrum));
-    prt::SpectralBasis basis(spectra);
-    auto xyz = o.coloursM == 0 ? prt::shadeReference(object, transfer.transfer, grid, obs)
-                               : prt::shadeSpectral(object, transfer.transfer, grid, obs, basis.leading(o.coloursM));
+    prt::SpectralBasis basis(spectra, {prt::termSpectra(environment)});
+    auto xyz = coloursM == 0 ? prt::shadeReference(object, transfer.transfer, grid, obs)
+                             : prt::shadeSpectral(object, transfer.transfer, grid, obs, basis.leading(coloursM));
     auto colours = prt::displayColours(xyz, white, colourSpace("srgb"));
     writeFileAtomically(o.coloursFile, plyText(object, colours));
   }

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,7 +47,9 @@ struct PrtReportOptions {
   int samples = 1024;
   std::string plotFile;             // optional: the sweep as an SVG
   std::string coloursFile;          // optional: per-vertex display colours as a PLY
-  int coloursM = 8;                 // of spectral PRT with this many functions; 0: the 5 nm reference
+  // Of spectral PRT with this many functions, 0: the 5 nm reference; unset: 8, or as many as the
+  // scene's spectra give when fewer.
+  std::optional<int> coloursM;
   bool json = false;
 };
 // The ColorChecker object (or a scene's meshes) under a spectral environment: spectral PRT for m = 1..16 and RGB-PRT

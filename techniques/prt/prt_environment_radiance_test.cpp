@@ -62,8 +62,8 @@ TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironment) {
   uniform.shape = "uniform";
   EXPECT_LT(projectionDifference(uniform, 600.0), 1e-6);
 
-  // A 128 × 64 map turned 30° about the zenith (the section projects each texel by its centre's
-  // direction times its solid angle, which on 16 × 8 texels is 2 % off).
+  // A 128 × 64 map turned 30° about the zenith (the section integrates each texel's SH functions,
+  // equirectangularTexelSh; by its centre alone it was 3.1e-4 here, and 2 % off on 16 × 8 texels).
   PrtSection mapped;
   mapped.map = testMap(128, 64);
   mapped.rotationDeg = 30.0f;

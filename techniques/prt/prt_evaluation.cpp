@@ -86,6 +86,17 @@ EquirectangularTexel equirectangularTexel(int x, int y, int width, int height) {
           2.0 * pi / width * (std::cos(theta0) - std::cos(theta1))};
 }
 
+ShVector equirectangularTexelSh(int x, int y, int width, int height) {
+  const int s = std::max(1, (kTexelShCellsAcross + width - 1) / width);
+  ShVector sum = ShVector::Zero();
+  for (int j = 0; j < s; ++j)
+    for (int i = 0; i < s; ++i) {
+      const EquirectangularTexel cell = equirectangularTexel(x * s + i, y * s + j, width * s, height * s);
+      sum += cell.solidAngle * evaluateSh(cell.direction);
+    }
+  return sum;
+}
+
 glm::ivec2 equirectangularTexelOf(const glm::dvec3& direction, int width, int height) {
   const double pi = std::numbers::pi;
   const glm::dvec3 d = glm::normalize(direction);
@@ -94,6 +105,12 @@ glm::ivec2 equirectangularTexelOf(const glm::dvec3& direction, int width, int he
   if (phi < 0.0) phi += 2.0 * pi;
   return {std::min(width - 1, static_cast<int>(phi / (2.0 * pi) * width)),
           std::min(height - 1, static_cast<int>(theta / pi * height))};
+}
+
+std::vector<Eigen::VectorXd> termSpectra(const SpectralEnvironment& environment) {
+  std::vector<Eigen::VectorXd> spectra;
+  for (const EnvironmentTerm& t : environment.terms) spectra.push_back(sampleOnGrid(t.spectrum));
+  return spectra;
 }
 
 SpectralEnvironment gridEnvironment(std::string name, const Eigen::MatrixXd& grid) {
@@ -125,8 +142,7 @@ SpectralEnvironment equirectangularEnvironment(std::string name, int width, int 
           throw Error(fmt::format("{}: texel ({}, {}): channel {} is {}, not a finite non-negative radiance", name, x, y, c,
                                   rgb[c]));
       if (rgb == glm::vec3(0.0f)) continue;
-      EquirectangularTexel texel = equirectangularTexel(x, y, width, height);
-      grid += sampleOnGrid(toSpectrum(rgb)) * (texel.solidAngle * evaluateSh(texel.direction)).transpose();
+      grid += sampleOnGrid(toSpectrum(rgb)) * equirectangularTexelSh(x, y, width, height).transpose();
     }
   }
   return gridEnvironment(std::move(name), grid);
@@ -309,8 +325,7 @@ PrtReport basisSweep(const PrtObject& object, const std::vector<shared::Sh25>& t
                      const SpectralEnvironment& environment, const Observer& observer, int maxBasis) {
   std::vector<Eigen::VectorXd> spectra;
   for (const Spectrum& s : object.reflectances) spectra.push_back(sampleOnGrid(s));
-  for (const EnvironmentTerm& t : environment.terms) spectra.push_back(sampleOnGrid(t.spectrum));
-  SpectralBasis basis(spectra);
+  SpectralBasis basis(spectra, {termSpectra(environment)});
   Eigen::MatrixXd grid = environmentOnGrid(environment);
   Eigen::Vector3d white = sceneWhite(grid, observer);
   std::vector<Eigen::Vector3d> reference = shadeReference(object, transfer, grid, observer);
@@ -334,10 +349,9 @@ std::vector<DeltaEStatistics> metamerHalves(const PrtObject& object, const std::
   second.reflectances = {b};
   first.vertexMaterial.assign(object.mesh.positions.size(), 0);
   second.vertexMaterial = first.vertexMaterial;
-  std::vector<Eigen::VectorXd> spectra = {sampleOnGrid(a), sampleOnGrid(b)};
-  for (const SpectralEnvironment& e : environments)
-    for (const EnvironmentTerm& t : e.terms) spectra.push_back(sampleOnGrid(t.spectrum));
-  SpectralBasis basis(spectra);
+  std::vector<std::vector<Eigen::VectorXd>> lights;
+  for (const SpectralEnvironment& e : environments) lights.push_back(termSpectra(e));
+  SpectralBasis basis({sampleOnGrid(a), sampleOnGrid(b)}, lights);
   Eigen::MatrixXd phi = basis.leading(std::min({maxBasis, basis.available(), shared::kPrtMaxBasis}));
   std::vector<DeltaEStatistics> result;
   for (const SpectralEnvironment& e : environments) {

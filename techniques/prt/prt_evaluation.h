@@ -58,15 +58,24 @@ struct EquirectangularTexel {
   double solidAngle = 0.0;
 };
 EquirectangularTexel equirectangularTexel(int x, int y, int width, int height);
+// The 25 SH functions integrated over texel (x, y): the map as the piecewise-constant radiance the
+// path tracer samples. The texel is split into s × s cells, s making the grid at least
+// kTexelShCellsAcross cells wide, each cell its exact solid angle times the functions at its
+// centre. A texel's centre alone missed the higher bands of small maps: a constant 1×1 map had
+// bands 1–4 at 2.2× its band 0 (negative light on half the sphere), a 64×32 one at 3e-3.
+inline constexpr int kTexelShCellsAcross = 512;
+ShVector equirectangularTexelSh(int x, int y, int width, int height);
 // The texel whose solid angle holds a direction (need not be unit).
 glm::ivec2 equirectangularTexelOf(const glm::dvec3& direction, int width, int height);
+// Its terms' spectra on the 5 nm grid, in order: one group of SpectralBasis.
+std::vector<Eigen::VectorXd> termSpectra(const SpectralEnvironment& environment);
 // An environment from its 25 SH coefficients' spectra on the 5 nm grid (81 × 25; linear between
 // grid wavelengths).
 SpectralEnvironment gridEnvironment(std::string name, const Eigen::MatrixXd& grid);
 // An equirectangular map (row 0 at the zenith +z, u = φ/2π from +x towards +y), linear RGB per
 // texel as `width × height` triples, each texel upsampled by `toSpectrum` (Prism's unbounded RGB
-// intent: RgbUnboundedSpectrum(table, rgb).toDense()) and projected with its exact solid angle
-// (2π/width)·(cos θ0 − cos θ1). Held as 25 terms, the spectrum of each SH coefficient on the 5 nm
+// intent: RgbUnboundedSpectrum(table, rgb).toDense()) and projected by equirectangularTexelSh.
+// Held as 25 terms, the spectrum of each SH coefficient on the 5 nm
 // grid (linear between grid wavelengths), so rotation and the basis's columns work as for the
 // analytic environments. Error "SOURCE: texel (x, y): …" for a negative or non-finite value.
 SpectralEnvironment equirectangularEnvironment(std::string name, int width, int height,

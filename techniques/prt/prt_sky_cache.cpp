@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "core/error.h"
 #include "core/atomic_file.h"
 #include "core/binary_fields.h"
 #include "core/data_files.h"
@@ -27,6 +28,7 @@ constexpr std::string_view kMagic = "prism-prt-sky\n";
 constexpr std::size_t kMostEntries = 32;  // 2.6 MB each at 128 × 64: a viewer's sun drags stay bounded
 
 std::string readBytes(const std::filesystem::path& path) {
+  if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }

@@ -1,5 +1,6 @@
 #include "techniques/prt/prt_spectra.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -30,14 +31,24 @@ Eigen::MatrixXd observerOnGrid(const Observer& observer) {
   return cmf;
 }
 
-SpectralBasis::SpectralBasis(const std::vector<Eigen::VectorXd>& spectra) {
-  Eigen::MatrixXd columns(kGridWavelengths, static_cast<Eigen::Index>(spectra.size()));
+SpectralBasis::SpectralBasis(const std::vector<Eigen::VectorXd>& spectra,
+                             const std::vector<std::vector<Eigen::VectorXd>>& groups) {
+  std::size_t total = spectra.size();
+  for (const auto& group : groups) total += group.size();
+  Eigen::MatrixXd columns(kGridWavelengths, static_cast<Eigen::Index>(total));
   Eigen::Index used = 0;
-  for (const Eigen::VectorXd& s : spectra) {
+  auto add = [&](const Eigen::VectorXd& s, double scale) {
     PRISM_CHECK(s.size() == kGridWavelengths);
-    double norm = s.norm();
-    if (!(norm > 0.0) || !std::isfinite(norm)) continue;  // a black or broken spectrum adds nothing
-    columns.col(used++) = s / norm;
+    const double norm = s.norm();
+    if (!(norm > 0.0) || !std::isfinite(norm)) return;  // a black or broken spectrum adds nothing
+    columns.col(used++) = s / scale;
+  };
+  for (const Eigen::VectorXd& s : spectra) add(s, s.norm());
+  for (const auto& group : groups) {
+    double longest = 0.0;
+    for (const Eigen::VectorXd& s : group)
+      if (std::isfinite(s.norm())) longest = std::max(longest, s.norm());
+    for (const Eigen::VectorXd& s : group) add(s, longest);
   }
   if (used == 0) throw Error("spectral basis: no non-zero spectrum to decompose");
   LeftSingularVectors svd = leftSingularVectors(columns.leftCols(used));

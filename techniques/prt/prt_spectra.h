@@ -34,9 +34,13 @@ Eigen::MatrixXd observerOnGrid(const Observer& observer);
 class SpectralBasis {
  public:
   // Each spectrum (81 samples) is one column, scaled to unit length first so that an illuminant
-  // tabulated at 100 weighs as much as a reflectance below 1. At least one non-zero spectrum
-  // (Error otherwise).
-  explicit SpectralBasis(const std::vector<Eigen::VectorXd>& spectra);
+  // tabulated at 100 weighs as much as a reflectance below 1. Each group (an environment's SH
+  // terms, and what a medium makes of them) is scaled as one, by its longest member: a term keeps
+  // its share of the light, so a band that is nearly 0 (a constant map's bands 1–4) adds nothing
+  // rather than a unit-length column of rounding noise — which took the SVD's leading functions and
+  // left spectral PRT 4–9 % dim under uniform maps. At least one non-zero spectrum (Error otherwise).
+  explicit SpectralBasis(const std::vector<Eigen::VectorXd>& spectra,
+                         const std::vector<std::vector<Eigen::VectorXd>>& groups = {});
 
   // How many basis functions exist: min(81, number of spectra).
   int available() const { return static_cast<int>(mSingularValues.size()); }

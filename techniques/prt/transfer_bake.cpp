@@ -150,6 +150,7 @@ void writeTransferFile(const std::filesystem::path& path, std::uint64_t key, int
 
 std::vector<shared::Sh25> readTransferFile(const std::filesystem::path& path, std::uint64_t key) {
   const std::string where = path.string() + ": ";
+  if (std::filesystem::is_directory(path)) throw Error(where + "is a folder, not a PRT transfer file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(where + "cannot open PRT transfer file");
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -223,14 +223,12 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
         for (Eigen::VectorXd& s : textures[i]->representativeSpectra()) spectra.push_back(std::move(s));
       }
     }
-    std::vector<Eigen::VectorXd> light;
-    for (const EnvironmentTerm& t : environment.terms) light.push_back(sampleOnGrid(t.spectrum));
-    spectra.insert(spectra.end(), light.begin(), light.end());
+    const std::vector<Eigen::VectorXd> light = termSpectra(environment);
     // Textured materials take ρ from R̂'s projection, which needs the light as the medium leaves
     // it in the span; untextured ones take it exact per node and do better without (prt_medium.glsl).
     if (d.medium && anyTextured)
       for (Eigen::VectorXd& s : attenuatedSpectra(light, *d.medium)) spectra.push_back(std::move(s));
-    SpectralBasis basis(spectra);
+    SpectralBasis basis(spectra, {light});
     basisCount = std::min(section.basis, basis.available());
     energy = basis.capturedEnergy(basisCount);
     project = [&grid, &input, phi = basis.leading(basisCount)](const std::vector<Spectrum>& r) {

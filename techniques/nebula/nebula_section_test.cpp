@@ -66,7 +66,7 @@ TEST(NebulaSection, BadValuesNameTheirPlace) {
   EXPECT_EQ(error(R"("method": "spline")"),
             "scene.json: /nebula/method: unknown nebula method 'spline' (reference, analytic, projection, "
             "light-density, pre-integration)");
-  EXPECT_EQ(error(R"("box": {"size": 0})"), "scene.json: /nebula/box/size: expected a number in (0, 1e+06), got 0");
+  EXPECT_EQ(error(R"("box": {"size": 0})"), "scene.json: /nebula/box/size: expected a number in (0, 1000000), got 0");
   EXPECT_EQ(error(R"("basis": 7)"), "scene.json: /nebula/basis: expected an integer in [1, 6], got 7");
   EXPECT_EQ(error(R"("reference_samples": 1)"),
             "scene.json: /nebula/reference_samples: must be 0 (Simpson over each passband piece) or at least 2 "

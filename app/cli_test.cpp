@@ -140,6 +140,7 @@ TEST(Cli, ChartWritesTheColourChecker) {
   EXPECT_TRUE(std::filesystem::is_regular_file(out));
   EXPECT_NE(r.out.find("dark skin"), std::string::npos);
   expectOneLineError("chart -o chart.jpg", "chart.jpg: the chart is written as a .png file");
+  expectOneLineError("chart -o chart.png --adaptation cat16", "(known: bradford, cat02, von-kries, none)");
 }
 
 TEST(Cli, LutAndUpsampleCheckTheirInput) {
@@ -504,6 +505,7 @@ TEST(Cli, ColourMetamerMatchesUnderD65AndNotUnderA) {
   EXPECT_LE(h["halves"]["D65"]["max_de2000"].get<double>(), 0.5);
   EXPECT_GE(h["halves"]["A"]["mean_de2000"].get<double>(), 5.0);
   expectOneLineError("prt metamers --reflectance nothing", "nothing");
+  expectOneLineError("colour metamer --reflectance 'dark skin' --observer canon_eos_5d", "'canon_eos_5d' is a camera");
 }
 
 TEST(Cli, PrtReportTurnsTheEnvironment) {

@@ -285,6 +285,9 @@ void colourSpectralTexture(const SpectralTextureOptions& o) {
 
 void colourMetamer(const MetamerOptions& o) {
   const Observer& obs = observer(o.observer);
+  // The metamer is matched and measured in CIELAB, which a camera's raw RGB has no meaning in.
+  if (obs.isCamera) throw Error(fmt::format("--observer: '{}' is a camera; metamers are matched in CIELAB "
+                                            "(cie1931 or cie1964)", o.observer));
   Spectrum original = patchOrFileReflectance(o.reflectance, "--reflectance");
   std::vector<std::pair<std::string, Spectrum>> lights;
   for (const std::string& name : o.under) lights.emplace_back(name, illuminant(name));

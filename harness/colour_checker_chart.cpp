@@ -71,6 +71,10 @@ std::vector<std::vector<ChartPatch>> writeColourCheckerChart(const DemoOptions& 
 void runDemo(const DemoOptions& options) {
   if (options.output.extension() != ".png")
     throw Error(fmt::format("{}: the chart is written as a .png file", options.output.string()));
+  if (options.adaptation != "none" && options.adaptation != "bradford" && options.adaptation != "cat02" &&
+      options.adaptation != "von-kries")
+    throw Error(fmt::format("--adaptation: unknown chromatic adaptation '{}' (known: bradford, cat02, von-kries, none)",
+                            options.adaptation));
   std::vector<std::vector<ChartPatch>> all = writeColourCheckerChart(options);
   if (options.json) {
     nlohmann::json json = nlohmann::json::object();

@@ -213,7 +213,8 @@ class SceneParser {
     try {
       image = decodeImage(bytes, srgb, path.string());
     } catch (const Error& e) {
-      n.fail(path.string() + ": " + e.what());
+      const std::string why = e.what();  // the PNG checks name the file themselves
+      n.fail(why.rfind(path.string() + ": ", 0) == 0 ? why : path.string() + ": " + why);
     }
     mScene.textures.push_back(std::move(image));
     int index = static_cast<int>(mScene.textures.size()) - 1;

@@ -339,6 +339,16 @@ TEST_F(SceneFolder, GltfImagesMustStayInsideAndBePngOrJpeg) {
   EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), "m.gltf: /images/0: OpenEXR images are not supported (only PNG and JPEG)"));
 }
 
+TEST_F(SceneFolder, ABrokenTextureIsNamedOnce) {
+  // A PNG signature and nothing after it: the PNG check names the file, the loader does not again.
+  write("cut.png", std::string("\x89PNG\r\n\x1a\n", 8));
+  fs::path f = sceneWithMaterial(R"({"base_colour_texture": "cut.png"})");
+  const std::string error = errorOf([&] { loadScene(f); });
+  const std::string png = (mDir / "cut.png").string();
+  EXPECT_TRUE(contains(error, "/materials/m/base_colour_texture: " + png + ": ")) << error;
+  EXPECT_EQ(error.find(png + ": " + png), std::string::npos) << error;
+}
+
 TEST_F(SceneFolder, GltfFactorsOutOfRangeNameThePlaceInTheGltf) {
   std::string text;
   {

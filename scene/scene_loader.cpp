@@ -352,7 +352,7 @@ class SceneParser {
       // The nodes' transforms times the object's: a vertex must land within the scene's ±1e12.
       for (std::size_t i = first; i < mScene.meshes.size(); ++i)
         for (const Vertex& v : mScene.meshes[i].vertices)
-          if (!(glm::all(glm::lessThanEqual(glm::abs(v.position), glm::vec3(schema::kFloatInputLimit)))))
+          if (!(glm::all(glm::lessThanEqual(glm::abs(v.position), glm::vec3(static_cast<float>(schema::kFloatInputLimit))))))
             (o.has("transform") ? o.child("transform") : g)
                 .fail(fmt::format("a vertex lands at ({}, {}, {}) once placed: past ±1e12", v.position.x, v.position.y,
                                   v.position.z));

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace prism::gpu {
 
@@ -27,6 +28,12 @@ void runCompute1D(const Program& program, std::size_t invocations, GLbitfield ba
   if (groups > 0xffffffffu)
     throw std::invalid_argument("prism::gpu::runCompute1D: too many invocations");
   runCompute(program, {static_cast<GLuint>(groups), 1, 1}, barriers);
+}
+
+std::optional<long> shaderLoopIterationLimit() {
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (renderer != nullptr && std::string_view(renderer).starts_with("llvmpipe")) return 65535;
+  return std::nullopt;
 }
 
 }  // namespace prism::gpu

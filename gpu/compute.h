@@ -6,6 +6,7 @@
 #include <epoxy/gl.h>
 
 #include <cstddef>
+#include <optional>
 
 #include "gpu/program.h"
 
@@ -27,5 +28,11 @@ void runCompute(const Program& program, WorkGroups groups,
 // must ignore the surplus invocations of the last group).
 void runCompute1D(const Program& program, std::size_t invocations,
                   GLbitfield barriers = kDefaultComputeBarriers);
+
+// Loop iterations one invocation may run, all its loops together, before the current context's
+// driver stops them and lets the shader go on with partial sums: 65 535 on Mesa's llvmpipe
+// (LP_MAX_TGSI_LOOP_ITERATIONS), none elsewhere. A long march splits its work to stay within it
+// (techniques/nebula/gpu/nebula_march_segments.h).
+std::optional<long> shaderLoopIterationLimit();
 
 }  // namespace prism::gpu

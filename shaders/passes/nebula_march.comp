@@ -25,6 +25,13 @@
 // projection. The reference, analytic and pre-integration add into the colour directly.
 // NEBULA_NODE_CHUNK: the reference's node loop's chunk (16 unless set).
 //
+// A march may take several dispatches (nebula_march_segments.h: llvmpipe caps an invocation's
+// loop iterations): each marches steps [uStepBegin, uStepEnd) of items [uItemBegin, uItemEnd) —
+// the stars of the direct methods, the groups of projection and light–density — and carries on
+// from what the dispatches before it left: the colour and lines' light (Marched), the moments, and
+// the camera's optical depth at uStepBegin (uOpticalDepth, which the dispatch holding the last
+// items advances).
+//
 // Grids are read with texelFetch and interpolated between voxel centres as the CPU does
 // (common_nebula_fields.glsl), not by the sampler, whose quantised weights the twin test would measure.
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -53,11 +60,11 @@ layout(std430, binding = 3) readonly buffer Lines { vec4 lines[]; };  // λ (µm
 // Per pixel p of P, value v at moments[v·P + p] (neighbouring invocations write neighbouring
 // words): v = s·card + j (projection) or k·card + j (light–density), written once per group at the
 // ray's end, so the number of stars has no limit but the buffer's size.
-layout(std430, binding = 4) writeonly buffer Moments { float moments[]; };
+layout(std430, binding = 4) buffer Moments { float moments[]; };
 // What the march made for the finish besides the moments, [v·P + p]: v = 0…2 the colour the direct
 // methods integrate in the march (0 for projection and light–density), v = 3 + l the light of
 // line l of uLineCount (≤ kMaxNebulaLines).
-layout(std430, binding = 5) writeonly buffer Marched { float marched[]; };
+layout(std430, binding = 5) buffer Marched { float marched[]; };
 const int kMaxNebulaLines = 16;
 #ifndef NEBULA_ANALYTIC  // its binding holds the analytic pieces' ranges there
 layout(std430, binding = 6) readonly buffer BasisMatrix { float basisM[]; };  // M(k, j) at [8k + j]
@@ -90,6 +97,10 @@ uniform vec3 uUp;
 uniform float uTanHalf;
 uniform float uAspect;
 uniform int uSteps;
+uniform int uStepBegin;  // this dispatch's steps and items (above)
+uniform int uStepEnd;
+uniform int uItemBegin;
+uniform int uItemEnd;
 uniform float uDepthPerDensity;  // C_T·κ (µm per unit length at ρ = 1)
 uniform float uScattering;       // σ₁
 uniform float uEmission;         // ε
@@ -114,7 +125,7 @@ uniform float uCubePerWorld;
 
 // The camera's optical depth g (µm) where each ray stopped, for the lighting pass to dim what
 // lies behind the nebula by e^(−g/λ) (shared/nebula_lighting.glsl); row 0 at the bottom.
-layout(r32f, binding = 0) uniform writeonly image2D uOpticalDepth;
+layout(r32f, binding = 0) uniform image2D uOpticalDepth;
 
 // How far the ray through pixel px may go, in the cube's units: to the scene's surface, or on.
 float rayLimit(ivec2 px) {
@@ -178,11 +189,17 @@ void main() {
   int pixel = px.y * uSize.x + px.x;  // row 0 at the top, as the CPU's image
   int pixelCount = uSize.x * uSize.y;
 #if defined(NEBULA_REFERENCE) || defined(NEBULA_ANALYTIC) || defined(NEBULA_PRE_INTEGRATION)
-  const int groups = 1;  // every star in the one march, into the colour
+  // Every star of [uItemBegin, uItemEnd) in the one march, into the colour.
+  const int groupBegin = 0;
+  const int groupEnd = 1;
+  const bool lastItems = uItemEnd >= uCount;
 #else
-  int lanes = uCard <= 4 ? 8 : 4;
-  int groups = max(1, (uCount + lanes - 1) / lanes);  // a march per group of stars or 2D elements
+  int lanes = uCard <= 4 ? 8 : 4;  // a march per group of stars or 2D elements
+  int groupBegin = uItemBegin;
+  int groupEnd = max(groupBegin + 1, uItemEnd);
+  const bool lastItems = uItemEnd >= (uCount + lanes - 1) / lanes;
 #endif
+  const bool resume = uStepBegin > 0 || uItemBegin > 0;  // an earlier dispatch left this pixel's values
   ivec3 n = textureSize(uDensity, 0);
 
   float u = (2.0f * (float(px.x) + 0.5f) / float(uSize.x) - 1.0f) * uTanHalf * uAspect;
@@ -191,18 +208,32 @@ void main() {
   vec3 colour = vec3(0.0f);
   float lineSum[kMaxNebulaLines];
   for (int l = 0; l < kMaxNebulaLines; ++l) lineSum[l] = 0.0f;
+  if (resume) {
+    for (int ch = 0; ch < 3; ++ch) colour[ch] = marched[ch * pixelCount + pixel];
+    for (int l = 0; l < uLineCount; ++l) lineSum[l] = marched[(3 + l) * pixelCount + pixel];
+  }
+  ivec2 depthTexel = ivec2(px.x, uSize.y - 1 - px.y);
+  float gStart = uStepBegin > 0 ? imageLoad(uOpticalDepth, depthTexel).r : 0.0f;
   float t0;
   float t1;
-  float gCam = 0.0f;
+  float gCam = gStart;
   bool inside = nebulaClipToCube(uCameraPosition, dir, 1e30f, t0, t1);
   float tLimit = rayLimit(px);
-  for (int group = 0; group < groups; ++group) {
+  for (int group = groupBegin; group < groupEnd; ++group) {
     // The group's moments: lane c's elements j < 4 in acc[c][j]; with four lanes, 4…7 in acc[4 + c].
     vec4 acc[8];
     for (int k = 0; k < 8; ++k) acc[k] = vec4(0.0f);
-    gCam = 0.0f;
+#if !defined(NEBULA_REFERENCE) && !defined(NEBULA_ANALYTIC) && !defined(NEBULA_PRE_INTEGRATION)
+    if (uStepBegin > 0)
+      for (int c = 0; c < lanes && group * lanes + c < uCount; ++c)
+        for (int j = 0; j < uCard; ++j) {
+          float v = moments[((group * lanes + c) * uCard + j) * pixelCount + pixel];
+          if (j < 4) acc[c][j] = v; else acc[4 + c][j - 4] = v;
+        }
+#endif
+    gCam = gStart;
     float dt = inside ? (t1 - t0) / float(uSteps) : 0.0f;
-    for (int i = 0; inside && i < uSteps; ++i) {
+    for (int i = uStepBegin; inside && i < uStepEnd; ++i) {
       if (nebulaRayOpaque(gCam)) break;
       float t = t0 + (float(i) + 0.5f) * dt;
       if (t > tLimit) break;  // behind the scene's surface
@@ -213,7 +244,7 @@ void main() {
       float dg = uDepthPerDensity * rho * dt;
       float g = gCam + 0.5f * dg;  // the sample sees half of its own step's extinction
       gCam += dg;
-      if (group == 0 && uLineCount > 0) {  // the lines once, in the first group's march
+      if (group == 0 && uItemBegin == 0 && uLineCount > 0) {  // the lines once, with the first group or stars
         vec4 zone[2] = vec4[2](vec4(1.0f), vec4(1.0f));
         for (int slab = 0; slab * 4 < uZoneCount; ++slab) zone[slab] = fieldOf(uZones, cell, slab, n.z);
         for (int l = 0; l < uLineCount; ++l) {
@@ -235,17 +266,18 @@ void main() {
         }
       }
 #elif defined(NEBULA_REFERENCE)
-      for (int slab = 0; slab * 4 < uCount; ++slab) {
+      for (int slab = uItemBegin / 4; slab * 4 < uItemEnd; ++slab) {
         vec4 gs = fieldOf(uField, cell, slab, n.z);
-        for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
+        for (int c = 0; c < 4 && slab * 4 + c < uItemEnd; ++c) {
           int s = slab * 4 + c;
+          if (s < uItemBegin) continue;
           vec3 toStar = stars[s].xyz - p;
           float w = nebulaStarWeight(uScattering * rho * dt, stars[s].w, dot(toStar, toStar));
           float x = g + gs[c];
           vec3 sum = vec3(0.0f);
           // In chunks (padded with zero weights), a loop of constant count the compiler unrolls:
           // Mesa's llvmpipe stops a shader's loops after 65 535 iterations an invocation, nested
-          // loops counted together, which a node loop over 100 steps × stars would pass.
+          // loops counted together; fewer iterations, fewer dispatches (nebula_march_segments.h).
           for (int ch = 0; ch < 3; ++ch)
             for (int k0 = 0; k0 < uNodeCount[ch]; k0 += NEBULA_NODE_CHUNK)
               for (int u = 0; u < NEBULA_NODE_CHUNK; ++u) {
@@ -256,10 +288,11 @@ void main() {
         }
       }
 #elif defined(NEBULA_ANALYTIC)
-      for (int slab = 0; slab * 4 < uCount; ++slab) {
+      for (int slab = uItemBegin / 4; slab * 4 < uItemEnd; ++slab) {
         vec4 gs = fieldOf(uField, cell, slab, n.z);
-        for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
+        for (int c = 0; c < 4 && slab * 4 + c < uItemEnd; ++c) {
           int s = slab * 4 + c;
+          if (s < uItemBegin) continue;
           vec3 toStar = stars[s].xyz - p;
           float w = nebulaStarWeight(uScattering * rho * dt, stars[s].w, dot(toStar, toStar));
           float x = g + gs[c];
@@ -274,10 +307,11 @@ void main() {
         }
       }
 #elif defined(NEBULA_PRE_INTEGRATION)
-      for (int slab = 0; slab * 4 < uCount; ++slab) {
+      for (int slab = uItemBegin / 4; slab * 4 < uItemEnd; ++slab) {
         vec4 gs = fieldOf(uField, cell, slab, n.z);
-        for (int c = 0; c < 4 && slab * 4 + c < uCount; ++c) {
+        for (int c = 0; c < 4 && slab * 4 + c < uItemEnd; ++c) {
           int s = slab * 4 + c;
+          if (s < uItemBegin) continue;
           vec3 toStar = stars[s].xyz - p;
           float w = nebulaStarWeight(uScattering * rho * dt, stars[s].w, dot(toStar, toStar));
           float u = (g + gs[c]) / uMomentStep;
@@ -318,5 +352,5 @@ void main() {
   }
   for (int ch = 0; ch < 3; ++ch) marched[ch * pixelCount + pixel] = colour[ch];
   for (int l = 0; l < uLineCount; ++l) marched[(3 + l) * pixelCount + pixel] = lineSum[l];
-  imageStore(uOpticalDepth, ivec2(px.x, uSize.y - 1 - px.y), vec4(gCam));
+  if (lastItems) imageStore(uOpticalDepth, depthTexel, vec4(gCam));
 }

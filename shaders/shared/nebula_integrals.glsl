@@ -25,8 +25,9 @@
 //
 // Its loop, and the series of nebulaE1 and nebulaInversePowerExpIntegrals, run in chunks of 8,
 // loops of constant count that shader compilers unroll: Mesa's llvmpipe stops a shader's loops
-// after 65 535 iterations an invocation, nested loops counted together (nebula_march.comp), which
-// the analytic method's march (these per sample, star, channel and passband piece) would pass.
+// after 65 535 iterations an invocation, nested loops counted together, and the analytic march
+// (these per sample, star, channel and passband piece) splits into fewer dispatches the fewer it
+// counts (techniques/nebula/gpu/nebula_march_segments.h).
 PRISM_INLINE NEBULA_REAL nebulaEnContinuedFraction(int m, NEBULA_REAL u) {
   NEBULA_REAL order = NEBULA_REAL(m);
   NEBULA_REAL f = 0.0f;

@@ -17,6 +17,9 @@
 namespace prism::nebula {
 namespace {
 
+// Stars or 2D elements a group of projection or light–density marches at once (nebula_march.comp).
+int lanesOf(int card) { return card <= 4 ? 8 : 4; }
+
 gpu::Program computeProgram(const char* file, const char* label, std::vector<gpu::ShaderDefine> defines = {}) {
   gpu::ProgramDesc desc;
   desc.compute = shaderDirectory() / "passes" / file;
@@ -86,6 +89,7 @@ NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
       mAnalytic(computeProgram("nebula_march.comp", "nebula march (analytic)", {{"NEBULA_ANALYTIC", ""}})),
       mPreIntegration(computeProgram("nebula_march.comp", "nebula march (pre-integration)", {{"NEBULA_PRE_INTEGRATION", ""}})),
       mFinish(computeProgram("nebula_finish.comp", "nebula finish")) {
+  if (const std::optional<long> limit = gpu::shaderLoopIterationLimit()) mLoopBudget = *limit * 3 / 4;
   const NebulaPrecomputed& pre = renderer.precomputed();
   const DensityGrid& d = pre.model.density;
   gpu::Texture3DDesc density;
@@ -281,7 +285,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   p.setUniform("uInverseProjection", view.inverseProjection);
   p.setUniform("uCubePerWorld", view.cubePerWorld);
   if (view.depthTexture) glBindTextureUnit(2, view.depthTexture);
-  mOpticalDepth.bindImage(0, GL_WRITE_ONLY);
+  mOpticalDepth.bindImage(0, GL_READ_WRITE);
   p.setUniform("uSteps", s.steps);
   p.setUniform("uDepthPerDensity", static_cast<float>(kCtUm * m.extinction));
   setIfActive(p, "uScattering", static_cast<float>(m.scattering));
@@ -317,9 +321,60 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   }
   if (reference) mReferenceNodes.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   if (preIntegration) mPreIntegrated.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
-  // The optical depth is an image the lighting pass then fetches and tests read back.
-  gpu::runCompute(p, {static_cast<GLuint>((view.width + 7) / 8), static_cast<GLuint>((view.height + 7) / 8), 1},
-                  gpu::kDefaultComputeBarriers | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  // In dispatches that each stay within the driver's loop budget (nebula_march_segments.h); the
+  // optical depth is an image the next dispatch loads, the lighting pass fetches, tests read back.
+  const MarchLoopCost cost = mLoopCost = loopCost(s.method, pre);
+  const int items = direct ? static_cast<int>(m.stars.size()) : (mCount + lanesOf(mCard) - 1) / lanesOf(mCard);
+  const std::vector<MarchSegment> segments =
+      mLoopBudget ? planMarchSegments(cost, s.steps, items, *mLoopBudget) : std::vector<MarchSegment>{{0, s.steps, 0, items}};
+  for (const MarchSegment& segment : segments) {
+    p.setUniform("uStepBegin", segment.stepBegin);
+    p.setUniform("uStepEnd", segment.stepEnd);
+    p.setUniform("uItemBegin", segment.itemBegin);
+    p.setUniform("uItemEnd", segment.itemEnd);
+    gpu::runCompute(p, {static_cast<GLuint>((view.width + 7) / 8), static_cast<GLuint>((view.height + 7) / 8), 1},
+                    gpu::kDefaultComputeBarriers | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                        GL_TEXTURE_UPDATE_BARRIER_BIT);
+  }
+  mDispatches = static_cast<int>(segments.size());
+}
+
+// Upper bounds of nebula_march.comp's loop iterations (nebula_march_segments.h), loop by loop.
+// Per step: the step loop, the zones' slabs (≤ 2) and the lines. Per star of a direct method: its
+// slab and lane loops and the channels' (3); the reference's node chunks (the chunk itself
+// unrolled); the analytic method's pieces, each at most kPieceLoops (the closed form's exponential
+// integrals: the continued fraction's three chunks at each bound; a Wien star's four negative powers,
+// each five chunks of its series); pre-integration nothing more. Per group of projection or
+// light–density: its slabs (2) and lanes, each lane's coefficients beyond the table (the basis
+// matrix's 8 + 36, the raw moments' 4 + 2·4 exponential integrals of ≤ 3 chunks, for both halves).
+MarchLoopCost NebulaGpuMarcher::loopCost(Method method, const NebulaPrecomputed& pre) const {
+  constexpr long kFixed = 256, kCoefficients = 44 + 2 * (4 + 2 * 4 * 3);
+  MarchLoopCost cost{kFixed, 3 + mLineCount, 0, false};
+  switch (method) {
+    case Method::Reference:
+      cost.perItem = 5;
+      for (int c = 0; c < 3; ++c) cost.perItem += (mNodes.count[c] + mNodes.chunk - 1) / mNodes.chunk;
+      break;
+    case Method::Analytic:
+      cost.perItem = 5;
+      for (std::size_t st = 0; st < pre.analytic.f32.size(); ++st) {
+        long star = 5;
+        const long perPiece = 1 + (pre.analytic.wienExponentUm[st] > 0.0 ? 4 * (1 + 5) : 2 * 3);
+        for (const auto& pieces : pre.analytic.f32[st]) star += static_cast<long>(pieces.size()) * perPiece;
+        cost.perItem = std::max(cost.perItem, star);
+      }
+      break;
+    case Method::PreIntegration:
+      cost.perItem = 2;
+      break;
+    case Method::LightDensity:
+      cost = {kFixed, 3 + mLineCount + kCoefficients, 2 + 4, true};
+      break;
+    case Method::Projection:
+      cost = {kFixed, 3 + mLineCount, 2 + lanesOf(mCard) * (1 + kCoefficients), true};
+      break;
+  }
+  return cost;
 }
 
 void NebulaGpuMarcher::finishOnGpu() {

@@ -24,6 +24,7 @@
 #include "gpu/buffer.h"
 #include "gpu/program.h"
 #include "gpu/texture.h"
+#include "techniques/nebula/gpu/nebula_march_segments.h"
 #include "techniques/nebula/nebula_render.h"
 
 namespace prism::nebula {
@@ -92,10 +93,18 @@ class NebulaGpuMarcher {
 
   std::size_t gpuMemoryBytes() const;
 
+  // The loop iterations each dispatch of a march may run (nebula_march_segments.h): by default
+  // three quarters of the driver's limit (gpu::shaderLoopIterationLimit, a margin for loops the
+  // bound takes as unrolled), none without one. Tests set less to split any march.
+  void setLoopBudget(std::optional<long> budget) { mLoopBudget = budget; }
+  int dispatches() const { return mDispatches; }  // the last march's
+  const MarchLoopCost& loopCost() const { return mLoopCost; }  // what the last march was split by
+
  private:
   void uploadFilters();  // the lines' responses and the finish's weights
   // The reference's nodes and weights for these settings, unless the last upload was for them.
   void uploadReferenceNodes(const RenderSettings& settings);
+  MarchLoopCost loopCost(Method method, const NebulaPrecomputed& pre) const;
 
   const NebulaRenderer* mRenderer;
   gpu::Program mProjection, mLightDensity, mReference, mAnalytic, mPreIntegration, mFinish;
@@ -124,6 +133,9 @@ class NebulaGpuMarcher {
   int mCount = 0;  // moment groups of the last march: stars, or 2D elements (none for the direct methods)
   int mCard = 0;
   int mLineCount = 0;
+  std::optional<long> mLoopBudget;
+  int mDispatches = 0;
+  MarchLoopCost mLoopCost;
 };
 
 }  // namespace prism::nebula

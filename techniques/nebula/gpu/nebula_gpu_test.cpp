@@ -23,27 +23,6 @@
 namespace prism::nebula {
 namespace {
 
-NebulaModel smallNebula(std::string filters, int starCount) {
-  NebulaModel m;
-  NoiseParameters noise;
-  noise.resolution = 24;
-  noise.seed = 7;
-  m.density = generateFbm(noise, 0);
-  m.extinction = 3.0;
-  m.scattering = 1.0;
-  m.emission = 0.002;
-  m.lineGroups = {{"H I Balmer (case B)", 1.0}, {"[O III] doublet", 0.8}, {"[S II] doublet", 0.4}};
-  m.filters = std::move(filters);
-  const NebulaStar stars[] = {{{0.5, 0.55, 0.45}, 12000.0, 1.0},  // inside the cloud
-                              {{0.3, 0.4, 0.6}, 4000.0, 0.6},
-                              {{0.7, 0.3, 0.3}, 25000.0, 0.8},
-                              {{1.6, 0.2, 0.5}, 30000.0, 3.0},    // outside the cube
-                              {{0.2, 0.8, 0.2}, 8000.0, 0.5}};
-  for (int i = 0; i < starCount; ++i) m.stars.push_back(stars[i]);
-  m.camera.width = m.camera.height = 32;
-  return m;
-}
-
 struct TwinCase {
   const char* filters;
   int stars;
@@ -56,21 +35,6 @@ struct TwinCase {
 };
 
 class NebulaGpuTwin : public testing::TestWithParam<TwinCase> {};
-
-// The methods that add into the colour directly (no moments) round N·G sums of K terms each: the
-// reference K nodes, pre-integration the four Catmull–Rom taps. 0 for the others (twinRatio's
-// N + G·card).
-std::size_t directTerms(const NebulaRenderer& renderer, const RenderSettings& s, Method method, int steps, int stars) {
-  std::size_t k = 0;
-  if (method == Method::Reference) {
-    for (const auto& channel : renderer.referenceNodes(s).lambdaUm) k = std::max(k, channel.size());
-  } else if (method == Method::PreIntegration) {
-    k = 4;
-  } else {
-    return 0;
-  }
-  return static_cast<std::size_t>(steps * stars) + k;
-}
 
 TEST_P(NebulaGpuTwin, MatchesTheCpuMarcherPerPixel) {
   gpu::HeadlessContext context;
@@ -123,8 +87,8 @@ INSTANTIATE_TEST_SUITE_P(Cases, NebulaGpuTwin,
                                          TwinCase{"hubble", 5, Method::Reference, false, StarModel::Planck, false, 7},
                                          // Analytic: the closed form (CIE 1931's broad pieces,
                                          // a Wien star: negative powers) and the series (the HST
-                                         // bands' narrow pieces). One star under CIE 1931: five
-                                         // pass llvmpipe's loop cap at 100 steps.
+                                         // bands' narrow pieces). Many stars and steps:
+                                         // nebula_march_segments_test.cpp.
                                          TwinCase{"cie1931", 1, Method::Analytic, true, StarModel::Wien},
                                          TwinCase{"hubble", 3, Method::Analytic, true},
                                          TwinCase{"hubble", 1, Method::Analytic, false, StarModel::Wien},

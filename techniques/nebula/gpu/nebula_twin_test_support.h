@@ -1,5 +1,6 @@
-// What the nebula's GPU tests hold the GPU marcher to: its CPU twin, within a bound derived from
-// float rounding (the marcher's own test and the renderer pass's, render/nebula_pass_test.cpp).
+// The nebula's GPU tests' small nebula, and what they hold the GPU marcher to: its CPU twin,
+// within a bound derived from float rounding (the marcher's tests and the renderer pass's,
+// render/nebula_pass_test.cpp).
 //
 // The twin bound, per pixel and channel, derived from float rounding. Both marchers read the same
 // uploaded arrays at the same samples with the same shared formulas (nebula_march.glsl,
@@ -21,11 +22,53 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "techniques/nebula/gpu/nebula_gpu_marcher.h"
+#include "techniques/nebula/nebula_density.h"
 
 namespace prism::nebula {
+
+// The tests' nebula: a 24³ fBm cloud, three line groups, up to five stars (one outside the cube),
+// a 32×32 image.
+inline NebulaModel smallNebula(std::string filters, int starCount) {
+  NebulaModel m;
+  NoiseParameters noise;
+  noise.resolution = 24;
+  noise.seed = 7;
+  m.density = generateFbm(noise, 0);
+  m.extinction = 3.0;
+  m.scattering = 1.0;
+  m.emission = 0.002;
+  m.lineGroups = {{"H I Balmer (case B)", 1.0}, {"[O III] doublet", 0.8}, {"[S II] doublet", 0.4}};
+  m.filters = std::move(filters);
+  const NebulaStar stars[] = {{{0.5, 0.55, 0.45}, 12000.0, 1.0},  // inside the cloud
+                              {{0.3, 0.4, 0.6}, 4000.0, 0.6},
+                              {{0.7, 0.3, 0.3}, 25000.0, 0.8},
+                              {{1.6, 0.2, 0.5}, 30000.0, 3.0},    // outside the cube
+                              {{0.2, 0.8, 0.2}, 8000.0, 0.5}};
+  for (int i = 0; i < starCount; ++i) m.stars.push_back(stars[i]);
+  m.camera.width = m.camera.height = 32;
+  return m;
+}
+
+// The methods that add into the colour directly (no moments) round N·G sums of K terms each: the
+// reference K nodes, pre-integration the four Catmull–Rom taps. 0 for the others (twinRatio's
+// N + G·card).
+inline std::size_t directTerms(const NebulaRenderer& renderer, const RenderSettings& s, Method method, int steps, int stars) {
+  std::size_t k = 0;
+  if (method == Method::Reference) {
+    for (const auto& channel : renderer.referenceNodes(s).lambdaUm) k = std::max(k, channel.size());
+  } else if (method == Method::PreIntegration) {
+    k = 4;
+  } else {
+    return 0;
+  }
+  return static_cast<std::size_t>(steps * stars) + k;
+}
 
 // The largest |GPU − CPU| over its bound (above), over pixels and channels: ≤ 1 passes.
 inline double twinRatio(const NebulaImage& gpuImage, const NebulaImage& cpu, const NebulaGpuMarcher& gpu, int steps,

@@ -19,6 +19,10 @@
 // rasteriser's own BRDF under the sunlight that reaches its depth. For |x·S| < 1e-3 the
 // quotient (1 − e^(−xS))/x is its series S·(1 − xS/2 + (xS)²/6), which keeps it exact as x → 0
 // (looking up where Kd > σt, as in clear water beyond 675 nm), where the closed form is 0/0.
+// Elsewhere e^(−Kd·z_c)·(1 − e^(−xS)) is taken as e^(−Kd·z_c) − e^(−Kd·z_c − xS): looking up
+// through strongly attenuating water (x < 0, Kd large), e^(−xS) alone overflows float while the
+// product stays finite (the second exponent is the ray end's own attenuation, ≤ 0 where that end
+// is under water).
 
 // The water's block of the lighting pass (techniques/underwater/water_section.h packs it): its
 // constants in a std140 uniform block, and per batch σs (j = 0), σt = σa + σs (j = 1) and Kd
@@ -43,9 +47,10 @@ PRISM_INLINE vec4 waterInScattering(IN(vec4) sigmaS, IN(vec4) sigmaT, IN(vec4) k
   for (int j = 0; j < 4; ++j) {
     float x = kd[j] * descentPerM + sigmaT[j];
     float xs = x * distanceM;
-    float path = abs(xs) < 1e-3f ? distanceM * (1.0f - xs * 0.5f + xs * xs * (1.0f / 6.0f))
-                                 : (1.0f - exp(-xs)) / x;
-    result[j] = sigmaS[j] * exp(-kd[j] * cameraDepthM) * (1.0f / (4.0f * kPi)) * path;
+    float atCamera = -kd[j] * cameraDepthM;  // the exponents of e^(−Kd·z_c) and of it times e^(−xS)
+    float scattered = abs(xs) < 1e-3f ? exp(atCamera) * distanceM * (1.0f - xs * 0.5f + xs * xs * (1.0f / 6.0f))
+                                      : (exp(atCamera) - exp(atCamera - xs)) / x;
+    result[j] = sigmaS[j] * (1.0f / (4.0f * kPi)) * scattered;
   }
   return result;
 }

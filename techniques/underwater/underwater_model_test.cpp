@@ -69,6 +69,26 @@ TEST(UnderwaterModel, TheSeriesTakesOverWhereTheClosedFormIsZeroOverZero) {
   EXPECT_TRUE(std::isfinite(v.x));
 }
 
+// Looking up through strongly attenuating water (a user's `--set water.kd_scale=50` on the reef):
+// x = Kd·w + σt < 0 and e^(−xS) alone overflows float, which made 614 of 3 600 pixels NaN
+// (∞ times e^(−Kd·z_c) = 0). The integral itself is small and finite.
+TEST(UnderwaterModel, LookingUpThroughDarkWaterStaysFinite) {
+  for (float kdValue : {2.0f, 20.0f, 60.0f}) {
+    glm::vec4 sigmaS(0.05f), sigmaT(0.1f), kd(kdValue);
+    for (float depth : {10.0f, 30.0f})
+      for (float distance : {5.0f, 9.9f}) {  // straight up (w = −1), the end still under water
+        glm::vec4 v = shared::waterInScattering(sigmaS, sigmaT, kd, depth, -1.0f, distance);
+        const double numeric = numericalInScattering(0.05, 0.1, kdValue, depth, -1.0, distance);
+        ASSERT_TRUE(std::isfinite(v.x)) << "Kd " << kdValue << " depth " << depth << " S " << distance;
+        if (numeric < 1e-30) {
+          EXPECT_LT(v.x, 1e-30f);
+        } else {
+          EXPECT_LT(std::abs(v.x - numeric) / numeric, 1e-3) << "Kd " << kdValue << " depth " << depth << " S " << distance;
+        }
+      }
+  }
+}
+
 TEST(UnderwaterModel, TransmittanceAndDownwellingAreBeerLambert) {
   glm::vec4 t = shared::waterTransmittance(glm::vec4(0.1f, 0.2f, 0.0f, 1.0f), 3.0f);
   EXPECT_NEAR(t.x, std::exp(-0.3), 1e-6);

@@ -109,6 +109,24 @@ TEST(CpuShading, UnderTheColourSpacesWhiteSpectralLightingReproducesRgb) {
   }
 }
 
+// RGB mode carries a light as its colour in the scene's colour space; a 450 nm LED's is far
+// outside sRGB (negative red and green). Compressed into the gamut like an RGB intent, it lights
+// no albedo with negative light: a green one measured Y −8 166 cd/m² before, the reference 126.
+TEST(CpuShading, RgbModeLightsNothingWithNegativeLight) {
+  Scene scene = oneLightScene("led:450:20", 10000.0f);
+  FrameSettings rgb;
+  rgb.mode = RenderMode::Rgb;
+  for (glm::vec3 albedo : {glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f),
+                           glm::vec3(1.0f)}) {
+    const glm::vec3 xyz = shadeOnce(scene, rgb, UpFacing(albedo, 0.0f, 1.0f), productionTable());
+    EXPECT_GE(xyz.y, 0.0f) << albedo.x << " " << albedo.y << " " << albedo.z;
+    EXPECT_GE(std::min(xyz.x, xyz.z), 0.0f);
+  }
+  // White keeps the light's luminance, E/π: the compression keeps Y.
+  const glm::vec3 white = shadeOnce(scene, rgb, UpFacing(glm::vec3(1.0f), 0.0f, 1.0f), productionTable());
+  EXPECT_NEAR(white.y / (10000.0 / 3.14159265358979), 1.0, 1e-4);
+}
+
 TEST(CpuShading, NaiveUpsamplingOfGreyIsFlat) {
   // Box upsampling of a grey is that grey at every wavelength: Y = grey · E/π.
   Scene scene = oneLightScene("A", 500.0f);

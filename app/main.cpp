@@ -403,10 +403,10 @@ int main(int argc, char** argv) {
   auto* atmOptimise = atmosphereCmd->add_subcommand(
       "optimise", "fit the four wavelengths and weights (and the 3x4 matrix), with and without aerosols");
   for (CLI::App* c : {atmEvaluate, atmOptimise}) {
-    c->add_option("--reference-step", atm.referenceStepNm, "nm between the reference's wavelengths (0.5..50)")->capture_default_str();
-    c->add_option("--zeniths", atm.zeniths, "view zenith bins over the upper hemisphere")->capture_default_str();
-    c->add_option("--azimuths", atm.azimuths, "view azimuth bins over 0..180° from the sun")->capture_default_str();
-    c->add_flag("--quick", atm.quick, "10 nm reference, 8 x 16 directions (seconds)");
+    c->add_option("--reference-step", atm.referenceStepNm, "nm between the reference's wavelengths (0.5..50; default 1, --quick 10)");
+    c->add_option("--zeniths", atm.zeniths, "view zenith bins over the upper hemisphere (1..512; default 16, --quick 8)");
+    c->add_option("--azimuths", atm.azimuths, "view azimuth bins over 0..180° from the sun (1..1024; default 32, --quick 16)");
+    c->add_flag("--quick", atm.quick, "10 nm reference, 8 x 16 directions (seconds) where those options are not given");
   }
   atmEvaluate->add_flag("!--no-aerosols", atm.aerosols, "Rayleigh + ozone only (and its optimised set)");
   atmEvaluate->add_option("--wavelengths", atm.wavelengths, "an optimised wavelength file (default: data/atmosphere_wavelengths.json)");
@@ -494,14 +494,8 @@ int main(int argc, char** argv) {
       if (whiteOpt->count() > 0) cmp.white = cmpWhite;
       runCompare(cmp);
     }
-    if (*atmEvaluate) {
-      if (atm.zeniths < 1 || atm.zeniths > 512 || atm.azimuths < 1 || atm.azimuths > 1024) throw prism::Error("--zeniths must be within 1..512 and --azimuths within 1..1024");
-      return runAtmosphereEvaluate(atm);
-    }
-    if (*atmOptimise) {
-      if (atm.zeniths < 1 || atm.zeniths > 512 || atm.azimuths < 1 || atm.azimuths > 1024) throw prism::Error("--zeniths must be within 1..512 and --azimuths within 1..1024");
-      runAtmosphereOptimise(atm);
-    }
+    if (*atmEvaluate) return runAtmosphereEvaluate(atm);
+    if (*atmOptimise) runAtmosphereOptimise(atm);
     if (*validateCmd) return runValidate(val);
     if (*viewCmd) {
       view.settings = viewSettings.given();

@@ -20,15 +20,6 @@ const std::vector<double> kTableElevations{-2.0, 0.0, 2.0, 5.0, 10.0, 20.0, 45.0
 const std::vector<double> kFitElevations{-4.0, -2.0, -1.0, 0.0, 1.0, 2.0, 3.0, 5.0,
                                          7.0, 10.0, 15.0, 20.0, 30.0, 45.0, 60.0, 90.0};
 
-AtmosphereCommandOptions effective(AtmosphereCommandOptions o) {
-  if (o.quick) {
-    o.referenceStepNm = 10.0;
-    o.zeniths = 8;
-    o.azimuths = 16;
-  }
-  return o;
-}
-
 AtmosphereParameters parametersFor(bool aerosols) {
   AtmosphereParameters p;
   p.aerosols = aerosols;
@@ -41,20 +32,28 @@ Progress bar(ProgressBar& b) {
 
 }  // namespace
 
-int runAtmosphereEvaluate(const AtmosphereCommandOptions& raw) {
-  AtmosphereCommandOptions o = effective(raw);
+SkyRun skyRunOf(const AtmosphereCommandOptions& o) {
+  SkyRun run{o.referenceStepNm.value_or(o.quick ? 10.0 : 1.0), o.zeniths.value_or(o.quick ? 8 : 16),
+             o.azimuths.value_or(o.quick ? 16 : 32)};
+  if (run.zeniths < 1 || run.zeniths > 512 || run.azimuths < 1 || run.azimuths > 1024)
+    throw Error("--zeniths must be within 1..512 and --azimuths within 1..1024");
+  return run;
+}
+
+int runAtmosphereEvaluate(const AtmosphereCommandOptions& o) {
+  const SkyRun run = skyRunOf(o);
   AtmosphereParameters p = parametersFor(o.aerosols);
   const char* set = o.aerosols ? "aerosols" : "rayleigh-ozone";
-  OptimisedWavelengths optimised = o.wavelengths.empty() ? loadOptimisedWavelengths(set)
-                                                         : loadOptimisedWavelengths(o.wavelengths, set);
-  SkySamples samples = makeSkySamples(kTableElevations, o.zeniths, o.azimuths);
+  if (o.wavelengths && o.wavelengths->empty()) throw Error("--wavelengths: expected a file, got \"\"");
+  OptimisedWavelengths optimised = o.wavelengths ? loadOptimisedWavelengths(*o.wavelengths, set) : loadOptimisedWavelengths(set);
+  SkySamples samples = makeSkySamples(kTableElevations, run.zeniths, run.azimuths);
   std::vector<SkyStrategy> strategies{rgbStrategy(), uniformStrategy(4), optimisedStrategy(optimised, false),
                                       optimisedStrategy(optimised, true), uniformStrategy(16)};
-  ProgressBar referenceBar(fmt::format("reference sky ({:g} nm)", o.referenceStepNm));
-  std::vector<Eigen::Vector3d> reference = skyTristimulus(p, referenceStrategy(o.referenceStepNm), samples, bar(referenceBar));
+  ProgressBar referenceBar(fmt::format("reference sky ({:g} nm)", run.referenceStepNm));
+  std::vector<Eigen::Vector3d> reference = skyTristimulus(p, referenceStrategy(run.referenceStepNm), samples, bar(referenceBar));
   nlohmann::json out;
   out["atmosphere"] = set;
-  out["reference_step_nm"] = o.referenceStepNm;
+  out["reference_step_nm"] = run.referenceStepNm;
   out["directions"] = samples.zenith.size();
   std::vector<std::vector<ElevationError>> errors;
   for (const SkyStrategy& s : strategies) {
@@ -73,7 +72,7 @@ int runAtmosphereEvaluate(const AtmosphereCommandOptions& raw) {
     std::printf("%s\n", out.dump(2).c_str());
   } else {
     std::printf("Sky vs the %g nm reference (%s; %zu directions; mean / max CIEDE2000)\n",
-                o.referenceStepNm, set, samples.zenith.size());
+                run.referenceStepNm, set, samples.zenith.size());
     std::printf("%-30s", "sun elevation");
     for (double e : kTableElevations) std::printf(" %11g°", e);
     std::printf("\n");
@@ -87,16 +86,18 @@ int runAtmosphereEvaluate(const AtmosphereCommandOptions& raw) {
   return goalMet ? 0 : 1;
 }
 
-void runAtmosphereOptimise(const AtmosphereCommandOptions& raw) {
-  AtmosphereCommandOptions o = effective(raw);
-  PRISM_CHECK(!o.output.empty());  // the command line requires -o: the shipped fit is replaced only by name
+void runAtmosphereOptimise(const AtmosphereCommandOptions& o) {
+  const SkyRun run = skyRunOf(o);
+  // The command line requires -o (the shipped fit is replaced only by name); checked before the fit.
+  if (o.output.empty()) throw Error("-o: expected a file, got \"\"");
   const std::filesystem::path& output = o.output;
-  SkySamples samples = makeSkySamples(kFitElevations, o.zeniths, o.azimuths);
+  requireWritable(output);
+  SkySamples samples = makeSkySamples(kFitElevations, run.zeniths, run.azimuths);
   OptimiserSettings settings;
   nlohmann::json file;
-  file["settings"] = {{"reference_step_nm", o.referenceStepNm},
+  file["settings"] = {{"reference_step_nm", run.referenceStepNm},
                       {"sun_elevations_deg", kFitElevations},
-                      {"directions", {{"zeniths", o.zeniths}, {"azimuths", o.azimuths}, {"camera_altitude_km", samples.cameraAltitudeKm}}},
+                      {"directions", {{"zeniths", run.zeniths}, {"azimuths", run.azimuths}, {"camera_altitude_km", samples.cameraAltitudeKm}}},
                       {"objective", "weighted mean CIELAB ΔE*ab² (each elevation exposed to mean Y = 0.18, D65 white)"},
                       {"low_sun_weight", settings.lowSunWeight},
                       {"low_sun", "elevations ≤ 10°"},
@@ -108,8 +109,8 @@ void runAtmosphereOptimise(const AtmosphereCommandOptions& raw) {
   for (bool aerosols : {true, false}) {
     const char* set = aerosols ? "aerosols" : "rayleigh-ozone";
     AtmosphereParameters p = parametersFor(aerosols);
-    ProgressBar referenceBar(fmt::format("{}: reference sky ({:g} nm)", set, o.referenceStepNm));
-    SpectralSky reference = spectralSky(p, o.referenceStepNm, samples, bar(referenceBar));
+    ProgressBar referenceBar(fmt::format("{}: reference sky ({:g} nm)", set, run.referenceStepNm));
+    SpectralSky reference = spectralSky(p, run.referenceStepNm, samples, bar(referenceBar));
     ProgressBar fitBar(fmt::format("{}: grid search + Nelder-Mead", set));
     OptimiserResult r = optimiseWavelengths(samples, reference, settings, bar(fitBar));
     nlohmann::json matrix = nlohmann::json::array();

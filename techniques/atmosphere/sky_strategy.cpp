@@ -1,9 +1,10 @@
 #include "techniques/atmosphere/sky_strategy.h"
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <mutex>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -11,6 +12,7 @@
 #include "spectral/colour_space.h"
 #include "core/data_files.h"
 #include "core/error.h"
+#include "core/json_schema.h"
 #include "spectral/observer.h"
 #include "spectral/sampling.h"
 #include "techniques/atmosphere/atmosphere_parameters.h"
@@ -88,30 +90,48 @@ SkyStrategy optimisedStrategy(const OptimisedWavelengths& set, bool twelve) {
 }
 
 OptimisedWavelengths loadOptimisedWavelengths(const std::filesystem::path& file, std::string_view set) {
-  std::ifstream in(file);
-  if (!in) throw Error(fmt::format("{}: cannot open", file.string()));
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-    const nlohmann::json& s = j.at("sets").at(std::string(set));
-    OptimisedWavelengths w;
-    for (int i = 0; i < 4; ++i) {
-      w.lambdaNm[static_cast<std::size_t>(i)] = s.at("lambda_nm").at(static_cast<std::size_t>(i)).get<double>();
-      w.weights[static_cast<std::size_t>(i)] = s.at("weights_nm").at(static_cast<std::size_t>(i)).get<double>();
-      if (!(w.lambdaNm[static_cast<std::size_t>(i)] >= kLambdaMinNm && w.lambdaNm[static_cast<std::size_t>(i)] <= kLambdaMaxNm)) {
-        throw Error(fmt::format("{}: sets.{}.lambda_nm[{}] is outside 360..830 nm", file.string(), set, i));
-      }
-    }
-    if (s.contains("matrix")) {
-      for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 4; ++c) w.matrix(r, c) = s.at("matrix").at(static_cast<std::size_t>(r)).at(static_cast<std::size_t>(c)).get<double>();
-      }
-      w.hasMatrix = true;
-    }
-    return w;
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(fmt::format("{}: sets.{}: {}", file.string(), set, e.what()));
+  const std::vector<unsigned char> bytes = schema::readBinaryFile(file);
+  const nlohmann::json j =
+      schema::parseJson(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), file.string());
+  // The value at /sets/SET/KEY: an array of `count` numbers (each of `rows` if rows > 0).
+  const std::string at = fmt::format("/sets/{}", schema::pointerToken(set));
+  const nlohmann::json* s = j.is_object() && j.contains("sets") && j["sets"].is_object() && j["sets"].contains(std::string(set))
+                                ? &j["sets"][std::string(set)]
+                                : nullptr;
+  if (s == nullptr || !s->is_object()) throw Error(fmt::format("{}: {}: missing (the wavelength set of that atmosphere)", file.string(), at));
+  auto numbers = [&](const nlohmann::json& v, const std::string& where, std::size_t count) {
+    std::vector<double> out;
+    if (v.is_array() && v.size() == count)
+      for (const nlohmann::json& x : v)
+        if (x.is_number()) out.push_back(x.get<double>());
+    if (out.size() != count)
+      throw Error(fmt::format("{}: {}: expected an array of {} numbers, got {}", file.string(), where, count, schema::describe(v)));
+    return out;
+  };
+  auto member = [&](const char* key) -> const nlohmann::json& {
+    if (!s->contains(key)) throw Error(fmt::format("{}: {}/{}: missing", file.string(), at, key));
+    return (*s)[key];
+  };
+  OptimisedWavelengths w;
+  const std::vector<double> lambda = numbers(member("lambda_nm"), at + "/lambda_nm", 4);
+  const std::vector<double> weights = numbers(member("weights_nm"), at + "/weights_nm", 4);
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (!(lambda[i] >= kLambdaMinNm && lambda[i] <= kLambdaMaxNm))
+      throw Error(fmt::format("{}: {}/lambda_nm/{}: {:g} nm is outside 360..830 nm", file.string(), at, i, lambda[i]));
+    w.lambdaNm[i] = lambda[i];
+    w.weights[i] = weights[i];
   }
+  if (s->contains("matrix")) {
+    const nlohmann::json& m = (*s)["matrix"];
+    if (!m.is_array() || m.size() != 3)
+      throw Error(fmt::format("{}: {}/matrix: expected 3 rows of 4 numbers, got {}", file.string(), at, schema::describe(m)));
+    for (std::size_t r = 0; r < 3; ++r) {
+      const std::vector<double> row = numbers(m[r], fmt::format("{}/matrix/{}", at, r), 4);
+      for (std::size_t c = 0; c < 4; ++c) w.matrix(static_cast<int>(r), static_cast<int>(c)) = row[c];
+    }
+    w.hasMatrix = true;
+  }
+  return w;
 }
 
 OptimisedWavelengths loadOptimisedWavelengths(std::string_view set) {

@@ -60,8 +60,9 @@ void readAtmosphereKeys(const schema::Node& n, AtmosphereSky& a, std::vector<std
   AtmosphereParameters& p = a.parameters;
   if (auto sun = n.optionalChild("sun")) {
     sun->expectObject({"elevation", "azimuth"});
-    a.sunElevationDeg = sun->numberF("elevation", a.sunElevationDeg, Range::closed(-90.0, 90.0));
-    a.sunAzimuthDeg = sun->numberF("azimuth", a.sunAzimuthDeg, Range::closed(-360.0, 360.0));
+    a.sunElevationDeg = sun->numberF("elevation", a.sunElevationDeg,
+                                     Range::closed(-a.kSunElevationLimitDeg, a.kSunElevationLimitDeg));
+    a.sunAzimuthDeg = sun->numberF("azimuth", a.sunAzimuthDeg, Range::closed(-a.kSunAzimuthLimitDeg, a.kSunAzimuthLimitDeg));
   }
   a.groundAltitudeM = n.numberF("ground_altitude", 0.0f, Range::closed(0.0, 50000.0));
   p.bottomRadiusKm = n.number("planet_radius", p.bottomRadiusKm, Range::closed(1.0, 1e5));

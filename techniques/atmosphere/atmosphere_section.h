@@ -17,8 +17,9 @@ namespace prism::atmosphere {
 // What the section describes, as plain data (another technique's sky holds one too: PRT's).
 struct AtmosphereSky {
   AtmosphereParameters parameters;
-  float sunElevationDeg = 20.0f;  // above the horizon
-  float sunAzimuthDeg = 180.0f;   // 0: towards −z, 90: towards +x
+  float sunElevationDeg = 20.0f;  // above the horizon, within ±kSunElevationLimitDeg
+  float sunAzimuthDeg = 180.0f;   // 0: towards −z, 90: towards +x; within ±kSunAzimuthLimitDeg
+  static constexpr float kSunElevationLimitDeg = 90.0f, kSunAzimuthLimitDeg = 360.0f;
   float groundAltitudeM = 0.0f;   // height of the world's y = 0 above the ground
 
   // Unit direction towards the sun (world, y up).

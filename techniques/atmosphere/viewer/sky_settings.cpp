@@ -1,7 +1,6 @@
 // The viewer script's `set sky.*` keys (viewer/technique_settings.h).
 #include "techniques/atmosphere/viewer/sky_viewer.h"
 
-#include <algorithm>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -20,8 +19,10 @@ bool setSkyKey(Scene& scene, const std::string& key, const std::string& value) {
   atmosphere::AtmosphereSection& a = *sky;
   atmosphere::AtmosphereParameters p = a.parameters;
   std::string_view k = std::string_view(key).substr(4);
-  if (k == "elevation") a.sunElevationDeg = std::clamp(render::parseFloat(key, value), -90.0f, 90.0f);
-  else if (k == "azimuth") a.sunAzimuthDeg = render::parseFloat(key, value);
+  // The scene file's ranges, never clamped (a script says what it means).
+  const float elevationLimit = a.kSunElevationLimitDeg, azimuthLimit = a.kSunAzimuthLimitDeg;
+  if (k == "elevation") a.sunElevationDeg = render::parseFloatWithin(key, value, -elevationLimit, elevationLimit);
+  else if (k == "azimuth") a.sunAzimuthDeg = render::parseFloatWithin(key, value, -azimuthLimit, azimuthLimit);
   else if (k == "turbidity") p.mieAngstromBeta = render::parseFloat(key, value);
   else if (k == "ozone") p.ozoneColumnDu = render::parseFloat(key, value);
   else if (k == "aerosols" || k == "multiple-scattering") {

@@ -1,7 +1,7 @@
 // The viewer script's `set water.*` keys (viewer/technique_settings.h).
 #include "techniques/underwater/viewer/water_viewer.h"
 
-#include <algorithm>
+#include <limits>
 
 #include "core/error.h"
 #include "render/setting_keys.h"
@@ -14,7 +14,7 @@ bool setWaterKey(Scene& scene, const std::string& key, const std::string& value)
   auto* water = scene.techniques.find<underwater::WaterSection>();
   if (!water) throw Error("the scene has no water");
   if (key == "water.type") water->type = value;
-  else water->depthM = std::max(0.0f, render::parseFloat(key, value));
+  else water->depthM = render::parseFloatWithin(key, value, 0.0f, std::numeric_limits<float>::max());  // never clamped
   water->resolve();
   return true;
 }

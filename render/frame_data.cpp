@@ -31,15 +31,11 @@ glm::vec4 reflectanceRgb(const Spectrum& reflectance, const RgbColourSpace& spac
 }
 
 // Linear RGB (scene colour space) of a light's spectrum, as RGB mode carries lights: its
-// tristimulus at 683 lm/W, mixed towards the grey of its luminance just enough to have no
-// negative channel (post.glsl's compressToGamut, the rule of RGB intents). Left negative, a
-// narrow-band light's colour (a 450 nm LED's is far outside sRGB) lit a green albedo with
-// negative light: Y −8 166 cd/m² where the reference shows 126.
+// tristimulus at 683 lm/W, unclamped, so that a white surface shows a narrow-band light's colour
+// (a 450 nm LED's is far outside sRGB) as it is; what that does to other albedos is
+// pixel_shading.glsl's to bound.
 glm::vec4 emissionRgb(const Spectrum& spd, const RgbColourSpace& space) {
-  const glm::vec4 rgb = toVec4(space.xyzToRgb * luminousTristimulus(spd));
-  const glm::vec3 weights(static_cast<float>(space.rgbToXyz(1, 0)), static_cast<float>(space.rgbToXyz(1, 1)),
-                          static_cast<float>(space.rgbToXyz(1, 2)));
-  return glm::vec4(shared::compressToGamut(glm::vec3(rgb), weights), 0.0f);
+  return toVec4(space.xyzToRgb * luminousTristimulus(spd));
 }
 
 glm::vec4 at4(const Spectrum& s, const glm::vec4& lambdaNm, float scale = 1.0f) {

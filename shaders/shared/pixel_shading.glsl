@@ -328,5 +328,11 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 #endif
     tristimulus += integrateBatch(batch, radiance);
   }
+  // RGB mode multiplies albedos by lights channel by channel; with a light outside the gamut
+  // (negative channels) some albedos come out with a negative tristimulus, which no light has: a
+  // green albedo under a 450 nm LED measured Y −8 166 cd/m² (the reference 126). Each component
+  // stops at 0; a colour any light could have is left as it is. (Compressing the light into the
+  // gamut instead kept Y but made RGB mode 4–5× further from the reference under both LED scenes.)
+  if (fc.mode == kModeRgb) tristimulus = max(tristimulus, vec3(0.0f));
   return tristimulus;
 }

@@ -113,6 +113,11 @@ class SceneParser {
     c.farPlane = n.numberF("far", c.farPlane, Range::above(c.nearPlane));
     if (!n.has("far") && !(c.farPlane > c.nearPlane))
       n.child("near").fail("expected a number < far (" + schema::describe(c.farPlane) + ")");
+    if (c.farPlane / c.nearPlane > kMaxFarOverNear)
+      (n.has("near") ? n.child("near") : n.child("far"))
+          .fail(fmt::format("far / near = {:g} is past {:g}, where depth loses the precision lighting needs: "
+                            "raise near or lower far",
+                            static_cast<double>(c.farPlane / c.nearPlane), static_cast<double>(kMaxFarOverNear)));
     c.ev100 = n.numberF("ev100", c.ev100, Range::closed(-kEv100Limit, kEv100Limit));
     glm::vec3 view = c.target - c.position;
     if (!(glm::length(view) > 0.0f)) (n.has("target") ? n.child("target") : n).fail("target equals position");

@@ -221,6 +221,11 @@ TEST_F(SceneFolder, NumbersBeyondFloatsReachAndDeepNestingAreRefused) {
             f.string() + ": /camera/position/0: expected a number in [-1e+12, 1e+12], got 1e+39");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"camera.fov_deg=1e-30"}); }),
             f.string() + ": /camera/fov_deg: expected a number in [0.001, 180), got 1e-30");
+  // A near plane so close that depth cannot place surfaces (far 200 / 1e-5: the image went black).
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"camera.near=1e-5"}); }),
+            f.string() + ": /camera/near: far / near = 2e+07 is past 200000, where depth loses the precision lighting "
+                         "needs: raise near or lower far");
+  EXPECT_NO_THROW(loadScene(f, {"camera.near=0.001"}));  // 200 000
   EXPECT_EQ(errorOf([&] { loadScene(f, {"background={\"colour\": [1, 1, 1], \"luminance\": 1e39}"}); }),
             f.string() + ": /background/luminance: expected a number in [0, 1e+12], got 1e+39");
 

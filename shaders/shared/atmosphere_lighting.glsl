@@ -46,15 +46,21 @@ PRISM_INLINE vec4 sunTransmittanceTo(IN(GpuAtmosphere) a, int b, IN(vec3) p, IN(
   return transmittanceToSpace(a, b, r, dot(p, sun) / r);
 }
 
+// Whether direction d from planet-frame radius r sees the sun's disc (not the ground).
+PRISM_INLINE bool seesSunDisc(IN(GpuAtmosphere) a, float r, IN(vec3) d, IN(vec3) sun) {
+  return dot(d, sun) > cos(a.options.y) && !rayIntersectsGround(a, r, d.y);
+}
+
 // Radiance of the sky seen from planet-frame point `camera` along d: the sky-view table, plus
-// the sun's disc (its irradiance spread evenly over its solid angle, transmitted to the camera).
-PRISM_INLINE vec4 skyBackground(IN(GpuAtmosphere) a, int b, IN(vec3) camera, IN(vec3) d, IN(vec3) sun) {
-  float r = length(camera);
-  vec4 radiance = skyViewLookup(a, b, r, d, sun);
-  float angularRadius = a.options.y;
-  if (dot(d, sun) > cos(angularRadius) && !rayIntersectsGround(a, r, d.y)) {
+// the sun's disc (its irradiance spread evenly over its solid angle, transmitted to the camera)
+// times `sunCover`, the share of the pixel's solid angle the disc covers (pixel_shading.glsl's
+// sunDiscCover; 1 or 0 for a single direction).
+PRISM_INLINE vec4 skyBackground(IN(GpuAtmosphere) a, int b, IN(vec3) camera, IN(vec3) d, IN(vec3) sun, float sunCover) {
+  vec4 radiance = skyViewLookup(a, b, length(camera), d, sun);
+  if (sunCover > 0.0f) {
+    float angularRadius = a.options.y;
     float solidAngle = kPi * angularRadius * angularRadius;
-    radiance += a.solarIrradiance * sunTransmittanceTo(a, b, camera, sun) / solidAngle;
+    radiance += a.solarIrradiance * sunTransmittanceTo(a, b, camera, sun) * (sunCover / solidAngle);
   }
   return radiance;
 }

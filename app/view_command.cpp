@@ -1,5 +1,8 @@
 #include "app/view_command.h"
 
+#include <optional>
+#include <utility>
+
 #include "harness/technique_precompute.h"
 #include "harness/upsampling_table.h"
 #include "scene/scene_loader.h"
@@ -8,6 +11,9 @@
 namespace prism::app {
 
 int runView(const ViewOptions& options) {
+  // The script first: a bad line or a missing file is reported before the scene loads or a window opens.
+  std::optional<viewer::Script> script;
+  if (!options.script.empty()) script = viewer::loadScript(options.script);
   Scene scene = loadScene(options.scene, options.sets);
   render::FrameSettings settings = frameSettings(options.settings);
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
@@ -15,7 +21,7 @@ int runView(const ViewOptions& options) {
   viewer::ViewerOptions v;
   v.width = settings.width;
   v.height = settings.height;
-  v.script = options.script;
+  v.script = std::move(script);
   return viewer::runViewer(scene, table, settings, v);
 }
 

@@ -1,15 +1,34 @@
-// The script runner: `prism view --script FILE` (the language is in viewer.h). Reads the whole
-// file first, renders a first frame, then runs each command against the viewer in order; the
-// first that fails prints "prism: error: FILE:LINE: what" and ends the run.
+// The script runner: `prism view --script FILE` (the language is in viewer.h). The whole file is
+// read and checked before anything renders, so that a typo on the last line does not cost the
+// work before it; then each command runs against the viewer in order, and the first that fails
+// prints "prism: error: FILE:LINE: what" and ends the run.
 #pragma once
 
 #include <filesystem>
-
-#include "viewer/viewer_loop.h"
+#include <string>
+#include <vector>
 
 namespace prism::viewer {
 
-// The exit code: 0, or 1 after a failing command. Error when the file cannot be read.
-int runScript(Viewer& viewer, const std::filesystem::path& path);
+class Viewer;
+
+struct ScriptLine {
+  int line = 0;
+  std::vector<std::string> words;  // the command, then its arguments
+};
+
+struct Script {
+  std::filesystem::path path;
+  std::vector<ScriptLine> lines;
+};
+
+// Reads and checks a script: Error "FILE: …" when it cannot be read (a folder, a missing file),
+// "FILE:LINE: …" for an unknown command, a wrong number of arguments, a count or angle that is not
+// a number in its range, or an unterminated quote. Words are separated by spaces; "…" keeps
+// spaces inside one (set light.0.spd "nist:Cool White FL"); # outside quotes starts a comment.
+Script loadScript(const std::filesystem::path& path);
+
+// The exit code: 0, or 1 after a failing command.
+int runScript(Viewer& viewer, const Script& script);
 
 }  // namespace prism::viewer

@@ -14,10 +14,10 @@ int runViewer(Scene& scene, const RgbToSpectrumTable& table, const render::Frame
   desc.width = options.width;
   desc.height = options.height;
   desc.title = "Prism — " + scene.file.filename().string();
-  desc.vsync = options.script.empty();
+  desc.vsync = !options.script;
   gpu::WindowContext window(desc);
   Viewer viewer(window, scene, table, initial);
-  return options.script.empty() ? viewer.interactive() : runScript(viewer, options.script);
+  return options.script ? runScript(viewer, *options.script) : viewer.interactive();
 }
 
 }  // namespace prism::viewer

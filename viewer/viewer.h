@@ -24,21 +24,25 @@
 //                        a kind of GL object is not back to its count, or the heap or anonymous
 //                        resident memory grew by more than MB
 //   heat-map-stats       print the split view's CIEDE2000 mean, p95 and max (heat map on)
-// `#` starts a comment. A bad command is one line "FILE:LINE: what" and exit 1.
+// `#` starts a comment; "…" keeps spaces in one word (set light.0.spd "nist:Cool White FL"). The
+// whole script is checked first (commands, argument counts, counts and angles); a bad command is
+// one line "FILE:LINE: what" and exit 1, before any frame when the check finds it.
 #pragma once
 
 #include <filesystem>
+#include <optional>
 
 #include "render/frame_settings.h"
 #include "scene/scene.h"
 #include "spectral/rgb_to_spectrum_table.h"
+#include "viewer/script.h"
 
 namespace prism::viewer {
 
 struct ViewerOptions {
   int width = 1280;
   int height = 720;
-  std::filesystem::path script;  // run it, then close
+  std::optional<Script> script;  // run it, then close (loaded and checked before the window opens)
 };
 
 // The scene is edited in place; the table is the scene colour space's. Returns the exit code.

@@ -12,6 +12,7 @@
 #include <memory>
 #include <numbers>
 
+#include "core/error.h"
 #include "render/display_transform.h"
 #include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
@@ -126,6 +127,24 @@ TEST(CpuShading, RgbModeLightsNothingWithNegativeLight) {
   const glm::vec3 white = shadeOnce(scene, rgb, UpFacing(glm::vec3(1.0f), 0.0f, 1.0f), productionTable());
   const Eigen::Vector3d light = luminousTristimulus(scene.lights[0].spd) * (10000.0 / 3.14159265358979);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(white[c] / light[c], 1.0, 1e-4) << c;
+}
+
+// The lighting pass takes 16 lights; a sky's sun counts among them, and the error says so (a
+// user's 16 lights and an atmosphere were refused as "17 lights", no place, no sun named).
+TEST(FrameData, TheLightLimitNamesTheLightsATechniqueAdded) {
+  Scene scene = oneLightScene("D65", 1000.0f);
+  scene.file = "sky.json";
+  while (scene.lights.size() < 16) scene.lights.push_back(scene.lights[0]);
+  EXPECT_NO_THROW(requireLightCount(scene));
+  Light sun = scene.lights[0];
+  sun.technique = "atmosphere";
+  scene.lights.push_back(sun);
+  try {
+    requireLightCount(scene);
+    ADD_FAILURE() << "17 lights were taken";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "sky.json: /lights: 17 lights (16 in the file, and the atmosphere's sun); the renderer handles at most 16");
+  }
 }
 
 TEST(CpuShading, NaiveUpsamplingOfGreyIsFlat) {

@@ -87,13 +87,22 @@ void addBatches(FrameData& frame, const FrameSettings& settings, const FrameCont
 
 }  // namespace
 
+void requireLightCount(const Scene& scene) {
+  if (scene.lights.size() <= static_cast<std::size_t>(shared::kMaxLights)) return;
+  std::string added;
+  std::size_t own = 0;
+  for (const Light& light : scene.lights) {
+    if (light.technique.empty()) ++own;
+    else added += fmt::format(", and the {}'s {}", light.technique, light.technique == "atmosphere" ? "sun" : "light");
+  }
+  throw Error(fmt::format("{}: /lights: {} lights{}; the renderer handles at most {}", scene.file.string(), scene.lights.size(),
+                          added.empty() ? "" : fmt::format(" ({} in the file{})", own, added), shared::kMaxLights));
+}
+
 FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, const FrameContext& context,
                          const RgbToSpectrumTable& table, const std::vector<ShadowView>& shadows,
                          std::uint32_t frameIndex, const CameraTransform& camera) {
-  if (scene.lights.size() > static_cast<std::size_t>(shared::kMaxLights)) {
-    throw Error(fmt::format("{}: {} lights; the renderer handles at most {}",
-                            scene.file.string(), scene.lights.size(), shared::kMaxLights));
-  }
+  requireLightCount(scene);
   const RgbColourSpace& space = *context.sceneColourSpace;
   const bool rgbMode = settings.mode == RenderMode::Rgb;
   FrameData frame;

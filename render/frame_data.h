@@ -54,6 +54,11 @@ struct FrameData {
   }
 };
 
+// Error "SCENE: /lights: N lights (M in the file, and the atmosphere's sun); the renderer handles
+// at most kMaxLights" (the parenthesis only where a technique added lights) when the scene has more than the lighting pass takes; the lights a
+// technique adds (the sky's sun) count, and are named.
+void requireLightCount(const Scene& scene);
+
 // context holds settings' names resolved and the wavelength sampler (frameContext). frameIndex
 // seeds the wavelength strategies that change between frames (a new set every frame). camera is
 // where the frame is seen from (the water's depth there; the surface stays where the scene put it).

@@ -105,10 +105,7 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
     throw Error(fmt::format("{}: the upsampling table is for {}, the scene is in {}",
                             scene.file.string(), table.gamut(), scene.colourSpace));
   }
-  if (scene.lights.size() > static_cast<std::size_t>(shared::kMaxLights)) {
-    throw Error(fmt::format("{}: {} lights; the renderer handles at most {}", scene.file.string(),
-                            scene.lights.size(), shared::kMaxLights));
-  }
+  requireLightCount(scene);
   mLightingPrograms.emplace(lightingVariant(scene), lightingProgram(scene));
   mContext = frameContext(mSettings, mScene, mTable);
   mDisplayTransform = displayTransform(mSettings.display, mContext.display, mCamera.ev100);

@@ -55,8 +55,11 @@ echo "window, RGB vs RGB two frames later: $same % above ΔE00 1 (the frame-time
 echo "window, RGB vs spectral: $changed % above ΔE00 1"
 echo "left view's tristimulus, RGB vs spectral: mean ΔE00 $views; the split view's heat map: mean $heat"
 [ -n "$same" ] && [ -n "$changed" ] && [ -n "$views" ] && [ -n "$heat" ]
-# The gallery measures 6 mean ΔE00 between the modes in this scene: the viewer must see it too.
-awk -v s="$same" -v c="$changed" -v v="$views" -v h="$heat" 'BEGIN { exit !(s < 1.0 && c > 5.0 && v > 3.0 && h > 3.0) }'
+# The gallery measures 2.2 mean ΔE00 between the modes in this scene (`prism demo`, 640×360):
+# the viewer must see at least half of it (measured 2.75, heat map 2.50). The bound was 3.0 while
+# RGB mode showed negative light under this LED (the gallery measured 6; efb1597 stops RGB mode's
+# tristimulus at 0, which brought RGB closer to the spectral image).
+awk -v s="$same" -v c="$changed" -v v="$views" -v h="$heat" 'BEGIN { exit !(s < 1.0 && c > 5.0 && v > 1.1 && h > 1.1) }'
 
 # The sky: the sun from 3° to 30° above the horizon, in optimised4 mode.
 cat >"$scratch/sky_script" <<SCRIPT

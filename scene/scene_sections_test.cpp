@@ -79,8 +79,12 @@ TEST_F(SceneFolder, AtmosphereAddsTheSunAsALightAndChecksItsParameters) {
             f.string() + ": /atmosphere/mie_g: expected a number in (-1, 1), got 1");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.atmosphere_height=40", "atmosphere.ground_altitude=45000"}); }),
             f.string() + ": /atmosphere/ground_altitude: 45000 m must be below the top of the atmosphere (40 km)");
+  // The height must hold the ozone layer and the scale heights, said at the key (it named the
+  // ozone layer's parameters, which a scene cannot set, at /atmosphere).
   EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.atmosphere_height=20"}); }),
-            f.string() + ": /atmosphere: ozone peak altitude (km) = 25 must be within 0 and the atmosphere height");
+            f.string() + ": /atmosphere/atmosphere_height: 20 km is below the ozone layer (peak at 25 km, half-width 15 km): at least 25");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.rayleigh_scale_height=80"}); }),
+            f.string() + ": /atmosphere/rayleigh_scale_height: 80 km is above the atmosphere's height (60 km)");
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"atmosphere.humidity=3"}); }),
                          f.string() + ": /atmosphere/humidity: unknown key (set on the command line) (allowed: "));
   fs::path both = write("both.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "objects": [],

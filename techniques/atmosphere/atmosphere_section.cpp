@@ -1,6 +1,8 @@
 #include "techniques/atmosphere/atmosphere_section.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -77,6 +79,16 @@ void readAtmosphereKeys(const schema::Node& n, AtmosphereSky& a, std::vector<std
   p.ozoneColumnDu = n.number("ozone", p.ozoneColumnDu, Range::closed(0.0, 1000.0));
   p.groundAlbedo = n.number("ground_albedo", p.groundAlbedo, Range::closed(0.0, 1.0));
   p.multipleScattering = n.boolean("multiple_scattering", p.multipleScattering);
+  // What the height must hold, said at the keys the file has (validate's own words name
+  // parameters a scene cannot set, such as the ozone layer's).
+  const double height = p.topRadiusKm - p.bottomRadiusKm, ozoneTop = std::max(p.ozonePeakAltitudeKm, p.ozoneHalfWidthKm);
+  if (height < ozoneTop)
+    n.child("atmosphere_height").fail(fmt::format("{:g} km is below the ozone layer (peak at {:g} km, half-width {:g} km): "
+                                                  "at least {:g}", height, p.ozonePeakAltitudeKm, p.ozoneHalfWidthKm, ozoneTop));
+  for (const auto& [key, value] : {std::pair{"rayleigh_scale_height", p.rayleighScaleHeightKm},
+                                   std::pair{"mie_scale_height", p.mieScaleHeightKm}})
+    if (value > height)
+      n.child(key).fail(fmt::format("{:g} km is above the atmosphere's height ({:g} km)", value, height));
   try {
     validate(p);
   } catch (const Error& e) {

@@ -55,7 +55,10 @@ class CliSettings {
       option->default_str(key.print(defaults));
       mOptions.emplace_back(key.name, option);
     }
-    command->add_option("--camera", mCamera, "a camera as the observer (raw camera RGB, fitted matrix for display)");
+    CLI::Option* camera = command->add_option("--camera", mCamera, "a camera as the observer (raw camera RGB, fitted matrix for display)");
+    // One observer: given both, the camera used to replace --observer without a word.
+    for (const auto& [name, option] : mOptions)
+      if (name == "observer") camera->excludes(option);
   }
 
   prism::app::SettingsOptions given() const {
@@ -89,8 +92,8 @@ void addReferenceOptions(CLI::App* command, prism::app::ReferenceOptions& ref, s
       ->capture_default_str();
   command->add_option("--filter", ref.filter, "box (antialiased) or centre (pixel centres, as a rasteriser)")
       ->capture_default_str();
-  command->add_option("--observer", ref.observer, "cie1931, cie1964 or a camera")->capture_default_str();
-  command->add_option("--camera", ref.camera, "a camera as the observer (raw camera RGB)");
+  CLI::Option* observer = command->add_option("--observer", ref.observer, "cie1931, cie1964 or a camera")->capture_default_str();
+  command->add_option("--camera", ref.camera, "a camera as the observer (raw camera RGB)")->excludes(observer);
   command->add_option("--range", refRange, "MIN,MAX nm of the hero wavelengths (within 360–830)");
   command->add_option("--strategy", ref.strategy,
                            "importance (observer response), lights (the scene's emission × that response), "

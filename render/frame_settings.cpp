@@ -46,7 +46,11 @@ void validate(const FrameSettings& settings) {
                             settings.width, settings.height));
   }
   validate(settings.sampling);
-  observer(settings.observer);
+  // RGB mode carries colours, not spectra: a camera's curves have nothing to weigh there, and
+  // the image came out in XYZ, the camera ignored without a word.
+  if (observer(settings.observer).isCamera && settings.mode == RenderMode::Rgb)
+    throw Error(fmt::format("mode rgb cannot show the camera \"{}\": its curves weigh spectra (choose a spectral mode, "
+                            "or the observer cie1931 or cie1964)", settings.observer));
   if (settings.shadowMapSize < 16 || settings.shadowMapSize > 8192) {
     throw Error(fmt::format("shadow map size {} must be within 16..8192", settings.shadowMapSize));
   }

@@ -88,7 +88,17 @@ struct NebulaPrecomputed {
   AnalyticPieces analytic;
   // Projection: the 1D basis and its table of coefficients.
   ExpBasis basis;
-  glm::vec4 basisLo{0.0f}, basisHi{0.0f};  // exponents a₀…a₇ (unused ones are never read)
+  glm::vec4 basisLo{0.0f}, basisHi{0.0f};  // exponents a₀…a₇ in float, as the GPU and the float path take them
+  // The same exponents in double (a₀…a₃, or a₄…a₇ for `half` 1; 0 where unused), as toCoefficients'
+  // orthonormalisation took them: raw moments in double must use these. With the float ones the
+  // table of coefficients carried their rounding (6e-8) through the ill-conditioned fifth row:
+  // the example's five-element projection was 0.74 % from the reference instead of 0.049 %.
+  glm::dvec4 exponents(int half) const {
+    glm::dvec4 a(0.0);
+    for (int j = 0; j < 4; ++j)
+      if (const auto k = static_cast<std::size_t>(4 * half + j); k < basis.a.size()) a[j] = basis.a[k];
+    return a;
+  }
   MomentTable moments;
   // Pre-integration: per star, the three channels' ∫ P_S S_s e^(−x/λ) dλ over x (in lo.xyz),
   // 4096 entries; built at its first render.

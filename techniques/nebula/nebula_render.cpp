@@ -182,8 +182,8 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
   for (int e = -1; e <= kMomentTableSize + 1; ++e) {
     double x = std::abs(e * pre.moments.step);  // the entry before 0 mirrors (cₖ is smooth there)
     std::array<double, 8> raw{}, coefficients{};
-    glm::dvec4 lo = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm);
-    glm::dvec4 hi = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm);
+    glm::dvec4 lo = shared::f64::nebulaExpMoments(x, pre.exponents(0), kBandLoUm, kBandHiUm);
+    glm::dvec4 hi = shared::f64::nebulaExpMoments(x, pre.exponents(1), kBandLoUm, kBandHiUm);
     for (int j = 0; j < 4; ++j) raw[static_cast<std::size_t>(j)] = lo[j], raw[static_cast<std::size_t>(j + 4)] = hi[j];
     pre.toCoefficients(raw, coefficients);
     pre.moments.lo.emplace_back(coefficients[0], coefficients[1], coefficients[2], coefficients[3]);
@@ -412,8 +412,8 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
     }
     glm::dvec4 mLo, mHi(0.0);
     if (s.doublePrecision) {
-      mLo = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisLo), kBandLoUm, kBandHiUm);
-      if (card > 4) mHi = shared::f64::nebulaExpMoments(x, glm::dvec4(pre.basisHi), kBandLoUm, kBandHiUm);
+      mLo = shared::f64::nebulaExpMoments(x, pre.exponents(0), kBandLoUm, kBandHiUm);
+      if (card > 4) mHi = shared::f64::nebulaExpMoments(x, pre.exponents(1), kBandLoUm, kBandHiUm);
     } else {
       mLo = shared::nebulaExpMoments(static_cast<float>(x), pre.basisLo, l0, l1);
       if (card > 4) mHi = shared::nebulaExpMoments(static_cast<float>(x), pre.basisHi, l0, l1);

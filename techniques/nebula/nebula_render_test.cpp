@@ -166,6 +166,9 @@ namespace {
 
 // The projection's error against the basis size (the paper's plot, as a table): it must fall with
 // every element up to the 4 the renderer uses, in double (float's rounding sets a floor below).
+// The fifth stays near the fourth (0.053 %) since the raw moments take the exponents in double,
+// as the orthonormalisation does (NebulaPrecomputed::exponents); with their float roundings the
+// ill-conditioned fifth row made it 1.2 %.
 TEST(NebulaRender, ProjectionErrorFallsWithTheBasisSize) {
   RenderSettings s;
   s.emissionLines = false;
@@ -188,6 +191,9 @@ TEST(NebulaRender, ProjectionErrorFallsWithTheBasisSize) {
     std::printf("basis size %d: max relative error per pixel, double %.3g, float %.3g\n", size, d, f);
     if (size <= 4) {
       EXPECT_LT(d, previous);
+    } else {
+      EXPECT_LT(d, 1e-3);
+      EXPECT_LT(f, 1e-3);
     }
     previous = d;
   }

@@ -342,9 +342,10 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
 // Upper bounds of nebula_march.comp's loop iterations (nebula_march_segments.h), loop by loop.
 // Per step: the step loop, the zones' slabs (≤ 2) and the lines. Per star of a direct method: its
 // slab and lane loops and the channels' (3); the reference's node chunks (the chunk itself
-// unrolled); the analytic method's pieces, each at most kPieceLoops (the closed form's exponential
-// integrals: the continued fraction's three chunks at each bound; a Wien star's four negative powers,
-// each five chunks of its series); pre-integration nothing more. Per group of projection or
+// unrolled); the analytic method's pieces, each its own loop's iteration and at most 2·3 more (the
+// closed form's exponential integrals: the continued fraction's three chunks at each bound) or, for a
+// Wien star, 4·(1 + 5) (four negative powers, each five chunks of its series); pre-integration
+// nothing more. Per group of projection or
 // light–density: its slabs (2) and lanes, each lane's coefficients beyond the table (the basis
 // matrix's 8 + 36, the raw moments' 4 + 2·4 exponential integrals of ≤ 3 chunks, for both halves).
 MarchLoopCost NebulaGpuMarcher::loopCost(Method method, const NebulaPrecomputed& pre) const {

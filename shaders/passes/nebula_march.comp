@@ -194,7 +194,7 @@ void main() {
   const int groupEnd = 1;
   const bool lastItems = uItemEnd >= uCount;
 #else
-  int lanes = uCard <= 4 ? 8 : 4;  // a march per group of stars or 2D elements
+  int lanes = nebulaGroupLanes(uCard);  // a march per group of stars or 2D elements
   int groupBegin = uItemBegin;
   int groupEnd = max(groupBegin + 1, uItemEnd);
   const bool lastItems = uItemEnd >= (uCount + lanes - 1) / lanes;

@@ -69,3 +69,8 @@ PRISM_INLINE NEBULA_REAL nebulaStarWeight(NEBULA_REAL scatteringTimesStep, NEBUL
 PRISM_INLINE bool nebulaRayOpaque(NEBULA_REAL cameraDepthUm) {
   return cameraDepthUm > NEBULA_REAL(10.8f);
 }
+
+// Stars or 2D elements one group of projection or light–density marches at once
+// (nebula_march.comp keeps a group's moments in eight vec4): eight lanes while card(B) ≤ 4, four
+// above; the host sizes its dispatches by it too (nebula_gpu_marcher.cpp).
+PRISM_INLINE int nebulaGroupLanes(int card) { return card <= 4 ? 8 : 4; }

@@ -17,9 +17,6 @@
 namespace prism::nebula {
 namespace {
 
-// Stars or 2D elements a group of projection or light–density marches at once (nebula_march.comp).
-int lanesOf(int card) { return card <= 4 ? 8 : 4; }
-
 gpu::Program computeProgram(const char* file, const char* label, std::vector<gpu::ShaderDefine> defines = {}) {
   gpu::ProgramDesc desc;
   desc.compute = shaderDirectory() / "passes" / file;
@@ -324,7 +321,8 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   // In dispatches that each stay within the driver's loop budget (nebula_march_segments.h); the
   // optical depth is an image the next dispatch loads, the lighting pass fetches, tests read back.
   const MarchLoopCost cost = mLoopCost = loopCost(s.method, pre);
-  const int items = direct ? static_cast<int>(m.stars.size()) : (mCount + lanesOf(mCard) - 1) / lanesOf(mCard);
+  const int lanes = shared::nebulaGroupLanes(mCard);
+  const int items = direct ? static_cast<int>(m.stars.size()) : (mCount + lanes - 1) / lanes;
   const std::vector<MarchSegment> segments =
       mLoopBudget ? planMarchSegments(cost, s.steps, items, *mLoopBudget) : std::vector<MarchSegment>{{0, s.steps, 0, items}};
   for (const MarchSegment& segment : segments) {
@@ -372,7 +370,7 @@ MarchLoopCost NebulaGpuMarcher::loopCost(Method method, const NebulaPrecomputed&
       cost = {kFixed, 3 + mLineCount + kCoefficients, 2 + 4, true};
       break;
     case Method::Projection:
-      cost = {kFixed, 3 + mLineCount, 2 + lanesOf(mCard) * (1 + kCoefficients), true};
+      cost = {kFixed, 3 + mLineCount, 2 + shared::nebulaGroupLanes(mCard) * (1 + kCoefficients), true};
       break;
   }
   return cost;

@@ -15,6 +15,7 @@
 #include "gpu/headless_context.h"
 #include "gpu/timer_query.h"
 #include "core/atomic_file.h"
+#include "core/file_extension.h"
 #include "harness/log_plot.h"
 #include "harness/nebula_display.h"
 #include "harness/progress_bar.h"
@@ -141,7 +142,7 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
 namespace {
 
 void writeImage(const nebula::NebulaImage& image, const std::string& filters, const std::filesystem::path& out) {
-  std::string ext = out.extension().string();
+  std::string ext = lowercaseExtension(out);
   bool hubble = filters == "hubble";
   if (ext == ".exr") {
     imaging::FloatImage f(image.width, image.height, 3);
@@ -159,7 +160,7 @@ void writeImage(const nebula::NebulaImage& image, const std::string& filters, co
 }  // namespace
 
 void runNebulaRender(const NebulaRenderOptions& o) {
-  if (o.output.extension() != ".exr" && o.output.extension() != ".png")
+  if (lowercaseExtension(o.output) != ".exr" && lowercaseExtension(o.output) != ".png")
     throw Error(fmt::format("{}: the output must be .exr or .png", o.output.string()));
   nebula::Method method = nebula::methodFromName(o.method);
   nebula::RenderSettings s;

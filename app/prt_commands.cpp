@@ -13,6 +13,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "core/task_split.h"
 #include "harness/progress_bar.h"
 #include "harness/prt_plot.h"
@@ -37,7 +38,7 @@ namespace {
 // albedo intent; textures and conductors are not read: PRT here is diffuse and per vertex).
 prt::PrtObject loadPrtObject(const std::filesystem::path& input, bool withReflectances) {
   if (!std::filesystem::is_regular_file(input)) throw Error(input.string() + ": no such file");
-  std::string ext = input.extension().string();
+  std::string ext = lowercaseExtension(input);
   Scene scene;
   if (ext == ".json") {
     scene = loadScene(input);

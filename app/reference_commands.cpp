@@ -5,6 +5,7 @@
 #include "batch/reference_part.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "core/task_split.h"
 #include "harness/display_png.h"
 #include "harness/progress_bar.h"
@@ -43,7 +44,7 @@ reference::ReferenceRegion region(const ReferenceOptions& o, const reference::Re
 // A part of the render: skipped when OUT already holds it whole.
 void runReferencePart(const ReferenceOptions& o, const Scene& scene, const reference::ReferenceSettings& settings,
                       float ev100) {
-  if (o.output.extension() != ".exr") {
+  if (lowercaseExtension(o.output) != ".exr") {
     throw Error(fmt::format("{}: a part of a render (--tile, --samples) is an .exr file", o.output.string()));
   }
   if (!o.variance.empty()) throw Error("--variance: a part holds its variance; name the file to `prism merge`");
@@ -101,10 +102,10 @@ reference::ReferenceSettings referenceSettings(const ReferenceOptions& o) {
 }
 
 void checkReferenceOutputs(const std::filesystem::path& output, const std::filesystem::path& variance) {
-  if (output.extension() != ".png" && output.extension() != ".exr") {
+  if (lowercaseExtension(output) != ".png" && lowercaseExtension(output) != ".exr") {
     throw Error(fmt::format("{}: the output must be a .png or an .exr file", output.string()));
   }
-  if (!variance.empty() && variance.extension() != ".exr") {
+  if (!variance.empty() && lowercaseExtension(variance) != ".exr") {
     throw Error(fmt::format("{}: the variance image must be an .exr file", variance.string()));
   }
   requireOtherFile(variance, output, "the image (-o)");
@@ -117,7 +118,7 @@ void writeReferenceImage(const reference::ReferenceImage& image, const std::stri
                                imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour,
                                render::displayWhiteLuminance(ev100)};
   imaging::requireFiniteOutput(image.tristimulus, output.string());
-  if (output.extension() == ".exr") {
+  if (lowercaseExtension(output) == ".exr") {
     imaging::writeExr(output, image.tristimulus, exr);
   } else {
     render::DisplaySettings display;

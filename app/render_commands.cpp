@@ -15,6 +15,7 @@
 #include "scene/scene_loader.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "spectral/observer.h"
 
 namespace prism::app {
@@ -36,7 +37,7 @@ render::FrameSettings frameSettings(const SettingsOptions& o) {
 
 void renderToFile(const Scene& scene, const render::FrameSettings& settings, int frames,
                   const std::filesystem::path& output, bool progress) {
-  std::string extension = output.extension().string();
+  std::string extension = lowercaseExtension(output);
   if (extension != ".png" && extension != ".exr") {
     throw Error(fmt::format("{}: the output must be a .png or an .exr file", output.string()));
   }

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "imaging/png_file.h"
 #include "spectral/colour_checker.h"
 #include "spectral/colour_space.h"
@@ -69,7 +70,7 @@ std::vector<std::vector<ChartPatch>> writeColourCheckerChart(const DemoOptions& 
 }
 
 void runDemo(const DemoOptions& options) {
-  if (options.output.extension() != ".png")
+  if (lowercaseExtension(options.output) != ".png")
     throw Error(fmt::format("{}: the chart is written as a .png file", options.output.string()));
   if (options.adaptation != "none" && options.adaptation != "bradford" && options.adaptation != "cat02" &&
       options.adaptation != "von-kries")

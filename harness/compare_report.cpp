@@ -12,6 +12,7 @@
 #include "imaging/png_file.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "core/json_schema.h"
 
 namespace prism::harness {
@@ -30,7 +31,7 @@ struct Loaded {
 
 Loaded load(const std::filesystem::path& path, const std::optional<double>& white) {
   Loaded l;
-  std::string extension = path.extension().string();
+  std::string extension = lowercaseExtension(path);
   if (extension == ".exr") {
     l.linear = true;
     l.exr = imaging::readExr(path);
@@ -60,7 +61,7 @@ void runCompare(const CompareOptions& o) {
   if (!(o.scaleMax > 0.0 && within(o.scaleMax, 0.0)))
     throw Error(fmt::format("--scale-max: must be > 0 and up to {:g}", schema::kFloatInputLimit));
   for (const auto& [option, path] : {std::pair{"--heatmap", &o.heatmap}, std::pair{"--histogram", &o.histogram}}) {
-    if (!path->empty() && path->extension() != ".png")
+    if (!path->empty() && lowercaseExtension(*path) != ".png")
       throw Error(fmt::format("{} {}: the picture is written as a .png file", option, path->string()));
     requireOtherFile(*path, o.reference, "the reference image");
     requireOtherFile(*path, o.test, "the test image");

@@ -25,6 +25,7 @@
 #include "core/atomic_file.h"
 #include "core/data_files.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 
 namespace prism::harness {
 namespace {
@@ -154,7 +155,7 @@ void runGallery(const GalleryOptions& o) {
   std::vector<std::filesystem::path> files;
   if (std::filesystem::is_directory(sceneDir)) {
     for (const auto& entry : std::filesystem::directory_iterator(sceneDir)) {
-      if (entry.path().extension() == ".json") files.push_back(entry.path());
+      if (lowercaseExtension(entry.path()) == ".json") files.push_back(entry.path());
     }
   }
   if (files.empty()) throw Error(sceneDir.string() + ": no scene files (*.json) to render");
@@ -235,7 +236,7 @@ void runGallery(const GalleryOptions& o) {
   std::vector<std::filesystem::path> nebulaFiles;
   if (std::filesystem::is_directory(sceneDir / "nebula")) {
     for (const auto& entry : std::filesystem::directory_iterator(sceneDir / "nebula"))
-      if (entry.path().extension() == ".json") nebulaFiles.push_back(entry.path());
+      if (lowercaseExtension(entry.path()) == ".json") nebulaFiles.push_back(entry.path());
   }
   std::sort(nebulaFiles.begin(), nebulaFiles.end());
   std::vector<NebulaEntry> nebulae;

@@ -23,6 +23,7 @@
 #include "scene/scene_loader.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 
 namespace prism::harness {
 namespace {
@@ -119,7 +120,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   if (options.frames < 1 || options.warmup < 0 || options.rounds < 1)
     throw Error("--frames and --rounds must be ≥ 1, --warmup ≥ 0");
   if (!options.plot.empty()) {
-    if (options.plot.extension() != ".svg")
+    if (lowercaseExtension(options.plot) != ".svg")
       throw Error(fmt::format("--plot {}: the plot is written as an .svg file", options.plot.string()));
     requireWritable(options.plot);
   }

@@ -8,6 +8,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 
 namespace prism::harness {
 namespace {
@@ -59,7 +60,7 @@ nlohmann::json collectValidateParts(const std::filesystem::path& dir, const nloh
   std::vector<std::filesystem::path> files;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
-    if (entry.path().extension() == ".json") files.push_back(entry.path());
+    if (lowercaseExtension(entry.path()) == ".json") files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
   if (files.empty()) {

@@ -14,6 +14,7 @@
 
 #include "imaging/png_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "viewer/panels.h"
 
 namespace prism::viewer {
@@ -171,8 +172,8 @@ void Viewer::writeWindowPng(const std::filesystem::path& path, int width, int he
 }
 
 void Viewer::screenshot(const std::filesystem::path& path, bool renderNow) {
-  if (path.extension() == ".exr") return mCompositor.writeLeftExr(path, mCamera.camera());
-  if (path.extension() != ".png") throw Error(fmt::format("{}: a screenshot is a .png or an .exr", path.string()));
+  if (lowercaseExtension(path) == ".exr") return mCompositor.writeLeftExr(path, mCamera.camera());
+  if (lowercaseExtension(path) != ".png") throw Error(fmt::format("{}: a screenshot is a .png or an .exr", path.string()));
   mPendingScreenshot = path;  // written after the interface is drawn, before the swap
   if (renderNow) {
     frame();

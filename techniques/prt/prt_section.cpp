@@ -1,7 +1,5 @@
 #include "techniques/prt/prt_section.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <mutex>
 
@@ -9,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "core/fnv1a.h"
 #include "shared_cpp.h"
 #include "imaging/exr_file.h"
@@ -50,10 +49,7 @@ std::shared_ptr<const PrtMap> readMap(const schema::Node& n) {
 }  // namespace
 
 imaging::FloatImage readEnvironmentMap(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == ".hdr") return imaging::readRadianceHdr(file);
+  if (lowercaseExtension(file) == ".hdr") return imaging::readRadianceHdr(file);
   imaging::ExrImage exr = imaging::readExr(file);
   if (exr.colour != imaging::ColourMeaning::LinearSrgb || exr.image.channels < 3)
     throw Error(fmt::format("{}: an environment map must be linear sRGB (Rec. 709, D65) RGB, not {} with {} channel(s)",

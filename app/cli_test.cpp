@@ -195,6 +195,13 @@ TEST(Cli, RenderChecksItsInputBeforeRendering) {
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.jpg", "x.jpg: the output must be a .png or an .exr");
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --mode rainbow", "mode: expected rgb, naive, jakob-hanika, reference or optimised4, got \"rainbow\"");
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --wavelengths 6", "multiple of 4");
+  // Sampling options a mode would ignore, without a word, before.
+  expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --mode reference --range 500,600",
+                     "--range 500,600: mode reference renders its own 472 wavelengths over 360–830 nm");
+  expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --mode rgb --wavelengths 8",
+                     "--wavelengths 8: mode rgb renders three RGB channels");
+  expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --mode optimised4 --strategy rotated",
+                     "--strategy rotated: mode optimised4 renders the sky's four optimised wavelengths");
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --set lights.7.intensity=1", "/lights/7");
   std::filesystem::path bad = writeTemp("malformed_scene.json", "{\"camera\": {,}}");
   expectOneLineError("render " + bad.string() + " -o x.png", "malformed_scene.json:1:");
@@ -233,6 +240,14 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
                    " --width 64 --height 36 --strategy rotated --frames 3");
   ASSERT_EQ(png.exitCode, 0) << png.err;
   EXPECT_TRUE(std::filesystem::is_regular_file(dir / "s.png"));
+  EXPECT_NE(png.out.find("3 frames)"), std::string::npos) << png.out;
+  // Frames that cannot differ are rendered once, and the line says so; capitals name the format too.
+  Result same = run("render " + scenes + "/spheres_d65.json -o " + (dir / "u.PNG").string() +
+                    " --width 64 --height 36 --strategy uniform --frames 5");
+  ASSERT_EQ(same.exitCode, 0) << same.err;
+  EXPECT_NE(same.out.find("1 frame, not 5: the uniform strategy renders the same frame every time"),
+            std::string::npos) << same.out;
+  EXPECT_EQ(slurp(dir / "u.PNG").substr(1, 3), "PNG");
   Result exr = run("render " + scenes + "/conductors_d65.json -o " + (dir / "c.exr").string() +
                    " --width 64 --height 36 --mode reference");
   ASSERT_EQ(exr.exitCode, 0) << exr.err;

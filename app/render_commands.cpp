@@ -68,13 +68,47 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
                      render::displayWhiteLuminance(settings.display.ev100.value_or(scene.camera.ev100))});
 }
 
+namespace {
+
+// What a mode that draws no wavelengths renders with instead.
+std::string_view ownWavelengths(render::RenderMode mode) {
+  switch (mode) {
+    case render::RenderMode::Rgb: return "renders three RGB channels";
+    case render::RenderMode::Reference: return "renders its own 472 wavelengths over 360–830 nm";
+    case render::RenderMode::Optimised4: return "renders the sky's four optimised wavelengths";
+    default: return "draws wavelengths";
+  }
+}
+
+// A sampling option given with a mode that ignores it is refused: the image would not show it.
+void refuseUnusedSampling(const SettingsOptions& options, const render::FrameSettings& settings) {
+  if (render::usesSampling(settings.mode)) return;
+  for (const auto& [key, value] : options.values) {
+    if (key == "wavelengths" || key == "range" || key == "strategy")
+      throw Error(fmt::format("--{} {}: mode {} {}, so it has no use for it (naive and jakob-hanika do)", key, value,
+                              render::renderModeName(settings.mode), ownWavelengths(settings.mode)));
+  }
+}
+
+}  // namespace
+
 void runRender(const RenderOptions& options) {
-  Scene scene = loadScene(options.scene, options.sets);
   render::FrameSettings settings = frameSettings(options.settings);
-  renderToFile(scene, settings, options.frames, options.output, true);
-  fmt::print("wrote {} ({}x{}, {} mode, {} frame{})\n", options.output.string(), settings.width,
-             settings.height, render::renderModeName(settings.mode), options.frames,
-             options.frames == 1 ? "" : "s");
+  refuseUnusedSampling(options.settings, settings);
+  if (options.frames < 1) throw Error("--frames: must be at least 1");
+  Scene scene = loadScene(options.scene, options.sets);
+  // Frames that cannot differ are rendered once: their mean is the first.
+  int frames = render::framesDiffer(settings) ? options.frames : 1;
+  renderToFile(scene, settings, frames, options.output, true);
+  std::string repeated;
+  if (frames != options.frames) {
+    std::string what = render::usesSampling(settings.mode)
+                           ? fmt::format("the {} strategy", samplingStrategyName(settings.sampling.strategy))
+                           : fmt::format("{} mode", render::renderModeName(settings.mode));
+    repeated = fmt::format(", not {}: {} renders the same frame every time", options.frames, what);
+  }
+  fmt::print("wrote {} ({}x{}, {} mode, {} frame{}{})\n", options.output.string(), settings.width, settings.height,
+             render::renderModeName(settings.mode), frames, frames == 1 ? "" : "s", repeated);
 }
 
 }  // namespace prism::app

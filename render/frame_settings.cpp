@@ -88,4 +88,11 @@ SamplingSettings effectiveSampling(const FrameSettings& settings) {
   return reference;
 }
 
+bool usesSampling(RenderMode mode) { return mode == RenderMode::Naive || mode == RenderMode::JakobHanika; }
+
+bool framesDiffer(const FrameSettings& settings) {
+  SamplingStrategy strategy = effectiveSampling(settings).strategy;
+  return strategy != SamplingStrategy::Uniform && strategy != SamplingStrategy::Optimised;
+}
+
 }  // namespace prism::render

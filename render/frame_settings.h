@@ -73,4 +73,13 @@ void validateEv100(float ev100);
 // The wavelength sampling the mode actually uses (RGB and optimised4 use none: uniform, unused).
 SamplingSettings effectiveSampling(const FrameSettings& settings);
 
+// Whether successive frames of a still scene differ — their wavelengths are the only thing drawn
+// per frame — so that accumulating them converges: not in rgb, optimised4 or reference mode, nor
+// with the uniform or optimised strategy.
+bool framesDiffer(const FrameSettings& settings);
+
+// Whether the mode renders with `sampling`'s wavelengths (naive, jakob-hanika); rgb, optimised4
+// and reference ignore the count, range and strategy.
+bool usesSampling(RenderMode mode);
+
 }  // namespace prism::render

@@ -1,6 +1,7 @@
 #include "viewer/viewer_settings.h"
 
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -19,6 +20,22 @@ glm::vec3 vec3Of(const nlohmann::json& j, const std::string& where) {
     throw Error(fmt::format("{}: expected [x, y, z], got {}", where, excerpt(j.dump())));
   }
   return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
+}
+
+// A frame key's value as the table parses it: a string as written, a number as JSON writes it
+// (a hand-written 32 or 9.5 means what "32" or "9.5" does), true and false as on and off, an
+// array of numbers joined by commas ([380, 720] is "380,720"); nullopt for anything else.
+std::optional<std::string> settingText(const nlohmann::json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_boolean()) return value.get<bool>() ? "on" : "off";
+  if (value.is_number()) return value.dump();
+  if (!value.is_array() || value.empty()) return std::nullopt;
+  std::string text;
+  for (const nlohmann::json& element : value) {
+    if (!element.is_number()) return std::nullopt;
+    text += (text.empty() ? "" : ",") + element.dump();
+  }
+  return text;
 }
 
 }  // namespace
@@ -65,9 +82,12 @@ void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Cam
       render::FrameSettings& side = key == "left" ? next.left : next.right;
       if (!value.is_object()) throw Error(fmt::format("{}: /{}: expected an object", file, excerpt(key)));
       for (const auto& [k, v] : value.items()) {
-        if (!v.is_string()) throw Error(fmt::format("{}: /{}/{}: expected a string, got {}", file, excerpt(key), excerpt(k), excerpt(v.dump())));
+        std::optional<std::string> valueText = settingText(v);
+        if (!valueText)
+          throw Error(fmt::format("{}: /{}/{}: expected a string, a number, true or false, or an array of numbers, got {}",
+                                  file, excerpt(key), excerpt(k), excerpt(v.dump())));
         try {
-          if (!render::applyFrameSetting(side, k, v.get<std::string>())) throw Error("unknown setting");
+          if (!render::applyFrameSetting(side, k, *valueText)) throw Error("unknown setting");
         } catch (const Error& e) {
           throw Error(fmt::format("{}: /{}/{}: {}", file, excerpt(key), excerpt(k), e.what()));
         }

@@ -89,6 +89,22 @@ TEST(ViewerSettings, FilesRoundTripAndBadOnesChangeNothing) {
         << e.what();
   }
   EXPECT_TRUE(loaded.split) << "a failed load changes nothing";
+  // Written by hand: numbers, true/false and a range as an array mean what their text does.
+  std::ofstream(dir / "hand.json") << R"({"left": {"wavelengths": 32, "ev": 9.5, "gizmos": true, "range": [380, 720]}})";
+  loadViewSettings(dir / "hand.json", loaded, loadedCamera);
+  EXPECT_EQ(loaded.left.sampling.count, 32);
+  EXPECT_EQ(loaded.left.display.ev100, 9.5f);
+  EXPECT_TRUE(loaded.left.lightGizmos);
+  EXPECT_EQ(loaded.left.sampling.minNm, 380.0);
+  EXPECT_EQ(loaded.left.sampling.maxNm, 720.0);
+  std::ofstream(dir / "object.json") << R"({"left": {"range": {"min": 380}}})";
+  try {
+    loadViewSettings(dir / "object.json", loaded, loadedCamera);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("object.json: /left/range: expected a string, a number"), std::string::npos)
+        << e.what();
+  }
   std::ofstream(dir / "unknown.json") << R"({"lefty": {}})";
   EXPECT_THROW(loadViewSettings(dir / "unknown.json", loaded, loadedCamera), Error);
 }

@@ -9,28 +9,19 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "techniques/nebula/nebula_render.h"
+#include "techniques/nebula/nebula_test_cloud.h"
 
 namespace prism::nebula {
 namespace {
 
+// The small cloud, its stars moved three times as far from the cube's middle when `distant`.
 NebulaModel smallNebula(std::string filters, int starCount, bool distant = false) {
-  NebulaModel m;
-  NoiseParameters noise;
-  noise.resolution = 24;
-  noise.seed = 7;
-  m.density = generateFbm(noise, 0);
-  m.extinction = 3.0;
-  m.scattering = 1.0;
-  m.filters = std::move(filters);
-  const NebulaStar stars[] = {{{0.5, 0.55, 0.45}, 12000.0, 1.0},
-                              {{0.3, 0.4, 0.6}, 4000.0, 0.6},
-                              {{0.7, 0.3, 0.3}, 25000.0, 0.8}};
-  for (int i = 0; i < starCount; ++i) m.stars.push_back(stars[i]);
+  NebulaModel m = smallCloud(std::move(filters), starCount);
   if (distant)
     for (auto& st : m.stars) st.position = glm::dvec3(0.5) + 3.0 * (st.position - glm::dvec3(0.5, 0.5, 0.4));
-  m.camera.width = m.camera.height = 32;
   return m;
 }
 

@@ -28,30 +28,15 @@
 #include <vector>
 
 #include "techniques/nebula/gpu/nebula_gpu_marcher.h"
-#include "techniques/nebula/nebula_density.h"
+#include "techniques/nebula/nebula_test_cloud.h"
 
 namespace prism::nebula {
 
-// The tests' nebula: a 24³ fBm cloud, three line groups, up to five stars (one outside the cube),
-// a 32×32 image.
+// The tests' nebula: the small cloud with continuum emission and three line groups.
 inline NebulaModel smallNebula(std::string filters, int starCount) {
-  NebulaModel m;
-  NoiseParameters noise;
-  noise.resolution = 24;
-  noise.seed = 7;
-  m.density = generateFbm(noise, 0);
-  m.extinction = 3.0;
-  m.scattering = 1.0;
+  NebulaModel m = smallCloud(std::move(filters), starCount);
   m.emission = 0.002;
   m.lineGroups = {{"H I Balmer (case B)", 1.0}, {"[O III] doublet", 0.8}, {"[S II] doublet", 0.4}};
-  m.filters = std::move(filters);
-  const NebulaStar stars[] = {{{0.5, 0.55, 0.45}, 12000.0, 1.0},  // inside the cloud
-                              {{0.3, 0.4, 0.6}, 4000.0, 0.6},
-                              {{0.7, 0.3, 0.3}, 25000.0, 0.8},
-                              {{1.6, 0.2, 0.5}, 30000.0, 3.0},    // outside the cube
-                              {{0.2, 0.8, 0.2}, 8000.0, 0.5}};
-  for (int i = 0; i < starCount; ++i) m.stars.push_back(stars[i]);
-  m.camera.width = m.camera.height = 32;
   return m;
 }
 

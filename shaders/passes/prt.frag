@@ -1,6 +1,6 @@
 #version 450
 // PRT forward pass, per fragment (techniques/prt/gpu/prt_pass.h): tristimulus = Σ_j Ê_j R̂_j
-// (shared/prt.glsl's prtXyz) over the interpolated irradiance, added to the accumulation with
+// (shared/prt.glsl's prtXyz) over the interpolated irradiance, clamped at 0 (prtShownXyz), added to the accumulation with
 // alpha 0 (the lighting pass counted the frame; it left this pixel black). R̂ is the material's,
 // or for a textured material its texture's layers at the fragment's uv (filtered: R̂ is linear in
 // the reflectance). Inside the scene's medium (the water) or behind its nebula the sum runs over
@@ -50,7 +50,7 @@ void main() {
   float nebulaDepthUm = 0.0;
 #endif
   if (path == 0.0 && depth == 0.0 && nebulaDepthUm <= 0.0) {  // nothing dims: the node sum is prtXyz (prt_medium.glsl)
-    oTristimulus = vec4(prtXyz(e, r, PRISM_PRT_BASIS_COUNT), 0.0);
+    oTristimulus = vec4(prtShownXyz(prtXyz(e, r, PRISM_PRT_BASIS_COUNT)), 0.0);
     return;
   }
   vec3 xyz = vec3(0.0);
@@ -60,5 +60,5 @@ void main() {
                               : nodeReflectances[int(vMaterial) * uMediumNodeCount + q].xyz;
     xyz += prtMediumTransmittance(node, path, depth, nebulaDepthUm) * prtNodeIrradiance(e, PRISM_PRT_BASIS_COUNT, node) * rho;
   }
-  oTristimulus = vec4(xyz, 0.0);
+  oTristimulus = vec4(prtShownXyz(xyz), 0.0);
 }

@@ -49,6 +49,14 @@ PRISM_INLINE vec3 prtXyz(IN(PrtBasisIrradiance) irradiance, IN(PrtReflectance) r
   return xyz;
 }
 
+// What a PRT fragment adds: its XYZ with each channel clamped at 0. A 25-term SH environment rings
+// below zero beside a small bright source (a sun in a map: order 5 holds no lobe narrower than
+// about 40°), and a vertex turned away from it gets negative irradiance; light is never negative
+// and a real spectrum's tristimulus is ≥ 0 in every channel (x̄, ȳ, z̄ and a camera's curves are),
+// so a negative channel shows as 0. The reference mode's chunks of 16 wavelengths are clamped
+// each: where ringing makes a vertex's light negative it does so at every wavelength.
+PRISM_INLINE vec3 prtShownXyz(vec3 xyz) { return max(xyz, vec3(0.0f)); }
+
 // The renderer's PRT forward pass (techniques/prt/gpu/prt_pass.cpp, shaders/passes/prt.*): three
 // std430 storage buffers, laid out here for both sides — per vertex its Sh25 transfer (100 bytes,
 // std430's float-array stride is 4 as in C++), the PrtEnvironment (1600 bytes) and per material

@@ -41,14 +41,14 @@ glm::vec3 prtXyzThroughMedium(const shared::PrtBasisIrradiance& irradiance, cons
   const float path = medium ? shared::prtMediumViewPath(camera, point, medium->boxMin, medium->boxMax) : 0.0f;
   const float depth = medium ? shared::prtMediumDepth(point, medium->boxMin, medium->boxMax) : 0.0f;
   if (path == 0.0f && depth == 0.0f && nebulaDepthUm <= 0.0f)
-    return shared::prtXyz(irradiance, reflectance, basisCount);  // as prt.frag
+    return shared::prtShownXyz(shared::prtXyz(irradiance, reflectance, basisCount));  // as prt.frag
   glm::vec3 xyz(0.0f);
   for (std::size_t q = 0; q < nodes.size(); ++q) {
     const glm::vec3 rho = nodeReflectances ? (*nodeReflectances)[q] : shared::prtNodeReflectance(reflectance, basisCount, nodes[q]);
     xyz += shared::prtMediumTransmittance(nodes[q], path, depth, nebulaDepthUm) *
            shared::prtNodeIrradiance(irradiance, basisCount, nodes[q]) * rho;
   }
-  return xyz;
+  return shared::prtShownXyz(xyz);
 }
 
 }  // namespace prism::prt

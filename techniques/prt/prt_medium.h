@@ -39,7 +39,7 @@ std::vector<shared::PrtMediumNode> mediumNodes(const PrtProjection& projection, 
 // medium (null: none) and behind `nebulaDepthUm` of a nebula: Σ_q T(λ_q)·e_q·ρ_q over the nodes,
 // ρ_q from `nodeReflectances` (an untextured material's exact one,
 // PrtProjection::nodeReflectances) or, when null, from the projection R̂ (a textured material's).
-// Where nothing dims it is prtXyz, as in prt.frag.
+// Where nothing dims it is prtXyz, as in prt.frag; clamped at 0 either way (prtShownXyz).
 glm::vec3 prtXyzThroughMedium(const shared::PrtBasisIrradiance& irradiance, const shared::PrtReflectance& reflectance,
                               int basisCount, const std::vector<shared::PrtMediumNode>& nodes,
                               const std::vector<glm::vec3>* nodeReflectances, const PrtMedium* medium,

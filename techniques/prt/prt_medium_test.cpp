@@ -83,6 +83,40 @@ Eigen::MatrixXd macbethBasis(int m, const PrtMedium* medium = nullptr) {
   return SpectralBasis(spectra).leading(m);
 }
 
+// A sun of one bright texel below the horizon of a dim sky: the 25-term SH environment rings, so
+// the upward-facing chart, which sees nothing of the sun, sums to negative light at some vertices
+// (before, written into EXRs as negative luminance). What the fragment adds is clamped at 0.
+TEST(PrtMedium, RingingAroundASmallSunShowsAsNoLightNotNegativeLight) {
+  const UnderwaterMacbeth& mb = underwaterMacbeth();
+  const int width = 64, height = 32;
+  std::vector<float> rgb(3 * width * height);
+  for (std::size_t i = 0; i < rgb.size(); i += 3) {
+    rgb[i] = 0.05f;
+    rgb[i + 1] = 0.06f;
+    rgb[i + 2] = 0.1f;
+  }
+  for (int c = 0; c < 3; ++c) rgb[3 * (26 * width + 20) + c] = 5000.0f;
+  const Spectrum d65 = illuminant("D65");
+  const SpectralEnvironment sunspot = equirectangularEnvironment(
+      "sunspot", width, height, rgb, [&d65](const glm::vec3& c) { return d65 * (c.y / d65.at(560.0)); });
+  const Eigen::MatrixXd grid = environmentOnGrid(sunspot);
+  std::vector<Eigen::VectorXd> spectra;
+  for (const Spectrum& r : mb.object.reflectances) spectra.push_back(sampleOnGrid(r));
+  const SpectralBasis basis(spectra, {termSpectra(sunspot)});
+  const PrtProjection p = projectSpectral(mb.object.reflectances, grid, cie1931Observer(), basis.leading(8));
+  int negative = 0;
+  for (std::size_t v = 0; v < mb.transfer.size(); ++v) {
+    const shared::PrtBasisIrradiance e = shared::prtVertexIrradiance(p.environment, mb.transfer[v], p.basisCount);
+    const shared::PrtReflectance& r = p.reflectances[static_cast<std::size_t>(mb.object.vertexMaterial[v])];
+    const glm::vec3 sum = shared::prtXyz(e, r, p.basisCount);
+    const glm::vec3 shown = prtXyzThroughMedium(e, r, p.basisCount, {}, nullptr, nullptr, {0, 0, 1}, {0, 0, 0});
+    if (sum.y < 0.0f) ++negative;
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(shown[c], std::max(sum[c], 0.0f)) << "vertex " << v << " channel " << c;
+  }
+  std::printf("vertices with negative luminance before the clamp: %d of %zu\n", negative, mb.transfer.size());
+  EXPECT_GT(negative, 0) << "the sun no longer rings: the test shows nothing";
+}
+
 TEST(PrtMedium, WithNothingToDimTheNodeSumIsPrtXyz) {
   // The basis is orthonormal on the grid: Σ_q a_qj a_qk = δ_jk, so T ≡ 1 gives Σ_j Ê_j R̂_j with
   // R̂'s projection; and with the exact ρ_q too, since Σ_q e_q ρ_q = ⟨PE, ρc̄⟩ = ⟨PE, P(ρc̄)⟩.

@@ -18,6 +18,16 @@
 
 namespace prism::nebula {
 
+NebulaViewFrame viewFrame(const NebulaCamera& camera) {
+  NebulaViewFrame f;
+  f.forward = glm::normalize(camera.target - camera.position);
+  glm::dvec3 side = glm::cross(f.forward, glm::dvec3(0, 1, 0));
+  if (glm::length(side) < 1e-9) side = glm::cross(f.forward, glm::dvec3(0, 0, 1));
+  f.right = glm::normalize(side);
+  f.up = glm::cross(f.right, f.forward);
+  return f;
+}
+
 void scaleImage(NebulaCamera& camera, int pixels) {
   const double scale = static_cast<double>(pixels) / std::max(camera.width, camera.height);
   camera.width = std::max(1, static_cast<int>(std::lround(camera.width * scale)));
@@ -396,9 +406,7 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
   const auto& refWeight = reference.weights;
 
   const NebulaCamera& cam = m.camera;
-  glm::dvec3 forward = glm::normalize(cam.target - cam.position);
-  glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
-  glm::dvec3 up = glm::cross(right, forward);
+  const auto [forward, right, up] = viewFrame(cam);
   double tanHalf = std::tan(cam.fovYDeg * kPi / 360.0), aspect = static_cast<double>(cam.width) / cam.height;
 
   // The coefficients cₖ(x) of e^(−x/λ) on the orthonormal basis: from the table (float), or

@@ -51,6 +51,14 @@ struct NebulaCamera {
 // The camera's image scaled so that its longer side is `pixels` (≥ 1), the aspect kept.
 void scaleImage(NebulaCamera& camera, int pixels);
 
+// The camera's frame, which the CPU marcher and the GPU's view both build: forward towards the
+// target, right and up square to it, up as near the world's +y as the view allows. A view along
+// ±y, where +y gives no right, takes +z's side as up (the image turned, never a NaN ray).
+struct NebulaViewFrame {
+  glm::dvec3 forward, right, up;
+};
+NebulaViewFrame viewFrame(const NebulaCamera& camera);
+
 // An emission-line group ("H I Balmer (case B)", "[O III] doublet", …, as in nebula_lines.csv)
 // and the strength of its reference line (the one its ratios are relative to).
 struct LineGroupStrength {

@@ -196,6 +196,32 @@ TEST(NebulaRender, ProjectionErrorFallsWithTheBasisSize) {
 namespace prism::nebula {
 namespace {
 
+// A camera looking straight up or down (before: +y gave no right, the rays were NaN and the
+// marcher read outside the grid and crashed): the cloud's light is what a camera a hair off the
+// vertical sees — the same square image turned a quarter.
+TEST(NebulaRender, ACameraLookingStraightUpOrDownSeesTheCloud) {
+  RenderSettings s;
+  s.method = Method::Projection;
+  s.steps = 60;
+  const auto total = [](const NebulaImage& image) {
+    glm::dvec3 sum(0.0);
+    for (const glm::vec3& p : image.pixels) sum += glm::dvec3(p);
+    return sum;
+  };
+  for (double y : {-1.0, 2.0}) {
+    NebulaModel vertical = smallNebula("cie1931", 2);
+    vertical.camera.position = {0.5, y, 0.5};
+    NebulaModel tilted = vertical;
+    tilted.camera.position.x += 1e-6;
+    const glm::dvec3 straight = total(NebulaRenderer(vertical, s).render(s));
+    const glm::dvec3 aside = total(NebulaRenderer(tilted, s).render(s));
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_GT(straight[c], 0.0) << "camera at y " << y;
+      EXPECT_NEAR(straight[c], aside[c], 1e-3 * aside[c]) << "camera at y " << y << ", channel " << c;
+    }
+  }
+}
+
 // A Wien star needs no fit: the analytic method integrates its λ⁻⁵e^(−B/λ) against each passband
 // piece exactly (negative powers of λ), so it meets the converged reference to the quadrature's
 // own digits, where a Planck star's two quintic pieces leave their fit's error (≤ 3e-4).

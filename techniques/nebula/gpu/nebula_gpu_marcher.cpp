@@ -163,9 +163,7 @@ bool NebulaGpuMarcher::refilter(const NebulaRenderer& renderer) {
 
 MarchView marchView(const NebulaCamera& cam) {
   // In double, as the CPU marcher builds it, then handed over in float.
-  glm::dvec3 forward = glm::normalize(cam.target - cam.position);
-  glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
-  glm::dvec3 up = glm::cross(right, forward);
+  const auto [forward, right, up] = viewFrame(cam);
   MarchView v;
   v.position = glm::vec3(cam.position);
   v.forward = glm::vec3(forward);

@@ -104,6 +104,22 @@ INSTANTIATE_TEST_SUITE_P(Cases, NebulaGpuTwin,
                                   (p.param.basis != 4 ? fmt::format("_basis_{}", p.param.basis) : "");
                          });
 
+// A camera looking straight up (before: +y gave no right, and the GPU wrote a black image where
+// the CPU crashed): the GPU's view is the CPU's, within the rounding bound, and it sees light.
+TEST(NebulaGpu, ACameraLookingStraightUpIsTheCpusView) {
+  gpu::HeadlessContext context;
+  RenderSettings s;
+  s.method = Method::Projection;
+  NebulaModel model = smallNebula("cie1931", 2);
+  model.camera.position = {0.5, -1.0, 0.5};
+  NebulaRenderer renderer(model, s);
+  NebulaImage cpu = renderer.render(s);
+  NebulaGpuMarcher gpu(renderer);
+  NebulaImage image = gpu.render(s);
+  ASSERT_GT(peakOf(cpu), 0.0);
+  EXPECT_LE(twinRatio(image, cpu, gpu, s.steps, directTerms(renderer, s, s.method, s.steps, 2)), 1.0);
+}
+
 // The twin test can fail: a march one step shorter than the CPU's (99 of 100) is a real
 // difference of a few tenths of a percent, and the comparison sees it, for every method held to
 // the rounding bound.

@@ -120,8 +120,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   if (options.frames < 1 || options.warmup < 0 || options.rounds < 1)
     throw Error("--frames and --rounds must be ≥ 1, --warmup ≥ 0");
   if (!options.plot.empty()) {
-    if (lowercaseExtension(options.plot) != ".svg")
-      throw Error(fmt::format("--plot {}: the plot is written as an .svg file", options.plot.string()));
+    requireExtension(options.plot, ".svg", "--plot", "plot");
     requireWritable(options.plot);
   }
   const render::FrameSettings& settings = options.settings;
@@ -137,7 +136,9 @@ void runSceneBench(const SceneBenchOptions& options) {
   precomputeTechniques(scene);
   gpu::HeadlessContext context;
   std::string device = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  render::Renderer renderer(scene, table, settings);
+  render::FrameSettings rgbSettings = settings;
+  rgbSettings.observer = "cie1931";  // RGB mode's own: its colour spaces are defined on it
+  render::Renderer renderer(scene, table, rgbSettings);
   gpu::GpuTimer timer({kFramesInFlight});
 
   std::vector<Config> configs;
@@ -156,7 +157,7 @@ void runSceneBench(const SceneBenchOptions& options) {
     s.sampling.count = n;
     return s;
   };
-  const std::size_t rgb = add("rgb", renderer, settings);
+  const std::size_t rgb = add("rgb", renderer, rgbSettings);
   std::vector<std::size_t> spectral;
   for (int n : options.wavelengths) {
     spectral.push_back(add(std::to_string(n), renderer, spectralSettings(n)));

@@ -46,11 +46,16 @@ void validate(const FrameSettings& settings) {
                             settings.width, settings.height));
   }
   validate(settings.sampling);
-  // RGB mode carries colours, not spectra: a camera's curves have nothing to weigh there, and
-  // the image came out in XYZ, the camera ignored without a word.
-  if (observer(settings.observer).isCamera && settings.mode == RenderMode::Rgb)
-    throw Error(fmt::format("mode rgb cannot show the camera \"{}\": its curves weigh spectra (choose a spectral mode, "
-                            "or the observer cie1931 or cie1964)", settings.observer));
+  // RGB mode carries colours, not spectra, and its colour spaces are defined on CIE 1931: another
+  // observer's curves have nothing to weigh there, and the image came out under CIE 1931, the
+  // camera or CIE 1964 ignored without a word.
+  if (settings.mode == RenderMode::Rgb && settings.observer != "cie1931") {
+    if (observer(settings.observer).isCamera)
+      throw Error(fmt::format("mode rgb cannot show the camera \"{}\": its curves weigh spectra (choose a spectral mode, "
+                              "or the observer cie1931)", settings.observer));
+    throw Error(fmt::format("mode rgb renders under CIE 1931, whose curves its colour spaces are defined with: the observer "
+                            "{} needs a spectral mode", settings.observer));
+  }
   if (settings.shadowMapSize < 16 || settings.shadowMapSize > 8192) {
     throw Error(fmt::format("shadow map size {} must be within 16..8192", settings.shadowMapSize));
   }

@@ -202,6 +202,7 @@ CachedTransfer cachedTransfer(const PrtMesh& mesh, const BakeSettings& settings,
       if (note) note(std::string(e.what()) + "; rebuilding");
     }
   }
+  requireWritable(result.file);  // before the bake, not after
   result.transfer = bakeTransfer(mesh, settings, progress, threads);
   writeTransferFile(result.file, key, settings.samples, result.transfer);
   return result;

@@ -158,5 +158,16 @@ TEST(TransferCache, RoundTripsAndRebuildsADamagedFile) {
   EXPECT_THROW(readTransferFile(first.file, transferKey(mesh, settings)), Error);
 }
 
+// A cache that cannot be written is said before the bake (it used to fail once the bake was done).
+TEST(TransferCache, AnUnwritableCacheIsRefusedBeforeTheBake) {
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "prt_cache_unwritable";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "prt") << "a file where the cache's folder goes";
+  bool baked = false;
+  EXPECT_THROW(cachedTransfer(icosphere(1), {8, true}, dir, [&baked](std::size_t, std::size_t) { baked = true; }), Error);
+  EXPECT_FALSE(baked);
+}
+
 }  // namespace
 }  // namespace prism::prt

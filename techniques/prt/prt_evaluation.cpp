@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/json_schema.h"
 #include "spectral/colour_checker.h"
 #include "spectral/colour_difference.h"
 #include "spectral/illuminant.h"
@@ -138,9 +139,9 @@ SpectralEnvironment equirectangularEnvironment(std::string name, int width, int 
       std::size_t at = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x));
       glm::vec3 rgb(linearRgb[at], linearRgb[at + 1], linearRgb[at + 2]);
       for (int c = 0; c < 3; ++c)
-        if (!std::isfinite(rgb[c]) || rgb[c] < 0.0f)
-          throw Error(fmt::format("{}: texel ({}, {}): channel {} is {}, not a finite non-negative radiance", name, x, y, c,
-                                  rgb[c]));
+        if (!std::isfinite(rgb[c]) || rgb[c] < 0.0f || rgb[c] > schema::kFloatInputLimit)
+          throw Error(fmt::format("{}: texel ({}, {}): channel {} is {}, not a radiance within 0..{:g}", name, x, y, c,
+                                  rgb[c], schema::kFloatInputLimit));
       if (rgb == glm::vec3(0.0f)) continue;
       grid += sampleOnGrid(toSpectrum(rgb)) * equirectangularTexelSh(x, y, width, height).transpose();
     }

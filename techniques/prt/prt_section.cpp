@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/file_extension.h"
 #include "core/fnv1a.h"
+#include "core/json_schema.h"
 #include "shared_cpp.h"
 #include "imaging/exr_file.h"
 #include "imaging/radiance_hdr.h"
@@ -34,8 +35,9 @@ std::shared_ptr<const PrtMap> readMap(const schema::Node& n) {
       for (int x = 0; x < image.width; ++x) {
         for (int c = 0; c < 3; ++c) {
           float v = image.at(x, y, c);
-          if (!std::isfinite(v) || v < 0.0f)
-            throw Error(fmt::format("texel ({}, {}): channel {} is {}, not a finite non-negative radiance", x, y, c, v));
+          if (!std::isfinite(v) || v < 0.0f || v > schema::kFloatInputLimit)
+            throw Error(fmt::format("texel ({}, {}): channel {} is {}, not a radiance within 0..{:g}", x, y, c, v,
+                                    schema::kFloatInputLimit));
           map->linearRgb.push_back(v);
         }
       }
@@ -49,7 +51,10 @@ std::shared_ptr<const PrtMap> readMap(const schema::Node& n) {
 }  // namespace
 
 imaging::FloatImage readEnvironmentMap(const std::filesystem::path& file) {
-  if (lowercaseExtension(file) == ".hdr") return imaging::readRadianceHdr(file);
+  const std::string extension = lowercaseExtension(file);
+  if (extension == ".hdr") return imaging::readRadianceHdr(file);
+  if (extension != ".exr")
+    throw Error(fmt::format("{}: an environment map is an OpenEXR (.exr) or Radiance (.hdr) file", file.string()));
   imaging::ExrImage exr = imaging::readExr(file);
   if (exr.colour != imaging::ColourMeaning::LinearSrgb || exr.image.channels < 3)
     throw Error(fmt::format("{}: an environment map must be linear sRGB (Rec. 709, D65) RGB, not {} with {} channel(s)",

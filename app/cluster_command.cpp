@@ -196,10 +196,11 @@ void printPrtClusterScript(const ClusterOptions& o) {
   s.logs = cacheFile.string() + ".parts";
   s.summary = fmt::format("prism prt bake {} ({} vertices, {} directions each{}) as {} tasks by vertices, then prism "
                           "merge into {}",
-                          p.input, vertices, p.samples, p.shadows ? "" : ", unshadowed", o.tasks, cacheFile.string());
+                          p.input, vertices, target.settings.samples, target.settings.shadows ? "" : ", unshadowed",
+                          o.tasks, cacheFile.string());
   s.array.command = shellQuote(prismExecutable()) + " prt bake " +
-                    shellQuote(std::filesystem::absolute(p.input).string()) + fmt::format(" --samples {}", p.samples) +
-                    (p.shadows ? "" : " --no-shadows") +
+                    shellQuote(std::filesystem::absolute(p.input).string()) +
+                    fmt::format(" --samples {}", target.settings.samples) + (target.settings.shadows ? "" : " --no-shadows") +
                     fmt::format(" --part \"$SLURM_ARRAY_TASK_ID/{}\" --threads \"$SLURM_CPUS_PER_TASK\"", o.tasks) +
                     " -o " + shellQuote(s.logs.string()) + fmt::format("/\"part-$SLURM_ARRAY_TASK_ID-of-{}.prtpart\"", o.tasks);
   // A task holds the scene as loaded, the mesh (positions, normals, indices) and Embree's copy

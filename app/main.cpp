@@ -29,6 +29,7 @@
 #include "harness/sky_experiments.h"
 #include "harness/validate.h"
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "render/setting_keys.h"
 
 namespace {
@@ -100,7 +101,7 @@ void addReferenceOptions(CLI::App* command, prism::app::ReferenceOptions& ref, s
                            "stratified or uniform")
       ->capture_default_str();
   command->add_option("--seed", ref.seed, "random seed (the image depends on it alone)")->capture_default_str();
-  command->add_option("--threads", ref.threads, "worker threads (0: all)");
+  command->add_option("--threads", ref.threads, "worker threads (0: all)")->check(CLI::Range(0u, prism::kMaxThreads));
   command->add_option("--ev", refEv, "exposure EV100 for the PNG and the display white (default: the scene camera's)");
 }
 
@@ -209,27 +210,27 @@ int main(int argc, char** argv) {
   PrtBakeOptions prtBake;
   auto* prtBakeCmd = prtCmd->add_subcommand("bake", "bake (or read from the cache) the SH-5 transfer of a scene's or model's vertices");
   prtBakeCmd->add_option("input", prtBake.input, "scene (.json) or glTF model (.gltf, .glb)")->required();
-  prtBakeCmd->add_option("--samples", prtBake.samples, "directions per vertex")->capture_default_str();
-  prtBakeCmd->add_flag("--no-shadows{false}", prtBake.shadows, "unshadowed transfer");
+  prtBakeCmd->add_option("--samples", prtBake.samples, "directions per vertex (default: the scene's prt.samples, else 1024)");
+  prtBakeCmd->add_flag("--no-shadows{false}", prtBake.shadows, "unshadowed transfer (so is a scene's whose prt.shadows is false)");
   prtBakeCmd->add_option("--cache", prtBake.cacheDir, "cache folder (default: Prism's cache)");
   prtBakeCmd->add_option("--part", prtBake.part, "I/N: only task I of N's share of the vertices, as a part for `prism merge` (-o)");
   prtBakeCmd->add_option("-o,--output", prtBake.output, "the part's file (with --part)");
-  prtBakeCmd->add_option("--threads", prtBake.threads, "worker threads (0: every core)")->capture_default_str();
+  prtBakeCmd->add_option("--threads", prtBake.threads, "worker threads (0: every core)")->capture_default_str()->check(CLI::Range(0u, prism::kMaxThreads));
   PrtReportOptions prtReport;
   auto* prtReportCmd = prtCmd->add_subcommand("report", "the ColorChecker object (or a scene): spectral PRT (m = 1..16) and RGB-PRT against 5 nm sampling");
   prtReportCmd->add_option("input", prtReport.input, "a scene (.json) or glTF model instead of the ColorChecker height field");
-  prtReportCmd->add_option("--illuminant", prtReport.illuminant, "illuminant of the environment")->capture_default_str();
-  prtReportCmd->add_option("--environment", prtReport.environment, "sky (overcast gradient), uniform, or atmosphere (Prism's spectral sky and sun)")->capture_default_str();
-  prtReportCmd->add_option("--sun-elevation", prtReport.sunElevationDeg, "the atmosphere's sun, degrees above the horizon")->capture_default_str();
-  prtReportCmd->add_option("--sun-azimuth", prtReport.sunAzimuthDeg, "the atmosphere's sun, degrees (0: towards -z, 90: +x)")->capture_default_str();
+  prtReportCmd->add_option("--illuminant", prtReport.illuminant, "illuminant of a sky or uniform environment (default: F4)");
+  prtReportCmd->add_option("--environment", prtReport.environment, "sky (overcast gradient; the default, unless a scene brings its own), uniform, or atmosphere (Prism's spectral sky and sun)");
+  prtReportCmd->add_option("--sun-elevation", prtReport.sunElevationDeg, "the atmosphere's sun, degrees above the horizon (default: 30)");
+  prtReportCmd->add_option("--sun-azimuth", prtReport.sunAzimuthDeg, "the atmosphere's sun, degrees (0: towards -z, 90: +x; default: 180)");
   prtReportCmd->add_option("--map,--exr", prtReport.exr, "an equirectangular map instead, row 0 at the zenith: linear-sRGB EXR or Radiance .hdr");
   std::string prtRotate;
   prtReportCmd->add_option("--rotate", prtRotate, "X,Y,Z,DEGREES: turn the environment (SH rotation, no re-projection)");
   prtReportCmd->add_option("--patch-vertices", prtReport.patchVertices, "vertices along each side of a patch")->capture_default_str();
-  prtReportCmd->add_option("--samples", prtReport.samples, "directions per vertex")->capture_default_str();
+  prtReportCmd->add_option("--samples", prtReport.samples, "directions per vertex (default: the scene's prt.samples, else 1024)");
   prtReportCmd->add_option("--plot", prtReport.plotFile, "SVG of the error against m to write");
   prtReportCmd->add_option("--colours", prtReport.coloursFile, "PLY of per-vertex display sRGB colours to write");
-  prtReportCmd->add_option("--colours-m", prtReport.coloursM, "basis size of those colours (0: the 5 nm reference)")->capture_default_str();
+  prtReportCmd->add_option("--colours-m", prtReport.coloursM, "basis size of those colours (0: the 5 nm reference; default 8, or fewer when the scene's spectra give fewer)");
   prtReportCmd->add_flag("--json", prtReport.json, "JSON output");
   PrtMetamersOptions prtMetamers;
   auto* prtMetamersCmd = prtCmd->add_subcommand("metamers", "a reflectance and its metamer on one object, rendered by spectral PRT under several skies");
@@ -246,7 +247,7 @@ int main(int argc, char** argv) {
   lutCmd->add_option("--gamut", lut.gamut, "srgb, display-p3, rec2020, acescg, aces2065-1")->capture_default_str();
   lutCmd->add_option("--res", lut.resolution, "nodes per axis (5–256)")->capture_default_str();
   lutCmd->add_option("-o,--output", lut.output, "table file to write")->required();
-  lutCmd->add_option("--threads", lut.threads, "worker threads (0: all)");
+  lutCmd->add_option("--threads", lut.threads, "worker threads (0: all)")->check(CLI::Range(0u, prism::kMaxThreads));
   lutCmd->add_flag("--report", lut.report, "measure node and round-trip CIEDE2000 after building");
   lutCmd->add_flag("--json", lut.json, "JSON output");
   lutCmd->add_option("--part", lut.part, "I/N: only task I of N's columns of the table, as a part for `prism merge`");
@@ -347,8 +348,8 @@ int main(int argc, char** argv) {
   auto* scriptPrtCmd = scriptCmd->add_subcommand(
       "prt", "`prism prt bake --part I/N` (a share of the vertices each), then `prism merge` into the cache's transfer file");
   scriptPrtCmd->add_option("input", cluster.prt.input, "scene (.json) or glTF model (.gltf, .glb)")->required();
-  scriptPrtCmd->add_option("--samples", cluster.prt.samples, "directions per vertex")->capture_default_str();
-  scriptPrtCmd->add_flag("--no-shadows{false}", cluster.prt.shadows, "unshadowed transfer");
+  scriptPrtCmd->add_option("--samples", cluster.prt.samples, "directions per vertex (default: the scene's prt.samples, else 1024)");
+  scriptPrtCmd->add_flag("--no-shadows{false}", cluster.prt.shadows, "unshadowed transfer (so is a scene's whose prt.shadows is false)");
   scriptPrtCmd->add_option("--cache", cluster.prt.cacheDir, "cache folder the merged bake goes to (default: Prism's cache)");
   addClusterOptions(scriptPrtCmd);
   auto* scriptLutCmd = scriptCmd->add_subcommand(

@@ -7,6 +7,7 @@
 #include "app/nebula_commands.h"
 #include "app/number_list.h"
 #include "core/error.h"
+#include "core/parallel_for.h"
 
 namespace prism::app {
 namespace {
@@ -44,7 +45,7 @@ void addNebulaCommands(CLI::App& app) {
   nebSweepCmd->add_flag("--no-lines", o->sweep.noLines, "leave out the emission lines");
   nebSweepCmd->add_flag("--json", o->sweep.json, "JSON output");
   nebSweepCmd->add_option("--plot", o->sweep.plotFile, "SVG of the error against the basis size to write");
-  nebSweepCmd->add_option("--threads", o->sweep.threads, "threads (0: all)");
+  nebSweepCmd->add_option("--threads", o->sweep.threads, "threads (0: all)")->check(CLI::Range(0u, kMaxThreads));
   auto* nebRenderCmd = nebulaCmd->add_subcommand("render", "march a nebula scene (CPU, or --gpu) to an EXR (linear) or PNG");
   nebRenderCmd->add_option("scene", o->render.scene, "nebula scene file (JSON with a 'nebula' section)")->required();
   nebRenderCmd->add_option("-o,--output", o->render.output, "OUT.exr or OUT.png")->required();
@@ -58,7 +59,7 @@ void addNebulaCommands(CLI::App& app) {
   nebRenderCmd->add_flag("--compare", o->render.compare, "also render the reference; print the max relative error");
   nebRenderCmd->add_flag("--no-lines", o->render.noLines, "leave out the emission lines");
   nebRenderCmd->add_flag("--gpu", o->render.gpu, "march on the GPU (any method; headless EGL)");
-  nebRenderCmd->add_option("--threads", o->render.threads, "threads (0: all)");
+  nebRenderCmd->add_option("--threads", o->render.threads, "threads (0: all)")->check(CLI::Range(0u, kMaxThreads));
   auto* nebBenchCmd = nebulaCmd->add_subcommand("bench", "time the GPU marcher against the CPU's, 1, 6 and 32 stars");
   nebBenchCmd->add_option("--repeats", o->bench.repeats, "timed runs per cell (the median is printed)")->capture_default_str();
   nebBenchCmd->add_option("--size", o->bench.size, "pixels a side (a GPU's march needs more than the default to show)")

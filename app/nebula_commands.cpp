@@ -26,6 +26,16 @@
 #include "techniques/nebula/nebula_scene.h"
 
 namespace prism::app {
+namespace {
+
+// A plot's file, checked before the work: an .svg where a file can be written (none: nothing).
+void requirePlotFile(const std::filesystem::path& plot) {
+  if (plot.empty()) return;
+  requireExtension(plot, ".svg", "--plot", "plot");
+  requireWritable(plot);
+}
+
+}  // namespace
 
 void runNebulaBasis(const NebulaBasisOptions& o) {
   // NaN fails every comparison, so each bound is written to be true of a good value.
@@ -34,7 +44,7 @@ void runNebulaBasis(const NebulaBasisOptions& o) {
       !(o.spacingUm >= 0.0 && o.spacingUm <= o.maxExponentUm))
     throw Error("nebula basis: need 0 ≤ λ0 < λ1 ≤ 100 µm, 1 ≤ count ≤ 8, max depth and max exponent within (0, 1000] µm, "
                 "spacing within [0, max exponent]");
-  if (!o.plotFile.empty()) requireWritable(o.plotFile);
+  requirePlotFile(o.plotFile);
   nebula::ExpBasis b = nebula::findExpBasis(o.lambda0Um, o.lambda1Um, o.maxDepthUm, o.maxExponentUm, o.count,
                                             o.spacingUm, /*orthonormalise=*/false);
   if (static_cast<int>(b.a.size()) < o.count)
@@ -74,8 +84,8 @@ void runNebulaBasis(const NebulaBasisOptions& o) {
 void runNebulaSweep(const NebulaSweepOptions& o) {
   if (o.maxBasis < 1 || o.maxBasis > nebula::kMaxBasisSize)
     throw Error(fmt::format("--max-basis: {} is not within 1..{}", o.maxBasis, nebula::kMaxBasisSize));
-  if (o.size < 0 || o.size > 4096) throw Error(fmt::format("--size: {} is not within 1..4096", o.size));
-  if (!o.plotFile.empty()) requireWritable(o.plotFile);
+  if (o.size && (*o.size < 1 || *o.size > 4096)) throw Error(fmt::format("--size: {} is not within 1..4096", *o.size));
+  requirePlotFile(o.plotFile);
   nebula::RenderSettings s;
   s.steps = o.steps.value_or(s.steps);
   nebula::validate(s);
@@ -86,7 +96,7 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
     scene.model.filters = o.filters;
   }
   nebula::NebulaCamera& camera = scene.model.camera;
-  if (o.size > 0) nebula::scaleImage(camera, o.size);
+  if (o.size) nebula::scaleImage(camera, *o.size);
   s.steps = o.steps.value_or(scene.steps);
   s.emissionLines = !o.noLines;
   s.threads = o.threads;

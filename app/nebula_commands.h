@@ -31,7 +31,7 @@ struct NebulaSweepOptions {
   std::string filters;           // empty: the scene's
   std::optional<int> steps;      // unset: the scene's
   int maxBasis = 5;
-  int size = 0;                  // > 0: the camera's longer side, in pixels (the aspect kept)
+  std::optional<int> size;       // the camera's longer side, in pixels (the aspect kept); unset: the scene's
   bool noLines = false;
   bool json = false;
   std::filesystem::path plotFile;

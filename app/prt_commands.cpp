@@ -36,10 +36,21 @@ namespace {
 // scene with PRT objects, only those, as the renderer bakes them): each scene material's measured
 // reflectance, else its base colour upsampled by the renderers' sRGB table (Jakob–Hanika, the
 // albedo intent; textures and conductors are not read: PRT here is diffuse and per vertex).
-prt::PrtObject loadPrtObject(const std::filesystem::path& input, bool withReflectances) {
+void checkSamples(int samples) {
+  if (samples < 1 || samples > (1 << 20)) throw Error(fmt::format("--samples: {} out of range 1..{}", samples, 1 << 20));
+}
+
+struct PrtInput {
+  Scene scene;  // as read (a model: its meshes and materials alone)
+  prt::PrtObject object;
+  const prt::PrtSection* section() const { return scene.techniques.find<prt::PrtSection>(); }
+};
+
+PrtInput loadPrtInput(const std::filesystem::path& input, bool withReflectances) {
   if (!std::filesystem::is_regular_file(input)) throw Error(input.string() + ": no such file");
   std::string ext = lowercaseExtension(input);
-  Scene scene;
+  PrtInput in;
+  Scene& scene = in.scene;
   if (ext == ".json") {
     scene = loadScene(input);
   } else if (ext == ".gltf" || ext == ".glb") {
@@ -47,7 +58,7 @@ prt::PrtObject loadPrtObject(const std::filesystem::path& input, bool withReflec
   } else {
     throw Error(input.string() + ": expected a scene (.json) or a glTF model (.gltf, .glb)");
   }
-  prt::PrtObject object;
+  prt::PrtObject& object = in.object;
   prt::PrtSceneMesh gathered = prt::prtSceneMesh(scene, prt::PrtMeshes::PrtObjectsElseAll);
   object.mesh = std::move(gathered.mesh);
   object.vertexMaterial = std::move(gathered.vertexMaterial);
@@ -70,11 +81,18 @@ prt::PrtObject loadPrtObject(const std::filesystem::path& input, bool withReflec
     }
     for (int& m : object.vertexMaterial) m = std::min(m, static_cast<int>(object.reflectances.size()) - 1);
   }
-  return object;
+  return in;
 }
 
-void checkSamples(int samples) {
-  if (samples < 1 || samples > (1 << 20)) throw Error(fmt::format("--samples: {} out of range 1..{}", samples, 1 << 20));
+// The bake a command makes for its input: --samples, else the scene's prt.samples, else 1024;
+// shadowed unless --no-shadows or the scene's prt.shadows says not — so that `prt bake SCENE`
+// fills the cache entry the renderer reads.
+prt::BakeSettings bakeSettingsFor(const PrtInput& input, const std::optional<int>& samples, bool shadows) {
+  const prt::PrtSection* section = input.section();
+  prt::BakeSettings settings{samples.value_or(section ? section->samples : prt::BakeSettings{}.samples),
+                             shadows && (!section || section->shadows)};
+  checkSamples(settings.samples);
+  return settings;
 }
 
 std::filesystem::path cacheFolder(const std::string& given) {
@@ -147,37 +165,69 @@ std::string plyText(const prt::PrtObject& object, const std::vector<Eigen::Vecto
 }  // namespace
 
 PrtBakeTarget prtBakeTarget(const PrtBakeOptions& o) {
-  checkSamples(o.samples);
+  if (o.samples) checkSamples(*o.samples);
+  PrtInput input = loadPrtInput(o.input, false);
   PrtBakeTarget target;
-  target.mesh = loadPrtObject(o.input, false).mesh;
-  target.key = prt::transferKey(target.mesh, {o.samples, o.shadows});
+  target.settings = bakeSettingsFor(input, o.samples, o.shadows);
+  target.mesh = std::move(input.object.mesh);
+  target.key = prt::transferKey(target.mesh, target.settings);
   target.cacheFile = prt::transferCacheFile(cacheFolder(o.cacheDir), target.key);
   return target;
 }
 
 void runPrtBake(const PrtBakeOptions& o) {
-  checkSamples(o.samples);
-  prt::PrtMesh mesh = loadPrtObject(o.input, false).mesh;
-  prt::BakeSettings settings{o.samples, o.shadows};
+  if (o.samples) checkSamples(*o.samples);
+  if (!o.output.empty()) requireOtherFile(o.output, o.input, "the input");
+  PrtInput input = loadPrtInput(o.input, false);
+  const prt::BakeSettings settings = bakeSettingsFor(input, o.samples, o.shadows);
+  const prt::PrtMesh& mesh = input.object.mesh;
   if (!o.part.empty()) return runPrtBakePart(o, mesh, settings);
   if (!o.output.empty()) throw Error("-o: only with --part (a whole bake goes to the cache)");
   auto start = std::chrono::steady_clock::now();
   prt::CachedTransfer result = transferFor(mesh, settings, o.cacheDir, o.threads);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  fmt::print("{}: {} vertices, {} directions each{}\n", o.input, mesh.positions.size(), o.samples,
-             o.shadows ? "" : " (unshadowed)");
+  fmt::print("{}: {} vertices, {} directions each{}\n", o.input, mesh.positions.size(), settings.samples,
+             settings.shadows ? "" : " (unshadowed)");
   if (result.fromCache) {
     fmt::print("transfer read from the cache: {}\n", result.file.string());
   } else {
-    double rays = static_cast<double>(mesh.positions.size()) * o.samples;
+    double rays = static_cast<double>(mesh.positions.size()) * settings.samples;
     fmt::print("baked in {:.2f} s ({:.3g} rays/s), cached: {}\n", seconds, rays / seconds, result.file.string());
   }
 }
 
-void runPrtReport(const PrtReportOptions& o) {
-  checkSamples(o.samples);
-  Spectrum spd = illuminant(o.illuminant);
-  prt::SpectralEnvironment environment;
+namespace {
+
+// The report's outputs, checked before the bake: named for their format, writable, and none of
+// them an input or the other output.
+void checkReportOutputs(const PrtReportOptions& o) {
+  for (const auto& [file, option, extension, what] :
+       {std::tuple{&o.plotFile, "--plot", ".svg", "plot"}, std::tuple{&o.coloursFile, "--colours", ".ply", "mesh"}}) {
+    if (file->empty()) continue;
+    requireExtension(*file, extension, option, what);
+    requireWritable(*file);
+    requireOtherFile(*file, o.input, "the input");
+    requireOtherFile(*file, o.exr, "the map (--map)");
+  }
+  requireOtherFile(o.coloursFile, o.plotFile, "the plot (--plot)");
+  if (o.coloursM && o.coloursFile.empty()) throw Error("--colours-m: only with --colours (the basis size of its colours)");
+}
+
+// The report's environment (PrtReportOptions says which); flags of another one are refused.
+prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtInput* input) {
+  const bool sun = o.sunElevationDeg || o.sunAzimuthDeg;
+  if (!o.exr.empty() && (o.environment || o.illuminant || sun))
+    throw Error("--map: the map is the environment; --environment, --illuminant and the sun's options describe another");
+  if (o.environment != "atmosphere" && sun)
+    throw Error("--sun-elevation, --sun-azimuth: only with --environment atmosphere");
+  if (o.environment == "atmosphere" && o.illuminant)
+    throw Error("--illuminant: the atmosphere is lit by its sun, not by an illuminant");
+  const prt::PrtSection* section = input ? input->section() : nullptr;
+  if (section && o.exr.empty() && !o.environment && !o.illuminant) {
+    prt::SpectralEnvironment environment = prt::sectionEnvironment(*section, rendererRgbToSpectrumTable("srgb"));
+    environment.name = "the scene's (" + environment.name + ")";
+    return environment;
+  }
   if (!o.exr.empty()) {
     imaging::FloatImage map = prt::readEnvironmentMap(o.exr);
     std::vector<float> rgb;
@@ -188,23 +238,33 @@ void runPrtReport(const PrtReportOptions& o) {
     harness::ProgressBar bar("RGB → spectrum table (first use)");
     const RgbToSpectrumTable& table =
         rendererRgbToSpectrumTable("srgb", [&bar](std::size_t done, std::size_t total) { bar.update(done, total); });
-    environment = prt::equirectangularEnvironment(o.exr, map.width, map.height, rgb,
-                                                  [&table](const glm::vec3& c) { return RgbUnboundedSpectrum(table, c).toDense(); });
-  } else if (o.environment == "sky") {
-    environment = prt::skyGradientEnvironment(o.illuminant + " sky", spd);
-  } else if (o.environment == "uniform") {
-    environment = prt::uniformEnvironment(o.illuminant + " uniform", spd);
-  } else if (o.environment == "atmosphere") {
-    if (!(std::abs(o.sunElevationDeg) <= 90.0)) throw Error(fmt::format("--sun-elevation: {} is not within -90..90", o.sunElevationDeg));
-    if (!(std::abs(o.sunAzimuthDeg) <= 360.0)) throw Error(fmt::format("--sun-azimuth: {} is not within -360..360", o.sunAzimuthDeg));
-    prt::PrtSky sky;
-    sky.atmosphere.sunElevationDeg = static_cast<float>(o.sunElevationDeg);
-    sky.atmosphere.sunAzimuthDeg = static_cast<float>(o.sunAzimuthDeg);
-    environment = prt::skyEnvironment(fmt::format("Prism's spectral sky, sun at {}°", o.sunElevationDeg),
-                                      prt::tabulateSky(sky), true, 1.0);
-  } else {
-    throw Error("--environment: '" + o.environment + "' is not sky, uniform or atmosphere");
+    return prt::equirectangularEnvironment(o.exr, map.width, map.height, rgb,
+                                           [&table](const glm::vec3& c) { return RgbUnboundedSpectrum(table, c).toDense(); });
   }
+  const std::string shape = o.environment.value_or("sky");
+  const std::string name = o.illuminant.value_or("F4");
+  if (shape == "sky") return prt::skyGradientEnvironment(name + " sky", illuminant(name));
+  if (shape == "uniform") return prt::uniformEnvironment(name + " uniform", illuminant(name));
+  if (shape != "atmosphere") throw Error("--environment: '" + shape + "' is not sky, uniform or atmosphere");
+  const double elevation = o.sunElevationDeg.value_or(30.0), azimuth = o.sunAzimuthDeg.value_or(180.0);
+  if (!(std::abs(elevation) <= 90.0)) throw Error(fmt::format("--sun-elevation: {} is not within -90..90", elevation));
+  if (!(std::abs(azimuth) <= 360.0)) throw Error(fmt::format("--sun-azimuth: {} is not within -360..360", azimuth));
+  prt::PrtSky sky;
+  sky.atmosphere.sunElevationDeg = static_cast<float>(elevation);
+  sky.atmosphere.sunAzimuthDeg = static_cast<float>(azimuth);
+  return prt::skyEnvironment(fmt::format("Prism's spectral sky, sun at {}°", elevation), prt::tabulateSky(sky), true, 1.0);
+}
+
+}  // namespace
+
+void runPrtReport(const PrtReportOptions& o) {
+  if (o.samples) checkSamples(*o.samples);
+  checkReportOutputs(o);
+  if (o.patchVertices < 2 || o.patchVertices > 256)
+    throw Error(fmt::format("--patch-vertices: {} out of range 2..256", o.patchVertices));
+  std::optional<PrtInput> input;
+  if (!o.input.empty()) input = loadPrtInput(o.input, true);
+  prt::SpectralEnvironment environment = reportEnvironment(o, input ? &*input : nullptr);
   if (!o.rotate.empty()) {  // the environment turned by its SH rotation, not projected again
     glm::dvec3 axis = o.rotate.size() == 4 ? glm::dvec3(o.rotate[0], o.rotate[1], o.rotate[2]) : glm::dvec3(0.0);
     if (!(glm::length(axis) > 0.0) || !std::isfinite(glm::length(axis)))
@@ -216,15 +276,15 @@ void runPrtReport(const PrtReportOptions& o) {
   // ΔE needs a white: a sky whose sun is far enough below the horizon holds no light to compare in.
   if (!(prt::sceneWhite(prt::environmentOnGrid(environment), cie1931Observer()).y() > 0.0))
     throw Error(fmt::format("prt report: {} holds no light (its white's luminance is 0): nothing to compare", environment.name));
-  if (o.patchVertices < 2 || o.patchVertices > 256)
-    throw Error(fmt::format("--patch-vertices: {} out of range 2..256", o.patchVertices));
-  prt::PrtObject object = o.input.empty() ? prt::makeColourCheckerObject(o.patchVertices) : loadPrtObject(o.input, true);
+  const prt::PrtObject object = input ? input->object : prt::makeColourCheckerObject(o.patchVertices);
+  const prt::BakeSettings bake =
+      input ? bakeSettingsFor(*input, o.samples, true) : prt::BakeSettings{o.samples.value_or(prt::BakeSettings{}.samples)};
   // Checked before the bake: the basis has at most one function per spectrum of the scene.
   int mMax = std::min(static_cast<int>(object.reflectances.size() + environment.terms.size()), 16);
   const int coloursM = o.coloursM.value_or(std::min(8, mMax));
   if (!o.coloursFile.empty() && (coloursM < 0 || coloursM > mMax))
     throw Error(fmt::format("--colours-m: {} out of range 0..{}", coloursM, mMax));
-  prt::CachedTransfer transfer = transferFor(object.mesh, {o.samples, true}, "");
+  prt::CachedTransfer transfer = transferFor(object.mesh, bake, "");
   const Observer& obs = cie1931Observer();
   prt::PrtReport report = prt::basisSweep(object, transfer.transfer, environment, obs);
 
@@ -250,7 +310,7 @@ void runPrtReport(const PrtReportOptions& o) {
   }
   if (o.json) {
     nlohmann::json out = {{"environment", environment.name}, {"vertices", report.vertices},
-                          {"samples", o.samples}, {"rgb_prt", statisticsJson(report.rgbError)}};
+                          {"samples", bake.samples}, {"rgb_prt", statisticsJson(report.rgbError)}};
     for (const prt::BasisSweepRow& row : report.sweep) {
       nlohmann::json r = statisticsJson(row.error);
       r["m"] = row.m;
@@ -262,7 +322,7 @@ void runPrtReport(const PrtReportOptions& o) {
   }
   fmt::print("{}, {} vertices, {} directions, environment {}; against 5 nm point sampling "
              "(81 λ) through the same transfer\n",
-             o.input.empty() ? "ColorChecker height field" : o.input, report.vertices, o.samples, environment.name);
+             o.input.empty() ? "ColorChecker height field" : o.input, report.vertices, bake.samples, environment.name);
   fmt::print("{:>8} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "m", "energy", "mean ΔE94", "max ΔE94", "mean ΔE00", "max ΔE00");
   for (const prt::BasisSweepRow& row : report.sweep)
     fmt::print("{:>8} {:>10.6f} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f}\n", row.m, row.capturedEnergy, row.error.mean94,
@@ -273,6 +333,8 @@ void runPrtReport(const PrtReportOptions& o) {
 
 void runPrtMetamers(const PrtMetamersOptions& o) {
   checkSamples(o.samples);
+  if (std::ranges::equal(illuminant(o.match).values(), illuminant(o.target).values()))
+    throw Error(fmt::format("--target {}: the same light as --match {}; a metamer differs under another", o.target, o.match));
   if (o.patchVertices < 2 || o.patchVertices > 256)
     throw Error(fmt::format("--patch-vertices: {} out of range 2..256", o.patchVertices));
   Spectrum original = patchOrFileReflectance(o.reflectance, "--reflectance");

@@ -13,9 +13,9 @@
 namespace prism::app {
 
 struct PrtBakeOptions {
-  std::string input;       // a scene (.json) or a glTF model (.gltf, .glb)
-  int samples = 1024;      // directions per vertex
-  bool shadows = true;
+  std::string input;           // a scene (.json) or a glTF model (.gltf, .glb)
+  std::optional<int> samples;  // directions per vertex; unset: the scene's prt.samples, else 1024
+  bool shadows = true;         // false: unshadowed (so is a scene whose prt.shadows is false)
   std::string cacheDir;    // default: Prism's cache folder
   std::string part;        // "I/N": only task I of N's vertices, written to `output` (transfer_part.h)
   std::string output;      // the part's file (with --part only)
@@ -29,6 +29,7 @@ void runPrtBake(const PrtBakeOptions& options);
 // What runPrtBake bakes: the input's mesh (z-up, world space) and the cache file its transfer
 // goes to (`cacheDir`, else Prism's cache; transfer_bake.h's transferCacheFile).
 struct PrtBakeTarget {
+  prt::BakeSettings settings;  // the options resolved against the scene's section
   prt::PrtMesh mesh;
   std::uint64_t key = 0;
   std::filesystem::path cacheFile;
@@ -37,14 +38,17 @@ PrtBakeTarget prtBakeTarget(const PrtBakeOptions& options);
 
 struct PrtReportOptions {
   std::string input;                // a scene or glTF model; empty: the ColorChecker height field
-  std::string illuminant = "F4";
-  std::string environment = "sky";  // sky | uniform | atmosphere (Prism's spectral sky, its sun below)
-  double sunElevationDeg = 30.0;
-  double sunAzimuthDeg = 180.0;
+  // One environment: a scene's own (`input` with a prt section, none of the below given), a map,
+  // or `environment` (default sky) under `illuminant` (default F4) or, for atmosphere, its sun
+  // (default 30° up, azimuth 180°). Options of another environment than the one used are refused.
+  std::optional<std::string> illuminant;
+  std::optional<std::string> environment;  // sky | uniform | atmosphere (Prism's spectral sky, its sun below)
+  std::optional<double> sunElevationDeg;
+  std::optional<double> sunAzimuthDeg;
   std::string exr;                  // or an equirectangular linear-sRGB EXR (row 0 at the zenith)
   std::vector<double> rotate;       // X, Y, Z, degrees: the environment turned (empty: not)
   int patchVertices = 16;           // vertices along each side of a ColorChecker patch
-  int samples = 1024;
+  std::optional<int> samples;       // unset: a scene's prt.samples, else 1024
   std::string plotFile;             // optional: the sweep as an SVG
   std::string coloursFile;          // optional: per-vertex display colours as a PLY
   // Of spectral PRT with this many functions, 0: the 5 nm reference; unset: 8, or as many as the

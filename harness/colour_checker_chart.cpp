@@ -70,8 +70,7 @@ std::vector<std::vector<ChartPatch>> writeColourCheckerChart(const DemoOptions& 
 }
 
 void runDemo(const DemoOptions& options) {
-  if (lowercaseExtension(options.output) != ".png")
-    throw Error(fmt::format("{}: the chart is written as a .png file", options.output.string()));
+  requireExtension(options.output, ".png", "", "chart");
   if (options.adaptation != "none" && options.adaptation != "bradford" && options.adaptation != "cat02" &&
       options.adaptation != "von-kries")
     throw Error(fmt::format("--adaptation: unknown chromatic adaptation '{}' (known: bradford, cat02, von-kries, none)",

@@ -61,8 +61,7 @@ void runCompare(const CompareOptions& o) {
   if (!(o.scaleMax > 0.0 && within(o.scaleMax, 0.0)))
     throw Error(fmt::format("--scale-max: must be > 0 and up to {:g}", schema::kFloatInputLimit));
   for (const auto& [option, path] : {std::pair{"--heatmap", &o.heatmap}, std::pair{"--histogram", &o.histogram}}) {
-    if (!path->empty() && lowercaseExtension(*path) != ".png")
-      throw Error(fmt::format("{} {}: the picture is written as a .png file", option, path->string()));
+    if (!path->empty()) requireExtension(*path, ".png", option, "picture");
     requireOtherFile(*path, o.reference, "the reference image");
     requireOtherFile(*path, o.test, "the test image");
   }

@@ -463,7 +463,10 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   expectOneLineError("nebula basis --max-exponent inf", "max depth and max exponent within (0, 1000]");
   expectOneLineError("nebula basis --spacing nan", "spacing within [0, max exponent]");
   expectOneLineError("nebula basis --spacing 1.5 --count 3", "only 2 of 3 elements found");
-  expectOneLineError("nebula sweep " + tiny + " --plot " + dir.string(), "is a folder");
+  std::filesystem::create_directories(dir / "folder.svg");
+  expectOneLineError("nebula sweep " + tiny + " --plot " + (dir / "folder.svg").string(), "is a folder");
+  expectOneLineError("nebula sweep " + tiny + " --size 0", "--size: 0 is not within 1..4096");
+  expectOneLineError("nebula basis --plot basis.png", "--plot basis.png: the plot is written as an .svg file");
 
   // The GPU's timings at a size of one's own, without the CPU's columns.
   Result bench = run("nebula bench --repeats 1 --size 8 --no-cpu");
@@ -481,6 +484,24 @@ TEST(Cli, PrtCommandsCheckTheirInput) {
   expectOneLineError("prt report --environment cloudy", "--environment");
   expectOneLineError("prt report --illuminant F99", "F99");
   expectOneLineError("colour metamer --reflectance 'no such patch'", "no such patch");
+  // Options of another environment than the one used, refused rather than ignored.
+  expectOneLineError("prt report --map sky.exr --illuminant A", "--map: the map is the environment");
+  expectOneLineError("prt report --sun-elevation 10", "--sun-elevation, --sun-azimuth: only with --environment atmosphere");
+  expectOneLineError("prt report --environment atmosphere --illuminant A", "--illuminant: the atmosphere is lit by its sun");
+  expectOneLineError("prt report --colours-m 4", "--colours-m: only with --colours");
+  expectOneLineError("prt metamers --target D65", "--target D65: the same light as --match D65");
+  expectOneLineError("prt bake " + std::string(PRISM_SCENES_DIR) + "/prt_metamers.json --threads 100000",
+                     "--threads: Value 100000 not in range 0 to 4096");
+  // Outputs: named for their format, and never the input or each other (before, checked after
+  // the bake, or not at all: --plot SCENE.json replaced the scene with an SVG).
+  const std::string scene = std::string(PRISM_SCENES_DIR) + "/prt_metamers.json";
+  expectOneLineError("prt report --plot sweep.png", "--plot sweep.png: the plot is written as an .svg file");
+  expectOneLineError("prt report --colours mesh.obj", "--colours mesh.obj: the mesh is written as a .ply file");
+  const std::string svg = (std::filesystem::path(::testing::TempDir()) / "scene.svg").string();
+  expectOneLineError("prt report " + svg + " --plot " + svg, "is also the input");
+  const std::filesystem::path file = writeTemp("not_a_folder.txt", "");
+  expectOneLineError("prt report --plot " + (file / "sweep.svg").string(), "not_a_folder.txt");
+  expectOneLineError("prt bake " + scene + " --part 1/2 -o " + scene, "is also the input");
 }
 
 TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
@@ -500,6 +521,21 @@ TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
   ASSERT_EQ(sceneReport.exitCode, 0) << sceneReport.err;
   EXPECT_FALSE(nlohmann::json::parse(sceneReport.out)["spectral"].empty());
   expectOneLineError("prt report --patch-vertices 4 --samples 16 --colours-m 99 --colours x.ply", "--colours-m", cache);
+
+  // A scene's own PRT section: `prt bake` makes the bake its renderer reads (the section's
+  // samples, unshadowed as it says), and `prt report` lights it with the section's environment.
+  std::filesystem::path tiny = writeTemp("prt_tiny.json", R"({"camera": {"position": [0, 1, 3], "target": [0, 0, 0]},
+    "materials": {"m": {"base_colour": [0.6, 0.3, 0.2]}},
+    "objects": [{"sphere": {"centre": [0, 0, 0], "radius": 0.5, "segments": 8}, "material": "m", "technique": "prt"}],
+    "prt": {"environment": {"illuminant": "A", "shape": "uniform", "luminance": 100}, "samples": 8, "shadows": false}})");
+  Result own = run("prt bake " + tiny.string(), cache);
+  ASSERT_EQ(own.exitCode, 0) << own.err;
+  EXPECT_NE(own.out.find("8 directions each (unshadowed)"), std::string::npos) << own.out;
+  Result ownReport = run("prt report " + tiny.string() + " --json", cache);
+  ASSERT_EQ(ownReport.exitCode, 0) << ownReport.err;
+  const nlohmann::json ownJson = nlohmann::json::parse(ownReport.out);
+  EXPECT_EQ(ownJson["environment"].get<std::string>().rfind("the scene's (", 0), 0u) << ownReport.out;
+  EXPECT_EQ(ownJson["samples"], 8);
 
   std::filesystem::path ply = std::filesystem::path(::testing::TempDir()) / "prt" / "checker.ply";
   std::filesystem::path svg = std::filesystem::path(::testing::TempDir()) / "prt" / "sweep.svg";

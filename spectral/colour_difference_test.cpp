@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/csv.h"
 #include "core/data_files.h"
 #include "core/error.h"
@@ -18,6 +20,18 @@ TEST(Ciede2000, AgreesWithSharmaWuDalalTestData) {
     double expected = t.number(row, 7);
     EXPECT_NEAR(deltaE(lab1, lab2, DeltaEFormula::Ciede2000), expected, 1e-4) << "pair " << row.fields[0];
     EXPECT_NEAR(deltaE(lab2, lab1, DeltaEFormula::Ciede2000), expected, 1e-4) << "pair " << row.fields[0];
+  }
+}
+
+// Beyond C ≈ 3e5, C⁷ overflowed float: ΔE00 came out inf or NaN (a pixel 1e15 times its white
+// in `compare`, `colour delta-e --lab 1e6,1e6,1e6`). Far from the locus the chroma weight is 1, so
+// the difference of two colours there is finite and, scaled up together, grows in proportion.
+TEST(Ciede2000, StaysFiniteForHugeChroma) {
+  for (double scale : {1e6, 1e9, 1e12}) {
+    Eigen::Vector3d a(scale, scale, scale), b(0.0, 0.0, 0.0), c(scale, 1.01 * scale, scale);
+    const double far = deltaE(a, b, DeltaEFormula::Ciede2000), near = deltaE(a, c, DeltaEFormula::Ciede2000);
+    EXPECT_TRUE(std::isfinite(far) && far > 0.0) << scale << ": " << far;
+    EXPECT_TRUE(std::isfinite(near) && near > 0.0 && near < far) << scale << ": " << near;
   }
 }
 

@@ -72,12 +72,20 @@ PRISM_INLINE float hueDegrees(float b, float aPrime) {
   return h < 0.0f ? h + 360.0f : h;
 }
 
+// √(C⁷ / (C⁷ + 25⁷)), the chroma weight of Sharma's G and R_C, written so that C⁷ never overflows
+// float (it did above C ≈ 3e5: a pixel 1e15 times its white came out as ΔE00 inf, --lab 1e6 NaN).
+PRISM_INLINE float chromaWeight7(float c) {
+  if (c <= 25.0f) {
+    float c7 = pow(c, 7.0f);
+    return sqrt(c7 / (c7 + 6103515625.0f));
+  }
+  return sqrt(1.0f / (1.0f + pow(25.0f / c, 7.0f)));
+}
+
 PRISM_INLINE float deltaE2000(IN(vec3) lab1, IN(vec3) lab2) {
-  const float pow25To7 = 6103515625.0f;
   float cStar1 = sqrt(lab1.y * lab1.y + lab1.z * lab1.z);
   float cStar2 = sqrt(lab2.y * lab2.y + lab2.z * lab2.z);
-  float cStarMean7 = pow(0.5f * (cStar1 + cStar2), 7.0f);
-  float g = 0.5f * (1.0f - sqrt(cStarMean7 / (cStarMean7 + pow25To7)));
+  float g = 0.5f * (1.0f - chromaWeight7(0.5f * (cStar1 + cStar2)));
   float a1 = (1.0f + g) * lab1.y;
   float a2 = (1.0f + g) * lab2.y;
   float c1 = sqrt(a1 * a1 + lab1.z * lab1.z);
@@ -106,8 +114,7 @@ PRISM_INLINE float deltaE2000(IN(vec3) lab1, IN(vec3) lab2) {
   float t = 1.0f - 0.17f * cos(radians(hMean - 30.0f)) + 0.24f * cos(radians(2.0f * hMean)) +
             0.32f * cos(radians(3.0f * hMean + 6.0f)) - 0.20f * cos(radians(4.0f * hMean - 63.0f));
   float dTheta = 30.0f * exp(-((hMean - 275.0f) / 25.0f) * ((hMean - 275.0f) / 25.0f));
-  float cMean7 = pow(cMean, 7.0f);
-  float rC = 2.0f * sqrt(cMean7 / (cMean7 + pow25To7));
+  float rC = 2.0f * chromaWeight7(cMean);
   float lOff2 = (lMean - 50.0f) * (lMean - 50.0f);
   float sL = 1.0f + 0.015f * lOff2 / sqrt(20.0f + lOff2);
   float sC = 1.0f + 0.045f * cMean;

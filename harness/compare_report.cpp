@@ -68,6 +68,13 @@ void runCompare(const CompareOptions& o) {
   requireOtherFile(o.histogram, o.heatmap, "the heat map");
   Loaded reference = load(o.reference, o.white);
   Loaded test = load(o.test, o.white);
+  // Linear light against a display image (tone-mapped, exposed, encoded) measures the display
+  // transform, not the renders: refused, as is a white for two display images.
+  if (reference.linear != test.linear)
+    throw Error(fmt::format("{} is {} and {} {}: compare two EXRs (linear light) or two PNGs (display images)",
+                            o.reference.string(), reference.linear ? "an EXR" : "a PNG", o.test.string(),
+                            test.linear ? "an EXR" : "a PNG"));
+  if (o.white && !reference.linear) throw Error("--white: only for EXRs; a PNG's white is the display's");
   // Both linear sides must be put into CIELAB against one white: the one they agree on, the one
   // only one of them records, or --white.
   if (reference.linear && test.linear && !o.white) {

@@ -15,6 +15,7 @@
 #include "spectral/colour_space.h"
 #include "spectral/spectrum_csv.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_cache.h"
@@ -180,8 +181,17 @@ void colourConvert(const ConvertOptions& o) {
   if (from && to) m = rgbToRgb(*from, *to, adaptation);
   else if (from) m = from->rgbToXyz;
   else if (to) m = to->xyzToRgb;
-  Eigen::Vector3d linear = m * (from && !o.linear ? from->decode(in) : in);
-  Eigen::Vector3d value = to && !o.linear ? to->encode(linear) : linear;
+  // The transfer functions mirrored about 0, as extended-range sRGB does: a negative or over-range
+  // value converts and converts back instead of being clamped to 0 (it read as in gamut).
+  const auto mirrored = [](const Eigen::Vector3d& v, auto&& transfer) {
+    Eigen::Vector3d out = transfer(Eigen::Vector3d(v.cwiseAbs()));
+    for (int c = 0; c < 3; ++c) out[c] = std::copysign(out[c], v[c]);
+    return out;
+  };
+  const Eigen::Vector3d decoded =
+      from && !o.linear ? mirrored(in, [from](const Eigen::Vector3d& x) { return from->decode(x); }) : in;
+  Eigen::Vector3d linear = m * decoded;
+  Eigen::Vector3d value = to && !o.linear ? mirrored(linear, [to](const Eigen::Vector3d& x) { return to->encode(x); }) : linear;
   bool inGamut = !to || ((linear.array() >= -1e-9).all() && (linear.array() <= 1.0 + 1e-9).all());
   if (o.json) {
     fmt::print("{}\n", json{{"from", o.from}, {"to", o.to}, {"linear", toJson(linear)},
@@ -247,6 +257,8 @@ Spectrum patchOrFileReflectance(const std::string& text, const std::string& opti
 void colourSpectralTexture(const SpectralTextureOptions& o) {
   if (o.cell < 1 || o.cell > 256) throw Error("colour spectral-texture: --cell must be 1 to 256, got " + std::to_string(o.cell));
   if (o.basis < 0 || o.basis > 24) throw Error("colour spectral-texture: --basis must be 0 to 24, got " + std::to_string(o.basis));
+  requireExtension(o.output, ".exr", "", "spectral texture");
+  requireWritable(o.output);
   SpectralTexture t;
   t.width = 6 * o.cell;
   t.height = 4 * o.cell;
@@ -284,6 +296,10 @@ void colourSpectralTexture(const SpectralTextureOptions& o) {
 }
 
 void colourMetamer(const MetamerOptions& o) {
+  if (!o.output.empty()) {
+    requireWritable(o.output);
+    requireOtherFile(o.output, o.reflectance, "the reflectance (--reflectance)");
+  }
   const Observer& obs = observer(o.observer);
   // The metamer is matched and measured in CIELAB, which a camera's raw RGB has no meaning in.
   if (obs.isCamera) throw Error(fmt::format("--observer: '{}' is a camera; metamers are matched in CIELAB "

@@ -333,8 +333,6 @@ void runPrtReport(const PrtReportOptions& o) {
 
 void runPrtMetamers(const PrtMetamersOptions& o) {
   checkSamples(o.samples);
-  if (std::ranges::equal(illuminant(o.match).values(), illuminant(o.target).values()))
-    throw Error(fmt::format("--target {}: the same light as --match {}; a metamer differs under another", o.target, o.match));
   if (o.patchVertices < 2 || o.patchVertices > 256)
     throw Error(fmt::format("--patch-vertices: {} out of range 2..256", o.patchVertices));
   Spectrum original = patchOrFileReflectance(o.reflectance, "--reflectance");

@@ -128,7 +128,7 @@ std::vector<IlluminantInfo> listIlluminants() {
     list.push_back({n, "relative, as tabulated in CIE 15:2004 (5 nm)"});
   for (const std::string& n : t.led.names())
     list.push_back({n, "relative, as tabulated in CIE 015:2018 Table 12 (1 nm)"});
-  list.push_back({"led-globe-a19", "relative power as in LSPDD (peak 1, near 457 nm)"});
+  list.push_back({"led-globe-a19", "relative power as in LSPDD (peak 0.0049 at 457 nm)"});
   for (const std::string& n : t.nist.names())
     list.push_back({"nist:" + n, "relative, each lamp on its source's own scale (NIST CQS 7.4 / RIT)"});
   list.push_back({"daylight:<K>", "CIE daylight, 4000–25000 K, 100 at 560 nm"});

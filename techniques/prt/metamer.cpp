@@ -138,6 +138,10 @@ Metamer findMetamer(const Spectrum& reflectance, const Spectrum& matchIlluminant
       throw Error(fmt::format("metamer: the reflectance is {} at {} nm, outside [0, 1]", p.r[i], gridWavelengthNm(i)));
   Eigen::MatrixXd match = gridWeights(observer, matchIlluminant);
   if (!match.allFinite() || match.norm() == 0.0) throw Error("metamer: the match illuminant gives no colour");
+  // Under one light the "metamer" is the reflectance itself, every ΔE 0: said rather than shown.
+  if (std::ranges::equal(matchIlluminant.values(), targetIlluminant.values()))
+    throw Error("metamer: the match and target illuminants are the same light; a metamer matches under one and "
+                "differs under another");
   Eigen::HouseholderQR<Eigen::MatrixXd> qr(match.transpose());  // 81 × 3
   Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(kGridWavelengths, kGridWavelengths);
   p.null = q.rightCols(kGridWavelengths - 3);

@@ -8,6 +8,8 @@
 
 #include "batch/slurm_script.h"
 #include "core/error.h"
+#include "reference/path_tracer.h"
+#include "render/frame_settings.h"
 #include "scene/scene_loader.h"
 #include "spectral/colour_space.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
@@ -80,7 +82,10 @@ void printReferenceClusterScript(const ClusterOptions& o) {
   checkReferenceOutputs(r.output, r.variance);
   if (o.split != "rows" && o.split != "samples") throw Error(fmt::format("--split: expected rows or samples, got \"{}\"", excerpt(o.split)));
   const bool rows = o.split == "rows";
+  if (r.ev100) render::validateEv100(*r.ev100);
+  if (r.threads != 0) throw Error("--threads: each task runs as many threads as its --cpus (SLURM_CPUS_PER_TASK)");
   const Scene scene = loadScene(r.scene, r.sets);  // refused here, not in a hundred tasks
+  reference::requireTraceable(scene);
   const reference::ReferenceSettings settings = referenceSettings(r);
   const int most = rows ? settings.height : settings.samplesPerPixel;
   if (o.tasks > most) {

@@ -502,6 +502,13 @@ class PathTracer {
 
 }  // namespace
 
+void requireTraceable(const Scene& scene) {
+  for (const auto& section : scene.techniques.all()) {
+    if (std::string_view why = section->notTracedBecause(); !why.empty())
+      throw Error(fmt::format("{}: {}", scene.file.string(), why));
+  }
+}
+
 ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& table,
                                const ReferenceSettings& settings, const ReferenceProgress& progress) {
   return renderReference(scene, table, settings, ReferenceRegion::whole(settings), progress);
@@ -512,10 +519,7 @@ ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& tab
                                const ReferenceProgress& progress) {
   validate(settings);
   validate(region, settings);
-  for (const auto& section : scene.techniques.all()) {
-    if (std::string_view why = section->notTracedBecause(); !why.empty())
-      throw Error(fmt::format("{}: {}", scene.file.string(), why));
-  }
+  requireTraceable(scene);
   PathTracer tracer(scene, table, settings);
   const int width = settings.width, rows = region.rows();
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(rows);

@@ -181,6 +181,9 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   s.referenceIntervals = o.referenceIntervals;
   s.uniformSamples = o.uniformSamples;
   nebula::validate(s);
+  if (o.uniformSamples != 0 && method != nebula::Method::Reference)
+    throw Error(fmt::format("--uniform-samples {}: only with --method reference (the paper's baseline); {} samples no "
+                            "wavelengths", o.uniformSamples, o.method));
   requireWritable(o.output);
   nebula::NebulaScene scene = nebula::loadNebulaScene(o.scene, o.threads);
   if (!o.filters.empty()) {
@@ -192,15 +195,18 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   s.emissionLines = !o.noLines;
   s.threads = o.threads;
   std::string filters = scene.model.filters;
+  std::unique_ptr<gpu::HeadlessContext> context;
+  if (o.gpu) {
+    context = std::make_unique<gpu::HeadlessContext>();
+    nebula::requireGpuFits(scene.model);  // before the precomputation, not after it
+  }
   harness::ProgressBar bar(scene.model.ionisation ? "nebula: optical depth to each star, ionisation zones, bases"
                                                   : "nebula: optical depth to each star, bases");
   auto t0 = std::chrono::steady_clock::now();
   nebula::NebulaRenderer renderer(std::move(scene.model), s, [&bar](std::size_t d, std::size_t n) { bar.update(d, n); });
   auto t1 = std::chrono::steady_clock::now();
   nebula::NebulaImage image;
-  std::unique_ptr<gpu::HeadlessContext> context;
   if (o.gpu) {
-    context = std::make_unique<gpu::HeadlessContext>();
     nebula::NebulaGpuMarcher marcher(renderer);
     t1 = std::chrono::steady_clock::now();  // the upload and the shaders' compilation count as precomputation
     image = marcher.render(s);
@@ -211,12 +217,19 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   fmt::print("{}{}: {}x{}, {} steps, {} star(s), precomputation {:.0f} ms, render {:.0f} ms\n", nebula::methodName(method),
              o.gpu ? " (GPU)" : "", image.width, image.height, s.steps, renderer.model().stars.size(), ms(t0, t1), ms(t1, t2));
-  if (o.compare && method != nebula::Method::Reference) {
+  if (o.compare) {
+    // The reference: Simpson at the given intervals; for a Simpson reference itself, at twice
+    // as many (how far it is from converged).
     nebula::RenderSettings r = s;
     r.method = nebula::Method::Reference;
     r.uniformSamples = 0;
+    std::string against = "the reference";
+    if (method == nebula::Method::Reference && s.uniformSamples == 0) {
+      r.referenceIntervals = std::min(2 * s.referenceIntervals, nebula::kMaxReferenceIntervals);
+      against = fmt::format("the reference at {} Simpson intervals", r.referenceIntervals);
+    }
     nebula::NebulaImage reference = renderer.render(r);
-    fmt::print("max relative error per pixel against the reference (pixels ≥ 1 % of their channel's maximum): {:.4g}\n",
+    fmt::print("max relative error per pixel against {} (pixels ≥ 1 % of their channel's maximum): {:.4g}\n", against,
                nebula::maxRelativeError(image, reference));
   }
   writeImage(image, filters, o.output);

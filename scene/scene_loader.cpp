@@ -51,6 +51,9 @@ class SceneParser {
                                        "materials", "objects", "background"};
     for (const TechniqueSectionParser& technique : techniqueSectionParsers()) keys.emplace_back(technique.key);
     top.expectObject(keys);
+    if (root.size() == 1 && root.contains("nebula"))  // said before "missing required key 'camera'"
+      top.fail("a nebula scene (its only key is \"nebula\"): `prism nebula render` takes it; a scene of the renderer "
+               "has a camera and objects, and may hold a nebula section");
     for (const char* key : {"$schema", "description"})
       if (auto n = top.optionalChild(key); n && !n->json().is_string())
         n->fail("expected a string, got " + schema::describe(n->json()));

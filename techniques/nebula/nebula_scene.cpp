@@ -135,6 +135,9 @@ NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads)
   schema::Document doc{path.string(), {}};
   nlohmann::json json = schema::parseJson(text, doc.name);
   schema::Node root(json, "", doc);
+  if (json.is_object() && json.contains("camera") && json.contains("nebula"))  // said before "/camera: unknown key"
+    root.fail("a scene of the renderer (it has a camera): `prism render` and `prism view` take it; `prism nebula` "
+              "takes a file whose only key is \"nebula\"");
   root.expectObject({"nebula"});
   schema::Node n = root.child("nebula");
   n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "ionisation",

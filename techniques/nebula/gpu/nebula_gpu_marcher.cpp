@@ -32,6 +32,16 @@ void setIfActive(const gpu::Program& program, std::string_view name, const T& va
   if (program.hasUniform(name)) program.setUniform(name, value);
 }
 
+// Error unless ⌈width/4⌉ slabs of nz texels fit along a 3D texture's z on this GPU.
+void requireSlabsFit(int nz, int width, std::string_view label) {
+  const int slabs = (width + 3) / 4;
+  GLint maxDepth = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxDepth);
+  if (static_cast<long>(nz) * slabs > maxDepth)
+    throw Error(fmt::format("nebula: {} needs {} × {} texels along z, more than this GPU's 3D textures hold ({})",
+                            label, nz, slabs, maxDepth));
+}
+
 // Per-voxel fields of `width` values as an RGBA32F texture of ⌈width/4⌉ slabs stacked along z
 // (nebula_march.comp's uField); a 1×1×1 zero texel for none.
 gpu::Texture3D fieldTexture(int nx, int ny, int nz, int width, const std::vector<const VoxelField*>& fields,
@@ -46,12 +56,8 @@ gpu::Texture3D fieldTexture(int nx, int ny, int nz, int width, const std::vector
     desc.texels = texels;
     return gpu::Texture3D(desc);
   }
+  requireSlabsFit(nz, width, label);
   const int slabs = (width + 3) / 4;
-  GLint maxDepth = 0;
-  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxDepth);
-  if (static_cast<long>(nz) * slabs > maxDepth)
-    throw Error(fmt::format("nebula: {} needs {} × {} texels along z, more than this GPU's 3D textures hold ({})",
-                            label, nz, slabs, maxDepth));
   const std::size_t voxels = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz);
   texels.assign(voxels * static_cast<std::size_t>(slabs) * 4, 0.0f);
   // Value c of the fields: field c of one each (the stars' depths), or value c of a single one.
@@ -159,6 +165,10 @@ bool NebulaGpuMarcher::refilter(const NebulaRenderer& renderer) {
   mPreIntegrated = {};
   mNodes = {};  // the nodes' weights hold the filters
   return mMarched == Method::Projection || mMarched == Method::LightDensity;
+}
+
+void requireGpuFits(const NebulaModel& model) {
+  requireSlabsFit(model.density.nz, static_cast<int>(model.stars.size()), "nebula star depths");
 }
 
 MarchView marchView(const NebulaCamera& cam) {

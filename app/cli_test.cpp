@@ -9,6 +9,7 @@
 
 #include "app/cli_test_support.h"
 #include "imaging/exr_file.h"
+#include "imaging/png_file.h"
 
 namespace {
 
@@ -370,6 +371,12 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
                      "different display whites (100 and 400 cd/m²)");
   EXPECT_EQ(run("compare " + (dir / "w1.exr").string() + " " + (dir / "w2.exr").string() + " --white 100").exitCode, 0);
   expectOneLineError("compare " + dir.string() + " " + a, dir.string() + ": is a folder, not an image");
+  // Linear light against a display image measured the display transform (7.8 mean ΔE00 for one
+  // render saved both ways): refused, and so is a white for two display images.
+  prism::imaging::PngImage(4, 3, {128, 128, 128}).write(dir / "a.png");
+  const std::string png = (dir / "a.png").string();
+  expectOneLineError("compare " + a + " " + png, "is an EXR and " + png + " a PNG: compare two EXRs (linear light) or two PNGs");
+  expectOneLineError("compare " + png + " " + png + " --white 100", "--white: only for EXRs");
   // An image holding NaN is refused, even against itself, rather than reported as "mean inf".
   prism::imaging::FloatImage nan = small;
   nan.pixels[3 * (4 * 2 + 1) + 1] = std::numeric_limits<float>::quiet_NaN();
@@ -460,12 +467,25 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   expectOneLineError("nebula render " + tiny + " -o x.exr --light-basis 0", "nebula: light basis size 0 is not within 1..16");
   expectOneLineError("nebula render " + tiny + " -o x.exr --uniform-samples 1", "nebula: reference samples 1 is not within 2..1000");
   expectOneLineError("nebula render " + tiny + " -o x.exr --reference-intervals 3", "nebula: reference intervals 3 is odd");
+  expectOneLineError("nebula render " + tiny + " -o x.exr --uniform-samples 7",
+                     "--uniform-samples 7: only with --method reference");
+  // --compare on the reference itself: against twice its Simpson intervals (it printed nothing).
+  Result converged = run("nebula render " + tiny + " --method reference --steps 10 --compare -o " + (dir / "ref.exr").string());
+  ASSERT_EQ(converged.exitCode, 0) << converged.err;
+  EXPECT_NE(converged.out.find("against the reference at 32 Simpson intervals"), std::string::npos) << converged.out;
   expectOneLineError("nebula basis --max-exponent inf", "max depth and max exponent within (0, 1000]");
   expectOneLineError("nebula basis --spacing nan", "spacing within [0, max exponent]");
   expectOneLineError("nebula basis --spacing 1.5 --count 3", "only 2 of 3 elements found");
   std::filesystem::create_directories(dir / "folder.svg");
   expectOneLineError("nebula sweep " + tiny + " --plot " + (dir / "folder.svg").string(), "is a folder");
   expectOneLineError("nebula sweep " + tiny + " --size 0", "--size: 0 is not within 1..4096");
+  // More stars than the GPU's 3D textures hold (llvmpipe's: 2 048 texels deep), said before the
+  // precomputation of their optical depths (it came after it).
+  std::string many = R"({"nebula": {"density": {"noise": {"resolution": 24}}, "stars": [)";
+  for (int i = 0; i < 400; ++i) many += std::string(i ? "," : "") + R"({"position": [0.5, 0.5, 0.5], "temperature": 9000})";
+  std::ofstream(dir / "many.json") << many + R"(], "camera": {"width": 8, "height": 8}}})";
+  expectOneLineError("nebula render " + (dir / "many.json").string() + " --gpu -o x.png",
+                     "nebula star depths needs 24 × 100 texels along z");
   expectOneLineError("nebula basis --plot basis.png", "--plot basis.png: the plot is written as an .svg file");
 
   // The GPU's timings at a size of one's own, without the CPU's columns.
@@ -489,7 +509,7 @@ TEST(Cli, PrtCommandsCheckTheirInput) {
   expectOneLineError("prt report --sun-elevation 10", "--sun-elevation, --sun-azimuth: only with --environment atmosphere");
   expectOneLineError("prt report --environment atmosphere --illuminant A", "--illuminant: the atmosphere is lit by its sun");
   expectOneLineError("prt report --colours-m 4", "--colours-m: only with --colours");
-  expectOneLineError("prt metamers --target D65", "--target D65: the same light as --match D65");
+  expectOneLineError("prt metamers --target D65", "metamer: the match and target illuminants are the same light");
   expectOneLineError("prt bake " + std::string(PRISM_SCENES_DIR) + "/prt_metamers.json --threads 100000",
                      "--threads: Value 100000 not in range 0 to 4096");
   // Outputs: named for their format, and never the input or each other (before, checked after

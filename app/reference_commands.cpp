@@ -66,6 +66,7 @@ void runReferencePart(const ReferenceOptions& o, const Scene& scene, const refer
     }
   }
   requireWritable(o.output);
+  requireNotSceneInput(o.output, scene);
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::ProgressBar bar("tracing " + o.output.filename().string());
   reference::ReferenceImage image = reference::renderReference(
@@ -140,7 +141,11 @@ void runReference(const ReferenceOptions& o) {
     return;
   }
   requireWritable(o.output);
-  if (!o.variance.empty()) requireWritable(o.variance);
+  requireNotSceneInput(o.output, scene);
+  if (!o.variance.empty()) {
+    requireWritable(o.variance);
+    requireNotSceneInput(o.variance, scene);
+  }
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::ProgressBar bar("tracing " + o.output.filename().string());
   reference::ReferenceImage image = reference::renderReference(

@@ -43,6 +43,7 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
   }
   if (frames < 1) throw Error("--frames: must be at least 1");
   requireWritable(output);
+  requireNotSceneInput(output, scene);
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::fitOptimisedWavelengths(scene, settings, table);
   harness::precomputeTechniques(scene);

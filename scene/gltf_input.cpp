@@ -66,6 +66,7 @@ struct Guard {
   std::string refused;     // a path the callbacks refused (outside root)
   int imageIndex = -1;     // an image the loader refused, and why
   std::string imageError;
+  std::vector<fs::path> read;  // the files read, in order
 };
 
 bool guardedFileExists(const std::string& path, void* user) {
@@ -91,6 +92,7 @@ bool guardedReadFile(std::vector<unsigned char>* out, std::string* err, const st
   }
   try {
     *out = schema::readBinaryFile(path);
+    guard->read.emplace_back(path);
   } catch (const Error& e) {
     if (err) *err += e.what();
     return false;
@@ -243,7 +245,7 @@ Image decodeImage(std::span<const std::uint8_t> bytes, bool srgb, std::string so
   return toImage(decoded, srgb, std::move(source));
 }
 
-tinygltf::Model loadGltfModel(const fs::path& file, const fs::path& root) {
+tinygltf::Model loadGltfModel(const fs::path& file, const fs::path& root, std::vector<fs::path>& filesRead) {
   const std::string name = file.string();
   std::vector<unsigned char> bytes = schema::readBinaryFile(file);
   bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
@@ -262,7 +264,7 @@ tinygltf::Model loadGltfModel(const fs::path& file, const fs::path& root) {
   fs::path base = file.parent_path().empty() ? fs::path(".") : file.parent_path();
   checkUris(top, root, base);
 
-  Guard guard{root, {}, -1, {}};
+  Guard guard{root, {}, -1, {}, {}};
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&guardedFileExists, &identityPath, &guardedReadFile, &refuseWrite, &guard});
   loader.SetImageLoader(&guardedImageLoader, &guard);
@@ -279,6 +281,8 @@ tinygltf::Model loadGltfModel(const fs::path& file, const fs::path& root) {
       throw Error(name + ": refused to read " + guard.refused + " (outside " + root.string() + ")");
     throw Error(name + ": " + oneLine(err.empty() ? "tinygltf could not load the file" : err));
   }
+  filesRead.push_back(file);
+  filesRead.insert(filesRead.end(), guard.read.begin(), guard.read.end());
   return model;
 }
 

@@ -18,9 +18,11 @@
 
 namespace prism {
 
-// The model of a .gltf or .glb file, every file it names inside `root`. Error naming the file and
-// the JSON pointer (or what was refused) otherwise.
-tinygltf::Model loadGltfModel(const std::filesystem::path& file, const std::filesystem::path& root);
+// The model of a .gltf or .glb file, every file it names inside `root`, which it appends to
+// `filesRead` after `file`. Error naming the file and the JSON pointer (or what was refused)
+// otherwise.
+tinygltf::Model loadGltfModel(const std::filesystem::path& file, const std::filesystem::path& root,
+                              std::vector<std::filesystem::path>& filesRead);
 
 // A decoded glTF image as the scene holds it (8-bit RGBA; 16-bit channels are rounded).
 Image toImage(const tinygltf::Image& src, bool srgb, std::string source);

@@ -392,7 +392,7 @@ class Converter {
 }  // namespace
 
 void appendGltf(const fs::path& file, const fs::path& root, const GltfPlacement& placement, Scene& scene) {
-  Converter(loadGltfModel(file, root), file.string(), placement, scene).run();
+  Converter(loadGltfModel(file, root, scene.files), file.string(), placement, scene).run();
 }
 
 }  // namespace prism

@@ -137,6 +137,9 @@ struct HomogeneousMedium {
 
 struct Scene {
   std::filesystem::path file;      // the scene file it was loaded from
+  // The other files the loader read: spectral CSVs, glTF models and their buffers and images
+  // (a technique's own: TechniqueSection::inputFiles; all of them: sceneInputFiles).
+  std::vector<std::filesystem::path> files;
   std::string colourSpace = "srgb";  // of every RGB value in the scene (spectral/colour_space.h)
   Camera camera;
   std::vector<Light> lights;
@@ -154,5 +157,10 @@ struct Scene {
 
 // The bounds of all mesh vertices; both corners zero for an empty scene.
 Bounds sceneBounds(const Scene& scene);
+
+// Error "OUTPUT: is also a file the scene reads; …" (core/atomic_file.h's requireOtherFile) when
+// `output` is the scene file, one of `files` or a section's inputFiles(): `render -o
+// models/tiles_base_colour.png` replaced the scene's texture with the render.
+void requireNotSceneInput(const std::filesystem::path& output, const Scene& scene);
 
 }  // namespace prism

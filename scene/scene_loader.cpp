@@ -96,10 +96,10 @@ class SceneParser {
 
  private:
   // A file named by a string node: inside the scene's folder, existing.
-  fs::path file(const Node& node) const {
+  fs::path file(const Node& node) {
     std::string relative = node.string();
     try {
-      return schema::confinedFile(mFolder, mFolder, relative);
+      return mScene.files.emplace_back(schema::confinedFile(mFolder, mFolder, relative));
     } catch (const Error& e) {
       node.fail(e.what());
     }
@@ -130,7 +130,7 @@ class SceneParser {
   }
 
   // A light's spectrum, normalised photometrically; `label` says what the file said.
-  Spectrum spd(const Node& n, std::string& label) const {
+  Spectrum spd(const Node& n, std::string& label) {
     Spectrum s;
     if (n.json().is_string()) {
       label = n.string();
@@ -167,7 +167,7 @@ class SceneParser {
     }
   }
 
-  Light light(const Node& n) const {
+  Light light(const Node& n) {
     if (!n.json().is_object()) n.fail("expected an object, got " + schema::describe(n.json()));
     Node typeNode = n.child("type");
     std::string type = typeNode.string();

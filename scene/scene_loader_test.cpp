@@ -4,6 +4,7 @@
 
 #include <limits>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -451,6 +452,24 @@ TEST(SceneLoader, ExampleScenesLoad) {
     }
   }
   EXPECT_GT(count, 0);
+}
+
+// What a scene read, so that an output is never one of them: the glTF model, its buffer and its
+// textures, each named; an output elsewhere passes.
+TEST(SceneLoader, AnOutputIsNoneOfTheFilesTheSceneRead) {
+  const fs::path dir = PRISM_EXAMPLE_SCENE_DIR;
+  const Scene s = loadScene(dir / "textured_gltf.json");
+  for (const char* file : {"tiles.gltf", "tiles.bin", "tiles_base_colour.png", "tiles_normal.png"}) {
+    EXPECT_TRUE(std::ranges::any_of(s.files, [&](const fs::path& f) { return f.filename() == file; })) << file;
+    try {
+      requireNotSceneInput(dir / "models" / file, s);
+      ADD_FAILURE() << file << ": no error";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("is also a file the scene reads"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(requireNotSceneInput(dir / "textured_gltf.json", s), Error);
+  EXPECT_NO_THROW(requireNotSceneInput(fs::path(::testing::TempDir()) / "textured_gltf.png", s));
 }
 
 }  // namespace

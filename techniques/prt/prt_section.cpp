@@ -85,6 +85,11 @@ std::shared_ptr<const TechniqueEnvironment> PrtSection::environment(const RgbToS
   return environmentRadiance(*this, table);
 }
 
+std::vector<std::filesystem::path> PrtSection::inputFiles() const {
+  if (!map) return {};
+  return {map->file};
+}
+
 std::uint64_t PrtSection::hashLoadedData(std::uint64_t hash) const {
   if (!map) return hash;
   const std::int32_t size[2] = {map->width, map->height};

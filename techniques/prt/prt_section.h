@@ -62,6 +62,7 @@ struct PrtSection final : TechniqueSection {
   std::shared_ptr<const TechniqueEnvironment> environment(const RgbToSpectrumTable& table) const override;
   // The environment map's size and texels, when there is one.
   std::uint64_t hashLoadedData(std::uint64_t hash) const override;
+  std::vector<std::filesystem::path> inputFiles() const override;  // the map's, when there is one
   // Spectral PRT with m = 8 against RGB-PRT, both on this scene, the PRT pass timed in each.
   TechniqueBench bench() const override;
   bool shadesObjects() const override { return true; }

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -14,6 +15,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/fnv1a.h"
 #include "core/parallel_for.h"
 #include "spectral/colour_checker.h"
 #include "spectral/colour_difference.h"
@@ -24,7 +26,7 @@
 namespace prism {
 namespace {
 
-constexpr int kFitVersion = 1;
+constexpr int kFitVersion = 2;  // 2: a checksum line
 constexpr int kMaxSweeps = 40;
 constexpr double kGridStepNm = 20.0;  // n = 4's exhaustive seed grid
 constexpr int kFinalReweightings = 8;
@@ -213,12 +215,21 @@ std::string serialise(const FittedWavelengths& set, std::uint64_t key) {
     for (Eigen::Index i = 0; i < set.weights.cols(); ++i) out << ' ' << set.weights(c, i);
   }
   out << '\n';
-  return out.str();
+  std::string text = out.str();
+  return text + "checksum " + std::to_string(fnv1a(text.data(), text.size())) + "\n";
 }
 
-// Null when the file is not a set of this key.
-std::optional<FittedWavelengths> parse(const std::filesystem::path& path, std::uint64_t key, int count) {
-  std::ifstream in(path);
+// Null when the file is not a set of this key: another key or count, damaged (its checksum, the
+// FNV-1a of the text before it, differs), or wavelengths not increasing within [minNm, maxNm]
+// (an edited entry was used as it stood: λ 900 nm, two wavelengths swapped).
+std::optional<FittedWavelengths> parse(const std::filesystem::path& path, std::uint64_t key, int count, double minNm,
+                                       double maxNm) {
+  std::ifstream file(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::size_t at = text.rfind("checksum ");
+  if (at == std::string::npos || (at > 0 && text[at - 1] != '\n')) return std::nullopt;
+  if (text.substr(at) != "checksum " + std::to_string(fnv1a(text.data(), at)) + "\n") return std::nullopt;
+  std::istringstream in(text.substr(0, at));
   std::string word;
   int version = 0;
   std::uint64_t fileKey = 0;
@@ -230,13 +241,17 @@ std::optional<FittedWavelengths> parse(const std::filesystem::path& path, std::u
   set.lambdaNm.resize(static_cast<std::size_t>(count));
   set.weights.resize(3, count);
   if (!(in >> word) || word != "lambda") return std::nullopt;
-  for (double& lambda : set.lambdaNm)
-    if (!(in >> lambda) || !std::isfinite(lambda)) return std::nullopt;
+  double previous = -std::numeric_limits<double>::infinity();
+  for (double& lambda : set.lambdaNm) {
+    if (!(in >> lambda) || !(lambda > previous && lambda >= minNm && lambda <= maxNm)) return std::nullopt;
+    previous = lambda;
+  }
   for (int c = 0; c < 3; ++c) {
     if (!(in >> word) || word != "weights") return std::nullopt;
     for (int i = 0; i < count; ++i)
       if (!(in >> set.weights(c, i)) || !std::isfinite(set.weights(c, i))) return std::nullopt;
   }
+  if (in >> word) return std::nullopt;  // nothing after the last weights
   return set;
 }
 
@@ -353,7 +368,7 @@ FittedWavelengths cachedFitWavelengths(const WavelengthFitProblem& problem, cons
   const std::filesystem::path path = cacheDirectory() / "wavelengths" / (std::to_string(key) + ".txt");
   std::error_code ec;
   if (std::filesystem::exists(path, ec)) {
-    if (std::optional<FittedWavelengths> set = parse(path, key, problem.count)) return *set;
+    if (std::optional<FittedWavelengths> set = parse(path, key, problem.count, problem.minNm, problem.maxNm)) return *set;
     std::fprintf(stderr, "prism: cache entry %s is damaged (not a wavelength set of this key): refitting\n",
                  path.string().c_str());
   }

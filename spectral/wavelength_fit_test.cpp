@@ -2,11 +2,15 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "core/fnv1a.h"
 #include "spectral/colour_checker.h"
 #include "spectral/colour_difference.h"
 #include "spectral/colour_space.h"
@@ -159,6 +163,31 @@ TEST(WavelengthFit, IsCachedByItsInputs) {
   WavelengthFitProblem other = problem;
   other.lights = {illuminant("D65")};
   EXPECT_NE(fitKey(problem, cie), fitKey(other, cie));
+}
+
+// An entry edited by hand or damaged is refitted, said in one line: a changed weight (its
+// checksum differs), and a wavelength outside the range with the checksum made to match (before,
+// both were used as they stood: λ 900 nm, weights of 1000).
+TEST(WavelengthFit, AnEditedCacheEntryIsRefitted) {
+  const Observer& cie = observer("cie1931");
+  const WavelengthFitProblem problem{{illuminant("F2")}, colourCheckerReflectances(), 4};
+  const FittedWavelengths fitted = cachedFitWavelengths(problem, cie);
+  const std::filesystem::path path = cacheDirectory() / "wavelengths" / (std::to_string(fitKey(problem, cie)) + ".txt");
+  std::ifstream in(path);
+  const std::string good((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string body = good.substr(0, good.rfind("checksum "));
+  std::string weight = good;
+  weight[weight.find("weights ") + 8] = weight[weight.find("weights ") + 8] == '1' ? '2' : '1';
+  const std::size_t lambda = body.find("lambda ") + 7;
+  std::string outside = body.substr(0, lambda) + "900" + body.substr(body.find(' ', lambda));
+  outside += "checksum " + std::to_string(fnv1a(outside.data(), outside.size())) + "\n";
+  for (const std::string& edited : {weight, outside, good + "more\n"}) {
+    std::ofstream(path, std::ios::trunc) << edited;
+    ::testing::internal::CaptureStderr();
+    const FittedWavelengths again = cachedFitWavelengths(problem, cie);
+    EXPECT_NE(::testing::internal::GetCapturedStderr().find("is damaged"), std::string::npos) << edited;
+    EXPECT_EQ(again.lambdaNm, fitted.lambdaNm);
+  }
 }
 
 TEST(WavelengthFit, BadProblemsAreErrors) {

@@ -119,6 +119,9 @@ void runSceneBench(const SceneBenchOptions& options) {
   if (options.wavelengths.empty()) throw Error("--wavelengths: give at least one count");
   if (options.frames < 1 || options.warmup < 0 || options.rounds < 1)
     throw Error("--frames and --rounds must be ≥ 1, --warmup ≥ 0");
+  if (options.rounds > options.frames)  // it ran fewer rounds than asked, saying "1 rounds"
+    throw Error(fmt::format("--rounds {}: more rounds than --frames {} (a round times at least one frame of each "
+                            "configuration)", options.rounds, options.frames));
   if (!options.plot.empty()) {
     requireExtension(options.plot, ".svg", "--plot", "plot");
     requireWritable(options.plot);
@@ -129,7 +132,7 @@ void runSceneBench(const SceneBenchOptions& options) {
     check.sampling.count = n;
     render::validate(check);
   }
-  const int rounds = std::min(options.rounds, options.frames);
+  const int rounds = options.rounds;
   const int frames = (options.frames + rounds - 1) / rounds;  // per round
   Scene scene = loadScene(options.scene);
   const RgbToSpectrumTable& table = upsamplingTable(scene);
@@ -289,8 +292,12 @@ void runSceneBench(const SceneBenchOptions& options) {
       e["gpu_memory_mb"] = megabytes(c.gpuMemoryBytes);
       j["spectral"].push_back(e);
     }
-    j["fit"] = {{"slope_ms_per_wavelength", fit.slope}, {"intercept_ms", fit.intercept},
-                {"slope_fraction_of_rgb_frame", fit.slope / rgbFrame}};
+    // A line through one wavelength count is no measurement: null then.
+    if (spectral.size() > 1)
+      j["fit"] = {{"slope_ms_per_wavelength", fit.slope}, {"intercept_ms", fit.intercept},
+                  {"slope_fraction_of_rgb_frame", fit.slope / rgbFrame}};
+    else
+      j["fit"] = nullptr;
     j["gpu_memory_mb"] = {{"rgb", megabytes(configs[rgb].gpuMemoryBytes)},
                           {"largest_wavelength_count", largest->wavelengths},
                           {"spectral_largest", megabytes(largest->gpuMemoryBytes)},
@@ -343,8 +350,11 @@ void runSceneBench(const SceneBenchOptions& options) {
   };
   row(configs[rgb]);
   for (std::size_t i : spectral) row(configs[i]);
-  fmt::print("fit: t(n) = {:.4f} ms·n + {:.3f} ms; slope = {:.2f} % of the RGB frame per wavelength\n",
-             fit.slope, fit.intercept, 100.0 * fit.slope / rgbFrame);
+  if (spectral.size() > 1)
+    fmt::print("fit: t(n) = {:.4f} ms·n + {:.3f} ms; slope = {:.2f} % of the RGB frame per wavelength\n", fit.slope,
+               fit.intercept, 100.0 * fit.slope / rgbFrame);
+  else
+    fmt::print("fit: none (one wavelength count; give --wavelengths two or more for a slope)\n");
   fmt::print("GPU memory held by the renderer: RGB {:.2f} MB, n = {} {:.2f} MB (+{:.3f} MB)\n",
              megabytes(configs[rgb].gpuMemoryBytes), largest->wavelengths, megabytes(largest->gpuMemoryBytes),
              megabytes(largest->gpuMemoryBytes) - megabytes(configs[rgb].gpuMemoryBytes));

@@ -3,6 +3,9 @@
 #include <optional>
 #include <utility>
 
+#include <fmt/format.h>
+
+#include "core/error.h"
 #include "harness/technique_precompute.h"
 #include "harness/upsampling_table.h"
 #include "scene/scene_loader.h"
@@ -16,6 +19,10 @@ int runView(const ViewOptions& options) {
   if (!options.script.empty()) script = viewer::loadScript(options.script);
   Scene scene = loadScene(options.scene, options.sets);
   render::FrameSettings settings = frameSettings(options.settings);
+  for (const auto& [name, side] : {std::pair{"--width", settings.width}, std::pair{"--height", settings.height}})
+    if (side < viewer::kMinWindowSide || side > viewer::kMaxWindowSide)
+      throw Error(fmt::format("{} {}: the viewer's window is {}–{} pixels a side", name, side, viewer::kMinWindowSide,
+                              viewer::kMaxWindowSide));
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::precomputeTechniques(scene);
   viewer::ViewerOptions v;

@@ -15,6 +15,7 @@
 #include "viewer/scene_settings.h"
 #include "viewer/soak.h"
 #include "viewer/technique_settings.h"
+#include "viewer/viewer.h"
 #include "viewer/viewer_loop.h"
 #include "viewer/viewer_settings.h"
 
@@ -65,8 +66,8 @@ void checkCommand(const std::vector<std::string>& w) {
     render::parseInteger("frames", w[1], 0, 1000000);
   } else if (verb == "resize") {
     need(2);
-    render::parseInteger("width", w[1], 16, 8192);
-    render::parseInteger("height", w[2], 16, 8192);
+    render::parseInteger("width", w[1], kMinWindowSide, kMaxWindowSide);
+    render::parseInteger("height", w[2], kMinWindowSide, kMaxWindowSide);
   } else if (verb == "screenshot" || verb == "save-settings" || verb == "load-settings") {
     need(1);
   } else if (verb == "heat-map-stats" || verb == "reload-shaders") {
@@ -121,8 +122,8 @@ void execute(Viewer& viewer, const std::vector<std::string>& w) {
     for (long i = 0; i < n; ++i) viewer.frame();
     if (!viewer.renderError().empty()) throw Error(viewer.renderError());
   } else if (verb == "resize") {
-    viewer.resize(static_cast<int>(render::parseInteger("width", w[1], 16, 8192)),
-                  static_cast<int>(render::parseInteger("height", w[2], 16, 8192)));
+    viewer.resize(static_cast<int>(render::parseInteger("width", w[1], kMinWindowSide, kMaxWindowSide)),
+                  static_cast<int>(render::parseInteger("height", w[2], kMinWindowSide, kMaxWindowSide)));
   } else if (verb == "orbit") {
     viewer.camera().orbit(render::parseFloat("yaw", w[1]) * kDegrees, render::parseFloat("pitch", w[2]) * kDegrees);
     viewer.changes().camera = true;

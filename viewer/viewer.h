@@ -39,8 +39,12 @@
 
 namespace prism::viewer {
 
+// A window's side in pixels, at start (--width, --height) and in a script's `resize`.
+inline constexpr int kMinWindowSide = 16;
+inline constexpr int kMaxWindowSide = 8192;
+
 struct ViewerOptions {
-  int width = 1280;
+  int width = 1280;  // kMinWindowSide..kMaxWindowSide
   int height = 720;
   std::optional<Script> script;  // run it, then close (loaded and checked before the window opens)
 };

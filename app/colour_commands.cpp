@@ -80,8 +80,14 @@ void colourXyz(const XyzOptions& o) {
   out[key] = toJson(value);
   out["whiteY"] = 1.0;
   if (!obs.isCamera) {
-    Chromaticity xy = xyzToXy(value);
-    out["xy"] = {xy.x, xy.y};
+    // Black (below a millionth of the white) has no chromaticity: its xy was the ratio of two
+    // roundings (0.699, 0.301 for --rgb 0,0,0).
+    if (value.sum() > 1e-6 * white.y()) {
+      Chromaticity xy = xyzToXy(value);
+      out["xy"] = {xy.x, xy.y};
+    } else {
+      out["xy"] = nullptr;
+    }
     out["lab"] = toJson(xyzToLab(value, white));
   }
   if (o.sample) {
@@ -121,7 +127,8 @@ void colourXyz(const XyzOptions& o) {
   fmt::print("{} {:.6f} {:.6f} {:.6f}   (perfect white: Y = 1 under {})\n",
              obs.isCamera ? "camera RGB" : "XYZ", value.x(), value.y(), value.z(), o.illuminant);
   if (!obs.isCamera) {
-    fmt::print("xy  {:.6f} {:.6f}\n", out["xy"][0].get<double>(), out["xy"][1].get<double>());
+    if (out["xy"].is_null()) fmt::print("xy  none (black)\n");
+    else fmt::print("xy  {:.6f} {:.6f}\n", out["xy"][0].get<double>(), out["xy"][1].get<double>());
     fmt::print("Lab {:.4f} {:.4f} {:.4f}\n", out["lab"][0].get<double>(), out["lab"][1].get<double>(),
                out["lab"][2].get<double>());
   }

@@ -1,8 +1,9 @@
 #include "spectral/sampling.h"
 
 #include <cmath>
-#include <utility>
+#include <sstream>
 #include <string>
+#include <utility>
 
 #include "shared_cpp.h"
 #include "core/error.h"
@@ -40,9 +41,11 @@ void validate(const SamplingSettings& s) {
   if (s.count < 4 || s.count > 1000 || s.count % 4 != 0)
     throw Error("wavelength count must be a multiple of 4 within 4–1000, got " +
                 std::to_string(s.count));
-  if (!(s.minNm >= kLambdaMinNm && s.maxNm <= kLambdaMaxNm && s.minNm < s.maxNm))
-    throw Error("wavelength range must lie within 360–830 nm with min < max, got " +
-                std::to_string(s.minNm) + "–" + std::to_string(s.maxNm) + " nm");
+  if (!(s.minNm >= kLambdaMinNm && s.maxNm <= kLambdaMaxNm && s.minNm < s.maxNm)) {
+    std::ostringstream range;  // as given: 500, not 500.000000
+    range << s.minNm << "–" << s.maxNm;
+    throw Error("wavelength range must lie within 360–830 nm with min < max, got " + range.str() + " nm");
+  }
   if (s.strategy == SamplingStrategy::Optimised && s.count > kMaxFittedWavelengths)
     throw Error("the optimised strategy fits 4–" + std::to_string(kMaxFittedWavelengths) + " wavelengths, got " +
                 std::to_string(s.count) + " (uniform, rotated or lights take more)");

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 
 #include "app/benchmark_command.h"
@@ -43,11 +44,12 @@ const char* typeName(prism::render::SettingType type) {
 // from the table; what was given is handed on as text, parsed by the table (frameSettings).
 class CliSettings {
  public:
-  // Every key but `except` (a command that gives that option another meaning), and --camera.
-  void addTo(CLI::App* command, std::string_view except = {}) {
+  // The keys `takes` accepts (default: every one; a command leaves out those it gives another
+  // meaning or has no use for, rather than take them and do nothing), and --camera.
+  void addTo(CLI::App* command, const std::function<bool(std::string_view key)>& takes = {}) {
     const prism::render::FrameSettings defaults;
     for (const prism::render::SettingKey& key : prism::render::frameSettingKeys()) {
-      if (key.name == except) continue;
+      if (takes && !takes(key.name)) continue;
       std::string& text = mTexts[key.name];  // a map: the references CLI11 keeps stay valid
       std::string help = key.help + ": " + key.expects;
       CLI::Option* option = key.type == prism::render::SettingType::Switch
@@ -284,7 +286,10 @@ int main(int argc, char** argv) {
   wavelengthsOptimiseCmd->add_option("scene", wavelengthsOptimise.scene, "scene file (JSON)")->required();
   wavelengthsOptimiseCmd->add_option("--set", wavelengthsOptimise.sets, "override a scene value: json.path=value (repeatable)");
   wavelengthsOptimiseCmd->add_flag("--json", wavelengthsOptimise.json, "JSON output");
-  wavelengthsSettings.addTo(wavelengthsOptimiseCmd);
+  // The fit's own settings: the count, the range and the observer (the strategy is optimised).
+  wavelengthsSettings.addTo(wavelengthsOptimiseCmd, [](std::string_view key) {
+    return key == "wavelengths" || key == "range" || key == "observer";
+  });
 
   CliSettings settingsSettings;
   bool settingKeys = false;
@@ -424,7 +429,8 @@ int main(int argc, char** argv) {
                "micro-benchmarks (Google Benchmark flags pass through)");
   bench->allow_extras();
   bench->add_option("scene", sceneBench.scene, "scene file: time its passes in RGB and spectral modes");
-  benchSettings.addTo(bench, "wavelengths");
+  // Its own --wavelengths; the mode is the bench's per configuration (RGB and Jakob–Hanika).
+  benchSettings.addTo(bench, [](std::string_view key) { return key != "wavelengths" && key != "mode"; });
   bench->add_option("--wavelengths", benchWavelengths, "wavelength counts, comma-separated (default 4,8,16,32,64,128,256; "
                                                         "up to 64 with the optimised strategy)");
   bench->add_option("--frames", sceneBench.frames, "timed frames per configuration, spread over the rounds")

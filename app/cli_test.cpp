@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -104,6 +105,25 @@ TEST(Cli, XyzOfAnRgbAlbedoRoundTripsUnderItsOwnWhite) {
   nlohmann::json j = nlohmann::json::parse(r.out);
   // sRGB (0.2, 0.5, 0.3) → XYZ by the IEC matrix: Y = 0.2126·0.2 + 0.7152·0.5 + 0.0722·0.3.
   EXPECT_NEAR(j["xyz"][1].get<double>(), 0.2126 * 0.2 + 0.7152 * 0.5 + 0.0722 * 0.3, 2e-4);
+  // Black has no chromaticity (it printed the ratio of two roundings).
+  Result black = run("colour xyz --illuminant D65 --rgb 0,0,0 --json");
+  ASSERT_EQ(black.exitCode, 0) << black.err;
+  EXPECT_TRUE(nlohmann::json::parse(black.out)["xy"].is_null()) << black.out;
+  // Negative encoded values convert and convert back (they were clamped to 0, "in gamut").
+  Result negative = run("colour convert --from srgb --to rec2020 --json -- -0.5,0,0");
+  ASSERT_EQ(negative.exitCode, 0) << negative.err;
+  const nlohmann::json n = nlohmann::json::parse(negative.out);
+  EXPECT_FALSE(n["inGamut"].get<bool>());
+  EXPECT_LT(n["value"][0].get<double>(), 0.0);
+  const nlohmann::json& v = n["value"];
+  char values[96];
+  std::snprintf(values, sizeof values, "%.9f,%.9f,%.9f", v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+  Result back = run(std::string("colour convert --from rec2020 --to srgb --json -- ") + values);
+  ASSERT_EQ(back.exitCode, 0) << back.err;
+  const nlohmann::json b = nlohmann::json::parse(back.out)["value"];
+  EXPECT_NEAR(b[0].get<double>(), -0.5, 1e-6);
+  EXPECT_NEAR(b[1].get<double>(), 0.0, 1e-6);
+  EXPECT_NEAR(b[2].get<double>(), 0.0, 1e-6);
 }
 
 TEST(Cli, ConvertSrgbToRec2020) {
@@ -625,6 +645,15 @@ TEST(Cli, PrtReportTakesAnEquirectangularExr) {
   auto json = nlohmann::json::parse(r.out);
   EXPECT_EQ(json["spectral"].size(), 16u);
   EXPECT_NE(json["environment"].get<std::string>().find("sky.exr"), std::string::npos);
+
+  // The map of a scene's PRT section is one of the files the scene reads: no output may replace it.
+  std::ofstream(dir / "mapped.json") << R"({"camera": {"position": [0, 1, 3], "target": [0, 0, 0]},
+    "materials": {"m": {"base_colour": [0.5, 0.5, 0.5]}},
+    "objects": [{"sphere": {"centre": [0, 0, 0], "radius": 0.5, "segments": 8}, "material": "m", "technique": "prt"}],
+    "prt": {"environment": {"map": "sky.exr"}, "samples": 8}})";
+  const std::string mapped = (dir / "mapped.json").string(), sky = (dir / "sky.exr").string();
+  expectOneLineError("render " + mapped + " -o " + sky, sky + ": is also a file the scene reads");
+  expectOneLineError("reference " + mapped + " -o " + sky, sky + ": is also a file the scene reads");
 
   map.at(3, 2, 1) = std::numeric_limits<float>::quiet_NaN();
   prism::imaging::writeExr(dir / "nan.exr", map);

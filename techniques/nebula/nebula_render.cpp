@@ -406,7 +406,8 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
   const auto& refWeight = reference.weights;
 
   const NebulaCamera& cam = m.camera;
-  const auto [forward, right, up] = viewFrame(cam);
+  const NebulaViewFrame frame = viewFrame(cam);  // named, not bound: clang 14 cannot capture a binding
+  const glm::dvec3 forward = frame.forward, right = frame.right, up = frame.up;
   double tanHalf = std::tan(cam.fovYDeg * kPi / 360.0), aspect = static_cast<double>(cam.width) / cam.height;
 
   // The coefficients cₖ(x) of e^(−x/λ) on the orthonormal basis: from the table (float), or

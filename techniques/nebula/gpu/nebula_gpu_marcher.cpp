@@ -173,7 +173,8 @@ void requireGpuFits(const NebulaModel& model) {
 
 MarchView marchView(const NebulaCamera& cam) {
   // In double, as the CPU marcher builds it, then handed over in float.
-  const auto [forward, right, up] = viewFrame(cam);
+  const NebulaViewFrame frame = viewFrame(cam);
+  const glm::dvec3 &forward = frame.forward, &right = frame.right, &up = frame.up;
   MarchView v;
   v.position = glm::vec3(cam.position);
   v.forward = glm::vec3(forward);

@@ -436,7 +436,7 @@ int main(int argc, char** argv) {
   bench->add_option("--frames", sceneBench.frames, "timed frames per configuration, spread over the rounds")
       ->capture_default_str();
   bench->add_option("--rounds", sceneBench.rounds, "rounds over every configuration in turn (load drift cancels "
-                    "in per-round ratios)")->capture_default_str();
+                    "in per-round ratios; default 5, or --frames when fewer)");
   bench->add_option("--warmup", sceneBench.warmup, "untimed frames before each configuration in every round")
       ->capture_default_str();
   bench->add_option("--plot", sceneBench.plot, "SVG plot of frame time against the wavelength count");

@@ -46,15 +46,18 @@ std::string benchPlotSvg(const std::vector<BenchPoint>& spectral, double rgbMs, 
                    "stroke-dasharray=\"6 4\"/>\n", x(0), y(rgbMs), x(maxN), y(rgbMs));
   s << fmt::format("<text x=\"{}\" y=\"{}\" fill=\"#c33\" text-anchor=\"end\">RGB {:.3g} ms</text>\n",
                    w - right, y(rgbMs) - 6, rgbMs);
-  s << fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#36c\"/>\n", x(0), y(b),
-                   x(maxN), y(a * maxN + b));
+  const bool fitted = spectral.size() > 1;  // a line through one point is no measurement
+  if (fitted)
+    s << fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#36c\"/>\n", x(0), y(b),
+                     x(maxN), y(a * maxN + b));
   for (const BenchPoint& p : spectral) {
     s << fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{0}\" y2=\"{2}\" stroke=\"#36c\"/>\n", x(p.wavelengths),
                      y(p.minFrameMs), y(p.maxFrameMs));
     s << fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"4\" fill=\"#36c\"/>\n", x(p.wavelengths), y(p.frameMs));
   }
-  s << fmt::format("<text x=\"{}\" y=\"{}\" fill=\"#36c\">t(n) = {:.4g} ms·n + {:.4g} ms</text>\n",
-                   left + 10, top + 14, a, b);
+  if (fitted)
+    s << fmt::format("<text x=\"{}\" y=\"{}\" fill=\"#36c\">t(n) = {:.4g} ms·n + {:.4g} ms</text>\n",
+                     left + 10, top + 14, a, b);
   s << "</svg>\n";
   return s.str();
 }

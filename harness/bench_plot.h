@@ -1,6 +1,6 @@
 // The plot of `prism bench`: frame time against the wavelength count as an SVG, the spectral
-// configurations as points with their rounds' range as a bar, the fitted line and RGB's time
-// as a dashed line.
+// configurations as points with their rounds' range as a bar, the fitted line (for two counts or
+// more) and RGB's time as a dashed line.
 #pragma once
 
 #include <string>

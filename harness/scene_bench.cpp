@@ -117,11 +117,11 @@ PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, 
 
 void runSceneBench(const SceneBenchOptions& options) {
   if (options.wavelengths.empty()) throw Error("--wavelengths: give at least one count");
-  if (options.frames < 1 || options.warmup < 0 || options.rounds < 1)
+  if (options.frames < 1 || options.warmup < 0 || options.rounds.value_or(1) < 1)
     throw Error("--frames and --rounds must be ≥ 1, --warmup ≥ 0");
   if (options.rounds > options.frames)  // it ran fewer rounds than asked, saying "1 rounds"
     throw Error(fmt::format("--rounds {}: more rounds than --frames {} (a round times at least one frame of each "
-                            "configuration)", options.rounds, options.frames));
+                            "configuration)", *options.rounds, options.frames));
   if (!options.plot.empty()) {
     requireExtension(options.plot, ".svg", "--plot", "plot");
     requireWritable(options.plot);
@@ -132,7 +132,7 @@ void runSceneBench(const SceneBenchOptions& options) {
     check.sampling.count = n;
     render::validate(check);
   }
-  const int rounds = options.rounds;
+  const int rounds = options.rounds.value_or(std::min(kDefaultBenchRounds, options.frames));
   const int frames = (options.frames + rounds - 1) / rounds;  // per round
   Scene scene = loadScene(options.scene);
   const RgbToSpectrumTable& table = upsamplingTable(scene);

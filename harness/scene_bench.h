@@ -13,18 +13,21 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "render/frame_settings.h"
 
 namespace prism::harness {
 
+inline constexpr int kDefaultBenchRounds = 5;
+
 struct SceneBenchOptions {
   std::filesystem::path scene;
   std::vector<int> wavelengths{4, 8, 16, 32, 64, 128, 256};
   render::FrameSettings settings;  // width, height, lookup, … in RGB mode (the mode is set per configuration)
   int frames = 100;                // timed frames per configuration, spread evenly over the rounds
-  int rounds = 5;                  // at most `frames`
+  std::optional<int> rounds;       // at most `frames`; unset: kDefaultBenchRounds, or `frames` when fewer
   int warmup = 3;                  // untimed frames before each configuration in every round
   bool json = false;
   std::filesystem::path plot;      // .svg, optional

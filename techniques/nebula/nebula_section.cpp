@@ -63,6 +63,11 @@ glm::vec3 NebulaSection::starPositionW(const NebulaStar& star) const {
   return boxMin + glm::vec3(star.position) * boxSize;
 }
 
+std::vector<std::filesystem::path> NebulaSection::inputFiles() const {
+  if (source.file.empty()) return {};
+  return {source.file};
+}
+
 std::uint64_t NebulaSection::hashLoadedData(std::uint64_t hash) const {
   const std::int32_t size[3] = {density->nx, density->ny, density->nz};
   hash = fnv1a(size, sizeof size, hash);

@@ -64,6 +64,7 @@ struct NebulaSection final : TechniqueSection {
   std::string_view notTracedBecause() const override;
   // The density grid's size and values (a file's, or the noise's).
   std::uint64_t hashLoadedData(std::uint64_t hash) const override;
+  std::vector<std::filesystem::path> inputFiles() const override;  // the density file, when there is one
   // The section's method against the others on this scene, the nebula's pass timed in each,
   // marching every frame: the reference at the paper's settings (100 steps, 21 wavelengths a step)
   // over projection and over light–density (prism bench's ratios); and, the camera held so that

@@ -181,6 +181,10 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   s.referenceIntervals = o.referenceIntervals;
   s.uniformSamples = o.uniformSamples;
   nebula::validate(s);
+  if (o.compare && method == nebula::Method::Reference && o.uniformSamples == 0 &&
+      2 * o.referenceIntervals > nebula::kMaxReferenceIntervals)
+    throw Error(fmt::format("--compare: the reference at {} Simpson intervals has no finer one within {} to be compared "
+                            "with", o.referenceIntervals, nebula::kMaxReferenceIntervals));
   if (o.uniformSamples != 0 && method != nebula::Method::Reference)
     throw Error(fmt::format("--uniform-samples {}: only with --method reference (the paper's baseline); {} samples no "
                             "wavelengths", o.uniformSamples, o.method));
@@ -225,7 +229,7 @@ void runNebulaRender(const NebulaRenderOptions& o) {
     r.uniformSamples = 0;
     std::string against = "the reference";
     if (method == nebula::Method::Reference && s.uniformSamples == 0) {
-      r.referenceIntervals = std::min(2 * s.referenceIntervals, nebula::kMaxReferenceIntervals);
+      r.referenceIntervals = 2 * s.referenceIntervals;
       against = fmt::format("the reference at {} Simpson intervals", r.referenceIntervals);
     }
     nebula::NebulaImage reference = renderer.render(r);

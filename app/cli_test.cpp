@@ -499,13 +499,15 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   std::filesystem::create_directories(dir / "folder.svg");
   expectOneLineError("nebula sweep " + tiny + " --plot " + (dir / "folder.svg").string(), "is a folder");
   expectOneLineError("nebula sweep " + tiny + " --size 0", "--size: 0 is not within 1..4096");
-  // More stars than the GPU's 3D textures hold (llvmpipe's: 2 048 texels deep), said before the
-  // precomputation of their optical depths (it came after it).
+  // More stars than the GPU's 3D textures hold (llvmpipe's 2 048 texels deep, the largest GPUs'
+  // 16 384), said before the precomputation of their optical depths (it came after it).
   std::string many = R"({"nebula": {"density": {"noise": {"resolution": 24}}, "stars": [)";
-  for (int i = 0; i < 400; ++i) many += std::string(i ? "," : "") + R"({"position": [0.5, 0.5, 0.5], "temperature": 9000})";
+  for (int i = 0; i < 2800; ++i) many += std::string(i ? "," : "") + R"({"position": [0.5, 0.5, 0.5], "temperature": 9000})";
   std::ofstream(dir / "many.json") << many + R"(], "camera": {"width": 8, "height": 8}}})";
   expectOneLineError("nebula render " + (dir / "many.json").string() + " --gpu -o x.png",
-                     "nebula star depths needs 24 × 100 texels along z");
+                     "nebula star depths needs 24 × 700 texels along z");
+  expectOneLineError("nebula render " + tiny + " --method reference --reference-intervals 1024 --compare -o x.exr",
+                     "--compare: the reference at 1024 Simpson intervals has no finer one");
   expectOneLineError("nebula basis --plot basis.png", "--plot basis.png: the plot is written as an .svg file");
 
   // The GPU's timings at a size of one's own, without the CPU's columns.

@@ -107,11 +107,11 @@ struct ReferenceImage {
   imaging::FloatImage meanResidual;
 };
 
-// done / total in the region's pixel rows × passes; called from one thread at a time.
 // Error "SCENE: why" when the scene holds a technique the path tracer does not trace (the
 // atmosphere, a nebula): what renderReference says first, and a cluster script before its tasks.
 void requireTraceable(const Scene& scene);
 
+// done / total in the region's pixel rows × passes; called from one thread at a time.
 using ReferenceProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 // `table` is the Jakob–Hanika table of the scene's colour space.

@@ -138,7 +138,7 @@ struct HomogeneousMedium {
 struct Scene {
   std::filesystem::path file;      // the scene file it was loaded from
   // The other files the loader read: spectral CSVs, glTF models and their buffers and images
-  // (a technique's own: TechniqueSection::inputFiles; all of them: sceneInputFiles).
+  // (a technique's own: TechniqueSection::inputFiles; an output is none of them: requireNotSceneInput).
   std::vector<std::filesystem::path> files;
   std::string colourSpace = "srgb";  // of every RGB value in the scene (spectral/colour_space.h)
   Camera camera;

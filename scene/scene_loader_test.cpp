@@ -470,6 +470,8 @@ TEST(SceneLoader, AnOutputIsNoneOfTheFilesTheSceneRead) {
   }
   EXPECT_THROW(requireNotSceneInput(dir / "textured_gltf.json", s), Error);
   EXPECT_NO_THROW(requireNotSceneInput(fs::path(::testing::TempDir()) / "textured_gltf.png", s));
+  EXPECT_NO_THROW(requireNotSceneInput(dir / "models" / "reef_sand.png", s));  // beside them, not read
+  EXPECT_NO_THROW(requireNotSceneInput(dir / "textured_gltf.png", s));
 }
 
 }  // namespace

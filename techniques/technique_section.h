@@ -214,7 +214,7 @@ class TechniqueSection {
   // change; `hash` itself when it reads none. The scene file's bytes cover the section's keys.
   virtual std::uint64_t hashLoadedData(std::uint64_t hash) const { return hash; }
   // The files besides the scene file it read (an environment map), so that a command's output is
-  // never one of them (sceneInputFiles, scene/scene.h).
+  // never one of them (requireNotSceneInput, scene/scene.h).
   virtual std::vector<std::filesystem::path> inputFiles() const { return {}; }
   // What the scene bench measures of its cost besides the run's own configurations.
   virtual TechniqueBench bench() const { return {}; }

@@ -5,8 +5,8 @@
 # New inputs that reach new code go to build/fuzz/corpus/TARGET (the saved corpus, fuzz/corpus/
 # TARGET, is read, never written: copy what is worth keeping there, e.g. with -merge=1); a crash
 # is written to build/fuzz/crashes/ and ends the run with libFuzzer's non-zero status. Prints
-# libFuzzer's final statistics (executions per second, coverage). Installs clang and its libFuzzer
-# runtime (Debian's clang, libclang-rt-dev) when missing, as scripts/install-deps.sh does.
+# libFuzzer's final statistics (executions per second, coverage). Installs what is missing
+# (scripts/install-deps.sh: clang and its libFuzzer runtime among the rest).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ $# -ge 2 ] || { echo "usage: scripts/fuzz.sh TARGET SECONDS [JOBS]" >&2; exit 2; }
@@ -15,7 +15,7 @@ target=$1 seconds=$2 jobs=${3:-1}
 [[ "$seconds" =~ ^[1-9][0-9]*$ ]] || { echo "scripts/fuzz.sh: SECONDS must be a positive integer, not '$seconds'" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scripts/fuzz.sh: JOBS must be a positive integer, not '$jobs'" >&2; exit 2; }
 
-PRISM_EXTRA_PACKAGES="clang libclang-rt-dev" scripts/install-deps.sh
+scripts/install-deps.sh
 export CCACHE_BASEDIR="$PWD"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz --target "${target}_fuzz"

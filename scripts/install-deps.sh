@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build pkg-config g++ ccache
+  clang libclang-rt-dev  # the asan and fuzz presets (ASan, UBSan and libFuzzer runtimes)
   libcli11-dev nlohmann-json3-dev libfmt-dev libeigen3-dev libglm-dev libcsv-dev libstb-dev zlib1g-dev
   libopenexr-dev libtinygltf-dev libembree-dev libnlopt-cxx-dev
   libgtest-dev libbenchmark-dev glslang-tools
@@ -12,9 +13,6 @@ packages=(
   libimgui-dev xvfb xauth
   slurmctld slurmd slurm-client munge  # the one-node cluster of tests/slurm
 )
-# Tools only some scripts need (scripts/fuzz.sh: clang and its libFuzzer runtime).
-read -r -a extra <<<"${PRISM_EXTRA_PACKAGES:-}"
-packages+=("${extra[@]}")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -231,7 +231,7 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
     pre.lightCount = static_cast<int>(pre.lightGreedy.chosen.size());
     int kCount = pre.lightCount;
     // Orthonormal fₖ = Σⱼ M2(k,j)·rawⱼ by the Cholesky factor of the raw Gram matrix (256 nodes).
-    auto raw = [chosen = pre.lightGreedy.chosen, s0, s1, aCount, tCount, aMax](int j, double l) {
+    auto raw = [chosen = pre.lightGreedy.chosen, s0, s1, aMax](int j, double l) {
       int c = chosen[static_cast<std::size_t>(j)];
       int t = c / aCount, a = c % aCount;
       double mix = t / (tCount - 1.0);

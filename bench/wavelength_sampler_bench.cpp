@@ -26,9 +26,7 @@ BENCHMARK(lightsPdfBuild);
 // 16 wavelengths fitted under F11 on the ColorChecker (the renderer's training set adds a few
 // hundred gamut reflectances, which scale the fit's cost in proportion).
 WavelengthFitProblem f11Problem() {
-  WavelengthFitProblem problem{{illuminant("F11")}, {}, 16};
-  for (const ColourCheckerPatch& patch : colourChecker()) problem.reflectances.push_back(patch.reflectance);
-  return problem;
+  return {{illuminant("F11")}, colourCheckerReflectances(), 16};
 }
 
 void optimisedSetFit(benchmark::State& state) {

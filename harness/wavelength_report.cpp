@@ -55,8 +55,7 @@ WavelengthReport wavelengthReport(const Scene& scene, const render::FrameSetting
   const WavelengthSampler optimised = sceneWavelengthSampler(sampling, obs, scene, space, table);
   report.set = *optimised.fitted();
 
-  std::vector<Spectrum> chart;
-  for (const ColourCheckerPatch& patch : colourChecker()) chart.push_back(patch.reflectance);
+  const std::vector<Spectrum> chart = colourCheckerReflectances();
   const SamplingSettings uniform{sampling.count, sampling.minNm, sampling.maxNm, SamplingStrategy::Uniform};
   const SamplingSettings lights{sampling.count, sampling.minNm, sampling.maxNm, SamplingStrategy::Lights};
   const WavelengthSampler uniformSampler(uniform, obs);

@@ -38,4 +38,10 @@ const std::vector<ColourCheckerPatch>& colourChecker() {
   return patches;
 }
 
+std::vector<Spectrum> colourCheckerReflectances() {
+  std::vector<Spectrum> out;
+  for (const ColourCheckerPatch& patch : colourChecker()) out.push_back(patch.reflectance);
+  return out;
+}
+
 }  // namespace prism

@@ -18,5 +18,7 @@ struct ColourCheckerPatch {
 };
 
 const std::vector<ColourCheckerPatch>& colourChecker();
+// The 24 reflectances alone, in chart order (a wavelength fit's training or test set).
+std::vector<Spectrum> colourCheckerReflectances();
 
 }  // namespace prism

@@ -339,8 +339,7 @@ std::vector<Spectrum> gamutReflectances(const RgbToSpectrumTable& table, int ste
 }
 
 std::vector<Spectrum> standardTrainingReflectances(const RgbToSpectrumTable& table) {
-  std::vector<Spectrum> out;
-  for (const ColourCheckerPatch& patch : colourChecker()) out.push_back(patch.reflectance);
+  std::vector<Spectrum> out = colourCheckerReflectances();
   for (Spectrum& s : gamutReflectances(table, kFitGamutSteps)) out.push_back(std::move(s));
   return out;
 }

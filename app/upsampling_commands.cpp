@@ -117,11 +117,16 @@ void runUpsample(const UpsampleOptions& o) {
                             o.wavelengths[2]));
   if (o.intent != "albedo" && o.intent != "unbounded")
     throw Error("--intent: unknown intent '" + o.intent + "' (albedo, unbounded)");
-  if (o.path != "manual" && o.path != "filtered")
-    throw Error("--path: unknown lookup path '" + o.path + "' (manual, filtered)");
+  const std::string path = o.path.value_or("manual");
+  if (path != "manual" && path != "filtered")
+    throw Error("--path: unknown lookup path '" + path + "' (manual, filtered)");
   if (o.method != "jakob-hanika" && o.method != "box")
     throw Error("--method: unknown method '" + o.method + "' (jakob-hanika, box)");
-  const std::string gamut = colourSpace(o.gamut).name;
+  if (o.method == "box" && (o.path || o.resolution || o.gamut))
+    throw Error("--method box splits RGB into fixed bands with no table: --path, --res and --gamut are for jakob-hanika");
+  if (o.intent == "unbounded" && o.path)
+    throw Error("--path: the unbounded intent looks its scaled albedo up the manual way only");
+  const std::string gamut = colourSpace(o.gamut.value_or("srgb")).name;
   glm::vec3 rgb(static_cast<float>(o.rgb[0]), static_cast<float>(o.rgb[1]), static_cast<float>(o.rgb[2]));
   glm::vec3 coeffs(0.0f);
   float scale = 1.0f;
@@ -135,12 +140,12 @@ void runUpsample(const UpsampleOptions& o) {
   } else {
     harness::ProgressBar bar("building the " + gamut + " upsampling table (first use, cached)");
     RgbToSpectrumTable table = cachedRgbToSpectrumTable(
-        gamut, o.resolution, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
+        gamut, o.resolution.value_or(kRendererTableResolution), [&](std::size_t done, std::size_t total) { bar.update(done, total); });
     if (o.intent == "unbounded") {
       RgbUnboundedSpectrum u(table, rgb);
       coeffs = u.coefficients(), scale = u.scale();
     } else {
-      coeffs = o.path == "manual" ? table.lookup(rgb) : table.lookupFiltered(rgb);
+      coeffs = path == "manual" ? table.lookup(rgb) : table.lookupFiltered(rgb);
     }
     reflectance = upsampledReflectanceSpectrum(coeffs);
   }
@@ -148,7 +153,7 @@ void runUpsample(const UpsampleOptions& o) {
   for (double l = o.wavelengths[0]; l <= o.wavelengths[1] + 1e-9; l += o.wavelengths[2])
     spectrum.push_back({l, scale * reflectance.at(l)});
   if (o.json) {
-    fmt::print("{}\n", json{{"rgb", o.rgb}, {"gamut", gamut}, {"method", o.method}, {"intent", o.intent}, {"path", o.path},
+    fmt::print("{}\n", json{{"rgb", o.rgb}, {"gamut", gamut}, {"method", o.method}, {"intent", o.intent}, {"path", path},
                             {"coefficients", {coeffs.x, coeffs.y, coeffs.z}}, {"scale", scale},
                             {"spectrum", spectrum}}
                            .dump(2));

@@ -3,6 +3,7 @@
 // coefficients and spectrum), for people (text) and scripts (--json).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,13 +22,15 @@ struct LutOptions {
 };
 void runLut(const LutOptions& options);
 
+// The table's options are unset unless given: --method box uses no table (its bands ignore the
+// gamut), and the unbounded intent looks its scaled albedo up one way only, so they refuse them.
 struct UpsampleOptions {
   std::vector<double> rgb;
-  std::string gamut = "srgb";
-  int resolution = kRendererTableResolution;
+  std::optional<std::string> gamut;                    // unset: srgb
+  std::optional<int> resolution;                       // unset: kRendererTableResolution
   std::vector<double> wavelengths{360.0, 830.0, 5.0};  // min, max, step in nm
   std::string intent = "albedo";                       // albedo | unbounded
-  std::string path = "manual";                         // manual | filtered
+  std::optional<std::string> path;                     // manual | filtered; unset: manual
   std::string method = "jakob-hanika";                 // jakob-hanika | box (naive)
   bool json = false;
 };

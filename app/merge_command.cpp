@@ -6,6 +6,7 @@
 #include "batch/reference_merge.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "spectral/rgb_to_spectrum_part.h"
 #include "techniques/prt/transfer_bake.h"
 #include "techniques/prt/transfer_part.h"
@@ -19,6 +20,7 @@ void runMerge(const MergeOptions& o) {
   }
   if (!o.parts.empty() && isTablePart(o.parts.front())) {
     if (!o.variance.empty()) throw Error("--variance: parts of an upsampling table have none");
+    refuseImageExtension(o.output, "-o", "upsampling table");
     requireWritable(o.output);
     RgbToSpectrumTable table = mergeTableParts(o.parts);
     table.save(o.output);
@@ -28,6 +30,7 @@ void runMerge(const MergeOptions& o) {
   }
   if (!o.parts.empty() && prt::isTransferPart(o.parts.front())) {
     if (!o.variance.empty()) throw Error("--variance: parts of a PRT bake have none");
+    refuseImageExtension(o.output, "-o", "PRT transfer");
     requireWritable(o.output);
     prt::TransferPart whole = prt::mergeTransferParts(o.parts);
     prt::writeTransferFile(o.output, whole.key, whole.samples, whole.transfer);

@@ -110,6 +110,7 @@ prt::CachedTransfer transferFor(const prt::PrtMesh& mesh, const prt::BakeSetting
 // Task I of N's share of the vertices, as a part for `prism merge`.
 void runPrtBakePart(const PrtBakeOptions& o, const prt::PrtMesh& mesh, const prt::BakeSettings& settings) {
   if (o.output.empty()) throw Error("--part: give the part's file with -o");
+  refuseImageExtension(o.output, "-o", "part of a PRT bake");
   if (!o.cacheDir.empty()) throw Error("--cache: a part is written to -o (prism merge puts the parts into the cache's file)");
   const TaskIndex task = parseTaskIndex(o.part, "--part");
   const int vertices = static_cast<int>(mesh.positions.size());

@@ -11,6 +11,7 @@
 #include "spectral/colour_space.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "core/task_split.h"
 #include "spectral/rgb_intent.h"
 #include "spectral/rgb_to_spectrum_cache.h"
@@ -78,6 +79,7 @@ void runLutPart(const LutOptions& o, const std::string& gamut) {
 void runLut(const LutOptions& o) {
   const std::string gamut = colourSpace(o.gamut).name;  // unknown names fail before any work
   if (o.output.empty()) throw Error("lut: give the output file with -o");
+  refuseImageExtension(o.output, "-o", o.part.empty() ? "upsampling table" : "part of an upsampling table");
   if (!o.part.empty()) {
     runLutPart(o, gamut);
     return;

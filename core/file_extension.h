@@ -33,4 +33,16 @@ inline void requireExtension(const std::filesystem::path& file, std::string_view
                           file.string(), what, vowelSound ? "an" : "a", extension));
 }
 
+// Error "OPTION FILE: the WHAT is not an image; name it otherwise than .EXT" when FILE is named
+// for an image format (.png, .exr, .hdr, .jpg, .jpeg): a table or a bake under such a name would
+// be taken for an image by every viewer and by Prism's own image options.
+inline void refuseImageExtension(const std::filesystem::path& file, std::string_view option, std::string_view what) {
+  const std::string extension = lowercaseExtension(file);
+  for (std::string_view image : {".png", ".exr", ".hdr", ".jpg", ".jpeg"}) {
+    if (extension != image) continue;
+    throw Error(fmt::format("{}{}: the {} is not an image; name it otherwise than {}",
+                            option.empty() ? "" : std::string(option) + " ", file.string(), what, extension));
+  }
+}
+
 }  // namespace prism

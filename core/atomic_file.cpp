@@ -21,6 +21,20 @@ void requireNoOtherKindOfFile(const std::filesystem::path& path) {
     throw Error(path.string() + ": is not a plain file (a device, pipe or socket); Prism writes only plain files");
 }
 
+// Error "PATH: cannot write: …" unless the nearest existing folder at or above `start` is a folder
+// in which a file can be created (a probe, removed again).
+void requireCreatableFrom(const std::filesystem::path& path, std::filesystem::path start) {
+  std::error_code ec;
+  while (!std::filesystem::exists(start, ec) && start.has_relative_path()) start = start.parent_path();
+  if (!std::filesystem::is_directory(start, ec))
+    throw Error(path.string() + ": cannot write: " + start.string() + " is not a folder");
+  std::filesystem::path probe = start / (".prism-probe" + std::to_string(::getpid()));
+  std::FILE* f = std::fopen(probe.c_str(), "wb");
+  if (!f) throw Error(path.string() + ": cannot write: " + std::strerror(errno));
+  std::fclose(f);
+  std::filesystem::remove(probe, ec);
+}
+
 }  // namespace
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
@@ -47,15 +61,14 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
 void requireWritable(const std::filesystem::path& path) {
   requireNoOtherKindOfFile(path);
   std::error_code ec;
-  std::filesystem::path folder = std::filesystem::absolute(path, ec).parent_path();
-  while (!std::filesystem::exists(folder, ec) && folder.has_relative_path()) folder = folder.parent_path();
-  if (!std::filesystem::is_directory(folder, ec))
-    throw Error(path.string() + ": cannot write: " + folder.string() + " is not a folder");
-  std::filesystem::path probe = folder / (".prism-probe" + std::to_string(::getpid()));
-  std::FILE* f = std::fopen(probe.c_str(), "wb");
-  if (!f) throw Error(path.string() + ": cannot write: " + std::strerror(errno));
-  std::fclose(f);
-  std::filesystem::remove(probe, ec);
+  requireCreatableFrom(path, std::filesystem::absolute(path, ec).parent_path());
+}
+
+void requireWritableFolder(const std::filesystem::path& folder) {
+  std::error_code ec;
+  if (std::filesystem::exists(folder, ec) && !std::filesystem::is_directory(folder, ec))
+    throw Error(folder.string() + ": is a file, not a folder; give a folder to write into");
+  requireCreatableFrom(folder, std::filesystem::absolute(folder, ec));
 }
 
 void requireOtherFile(const std::filesystem::path& output, const std::filesystem::path& other,

@@ -18,6 +18,11 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
 // neither function replaces. Leaves nothing behind.
 void requireWritable(const std::filesystem::path& path);
 
+// requireWritable for an output folder (a gallery): Error "FOLDER: is a file, not a folder" when
+// a file has its name, else unless files can be created in it or, while it is still to be made,
+// in the nearest existing folder above it ("cannot write: X is not a folder" when that is a file).
+void requireWritableFolder(const std::filesystem::path& folder);
+
 // Before writing `output`: Error "OUTPUT: is also ROLE; write it to another file" when it names
 // the same file as `other` (an input the command reads, or another of its outputs), through
 // links and `..` too. An empty `other` is none.

@@ -65,6 +65,30 @@ TEST(RequireWritable, RefusesAFolderAFileAsAFolderAndAPlaceWithoutFiles) {
   EXPECT_THROW(requireWritable("/proc/prism-out.png"), Error);
 }
 
+// An output folder (the demo's gallery): one that is there or still to be made is accepted and
+// left as it was; a file of its name, a file above it, or a place without files is refused.
+TEST(RequireWritableFolder, AcceptsFoldersThereOrToBeMadeAndRefusesFiles) {
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "require_writable_folder";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  EXPECT_NO_THROW(requireWritableFolder(dir));
+  EXPECT_NO_THROW(requireWritableFolder(dir / "gallery" / "new"));
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+  writeFileAtomically(dir / "plain", "x");
+  auto message = [](const std::filesystem::path& folder) {
+    try {
+      requireWritableFolder(folder);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message(dir / "plain").find("plain: is a file, not a folder"), std::string::npos) << message(dir / "plain");
+  EXPECT_NE(message(dir / "plain" / "gallery").find("plain is not a folder"), std::string::npos);
+  EXPECT_NE(message("/proc/prism-gallery").find("/proc/prism-gallery: cannot write"), std::string::npos);
+  EXPECT_EQ(slurp(dir / "plain"), "x");
+}
+
 TEST(AtomicFile, APipeOrDeviceWhereTheFileGoesIsRefusedAndKept) {
   std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "atomic_special";
   std::filesystem::remove_all(dir);

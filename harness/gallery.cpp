@@ -166,6 +166,7 @@ void runGallery(const GalleryOptions& o) {
   check.height = o.height;
   check.sampling.count = o.wavelengths;
   render::validate(check);
+  requireWritableFolder(o.output);
   std::filesystem::create_directories(o.output);
   for (const std::filesystem::path& file : files) precomputeTechniques(loadScene(file));  // bars of their own
 

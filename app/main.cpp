@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "app/benchmark_command.h"
 #include "app/cluster_command.h"
@@ -105,6 +108,18 @@ void addReferenceOptions(CLI::App* command, prism::app::ReferenceOptions& ref, s
   command->add_option("--seed", ref.seed, "random seed (the image depends on it alone)")->capture_default_str();
   command->add_option("--threads", ref.threads, "worker threads (0: all)")->check(CLI::Range(0u, prism::kMaxThreads));
   command->add_option("--ev", refEv, "exposure EV100 for the PNG and the display white (default: the scene camera's)");
+}
+
+// For a word CLI11 did not expect: when it is on or off right after a switch (`--gizmos on`),
+// the hint that a switch takes its value after '='; otherwise nothing.
+std::string switchValueHint(int argc, char** argv, const std::vector<std::string>& extras) {
+  if (extras.empty() || (extras.front() != "on" && extras.front() != "off")) return "";
+  for (int i = 2; i < argc; ++i) {
+    const std::string_view flag = argv[i - 1];
+    if (argv[i] == extras.front() && flag.starts_with("--") && flag.find('=') == std::string_view::npos)
+      return fmt::format(" ({} is a switch: write {}={})", flag, flag, extras.front());
+  }
+  return "";
 }
 
 }  // namespace
@@ -541,6 +556,8 @@ int main(int argc, char** argv) {
     std::vector<std::string> rest = app.remaining(true);
     if (dynamic_cast<const CLI::RequiredError*>(&e) && !rest.empty())
       fmt::print(stderr, "prism: error: unknown command or argument '{}' (see prism --help)\n", rest.front());
+    else if (dynamic_cast<const CLI::ExtrasError*>(&e))
+      fmt::print(stderr, "prism: error: {}{}\n", e.what(), switchValueHint(argc, argv, rest));
     else
       fmt::print(stderr, "prism: error: {}\n", e.what());
     return 2;

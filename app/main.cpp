@@ -274,7 +274,8 @@ int main(int argc, char** argv) {
   auto* upCmd = app.add_subcommand("upsample", "RGB → sigmoid coefficients and spectrum through the cached table");
   upCmd->add_option("--rgb", upRgb, "r,g,b, linear")->required();
   upCmd->add_option("--gamut", up.gamut, "colour space of --rgb (default srgb)");
-  upCmd->add_option("--res", up.resolution, fmt::format("table resolution (default {})", prism::kRendererTableResolution));
+  upCmd->add_option("--res", up.resolution,
+                    fmt::format("table resolution (default {})", prism::kRendererTableResolution));
   upCmd->add_option("--wavelengths", upWavelengths, "MIN:MAX:STEP in nm (default 360:830:5)");
   upCmd->add_option("--intent", up.intent, "albedo (clamped to [0, 1]) or unbounded (scaled by 2·max)")->capture_default_str();
   upCmd->add_option("--path", up.path, "manual or filtered lookup (default manual)");

@@ -125,7 +125,8 @@ void runUpsample(const UpsampleOptions& o) {
   if (o.method != "jakob-hanika" && o.method != "box")
     throw Error("--method: unknown method '" + o.method + "' (jakob-hanika, box)");
   if (o.method == "box" && (o.path || o.resolution || o.gamut))
-    throw Error("--method box splits RGB into fixed bands with no table: --path, --res and --gamut are for jakob-hanika");
+    throw Error(
+        "--method box splits RGB into fixed bands with no table: --path, --res and --gamut are for jakob-hanika");
   if (o.intent == "unbounded" && o.path)
     throw Error("--path: the unbounded intent looks its scaled albedo up the manual way only");
   const std::string gamut = colourSpace(o.gamut.value_or("srgb")).name;
@@ -141,8 +142,9 @@ void runUpsample(const UpsampleOptions& o) {
     reflectance = boxReflectanceSpectrum(rgb);
   } else {
     harness::ProgressBar bar("building the " + gamut + " upsampling table (first use, cached)");
-    RgbToSpectrumTable table = cachedRgbToSpectrumTable(
-        gamut, o.resolution.value_or(kRendererTableResolution), [&](std::size_t done, std::size_t total) { bar.update(done, total); });
+    RgbToSpectrumTable table =
+        cachedRgbToSpectrumTable(gamut, o.resolution.value_or(kRendererTableResolution),
+                                 [&](std::size_t done, std::size_t total) { bar.update(done, total); });
     if (o.intent == "unbounded") {
       RgbUnboundedSpectrum u(table, rgb);
       coeffs = u.coefficients(), scale = u.scale();

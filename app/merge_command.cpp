@@ -15,6 +15,8 @@ namespace prism::app {
 
 void runMerge(const MergeOptions& o) {
   for (const std::filesystem::path& part : o.parts) {
+    // Missing before anything: the first part's kind picks what is merged and what -o must be.
+    if (!std::filesystem::exists(part)) throw Error(part.string() + ": cannot open: no such file");
     requireOtherFile(o.output, part, "a part it merges");
     requireOtherFile(o.variance, part, "a part it merges");
   }
@@ -38,6 +40,13 @@ void runMerge(const MergeOptions& o) {
                o.parts.size(), o.output.string(), whole.vertexCount, whole.samples, whole.key);
     return;
   }
+  // Neither a table's part nor a bake's: a reference render's (an EXR), merged into an image. A
+  // first part and an output that are no images mean another kind was meant: the part is named.
+  if (const std::string extension = lowercaseExtension(o.output);
+      !o.parts.empty() && lowercaseExtension(o.parts.front()) != ".exr" && extension != ".png" && extension != ".exr")
+    throw Error(fmt::format("{}: not a part of an upsampling table or of a PRT bake (and -o {} is no image, as a "
+                            "reference render's parts are merged into)",
+                            o.parts.front().string(), o.output.string()));
   checkReferenceOutputs(o.output, o.variance);
   requireWritable(o.output);
   if (!o.variance.empty()) requireWritable(o.variance);

@@ -8,6 +8,7 @@
 #include "harness/progress_bar.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "techniques/atmosphere/sky_evaluation.h"
 #include "techniques/atmosphere/wavelength_optimiser.h"
 
@@ -92,6 +93,7 @@ void runAtmosphereOptimise(const AtmosphereCommandOptions& o) {
   if (o.output.empty()) throw Error("-o: expected a file, got \"\"");
   const std::filesystem::path& output = o.output;
   requireWritable(output);
+  requireExtension(output, ".json", "-o", "wavelength set");
   SkySamples samples = makeSkySamples(kFitElevations, run.zeniths, run.azimuths);
   OptimiserSettings settings;
   nlohmann::json file;
@@ -105,7 +107,10 @@ void runAtmosphereOptimise(const AtmosphereCommandOptions& o) {
                       {"grid_range_nm", {380, 740}},
                       {"nelder_mead_seeds", settings.seeds},
                       {"max_evaluations", {{"8", settings.maxEvaluations8}, {"12", settings.maxEvaluations12}}},
-                      {"command", o.quick ? "prism atmosphere optimise --quick" : "prism atmosphere optimise"}};
+                      // What reproduces it, every option that shapes the fit spelt out (--quick
+                      // stands for some of them and not for those given beside it).
+                      {"command", fmt::format("prism atmosphere optimise --reference-step {:g} --zeniths {} --azimuths {}",
+                                              run.referenceStepNm, run.zeniths, run.azimuths)}};
   for (bool aerosols : {true, false}) {
     const char* set = aerosols ? "aerosols" : "rayleigh-ozone";
     AtmosphereParameters p = parametersFor(aerosols);

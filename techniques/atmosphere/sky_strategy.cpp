@@ -99,6 +99,7 @@ OptimisedWavelengths loadOptimisedWavelengths(const std::filesystem::path& file,
                                 ? &j["sets"][std::string(set)]
                                 : nullptr;
   if (s == nullptr || !s->is_object()) throw Error(fmt::format("{}: {}: missing (the wavelength set of that atmosphere)", file.string(), at));
+  // Within ±kFloatInputLimit, as every number Prism reads: 1e300 in the matrix printed NaN errors.
   auto numbers = [&](const nlohmann::json& v, const std::string& where, std::size_t count) {
     std::vector<double> out;
     if (v.is_array() && v.size() == count)
@@ -106,6 +107,9 @@ OptimisedWavelengths loadOptimisedWavelengths(const std::filesystem::path& file,
         if (x.is_number()) out.push_back(x.get<double>());
     if (out.size() != count)
       throw Error(fmt::format("{}: {}: expected an array of {} numbers, got {}", file.string(), where, count, schema::describe(v)));
+    for (std::size_t i = 0; i < count; ++i)
+      if (!(std::abs(out[i]) <= schema::kFloatInputLimit))
+        throw Error(fmt::format("{}: {}/{}: {:g} is outside ±{:g}", file.string(), where, i, out[i], schema::kFloatInputLimit));
     return out;
   };
   auto member = [&](const char* key) -> const nlohmann::json& {
@@ -118,19 +122,24 @@ OptimisedWavelengths loadOptimisedWavelengths(const std::filesystem::path& file,
   for (std::size_t i = 0; i < 4; ++i) {
     if (!(lambda[i] >= kLambdaMinNm && lambda[i] <= kLambdaMaxNm))
       throw Error(fmt::format("{}: {}/lambda_nm/{}: {:g} nm is outside 360..830 nm", file.string(), at, i, lambda[i]));
+    if (i > 0 && !(lambda[i] > lambda[i - 1]))
+      throw Error(fmt::format("{}: {}/lambda_nm/{}: {:g} nm does not follow {:g} nm (four increasing wavelengths)",
+                              file.string(), at, i, lambda[i], lambda[i - 1]));
+    if (!(weights[i] > 0.0))
+      throw Error(fmt::format("{}: {}/weights_nm/{}: {:g} nm is not positive (a quadrature weight)", file.string(), at, i,
+                              weights[i]));
     w.lambdaNm[i] = lambda[i];
     w.weights[i] = weights[i];
   }
-  if (s->contains("matrix")) {
-    const nlohmann::json& m = (*s)["matrix"];
-    if (!m.is_array() || m.size() != 3)
-      throw Error(fmt::format("{}: {}/matrix: expected 3 rows of 4 numbers, got {}", file.string(), at, schema::describe(m)));
-    for (std::size_t r = 0; r < 3; ++r) {
-      const std::vector<double> row = numbers(m[r], fmt::format("{}/matrix/{}", at, r), 4);
-      for (std::size_t c = 0; c < 4; ++c) w.matrix(static_cast<int>(r), static_cast<int>(c)) = row[c];
-    }
-    w.hasMatrix = true;
+  // The 12-parameter strategy's matrix, fitted with the weights: a set without it is incomplete.
+  const nlohmann::json& m = member("matrix");
+  if (!m.is_array() || m.size() != 3)
+    throw Error(fmt::format("{}: {}/matrix: expected 3 rows of 4 numbers, got {}", file.string(), at, schema::describe(m)));
+  for (std::size_t r = 0; r < 3; ++r) {
+    const std::vector<double> row = numbers(m[r], fmt::format("{}/matrix/{}", at, r), 4);
+    for (std::size_t c = 0; c < 4; ++c) w.matrix(static_cast<int>(r), static_cast<int>(c)) = row[c];
   }
+  w.hasMatrix = true;
   return w;
 }
 

@@ -97,6 +97,8 @@ RgbToSpectrumTable cachedRgbToSpectrumTable(
     const std::string& gamut, int resolution,
     const std::function<void(std::size_t, std::size_t)>& progress) {
   std::filesystem::path path = rgbToSpectrumCachePath(gamut, resolution);
+  if (std::filesystem::is_directory(path))  // never replaced: writeFileAtomically refuses folders
+    throw Error(path.string() + ": is a folder where the cache keeps the upsampling table; remove it");
   if (std::filesystem::exists(path)) {
     // A damaged entry is said so, in one line, and rebuilt below; never trusted.
     std::string damage;

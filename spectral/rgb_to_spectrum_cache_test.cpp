@@ -9,6 +9,8 @@
 #include <fstream>
 #include <string>
 
+#include "core/error.h"
+
 namespace prism {
 namespace {
 
@@ -54,6 +56,24 @@ TEST_F(CacheTest, RebuildsADamagedEntry) {
   EXPECT_GT(progressCalls, 0);
   EXPECT_TRUE(std::equal(first.data().begin(), first.data().end(), rebuilt.data().begin()));
   EXPECT_NO_THROW(RgbToSpectrumTable::load(path));
+}
+
+// A folder where the entry belongs cannot be replaced (writeFileAtomically never replaces one):
+// an Error naming it, not the stream's failure on reading a folder (it was `prism: internal
+// error`, exit 70), and the folder left as it was.
+TEST_F(CacheTest, AFolderWhereTheEntryBelongsIsAnError) {
+  const std::filesystem::path path = rgbToSpectrumCachePath("srgb", 6);
+  std::filesystem::create_directories(path / "inside");
+  try {
+    cachedRgbToSpectrumTable("srgb", 6);
+    FAIL() << "a folder in the table's place was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(path.string() + ": is a folder where the cache keeps the upsampling table"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(std::filesystem::is_directory(path / "inside"));
+  EXPECT_THROW(RgbToSpectrumTable::load(path), Error);
 }
 
 // A table consistent with its checksum but whose coefficients are not the fits of their nodes

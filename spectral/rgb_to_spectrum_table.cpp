@@ -125,6 +125,8 @@ void RgbToSpectrumTable::save(const std::filesystem::path& path) const {
 }
 
 RgbToSpectrumTable RgbToSpectrumTable::load(const std::filesystem::path& path) {
+  // A folder opens as a stream whose first read throws std::ios_base::failure, not an Error.
+  if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a folder, not an upsampling table");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path.string() + ": cannot open upsampling table");
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

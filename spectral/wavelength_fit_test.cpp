@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/cache_dir_test_support.h"
 #include "core/error.h"
 #include "core/fnv1a.h"
 #include "spectral/colour_checker.h"
@@ -92,6 +93,24 @@ TEST(WavelengthFit, AnEditedCacheEntryIsRefitted) {
     EXPECT_NE(::testing::internal::GetCapturedStderr().find("is damaged"), std::string::npos) << edited;
     EXPECT_EQ(again.lambdaNm, fitted.lambdaNm);
   }
+}
+
+// A folder where the entry belongs: an Error naming it before any fit (reading it threw the
+// stream's failure, `prism: internal error`), and the folder kept.
+TEST(WavelengthFit, AFolderWhereTheCacheEntryBelongsIsAnError) {
+  const ScopedCacheDirectory cache("prism_wavelength_fit_folder");
+  const Observer& cie = observer("cie1931");
+  const WavelengthFitProblem problem{{illuminant("F2")}, colourCheckerReflectances(), 4};
+  const std::filesystem::path path = cacheDirectory() / "wavelengths" / (std::to_string(fitKey(problem, cie)) + ".txt");
+  std::filesystem::create_directories(path);
+  try {
+    cachedFitWavelengths(problem, cie);
+    FAIL() << "a folder in the entry's place was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("is a folder where the cache keeps a wavelength set"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(std::filesystem::is_directory(path));
 }
 
 TEST(WavelengthFit, BadProblemsAreErrors) {

@@ -181,8 +181,17 @@ void colourConvert(const ConvertOptions& o) {
   requireThree(o.values, "colour convert");
   Eigen::Vector3d in(o.values[0], o.values[1], o.values[2]);
   Adaptation adaptation = adaptationFromName(o.adaptation);
-  const RgbColourSpace* from = o.from == "xyz" ? nullptr : &colourSpace(o.from);
-  const RgbColourSpace* to = o.to == "xyz" ? nullptr : &colourSpace(o.to);
+  // xyz or an RGB space; an unknown name's error lists xyz too, which colourSpace's cannot know.
+  auto space = [](const std::string& name, const char* option) -> const RgbColourSpace* {
+    if (name == "xyz") return nullptr;
+    try {
+      return &colourSpace(name);
+    } catch (const Error& e) {
+      throw Error(fmt::format("{}: {} (or xyz)", option, e.what()));
+    }
+  };
+  const RgbColourSpace* from = space(o.from, "--from");
+  const RgbColourSpace* to = space(o.to, "--to");
   // XYZ carries no white: adaptation happens only between two RGB spaces' whites.
   Eigen::Matrix3d m = Eigen::Matrix3d::Identity();
   if (from && to) m = rgbToRgb(*from, *to, adaptation);

@@ -158,17 +158,20 @@ int main(int argc, char** argv) {
   xyzCmd->add_option("--illuminant", xyz.illuminant, "illuminant name (see `colour list illuminants`)")->capture_default_str();
   xyzCmd->add_option("--observer", xyz.observer, "cie1931, cie1964 or a camera")->capture_default_str();
   auto* reflOpt = xyzCmd->add_option("--reflectance", xyz.reflectanceFile, "spectral CSV: wavelength_nm,value");
-  xyzCmd->add_option("--rgb", rgbText, "r,g,b albedo, upsampled with a Jakob–Hanika fit")->excludes(reflOpt);
-  xyzCmd->add_option("--gamut", xyz.gamut, "colour space of --rgb")->capture_default_str();
-  xyzCmd->add_flag("--encoded", xyz.encoded, "--rgb is transfer-encoded (e.g. 8-bit sRGB / 255), not linear");
+  auto* xyzRgbOpt =
+      xyzCmd->add_option("--rgb", rgbText, "r,g,b albedo, upsampled with a Jakob–Hanika fit")->excludes(reflOpt);
+  // --gamut and --encoded describe --rgb: without it they were ignored.
+  xyzCmd->add_option("--gamut", xyz.gamut, "colour space of --rgb")->capture_default_str()->needs(xyzRgbOpt);
+  xyzCmd->add_flag("--encoded", xyz.encoded, "--rgb is transfer-encoded (e.g. 8-bit sRGB / 255), not linear")
+      ->needs(xyzRgbOpt);
   std::string rangeText;
   auto* wavelengthsOpt = xyzCmd->add_option("--wavelengths", xyz.wavelengthCount,
                      "also estimate from N sampled wavelengths (a multiple of 4, 4–1000)");
   xyzCmd->add_option("--range", rangeText, "MIN,MAX nm of the sampled wavelengths (within 360–830)");
-  xyzCmd->add_option("--strategy", xyz.strategy,
-                     "uniform, stratified, rotated, importance (the observer's response) or lights (the "
-                     "illuminant × that response)")->capture_default_str();
-  xyzCmd->add_option("--seed", xyz.seed, "seed of stratified, rotated, importance and lights sampling");
+  auto* xyzStrategyOpt = xyzCmd->add_option("--strategy", xyz.strategy,
+                     "uniform, stratified, rotated, importance (the observer's response), lights (the "
+                     "illuminant × that response) or optimised (fitted for the illuminant)")->capture_default_str();
+  auto* xyzSeedOpt = xyzCmd->add_option("--seed", xyz.seed, "seed of stratified, rotated, importance and lights sampling");
   xyzCmd->add_flag("--json", xyz.json, "JSON output");
 
   DeltaEOptions de;
@@ -465,7 +468,12 @@ int main(int argc, char** argv) {
     if (*xyzCmd) {
       if (!rgbText.empty()) xyz.rgb = prism::app::parseNumbers(rgbText, "--rgb");
       if (!rangeText.empty()) xyz.rangeNm = prism::app::parseNumbers(rangeText, "--range");
-      xyz.sample = wavelengthsOpt->count() > 0 || !rangeText.empty();
+      // Any sampling option asks for the sampled estimate (16 wavelengths unless --wavelengths).
+      xyz.sample = wavelengthsOpt->count() > 0 || !rangeText.empty() || xyzStrategyOpt->count() > 0 ||
+                   xyzSeedOpt->count() > 0;
+      if (xyzSeedOpt->count() > 0 && (xyz.strategy == "uniform" || xyz.strategy == "optimised"))
+        throw prism::Error(fmt::format("--seed: the {} strategy draws no random numbers (stratified, rotated, "
+                                       "importance and lights do)", xyz.strategy));
       colourXyz(xyz);
     }
     if (*deCmd) {

@@ -57,7 +57,7 @@ void validate(const FrameSettings& settings) {
                             "{} needs a spectral mode", settings.observer));
   }
   // The sky's four wavelengths and their weights are fitted for CIE 1931's curves: under a camera's
-  // they came out green (ΔE00 12–14 from the reference), under CIE 1964 at twice the error.
+  // they came out green (ΔE00 12–14 from the reference), under CIE 1964 at two to three times the error.
   if (settings.mode == RenderMode::Optimised4 && settings.observer != "cie1931")
     throw Error(fmt::format("mode optimised4's four wavelengths and weights are fitted for CIE 1931: the observer {} "
                             "needs a spectral mode (jakob-hanika or reference)", settings.observer));

@@ -249,7 +249,8 @@ void colourList(const std::string& what, bool jsonOut) {
   } else if (what == "spaces") {
     for (const std::string& n : listColourSpaces()) out.push_back(n);
   } else {
-    throw Error("colour list: unknown list '" + what + "' (illuminants, observers, cameras, spaces)");
+    throw Error(what.empty() ? "colour list: say which list: illuminants, observers, cameras or spaces"
+                             : "colour list: unknown list '" + what + "' (illuminants, observers, cameras, spaces)");
   }
   if (jsonOut) {
     fmt::print("{}\n", out.dump(2));

@@ -2,6 +2,7 @@
 // includes CLI11 (its headers cost ~15 s per file on 2 cores); commands live in their own files.
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -122,6 +123,21 @@ std::string switchValueHint(int argc, char** argv, const std::vector<std::string
   return "";
 }
 
+// For "A subcommand is required": the subcommands of the deepest command given, which CLI11's
+// message does not name ("prism atmosphere" takes evaluate or optimise).
+std::string subcommandHint(const CLI::App& app) {
+  const CLI::App* deepest = &app;
+  std::string command = "prism";
+  while (!deepest->get_subcommands().empty()) {
+    deepest = deepest->get_subcommands().front();
+    command += " " + deepest->get_name();
+  }
+  std::vector<std::string> names;
+  for (const CLI::App* sub : deepest->get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+  if (names.empty()) return "";
+  return fmt::format(": {} takes {} (see {} --help)", command, fmt::join(names, ", "), command);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -206,7 +222,8 @@ int main(int argc, char** argv) {
   std::string listWhat;
   bool listJson = false;
   auto* listCmd = colour->add_subcommand("list", "list known names");
-  listCmd->add_option("what", listWhat, "illuminants, observers, cameras or spaces")->required();
+  // Not required by CLI11, whose "what is required" names no list: colourList says which there are.
+  listCmd->add_option("what", listWhat, "illuminants, observers, cameras or spaces");
   listCmd->add_flag("--json", listJson, "JSON output");
 
   MetamerOptions metamer;
@@ -565,6 +582,8 @@ int main(int argc, char** argv) {
     std::vector<std::string> rest = app.remaining(true);
     if (dynamic_cast<const CLI::RequiredError*>(&e) && !rest.empty())
       fmt::print(stderr, "prism: error: unknown command or argument '{}' (see prism --help)\n", rest.front());
+    else if (dynamic_cast<const CLI::RequiredError*>(&e) && std::string_view(e.what()) == "A subcommand is required")
+      fmt::print(stderr, "prism: error: {}{}\n", e.what(), subcommandHint(app));
     else if (dynamic_cast<const CLI::ExtrasError*>(&e))
       fmt::print(stderr, "prism: error: {}{}\n", e.what(), switchValueHint(argc, argv, rest));
     else

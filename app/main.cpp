@@ -2,7 +2,6 @@
 // includes CLI11 (its headers cost ~15 s per file on 2 cores); commands live in their own files.
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +18,7 @@
 #include "app/merge_command.h"
 #include "app/nebula_command_line.h"
 #include "app/number_list.h"
+#include "app/parse_error_hint.h"
 #include "app/prt_commands.h"
 #include "app/reference_commands.h"
 #include "app/render_commands.h"
@@ -109,33 +109,6 @@ void addReferenceOptions(CLI::App* command, prism::app::ReferenceOptions& ref, s
   command->add_option("--seed", ref.seed, "random seed (the image depends on it alone)")->capture_default_str();
   command->add_option("--threads", ref.threads, "worker threads (0: all)")->check(CLI::Range(0u, prism::kMaxThreads));
   command->add_option("--ev", refEv, "exposure EV100 for the PNG and the display white (default: the scene camera's)");
-}
-
-// For a word CLI11 did not expect: when it is on or off right after a switch (`--gizmos on`),
-// the hint that a switch takes its value after '='; otherwise nothing.
-std::string switchValueHint(int argc, char** argv, const std::vector<std::string>& extras) {
-  if (extras.empty() || (extras.front() != "on" && extras.front() != "off")) return "";
-  for (int i = 2; i < argc; ++i) {
-    const std::string_view flag = argv[i - 1];
-    if (argv[i] == extras.front() && flag.starts_with("--") && flag.find('=') == std::string_view::npos)
-      return fmt::format(" ({} is a switch: write {}={})", flag, flag, extras.front());
-  }
-  return "";
-}
-
-// For "A subcommand is required": the subcommands of the deepest command given, which CLI11's
-// message does not name ("prism atmosphere" takes evaluate or optimise).
-std::string subcommandHint(const CLI::App& app) {
-  const CLI::App* deepest = &app;
-  std::string command = "prism";
-  while (!deepest->get_subcommands().empty()) {
-    deepest = deepest->get_subcommands().front();
-    command += " " + deepest->get_name();
-  }
-  std::vector<std::string> names;
-  for (const CLI::App* sub : deepest->get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
-  if (names.empty()) return "";
-  return fmt::format(": {} takes {} (see {} --help)", command, fmt::join(names, ", "), command);
 }
 
 }  // namespace
@@ -583,9 +556,9 @@ int main(int argc, char** argv) {
     if (dynamic_cast<const CLI::RequiredError*>(&e) && !rest.empty())
       fmt::print(stderr, "prism: error: unknown command or argument '{}' (see prism --help)\n", rest.front());
     else if (dynamic_cast<const CLI::RequiredError*>(&e) && std::string_view(e.what()) == "A subcommand is required")
-      fmt::print(stderr, "prism: error: {}{}\n", e.what(), subcommandHint(app));
+      fmt::print(stderr, "prism: error: {}{}\n", e.what(), prism::app::subcommandHint(app));
     else if (dynamic_cast<const CLI::ExtrasError*>(&e))
-      fmt::print(stderr, "prism: error: {}{}\n", e.what(), switchValueHint(argc, argv, rest));
+      fmt::print(stderr, "prism: error: {}{}\n", e.what(), prism::app::switchValueHint(argc, argv, rest));
     else
       fmt::print(stderr, "prism: error: {}\n", e.what());
     return 2;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <zlib.h>
 #include <Eigen/Cholesky>
@@ -164,12 +165,14 @@ Candidate descend(const FitData& data, std::vector<int> nodes, const std::functi
   return {nodes, best};
 }
 
-// n = 4: the best combination of a 20 nm grid.
-std::vector<int> gridSeed(const FitData& data, int n) {
+// n = 4: the best combination of a 20 nm grid; none where the range holds fewer than n of its
+// points (the other seeds start such a fit).
+std::optional<std::vector<int>> gridSeed(const FitData& data, int n) {
   std::vector<int> grid;
   for (double offset = kGridStepNm / 2; offset < data.nodes(); offset += kGridStepNm)
     grid.push_back(static_cast<int>(offset));
   const int g = static_cast<int>(grid.size());
+  if (g < n) return std::nullopt;
   std::vector<std::vector<int>> combinations;
   std::vector<int> index(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) index[static_cast<std::size_t>(i)] = i;
@@ -283,7 +286,8 @@ FittedWavelengths fitWavelengths(const WavelengthFitProblem& problem, const Obse
   }
   seeds.push_back(ascending(uniform, data.nodes()));
   seeds.push_back(ascending(lights, data.nodes()));
-  if (n == 4) seeds.push_back(gridSeed(data, n));
+  if (n == 4)
+    if (auto grid = gridSeed(data, n)) seeds.push_back(std::move(*grid));
 
   const std::size_t total = seeds.size() * kMaxSweeps;
   std::size_t done = 0;

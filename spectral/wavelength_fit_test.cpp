@@ -38,6 +38,16 @@ TEST(WavelengthFit, FittedWavelengthsAreAscendingWholeNanometresInRange) {
   EXPECT_LE(fitError(set, problem, cie).mean, fitError(four, problem, cie).mean);
 }
 
+// A range narrower than four points of n = 4's 20 nm seed grid (80 nm) fits from the other seeds:
+// the grid's combinations once ran past its end, without end.
+TEST(WavelengthFit, ANarrowRangeFitsFourWavelengths) {
+  const FittedWavelengths set =
+      fitWavelengths({{illuminant("D65")}, colourCheckerReflectances(), 4, 360, 400}, observer("cie1931"));
+  ASSERT_EQ(set.lambdaNm.size(), 4u);
+  EXPECT_GE(set.lambdaNm.front(), 360.0);
+  EXPECT_LE(set.lambdaNm.back(), 400.0);
+}
+
 // The Optimised strategy's sampler gives the fitted wavelengths every frame and the fitted matrix,
 // not c̄/(n·pdf): its estimate is the fit's.
 TEST(WavelengthFit, OptimisedSamplerUsesTheFittedSet) {

@@ -231,7 +231,7 @@ TEST(Cli, RenderChecksItsInputBeforeRendering) {
 }
 
 // `wavelengths optimise`: the set fitted for the blue LED beats one uniform frame over the chart,
-// and is what the cache holds (a second run reads it).
+// and is what the cache holds (a second run reads it); a set far from the integral is warned of.
 TEST(Cli, WavelengthsOptimiseFitsAndReports) {
   const std::string scenes = PRISM_SCENES_DIR;
   expectOneLineError("wavelengths optimise " + scenes + "/spheres_d65.json --wavelengths 128",
@@ -248,6 +248,12 @@ TEST(Cli, WavelengthsOptimiseFitsAndReports) {
   Result again = run("wavelengths optimise " + scenes + "/spheres_blue_led.json --wavelengths 8 --json");
   ASSERT_EQ(again.exitCode, 0) << again.err;
   EXPECT_EQ(nlohmann::json::parse(again.out)["wavelengths_nm"], j["wavelengths_nm"]);
+  EXPECT_EQ(again.err.find("warning"), std::string::npos) << again.err;
+  // A range too narrow for the scene's colours fits what it can, and says how far that is.
+  Result narrow = run("wavelengths optimise " + scenes + "/spheres_d65.json --wavelengths 4 --range 360,400");
+  ASSERT_EQ(narrow.exitCode, 0) << narrow.err;
+  EXPECT_NE(narrow.err.find("prism: warning: the 4 wavelengths fitted over 360–400 nm show this scene's surfaces"),
+            std::string::npos) << narrow.err;
 }
 
 // One test for everything that needs the 64³ upsampling table (built once per build folder,

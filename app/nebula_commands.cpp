@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -33,6 +35,21 @@ void requirePlotFile(const std::filesystem::path& plot) {
   if (plot.empty()) return;
   requireExtension(plot, ".svg", "--plot", "plot");
   requireWritable(plot);
+}
+
+// A scene file's noise generated with a progress bar (512³: half a minute on 2 cores), once the
+// command has checked what it could without it.
+nebula::NebulaScene generateWithProgress(nebula::NebulaSceneFile file, unsigned threads) {
+  std::optional<harness::ProgressBar> bar;
+  return nebula::generateDensity(std::move(file), threads, [&bar](std::size_t done, std::size_t total) {
+    if (!bar) bar.emplace("nebula: density noise");
+    bar->update(done, total);
+  });
+}
+
+void requireFilterSet(const std::string& filters) {
+  if (!filters.empty() && filters != "hubble" && filters != "cie1931")
+    throw Error(fmt::format("--filters: '{}' is not hubble or cie1931", excerpt(filters)));
 }
 
 }  // namespace
@@ -89,12 +106,9 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
   nebula::RenderSettings s;
   s.steps = o.steps.value_or(s.steps);
   nebula::validate(s);
-  nebula::NebulaScene scene = nebula::loadNebulaScene(o.scene, o.threads);
-  if (!o.filters.empty()) {
-    if (o.filters != "hubble" && o.filters != "cie1931")
-      throw Error(fmt::format("--filters: '{}' is not hubble or cie1931", excerpt(o.filters)));
-    scene.model.filters = o.filters;
-  }
+  requireFilterSet(o.filters);
+  nebula::NebulaScene scene = generateWithProgress(nebula::readNebulaScene(o.scene), o.threads);
+  if (!o.filters.empty()) scene.model.filters = o.filters;
   nebula::NebulaCamera& camera = scene.model.camera;
   if (o.size) nebula::scaleImage(camera, *o.size);
   s.steps = o.steps.value_or(scene.steps);
@@ -189,21 +203,19 @@ void runNebulaRender(const NebulaRenderOptions& o) {
     throw Error(fmt::format("--uniform-samples {}: only with --method reference (the paper's baseline); {} samples no "
                             "wavelengths", o.uniformSamples, o.method));
   requireWritable(o.output);
-  nebula::NebulaScene scene = nebula::loadNebulaScene(o.scene, o.threads);
-  if (!o.filters.empty()) {
-    if (o.filters != "hubble" && o.filters != "cie1931")
-      throw Error(fmt::format("--filters: '{}' is not hubble or cie1931", excerpt(o.filters)));
-    scene.model.filters = o.filters;
+  requireFilterSet(o.filters);
+  nebula::NebulaSceneFile file = nebula::readNebulaScene(o.scene);
+  std::unique_ptr<gpu::HeadlessContext> context;
+  if (o.gpu) {
+    context = std::make_unique<gpu::HeadlessContext>();
+    nebula::requireGpuFits(file.densitySize().z, file.scene.model.stars.size());  // before any work
   }
+  nebula::NebulaScene scene = generateWithProgress(std::move(file), o.threads);
+  if (!o.filters.empty()) scene.model.filters = o.filters;
   s.steps = o.steps.value_or(scene.steps);
   s.emissionLines = !o.noLines;
   s.threads = o.threads;
   std::string filters = scene.model.filters;
-  std::unique_ptr<gpu::HeadlessContext> context;
-  if (o.gpu) {
-    context = std::make_unique<gpu::HeadlessContext>();
-    nebula::requireGpuFits(scene.model);  // before the precomputation, not after it
-  }
   harness::ProgressBar bar(scene.model.ionisation ? "nebula: optical depth to each star, ionisation zones, bases"
                                                   : "nebula: optical depth to each star, bases");
   auto t0 = std::chrono::steady_clock::now();

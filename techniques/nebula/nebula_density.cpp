@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -84,7 +85,8 @@ double noise(const std::array<int, 512>& p, glm::dvec3 q) {
 
 double perlinNoise(const glm::dvec3& p, std::uint64_t seed) { return noise(permutation(seed), p); }
 
-DensityGrid generateFbm(const NoiseParameters& params, unsigned threads) {
+DensityGrid generateFbm(const NoiseParameters& params, unsigned threads,
+                        const std::function<void(std::size_t done, std::size_t total)>& progress) {
   if (params.resolution < 2 || params.resolution > 1024 || params.octaves < 1 || params.octaves > 16)
     throw Error(fmt::format("density noise: resolution must be 2…1024 and octaves 1…16 (got {} and {})",
                             params.resolution, params.octaves));
@@ -105,8 +107,24 @@ DensityGrid generateFbm(const NoiseParameters& params, unsigned threads) {
         grid.values[(k * static_cast<std::size_t>(n) + static_cast<std::size_t>(j)) * static_cast<std::size_t>(n) +
                     static_cast<std::size_t>(i)] = static_cast<float>(d);
       }
-  });
+  }, progress);
   return grid;
+}
+
+DeferredDensity::DeferredDensity(DensityGrid grid) : mGrid(std::move(grid)) {
+  std::call_once(mMade, [] {});
+}
+
+DeferredDensity::DeferredDensity(const NoiseParameters& noise) : mNoise(noise) {}
+
+glm::ivec3 DeferredDensity::size() const {
+  if (mNoise) return glm::ivec3(mNoise->resolution);
+  return {mGrid.nx, mGrid.ny, mGrid.nz};
+}
+
+const DensityGrid& DeferredDensity::grid(const std::function<void(std::size_t done, std::size_t total)>& progress) const {
+  std::call_once(mMade, [&] { mGrid = generateFbm(*mNoise, 0, progress); });
+  return mGrid;
 }
 
 DensityGrid readDensityFile(const std::filesystem::path& path) {

@@ -9,8 +9,12 @@
 // A bad file is refused in one line naming the file and the place (line, or byte offset).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <mutex>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -50,7 +54,29 @@ struct NoiseParameters {
   double bias = 0.35;
   std::uint64_t seed = 1;
 };
-DensityGrid generateFbm(const NoiseParameters& p, unsigned threads = 0);
+// progress, if set, is called after each z slice with (slices done, slices in all).
+DensityGrid generateFbm(const NoiseParameters& p, unsigned threads = 0,
+                        const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+
+// A density given now (a file's) or generated from noise at its first use, then kept: a scene
+// holds its nebula's noise unmade until the precomputation, which shows its progress (512³ takes
+// half a minute on two cores), and copies of the scene share what was made.
+class DeferredDensity {
+ public:
+  explicit DeferredDensity(DensityGrid grid);
+  explicit DeferredDensity(const NoiseParameters& noise);
+  // NX, NY, NZ, without generating.
+  glm::ivec3 size() const;
+  // The noise it is made of; empty for a given grid.
+  const std::optional<NoiseParameters>& noise() const { return mNoise; }
+  // Generates it on the first call (with all threads, reporting to `progress`); thread-safe.
+  const DensityGrid& grid(const std::function<void(std::size_t done, std::size_t total)>& progress = {}) const;
+
+ private:
+  std::optional<NoiseParameters> mNoise;
+  mutable std::once_flag mMade;
+  mutable DensityGrid mGrid;
+};
 
 // Perlin's improved noise at p, for the permutation of a seed, in about [−1, 1].
 double perlinNoise(const glm::dvec3& p, std::uint64_t seed);

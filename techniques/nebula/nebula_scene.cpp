@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -46,7 +47,7 @@ PolynomialPiece readScatteringSpectrum(const schema::Node& n) {
 
 }  // namespace
 
-DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, unsigned threads) {
+DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps) {
   DensitySource source;
   schema::Node density = n.child("density");
   density.expectObject({"noise", "file"});
@@ -61,7 +62,6 @@ DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, 
     p.gain = noise->number("gain", p.gain, schema::Range::closed(0.0, 1.0));
     p.bias = noise->number("bias", p.bias, schema::Range::closed(-10.0, 10.0));
     if (noise->has("seed")) p.seed = static_cast<std::uint64_t>(noise->child("seed").integer(schema::Range::atLeast(0)));
-    m.density = generateFbm(p, threads);
     source.noise = p;
   } else {
     schema::Node file = density.child("file");
@@ -128,7 +128,7 @@ DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, 
   return source;
 }
 
-NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads) {
+NebulaSceneFile readNebulaScene(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(FileLocation{path.string()}, "cannot open the scene file");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -142,9 +142,9 @@ NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads)
   schema::Node n = root.child("nebula");
   n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "ionisation",
                   "stars", "star_model", "filters", "passbands", "camera", "steps"});
-  NebulaScene scene;
-  NebulaModel& m = scene.model;
-  readNebulaKeys(n, m, scene.steps, threads);
+  NebulaSceneFile file;
+  NebulaModel& m = file.scene.model;
+  file.source = readNebulaKeys(n, m, file.scene.steps);
   if (auto cam = n.optionalChild("camera")) {
     cam->expectObject({"position", "target", "fov", "width", "height"});
     if (cam->has("position")) m.camera.position = dvec3(cam->child("position"), schema::Range::closed(-100.0, 100.0));
@@ -154,7 +154,22 @@ NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads)
     if (cam->has("height")) m.camera.height = cam->child("height").integer(schema::Range::closed(1, 8192));
     if (glm::length(m.camera.target - m.camera.position) <= 0.0) cam->fail("position and target must differ");
   }
-  return scene;
+  return file;
+}
+
+glm::ivec3 NebulaSceneFile::densitySize() const {
+  if (source.noise) return glm::ivec3(source.noise->resolution);
+  const DensityGrid& d = scene.model.density;
+  return {d.nx, d.ny, d.nz};
+}
+
+NebulaScene generateDensity(NebulaSceneFile file, unsigned threads, const DensityProgress& progress) {
+  if (file.source.noise) file.scene.model.density = generateFbm(*file.source.noise, threads, progress);
+  return std::move(file.scene);
+}
+
+NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads) {
+  return generateDensity(readNebulaScene(path), threads);
 }
 
 NebulaModel benchNebulaModel(int stars) {

@@ -7,7 +7,9 @@
 // the same keys but the camera (readNebulaKeys).
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <optional>
 
 #include "core/json_schema.h"
@@ -36,9 +38,25 @@ struct DensitySource {
 
 // Reads the keys a nebula scene file and a scene's "nebula" section share — density, extinction,
 // scattering, scattering_spectrum, emission, lines, ionisation, stars, star_model, filters, passbands, steps — into `m`
-// and `steps`; the caller says which keys the node may have (schema::Node::expectObject).
-DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps, unsigned threads);
+// and `steps`; the caller says which keys the node may have (schema::Node::expectObject). A
+// density file is read into m.density; noise is left to the caller to generate (the source's).
+DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps);
 
+// A nebula scene file's keys, its noise not generated yet (model.density is empty when
+// source.noise is set): what a command checks before the work.
+struct NebulaSceneFile {
+  NebulaScene scene;
+  DensitySource source;
+  // The density's NX, NY, NZ, generated or not.
+  glm::ivec3 densitySize() const;
+};
+NebulaSceneFile readNebulaScene(const std::filesystem::path& path);
+
+// The scene with its noise generated with `threads` (0: all), reporting to `progress`.
+using DensityProgress = std::function<void(std::size_t done, std::size_t total)>;
+NebulaScene generateDensity(NebulaSceneFile file, unsigned threads = 0, const DensityProgress& progress = {});
+
+// Both.
 NebulaScene loadNebulaScene(const std::filesystem::path& path, unsigned threads = 0);
 
 // The benchmarks' nebula (prism bench's nebulaFrame rows, prism nebula bench): a 32³ fBm cloud

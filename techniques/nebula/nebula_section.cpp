@@ -18,7 +18,7 @@ TechniqueBlock NebulaSection::pack(const FramePackInput& input) const {
   shared::NebulaLightConstants constants{};
   constants.boxMinSize = glm::vec4(boxMin, boxSize);
   constants.starCount = lightSurfaces ? static_cast<int>(model.stars.size()) : 0;
-  constants.voxelsZ = density->nz;
+  constants.voxelsZ = density->size().z;
   block.constantsBinding = shared::kNebulaLightConstantsBinding;
   block.setConstants(constants);
   block.dataBinding = shared::kNebulaStarLightsBinding;
@@ -69,9 +69,11 @@ std::vector<std::filesystem::path> NebulaSection::inputFiles() const {
 }
 
 std::uint64_t NebulaSection::hashLoadedData(std::uint64_t hash) const {
-  const std::int32_t size[3] = {density->nx, density->ny, density->nz};
+  if (density->noise()) return hash;  // its parameters are the scene file's
+  const DensityGrid& grid = density->grid();
+  const std::int32_t size[3] = {grid.nx, grid.ny, grid.nz};
   hash = fnv1a(size, sizeof size, hash);
-  return fnv1a(density->values.data(), density->values.size() * sizeof(float), hash);
+  return fnv1a(grid.values.data(), grid.values.size() * sizeof(float), hash);
 }
 
 std::string_view NebulaSection::notTracedBecause() const {
@@ -110,7 +112,7 @@ TechniqueBench NebulaSection::bench() const {
 
 NebulaModel NebulaSection::fullModel() const {
   NebulaModel m = model;
-  m.density = *density;
+  m.density = density->grid();
   return m;
 }
 
@@ -131,8 +133,9 @@ std::string NebulaSection::precomputationKey() const {
 
 std::string NebulaSection::volumeKey() const {
   const NebulaModel& m = model;
-  std::string key = fmt::format("{}|{}x{}x{}|{}|{}|{}|{},{},{},{}|{}|{}|", source.file.string(), density->nx,
-                                density->ny, density->nz, m.extinction, m.scattering, m.emission,
+  const glm::ivec3 size = density->size();
+  std::string key = fmt::format("{}|{}x{}x{}|{}|{}|{}|{},{},{},{}|{}|{}|", source.file.string(), size.x, size.y,
+                                size.z, m.extinction, m.scattering, m.emission,
                                 m.scatteringSpectrum.coeffs[0], m.scatteringSpectrum.coeffs[1],
                                 m.scatteringSpectrum.coeffs[2], m.scatteringSpectrum.coeffs[3],
                                 static_cast<int>(m.starModel), basis);
@@ -149,7 +152,7 @@ std::string NebulaSection::volumeKey() const {
 }
 
 void NebulaSection::regenerateDensity() {
-  if (source.noise) density = std::make_shared<DensityGrid>(generateFbm(*source.noise));
+  if (source.noise) density = std::make_shared<DeferredDensity>(*source.noise);
 }
 
 std::unique_ptr<TechniqueSection> NebulaSection::parse(const schema::Node& n, const TechniqueSections&) {
@@ -158,8 +161,9 @@ std::unique_ptr<TechniqueSection> NebulaSection::parse(const schema::Node& n, co
                   "star_model", "filters", "passbands", "steps", "box", "method", "basis", "reference_samples", "intensity", "march_every_frame",
                   "light_surfaces"});
   auto s = std::make_unique<NebulaSection>();
-  s->source = readNebulaKeys(n, s->model, s->steps, 0);
-  s->density = std::make_shared<DensityGrid>(std::move(s->model.density));
+  s->source = readNebulaKeys(n, s->model, s->steps);
+  s->density = s->source.noise ? std::make_shared<DeferredDensity>(*s->source.noise)
+                               : std::make_shared<DeferredDensity>(std::move(s->model.density));
   s->model.density = DensityGrid{};
   if (auto box = n.optionalChild("box")) {
     box->expectObject({"min", "size"});

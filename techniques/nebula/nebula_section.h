@@ -31,9 +31,10 @@ struct NebulaSection final : TechniqueSection {
   static constexpr std::string_view kKey = "nebula";
 
   // The model but its camera (the renderer's) and its density, which `density` holds so that
-  // copies of the scene share it.
+  // copies of the scene share it; noise is generated at the precomputation (the pass's), not as
+  // the scene loads.
   NebulaModel model;
-  std::shared_ptr<const DensityGrid> density = std::make_shared<DensityGrid>();
+  std::shared_ptr<const DeferredDensity> density = std::make_shared<DeferredDensity>(DensityGrid{});
   DensitySource source;
   int steps = 100;
   Method method = Method::Projection;  // any of the five, all marched on the GPU
@@ -62,7 +63,8 @@ struct NebulaSection final : TechniqueSection {
   // Where the star is in the world (m).
   glm::vec3 starPositionW(const NebulaStar& star) const;
   std::string_view notTracedBecause() const override;
-  // The density grid's size and values (a file's, or the noise's).
+  // A density file's grid, its size and values; nothing for noise, whose parameters are in the
+  // scene file.
   std::uint64_t hashLoadedData(std::uint64_t hash) const override;
   std::vector<std::filesystem::path> inputFiles() const override;  // the density file, when there is one
   // The section's method against the others on this scene, the nebula's pass timed in each,
@@ -71,7 +73,7 @@ struct NebulaSection final : TechniqueSection {
   // the march runs once, the stars lighting the surfaces over not.
   TechniqueBench bench() const override;
 
-  // The model with the density, as a NebulaRenderer takes it.
+  // The model with the density (generated now if it was not), as a NebulaRenderer takes it.
   NebulaModel fullModel() const;
   // The render settings of the section (its method, steps, basis and reference wavelengths).
   RenderSettings renderSettings() const;
@@ -81,7 +83,8 @@ struct NebulaSection final : TechniqueSection {
   // The same but the filters and passbands: when only those changed, the pass refilters its
   // NebulaRenderer (milliseconds) instead of building it again.
   std::string volumeKey() const;
-  // Generates the density again from `source.noise` (an editor changed it); no-op for a file.
+  // A new density from `source.noise` (an editor changed it), generated at its first use; no-op
+  // for a file.
   void regenerateDensity();
 
   static std::unique_ptr<TechniqueSection> parse(const schema::Node& node, const TechniqueSections& earlier);

@@ -26,9 +26,9 @@ TEST(NebulaSection, ReadsTheModelAndWhereItLies) {
   auto parsed = parseSection("{" + kNoise + R"(, "box": {"min": [-2, 0, 1], "size": 4}, "method": "light-density",
                                               "basis": 5, "reference_samples": 7, "intensity": 250, "steps": 80})");
   const auto& s = dynamic_cast<const NebulaSection&>(*parsed);
-  EXPECT_EQ(s.density->nx, 8);
+  EXPECT_EQ(s.density->size(), glm::ivec3(8));
   EXPECT_EQ(s.model.density.values.size(), 0u);  // the section holds it once, in `density`
-  EXPECT_EQ(s.fullModel().density.values, s.density->values);
+  EXPECT_EQ(s.fullModel().density.values, s.density->grid().values);
   ASSERT_EQ(s.model.stars.size(), 1u);
   EXPECT_EQ(s.boxMin, glm::vec3(-2.0f, 0.0f, 1.0f));
   EXPECT_EQ(s.boxSize, 4.0f);
@@ -48,17 +48,37 @@ TEST(NebulaSection, ReadsTheModelAndWhereItLies) {
   EXPECT_EQ(d.referenceSamples, 0);
 }
 
-// A split render keyed by the scene must see a density grid change: a file's is not in the scene's bytes.
+// A split render keyed by the scene must see a density grid change: a file's is not in the scene's
+// bytes. Noise is (its parameters), and is not generated for the hash.
 TEST(NebulaSection, ItsLoadedDataHashFollowsTheDensity) {
   auto parsed = parseSection("{" + kNoise + "}");
   auto& s = dynamic_cast<NebulaSection&>(*parsed);
+  EXPECT_EQ(s.hashLoadedData(7), 7u);
+  DensityGrid grid = s.density->grid();
+  s.density = std::make_shared<DeferredDensity>(grid);  // as a density file's
   const std::uint64_t hash = s.hashLoadedData(7);
   EXPECT_NE(hash, 7u);
   EXPECT_EQ(hash, s.clone()->hashLoadedData(7));
-  auto edited = std::make_shared<DensityGrid>(*s.density);
-  edited->values[3] += 1e-4f;
-  s.density = edited;
+  grid.values[3] += 1e-4f;
+  s.density = std::make_shared<DeferredDensity>(grid);
   EXPECT_NE(hash, s.hashLoadedData(7));
+}
+
+// Noise is generated at its first use, once, and shared by the section's copies.
+TEST(NebulaSection, NoiseIsGeneratedAtItsFirstUseOnce) {
+  auto parsed = parseSection("{" + kNoise + "}");
+  const auto& s = dynamic_cast<const NebulaSection&>(*parsed);
+  auto copy = s.clone();
+  std::size_t reports = 0;
+  const DensityGrid& grid = s.density->grid([&](std::size_t done, std::size_t total) {
+    EXPECT_EQ(total, 8u);
+    EXPECT_LE(done, total);
+    ++reports;
+  });
+  EXPECT_EQ(reports, 8u);  // one per z slice
+  EXPECT_EQ(grid.values, generateFbm(*s.source.noise).values);
+  EXPECT_EQ(&dynamic_cast<const NebulaSection&>(*copy).density->grid([&](std::size_t, std::size_t) { ++reports; }), &grid);
+  EXPECT_EQ(reports, 8u);  // made already
 }
 
 TEST(NebulaSection, BadValuesNameTheirPlace) {
@@ -92,7 +112,7 @@ TEST(NebulaSection, CopiesShareTheDensityAndTheKeyFollowsTheModel) {
   s.source.noise->seed = 8;
   s.regenerateDensity();
   EXPECT_NE(s.precomputationKey(), key);
-  EXPECT_NE(s.density->values, dynamic_cast<const NebulaSection&>(*copy).density->values);
+  EXPECT_NE(s.density->grid().values, dynamic_cast<const NebulaSection&>(*copy).density->grid().values);
   // Filters and passbands change the precomputation, not the volume (the pass refilters).
   const std::string full = s.precomputationKey(), volume = s.volumeKey();
   s.model.passbands[2].shiftNm = 10.0;

@@ -36,7 +36,7 @@ TEST(NebulaStarLight, ItsRadiantIntensityIsTheOneTheNebulasLightImplies) {
   section.model.stars = {{{0.5, 0.5, 0.5}, 6500.0, 2.0}};
   section.model.camera = {{0.2, 0.5, -1.0}, {0.2, 0.5, 0.5}, 1.0, 1, 1};
   DensityGrid uniform{8, 8, 8, std::vector<float>(512, 1.0f)};
-  section.density = std::make_shared<DensityGrid>(uniform);
+  section.density = std::make_shared<DeferredDensity>(uniform);
   RenderSettings settings;
   settings.method = Method::Reference;
   settings.steps = 4000;

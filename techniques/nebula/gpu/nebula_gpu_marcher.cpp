@@ -167,8 +167,8 @@ bool NebulaGpuMarcher::refilter(const NebulaRenderer& renderer) {
   return mMarched == Method::Projection || mMarched == Method::LightDensity;
 }
 
-void requireGpuFits(const NebulaModel& model) {
-  requireSlabsFit(model.density.nz, static_cast<int>(model.stars.size()), "nebula star depths");
+void requireGpuFits(int voxelsZ, std::size_t stars) {
+  requireSlabsFit(voxelsZ, static_cast<int>(stars), "nebula star depths");
 }
 
 MarchView marchView(const NebulaCamera& cam) {

@@ -47,9 +47,10 @@ struct MarchView {
 // The view of a nebula scene's own camera, as the CPU marcher builds its rays.
 MarchView marchView(const NebulaCamera& camera);
 
-// Error, before any precomputation, when the model's stars would not fit this GPU (a current
-// context's): their optical depths stack ⌈stars/4⌉ copies of the grid along a 3D texture's z.
-void requireGpuFits(const NebulaModel& model);
+// Error, before any precomputation (or the density's generation), when `stars` stars would not fit
+// this GPU (a current context's) over a density of `voxelsZ` along z: their optical depths stack
+// ⌈stars/4⌉ copies of the grid along a 3D texture's z.
+void requireGpuFits(int voxelsZ, std::size_t stars);
 
 class NebulaGpuMarcher {
  public:

@@ -37,12 +37,15 @@ std::shared_ptr<const NebulaRenderer> precomputation(const NebulaSection& sectio
   RenderSettings basis;
   basis.basisSize = section.basis;
   const auto start = std::chrono::steady_clock::now();
+  section.density->grid([&](std::size_t done, std::size_t total) {
+    if (progress) progress("nebula density", done, total);
+  });
   auto renderer = std::make_shared<const NebulaRenderer>(section.fullModel(), basis, [&](std::size_t done, std::size_t total) {
     if (progress) progress("nebula precomputation", done, total);
   });
   if (!progress)
-    fmt::print(stderr, "nebula precomputation: {}×{}×{} voxels, {} star(s) in {:.2f} s\n", section.density->nx,
-               section.density->ny, section.density->nz, section.model.stars.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    fmt::print(stderr, "nebula precomputation: {}×{}×{} voxels, {} star(s) in {:.2f} s\n", section.density->size().x,
+               section.density->size().y, section.density->size().z, section.model.stars.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   memo = renderer;
   memoKey = key;
   memoVolumeKey = volumeKey;

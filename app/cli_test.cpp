@@ -515,6 +515,19 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   expectOneLineError("nebula render " + tiny + " --method reference --reference-intervals 1024 --compare -o x.exr",
                      "--compare: the reference at 1024 Simpson intervals has no finer one");
   expectOneLineError("nebula basis --plot basis.png", "--plot basis.png: the plot is written as an .svg file");
+  // `nebula density -o` writes a .density file, never over the scene (it did, exit 0) or its own grid.
+  Result density = run("nebula density " + tiny + " -o " + (dir / "tiny.density").string());
+  ASSERT_EQ(density.exitCode, 0) << density.err;
+  std::ofstream(dir / "from_file.json") << R"({"nebula": {"density": {"file": "tiny.density"}, "stars": []}})";
+  const std::string sceneBefore = slurp(dir / "tiny.json");
+  expectOneLineError("nebula density " + tiny + " -o " + tiny, "the density grid is written as a .density file");
+  expectOneLineError("nebula density " + tiny + " -o " + (dir / "x.png").string(), "x.png: the density grid is written");
+  std::filesystem::copy_file(dir / "tiny.json", dir / "scene.density");
+  expectOneLineError("nebula density " + (dir / "scene.density").string() + " -o " + (dir / "scene.density").string(),
+                     "is also the scene file");
+  expectOneLineError("nebula density " + (dir / "from_file.json").string() + " -o " + (dir / "tiny.density").string(),
+                     "is also the scene's density file");
+  EXPECT_EQ(slurp(dir / "tiny.json"), sceneBefore);
 
   // The GPU's timings at a size of one's own, without the CPU's columns.
   Result bench = run("nebula bench --repeats 1 --size 8 --no-cpu");
@@ -550,6 +563,18 @@ TEST(Cli, PrtCommandsCheckTheirInput) {
   const std::filesystem::path file = writeTemp("not_a_folder.txt", "");
   expectOneLineError("prt report --plot " + (file / "sweep.svg").string(), "not_a_folder.txt");
   expectOneLineError("prt bake " + scene + " --part 1/2 -o " + scene, "is also the input");
+  // Nor a file the input reads: a part over a model's buffer destroyed the model (exit 0).
+  const std::filesystem::path models = std::filesystem::path(::testing::TempDir()) / "prt_part_model";
+  std::filesystem::remove_all(models);
+  std::filesystem::create_directories(models);
+  for (const char* f :
+       {"tiles.gltf", "tiles.bin", "tiles_base_colour.png", "tiles_metallic_roughness.png", "tiles_normal.png"})
+    std::filesystem::copy_file(std::filesystem::path(PRISM_SCENES_DIR) / "models" / f, models / f);
+  const std::string buffer = slurp(models / "tiles.bin");
+  expectOneLineError("prt bake " + (models / "tiles.gltf").string() + " --samples 4 --part 0/2 -o " +
+                         (models / "tiles.bin").string(),
+                     "tiles.bin: is also a file the scene reads");
+  EXPECT_EQ(slurp(models / "tiles.bin"), buffer);
 }
 
 TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {

@@ -253,7 +253,12 @@ void runNebulaRender(const NebulaRenderOptions& o) {
 }
 
 void runNebulaDensity(const std::filesystem::path& scenePath, const std::filesystem::path& output) {
-  nebula::NebulaScene scene = nebula::loadNebulaScene(scenePath);
+  requireExtension(output, ".density", "-o", "density grid");
+  requireOtherFile(output, scenePath, "the scene file");
+  requireWritable(output);
+  nebula::NebulaSceneFile file = nebula::readNebulaScene(scenePath);
+  requireOtherFile(output, file.source.file, "the scene's density file");
+  nebula::NebulaScene scene = generateWithProgress(std::move(file), 0);
   nebula::writeDensityFile(output, scene.model.density);
   fmt::print("wrote {} ({}x{}x{})\n", output.string(), scene.model.density.nx, scene.model.density.ny,
              scene.model.density.nz);

@@ -108,9 +108,11 @@ prt::CachedTransfer transferFor(const prt::PrtMesh& mesh, const prt::BakeSetting
 }
 
 // Task I of N's share of the vertices, as a part for `prism merge`.
-void runPrtBakePart(const PrtBakeOptions& o, const prt::PrtMesh& mesh, const prt::BakeSettings& settings) {
+void runPrtBakePart(const PrtBakeOptions& o, const PrtInput& input, const prt::BakeSettings& settings) {
   if (o.output.empty()) throw Error("--part: give the part's file with -o");
   refuseImageExtension(o.output, "-o", "part of a PRT bake");
+  requireNotSceneInput(o.output, input.scene);  // a model's buffer, a reflectance's CSV
+  const prt::PrtMesh& mesh = input.object.mesh;
   if (!o.cacheDir.empty()) throw Error("--cache: a part is written to -o (prism merge puts the parts into the cache's file)");
   const TaskIndex task = parseTaskIndex(o.part, "--part");
   const int vertices = static_cast<int>(mesh.positions.size());
@@ -182,7 +184,7 @@ void runPrtBake(const PrtBakeOptions& o) {
   PrtInput input = loadPrtInput(o.input, false);
   const prt::BakeSettings settings = bakeSettingsFor(input, o.samples, o.shadows);
   const prt::PrtMesh& mesh = input.object.mesh;
-  if (!o.part.empty()) return runPrtBakePart(o, mesh, settings);
+  if (!o.part.empty()) return runPrtBakePart(o, input, settings);
   if (!o.output.empty()) throw Error("-o: only with --part (a whole bake goes to the cache)");
   auto start = std::chrono::steady_clock::now();
   prt::CachedTransfer result = transferFor(mesh, settings, o.cacheDir, o.threads);

@@ -105,7 +105,7 @@ void printReferenceClusterScript(const ClusterOptions& o) {
   add("--height", std::to_string(r.height));
   add("--spp", std::to_string(r.samplesPerPixel));
   add("--transport", r.transport);
-  add("--max-depth", std::to_string(r.maxDepth));
+  if (r.maxDepth) add("--max-depth", std::to_string(*r.maxDepth));
   add("--filter", r.filter);
   if (r.camera.empty()) add("--observer", r.observer);
   else add("--camera", r.camera);

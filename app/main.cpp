@@ -95,8 +95,7 @@ void addReferenceOptions(CLI::App* command, prism::app::ReferenceOptions& ref, s
   command->add_option("--spp", ref.samplesPerPixel, "paths per pixel (4 wavelengths each)")->capture_default_str();
   command->add_option("--transport", ref.transport, "direct (what the rasteriser computes) or global")
       ->capture_default_str();
-  command->add_option("--max-depth", ref.maxDepth, "global: surface interactions per path at most")
-      ->capture_default_str();
+  command->add_option("--max-depth", ref.maxDepth, "with --transport global: interactions per path at most (16)");
   command->add_option("--filter", ref.filter, "box (antialiased) or centre (pixel centres, as a rasteriser)")
       ->capture_default_str();
   CLI::Option* observer = command->add_option("--observer", ref.observer, "cie1931, cie1964 or a camera")->capture_default_str();
@@ -502,13 +501,13 @@ int main(int argc, char** argv) {
     }
     if (*referenceCmd) {
       if (!refRange.empty()) ref.range = prism::app::parseNumbers(refRange, "--range");
-      if (!refEv.empty()) ref.ev100 = static_cast<float>(prism::app::parseNumbers(refEv, "--ev").at(0));
+      if (!refEv.empty()) ref.ev100 = static_cast<float>(prism::app::parseNumber(refEv, "--ev"));
       runReference(ref);
     }
     if (*mergeCmd) runMerge(merge);
     if (*scriptReferenceCmd) {
       if (!clusterRange.empty()) cluster.reference.range = prism::app::parseNumbers(clusterRange, "--range");
-      if (!clusterEv.empty()) cluster.reference.ev100 = static_cast<float>(prism::app::parseNumbers(clusterEv, "--ev").at(0));
+      if (!clusterEv.empty()) cluster.reference.ev100 = static_cast<float>(prism::app::parseNumber(clusterEv, "--ev"));
       printReferenceClusterScript(cluster);
     }
     if (*scriptValidateCmd) printValidateClusterScript(cluster);

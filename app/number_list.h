@@ -11,4 +11,7 @@ namespace prism::app {
 // Error naming the option otherwise.
 std::vector<double> parseNumbers(const std::string& text, const std::string& option, char separator = ',');
 
+// One such number: Error naming the option otherwise, a list too ("--ev 3,4" took the 3).
+double parseNumber(const std::string& text, const std::string& option);
+
 }  // namespace prism::app

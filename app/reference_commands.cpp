@@ -84,7 +84,12 @@ reference::ReferenceSettings referenceSettings(const ReferenceOptions& o) {
   s.height = o.height;
   s.samplesPerPixel = o.samplesPerPixel;
   s.transport = reference::lightTransportFromName(o.transport);
-  s.maxDepth = o.maxDepth;
+  if (o.maxDepth) {
+    if (s.transport != reference::LightTransport::Global)
+      throw Error(fmt::format("--max-depth {}: only with --transport global (direct light ends each path at its first "
+                              "surface)", *o.maxDepth));
+    s.maxDepth = *o.maxDepth;
+  }
   s.filter = reference::pixelFilterFromName(o.filter);
   s.observer = o.camera.empty() ? o.observer : o.camera;
   if (!o.camera.empty() && !observer(o.camera).isCamera) {

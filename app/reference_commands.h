@@ -24,7 +24,7 @@ struct ReferenceOptions {
   int height = 360;
   int samplesPerPixel = 64;
   std::string transport = "direct";
-  int maxDepth = 16;
+  std::optional<int> maxDepth;     // global transport only (default: ReferenceSettings')
   std::string filter = "box";
   std::string observer = "cie1931";
   std::string camera;              // a camera as the observer (overrides observer)

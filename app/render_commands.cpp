@@ -81,13 +81,18 @@ std::string_view ownWavelengths(render::RenderMode mode) {
   }
 }
 
-// A sampling option given with a mode that ignores it is refused: the image would not show it.
+// A sampling or upsampling option given with a mode that ignores it is refused: the image would
+// not show it.
 void refuseUnusedSampling(const SettingsOptions& options, const render::FrameSettings& settings) {
-  if (render::usesSampling(settings.mode)) return;
+  const bool upsamples = settings.mode != render::RenderMode::Rgb && settings.mode != render::RenderMode::Naive;
   for (const auto& [key, value] : options.values) {
-    if (key == "wavelengths" || key == "range" || key == "strategy")
+    if (!render::usesSampling(settings.mode) && (key == "wavelengths" || key == "range" || key == "strategy"))
       throw Error(fmt::format("--{} {}: mode {} {}, so it has no use for it (naive and jakob-hanika do)", key, value,
                               render::renderModeName(settings.mode), ownWavelengths(settings.mode)));
+    if (!upsamples && (key == "lookup" || key == "gbuffer"))
+      throw Error(fmt::format("--{} {}: mode {} upsamples no colour with the Jakob–Hanika table, so it has no use for "
+                              "it (jakob-hanika, reference and optimised4 do)",
+                              key, value, render::renderModeName(settings.mode)));
   }
 }
 

@@ -10,6 +10,7 @@
 #include "harness/upsampling_table.h"
 #include "imaging/exr_file.h"
 #include "render/display_transform.h"
+#include "render/frame_data.h"
 #include "render/renderer.h"
 #include "render/setting_keys.h"
 #include "scene/scene_loader.h"
@@ -44,6 +45,7 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
   if (frames < 1) throw Error("--frames: must be at least 1");
   requireWritable(output);
   requireNotSceneInput(output, scene);
+  render::requireLightCount(scene);  // the renderer's own check, before the work ahead of it
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::fitOptimisedWavelengths(scene, settings, table);
   harness::precomputeTechniques(scene);

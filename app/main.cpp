@@ -235,7 +235,8 @@ int main(int argc, char** argv) {
   prtReportCmd->add_option("--map,--exr", prtReport.exr, "an equirectangular map instead, row 0 at the zenith: linear-sRGB EXR or Radiance .hdr");
   std::string prtRotate;
   prtReportCmd->add_option("--rotate", prtRotate, "X,Y,Z,DEGREES: turn the environment (SH rotation, no re-projection)");
-  prtReportCmd->add_option("--patch-vertices", prtReport.patchVertices, "vertices along each side of a patch")->capture_default_str();
+  prtReportCmd->add_option("--patch-vertices", prtReport.patchVertices,
+                           "without an input: vertices along each side of a ColorChecker patch (default 16)");
   prtReportCmd->add_option("--samples", prtReport.samples, "directions per vertex (default: the scene's prt.samples, else 1024)");
   prtReportCmd->add_option("--plot", prtReport.plotFile, "SVG of the error against m to write");
   prtReportCmd->add_option("--colours", prtReport.coloursFile, "PLY of per-vertex display sRGB colours to write");

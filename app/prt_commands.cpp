@@ -263,8 +263,12 @@ prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtI
 void runPrtReport(const PrtReportOptions& o) {
   if (o.samples) checkSamples(*o.samples);
   checkReportOutputs(o);
-  if (o.patchVertices < 2 || o.patchVertices > 256)
-    throw Error(fmt::format("--patch-vertices: {} out of range 2..256", o.patchVertices));
+  if (o.patchVertices && !o.input.empty())
+    throw Error(fmt::format("--patch-vertices {}: only without an input (it shapes the ColorChecker height field), not "
+                            "with {}", *o.patchVertices, o.input));
+  const int patchVertices = o.patchVertices.value_or(16);
+  if (patchVertices < 2 || patchVertices > 256)
+    throw Error(fmt::format("--patch-vertices: {} out of range 2..256", patchVertices));
   std::optional<PrtInput> input;
   if (!o.input.empty()) input = loadPrtInput(o.input, true);
   prt::SpectralEnvironment environment = reportEnvironment(o, input ? &*input : nullptr);
@@ -279,7 +283,7 @@ void runPrtReport(const PrtReportOptions& o) {
   // ΔE needs a white: a sky whose sun is far enough below the horizon holds no light to compare in.
   if (!(prt::sceneWhite(prt::environmentOnGrid(environment), cie1931Observer()).y() > 0.0))
     throw Error(fmt::format("prt report: {} holds no light (its white's luminance is 0): nothing to compare", environment.name));
-  const prt::PrtObject object = input ? input->object : prt::makeColourCheckerObject(o.patchVertices);
+  const prt::PrtObject object = input ? input->object : prt::makeColourCheckerObject(patchVertices);
   const prt::BakeSettings bake =
       input ? bakeSettingsFor(*input, o.samples, true) : prt::BakeSettings{o.samples.value_or(prt::BakeSettings{}.samples)};
   // Checked before the bake: the basis has at most one function per spectrum of the scene.

@@ -47,7 +47,7 @@ struct PrtReportOptions {
   std::optional<double> sunAzimuthDeg;
   std::string exr;                  // or an equirectangular linear-sRGB EXR (row 0 at the zenith)
   std::vector<double> rotate;       // X, Y, Z, degrees: the environment turned (empty: not)
-  int patchVertices = 16;           // vertices along each side of a ColorChecker patch
+  std::optional<int> patchVertices;  // along each side of a ColorChecker patch (no input; default 16)
   std::optional<int> samples;       // unset: a scene's prt.samples, else 1024
   std::string plotFile;             // optional: the sweep as an SVG
   std::string coloursFile;          // optional: per-vertex display colours as a PLY

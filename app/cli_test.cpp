@@ -480,8 +480,12 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   Result plotted = run("nebula basis --spacing 0.2 --count 3 --plot " + (dir / "basis.svg").string());
   ASSERT_EQ(plotted.exitCode, 0) << plotted.err;
   EXPECT_NE(slurp(dir / "basis.svg").find("a2 = 0.8100"), std::string::npos);
-  Result sweep = run("nebula sweep " + tiny + " --steps 20 --max-basis 3 --json --plot " + (dir / "sweep.svg").string());
+  // A quote in the scene's name stays valid JSON (it was printed as it stood).
+  std::filesystem::copy_file(dir / "tiny.json", dir / "q\"uote.json", std::filesystem::copy_options::overwrite_existing);
+  Result sweep = run("nebula sweep '" + (dir / "q\"uote.json").string() + "' --steps 20 --max-basis 3 --json --plot " +
+                     (dir / "sweep.svg").string());
   ASSERT_EQ(sweep.exitCode, 0) << sweep.err;
+  EXPECT_EQ(nlohmann::json::parse(sweep.out)["scene"], (dir / "q\"uote.json").string());
   const nlohmann::json errors = nlohmann::json::parse(sweep.out)["max_relative_error"];
   ASSERT_EQ(errors.size(), 3u) << sweep.out;
   EXPECT_GT(errors[0].get<double>(), errors[2].get<double>()) << sweep.out;
@@ -522,7 +526,7 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   const std::string sceneBefore = slurp(dir / "tiny.json");
   expectOneLineError("nebula density " + tiny + " -o " + tiny, "the density grid is written as a .density file");
   expectOneLineError("nebula density " + tiny + " -o " + (dir / "x.png").string(), "x.png: the density grid is written");
-  std::filesystem::copy_file(dir / "tiny.json", dir / "scene.density");
+  std::filesystem::copy_file(dir / "tiny.json", dir / "scene.density", std::filesystem::copy_options::overwrite_existing);
   expectOneLineError("nebula density " + (dir / "scene.density").string() + " -o " + (dir / "scene.density").string(),
                      "is also the scene file");
   expectOneLineError("nebula density " + (dir / "from_file.json").string() + " -o " + (dir / "tiny.density").string(),

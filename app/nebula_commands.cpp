@@ -13,6 +13,8 @@
 
 #include <fmt/format.h>
 
+#include <nlohmann/json.hpp>
+
 #include "core/error.h"
 #include "gpu/headless_context.h"
 #include "gpu/timer_query.h"
@@ -134,11 +136,13 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
   }
   const std::string filters = scene.model.filters;
   if (o.json) {
-    fmt::print("{{\"scene\": \"{}\", \"filters\": \"{}\", \"width\": {}, \"height\": {}, \"steps\": {}, "
-               "\"max_relative_error\": [",
-               o.scene.string(), filters, camera.width, camera.height, s.steps);
-    for (std::size_t k = 0; k < errors.size(); ++k) fmt::print("{}{:.6g}", k ? ", " : "", errors[k]);
-    fmt::print("]}}\n");
+    fmt::print("{}\n", nlohmann::json{{"scene", o.scene.string()},  // escaped: a path may hold any character
+                                      {"filters", filters},
+                                      {"width", camera.width},
+                                      {"height", camera.height},
+                                      {"steps", s.steps},
+                                      {"max_relative_error", errors}}
+                           .dump());
   } else {
     fmt::print("projection (CPU, float) against the reference: {}, {}x{}, {} steps, {} star(s)\n", filters,
                camera.width, camera.height, s.steps, scene.model.stars.size());

@@ -52,9 +52,11 @@ void addNebulaCommands(CLI::App& app) {
   nebRenderCmd->add_option("--method", o->render.method, "reference, analytic, projection, light-density or pre-integration")->capture_default_str();
   nebRenderCmd->add_option("--steps", o->render.steps, "ray steps (default: the scene's)");
   nebRenderCmd->add_option("--filters", o->render.filters, "hubble or cie1931 (default: the scene's)");
-  nebRenderCmd->add_option("--basis", o->render.basisSize, "elements of the exp(-a/λ) basis (1..6; 4 is the most accurate)")->capture_default_str();
-  nebRenderCmd->add_option("--light-basis", o->render.lightBasisSize, "elements of the 2D light basis (1..16)")->capture_default_str();
-  nebRenderCmd->add_option("--reference-intervals", o->render.referenceIntervals, "reference: Simpson intervals per filter piece")->capture_default_str();
+  nebRenderCmd->add_option("--basis", o->render.basisSize,
+                           "projection, light-density: elements of the exp(-a/λ) basis (1..6, default 4, the most accurate)");
+  nebRenderCmd->add_option("--light-basis", o->render.lightBasisSize, "light-density: elements of the 2D light basis (1..16, default 8)");
+  nebRenderCmd->add_option("--reference-intervals", o->render.referenceIntervals,
+                           "reference, --compare: Simpson intervals per filter piece (even, default 16)");
   nebRenderCmd->add_option("--uniform-samples", o->render.uniformSamples, "reference: that many λ per channel instead (trapezoid)");
   nebRenderCmd->add_flag("--compare", o->render.compare, "also render the reference; print the max relative error");
   nebRenderCmd->add_flag("--no-lines", o->render.noLines, "leave out the emission lines");

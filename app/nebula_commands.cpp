@@ -194,18 +194,28 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   nebula::RenderSettings s;
   s.method = method;
   s.steps = o.steps.value_or(s.steps);
-  s.basisSize = o.basisSize;
-  s.lightBasisSize = o.lightBasisSize;
-  s.referenceIntervals = o.referenceIntervals;
+  s.basisSize = o.basisSize.value_or(s.basisSize);
+  s.lightBasisSize = o.lightBasisSize.value_or(s.lightBasisSize);
+  s.referenceIntervals = o.referenceIntervals.value_or(s.referenceIntervals);
   s.uniformSamples = o.uniformSamples;
   nebula::validate(s);
   if (o.compare && method == nebula::Method::Reference && o.uniformSamples == 0 &&
-      2 * o.referenceIntervals > nebula::kMaxReferenceIntervals)
+      2 * s.referenceIntervals > nebula::kMaxReferenceIntervals)
     throw Error(fmt::format("--compare: the reference at {} Simpson intervals has no finer one within {} to be compared "
-                            "with", o.referenceIntervals, nebula::kMaxReferenceIntervals));
+                            "with", s.referenceIntervals, nebula::kMaxReferenceIntervals));
   if (o.uniformSamples != 0 && method != nebula::Method::Reference)
     throw Error(fmt::format("--uniform-samples {}: only with --method reference (the paper's baseline); {} samples no "
                             "wavelengths", o.uniformSamples, o.method));
+  const bool onBasis = method == nebula::Method::Projection || method == nebula::Method::LightDensity;
+  if (o.basisSize && !onBasis)
+    throw Error(fmt::format("--basis {}: only with --method projection or light-density; {} projects on no basis",
+                            *o.basisSize, o.method));
+  if (o.lightBasisSize && method != nebula::Method::LightDensity)
+    throw Error(fmt::format("--light-basis {}: only with --method light-density; {} has no light basis",
+                            *o.lightBasisSize, o.method));
+  if (o.referenceIntervals && !o.compare && !(method == nebula::Method::Reference && o.uniformSamples == 0))
+    throw Error(fmt::format("--reference-intervals {}: only for the reference by Simpson's rule (--method reference "
+                            "without --uniform-samples, or --compare)", *o.referenceIntervals));
   requireWritable(o.output);
   requireFilterSet(o.filters);
   nebula::NebulaSceneFile file = nebula::readNebulaScene(o.scene);

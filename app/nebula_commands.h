@@ -45,9 +45,11 @@ struct NebulaRenderOptions {
   std::string method = "projection";
   std::string filters;           // empty: the scene's ("hubble" or "cie1931")
   std::optional<int> steps;      // unset: the scene's
-  int basisSize = 4;
-  int lightBasisSize = 8;
-  int referenceIntervals = 16;
+  // Each method's own options, unset: RenderSettings' defaults; given to a method that has no use
+  // for it, refused.
+  std::optional<int> basisSize;           // projection, light-density
+  std::optional<int> lightBasisSize;      // light-density
+  std::optional<int> referenceIntervals;  // the reference by Simpson (itself, or --compare's)
   int uniformSamples = 0;
   bool compare = false;          // also render the reference and print the error against it
   bool noLines = false;

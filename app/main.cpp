@@ -526,7 +526,11 @@ int main(int argc, char** argv) {
       return runView(view);
     }
     if (*bench && !sceneBench.scene.empty()) {
-      if (!bench->remaining().empty()) throw prism::Error("bench: unexpected '" + bench->remaining().front() + "'");
+      if (!bench->remaining().empty()) {  // a malformed command line: exit 2
+        if (bench->remaining().front().starts_with("--mode"))
+          throw CLI::ValidationError("--mode", "the bench sets the mode per configuration (rgb and jakob-hanika)");
+        throw CLI::ExtrasError(bench->remaining());
+      }
       sceneBench.settings = frameSettings(benchSettings.given());
       sceneBench.settings.mode = prism::render::RenderMode::Rgb;  // the bench sets the mode per configuration
       if (!benchWavelengths.empty()) {
@@ -544,6 +548,12 @@ int main(int argc, char** argv) {
       }
       runSceneBench(sceneBench);
     } else if (*bench) {
+      // Without a scene the micro-benchmarks run, which take Google Benchmark's flags alone.
+      for (const CLI::Option* option : bench->get_options())
+        if (option->count() > 0)
+          throw CLI::ValidationError(option->get_name(), "only with a scene (prism bench SCENE.json); without one, "
+                                                         "bench runs the micro-benchmarks, which take Google "
+                                                         "Benchmark's flags");
       return prism::app::runBenchmarks(bench->remaining());
     }
   } catch (const CLI::CallForHelp& e) {

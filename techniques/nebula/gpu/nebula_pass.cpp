@@ -105,6 +105,11 @@ void NebulaPass::run(const TechniqueBlock&, const Scene& scene, const CameraTran
   const std::string key = section.precomputationKey();
   bool refiltered = false;
   if (!mRenderer || key != mPrecomputationKey) {
+    try {  // before a precomputation made here, and naming the place
+      requireGpuFits(section.density->size().z, section.model.stars.size());
+    } catch (const Error& e) {
+      throw Error(fmt::format("{}: /nebula/stars: {}", scene.file.string(), e.what()));
+    }
     std::shared_ptr<const NebulaRenderer> renderer = precomputation(section, {});
     const std::string volumeKey = section.volumeKey();
     if (mMarcher && volumeKey == mVolumeKey) {  // other filters or passbands: the same volume uploaded

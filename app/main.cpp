@@ -220,7 +220,8 @@ int main(int argc, char** argv) {
   auto* prtBakeCmd = prtCmd->add_subcommand("bake", "bake (or read from the cache) the SH-5 transfer of a scene's or model's vertices");
   prtBakeCmd->add_option("input", prtBake.input, "scene (.json) or glTF model (.gltf, .glb)")->required();
   prtBakeCmd->add_option("--samples", prtBake.samples, "directions per vertex (default: the scene's prt.samples, else 1024)");
-  prtBakeCmd->add_flag("--no-shadows{false}", prtBake.shadows, "unshadowed transfer (so is a scene's whose prt.shadows is false)");
+  prtBakeCmd->add_flag_callback("--no-shadows", [&prtBake] { prtBake.shadows = false; },
+                                "unshadowed transfer (so is a scene's whose prt.shadows is false)");
   prtBakeCmd->add_option("--cache", prtBake.cacheDir, "cache folder (default: Prism's cache)");
   prtBakeCmd->add_option("--part", prtBake.part, "I/N: only task I of N's share of the vertices, as a part for `prism merge` (-o)");
   prtBakeCmd->add_option("-o,--output", prtBake.output, "the part's file (with --part)");
@@ -363,7 +364,8 @@ int main(int argc, char** argv) {
       "prt", "`prism prt bake --part I/N` (a share of the vertices each), then `prism merge` into the cache's transfer file");
   scriptPrtCmd->add_option("input", cluster.prt.input, "scene (.json) or glTF model (.gltf, .glb)")->required();
   scriptPrtCmd->add_option("--samples", cluster.prt.samples, "directions per vertex (default: the scene's prt.samples, else 1024)");
-  scriptPrtCmd->add_flag("--no-shadows{false}", cluster.prt.shadows, "unshadowed transfer (so is a scene's whose prt.shadows is false)");
+  scriptPrtCmd->add_flag_callback("--no-shadows", [&cluster] { cluster.prt.shadows = false; },
+                                  "unshadowed transfer (so is a scene's whose prt.shadows is false)");
   scriptPrtCmd->add_option("--cache", cluster.prt.cacheDir, "cache folder the merged bake goes to (default: Prism's cache)");
   addClusterOptions(scriptPrtCmd);
   auto* scriptLutCmd = scriptCmd->add_subcommand(

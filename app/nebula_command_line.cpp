@@ -66,7 +66,7 @@ void addNebulaCommands(CLI::App& app) {
   nebBenchCmd->add_option("--repeats", o->bench.repeats, "timed runs per cell (the median is printed)")->capture_default_str();
   nebBenchCmd->add_option("--size", o->bench.size, "pixels a side (a GPU's march needs more than the default to show)")
       ->capture_default_str();
-  nebBenchCmd->add_flag("--no-cpu{false}", o->bench.cpu, "leave out the CPU's columns");
+  nebBenchCmd->add_flag_callback("--no-cpu", [o] { o->bench.cpu = false; }, "leave out the CPU's columns");
   auto* nebDensityCmd = nebulaCmd->add_subcommand("density", "write a scene's density grid as a prism-density file");
   nebDensityCmd->add_option("scene", o->densityScene, "nebula scene file")->required();
   nebDensityCmd->add_option("-o,--output", o->densityOut, "OUT.density")->required();

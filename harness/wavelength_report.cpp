@@ -19,7 +19,7 @@ constexpr int kMovingStrategyFrames = 32;  // a moving strategy's single frames,
 
 FitError errors(const WavelengthSampler& sampler, int frames, const Spectrum& light,
                 const std::vector<Spectrum>& reflectances, const Observer& obs) {
-  const Eigen::Vector3d white = obs.integrate(light);
+  const Eigen::Vector3d white = fitWhite(light, obs);
   FitError e;
   for (const Spectrum& r : reflectances) {
     const Spectrum radiance = light * r;

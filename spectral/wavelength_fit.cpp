@@ -27,7 +27,7 @@
 namespace prism {
 namespace {
 
-constexpr int kFitVersion = 2;  // 2: a checksum line
+constexpr int kFitVersion = 3;  // 2: a checksum line; 3: fitWhite's floor
 constexpr int kMaxSweeps = 40;
 constexpr double kGridStepNm = 20.0;  // n = 4's exhaustive seed grid
 constexpr int kFinalReweightings = 8;
@@ -63,7 +63,7 @@ class FitData {
     white_.resize(3, static_cast<Eigen::Index>(pairs));
     Eigen::Index p = 0;
     for (const Spectrum& light : lights) {
-      const Eigen::Vector3d white = obs.integrate(light);
+      const Eigen::Vector3d white = fitWhite(light, obs);
       for (const Spectrum& reflectance : problem.reflectances) {
         const Spectrum radiance = light * reflectance;
         for (int i = 0; i < nodes_; ++i) samples_(i, p) = radiance[first_ - kLambdaMinNm + i];
@@ -110,7 +110,8 @@ class FitData {
       pairWeight = errors.cwiseMax(kReweightFloor).cwiseInverse();
     }
     if (weights) *weights = m;
-    return errors.mean();
+    const double mean = errors.mean();
+    return std::isfinite(mean) ? mean : std::numeric_limits<double>::infinity();  // NaN compares as no error
   }
 
  private:
@@ -303,7 +304,14 @@ FittedWavelengths fitWavelengths(const WavelengthFitProblem& problem, const Obse
     if (progress) progress(done, total);
     if (c.error < best.error) best = c;
   }
+  if (best.nodes.empty())
+    throw Error("wavelength fit: no set of " + std::to_string(n) + " wavelengths gives a finite error under these lights");
   return toSet(data, best.nodes);
+}
+
+Eigen::Vector3d fitWhite(const Spectrum& light, const Observer& obs) {
+  const Eigen::Vector3d white = obs.integrate(light);
+  return white.cwiseMax(kFitWhiteFloor * white.y());
 }
 
 FitError fitError(const FittedWavelengths& set, const WavelengthFitProblem& problem, const Observer& obs) {
@@ -311,7 +319,7 @@ FitError fitError(const FittedWavelengths& set, const WavelengthFitProblem& prob
   FitError error;
   std::size_t count = 0;
   for (const Spectrum& light : problem.lights) {
-    const Eigen::Vector3d white = obs.integrate(light);
+    const Eigen::Vector3d white = fitWhite(light, obs);
     if (white.y() <= 0.0) continue;
     for (const Spectrum& reflectance : problem.reflectances) {
       const Spectrum radiance = light * reflectance;

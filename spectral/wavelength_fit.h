@@ -49,12 +49,20 @@ struct WavelengthFitProblem {
 
 using FitProgress = std::function<void(std::size_t done, std::size_t total)>;
 
-// Error when the problem has no light, no reflectance, or a count or range out of bounds.
+// Error when the problem has no light, no reflectance, or a count or range out of bounds, and when
+// no set gives a finite error.
 FittedWavelengths fitWavelengths(const WavelengthFitProblem& problem, const Observer& obs,
                                  const FitProgress& progress = {});
 
+// The white a light's colours are put into CIELAB against, for the fit and every report of it: the
+// light's XYZ under `obs`, each channel at least kFitWhiteFloor of its Y. A light that a channel
+// all but misses (a far-red LED's Z, 1e-81 of its Y) would otherwise weigh that channel's errors
+// by 1/Z, past what the least squares can hold.
+inline constexpr double kFitWhiteFloor = 1e-6;
+Eigen::Vector3d fitWhite(const Spectrum& light, const Observer& obs);
+
 // The mean and largest ΔE00 of a set over the problem's lights × reflectances (CIELAB relative to
-// each light's perfect white).
+// each light's perfect white, fitWhite).
 struct FitError {
   double mean = 0.0;
   double max = 0.0;

@@ -48,6 +48,21 @@ TEST(WavelengthFit, ANarrowRangeFitsFourWavelengths) {
   EXPECT_LE(set.lambdaNm.back(), 400.0);
 }
 
+// A light that z̄ barely sees (a far-red LED: its white's Z is 1e-81 of its Y) fits against the
+// floored white: weights of 1/Z overflowed its least squares, every candidate's error was NaN, and
+// the fit returned no wavelengths at all (cached, then aborting the renderer).
+TEST(WavelengthFit, AFarRedLightFits) {
+  const Observer& cie = observer("cie1931");
+  const WavelengthFitProblem problem{{illuminant("led:780:10")}, colourCheckerReflectances(), 16};
+  const Eigen::Vector3d white = cie.integrate(illuminant("led:780:10"));
+  EXPECT_LT(white.z(), 1e-60 * white.y());
+  const FittedWavelengths set = fitWavelengths(problem, cie);
+  ASSERT_EQ(set.lambdaNm.size(), 16u);
+  const FitError error = fitError(set, problem, cie);
+  EXPECT_TRUE(std::isfinite(error.mean));
+  EXPECT_LT(error.mean, 1.0);
+}
+
 // The Optimised strategy's sampler gives the fitted wavelengths every frame and the fitted matrix,
 // not c̄/(n·pdf): its estimate is the fit's.
 TEST(WavelengthFit, OptimisedSamplerUsesTheFittedSet) {

@@ -7,7 +7,9 @@
 #include <fmt/ranges.h>
 
 #include "batch/slurm_script.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "reference/path_tracer.h"
 #include "render/frame_settings.h"
 #include "scene/scene_loader.h"
@@ -69,6 +71,13 @@ batch::SlurmScript scriptBase(const ClusterOptions& o, const std::string& name) 
   return s;
 }
 
+// The script of `s`, its folder of parts and logs checked first: the jobs would fail on it after the
+// queue (a file where it belongs, no permission).
+void printScript(const batch::SlurmScript& s) {
+  requireWritableFolder(s.logs);
+  fmt::print("{}", batch::slurmScriptText(s));
+}
+
 std::string joined(const std::vector<double>& values) {
   std::string text;
   for (double v : values) text += fmt::format("{}{}", text.empty() ? "" : ",", v);
@@ -86,6 +95,13 @@ void printReferenceClusterScript(const ClusterOptions& o) {
   if (r.threads != 0) throw Error("--threads: each task runs as many threads as its --cpus (SLURM_CPUS_PER_TASK)");
   const Scene scene = loadScene(r.scene, r.sets);  // refused here, not in a hundred tasks
   reference::requireTraceable(scene);
+  // The merge job writes them without reading the scene: checked here, as prism reference does.
+  requireWritable(r.output);
+  requireNotSceneInput(r.output, scene);
+  if (!r.variance.empty()) {
+    requireWritable(r.variance);
+    requireNotSceneInput(r.variance, scene);
+  }
   const reference::ReferenceSettings settings = referenceSettings(r);
   const int most = rows ? settings.height : settings.samplesPerPixel;
   if (o.tasks > most) {
@@ -134,13 +150,16 @@ void printReferenceClusterScript(const ClusterOptions& o) {
   s.finish.command = shellQuote(prismExecutable()) + " merge " + shellQuote(s.logs.string()) +
                      fmt::format("/part-*-of-{}.exr", o.tasks) + " -o " + shellQuote(output.string());
   if (!r.variance.empty()) s.finish.command += " --variance " + shellQuote(std::filesystem::absolute(r.variance).string());
-  fmt::print("{}", batch::slurmScriptText(s));
+  printScript(s);
 }
 
 void printValidateClusterScript(const ClusterOptions& o) {
   const harness::ValidateOptions& v = o.validate;
   const int experiments = harness::validateExperimentCount(v.only);
   if (o.tasks > experiments) throw Error(fmt::format("--tasks {}: at most {} tasks, one per experiment", o.tasks, experiments));
+  if (!v.scenes.empty() && !std::filesystem::is_directory(v.scenes))
+    throw Error(fmt::format("--scenes {}: no such folder", v.scenes.string()));
+  requireWritableFolder(v.output);
   batch::SlurmScript s = scriptBase(o, "prism-validate");
   const std::filesystem::path output = std::filesystem::absolute(v.output);
   s.logs = output / "parts";
@@ -160,7 +179,7 @@ void printValidateClusterScript(const ClusterOptions& o) {
   s.finish.name = "prism-validate-collect";
   s.finish.memoryMiB = 256;
   s.finish.command = shellQuote(prismExecutable()) + " validate --collect" + common;
-  fmt::print("{}", batch::slurmScriptText(s));
+  printScript(s);
 }
 
 void printLutClusterScript(const ClusterOptions& o) {
@@ -172,6 +191,8 @@ void printLutClusterScript(const ClusterOptions& o) {
                             tableColumns(l.resolution), tableColumns(l.resolution)));
   }
   if (l.output.empty()) throw Error("lut: give the output file with -o");
+  refuseImageExtension(l.output, "-o", "upsampling table");  // as prism lut and prism merge refuse it
+  requireWritable(l.output);
   batch::SlurmScript s = scriptBase(o, "prism-lut");
   const std::filesystem::path output = std::filesystem::absolute(l.output);
   s.logs = output.string() + ".parts";
@@ -188,7 +209,7 @@ void printLutClusterScript(const ClusterOptions& o) {
   s.finish.memoryMiB = requestMiB(kProcessBytes + 3 * tableBytes);
   s.finish.command = shellQuote(prismExecutable()) + " merge " + shellQuote(s.logs.string()) +
                      fmt::format("/part-*-of-{}.prismlut", o.tasks) + " -o " + shellQuote(output.string());
-  fmt::print("{}", batch::slurmScriptText(s));
+  printScript(s);
 }
 
 void printPrtClusterScript(const ClusterOptions& o) {
@@ -198,6 +219,7 @@ void printPrtClusterScript(const ClusterOptions& o) {
   if (o.tasks > vertices) throw Error(fmt::format("--tasks {}: {} has {} vertices, at most {} tasks", o.tasks, p.input, vertices, vertices));
   batch::SlurmScript s = scriptBase(o, "prism-prt-bake");
   const std::filesystem::path cacheFile = std::filesystem::absolute(target.cacheFile);
+  requireWritableFolder(cacheFile.parent_path());  // --cache, or the default cache's folder
   s.logs = cacheFile.string() + ".parts";
   s.summary = fmt::format("prism prt bake {} ({} vertices, {} directions each{}) as {} tasks by vertices, then prism "
                           "merge into {}",
@@ -217,7 +239,7 @@ void printPrtClusterScript(const ClusterOptions& o) {
   s.finish.memoryMiB = requestMiB(kProcessBytes + 3 * vertices * 100);
   s.finish.command = shellQuote(prismExecutable()) + " merge " + shellQuote(s.logs.string()) +
                      fmt::format("/part-*-of-{}.prtpart", o.tasks) + " -o " + shellQuote(cacheFile.string());
-  fmt::print("{}", batch::slurmScriptText(s));
+  printScript(s);
 }
 
 }  // namespace prism::app

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -17,9 +19,14 @@ std::string jobText(const SlurmJob& job, const SlurmScript& script, bool array) 
   text += fmt::format("#SBATCH --cpus-per-task={}\n", job.cpusPerTask);
   text += fmt::format("#SBATCH --mem={}M\n", job.memoryMiB);
   text += fmt::format("#SBATCH --time={}\n", job.time);
+  // A '%' of the folder's own is Slurm's pattern character: written %% to stand for itself.
+  std::string logs;
+  for (char c : script.logs.string()) logs += c == '%' ? std::string("%%") : std::string(1, c);
   text += fmt::format("#SBATCH --output={}\n",
-                      shellQuote((script.logs / (array ? job.name + "-%A_%a.out" : job.name + "-%j.out")).string()));
-  for (const std::string& option : script.sbatchOptions) text += fmt::format("#SBATCH {}\n", option);
+                      shellQuote(logs + "/" + job.name + (array ? "-%A_%a.out" : "-%j.out")));
+  // Quoted as a shell word, which sbatch's reading of #SBATCH lines unquotes: "--comment=a b" is
+  // one option, not two words.
+  for (const std::string& option : script.sbatchOptions) text += fmt::format("#SBATCH {}\n", shellQuote(option));
   text += "set -euo pipefail\n";
   text += "exec " + job.command + "\n";
   return text;
@@ -60,6 +67,18 @@ void checkSlurmTime(std::string_view time, std::string_view option) {
 
 std::string slurmScriptText(const SlurmScript& s) {
   PRISM_CHECK(s.tasks >= 1);
+  // A line break in a path or an option would end the summary's comment or a here-document early
+  // and run the rest as commands: every text the script carries is refused with one.
+  std::vector<std::string> carried = {s.summary, s.logs.string(), s.array.command, s.finish.command};
+  carried.insert(carried.end(), s.sbatchOptions.begin(), s.sbatchOptions.end());
+  for (const std::string& text : carried) {
+    const auto control = std::find_if(text.begin(), text.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; });
+    if (control == text.end()) continue;
+    const std::size_t at = static_cast<std::size_t>(control - text.begin());
+    throw Error(fmt::format("cluster script: a path or option holds a control character (a line break, a tab), which a "
+                            "job script cannot carry: \"{}\" (shown as '?')",
+                            excerpt(std::string_view(text).substr(at > 40 ? at - 40 : 0))));
+  }
   std::string text = "#!/bin/bash\n";
   text += "# " + s.summary + "\n";
   text += fmt::format(

@@ -47,5 +47,29 @@ TEST(SlurmScript, SubmitsTheArrayThenItsFinishAfterEveryTask) {
   EXPECT_LT(text.find("PRISM_ARRAY_JOB\n)"), text.find("--job-name=prism-merge"));
 }
 
+// What a user's paths and options may hold: a '%' stands for itself in #SBATCH --output (Slurm
+// expanded "%j" in a folder's name), an option with a space stays one, and a line break, which
+// ended the summary's comment and ran the rest as commands, is refused.
+TEST(SlurmScript, CarriesOddPathsAndOptionsSafely) {
+  SlurmScript s;
+  s.summary = "a test";
+  s.tasks = 2;
+  s.array = {"prism-reference", 1, 256, "01:00:00", "prism reference"};
+  s.finish = {"prism-merge", 1, 256, "00:30:00", "prism merge"};
+  s.logs = "/work/o%j 100%";
+  s.sbatchOptions = {"--comment=a b"};
+  const std::string text = slurmScriptText(s);
+  EXPECT_NE(text.find("#SBATCH --output='/work/o%%j 100%%/prism-reference-%A_%a.out'\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("#SBATCH '--comment=a b'\n"), std::string::npos) << text;
+  for (auto edit : {+[](SlurmScript& t) { t.logs = "/work/a\ntouch /tmp/x"; },
+                    +[](SlurmScript& t) { t.summary = "into /tmp/a\nPRISM_ARRAY_JOB"; },
+                    +[](SlurmScript& t) { t.sbatchOptions = {"--comment=a\nrm -rf ~"}; },
+                    +[](SlurmScript& t) { t.finish.command = "prism merge -o '/tmp/a\tb'"; }}) {
+    SlurmScript bad = s;
+    edit(bad);
+    EXPECT_THROW(slurmScriptText(bad), Error);
+  }
+}
+
 }  // namespace
 }  // namespace prism::batch

@@ -388,7 +388,7 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("compare " + a + " " + (dir / "b.exr").string(), "reference 4 × 3, test 5 × 3");
   expectOneLineError("compare " + a + " " + (dir / "cam.exr").string(), "camera-rgb");
   expectOneLineError("compare " + a + " " + a + " --white -1", "--white");
-  expectOneLineError("compare " + a + " " + a + " --white inf", "--white: must be a positive luminance up to 1e+12");
+  expectOneLineError("compare " + a + " " + a + " --white inf", "--white: must be a luminance within 1e-12–1e+12");
   const std::string heat = (dir / "heat.png").string();
   expectOneLineError("compare " + a + " " + a + " --heatmap " + heat + " --histogram " + heat, "is also the heat map");
   prism::imaging::writeExr(dir / "w1.exr", small, {.colour = prism::imaging::ColourMeaning::Xyz, .displayWhite = 100.0});
@@ -448,6 +448,16 @@ TEST(Cli, ReferenceWritesWhatCompareReads) {
   Result same = run("compare " + (dir / "ref.png").string() + " " + (dir / "ref.png").string());
   ASSERT_EQ(same.exitCode, 0) << same.err;
   EXPECT_NE(same.out.find("mean 0.0000"), std::string::npos) << same.out;
+  // A part of a split render is refused: a band of rows was compared as if it were the image's
+  // top (mean ΔE00 55 between two bands), some of the paths under a white of 1 (37 for 13).
+  for (const char* part : {"--tile 1/2", "--samples 0:1"}) {
+    const std::filesystem::path file = dir / "part.exr";
+    Result made = run("reference " + scene + " -o " + file.string() + " --width 8 --height 4 --spp 2 " + part);
+    ASSERT_EQ(made.exitCode, 0) << made.err;
+    expectOneLineError("compare " + file.string() + " " + file.string(),
+                       std::string(part).starts_with("--tile") ? "holds a window of its image only"
+                                                               : "a part of a reference render; merge the parts first");
+  }
 }
 
 TEST(Cli, NebulaBasisRenderAndTheirErrors) {

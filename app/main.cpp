@@ -385,7 +385,7 @@ int main(int argc, char** argv) {
   auto* whiteOpt = compareCmd->add_option("--white", cmpWhite,
                                           "luminance of white for linear images (default: the file's display white, else 1)");
   compareCmd->add_option("--threshold", cmp.threshold, "ΔE00 above which a pixel fails")->capture_default_str();
-  compareCmd->add_option("--scale-max", cmp.scaleMax, "ΔE00 at the top of the heat map and histogram")->capture_default_str();
+  compareCmd->add_option("--scale-max", cmp.scaleMax, "ΔE00 at the top of the heat map and histogram (default 10)");
   compareCmd->add_flag("--json", cmp.json, "JSON output");
 
   ValidateOptions val;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "imaging/exr_band.h"
 #include "imaging/exr_file.h"
 #include "imaging/heatmap.h"
 #include "imaging/image_difference.h"
@@ -17,6 +18,10 @@
 
 namespace prism::harness {
 namespace {
+
+// The dimmest display white taken (cd/m²), the inverse of the largest number Prism reads: a
+// white of 1e-40 put every colour at L* = inf.
+constexpr double kMinWhite = 1.0 / schema::kFloatInputLimit;
 
 // One side of the comparison, kept alive while the input views it.
 struct Loaded {
@@ -40,6 +45,16 @@ Loaded load(const std::filesystem::path& path, const std::optional<double>& whit
                               "images with a CIE observer to compare them)",
                               path.string(), imaging::colourMeaningName(l.exr.colour)));
     }
+    // A reference render's part: a band of rows (the rest of the image left out), or some of each
+    // pixel's paths under another exposure's white; compared as it stands, its numbers meant nothing.
+    if (!l.exr.wholeImage)
+      throw Error(fmt::format("{}: holds a window of its image only (a part of a split render?); compare takes whole "
+                              "images", path.string()));
+    if (imaging::readExrBand(path, false).attributes.contains("prism:part"))
+      throw Error(fmt::format("{}: a part of a reference render; merge the parts first (prism merge)", path.string()));
+    if (l.exr.displayWhite && !(*l.exr.displayWhite >= kMinWhite))
+      throw Error(fmt::format("{}: {} {:g} is below {:g}: CIELAB against so dim a white overflows", path.string(),
+                              imaging::kDisplayWhiteAttribute, *l.exr.displayWhite, kMinWhite));
     if (white) l.exr.displayWhite = *white;
     if (imaging::NonFinitePixels bad = imaging::nonFinitePixels(l.exr.image); bad.count > 0) {
       throw Error(fmt::format("{}: pixel ({}, {}) holds {}: compare takes finite images", path.string(), bad.firstX,
@@ -55,11 +70,14 @@ Loaded load(const std::filesystem::path& path, const std::optional<double>& whit
 
 void runCompare(const CompareOptions& o) {
   const auto within = [](double v, double lo) { return v >= lo && v <= schema::kFloatInputLimit; };
-  if (o.white && !(*o.white > 0.0 && within(*o.white, 0.0)))
-    throw Error(fmt::format("--white: must be a positive luminance up to {:g}", schema::kFloatInputLimit));
+  if (o.white && !within(*o.white, kMinWhite))
+    throw Error(fmt::format("--white: must be a luminance within {:g}–{:g}", kMinWhite, schema::kFloatInputLimit));
   if (!within(o.threshold, 0.0)) throw Error(fmt::format("--threshold: must be within 0–{:g}", schema::kFloatInputLimit));
-  if (!(o.scaleMax > 0.0 && within(o.scaleMax, 0.0)))
+  const double scaleMax = o.scaleMax.value_or(10.0);
+  if (!(scaleMax > 0.0 && within(scaleMax, 0.0)))
     throw Error(fmt::format("--scale-max: must be > 0 and up to {:g}", schema::kFloatInputLimit));
+  if (o.scaleMax && o.heatmap.empty() && o.histogram.empty())
+    throw Error("--scale-max: only with --heatmap or --histogram, whose scale it sets");
   for (const auto& [option, path] : {std::pair{"--heatmap", &o.heatmap}, std::pair{"--histogram", &o.histogram}}) {
     if (!path->empty()) requireExtension(*path, ".png", option, "picture");
     requireOtherFile(*path, o.reference, "the reference image");
@@ -98,11 +116,11 @@ void runCompare(const CompareOptions& o) {
     throw Error(fmt::format("{} vs {}: {}", o.reference.string(), o.test.string(), e.what()));
   }
   if (!o.heatmap.empty()) {
-    imaging::heatMap(difference.deltaEMap, {.maxDeltaE = o.scaleMax, .legend = true}).write(o.heatmap);
+    imaging::heatMap(difference.deltaEMap, {.maxDeltaE = scaleMax, .legend = true}).write(o.heatmap);
   }
   if (!o.histogram.empty()) {
     imaging::HistogramOptions h;
-    h.maxDeltaE = o.scaleMax;
+    h.maxDeltaE = scaleMax;
     imaging::deltaEHistogram(difference.deltaEMap, h).write(o.histogram);
   }
   const imaging::DifferenceStats& s = difference.stats;

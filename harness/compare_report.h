@@ -18,7 +18,7 @@ struct CompareOptions {
   // record one; the one that records it, else 1).
   std::optional<double> white;
   double threshold = 1.0;           // ΔE00 above which a pixel counts as failing
-  double scaleMax = 10.0;           // ΔE00 at the top of the heat map's and histogram's scale
+  std::optional<double> scaleMax;   // ΔE00 at the top of the heat map's and histogram's scale (10)
   bool json = false;
 };
 void runCompare(const CompareOptions& options);

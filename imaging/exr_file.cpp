@@ -260,6 +260,7 @@ ExrImage readExr(const std::filesystem::path& path) {
     const int width = static_cast<int>(wide);
     const int height = static_cast<int>(high);
     ExrImage out;
+    out.wholeImage = dataWindow == header.displayWindow();
     out.image = FloatImage(width, height, static_cast<int>(names.size()));
     const std::size_t xStride = sizeof(float) * names.size();
     const std::size_t yStride = xStride * static_cast<std::size_t>(width);

@@ -43,6 +43,9 @@ struct ExrImage {
   FloatImage image;
   ColourMeaning colour = ColourMeaning::LinearSrgb;
   std::optional<double> displayWhite;  // kDisplayWhiteAttribute, when the file has it
+  // Its data window (what `image` holds) is its display window; false for a crop, or a band of a
+  // split render (a reference part's rows).
+  bool wholeImage = true;
 };
 
 // The largest side readExr takes (what `prism render` can write: its --width/--height limit).

@@ -83,11 +83,16 @@ std::string_view ownWavelengths(render::RenderMode mode) {
   }
 }
 
-// A sampling or upsampling option given with a mode that ignores it is refused: the image would
-// not show it.
-void refuseUnusedSampling(const SettingsOptions& options, const render::FrameSettings& settings) {
+// An option the image would not show is refused: sampling or upsampling with a mode that ignores
+// it, the display transform's with an EXR (linear tristimulus, before it).
+void refuseUnusedOptions(const SettingsOptions& options, const render::FrameSettings& settings,
+                         const std::filesystem::path& output) {
   const bool upsamples = settings.mode != render::RenderMode::Rgb && settings.mode != render::RenderMode::Naive;
+  const bool exr = lowercaseExtension(output) == ".exr";
   for (const auto& [key, value] : options.values) {
+    if (exr && (key == "white-balance" || key == "adaptation" || key == "tonemap" || key == "display" || key == "dither"))
+      throw Error(fmt::format("--{} {}: an EXR holds linear tristimulus, before the display transform this shapes "
+                              "(write a .png for it)", key, value));
     if (!render::usesSampling(settings.mode) && (key == "wavelengths" || key == "range" || key == "strategy"))
       throw Error(fmt::format("--{} {}: mode {} {}, so it has no use for it (naive and jakob-hanika do)", key, value,
                               render::renderModeName(settings.mode), ownWavelengths(settings.mode)));
@@ -102,7 +107,7 @@ void refuseUnusedSampling(const SettingsOptions& options, const render::FrameSet
 
 void runRender(const RenderOptions& options) {
   render::FrameSettings settings = frameSettings(options.settings);
-  refuseUnusedSampling(options.settings, settings);
+  refuseUnusedOptions(options.settings, settings, options.output);
   if (options.frames < 1) throw Error("--frames: must be at least 1");
   Scene scene = loadScene(options.scene, options.sets);
   // Frames that cannot differ are rendered once: their mean is the first.

@@ -286,6 +286,11 @@ class SceneParser {
       }
     }
     if (auto c = n.optionalChild("conductor")) {
+      // Its colour and its metalness are its n and k: anything else saying them was ignored.
+      for (const char* other : {"base_colour", "base_colour_srgb", "reflectance", "base_colour_texture", "metallic"})
+        if (n.has(other))
+          n.child(other).fail(std::string("a conductor's colour and metalness are its measured n and k: give ") + other +
+                              " or conductor, not both");
       try {
         m.conductor = conductorIor(c->string());
       } catch (const Error& e) {

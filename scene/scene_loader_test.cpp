@@ -289,6 +289,17 @@ TEST_F(SceneFolder, UnknownConductorListsTheKnownOnes) {
             f.string() + ": /materials/m/conductor: unknown conductor 'Pt' (known: Ag, Al, Au, Cu, CuZn, MgO, TiO2)");
 }
 
+// A conductor's colour and metalness are its n and k: a base colour or metallic beside it was
+// ignored in every mode without a word.
+TEST_F(SceneFolder, AConductorTakesNoColourOfItsOwn) {
+  fs::path f = sceneWithMaterial(R"({"conductor": "Au", "base_colour": [1, 0, 0]})");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /materials/m/base_colour: a conductor's colour and metalness are its measured n and k: give "
+                         "base_colour or conductor, not both");
+  f = sceneWithMaterial(R"({"conductor": "Cu", "metallic": 0})");
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), ": /materials/m/metallic: a conductor's colour"));
+}
+
 TEST_F(SceneFolder, SpdCsvWithBadDataNamesFileLineAndColumn) {
   fs::path csv = write("lamp.csv", "wavelength_nm,value\n400,1\n500,abc\n");
   fs::path f = sceneWithLight(R"({"type": "point", "position": [0, 1, 0], "spd": {"csv": "lamp.csv"}, "intensity": 1})");

@@ -63,7 +63,7 @@ TEST_F(SpectralTextureScene, OtherObjectsOtherReflectancesAndBadFilesAreRefused)
 }
 
 TEST_F(SpectralTextureScene, AConductorOnAPrtObjectIsRefused) {
-  fs::path f = sphere(R"({"conductor": "Au", "metallic": 1})", "");
+  fs::path f = sphere(R"({"conductor": "Au"})", "");
   EXPECT_EQ(errorOf([&] { loadScene(f); }),
             f.string() + ": /objects/1: material 'n' is a conductor, which PRT objects (diffuse by definition) cannot shade");
 }

@@ -22,7 +22,7 @@
 // Elsewhere e^(−Kd·z_c)·(1 − e^(−xS)) is taken as e^(−Kd·z_c) − e^(−Kd·z_c − xS): looking up
 // through strongly attenuating water (x < 0, Kd large), e^(−xS) alone overflows float while the
 // product stays finite (the second exponent is the ray end's own attenuation, ≤ 0 where that end
-// is under water).
+// is under water, and held there against rounding).
 
 // The water's block of the lighting pass (techniques/underwater/water_section.h packs it): its
 // constants in a std140 uniform block, and per batch σs (j = 0), σt = σa + σs (j = 1) and Kd
@@ -48,8 +48,12 @@ PRISM_INLINE vec4 waterInScattering(IN(vec4) sigmaS, IN(vec4) sigmaT, IN(vec4) k
     float x = kd[j] * descentPerM + sigmaT[j];
     float xs = x * distanceM;
     float atCamera = -kd[j] * cameraDepthM;  // the exponents of e^(−Kd·z_c) and of it times e^(−xS)
+    // The second is −Kd·z_end − σt·S ≤ 0 for a ray end at or below the surface, as the caller
+    // clips it; rounding in z_end = z_c + w·S, times a Kd of 1e7/m and more, made it positive
+    // enough to overflow.
+    float atEnd = min(atCamera - xs, 0.0f);
     float scattered = abs(xs) < 1e-3f ? exp(atCamera) * distanceM * (1.0f - xs * 0.5f + xs * xs * (1.0f / 6.0f))
-                                      : (exp(atCamera) - exp(atCamera - xs)) / x;
+                                      : (exp(atCamera) - exp(atEnd)) / x;
     result[j] = sigmaS[j] * (1.0f / (4.0f * kPi)) * scattered;
   }
   return result;

@@ -89,6 +89,20 @@ TEST(UnderwaterModel, LookingUpThroughDarkWaterStaysFinite) {
   }
 }
 
+// A ray that leaves the water at its surface ends at depth 0, its exponent −Kd·0 − σt·S; in float
+// z_c + w·S rounds a little above the surface, which times Kd = 5e7/m (a scene's kd_scale of 1e9)
+// overflowed to inf.
+TEST(UnderwaterModel, ARayEndingAtTheSurfaceStaysFiniteUnderAnyKd) {
+  for (float kdValue : {5e4f, 5e7f, 5e8f, 5e10f}) {  // without the clamp 9 of these 100 cases overflowed
+    const glm::vec4 sigmaS(0.05f), sigmaT(0.1f), kd(kdValue);
+    for (float depth : {0.3f, 1.0f, 7.0f, 13.0f, 30.0f})
+      for (float up : {0.31f, 0.5f, 0.7f, 0.83f, 0.97f}) {
+        const glm::vec4 v = shared::waterInScattering(sigmaS, sigmaT, kd, depth, -up, depth / up);
+        EXPECT_TRUE(std::isfinite(v.x) && v.x >= 0.0f) << "Kd " << kdValue << " depth " << depth << " up " << up;
+      }
+  }
+}
+
 TEST(UnderwaterModel, TransmittanceAndDownwellingAreBeerLambert) {
   glm::vec4 t = shared::waterTransmittance(glm::vec4(0.1f, 0.2f, 0.0f, 1.0f), 3.0f);
   EXPECT_NEAR(t.x, std::exp(-0.3), 1e-6);

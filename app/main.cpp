@@ -571,6 +571,8 @@ int main(int argc, char** argv) {
       fmt::print(stderr, "prism: error: {}{}\n", e.what(), prism::app::subcommandHint(app));
     else if (dynamic_cast<const CLI::ExtrasError*>(&e))
       fmt::print(stderr, "prism: error: {}{}\n", e.what(), prism::app::switchValueHint(argc, argv, rest));
+    else if (dynamic_cast<const CLI::ConversionError*>(&e))
+      fmt::print(stderr, "prism: error: {}{}\n", e.what(), prism::app::conversionHint(app, e.what()));
     else
       fmt::print(stderr, "prism: error: {}\n", e.what());
     return 2;

@@ -29,4 +29,19 @@ std::string subcommandHint(const CLI::App& app) {
   return fmt::format(": {} takes {} (see {} --help)", command, fmt::join(names, ", "), command);
 }
 
+std::string conversionHint(const CLI::App& app, const std::string& message) {
+  constexpr std::string_view kPrefix = "Could not convert: ";
+  const std::size_t equals = message.find(" = ");
+  if (!message.starts_with(kPrefix) || equals == std::string::npos) return "";
+  const std::string name = message.substr(kPrefix.size(), equals - kPrefix.size());
+  const CLI::App* deepest = &app;
+  while (!deepest->get_subcommands().empty()) deepest = deepest->get_subcommands().front();
+  const CLI::Option* option = deepest->get_option_no_throw(name);
+  if (option == nullptr) return "";
+  const std::string type = option->get_type_name();
+  if (type == "INT") return fmt::format(" ({} takes a whole number written out, such as 1000)", name);
+  if (type == "UINT") return fmt::format(" ({} takes a whole number from 0 to 4294967295, written out)", name);
+  return "";
+}
+
 }  // namespace prism::app

@@ -33,12 +33,17 @@ class MaterialsPanel final : public Panel {
     bool& changed = context.changes.scene;
     float srgb[3] = {shared::srgbEncode(m.baseColour.x), shared::srgbEncode(m.baseColour.y),
                      shared::srgbEncode(m.baseColour.z)};
+    // A conductor's colour and metalness are its n and k (kept for when it is set back to none).
+    ImGui::BeginDisabled(m.conductor.has_value());
     if (ImGui::ColorEdit3("base colour", srgb)) {
       m.baseColour = glm::vec3(shared::srgbDecode(srgb[0]), shared::srgbDecode(srgb[1]), shared::srgbDecode(srgb[2]));
       changed = true;
     }
+    ImGui::EndDisabled();
     changed |= ImGui::SliderFloat("roughness", &m.roughness, 0.0f, 1.0f);
+    ImGui::BeginDisabled(m.conductor.has_value());
     changed |= ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f);
+    ImGui::EndDisabled();
     std::vector<std::string> conductors{"none"};
     for (const std::string& c : listConductors()) conductors.push_back(c);
     std::string conductor = m.conductor ? m.conductor->name : "none";

@@ -58,6 +58,9 @@ void setMaterialKey(Scene& scene, const std::string& key, const std::vector<std:
   auto it = std::find_if(scene.materials.begin(), scene.materials.end(),
                          [&](const Material& m) { return m.name == parts[1]; });
   if (it == scene.materials.end()) throw Error(fmt::format("{}: no material \"{}\"", excerpt(key), excerpt(parts[1])));
+  if (it->conductor && (parts[2] == "base-colour" || parts[2] == "metallic"))
+    throw Error(fmt::format("{}: {} is a conductor, whose colour and metalness are its measured n and k", excerpt(key),
+                            excerpt(parts[1])));
   if (parts[2] == "base-colour") {
     const glm::vec3 c = parseVec3(key, value);
     if (glm::any(glm::lessThan(c, glm::vec3(0.0f))) || glm::any(glm::greaterThan(c, glm::vec3(1.0f))))

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "scene/conductors.h"
 
 namespace prism::viewer {
 namespace {
@@ -68,6 +69,12 @@ TEST(SceneSettings, BadValuesAreOneLineErrorsNamingTheKey) {
   EXPECT_EQ(error(scene, "material.floor.base-colour", "0.5,2,0"),
             "material.floor.base-colour: expected R,G,B within 0–1, got \"0.5,2,0\"");
   EXPECT_EQ(scene.lights[1].position, glm::vec3(0.0f, 2.0f, 0.0f));  // nothing half-set
+  // A conductor's colour and metalness are its n and k, as the scene loader says too.
+  scene.materials[0].conductor = conductorIor("Au");
+  EXPECT_EQ(error(scene, "material.floor.metallic", "0"),
+            "material.floor.metallic: floor is a conductor, whose colour and metalness are its measured n and k");
+  EXPECT_NE(error(scene, "material.floor.base-colour", "1,0,0"), "");
+  EXPECT_EQ(error(scene, "material.floor.roughness", "0.3"), "");
 }
 
 }  // namespace

@@ -388,7 +388,7 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("compare " + a + " " + (dir / "b.exr").string(), "reference 4 × 3, test 5 × 3");
   expectOneLineError("compare " + a + " " + (dir / "cam.exr").string(), "camera-rgb");
   expectOneLineError("compare " + a + " " + a + " --white -1", "--white");
-  expectOneLineError("compare " + a + " " + a + " --white inf", "--white: must be a luminance within 1e-12–1e+12");
+  expectOneLineError("compare " + a + " " + a + " --white inf", "--white: must be a luminance within 1e-20–1e+12");
   const std::string heat = (dir / "heat.png").string();
   expectOneLineError("compare " + a + " " + a + " --heatmap " + heat + " --histogram " + heat, "is also the heat map");
   prism::imaging::writeExr(dir / "w1.exr", small, {.colour = prism::imaging::ColourMeaning::Xyz, .displayWhite = 100.0});
@@ -455,8 +455,7 @@ TEST(Cli, ReferenceWritesWhatCompareReads) {
     Result made = run("reference " + scene + " -o " + file.string() + " --width 8 --height 4 --spp 2 " + part);
     ASSERT_EQ(made.exitCode, 0) << made.err;
     expectOneLineError("compare " + file.string() + " " + file.string(),
-                       std::string(part).starts_with("--tile") ? "holds a window of its image only"
-                                                               : "a part of a reference render; merge the parts first");
+                       "part.exr: a part of a reference render; merge the parts first (prism merge)");
   }
 }
 

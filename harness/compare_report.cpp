@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "imaging/exr_band.h"
 #include "imaging/exr_file.h"
 #include "imaging/heatmap.h"
 #include "imaging/image_difference.h"
@@ -19,9 +18,9 @@
 namespace prism::harness {
 namespace {
 
-// The dimmest display white taken (cd/m²), the inverse of the largest number Prism reads: a
-// white of 1e-40 put every colour at L* = inf.
-constexpr double kMinWhite = 1.0 / schema::kFloatInputLimit;
+// The dimmest display white taken (cd/m²): below the dimmest Prism writes (EV100 −50: 1.2·2⁻⁵⁰,
+// 1.1e-15), above what overflows CIELAB (a white of 1e-40 put every colour at L* = inf).
+constexpr double kMinWhite = 1e-20;
 
 // One side of the comparison, kept alive while the input views it.
 struct Loaded {
@@ -47,15 +46,15 @@ Loaded load(const std::filesystem::path& path, const std::optional<double>& whit
     }
     // A reference render's part: a band of rows (the rest of the image left out), or some of each
     // pixel's paths under another exposure's white; compared as it stands, its numbers meant nothing.
-    if (!l.exr.wholeImage)
-      throw Error(fmt::format("{}: holds a window of its image only (a part of a split render?); compare takes whole "
-                              "images", path.string()));
-    if (imaging::readExrBand(path, false).attributes.contains("prism:part"))
+    if (l.exr.part)
       throw Error(fmt::format("{}: a part of a reference render; merge the parts first (prism merge)", path.string()));
-    if (l.exr.displayWhite && !(*l.exr.displayWhite >= kMinWhite))
+    if (!l.exr.wholeImage)
+      throw Error(fmt::format("{}: its data window is not its display window (a crop or an overscan); compare takes "
+                              "whole images", path.string()));
+    if (white) l.exr.displayWhite = *white;  // checked by the caller
+    else if (l.exr.displayWhite && !(*l.exr.displayWhite >= kMinWhite))
       throw Error(fmt::format("{}: {} {:g} is below {:g}: CIELAB against so dim a white overflows", path.string(),
                               imaging::kDisplayWhiteAttribute, *l.exr.displayWhite, kMinWhite));
-    if (white) l.exr.displayWhite = *white;
     if (imaging::NonFinitePixels bad = imaging::nonFinitePixels(l.exr.image); bad.count > 0) {
       throw Error(fmt::format("{}: pixel ({}, {}) holds {}: compare takes finite images", path.string(), bad.firstX,
                               bad.firstY, bad.firstValue));

@@ -285,6 +285,7 @@ ExrImage readExr(const std::filesystem::path& path) {
     } else {
       out.colour = names[0] == "X" ? ColourMeaning::Xyz : ColourMeaning::LinearSrgb;
     }
+    if (const auto* part = header.findTypedAttribute<Imf::StringAttribute>(kPartAttribute)) out.part = part->value();
     if (const auto* white = header.findTypedAttribute<Imf::FloatAttribute>(kDisplayWhiteAttribute)) {
       if (!(white->value() > 0.0f) || !std::isfinite(white->value())) {
         throw Error(path.string() + ": " + kDisplayWhiteAttribute + ": expected a positive number, got " +

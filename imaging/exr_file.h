@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "imaging/float_image.h"
 
@@ -25,6 +26,8 @@ enum class ExrChannelNames {
 // "prism:displayWhite" (float): the luminance, in the image's units (cd/m² for Prism's renders),
 // that the exposure maps to display white. Comparisons read it as the white of CIELAB.
 inline constexpr const char* kDisplayWhiteAttribute = "prism:displayWhite";
+// "prism:part" (string): what a part of a split render says it is (batch/reference_part.h).
+inline constexpr const char* kPartAttribute = "prism:part";
 
 struct ExrWriteOptions {
   ColourMeaning colour = ColourMeaning::LinearSrgb;
@@ -43,9 +46,11 @@ struct ExrImage {
   FloatImage image;
   ColourMeaning colour = ColourMeaning::LinearSrgb;
   std::optional<double> displayWhite;  // kDisplayWhiteAttribute, when the file has it
-  // Its data window (what `image` holds) is its display window; false for a crop, or a band of a
-  // split render (a reference part's rows).
+  // Its data window (what `image` holds) is its display window; false for a crop, an overscan, or a
+  // band of a split render (a reference part's rows).
   bool wholeImage = true;
+  // kPartAttribute, when the file has it: a part of a split render (batch/reference_part.h).
+  std::optional<std::string> part;
 };
 
 // The largest side readExr takes (what `prism render` can write: its --width/--height limit).

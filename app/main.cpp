@@ -588,8 +588,10 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "prism: error: {}: {}\n", prism::excerpt(e.path1().string()), e.code().message());
     return 1;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "prism: internal error: {}\n", e.what());
-    return 70;
+    // nlohmann::json (type_error 316) will not write text that is not UTF-8: a file's name in --json.
+    const bool name = std::string_view(e.what()).starts_with("[json.exception.type_error.316]");
+    fmt::print(stderr, "prism: {}: {}\n", name ? "error: a name in the output is not UTF-8" : "internal error", e.what());
+    return name ? 1 : 70;
   }
   return 0;
 }

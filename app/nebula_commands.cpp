@@ -142,7 +142,7 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
                                       {"height", camera.height},
                                       {"steps", s.steps},
                                       {"max_relative_error", errors}}
-                           .dump());
+                           .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));  // a path's bytes
   } else {
     fmt::print("projection (CPU, float) against the reference: {}, {}x{}, {} steps, {} star(s)\n", filters,
                camera.width, camera.height, s.steps, scene.model.stars.size());

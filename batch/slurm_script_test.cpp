@@ -1,5 +1,8 @@
 #include "batch/slurm_script.h"
 
+#include <filesystem>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "core/error.h"
@@ -25,15 +28,20 @@ TEST(SlurmScript, ChecksTimeLimits) {
   }
 }
 
-TEST(SlurmScript, SubmitsTheArrayThenItsFinishAfterEveryTask) {
+// A reference render's script of eight tasks, its parts in `logs`.
+SlurmScript referenceScript(const std::filesystem::path& logs, const std::string& sbatchOption) {
   SlurmScript s;
   s.summary = "a test";
   s.tasks = 8;
   s.array = {"prism-reference", 2, 512, "02:00:00", "prism reference --tile \"$SLURM_ARRAY_TASK_ID/8\""};
   s.finish = {"prism-merge", 1, 256, "00:30:00", "prism merge parts/part-*-of-8.exr -o out.exr"};
-  s.logs = "/work/my parts";
-  s.sbatchOptions = {"--partition=gpu"};
-  const std::string text = slurmScriptText(s);
+  s.logs = logs;
+  s.sbatchOptions = {sbatchOption};
+  return s;
+}
+
+TEST(SlurmScript, SubmitsTheArrayThenItsFinishAfterEveryTask) {
+  const std::string text = slurmScriptText(referenceScript("/work/my parts", "--partition=gpu"));
   for (const char* line : {"#SBATCH --array=0-7\n", "#SBATCH --cpus-per-task=2\n", "#SBATCH --mem=512M\n",
                            "#SBATCH --time=02:00:00\n", "#SBATCH --partition=gpu\n", "mkdir -p '/work/my parts'\n",
                            "#SBATCH --output='/work/my parts/prism-reference-%A_%a.out'\n",
@@ -51,13 +59,7 @@ TEST(SlurmScript, SubmitsTheArrayThenItsFinishAfterEveryTask) {
 // expanded "%j" in a folder's name), an option with a space stays one, and a line break, which
 // ended the summary's comment and ran the rest as commands, is refused.
 TEST(SlurmScript, CarriesOddPathsAndOptionsSafely) {
-  SlurmScript s;
-  s.summary = "a test";
-  s.tasks = 2;
-  s.array = {"prism-reference", 1, 256, "01:00:00", "prism reference"};
-  s.finish = {"prism-merge", 1, 256, "00:30:00", "prism merge"};
-  s.logs = "/work/o%j 100%";
-  s.sbatchOptions = {"--comment=a b"};
+  const SlurmScript s = referenceScript("/work/o%j 100%", "--comment=a b");
   const std::string text = slurmScriptText(s);
   EXPECT_NE(text.find("#SBATCH --output='/work/o%%j 100%%/prism-reference-%A_%a.out'\n"), std::string::npos) << text;
   EXPECT_NE(text.find("#SBATCH '--comment=a b'\n"), std::string::npos) << text;

@@ -18,6 +18,7 @@
 #include "harness/optimised_wavelengths.h"
 #include "harness/technique_precompute.h"
 #include "harness/upsampling_table.h"
+#include "render/frame_data.h"
 #include "render/renderer.h"
 #include "render/setting_keys.h"
 #include "scene/scene_loader.h"
@@ -143,6 +144,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   const int rounds = options.rounds.value_or(std::min(kDefaultBenchRounds, options.frames));
   const int frames = (options.frames + rounds - 1) / rounds;  // per round
   Scene scene = loadScene(options.scene);
+  render::requireLightCount(scene);  // the renderer's own check, before the work ahead of it
   const RgbToSpectrumTable& table = upsamplingTable(scene);
   precomputeTechniques(scene);
   gpu::HeadlessContext context;

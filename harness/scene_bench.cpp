@@ -22,6 +22,7 @@
 #include "render/renderer.h"
 #include "render/setting_keys.h"
 #include "scene/scene_loader.h"
+#include "spectral/sampling.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/file_extension.h"
@@ -128,18 +129,12 @@ void runSceneBench(const SceneBenchOptions& options) {
     requireWritable(options.plot);
   }
   const render::FrameSettings& settings = options.settings;
-  for (int n : options.wavelengths) {
+  std::vector<int> counts = options.wavelengths;
+  counts.push_back(16);  // the bench's own configurations (G-buffer, still camera, strategies)
+  for (int n : counts) {
     render::FrameSettings check = settings;
     check.sampling.count = n;
     render::validate(check);
-  }
-  // A fitted set needs a whole nm per wavelength; the bench's own configurations draw 16.
-  const auto fits = [&](int n) { return settings.sampling.maxNm - settings.sampling.minNm >= n; };
-  if (settings.sampling.strategy == SamplingStrategy::Optimised) {
-    const int most = std::max(16, *std::max_element(options.wavelengths.begin(), options.wavelengths.end()));
-    if (!fits(most))
-      throw Error(fmt::format("--range {:g},{:g}: the optimised strategy fits a whole nm per wavelength, and the bench "
-                              "draws up to {}", settings.sampling.minNm, settings.sampling.maxNm, most));
   }
   const int rounds = options.rounds.value_or(std::min(kDefaultBenchRounds, options.frames));
   const int frames = (options.frames + rounds - 1) / rounds;  // per round
@@ -203,7 +198,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   for (SamplingStrategy strategy : {SamplingStrategy::Rotated, SamplingStrategy::Lights, SamplingStrategy::Optimised}) {
     render::FrameSettings s = spectralSettings(16);
     s.sampling.strategy = strategy;
-    if (strategy == SamplingStrategy::Optimised && !fits(16)) {
+    if (strategy == SamplingStrategy::Optimised && !holdsWholeNanometres(s.sampling.minNm, s.sampling.maxNm, 16)) {
       fmt::print(stderr, "prism: bench: the optimised strategy at 16 wavelengths is left out: it fits a whole nm per "
                          "wavelength, and --range {:g},{:g} holds fewer\n", s.sampling.minNm, s.sampling.maxNm);
       continue;

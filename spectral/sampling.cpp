@@ -49,6 +49,12 @@ void validate(const SamplingSettings& s) {
   if (s.strategy == SamplingStrategy::Optimised && s.count > kMaxFittedWavelengths)
     throw Error("the optimised strategy fits 4–" + std::to_string(kMaxFittedWavelengths) + " wavelengths, got " +
                 std::to_string(s.count) + " (uniform, rotated or lights take more)");
+  if (s.strategy == SamplingStrategy::Optimised && !holdsWholeNanometres(s.minNm, s.maxNm, s.count)) {
+    std::ostringstream range;
+    range << s.minNm << "–" << s.maxNm;
+    throw Error("the optimised strategy fits its " + std::to_string(s.count) + " wavelengths a whole nm apart: " +
+                range.str() + " nm holds fewer");
+  }
 }
 
 WavelengthSampler::WavelengthSampler(const SamplingSettings& settings, const Observer& importance)

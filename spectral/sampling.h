@@ -63,7 +63,12 @@ struct SamplingSettings {
   SamplingStrategy strategy = SamplingStrategy::Uniform;
 };
 
-// Error naming the setting when count or range is invalid (Optimised: count ≤ kMaxFittedWavelengths).
+// Whether [minNm, maxNm] holds `count` whole nanometres apart: what a fitted (optimised) set of
+// `count` wavelengths needs.
+inline bool holdsWholeNanometres(double minNm, double maxNm, int count) { return maxNm - minNm >= count; }
+
+// Error naming the setting when count or range is invalid (Optimised: count ≤ kMaxFittedWavelengths
+// and a range that holdsWholeNanometres).
 void validate(const SamplingSettings& settings);
 
 // The batches for one pixel and frame (seed unused by Uniform). `importance` is the observer

@@ -21,6 +21,7 @@
 #include "spectral/colour_checker.h"
 #include "spectral/colour_difference.h"
 #include "spectral/rgb_intent.h"
+#include "spectral/sampling.h"
 #include "spectral/rgb_to_spectrum_cache.h"
 #include "spectral/wavelength_pdf.h"
 
@@ -196,7 +197,7 @@ void validateProblem(const WavelengthFitProblem& problem) {
   if (problem.count < 4 || problem.count > kMaxFittedWavelengths || problem.count % 4 != 0)
     throw Error("wavelength fit: count must be a multiple of 4 within 4–" + std::to_string(kMaxFittedWavelengths) +
                 ", got " + std::to_string(problem.count));
-  if (!(problem.minNm >= kLambdaMinNm && problem.maxNm <= kLambdaMaxNm && problem.maxNm - problem.minNm >= problem.count))
+  if (!(problem.minNm >= kLambdaMinNm && problem.maxNm <= kLambdaMaxNm && holdsWholeNanometres(problem.minNm, problem.maxNm, problem.count)))
     throw Error("wavelength fit: range must lie within 360–830 nm and hold a whole nm per wavelength");
   if (problem.lights.empty()) throw Error("wavelength fit: no light");
   if (problem.reflectances.empty()) throw Error("wavelength fit: no reflectance");

@@ -111,9 +111,7 @@ DensityGrid generateFbm(const NoiseParameters& params, unsigned threads,
   return grid;
 }
 
-DeferredDensity::DeferredDensity(DensityGrid grid) : mGrid(std::move(grid)) {
-  std::call_once(mMade, [] {});
-}
+DeferredDensity::DeferredDensity(DensityGrid grid) : mGrid(std::move(grid)) {}
 
 DeferredDensity::DeferredDensity(const NoiseParameters& noise) : mNoise(noise) {}
 
@@ -123,7 +121,7 @@ glm::ivec3 DeferredDensity::size() const {
 }
 
 const DensityGrid& DeferredDensity::grid(const std::function<void(std::size_t done, std::size_t total)>& progress) const {
-  std::call_once(mMade, [&] { mGrid = generateFbm(*mNoise, 0, progress); });
+  if (mNoise) std::call_once(mMade, [&] { mGrid = generateFbm(*mNoise, 0, progress); });
   return mGrid;
 }
 

@@ -60,7 +60,7 @@ DensityGrid generateFbm(const NoiseParameters& p, unsigned threads = 0,
 
 // A density given now (a file's) or generated from noise at its first use, then kept: a scene
 // holds its nebula's noise unmade until the precomputation, which shows its progress (512³ takes
-// half a minute on two cores), and copies of the scene share what was made.
+// about 15 s on two cores), and copies of the scene share what was made.
 class DeferredDensity {
  public:
   explicit DeferredDensity(DensityGrid grid);

@@ -18,6 +18,7 @@
 #include "core/error.h"
 #include "core/file_extension.h"
 #include "spectral/observer.h"
+#include "techniques/technique_pass.h"
 
 namespace prism::app {
 
@@ -46,10 +47,11 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
   requireWritable(output);
   requireNotSceneInput(output, scene);
   render::requireLightCount(scene);  // the renderer's own check, before the work ahead of it
+  gpu::HeadlessContext context;
+  requireTechniquesFit(scene);  // this GPU's limits, before the work ahead of it too
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::fitOptimisedWavelengths(scene, settings, table);
   harness::precomputeTechniques(scene);
-  gpu::HeadlessContext context;
   render::Renderer renderer(scene, table, settings);
   std::optional<harness::ProgressBar> bar;
   if (progress && frames > 1) bar.emplace("rendering " + output.filename().string());

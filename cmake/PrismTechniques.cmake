@@ -73,12 +73,13 @@ endfunction()
 
 # makeRegisteredTechniquePass(key): a new pass of the technique of that key, or null;
 # precomputeRegisteredTechniques(scene, progress): the precompute() of each pass class that has one,
-# for the techniques the scene has.
+# for the techniques the scene has; requireFitsOfRegisteredTechniques(scene): their requireFits().
 function(prism_generate_technique_passes output)
   get_property(passes GLOBAL PROPERTY PRISM_TECHNIQUE_PASSES)
   set(text "${PRISM_GENERATED_NOTICE}")
   set(body "")
   set(precompute "")
+  set(fits "")
   foreach(entry IN LISTS passes)
     string(REPLACE "|" ";" fields "${entry}")
     list(GET fields 0 section)
@@ -88,13 +89,18 @@ function(prism_generate_technique_passes output)
     string(APPEND text "#include \"${sectionHeader}\"\n#include \"${header}\"\n")
     string(APPEND body "  if (key == ${section}::kKey) return std::make_unique<${class}>();\n")
     string(APPEND precompute "  if (scene.techniques.find<${section}>()) precomputeIfDefined<${class}>(scene, progress);\n")
+    string(APPEND fits "  if (scene.techniques.find<${section}>()) requireFitsIfDefined<${class}>(scene);\n")
   endforeach()
   string(APPEND text "\nnamespace prism {\n\ninline std::unique_ptr<TechniquePass> makeRegisteredTechniquePass(std::string_view key) {\n"
                      "${body}  return nullptr;\n}\n\n"
                      "template <class Pass>\nvoid precomputeIfDefined(const Scene& scene, const TechniqueProgress& progress) {\n"
                      "  if constexpr (requires { Pass::precompute(scene, progress); }) Pass::precompute(scene, progress);\n}\n\n"
                      "inline void precomputeRegisteredTechniques(const Scene& scene, const TechniqueProgress& progress) {\n"
-                     "${precompute}}\n\n}  // namespace prism\n")
+                     "${precompute}}\n\n"
+                     "template <class Pass>\nvoid requireFitsIfDefined(const Scene& scene) {\n"
+                     "  if constexpr (requires { Pass::requireFits(scene); }) Pass::requireFits(scene);\n}\n\n"
+                     "inline void requireFitsOfRegisteredTechniques(const Scene& scene) {\n"
+                     "${fits}}\n\n}  // namespace prism\n")
   prism_write_generated("${output}" "${text}")
 endfunction()
 

@@ -23,6 +23,7 @@
 #include "render/setting_keys.h"
 #include "scene/scene_loader.h"
 #include "spectral/sampling.h"
+#include "techniques/technique_pass.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/file_extension.h"
@@ -140,9 +141,10 @@ void runSceneBench(const SceneBenchOptions& options) {
   const int frames = (options.frames + rounds - 1) / rounds;  // per round
   Scene scene = loadScene(options.scene);
   render::requireLightCount(scene);  // the renderer's own check, before the work ahead of it
+  gpu::HeadlessContext context;
+  requireTechniquesFit(scene);  // this GPU's limits, before the work ahead of it too
   const RgbToSpectrumTable& table = upsamplingTable(scene);
   precomputeTechniques(scene);
-  gpu::HeadlessContext context;
   std::string device = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   render::FrameSettings rgbSettings = settings;
   rgbSettings.observer = "cie1931";  // RGB mode's own: its colour spaces are defined on it

@@ -95,4 +95,9 @@ using TechniqueProgress = std::function<void(std::string_view what, std::size_t 
 // TechniqueProgress&)`. Errors as the work's own.
 void precomputeTechniques(const Scene& scene, const TechniqueProgress& progress);
 
+// With an OpenGL context current, refuses a scene this GPU cannot hold (a limit of its textures)
+// before the work of precomputeTechniques, which would otherwise end in the same error at the
+// first frame. A pass class takes part by defining `static void requireFits(const Scene&)`.
+void requireTechniquesFit(const Scene& scene);
+
 }  // namespace prism

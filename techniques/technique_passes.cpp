@@ -10,4 +10,6 @@ void precomputeTechniques(const Scene& scene, const TechniqueProgress& progress)
   precomputeRegisteredTechniques(scene, progress);
 }
 
+void requireTechniquesFit(const Scene& scene) { requireFitsOfRegisteredTechniques(scene); }
+
 }  // namespace prism

@@ -99,17 +99,22 @@ void NebulaPass::precompute(const Scene& scene, const TechniqueProgress& progres
   precomputation(sectionOf(scene), progress);
 }
 
+void NebulaPass::requireFits(const Scene& scene) {
+  const NebulaSection& section = sectionOf(scene);
+  try {
+    requireGpuFits(section.density->size().z, section.model.stars.size());
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: /nebula/stars: {}", scene.file.string(), e.what()));
+  }
+}
+
 void NebulaPass::run(const TechniqueBlock&, const Scene& scene, const CameraTransform& camera,
                      const TechniqueFrame& frame) {
   const NebulaSection& section = sectionOf(scene);
   const std::string key = section.precomputationKey();
   bool refiltered = false;
   if (!mRenderer || key != mPrecomputationKey) {
-    try {  // before a precomputation made here, and naming the place
-      requireGpuFits(section.density->size().z, section.model.stars.size());
-    } catch (const Error& e) {
-      throw Error(fmt::format("{}: /nebula/stars: {}", scene.file.string(), e.what()));
-    }
+    requireFits(scene);  // before a precomputation made here
     std::shared_ptr<const NebulaRenderer> renderer = precomputation(section, {});
     const std::string volumeKey = section.volumeKey();
     if (mMarcher && volumeKey == mVolumeKey) {  // other filters or passbands: the same volume uploaded

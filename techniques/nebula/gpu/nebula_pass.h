@@ -34,6 +34,9 @@ class NebulaPass final : public TechniquePass {
   // The scene's nebula precomputed into a process-wide memo (the last section's), which the pass
   // then takes instead of computing it again.
   static void precompute(const Scene& scene, const TechniqueProgress& progress);
+  // The stars' optical depths in this GPU's 3D textures (requireTechniquesFit), named at
+  // /nebula/stars; run() checks it too, before a precomputation of its own.
+  static void requireFits(const Scene& scene);
   void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera,
            const TechniqueFrame& frame) override;
   void bindForLighting() const override;

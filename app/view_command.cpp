@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "harness/technique_precompute.h"
 #include "harness/upsampling_table.h"
+#include "render/frame_data.h"
 #include "scene/scene_loader.h"
 #include "viewer/viewer.h"
 
@@ -23,6 +24,7 @@ int runView(const ViewOptions& options) {
     if (side < viewer::kMinWindowSide || side > viewer::kMaxWindowSide)
       throw Error(fmt::format("{} {}: the viewer's window is {}–{} pixels a side", name, side, viewer::kMinWindowSide,
                               viewer::kMaxWindowSide));
+  render::requireLightCount(scene);  // the renderer's own check, before the work ahead of it
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::precomputeTechniques(scene);
   viewer::ViewerOptions v;

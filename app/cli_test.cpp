@@ -333,6 +333,29 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
   EXPECT_LT(std::stod(demo.out.substr(natural + std::string(", natural ").size())), 2.0) << demo.out;
 }
 
+// The gallery's outputs, checked before any work: none of them over a file a scene reads (written
+// into the scenes' folder, it replaced a scene's texture named colorchecker.png, exit 0), none a
+// folder (found after every render).
+TEST(Cli, DemoRefusesOutputsOverItsInputsBeforeWork) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "demo_inputs";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "scenes");
+  std::filesystem::copy_file(std::string(PRISM_SCENES_DIR) + "/models/tiles_base_colour.png",
+                             dir / "scenes" / "colorchecker.png");
+  std::ofstream(dir / "scenes" / "a.json") << R"({"camera": {"position": [0, 1, 4], "target": [0, 0, 0]},
+    "lights": [{"type": "directional", "direction": [0, -1, -0.5], "spd": "D65", "intensity": 3}],
+    "materials": {"m": {"base_colour_texture": "colorchecker.png"}},
+    "objects": [{"sphere": {"centre": [0, 0, 0], "radius": 1}, "material": "m"}]})";
+  const std::string texture = slurp(dir / "scenes" / "colorchecker.png");
+  const std::string scenes = " --scenes " + (dir / "scenes").string() + " --width 16 --height 16";
+  expectOneLineError("demo -o " + (dir / "scenes").string() + scenes,
+                     "colorchecker.png: is also a file the scene reads");
+  EXPECT_EQ(slurp(dir / "scenes" / "colorchecker.png"), texture);
+  std::filesystem::create_directories(dir / "gallery" / "index.html");
+  expectOneLineError("demo -o " + (dir / "gallery").string() + scenes, "index.html: is a folder");
+  EXPECT_FALSE(std::filesystem::exists(dir / "gallery" / "colorchecker.png"));
+}
+
 TEST(Cli, AtmosphereCommandsCheckTheirInput) {
   expectOneLineError("atmosphere evaluate --zeniths 0", "--zeniths must be within 1..512");
   expectOneLineError("atmosphere evaluate --reference-step 100", "reference step 100 nm must be within 0.5..50");

@@ -148,6 +148,40 @@ std::string indexHtml(const std::vector<Entry>& entries, const std::vector<Nebul
   return page.html();
 }
 
+// Scenes with a technique of their own optimised wavelengths (the sky) show RGB-3, optimised-4 and
+// the reference; the others RGB and spectral.
+bool showsOptimisedWavelengths(const Scene& scene) {
+  return std::ranges::any_of(scene.techniques.all(),
+                             [](const auto& t) { return t->optimisedWavelengths().has_value(); });
+}
+
+// Error before any work unless every file the gallery writes into `folder` can be written and is
+// none of the files it reads (a scene's texture beside it, when the gallery is written into the
+// scenes' folder: it was replaced by a render, and a later scene drew that).
+void requireOutputsClear(const std::filesystem::path& folder, const std::vector<Scene>& scenes,
+                         const std::vector<std::filesystem::path>& nebulaFiles) {
+  std::vector<std::filesystem::path> outputs{folder / "colorchecker.png", folder / "index.html"};
+  for (const Scene& scene : scenes) {
+    std::vector<std::string> suffixes{"_rgb", "_spectral"};
+    if (showsOptimisedWavelengths(scene)) suffixes = {"_rgb", "_optimised4", "_reference"};
+    for (const std::string& suffix : suffixes) outputs.push_back(folder / (scene.file.stem().string() + suffix + ".png"));
+  }
+  std::vector<nebula::NebulaSceneFile> nebulae;
+  for (const std::filesystem::path& file : nebulaFiles) {
+    nebulae.push_back(nebula::readNebulaScene(file));
+    for (const char* suffix : {"_hubble.png", "_natural.png"})
+      outputs.push_back(folder / (file.stem().string() + suffix));
+  }
+  for (const std::filesystem::path& output : outputs) {
+    requireWritable(output);
+    for (const Scene& scene : scenes) requireNotSceneInput(output, scene);
+    for (std::size_t i = 0; i < nebulae.size(); ++i) {
+      requireOtherFile(output, nebulaFiles[i], "a nebula's scene file");
+      requireOtherFile(output, nebulae[i].source.file, "a nebula's density file");
+    }
+  }
+}
+
 }  // namespace
 
 void runGallery(const GalleryOptions& o) {
@@ -167,8 +201,19 @@ void runGallery(const GalleryOptions& o) {
   check.sampling.count = o.wavelengths;
   render::validate(check);
   requireWritableFolder(o.output);
+  std::vector<Scene> scenes;
+  for (const std::filesystem::path& file : files) scenes.push_back(loadScene(file));
+  // Nebulae (scenes/nebula/*.json: a section of their own, not surface scenes), at their cameras'
+  // sizes, within the gallery's height.
+  std::vector<std::filesystem::path> nebulaFiles;
+  if (std::filesystem::is_directory(sceneDir / "nebula")) {
+    for (const auto& entry : std::filesystem::directory_iterator(sceneDir / "nebula"))
+      if (lowercaseExtension(entry.path()) == ".json") nebulaFiles.push_back(entry.path());
+  }
+  std::sort(nebulaFiles.begin(), nebulaFiles.end());
+  requireOutputsClear(o.output, scenes, nebulaFiles);
   std::filesystem::create_directories(o.output);
-  for (const std::filesystem::path& file : files) precomputeTechniques(loadScene(file));  // bars of their own
+  for (const Scene& scene : scenes) precomputeTechniques(scene);  // bars of their own
 
   DemoOptions chart;
   chart.output = o.output / "colorchecker.png";
@@ -178,8 +223,8 @@ void runGallery(const GalleryOptions& o) {
   gpu::HeadlessContext context;
   ProgressBar bar("gallery");
   std::vector<Entry> entries;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    Scene scene = loadScene(files[i]);
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    const Scene& scene = scenes[i];
     render::FrameSettings settings;
     settings.width = o.width;
     settings.height = o.height;
@@ -200,7 +245,7 @@ void runGallery(const GalleryOptions& o) {
                                     imaging::linearInput(reference, imaging::ColourMeaning::Xyz, white))
           .stats;
     };
-    if (std::ranges::any_of(scene.techniques.all(), [](const auto& t) { return t->optimisedWavelengths().has_value(); })) {
+    if (showsOptimisedWavelengths(scene)) {
       e.sky = true;
       settings.mode = render::RenderMode::Optimised4;
       renderer.setSettings(settings);
@@ -218,7 +263,7 @@ void runGallery(const GalleryOptions& o) {
       optimised.write(o.output / (e.name + "_optimised4.png"));
       reference.write(o.output / (e.name + "_reference.png"));
       entries.push_back(std::move(e));
-      bar.update(i + 1, files.size());
+      bar.update(i + 1, scenes.size());
       continue;
     }
     settings.mode = render::RenderMode::JakobHanika;
@@ -230,16 +275,8 @@ void runGallery(const GalleryOptions& o) {
     rgb.write(o.output / (e.name + "_rgb.png"));
     spectral.write(o.output / (e.name + "_spectral.png"));
     entries.push_back(std::move(e));
-    bar.update(i + 1, files.size());
+    bar.update(i + 1, scenes.size());
   }
-  // Nebulae (scenes/nebula/*.json: a section of their own, not surface scenes), at their cameras'
-  // sizes, within the gallery's height.
-  std::vector<std::filesystem::path> nebulaFiles;
-  if (std::filesystem::is_directory(sceneDir / "nebula")) {
-    for (const auto& entry : std::filesystem::directory_iterator(sceneDir / "nebula"))
-      if (lowercaseExtension(entry.path()) == ".json") nebulaFiles.push_back(entry.path());
-  }
-  std::sort(nebulaFiles.begin(), nebulaFiles.end());
   std::vector<NebulaEntry> nebulae;
   ProgressBar nebulaBar("gallery: nebulae, each against its reference");
   for (std::size_t i = 0; i < nebulaFiles.size(); ++i) {

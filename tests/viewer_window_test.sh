@@ -7,7 +7,8 @@
 # - under the spectral sky, moving the sun (the sky panel's setting) changes the view;
 # - in the nebula scene, the palette changes the view and the reference mode does not;
 # - a point light's shadows and position, set by the script (the lights panel's controls),
-#   change the view.
+#   change the view;
+# - a screenshot or settings file over a file the scene reads or over the script is refused.
 # Usage: viewer_window_test.sh PRISM SCENES_DIR SCRATCH_DIR
 set -euo pipefail
 prism=$1 scenes=$2 scratch=$3
@@ -113,3 +114,29 @@ shadowed=$(share "$scratch/lamp_unshadowed.exr" "$scratch/lamp_shadowed.exr")
 moved=$(share "$scratch/lamp_shadowed.exr" "$scratch/lamp_moved.exr")
 echo "conductors, the point light's shadows on: $shadowed % above ΔE00 1; the light moved: $moved %"
 [ -n "$shadowed" ] && [ -n "$moved" ] && awk -v s="$shadowed" -v m="$moved" 'BEGIN { exit !(s > 1.0 && m > 1.0) }'
+
+# Files the script writes over what the viewer reads, refused before the first frame (they were
+# written, exit 0): a screenshot over the scene's texture, the settings over the script itself;
+# and a settings file that never ends, refused rather than read until memory ran out.
+mkdir -p "$scratch/own/models"
+cp "$scenes/textured_gltf.json" "$scratch/own/"
+cp "$scenes"/models/tiles* "$scratch/own/models/"
+texture=$scratch/own/models/tiles_base_colour.png
+before=$(md5sum <"$texture")
+# view_error SCRIPT_TEXT NEEDLE: the run fails with NEEDLE in its one error line.
+view_error() {
+  printf '%s\n' "$1" >"$scratch/own/script"
+  local err
+  if err=$(view "$scratch/own/textured_gltf.json" --width 64 --height 48 --script "$scratch/own/script" 2>&1); then
+    echo "'$1': exit 0" >&2
+    exit 1
+  fi
+  grep -qF "$2" <<<"$err" || { echo "'$1': $err" >&2; exit 1; }
+}
+view_error "frames 1
+screenshot $texture" "script:2: $texture: is also a file the scene reads"
+[ "$(md5sum <"$texture")" = "$before" ]
+view_error "save-settings $scratch/own/script" "script:1: $scratch/own/script: is also the script"
+grep -q '^save-settings' "$scratch/own/script"
+view_error "load-settings /dev/zero" "script:1: /dev/zero: not a regular file"
+echo "outputs over the scene's files and the script refused; /dev/zero refused"

@@ -26,7 +26,7 @@ class FilesPanel final : public Panel {
     if (ImGui::Button("save##shot")) runAction(context, [&] { mViewer.screenshot(mScreenshotPath.data(), false); });
     ImGui::InputText("settings", mSettingsPath.data(), mSettingsPath.size());
     if (ImGui::Button("save settings")) {
-      runAction(context, [&] { saveViewSettings(mSettingsPath.data(), context.view, context.camera.camera()); });
+      runAction(context, [&] { mViewer.saveSettings(mSettingsPath.data()); });
     }
     ImGui::SameLine();
     if (ImGui::Button("load settings")) runAction(context, [&] { mViewer.loadSettings(mSettingsPath.data()); });

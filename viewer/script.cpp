@@ -2,14 +2,16 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/json_schema.h"
 #include "render/setting_keys.h"
 #include "viewer/camera_controller.h"
 #include "viewer/scene_settings.h"
@@ -130,7 +132,7 @@ void execute(Viewer& viewer, const std::vector<std::string>& w) {
   } else if (verb == "screenshot") {
     viewer.screenshot(w[1], true);
   } else if (verb == "save-settings") {
-    saveViewSettings(w[1], viewer.view(), viewer.camera().camera());
+    viewer.saveSettings(w[1]);
   } else if (verb == "load-settings") {
     viewer.loadSettings(w[1]);
   } else if (verb == "heat-map-stats") {
@@ -154,8 +156,9 @@ void execute(Viewer& viewer, const std::vector<std::string>& w) {
 Script loadScript(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw Error(fmt::format("{}: is a folder, not a script", path.string()));
-  std::ifstream in(path);
-  if (!in) throw Error(fmt::format("{}: cannot read the script", path.string()));
+  if (!std::filesystem::exists(path, ec)) throw Error(fmt::format("{}: cannot read the script", path.string()));
+  const std::vector<unsigned char> bytes = schema::readBinaryFile(path);
+  std::istringstream in(std::string(bytes.begin(), bytes.end()));
   Script script{path, {}};
   std::string text;
   for (int n = 1; std::getline(in, text); ++n) {
@@ -168,11 +171,21 @@ Script loadScript(const std::filesystem::path& path) {
       throw Error(fmt::format("{}:{}: {}", path.string(), n, e.what()));
     }
   }
-  if (in.bad()) throw Error(fmt::format("{}: cannot read the script", path.string()));
   return script;
 }
 
 int runScript(Viewer& viewer, const Script& script) {
+  // The files it writes, before anything renders: none over the script or a file the scene reads.
+  for (const ScriptLine& line : script.lines) {
+    if (line.words[0] != "screenshot" && line.words[0] != "save-settings") continue;
+    try {
+      requireOtherFile(line.words[1], script.path, "the script");
+      viewer.requireOutputClear(line.words[1]);
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "prism: error: {}:{}: {}\n", script.path.string(), line.line, e.what());
+      return 1;
+    }
+  }
   viewer.frame();
   for (const ScriptLine& line : script.lines) {
     try {

@@ -173,6 +173,7 @@ void Viewer::writeWindowPng(const std::filesystem::path& path, int width, int he
 }
 
 void Viewer::screenshot(const std::filesystem::path& path, bool renderNow) {
+  requireOutputClear(path);
   if (lowercaseExtension(path) == ".exr") return mCompositor.writeLeftExr(path, mCamera.camera());
   if (lowercaseExtension(path) != ".png") throw Error(fmt::format("{}: a screenshot is a .png or an .exr", path.string()));
   mPendingScreenshot = path;  // written after the interface is drawn, before the swap
@@ -199,6 +200,13 @@ void Viewer::loadSettings(const std::filesystem::path& path) {
   mCamera = CameraController(camera);
   mChanges.settings = mChanges.camera = true;
 }
+
+void Viewer::saveSettings(const std::filesystem::path& path) const {
+  requireOutputClear(path);
+  saveViewSettings(path, mView, mCamera.camera());
+}
+
+void Viewer::requireOutputClear(const std::filesystem::path& path) const { requireNotSceneInput(path, mScene); }
 
 void Viewer::reloadShaders() { mCompositor.reloadShaders(); }
 

@@ -41,6 +41,10 @@ class Viewer {
   // take it in a frame of its own (the script); otherwise in this frame (from the interface).
   void screenshot(const std::filesystem::path& path, bool renderNow);
   void loadSettings(const std::filesystem::path& path);  // viewer_settings.h's files
+  void saveSettings(const std::filesystem::path& path) const;
+  // Error unless `path` is none of the files the scene reads (its file, models, textures, maps):
+  // screenshots and settings files are never written over them.
+  void requireOutputClear(const std::filesystem::path& path) const;
   void reloadShaders();
 
   gpu::WindowContext& window() { return mWindow; }

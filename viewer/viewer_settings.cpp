@@ -1,8 +1,6 @@
 #include "viewer/viewer_settings.h"
 
-#include <fstream>
 #include <optional>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -68,12 +66,9 @@ void saveViewSettings(const std::filesystem::path& path, const ViewSettings& vie
 }
 
 void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Camera& camera) {
-  std::ifstream in(path);
-  if (!in) throw Error(fmt::format("{}: cannot read the settings file", path.string()));
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::vector<unsigned char> bytes = schema::readBinaryFile(path);
   const std::string file = path.string();
-  nlohmann::json j = schema::parseJson(text.str(), file);
+  nlohmann::json j = schema::parseJson(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), file);
   if (!j.is_object()) throw Error(fmt::format("{}: not a JSON object", file));
   ViewSettings next = view;
   Camera nextCamera = camera;

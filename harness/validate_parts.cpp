@@ -1,14 +1,15 @@
 #include "harness/validate_parts.h"
 
 #include <algorithm>
-#include <fstream>
 #include <map>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/file_extension.h"
+#include "core/json_schema.h"
 
 namespace prism::harness {
 namespace {
@@ -31,9 +32,8 @@ ValidatePart readValidatePart(const std::filesystem::path& path) {
   auto fail = [&](const std::string& why) {
     return Error(fmt::format("{}: not a part of `prism validate --task` ({})", path.string(), why));
   };
-  std::ifstream in(path);
-  if (!in) throw fail("cannot read it");
-  nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
+  const std::vector<unsigned char> bytes = schema::readBinaryFile(path);  // a folder: its own error
+  nlohmann::json json = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
   if (json.is_discarded() || !json.is_object()) throw fail("not JSON");
   if (json.value("format", "") != kFormat) throw fail("format is not \"" + std::string(kFormat) + "\"");
   ValidatePart part;
@@ -76,7 +76,8 @@ nlohmann::json collectValidateParts(const std::filesystem::path& dir, const nloh
     }
     for (const std::string& name : part.experiments) {
       if (std::find(experiments.begin(), experiments.end(), name) == experiments.end())
-        throw Error(fmt::format("validate --collect: {}: unknown experiment \"{}\"", file.string(), excerpt(name)));
+        throw Error(fmt::format("validate --collect: {}: experiment \"{}\" is not one of this report's ({})",
+                                file.string(), excerpt(name), excerpt(fmt::format("{}", fmt::join(experiments, ", ")), 120)));
       auto [it, added] = found.try_emplace(name, file, nlohmann::json::array());
       if (!added) {
         throw Error(fmt::format("validate --collect: experiment {} is in both {} and {}", name, it->second.first.string(),
@@ -84,6 +85,9 @@ nlohmann::json collectValidateParts(const std::filesystem::path& dir, const nloh
       }
       for (const nlohmann::json& row : part.results)
         if (row["scene"] == name) it->second.second.push_back(row);
+      if (it->second.second.empty())  // every experiment has a row; a part without one was cut short
+        throw Error(fmt::format("validate --collect: {} names experiment {} but holds no result of it", file.string(),
+                                name));
     }
   }
   nlohmann::json rows = nlohmann::json::array();

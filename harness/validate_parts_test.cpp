@@ -70,6 +70,18 @@ TEST_F(ValidateParts, RefusesAMissingExperimentATwiceRunOneAndAnotherSweep) {
   EXPECT_NE(collectError().find("is a part of another sweep"), std::string::npos) << collectError();
   std::ofstream(validatePartPath(mRoot, {1, 2})) << "{\"format\": \"prism-validate-part 1\", \"experi";
   EXPECT_NE(collectError().find("not a part of `prism validate --task` (not JSON)"), std::string::npos);
+  // A part naming an experiment with no row of it (it reported a report without that experiment,
+  // exit 0), one of an experiment this report does not collect, a folder in a part's place (exit 70).
+  ValidatePart cut{kIdentity, {"c"}, nlohmann::json::array()};
+  writeValidatePart(validatePartPath(mRoot, {1, 2}), cut);
+  EXPECT_EQ(collectError(), "validate --collect: " + validatePartPath(mRoot, {1, 2}).string() +
+                                " names experiment c but holds no result of it");
+  part({1, 2}, {"c", "d"});
+  EXPECT_EQ(collectError(), "validate --collect: " + validatePartPath(mRoot, {1, 2}).string() +
+                                ": experiment \"d\" is not one of this report's (a, b, c)");
+  std::filesystem::remove(validatePartPath(mRoot, {1, 2}));
+  std::filesystem::create_directories(validatePartPath(mRoot, {1, 2}));
+  EXPECT_EQ(collectError(), validatePartPath(mRoot, {1, 2}).string() + ": is a folder, not a file");
 }
 
 }  // namespace

@@ -33,15 +33,21 @@ PolynomialPiece readScatteringSpectrum(const schema::Node& n) {
   if (count < 1 || count > 4) n.fail(fmt::format("expected 1 to 4 polynomial coefficients (up to a cubic), got {}", count));
   PolynomialPiece p = greyScattering();
   for (std::size_t i = 0; i < count; ++i) p.coeffs[i] = n.element(i).number(schema::Range::any().forFloat());
-  double lowest = 0.0, lowestAt = 0.0;  // the most negative value over the band, if any
+  double lowest = 0.0, lowestAt = 0.0, highest = 0.0;  // the most negative value over the band, if any
   for (int i = 0; i <= 400; ++i) {
     const double lambdaUm = kBandLoUm + (kBandHiUm - kBandLoUm) * i / 400.0;
     const double v = p.at(lambdaUm);
     if (!(v >= lowest)) lowest = v, lowestAt = lambdaUm;
+    highest = std::max(highest, v);
   }
   if (!(lowest >= 0.0))
     n.fail(fmt::format("the scattering spectrum is {:.3g} at {:.0f} nm: it must be ≥ 0 over {:.0f}–{:.0f} nm", lowest,
                        lowestAt * 1000.0, kBandLoUm * 1000.0, kBandHiUm * 1000.0));
+  // None at all left the starlight's basis without a direction (a singular Gram matrix, after the
+  // precomputation): "scattering" says how much, this only its shape.
+  if (highest == 0.0)
+    n.fail(fmt::format("the scattering spectrum is 0 over {:.0f}–{:.0f} nm; for no scattering give \"scattering\": 0",
+                       kBandLoUm * 1000.0, kBandHiUm * 1000.0));
   return p;
 }
 

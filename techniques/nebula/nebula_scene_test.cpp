@@ -39,6 +39,8 @@ TEST(NebulaScene, BadValuesNameTheirPlace) {
         "lines, ionisation, stars, star_model, filters, passbands, camera, steps)");
   check("n5.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": [1, -2]}})",
         "/nebula/scattering_spectrum: the scattering spectrum is -0.56 at 780 nm: it must be ≥ 0 over 380–780 nm");
+  check("n6z.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": [0]}})",
+        "/nebula/scattering_spectrum: the scattering spectrum is 0 over 380–780 nm; for no scattering give \"scattering\": 0");
   check("n6.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": [1, 0, 0, 0, 1]}})",
         "/nebula/scattering_spectrum: expected 1 to 4 polynomial coefficients (up to a cubic), got 5");
   check("n7.json", R"({"nebula": {)" + noise + R"(, "stars": [], "scattering_spectrum": "blue"}})",

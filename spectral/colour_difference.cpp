@@ -27,6 +27,10 @@ DeltaEFormula deltaEFormulaFromName(std::string_view name) {
   throw Error("unknown colour-difference formula '" + std::string(name) + "' (known: 76, 94, 2000)");
 }
 
+Eigen::Vector3d labWhite(const Eigen::Vector3d& whiteXyz) {
+  return whiteXyz.cwiseMax(static_cast<double>(shared::kLabWhiteFloor) * whiteXyz.y());
+}
+
 Eigen::Vector3d xyzToLab(const Eigen::Vector3d& xyz, const Eigen::Vector3d& whiteXyz) {
   return toEigen(shared::xyzToLab(toVec3(xyz), toVec3(whiteXyz)));
 }

@@ -50,6 +50,17 @@ TEST(Cielab, WhiteIsL100AndRoundTrips) {
     EXPECT_TRUE(labToXyz(xyzToLab(xyz, white), white).isApprox(xyz, 1e-5)) << xyz.transpose();
 }
 
+// Under a light with no Z at all (a 700 nm line) the white's Z is taken at 1e-6 of its Y: a* and
+// b* were NaN (`colour xyz --illuminant led:700:0.01` printed "Lab 76 0 -nan").
+TEST(Cielab, AWhiteMissingAChannelGivesFiniteLab) {
+  const Eigen::Vector3d white(0.73, 0.27, 0.0);
+  const Eigen::Vector3d lab = xyzToLab(0.5 * white, white);
+  EXPECT_TRUE(lab.allFinite()) << lab.transpose();
+  EXPECT_NEAR(lab.x(), 76.06, 0.01);
+  EXPECT_NEAR(labWhite(white).z(), 1e-6 * 0.27, 1e-15);  // the floor in float
+  EXPECT_TRUE(labToXyz(lab, white).allFinite());
+}
+
 TEST(DeltaE, FormulaNames) {
   EXPECT_EQ(deltaEFormulaFromName("94"), DeltaEFormula::Cie94);
   EXPECT_THROW(deltaEFormulaFromName("1976"), Error);

@@ -78,8 +78,14 @@ Spectrum blackbodyIlluminant(double temperatureK) {
 Spectrum narrowbandLed(double peakNm, double widthNm) {
   if (!(peakNm >= kLambdaMinNm && peakNm <= kLambdaMaxNm))
     throw Error("led: peak wavelength must be within 360–830 nm, got " + std::to_string(peakNm));
-  if (!(widthNm > 0.0 && widthNm <= 200.0))
-    throw Error("led: spectral width must be within (0, 200] nm, got " + std::to_string(widthNm));
+  // Spectra are sampled at whole nanometres: narrower, the samples miss the line (0.01 nm at 700 nm
+  // was one sample, and a white with no Z made CIELAB NaN), and their sum is no longer its integral.
+  if (!(widthNm >= 1.0 && widthNm <= 200.0)) {
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, widthNm).ptr;  // shortest: 0.01, not 0.010000
+    throw Error("led: spectral width must be within 1–200 nm (spectra are sampled at whole nm), got " +
+                std::string(text, end));
+  }
   return Spectrum::fromFunction([=](double lambdaNm) {
     double d = (lambdaNm - peakNm) / widthNm;
     double g = std::exp(-d * d);

@@ -28,7 +28,15 @@
 namespace prism {
 namespace {
 
-constexpr int kFitVersion = 3;  // 2: a checksum line; 3: fitWhite's floor
+constexpr int kFitVersion = 4;  // 2: a checksum line; 3: fitWhite's floor; 4: dark nodes weigh 0
+
+// A node where every light × reflectance is below this share of the brightest sample carries no
+// light the renderer's floats hold (an LED at 830 nm, 1 nm wide, is e^−225 at 815 nm): its weights
+// are 0, not the ±1e92 the least squares found, which were ∞ in float and made every pixel NaN.
+constexpr double kDarkNode = 1e-12;
+// Weights a fit never gives (its nodes are at least kDarkNode of the brightest): a cache entry
+// holding one is damaged.
+constexpr double kMaxWeight = 1e30;
 constexpr int kMaxSweeps = 40;
 constexpr double kGridStepNm = 20.0;  // n = 4's exhaustive seed grid
 constexpr int kFinalReweightings = 8;
@@ -81,6 +89,9 @@ class FitData {
     }
     emission_ = lights.front();
     for (std::size_t k = 1; k < lights.size(); ++k) emission_ += lights[k];
+    const double brightest = samples_.cwiseAbs().maxCoeff();
+    for (int i = 0; i < nodes_; ++i)
+      if (!(samples_.row(i).cwiseAbs().maxCoeff() >= kDarkNode * brightest)) samples_.row(i).setZero();
   }
 
   int first() const { return first_; }
@@ -118,7 +129,7 @@ class FitData {
  private:
   int first_ = 0;
   int nodes_ = 0;
-  Eigen::MatrixXd samples_;  // nodes × pairs: light·reflectance at each whole nm
+  Eigen::MatrixXd samples_;  // nodes × pairs: light·reflectance at each whole nm (0 at dark nodes)
   Eigen::Matrix<double, 3, Eigen::Dynamic> truth_, weight2_, truthLab_, white_;
   Spectrum emission_;
 };
@@ -254,7 +265,7 @@ std::optional<FittedWavelengths> parse(const std::filesystem::path& path, std::u
   for (int c = 0; c < 3; ++c) {
     if (!(in >> word) || word != "weights") return std::nullopt;
     for (int i = 0; i < count; ++i)
-      if (!(in >> set.weights(c, i)) || !std::isfinite(set.weights(c, i))) return std::nullopt;
+      if (!(in >> set.weights(c, i)) || !(std::abs(set.weights(c, i)) <= kMaxWeight)) return std::nullopt;
   }
   if (in >> word) return std::nullopt;  // nothing after the last weights
   return set;
@@ -311,8 +322,7 @@ FittedWavelengths fitWavelengths(const WavelengthFitProblem& problem, const Obse
 }
 
 Eigen::Vector3d fitWhite(const Spectrum& light, const Observer& obs) {
-  const Eigen::Vector3d white = obs.integrate(light);
-  return white.cwiseMax(kFitWhiteFloor * white.y());
+  return labWhite(obs.integrate(light));
 }
 
 FitError fitError(const FittedWavelengths& set, const WavelengthFitProblem& problem, const Observer& obs) {

@@ -55,10 +55,9 @@ FittedWavelengths fitWavelengths(const WavelengthFitProblem& problem, const Obse
                                  const FitProgress& progress = {});
 
 // The white a light's colours are put into CIELAB against, for the fit and every report of it: the
-// light's XYZ under `obs`, each channel at least kFitWhiteFloor of its Y. A light that a channel
-// all but misses (a far-red LED's Z, 1e-81 of its Y) would otherwise weigh that channel's errors
-// by 1/Z, past what the least squares can hold.
-inline constexpr double kFitWhiteFloor = 1e-6;
+// light's XYZ under `obs`, each channel at least 1e-6 of its Y, as CIELAB takes it (labWhite,
+// colour_difference.h). A light that a channel all but misses (a far-red LED's Z, 1e-81 of its Y)
+// would otherwise weigh that channel's errors by 1/Z, past what the least squares can hold.
 Eigen::Vector3d fitWhite(const Spectrum& light, const Observer& obs);
 
 // The mean and largest ΔE00 of a set over the problem's lights × reflectances (CIELAB relative to

@@ -63,6 +63,25 @@ TEST(WavelengthFit, AFarRedLightFits) {
   EXPECT_LT(error.mean, 1.0);
 }
 
+// A light at the range's end, 1 nm wide: 16 whole-nm wavelengths must reach where it is e^−225 of
+// its peak. Those nodes weigh 0; the least squares gave them ±1e92, ∞ in the renderer's floats,
+// which made every pixel NaN.
+TEST(WavelengthFit, NodesWithoutLightWeighNothing) {
+  const Observer& cie = observer("cie1931");
+  const Spectrum led = illuminant("led:830:1");
+  const WavelengthFitProblem problem{{led}, colourCheckerReflectances(), 16};
+  const FittedWavelengths set = fitWavelengths(problem, cie);
+  const double peak = led[830 - kLambdaMinNm];
+  for (std::size_t i = 0; i < set.lambdaNm.size(); ++i) {
+    const bool dark = led[static_cast<int>(set.lambdaNm[i]) - kLambdaMinNm] < 1e-12 * peak;
+    for (int c = 0; c < 3; ++c) {
+      if (dark) EXPECT_EQ(set.weights(c, static_cast<Eigen::Index>(i)), 0.0) << set.lambdaNm[i];
+      EXPECT_LT(std::abs(set.weights(c, static_cast<Eigen::Index>(i))), 1e12) << set.lambdaNm[i];
+    }
+  }
+  EXPECT_LT(fitError(set, problem, cie).mean, 0.5);
+}
+
 // The Optimised strategy's sampler gives the fitted wavelengths every frame and the fitted matrix,
 // not c̄/(n·pdf): its estimate is the fit's.
 TEST(WavelengthFit, OptimisedSamplerUsesTheFittedSet) {

@@ -23,11 +23,18 @@ PRISM_INLINE float labFDerivative(float t) {
   return kappa / 116.0f;
 }
 
+// The white CIELAB divides by: each channel at least kLabWhiteFloor of its Y. A light that all but
+// misses a channel (a far-red LED's Z, 1e-81 of its Y; none at all under a 700 nm line) gave a* or
+// b* of ±∞ or NaN.
+const float kLabWhiteFloor = 1e-6f;
+PRISM_INLINE vec3 labWhite(IN(vec3) whiteXyz) { return max(whiteXyz, vec3(kLabWhiteFloor * whiteXyz.y)); }
+
 // xyz and whiteXyz on the same scale (e.g. white Y = 1 or 100); returns (L*, a*, b*).
 PRISM_INLINE vec3 xyzToLab(IN(vec3) xyz, IN(vec3) whiteXyz) {
-  float fx = labF(xyz.x / whiteXyz.x);
-  float fy = labF(xyz.y / whiteXyz.y);
-  float fz = labF(xyz.z / whiteXyz.z);
+  vec3 white = labWhite(whiteXyz);
+  float fx = labF(xyz.x / white.x);
+  float fy = labF(xyz.y / white.y);
+  float fz = labF(xyz.z / white.z);
   return vec3(116.0f * fy - 16.0f, 500.0f * (fx - fy), 200.0f * (fy - fz));
 }
 
@@ -43,8 +50,8 @@ PRISM_INLINE vec3 labToXyz(IN(vec3) lab, IN(vec3) whiteXyz) {
   float fy = (lab.x + 16.0f) / 116.0f;
   float fx = fy + lab.y / 500.0f;
   float fz = fy - lab.z / 200.0f;
-  return vec3(labFInverse(fx) * whiteXyz.x, labFInverse(fy) * whiteXyz.y,
-              labFInverse(fz) * whiteXyz.z);
+  vec3 white = labWhite(whiteXyz);
+  return vec3(labFInverse(fx) * white.x, labFInverse(fy) * white.y, labFInverse(fz) * white.z);
 }
 
 PRISM_INLINE float deltaE76(IN(vec3) lab1, IN(vec3) lab2) {

@@ -75,7 +75,9 @@ TEST(WavelengthFit, NodesWithoutLightWeighNothing) {
   for (std::size_t i = 0; i < set.lambdaNm.size(); ++i) {
     const bool dark = led[static_cast<int>(set.lambdaNm[i]) - kLambdaMinNm] < 1e-12 * peak;
     for (int c = 0; c < 3; ++c) {
-      if (dark) EXPECT_EQ(set.weights(c, static_cast<Eigen::Index>(i)), 0.0) << set.lambdaNm[i];
+      if (dark) {
+        EXPECT_EQ(set.weights(c, static_cast<Eigen::Index>(i)), 0.0) << set.lambdaNm[i];
+      }
       EXPECT_LT(std::abs(set.weights(c, static_cast<Eigen::Index>(i))), 1e12) << set.lambdaNm[i];
     }
   }

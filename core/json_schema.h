@@ -133,7 +133,8 @@ std::filesystem::path confinedFile(const std::filesystem::path& root,
 // Whether `path`, once symbolic links are resolved, lies inside `root` (itself resolved).
 bool isInside(const std::filesystem::path& root, const std::filesystem::path& path);
 
-// A whole file as bytes; Error naming the file when it cannot be read or is no regular file.
+// A whole file (or pipe) as bytes; Error naming the file when it cannot be read, or is a device or
+// a socket.
 std::vector<unsigned char> readBinaryFile(const std::filesystem::path& path);
 
 }  // namespace prism::schema

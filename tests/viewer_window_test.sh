@@ -139,4 +139,16 @@ screenshot $texture" "script:2: $texture: is also a file the scene reads"
 view_error "save-settings $scratch/own/script" "script:1: $scratch/own/script: is also the script"
 grep -q '^save-settings' "$scratch/own/script"
 view_error "load-settings /dev/zero" "script:1: /dev/zero: not a regular file"
+# The rehearsal: a bad value, a light the scene lacks, a missing settings file fail at their lines
+# before a screenshot above them is written (it was, then the error came).
+for bad in "set mode bogus|script:2: mode: expected" "set light.9.intensity 5|script:2: light index: expected" \
+           "load-settings $scratch/own/none.json|script:2: $scratch/own/none.json"; do
+  rm -f "$scratch/own/early.png"
+  view_error "screenshot $scratch/own/early.png
+${bad%%|*}" "${bad#*|}"
+  [ ! -e "$scratch/own/early.png" ] || { echo "'${bad%%|*}': the screenshot above it was written" >&2; exit 1; }
+done
+# A settings file the script saves before loading it is taken as it, not refused as missing.
+view "$scratch/own/textured_gltf.json" --width 64 --height 48 --script <(printf 'save-settings %s\nload-settings %s\n' \
+  "$scratch/own/saved.json" "$scratch/own/saved.json") >/dev/null
 echo "outputs over the scene's files and the script refused; /dev/zero refused"

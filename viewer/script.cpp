@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <sstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -11,6 +11,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "core/json_schema.h"
 #include "render/setting_keys.h"
 #include "viewer/camera_controller.h"
@@ -51,6 +52,8 @@ std::vector<std::string> wordsOf(const std::string& text) {
   return words;
 }
 
+constexpr float kMaxSoakGrowthMb = 1e6f;  // a terabyte: any bound a soak could mean
+
 // What a command's arguments must be, checked before the script runs; execute() relies on it.
 void checkCommand(const std::vector<std::string>& w) {
   const std::string& verb = w[0];
@@ -59,6 +62,9 @@ void checkCommand(const std::vector<std::string>& w) {
   };
   if (verb == "set" || verb == "orbit") {
     need(2);
+    for (const char* side : {"width", "height", "right.width", "right.height"})
+      if (verb == "set" && w[1] == side)
+        throw Error(fmt::format("{}: the views take the window's size; `resize WIDTH HEIGHT` sets it", side));
     if (verb == "orbit") {
       render::parseFloat("yaw", w[1]);
       render::parseFloat("pitch", w[2]);
@@ -72,30 +78,43 @@ void checkCommand(const std::vector<std::string>& w) {
     render::parseInteger("height", w[2], kMinWindowSide, kMaxWindowSide);
   } else if (verb == "screenshot" || verb == "save-settings" || verb == "load-settings") {
     need(1);
+    const std::string extension = lowercaseExtension(w[1]);
+    if (verb == "screenshot" && extension != ".png" && extension != ".exr")
+      throw Error(fmt::format("{}: a screenshot is a .png or an .exr", excerpt(w[1])));
   } else if (verb == "heat-map-stats" || verb == "reload-shaders") {
     need(0);
   } else if (verb == "soak") {
     if (w.size() != 2 && w.size() != 3) throw Error("soak takes FRAMES and optionally MAX-GROWTH-MB");
     render::parseInteger("soak", w[1], 1, 1000000);
-    if (w.size() == 3) render::parseFloat("soak's memory bound", w[2]);
+    if (w.size() == 3) render::parseFloatWithin("soak's memory bound", w[2], 0.0f, kMaxSoakGrowthMb);
   } else {
     throw Error(fmt::format("unknown command \"{}\" (set, frames, resize, orbit, screenshot, save-settings, "
                             "load-settings, reload-shaders, soak, heat-map-stats)", excerpt(verb)));
   }
 }
 
-void set(Viewer& viewer, const std::string& key, const std::string& value) {
-  Changes& changes = viewer.changes();
-  if (applyViewSetting(viewer.view(), key, value)) {
+// What `set` and `load-settings` change: the viewer's own state, or the rehearsal's copy of it.
+struct Settable {
+  ViewSettings& view;
+  CameraController& camera;
+  Scene& scene;
+  Changes& changes;
+};
+
+void set(const Settable& target, const std::string& key, const std::string& value) {
+  Changes& changes = target.changes;
+  if (applyViewSetting(target.view, key, value)) {
     changes.settings = true;
+    render::validate(target.view.left);  // a bad combination fails here, at its line
+    render::validate(target.view.right);
     return;
   }
   if (key == "fov") {
-    viewer.camera().setFieldOfView(render::parseFloatWithin(key, value, kMinFieldOfViewDeg, kMaxFieldOfViewDeg));
+    target.camera.setFieldOfView(render::parseFloatWithin(key, value, kMinFieldOfViewDeg, kMaxFieldOfViewDeg));
     changes.camera = true;
     return;
   }
-  Scene& scene = viewer.scene();
+  Scene& scene = target.scene;
   for (TechniqueSetKey set : techniqueSetKeys()) {
     if (set(scene, key, value)) {
       changes.scene = true;
@@ -114,11 +133,7 @@ void set(Viewer& viewer, const std::string& key, const std::string& value) {
 void execute(Viewer& viewer, const std::vector<std::string>& w) {
   const std::string& verb = w[0];
   if (verb == "set") {
-    set(viewer, w[1], w[2]);
-    if (viewer.changes().settings) {  // a bad value should fail here, at its line
-      render::validate(viewer.view().left);
-      render::validate(viewer.view().right);
-    }
+    set({viewer.view(), viewer.camera(), viewer.scene(), viewer.changes()}, w[1], w[2]);
   } else if (verb == "frames") {
     long n = render::parseInteger("frames", w[1], 0, 1000000);
     for (long i = 0; i < n; ++i) viewer.frame();
@@ -147,7 +162,8 @@ void execute(Viewer& viewer, const std::vector<std::string>& w) {
     viewer.reloadShaders();
   } else if (verb == "soak") {
     soak(viewer, static_cast<int>(render::parseInteger("soak", w[1], 1, 1000000)),
-         w.size() == 3 ? std::optional<double>(render::parseFloat("soak's memory bound", w[2])) : std::nullopt);
+         w.size() == 3 ? std::optional<double>(render::parseFloatWithin("soak's memory bound", w[2], 0.0f, kMaxSoakGrowthMb))
+                       : std::nullopt);
   }
 }
 
@@ -175,12 +191,29 @@ Script loadScript(const std::filesystem::path& path) {
 }
 
 int runScript(Viewer& viewer, const Script& script) {
-  // The files it writes, before anything renders: none over the script or a file the scene reads.
+  // A rehearsal before anything renders, so that a bad line fails before the lines above it have
+  // written their screenshots: the files it writes (none over the script or a file the scene
+  // reads), and every `set` and `load-settings` on copies of the viewer's state (a key, a value, a
+  // light or material the scene lacks, a settings file; one the script saves first is taken as it).
+  ViewSettings view = viewer.view();
+  CameraController camera = viewer.camera();
+  Scene scene = viewer.scene();
+  Changes changes;
+  std::vector<std::filesystem::path> saved;
   for (const ScriptLine& line : script.lines) {
-    if (line.words[0] != "screenshot" && line.words[0] != "save-settings") continue;
+    const std::vector<std::string>& w = line.words;
     try {
-      requireOtherFile(line.words[1], script.path, "the script");
-      viewer.requireOutputClear(line.words[1]);
+      if (w[0] == "screenshot" || w[0] == "save-settings") {
+        requireOtherFile(w[1], script.path, "the script");
+        viewer.requireOutputClear(w[1]);
+        if (w[0] == "save-settings") saved.emplace_back(w[1]);
+      } else if (w[0] == "set") {
+        set({view, camera, scene, changes}, w[1], w[2]);
+      } else if (w[0] == "load-settings" && std::find(saved.begin(), saved.end(), w[1]) == saved.end()) {
+        Camera loaded = camera.camera();
+        loadViewSettings(w[1], view, loaded);
+        camera = CameraController(loaded);
+      }
     } catch (const std::exception& e) {
       fmt::print(stderr, "prism: error: {}:{}: {}\n", script.path.string(), line.line, e.what());
       return 1;

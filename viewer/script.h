@@ -22,13 +22,17 @@ struct Script {
   std::vector<ScriptLine> lines;
 };
 
-// Reads and checks a script: Error "FILE: …" when it cannot be read (a folder, a missing file),
-// "FILE:LINE: …" for an unknown command, a wrong number of arguments, a count or angle that is not
-// a number in its range, or an unterminated quote. Words are separated by spaces; "…" keeps
+// Reads and checks a script: Error "FILE: …" when it cannot be read (a folder, a missing file, a
+// device), "FILE:LINE: …" for an unknown command, a wrong number of arguments, a count or angle
+// that is not a number in its range, a screenshot that is not .png or .exr, `set width` (the window
+// has the views' size: `resize`), or an unterminated quote. Words are separated by spaces; "…" keeps
 // spaces inside one (set light.0.spd "nist:Cool White FL"); # outside quotes starts a comment.
 Script loadScript(const std::filesystem::path& path);
 
-// The exit code: 0, or 1 after a failing command.
+// The exit code: 0, or 1 after a failing command. First, before anything renders, a rehearsal
+// on copies of the viewer's state: every `set` and `load-settings` (keys, values, the scene's
+// lights and materials, settings files) and the files it writes (none over the script or a file
+// the scene reads), so that a bad line fails before the lines above it have written anything.
 int runScript(Viewer& viewer, const Script& script);
 
 }  // namespace prism::viewer

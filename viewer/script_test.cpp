@@ -53,6 +53,16 @@ TEST(Script, EveryLineIsCheckedBeforeAnythingRuns) {
   EXPECT_EQ(loadError(quote), quote.string() + ":1: a quote is not closed");
   const std::filesystem::path orbit = scriptFile("orbit.txt", "orbit left 10\n");
   EXPECT_NE(loadError(orbit).find(":1: yaw: expected"), std::string::npos) << loadError(orbit);
+  // A negative soak bound passed, ran the soak and failed it; a .jpg screenshot and `set width`
+  // (the views take the window's size, so it did nothing) were found only at their lines.
+  const std::filesystem::path soak = scriptFile("soak.txt", "soak 1 -5\n");
+  EXPECT_NE(loadError(soak).find(":1: soak's memory bound: expected a number within 0"), std::string::npos)
+      << loadError(soak);
+  const std::filesystem::path jpg = scriptFile("jpg.txt", "frames 1\nscreenshot x.jpg\n");
+  EXPECT_EQ(loadError(jpg), jpg.string() + ":2: x.jpg: a screenshot is a .png or an .exr");
+  const std::filesystem::path width = scriptFile("width.txt", "set right.width 4000\n");
+  EXPECT_EQ(loadError(width),
+            width.string() + ":1: right.width: the views take the window's size; `resize WIDTH HEIGHT` sets it");
   const std::filesystem::path dir = std::filesystem::path(::testing::TempDir());
   EXPECT_EQ(loadError(dir), dir.string() + ": is a folder, not a script");
   EXPECT_EQ(loadError(dir / "missing.txt"), (dir / "missing.txt").string() + ": cannot read the script");

@@ -1,5 +1,6 @@
 #include "viewer/viewer_settings.h"
 
+#include <cmath>
 #include <optional>
 
 #include <fmt/format.h>
@@ -13,9 +14,15 @@
 namespace prism::viewer {
 namespace {
 
+// Within ±schema::kFloatInputLimit, as a scene's camera: [1e30, 0, 0] was refused as a target
+// equal to the position (its squared length overflowed float), 1e15 taken.
 glm::vec3 vec3Of(const nlohmann::json& j, const std::string& where) {
-  if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number()) {
-    throw Error(fmt::format("{}: expected [x, y, z], got {}", where, excerpt(j.dump())));
+  auto inRange = [](const nlohmann::json& v) {
+    return v.is_number() && std::abs(v.get<double>()) <= schema::kFloatInputLimit;
+  };
+  if (!j.is_array() || j.size() != 3 || !inRange(j[0]) || !inRange(j[1]) || !inRange(j[2])) {
+    throw Error(fmt::format("{}: expected [x, y, z], each within ±{:g}, got {}", where, schema::kFloatInputLimit,
+                            excerpt(j.dump())));
   }
   return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
 }
@@ -102,8 +109,8 @@ void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Cam
         if (k == "position") nextCamera.position = vec3Of(v, where);
         else if (k == "target") nextCamera.target = vec3Of(v, where);
         else if (k == "up") nextCamera.up = vec3Of(v, where);
-        else if (k == "fov_deg" && v.is_number() && v.get<float>() > 0.0f && v.get<float>() < 180.0f)
-          nextCamera.verticalFovDeg = v.get<float>();
+        else if (k == "fov_deg" && v.is_number() && v.get<double>() >= 1e-3 && v.get<double>() < 180.0)
+          nextCamera.verticalFovDeg = v.get<float>();  // a scene's range: 1e-30 made a singular projection
         else throw Error(fmt::format("{}: unknown key or bad value {}", where, excerpt(v.dump())));
       }
     } else {

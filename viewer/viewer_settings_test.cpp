@@ -107,6 +107,22 @@ TEST(ViewerSettings, FilesRoundTripAndBadOnesChangeNothing) {
   }
   std::ofstream(dir / "unknown.json") << R"({"lefty": {}})";
   EXPECT_THROW(loadViewSettings(dir / "unknown.json", loaded, loadedCamera), Error);
+  // The camera as a scene's: a field of view of 1e-30 and a position of 1e15 were taken, 1e30 was
+  // refused as a target equal to the position.
+  auto cameraError = [&](const std::string& json) {
+    std::ofstream(dir / "camera.json") << R"({"camera": )" + json + "}";
+    try {
+      loadViewSettings(dir / "camera.json", loaded, loadedCamera);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("loaded");
+  };
+  EXPECT_NE(cameraError(R"({"fov_deg": 1e-30})").find("/camera/fov_deg: unknown key or bad value"), std::string::npos);
+  EXPECT_EQ(cameraError(R"({"fov_deg": 179.99})"), "loaded");
+  EXPECT_NE(cameraError(R"({"position": [1e15, 0, 1]})").find("/camera/position: expected [x, y, z], each within ±1e+12"),
+            std::string::npos)
+      << cameraError(R"({"position": [1e15, 0, 1]})");
 }
 
 }  // namespace

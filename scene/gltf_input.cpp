@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -109,7 +110,15 @@ bool guardedImageLoader(tinygltf::Image* image, const int index, std::string* er
                         std::string* warn, int width, int height, const unsigned char* bytes,
                         int size, void* user) {
   auto* guard = static_cast<Guard*>(user);
-  std::string why = unsupportedImage({bytes, static_cast<std::size_t>(std::max(size, 0))});
+  const std::span<const std::uint8_t> file(bytes, static_cast<std::size_t>(std::max(size, 0)));
+  std::string why = unsupportedImage(file);
+  if (why.empty() && sniffImage(file) == ImageKind::Png) {  // as decodeImage does: a 16385-wide PNG
+    try {                                                  // decoded, then failed in glTexStorage2D
+      imaging::checkPngBeforeDecoding("the PNG", file);
+    } catch (const Error& e) {
+      why = e.what();
+    }
+  }
   if (!why.empty()) {
     guard->imageIndex = index;
     guard->imageError = why;
@@ -155,6 +164,40 @@ bool hasScheme(const std::string& uri) {
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '+' && c != '-' && c != '.') return false;
   }
   return true;
+}
+
+// glTF's ids and sizes (a glTFid, byteOffset, count, …) are whole numbers ≥ 0 (glTF 2.0 §5):
+// tinygltf took "indices": -1 for none, drawing the mesh as a triangle soup, and a byteOffset of
+// −4 for 0. Numbers only: other types are tinygltf's to refuse; extras and extensions are free.
+void checkIdsAndSizes(const Node& node) {
+  static constexpr std::string_view kIds[] = {"indices",    "material",   "bufferView", "buffer",  "byteOffset",
+                                              "byteLength", "byteStride", "count",      "source",  "sampler",
+                                              "index",      "texCoord",   "mesh",       "camera",  "skin",
+                                              "scene",      "nodes",      "children"};
+  auto requireId = [](const Node& n) {
+    const double v = n.json().get<double>();
+    if (!(v >= 0.0 && v == std::floor(v))) n.fail("expected a whole number ≥ 0, got " + schema::describe(n.json()));
+  };
+  if (!node.json().is_object()) return;
+  for (const std::string& key : node.keys()) {
+    if (key == "extras" || key == "extensions") continue;
+    const Node child = node.child(key);
+    const nlohmann::json& value = child.json();
+    const bool ids = std::find(std::begin(kIds), std::end(kIds), key) != std::end(kIds);
+    if (value.is_number()) {
+      if (ids) requireId(child);
+    } else if (value.is_array()) {
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        if (!value[i].is_number()) checkIdsAndSizes(child.element(i));
+        else if (ids) requireId(child.element(i));
+      }
+    } else if (key == "attributes" && value.is_object()) {
+      for (const std::string& attribute : child.keys())
+        if (child.child(attribute).json().is_number()) requireId(child.child(attribute));
+    } else {
+      checkIdsAndSizes(child);
+    }
+  }
 }
 
 void checkUris(const Node& top, const fs::path& root, const fs::path& base) {
@@ -213,6 +256,9 @@ std::string_view glbJson(const std::vector<unsigned char>& bytes, const std::str
 Image toImage(const tinygltf::Image& src, bool srgb, std::string source) {
   if (src.width < 1 || src.height < 1 || src.component != 4 || (src.bits != 8 && src.bits != 16))
     throw Error("image was not decoded to 8- or 16-bit RGBA");
+  if (src.width > imaging::kMaxPngSide || src.height > imaging::kMaxPngSide)  // a JPEG's header is not read ahead
+    throw Error("an image of " + std::to_string(src.width) + " × " + std::to_string(src.height) +
+                " pixels; Prism reads 1 to " + std::to_string(imaging::kMaxPngSide) + " on each side");
   Image image;
   image.width = src.width;
   image.height = src.height;
@@ -263,6 +309,7 @@ tinygltf::Model loadGltfModel(const fs::path& file, const fs::path& root, std::v
   if (!version.string().starts_with("2.")) version.fail("glTF " + excerpt(version.string()) + ": Prism reads glTF 2.x");
   fs::path base = file.parent_path().empty() ? fs::path(".") : file.parent_path();
   checkUris(top, root, base);
+  checkIdsAndSizes(top);
 
   Guard guard{root, {}, -1, {}, {}};
   tinygltf::TinyGLTF loader;

@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "imaging/png_file.h"
 
 namespace prism {
 namespace {
@@ -145,6 +146,28 @@ TEST(GltfLoader, DecodeImageRefusesWhatIsNotPngOrJpeg) {
     ADD_FAILURE() << "no Error";
   } catch (const Error& e) {
     EXPECT_STREQ(e.what(), "not a PNG or JPEG image (only PNG and JPEG are supported)");
+  }
+}
+
+// A texture wider than Prism reads (16 384, what it can write), refused at its image before it is
+// decoded: it rendered with exit 0, its glTexStorage2D refused and the texture empty.
+TEST(GltfLoader, ATextureBeyondTheLargestSideIsRefusedAtItsImage) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_wide_texture";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(kGltfFixtures / "quad.gltf"));
+  gltf["images"][0] = {{"uri", "wide.png"}};
+  std::ofstream(dir / "quad.gltf") << gltf.dump();
+  imaging::PngImage(imaging::kMaxPngSide + 1, 1, {128, 128, 128}).write(dir / "wide.png");
+  Scene scene;
+  try {
+    appendGltf(dir / "quad.gltf", dir, {}, scene);
+    ADD_FAILURE() << "no Error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("quad.gltf: /images/0: the PNG: an image of 16385 × 1 pixels; Prism reads "
+                                         "1 to 16384 on each side"),
+              std::string::npos)
+        << e.what();
   }
 }
 

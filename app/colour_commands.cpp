@@ -166,6 +166,7 @@ void colourDeltaE(const DeltaEOptions& o) {
 
 void colourCct(const CctOptions& o) {
   if (o.stepNm < 1 || o.stepNm > 10) throw Error("--step must be within 1–10 nm");
+  if (!o.output.empty()) requireExtension(o.output, ".csv", "-o", "spectrum");
   Spectrum s = daylight(o.cctK);
   std::ostringstream csv;
   csv << "wavelength_nm,value\n";
@@ -314,6 +315,7 @@ void colourSpectralTexture(const SpectralTextureOptions& o) {
 
 void colourMetamer(const MetamerOptions& o) {
   if (!o.output.empty()) {
+    requireExtension(o.output, ".csv", "-o", "metamer");  // -o m.png wrote CSV text into a .png
     requireWritable(o.output);
     requireOtherFile(o.output, o.reflectance, "the reflectance (--reflectance)");
   }

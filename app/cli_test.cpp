@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <nlohmann/json.hpp>
 
 #include "app/cli_test_support.h"
@@ -538,6 +539,15 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   expectOneLineError("nebula basis --max-exponent inf", "max depth and max exponent within (0, 1000]");
   expectOneLineError("nebula basis --spacing nan", "spacing within [0, max exponent]");
   expectOneLineError("nebula basis --spacing 1.5 --count 3", "only 2 of 3 elements found");
+  // Exponents whose e^(−a/λ) vanishes over the band add no direction: the same a = 287.5 µm came
+  // back as elements 2 to 6, and on a band of 1e-30 µm a = 0.005 five times.
+  Result wide = run("nebula basis --max-exponent 1000 --json");
+  ASSERT_EQ(wide.exitCode, 0) << wide.err;
+  std::set<double> exponents;
+  const nlohmann::json elements = nlohmann::json::parse(wide.out)["elements"];
+  for (const nlohmann::json& e : elements) exponents.insert(e["a_um"].get<double>());
+  EXPECT_EQ(exponents.size(), 6u) << wide.out;
+  expectOneLineError("nebula basis --domain 1e-30,1e-29", "only 1 of 6 elements found");
   std::filesystem::create_directories(dir / "folder.svg");
   expectOneLineError("nebula sweep " + tiny + " --plot " + (dir / "folder.svg").string(), "is a folder");
   expectOneLineError("nebula sweep " + tiny + " --size 0", "--size: 0 is not within 1..4096");

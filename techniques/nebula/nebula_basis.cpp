@@ -35,6 +35,10 @@ GreedyResult greedyBasis(const Eigen::MatrixXd& family, const Eigen::MatrixXd& c
     for (Eigen::Index j = 0; j < residual.cols(); ++j) worst = std::max(worst, residual.col(j).norm() / norms(j));
     result.maxError.push_back(worst);
   };
+  // A candidate that vanishes over the domain (e^(−a/λ) past double's range: a = 288 µm under
+  // 1 µm) has no direction of its own, and its part "orthogonal" to the basis is rounding noise
+  // however large relative to it: the same one was chosen again and again.
+  const double largest = C.colwise().norm().maxCoeff();
   for (int c : initial) add(c);
   while (static_cast<int>(result.chosen.size()) < count) {
     int best = -1;
@@ -45,7 +49,8 @@ GreedyResult greedyBasis(const Eigen::MatrixXd& family, const Eigen::MatrixXd& c
         for (int k : result.chosen)
           near = near || std::abs(keys[static_cast<std::size_t>(c)] - keys[static_cast<std::size_t>(k)]) <
                              minKeySeparation - 1e-12;
-      if (near) continue;
+      if (near || std::find(result.chosen.begin(), result.chosen.end(), c) != result.chosen.end()) continue;
+      if (!(C.col(c).norm() >= minNewDirection * largest)) continue;
       Eigen::VectorXd u = C.col(c) - basis * (basis.transpose() * C.col(c));
       double n = u.norm();
       if (n < minNewDirection * C.col(c).norm()) continue;

@@ -17,8 +17,10 @@ struct GreedyResult {
   std::vector<double> maxError;    // the worst relative projection error after each addition
 };
 // A candidate whose key (its exponent a) is within minKeySeparation of a chosen one's is skipped,
-// and so is one whose part orthogonal to the basis is below minNewDirection of its norm (which
-// bounds the Gram matrix's conditioning); the result may then hold fewer than `count` elements.
+// and so is one chosen already, one whose norm is below minNewDirection of the largest candidate's
+// (it vanishes over the domain), or one whose part orthogonal to the basis is below minNewDirection
+// of its norm (which bounds the Gram matrix's conditioning); the result may then hold fewer than
+// `count` elements.
 GreedyResult greedyBasis(const Eigen::MatrixXd& family, const Eigen::MatrixXd& candidates,
                          const Eigen::VectorXd& weights, int count, const std::vector<int>& initial,
                          const std::vector<double>& keys = {}, double minKeySeparation = 0.0,

@@ -187,6 +187,9 @@ void requireOutputsClear(const std::filesystem::path& folder, const std::vector<
 void runGallery(const GalleryOptions& o) {
   std::filesystem::path sceneDir = o.scenes.empty() ? exampleSceneDirectory() : o.scenes;
   std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  if (std::filesystem::exists(sceneDir, ec) && !std::filesystem::is_directory(sceneDir, ec))
+    throw Error(sceneDir.string() + ": not a folder (--scenes names the folder of the scene files)");
   if (std::filesystem::is_directory(sceneDir)) {
     for (const auto& entry : std::filesystem::directory_iterator(sceneDir)) {
       if (lowercaseExtension(entry.path()) == ".json") files.push_back(entry.path());

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "app/camera_option.h"
 #include "core/atomic_file.h"
 #include "imaging/spectral_texture_file.h"
 #include "spectral/camera_matrix.h"
@@ -221,8 +222,7 @@ void colourConvert(const ConvertOptions& o) {
 }
 
 void colourCameraMatrix(const CameraMatrixOptions& o) {
-  const Observer& camera = observer(o.camera);
-  if (!camera.isCamera) throw Error("colour camera-matrix: '" + o.camera + "' is not a camera");
+  const Observer& camera = cameraOption(o.camera);
   CameraMatrixFit fit = fitCameraToXyz(camera, illuminant(o.illuminant), observer("cie1931"));
   if (o.json) {
     fmt::print("{}\n", json{{"camera", o.camera}, {"illuminant", o.illuminant},

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "app/camera_option.h"
 #include "batch/reference_part.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -92,9 +93,7 @@ reference::ReferenceSettings referenceSettings(const ReferenceOptions& o) {
   }
   s.filter = reference::pixelFilterFromName(o.filter);
   s.observer = o.camera.empty() ? o.observer : o.camera;
-  if (!o.camera.empty() && !observer(o.camera).isCamera) {
-    throw Error(fmt::format("--camera: \"{}\" is not a camera (see `prism colour list cameras`)", o.camera));
-  }
+  if (!o.camera.empty()) cameraOption(o.camera);
   if (!o.range.empty()) {
     if (o.range.size() != 2) throw Error("--range: expected MIN,MAX in nm");
     s.wavelengths.minNm = o.range[0];

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "app/camera_option.h"
 #include "gpu/headless_context.h"
 #include "harness/display_png.h"
 #include "harness/optimised_wavelengths.h"
@@ -28,9 +29,7 @@ render::FrameSettings frameSettings(const SettingsOptions& o) {
     if (!render::applyFrameSetting(s, key, value)) throw Error(fmt::format("unknown setting \"{}\"", key));
   }
   if (!o.camera.empty()) {
-    if (!observer(o.camera).isCamera) {
-      throw Error(fmt::format("--camera: \"{}\" is not a camera (see `prism colour list cameras`)", o.camera));
-    }
+    cameraOption(o.camera);
     s.observer = o.camera;
   }
   render::validate(s);

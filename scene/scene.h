@@ -36,6 +36,10 @@ inline constexpr float kEv100Limit = 50.0f;
 // at 0.0002, 1.46 at 0.0001, 38.9 at 1e-5 (mostly black below). sunset's sky needs 120 000.
 inline constexpr float kMaxFarOverNear = 2e5f;
 
+// A camera's vertical field of view in degrees lies in [kMinCameraFovDeg, kMaxCameraFovDeg): a
+// vanishing one made a singular projection.
+inline constexpr double kMinCameraFovDeg = 1e-3, kMaxCameraFovDeg = 180.0;
+
 struct Camera {
   glm::vec3 position{0.0f, 1.0f, 5.0f};
   glm::vec3 target{0.0f, 1.0f, 0.0f};

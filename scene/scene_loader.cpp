@@ -111,7 +111,7 @@ class SceneParser {
     c.position = n.vec3("position", c.position);
     c.target = n.vec3("target", c.target);
     c.up = n.vec3("up", c.up);
-    c.verticalFovDeg = n.numberF("fov_deg", c.verticalFovDeg, Range{1e-3, 180.0, false, true});
+    c.verticalFovDeg = n.numberF("fov_deg", c.verticalFovDeg, Range{kMinCameraFovDeg, kMaxCameraFovDeg, false, true});
     c.nearPlane = n.numberF("near", c.nearPlane, Range::above(0.0));
     c.farPlane = n.numberF("far", c.farPlane, Range::above(c.nearPlane));
     if (!n.has("far") && !(c.farPlane > c.nearPlane))

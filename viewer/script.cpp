@@ -1,6 +1,7 @@
 #include "viewer/script.h"
 
 #include <algorithm>
+#include <map>
 #include <cstdio>
 #include <optional>
 #include <sstream>
@@ -62,9 +63,8 @@ void checkCommand(const std::vector<std::string>& w) {
   };
   if (verb == "set" || verb == "orbit") {
     need(2);
-    for (const char* side : {"width", "height", "right.width", "right.height"})
-      if (verb == "set" && w[1] == side)
-        throw Error(fmt::format("{}: the views take the window's size; `resize WIDTH HEIGHT` sets it", side));
+    if (verb == "set" && (w[1] == "width" || w[1] == "height" || w[1] == "right.width" || w[1] == "right.height"))
+      throw Error(fmt::format("{}: the views take the window's size; `resize WIDTH HEIGHT` sets it", w[1]));
     if (verb == "orbit") {
       render::parseFloat("yaw", w[1]);
       render::parseFloat("pitch", w[2]);
@@ -162,7 +162,8 @@ void execute(Viewer& viewer, const std::vector<std::string>& w) {
     viewer.reloadShaders();
   } else if (verb == "soak") {
     soak(viewer, static_cast<int>(render::parseInteger("soak", w[1], 1, 1000000)),
-         w.size() == 3 ? std::optional<double>(render::parseFloatWithin("soak's memory bound", w[2], 0.0f, kMaxSoakGrowthMb))
+         w.size() == 3 ? std::optional<double>(
+                             render::parseFloatWithin("soak's memory bound", w[2], 0.0f, kMaxSoakGrowthMb))
                        : std::nullopt);
   }
 }
@@ -190,34 +191,51 @@ Script loadScript(const std::filesystem::path& path) {
   return script;
 }
 
-int runScript(Viewer& viewer, const Script& script) {
-  // A rehearsal before anything renders, so that a bad line fails before the lines above it have
-  // written their screenshots: the files it writes (none over the script or a file the scene
-  // reads), and every `set` and `load-settings` on copies of the viewer's state (a key, a value, a
-  // light or material the scene lacks, a settings file; one the script saves first is taken as it).
-  ViewSettings view = viewer.view();
-  CameraController camera = viewer.camera();
-  Scene scene = viewer.scene();
+void rehearseScript(const Script& script, ViewSettings view, CameraController camera, Scene scene) {
   Changes changes;
-  std::vector<std::filesystem::path> saved;
+  // What each save-settings line wrote, by the file's resolved path: a later load-settings of it
+  // takes that, as the run will, not the file as it is now (missing, or an older one).
+  std::map<std::filesystem::path, std::pair<ViewSettings, Camera>> saved;
+  auto resolved = [](const std::string& path) {
+    std::error_code ec;
+    std::filesystem::path p = std::filesystem::weakly_canonical(path, ec);
+    return ec ? std::filesystem::path(path) : p;
+  };
   for (const ScriptLine& line : script.lines) {
     const std::vector<std::string>& w = line.words;
     try {
       if (w[0] == "screenshot" || w[0] == "save-settings") {
+        requireWritable(w[1]);
         requireOtherFile(w[1], script.path, "the script");
-        viewer.requireOutputClear(w[1]);
-        if (w[0] == "save-settings") saved.emplace_back(w[1]);
+        requireNotSceneInput(w[1], scene);
+        if (w[0] == "save-settings") saved[resolved(w[1])] = {view, camera.camera()};
       } else if (w[0] == "set") {
         set({view, camera, scene, changes}, w[1], w[2]);
-      } else if (w[0] == "load-settings" && std::find(saved.begin(), saved.end(), w[1]) == saved.end()) {
-        Camera loaded = camera.camera();
-        loadViewSettings(w[1], view, loaded);
-        camera = CameraController(loaded);
+      } else if (w[0] == "orbit") {  // a settings file giving part of the camera is checked with the rest
+        camera.orbit(render::parseFloat("yaw", w[1]) * kDegrees, render::parseFloat("pitch", w[2]) * kDegrees);
+      } else if (w[0] == "load-settings") {
+        std::error_code ec;
+        if (auto it = saved.find(resolved(w[1])); it != saved.end()) {
+          view = it->second.first;
+          camera = CameraController(it->second.second);
+        } else if (!std::filesystem::exists(w[1], ec) || std::filesystem::is_regular_file(w[1], ec)) {
+          Camera loaded = camera.camera();  // a pipe is left to the run, which alone may read it
+          loadViewSettings(w[1], view, loaded);
+          camera = CameraController(loaded);
+        }
       }
     } catch (const std::exception& e) {
-      fmt::print(stderr, "prism: error: {}:{}: {}\n", script.path.string(), line.line, e.what());
-      return 1;
+      throw Error(fmt::format("{}:{}: {}", script.path.string(), line.line, e.what()));
     }
+  }
+}
+
+int runScript(Viewer& viewer, const Script& script) {
+  try {
+    rehearseScript(script, viewer.view(), viewer.camera(), viewer.scene());
+  } catch (const Error& e) {
+    fmt::print(stderr, "prism: error: {}\n", e.what());
+    return 1;
   }
   viewer.frame();
   for (const ScriptLine& line : script.lines) {

@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "scene/scene.h"
+#include "viewer/camera_controller.h"
+#include "viewer/viewer_settings.h"
+
 namespace prism::viewer {
 
 class Viewer;
@@ -29,10 +33,16 @@ struct Script {
 // spaces inside one (set light.0.spd "nist:Cool White FL"); # outside quotes starts a comment.
 Script loadScript(const std::filesystem::path& path);
 
-// The exit code: 0, or 1 after a failing command. First, before anything renders, a rehearsal
-// on copies of the viewer's state: every `set` and `load-settings` (keys, values, the scene's
-// lights and materials, settings files) and the files it writes (none over the script or a file
-// the scene reads), so that a bad line fails before the lines above it have written anything.
+// The script run on copies of the viewer's state, before anything renders, so that a bad line
+// fails before the lines above it have written their files: every `set`, `orbit` and
+// `load-settings` (keys, values, the scene's lights and materials, settings files; one the script
+// saved is taken as saved; a pipe is left to the run), and every file it writes (writable, and
+// none the script or a file the scene reads). Not rehearsed: what rendering finds (`frames`'
+// errors, `heat-map-stats` without a heat map). Error "FILE:LINE: what" for the first line that
+// would fail.
+void rehearseScript(const Script& script, ViewSettings view, CameraController camera, Scene scene);
+
+// The exit code: 0, or 1 after a failing command (the rehearsal's included).
 int runScript(Viewer& viewer, const Script& script);
 
 }  // namespace prism::viewer

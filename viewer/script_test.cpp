@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "scene/scene.h"
 
 namespace prism::viewer {
 namespace {
@@ -66,6 +67,48 @@ TEST(Script, EveryLineIsCheckedBeforeAnythingRuns) {
   const std::filesystem::path dir = std::filesystem::path(::testing::TempDir());
   EXPECT_EQ(loadError(dir), dir.string() + ": is a folder, not a script");
   EXPECT_EQ(loadError(dir / "missing.txt"), (dir / "missing.txt").string() + ": cannot read the script");
+}
+
+// The rehearsal (rehearseScript), which runs before the window's first frame: a bad value, a light
+// the scene lacks, a missing settings file, a screenshot over the scene's file are found at their
+// lines, before a screenshot above them is written; a settings file the script saves is loaded
+// as saved, and an orbit turns the camera that a later settings file completes.
+std::string rehearsalError(const std::string& name, const std::string& text, const Scene& scene) {
+  const std::filesystem::path path = scriptFile(name, text);
+  try {
+    rehearseScript(loadScript(path), ViewSettings{}, CameraController(Camera{}), scene);
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    return what.substr(path.string().size());
+  }
+  return "rehearsed";
+}
+
+TEST(Script, TheRehearsalFindsBadLinesBeforeAnythingRuns) {
+  Scene scene;
+  scene.file = std::filesystem::path(::testing::TempDir()) / "scene.json";
+  Light sun;
+  sun.direction = {0.0f, -1.0f, 0.0f};
+  scene.lights = {sun};
+  const std::string dir = ::testing::TempDir();
+  const std::string bogus = rehearsalError("r1.txt", "screenshot " + dir + "/a.png\nset mode bogus\n", scene);
+  EXPECT_EQ(bogus.rfind(":2: mode: expected", 0), 0u) << bogus;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/a.png"));
+  EXPECT_EQ(rehearsalError("r2.txt", "set light.3.intensity 5\n", scene).rfind(":1: light index: expected", 0), 0u);
+  EXPECT_EQ(rehearsalError("r3.txt", "frames 1\nload-settings " + dir + "/none.json\n", scene).rfind(":2: ", 0), 0u);
+  EXPECT_EQ(rehearsalError("r4.txt", "save-settings " + scene.file.string() + "\n", scene),
+            ":1: " + scene.file.string() + ": is also the scene file; write it to another file");
+  // Saved as jakob-hanika under CIE 1964, changed to RGB, loaded back: CIE 1964 holds again (the
+  // rehearsal kept RGB and refused it), and through another spelling of the same path.
+  const std::string saved = dir + "/saved_settings.json";
+  std::filesystem::remove(saved);
+  EXPECT_EQ(rehearsalError("r5.txt",
+                           "set mode jakob-hanika\nset observer cie1964\nsave-settings " + saved +
+                               "\nset observer cie1931\nset mode rgb\nload-settings " + dir + "/./saved_settings.json" +
+                               "\nset observer cie1964\n",
+                           scene),
+            "rehearsed");
+  EXPECT_FALSE(std::filesystem::exists(saved)) << "the rehearsal writes nothing";
 }
 
 }  // namespace

@@ -42,9 +42,6 @@ class Viewer {
   void screenshot(const std::filesystem::path& path, bool renderNow);
   void loadSettings(const std::filesystem::path& path);  // viewer_settings.h's files
   void saveSettings(const std::filesystem::path& path) const;
-  // Error unless `path` is none of the files the scene reads (its file, models, textures, maps):
-  // screenshots and settings files are never written over them.
-  void requireOutputClear(const std::filesystem::path& path) const;
   void reloadShaders();
 
   gpu::WindowContext& window() { return mWindow; }
@@ -65,6 +62,9 @@ class Viewer {
     ImGuiSession& operator=(const ImGuiSession&) = delete;
   };
 
+  // Error unless `path` is none of the files the scene reads (its file, models, textures, maps):
+  // screenshots and settings files are never written over them.
+  void requireOutputClear(const std::filesystem::path& path) const;
   void handleInput(float seconds);
   void interface();
   void writeWindowPng(const std::filesystem::path& path, int width, int height) const;

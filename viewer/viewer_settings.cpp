@@ -109,8 +109,9 @@ void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Cam
         if (k == "position") nextCamera.position = vec3Of(v, where);
         else if (k == "target") nextCamera.target = vec3Of(v, where);
         else if (k == "up") nextCamera.up = vec3Of(v, where);
-        else if (k == "fov_deg" && v.is_number() && v.get<double>() >= 1e-3 && v.get<double>() < 180.0)
-          nextCamera.verticalFovDeg = v.get<float>();  // a scene's range: 1e-30 made a singular projection
+        else if (k == "fov_deg" && v.is_number() && v.get<double>() >= kMinCameraFovDeg &&
+                 v.get<double>() < kMaxCameraFovDeg)
+          nextCamera.verticalFovDeg = v.get<float>();  // a scene's range: 1e-30 was taken
         else throw Error(fmt::format("{}: unknown key or bad value {}", where, excerpt(v.dump())));
       }
     } else {

@@ -21,6 +21,9 @@ glm::dvec3 dvec3(const schema::Node& n, const schema::Range& range = schema::Ran
   return {v[0], v[1], v[2]};
 }
 
+// The least peak of a scattering spectrum's shape (its amount is "scattering").
+constexpr double kMinScatteringPeak = 1e-30;
+
 // P_σ: "grey", "ccm", or the coefficients c₀ … c₃ of c₀ + c₁λ + … (λ in µm), ≥ 0 on the band.
 PolynomialPiece readScatteringSpectrum(const schema::Node& n) {
   if (n.json().is_string()) {
@@ -44,10 +47,12 @@ PolynomialPiece readScatteringSpectrum(const schema::Node& n) {
     n.fail(fmt::format("the scattering spectrum is {:.3g} at {:.0f} nm: it must be ≥ 0 over {:.0f}–{:.0f} nm", lowest,
                        lowestAt * 1000.0, kBandLoUm * 1000.0, kBandHiUm * 1000.0));
   // None at all left the starlight's basis without a direction (a singular Gram matrix, after the
-  // precomputation): "scattering" says how much, this only its shape.
-  if (highest == 0.0)
-    n.fail(fmt::format("the scattering spectrum is 0 over {:.0f}–{:.0f} nm; for no scattering give \"scattering\": 0",
-                       kBandLoUm * 1000.0, kBandHiUm * 1000.0));
+  // precomputation; 1e-30 still renders, 1e-200 underflows it): "scattering" says how much, this
+  // only its shape.
+  if (!(highest >= kMinScatteringPeak))
+    n.fail(fmt::format("the scattering spectrum peaks at {:.3g} over {:.0f}–{:.0f} nm, below {:g}: it has no shape; for no "
+                       "scattering give \"scattering\": 0",
+                       highest, kBandLoUm * 1000.0, kBandHiUm * 1000.0, kMinScatteringPeak));
   return p;
 }
 

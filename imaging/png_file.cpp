@@ -97,6 +97,17 @@ void PngImage::write(const std::filesystem::path& path) const {
   writeFileAtomically(path, bytes);
 }
 
+void checkJpegBeforeDecoding(const std::string& name, std::span<const std::uint8_t> bytes) {
+  int width = 0, height = 0, components = 0;
+  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
+      !stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height, &components))
+    throw Error(name + ": not a readable JPEG (" + (stbi_failure_reason() ? stbi_failure_reason() : "no header") + ")");
+  if (width < 1 || height < 1 || width > kMaxPngSide || height > kMaxPngSide) {
+    throw Error(name + ": an image of " + std::to_string(width) + " × " + std::to_string(height) +
+                " pixels; Prism reads 1 to " + std::to_string(kMaxPngSide) + " on each side");
+  }
+}
+
 void checkPngBeforeDecoding(const std::string& name, std::span<const std::uint8_t> bytes) {
   const std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
   if (bytes.size() < 8 || !std::equal(signature, signature + 8, bytes.begin()))

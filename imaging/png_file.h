@@ -67,4 +67,9 @@ inline constexpr int kMaxPngSide = 16384;
 // make the decoder allocate gigabytes. readPng8 and the glTF textures' decoder check with it.
 void checkPngBeforeDecoding(const std::string& name, std::span<const std::uint8_t> bytes);
 
+// Before a JPEG (a glTF's texture) is decoded: its size from its header as stb_image reads it, 1 to
+// kMaxPngSide a side. Error "NAME: …" otherwise: a header claiming 65 000² pixels was decoded
+// into 17 GB before anything looked at its size.
+void checkJpegBeforeDecoding(const std::string& name, std::span<const std::uint8_t> bytes);
+
 }  // namespace prism::imaging

@@ -49,6 +49,13 @@ std::string unsupportedImage(std::span<const std::uint8_t> bytes) {
   return "not a PNG or JPEG image (only PNG and JPEG are supported)";
 }
 
+// A PNG's or JPEG's size from its header, before it is decoded (imaging/png_file.h).
+void checkSizeBeforeDecoding(std::span<const std::uint8_t> bytes, const std::string& name = "") {
+  const ImageKind kind = sniffImage(bytes);
+  if (kind == ImageKind::Png) imaging::checkPngBeforeDecoding(name.empty() ? "the PNG" : name, bytes);
+  if (kind == ImageKind::Jpeg) imaging::checkJpegBeforeDecoding(name.empty() ? "the JPEG" : name, bytes);
+}
+
 std::string oneLine(std::string text) {
   while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
   for (char& c : text)
@@ -112,9 +119,9 @@ bool guardedImageLoader(tinygltf::Image* image, const int index, std::string* er
   auto* guard = static_cast<Guard*>(user);
   const std::span<const std::uint8_t> file(bytes, static_cast<std::size_t>(std::max(size, 0)));
   std::string why = unsupportedImage(file);
-  if (why.empty() && sniffImage(file) == ImageKind::Png) {  // as decodeImage does: a 16385-wide PNG
-    try {                                                  // decoded, then failed in glTexStorage2D
-      imaging::checkPngBeforeDecoding("the PNG", file);
+  if (why.empty()) {
+    try {  // as decodeImage does: a 16385-wide PNG was decoded, then refused by glTexStorage2D
+      checkSizeBeforeDecoding(file);
     } catch (const Error& e) {
       why = e.what();
     }
@@ -256,9 +263,6 @@ std::string_view glbJson(const std::vector<unsigned char>& bytes, const std::str
 Image toImage(const tinygltf::Image& src, bool srgb, std::string source) {
   if (src.width < 1 || src.height < 1 || src.component != 4 || (src.bits != 8 && src.bits != 16))
     throw Error("image was not decoded to 8- or 16-bit RGBA");
-  if (src.width > imaging::kMaxPngSide || src.height > imaging::kMaxPngSide)  // a JPEG's header is not read ahead
-    throw Error("an image of " + std::to_string(src.width) + " × " + std::to_string(src.height) +
-                " pixels; Prism reads 1 to " + std::to_string(imaging::kMaxPngSide) + " on each side");
   Image image;
   image.width = src.width;
   image.height = src.height;
@@ -283,7 +287,7 @@ Image toImage(const tinygltf::Image& src, bool srgb, std::string source) {
 Image decodeImage(std::span<const std::uint8_t> bytes, bool srgb, std::string source) {
   if (std::string why = unsupportedImage(bytes); !why.empty()) throw Error(why);
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) throw Error("image file too large");
-  if (sniffImage(bytes) == ImageKind::Png) imaging::checkPngBeforeDecoding(source, bytes);
+  checkSizeBeforeDecoding(bytes, source);
   tinygltf::Image decoded;
   std::string err, warn;
   if (!tinygltf::LoadImageData(&decoded, 0, &err, &warn, 0, 0, bytes.data(), static_cast<int>(bytes.size()), nullptr))

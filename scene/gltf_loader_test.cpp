@@ -171,5 +171,18 @@ TEST(GltfLoader, ATextureBeyondTheLargestSideIsRefusedAtItsImage) {
   }
 }
 
+// A JPEG's header claiming 65 000² pixels is refused from the header: it was decoded first (17 GB).
+TEST(GltfLoader, AJpegBeyondTheLargestSideIsRefusedBeforeDecoding) {
+  // SOI, then a baseline SOF0: 8 bits, 65 000 × 65 000, three components.
+  const std::vector<std::uint8_t> jpeg = {0xFF, 0xD8, 0xFF, 0xC0, 0x00, 0x11, 0x08, 0xFD, 0xE8, 0xFD, 0xE8, 0x03,
+                                          0x01, 0x22, 0x00, 0x02, 0x11, 0x01, 0x03, 0x11, 0x01};
+  try {
+    decodeImage(jpeg, true, "big.jpg");
+    ADD_FAILURE() << "no Error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "big.jpg: an image of 65000 × 65000 pixels; Prism reads 1 to 16384 on each side");
+  }
+}
+
 }  // namespace
 }  // namespace prism

@@ -204,6 +204,8 @@ void runGallery(const GalleryOptions& o) {
   check.sampling.count = o.wavelengths;
   render::validate(check);
   requireWritableFolder(o.output);
+  // Loaded once, then checked, precomputed and rendered (all held at once: a folder of large
+  // models costs their sum in memory).
   std::vector<Scene> scenes;
   for (const std::filesystem::path& file : files) scenes.push_back(loadScene(file));
   // Nebulae (scenes/nebula/*.json: a section of their own, not surface scenes), at their cameras'

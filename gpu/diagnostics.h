@@ -25,7 +25,8 @@ namespace prism::gpu {
   X(GlDebugWarning, "KHR_debug: a deprecated, non-portable or slow use reported by the driver") \
   X(GlDebugInfo, "KHR_debug: a notification from the driver or the application")                \
   X(FramebufferIncomplete, "the attachments do not make a complete framebuffer")                \
-  X(NoOpenGl45, "no window with an OpenGL 4.5 core context could be created through GLFW")
+  X(NoOpenGl45, "no window with an OpenGL 4.5 core context could be created through GLFW")       \
+  X(TextureStorageFailed, "the driver could not make a texture's storage (out of memory, above all)")
 
 enum class Diagnostic {
 #define PRISM_GPU_DIAGNOSTIC_ENUM(name, meaning) name,

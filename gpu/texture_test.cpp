@@ -1,6 +1,6 @@
 // Textures through the driver: uploads come back unchanged, sRGB texels decode in shaders, mip
 // chains have the right sizes, images are writable from compute, and a depth array's layers
-// are separate and compare in a shadow sampler.
+// are separate and compare in a shadow sampler; storage the driver cannot make is one error.
 #include "gpu/texture.h"
 
 #include <gtest/gtest.h>
@@ -12,7 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include "gpu/error.h"
 #include "gpu/gpu_test_support.h"
+#include "gpu/object_counter.h"
 
 namespace prism::gpu {
 namespace {
@@ -175,6 +177,24 @@ TEST_F(GpuTest, TexturesAreMoveOnlyAndFreeTheirNames) {
   EXPECT_FALSE(glIsTexture(name));
   static_assert(!std::is_copy_constructible_v<Texture2D>);
   static_assert(!std::is_copy_constructible_v<Texture2DArray>);
+}
+
+// A texture no GPU holds (the largest array of RGBA32F layers: terabytes) is one GpuError naming
+// it, with no driver message before it and no GL object left behind: out of memory, the driver's
+// KHR_debug line came first, then an incomplete framebuffer's, then the error.
+TEST_F(GpuTest, StorageNoGpuHoldsIsOneErrorNamingTheTexture) {
+  GLint side = 0, layers = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &side);
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
+  const GlObjectCounts start = liveGlObjects();
+  try {
+    Texture2DArray huge({side, side, layers, GL_RGBA32F, 1, false, {}, "huge"});
+    ADD_FAILURE() << "a texture of " << side << "² × " << layers << " RGBA32F texels was made";
+  } catch (const GpuError& e) {
+    EXPECT_EQ(e.id(), Diagnostic::TextureStorageFailed);
+    EXPECT_EQ(std::string(e.what()).rfind("prism::gpu::Texture2DArray 'huge' of ", 0), 0u) << e.what();
+  }
+  EXPECT_EQ(liveGlObjects(), start);
 }
 
 }  // namespace

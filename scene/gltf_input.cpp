@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "imaging/png_file.h"
 #include "core/json_schema.h"
 
@@ -299,6 +300,8 @@ tinygltf::Model loadGltfModel(const fs::path& file, const fs::path& root, std::v
   const std::string name = file.string();
   std::vector<unsigned char> bytes = schema::readBinaryFile(file);
   bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (!binary && lowercaseExtension(file) == ".glb")  // read as JSON, it was "malformed JSON"
+    throw Error(name + ": not a binary glTF (it does not start with \"glTF\")");
   std::string_view text = binary ? glbJson(bytes, name)
                                  : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
   if (bytes.size() > std::numeric_limits<unsigned>::max()) throw Error(name + ": file too large");

@@ -171,6 +171,20 @@ TEST(GltfLoader, ATextureBeyondTheLargestSideIsRefusedAtItsImage) {
   }
 }
 
+// A .glb that is not a binary glTF says so (read as JSON, it was "malformed JSON").
+TEST(GltfLoader, AGlbWithoutItsMagicIsNamedSo) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_no_magic";
+  fs::create_directories(dir);
+  std::ofstream(dir / "model.glb") << "GLTF garbage";
+  Scene scene;
+  try {
+    appendGltf(dir / "model.glb", dir, {}, scene);
+    ADD_FAILURE() << "no Error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), ((dir / "model.glb").string() + ": not a binary glTF (it does not start with \"glTF\")").c_str());
+  }
+}
+
 // A JPEG's header claiming 65 000² pixels is refused from the header: it was decoded first (17 GB).
 TEST(GltfLoader, AJpegBeyondTheLargestSideIsRefusedBeforeDecoding) {
   // SOI, then a baseline SOF0: 8 bits, 65 000 × 65 000, three components.

@@ -31,7 +31,11 @@ bool setSkyKey(Scene& scene, const std::string& key, const std::string& value) {
   }
   else throw Error(fmt::format("unknown setting \"{}\" (sky.elevation, azimuth, turbidity, ozone, aerosols, "
                                "multiple-scattering)", excerpt(key)));
-  atmosphere::validate(p);  // nothing changes on an error
+  try {  // nothing changes on an error, which names the key ("Ångström beta" is the turbidity)
+    atmosphere::validate(p);
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: {}", excerpt(key), e.what()));
+  }
   a.parameters = p;
   applyTechniqueLights(scene);
   return true;

@@ -294,8 +294,9 @@ void colourSpectralTexture(const SpectralTextureOptions& o) {
     Eigen::MatrixXd reconstructed = t.basis * patchValues;
     worst = (reconstructed - spectra).cwiseAbs().maxCoeff();
     if (reconstructed.minCoeff() < -0.01 || reconstructed.maxCoeff() > 1.01)
-      throw Error(fmt::format("colour spectral-texture: with {} functions the patches' reflectances reach [{:.3f}, {:.3f}], "
-                              "outside [0, 1] ± 0.01: use more", o.basis, reconstructed.minCoeff(), reconstructed.maxCoeff()));
+      throw Error(fmt::format("colour spectral-texture: with {} function{} the patches' reflectances reach [{:.3f}, "
+                              "{:.3f}], outside [0, 1] ± 0.01: use more", o.basis, o.basis == 1 ? "" : "s",
+                              reconstructed.minCoeff(), reconstructed.maxCoeff()));
   }
   for (int y = 0; y < t.height; ++y) {
     for (int x = 0; x < t.width; ++x) {
@@ -308,8 +309,8 @@ void colourSpectralTexture(const SpectralTextureOptions& o) {
     fmt::print("wrote {}: the ColorChecker, {} × {} texels, samples at 81 wavelengths (380–780 nm, 5 nm)\n", o.output,
                t.width, t.height);
   } else {
-    fmt::print("wrote {}: the ColorChecker, {} × {} texels, {} basis functions (largest reconstruction error {:.2g})\n",
-               o.output, t.width, t.height, o.basis, worst);
+    fmt::print("wrote {}: the ColorChecker, {} × {} texels, {} basis function{} (largest reconstruction error {:.2g})\n",
+               o.output, t.width, t.height, o.basis, o.basis == 1 ? "" : "s", worst);
   }
 }
 

@@ -92,8 +92,9 @@ void runDemo(const DemoOptions& options) {
                            .dump(2));
     return;
   }
-  fmt::print("ColorChecker (BabelColor average), CIE 1931 2°, white-balanced to D65 by {}, sRGB 8-bit\n",
-             options.adaptation);
+  fmt::print("ColorChecker (BabelColor average), CIE 1931 2°, {}, sRGB 8-bit\n",
+             options.adaptation == "none" ? std::string("not white-balanced")
+                                          : "white-balanced to D65 by " + options.adaptation);
   fmt::print("{:<24}", "patch");
   for (const char* name : kIlluminants) fmt::print(" {:>13}", name);
   fmt::print("\n");

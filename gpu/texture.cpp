@@ -19,8 +19,9 @@ namespace {
 // at 16 384² on llvmpipe).
 template <class Storage>
 void makeStorage(const char* kind, const std::string& label, std::size_t texels, Storage storage) {
+  // Earlier errors were reported where they happened (the debug output): not this call's.
   while (glGetError() != GL_NO_ERROR) {
-  }  // earlier errors are reported where they happened, not here
+  }
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "texture storage");
   glDebugMessageControl(GL_DEBUG_SOURCE_API, GL_DEBUG_TYPE_ERROR, GL_DONT_CARE, 0, nullptr, GL_FALSE);
   storage();

@@ -68,8 +68,8 @@ inline constexpr int kMaxPngSide = 16384;
 void checkPngBeforeDecoding(const std::string& name, std::span<const std::uint8_t> bytes);
 
 // Before a JPEG (a glTF's texture) is decoded: its size from its header as stb_image reads it, 1 to
-// kMaxPngSide a side. Error "NAME: …" otherwise: a header claiming 65 000² pixels was decoded
-// into 17 GB before anything looked at its size.
+// kMaxPngSide a side. Error "NAME: …" otherwise: a header claiming 65 000² pixels went to the
+// decoder, which would allocate its 17 GB of RGBA before anything looked at its size.
 void checkJpegBeforeDecoding(const std::string& name, std::span<const std::uint8_t> bytes);
 
 }  // namespace prism::imaging

@@ -185,7 +185,8 @@ TEST(GltfLoader, AGlbWithoutItsMagicIsNamedSo) {
   }
 }
 
-// A JPEG's header claiming 65 000² pixels is refused from the header: it was decoded first (17 GB).
+// A JPEG's header claiming 65 000² pixels is refused from the header: it went to the decoder, whose
+// RGBA would take 17 GB.
 TEST(GltfLoader, AJpegBeyondTheLargestSideIsRefusedBeforeDecoding) {
   // SOI, then a baseline SOF0: 8 bits, 65 000 × 65 000, three components.
   const std::vector<std::uint8_t> jpeg = {0xFF, 0xD8, 0xFF, 0xC0, 0x00, 0x11, 0x08, 0xFD, 0xE8, 0xFD, 0xE8, 0x03,

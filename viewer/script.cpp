@@ -1,8 +1,8 @@
 #include "viewer/script.h"
 
 #include <algorithm>
-#include <map>
 #include <cstdio>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>

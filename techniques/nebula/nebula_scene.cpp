@@ -47,8 +47,8 @@ PolynomialPiece readScatteringSpectrum(const schema::Node& n) {
     n.fail(fmt::format("the scattering spectrum is {:.3g} at {:.0f} nm: it must be ≥ 0 over {:.0f}–{:.0f} nm", lowest,
                        lowestAt * 1000.0, kBandLoUm * 1000.0, kBandHiUm * 1000.0));
   // None at all left the starlight's basis without a direction (a singular Gram matrix, after the
-  // precomputation; 1e-30 still renders, 1e-200 underflows it): "scattering" says how much, this
-  // only its shape.
+  // precomputation); a peak of 1e-30 renders, and below it a shape is refused rather than trusted
+  // to the Gram matrix's range: "scattering" says how much, this only its shape.
   if (!(highest >= kMinScatteringPeak))
     n.fail(fmt::format("the scattering spectrum peaks at {:.3g} over {:.0f}–{:.0f} nm, below {:g}: it has no shape; for no "
                        "scattering give \"scattering\": 0",

@@ -78,8 +78,45 @@ double TabulatedSpectrum::at(double lambdaNm) const {
   return mValues[lo] * (1.0 - t) + mValues[hi] * t;
 }
 
+bool TabulatedSpectrum::hasSamplesBetweenNodes(int node) const {
+  auto first = std::upper_bound(mLambdasNm.begin(), mLambdasNm.end(), node - 1.0);
+  auto last = std::lower_bound(mLambdasNm.begin(), mLambdasNm.end(), node + 1.0);
+  return std::any_of(first, last, [](double l) { return l != std::floor(l); });
+}
+
+double TabulatedSpectrum::hatAverage(int node) const {
+  // f is linear between consecutive knots (and constant outside the table), so each piece of the
+  // hat's support between knots is a quadratic in f·hat, which Simpson's rule integrates exactly.
+  const double centre = node;
+  double sum = 0.0, weight = 0.0;
+  for (double outer : {centre - 1.0, centre + 1.0}) {
+    if (outer < kLambdaMinNm || outer > kLambdaMaxNm) continue;
+    const double lo = std::min(centre, outer), hi = std::max(centre, outer);
+    std::vector<double> cuts{lo};
+    cuts.insert(cuts.end(), std::upper_bound(mLambdasNm.begin(), mLambdasNm.end(), lo),
+                std::lower_bound(mLambdasNm.begin(), mLambdasNm.end(), hi));
+    cuts.push_back(hi);
+    auto hat = [centre](double l) { return 1.0 - std::abs(l - centre); };
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const double a = cuts[k], b = cuts[k + 1], m = 0.5 * (a + b);
+      // The piece's ends as limits from inside it: f may jump at the table's ends.
+      const double fm = at(m);
+      const double slope = (at(m + 0.25 * (b - a)) - at(m - 0.25 * (b - a))) / (0.5 * (b - a));
+      const double fa = fm - slope * (m - a), fb = fm + slope * (b - m);
+      sum += (b - a) / 6.0 * (fa * hat(a) + 4.0 * fm * hat(m) + fb * hat(b));
+    }
+    weight += 0.5;
+  }
+  return sum / weight;
+}
+
 Spectrum TabulatedSpectrum::toDense() const {
-  return Spectrum::fromFunction([this](double lambdaNm) { return at(lambdaNm); });
+  Spectrum dense;
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    const int node = kLambdaMinNm + i;
+    dense[i] = hasSamplesBetweenNodes(node) ? hatAverage(node) : at(node);
+  }
+  return dense;
 }
 
 double planckRadianceWPerSrM2Nm(double lambdaNm, double temperatureK) {

@@ -5,11 +5,15 @@
 // domain it is zero, and its integral is the trapezoid rule over the samples: the exact integral
 // of that piecewise-linear function, so that any unbiased wavelength sampling converges to it.
 //
-// TabulatedSpectrum: data as published (any increasing wavelengths, any spacing). Resampling
-// onto the dense grid is linear interpolation at each 1 nm node; beyond the table's ends the
-// Extrapolation rule of the table applies (Zero for emitters and sensors, whose response outside
-// the measured band is unknown and taken as none; Clamp for reflectances, whose last measured
-// value is the best estimate of the next).
+// TabulatedSpectrum: data as published (any increasing wavelengths, any spacing), piecewise linear
+// between its samples. Resampling onto the dense grid takes the table's value at each 1 nm node
+// (exact for the CIE's 1 nm and 5 nm tables); where the table has samples between whole
+// nanometres within a node's reach (a spectrometer's 0.1 nm lamp lines), the node takes instead
+// the table's average under the hat function of the dense grid, which keeps the table's integral,
+// its centroid and its sign: a mercury line between 546 and 547 nm keeps its energy instead of
+// falling between two nodes. Beyond the table's ends the Extrapolation rule of the table applies
+// (Zero for emitters and sensors, whose response outside the measured band is unknown and taken
+// as none; Clamp for reflectances, whose last measured value is the best estimate of the next).
 #pragma once
 
 #include <array>
@@ -70,6 +74,11 @@ class TabulatedSpectrum {
   std::span<const double> values() const { return mValues; }
 
  private:
+  // Whether a sample lies off whole nanometres strictly within 1 nm of node.
+  bool hasSamplesBetweenNodes(int node) const;
+  // ∫ f·hat / ∫ hat over [node − 1, node + 1] ∩ [360, 830] nm, f this table's function.
+  double hatAverage(int node) const;
+
   std::vector<double> mLambdasNm;
   std::vector<double> mValues;
   Extrapolation mExtrapolation;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "core/error.h"
 
@@ -34,6 +35,49 @@ TEST(TabulatedSpectrum, ResamplesLinearlyAtEachNode) {
   EXPECT_DOUBLE_EQ(d[400 - kLambdaMinNm], 1.0);
   EXPECT_DOUBLE_EQ(d[403 - kLambdaMinNm], 1.3);
   EXPECT_DOUBLE_EQ(d[410 - kLambdaMinNm], 2.0);
+}
+
+TEST(TabulatedSpectrum, ALineBetweenWholeNanometresKeepsItsEnergy) {
+  // A spectrometer's mercury line, 0.2 nm wide at 546.1 nm on a flat floor of 1: its triangle
+  // holds 0.2 · 1000 / 2 = 100 nm·units. Sampling at whole nanometres alone saw none of it.
+  TabulatedSpectrum line({360.0, 546.0, 546.1, 546.2, 830.0}, {1.0, 1.0, 1001.0, 1.0, 1.0},
+                         Extrapolation::Zero);
+  Spectrum d = line.toDense();
+  EXPECT_NEAR(d.integral(), 470.0 + 100.0, 1e-9);
+  // Its centroid stays at 546.1 nm: the energy goes to 546 and 547 nm in the ratio 9 : 1.
+  EXPECT_NEAR((d[546 - kLambdaMinNm] - 1.0) / (d[547 - kLambdaMinNm] - 1.0), 9.0, 1e-9);
+  EXPECT_DOUBLE_EQ(d[545 - kLambdaMinNm], 1.0);
+  EXPECT_DOUBLE_EQ(d[548 - kLambdaMinNm], 1.0);
+}
+
+TEST(TabulatedSpectrum, SamplesOnWholeNanometresAreTakenAsTheyAre) {
+  // 1 nm and 5 nm tables (the CIE's) have no detail between nodes: each node is the table's value.
+  std::vector<double> lambdas, values;
+  for (int l = 380; l <= 780; l += 5) {
+    lambdas.push_back(l);
+    values.push_back(std::sin(0.05 * l) + 1.5);
+  }
+  TabulatedSpectrum t(lambdas, values, Extrapolation::Zero);
+  Spectrum d = t.toDense();
+  for (int l = 360; l <= 830; ++l) EXPECT_EQ(d[l - kLambdaMinNm], t.at(l)) << l;
+}
+
+TEST(TabulatedSpectrum, AFineTableIntegratesToItsOwnIntegral) {
+  // 0.37 nm steps from 401.3 nm, a 1 nm box of 50 at 540 nm on a smooth floor: the dense integral
+  // is the table's own trapezoid sum, and no node undershoots below zero beside the box.
+  std::vector<double> lambdas, values;
+  double exact = 0.0;
+  for (int k = 0; k < 807; ++k) {
+    double l = 401.3 + 0.37 * k;
+    double v = l > 540.0 && l < 541.0 ? 50.0 : 0.5 + 0.5 * std::cos(0.3 * l);
+    if (k > 0) exact += 0.5 * (v + values.back()) * (l - lambdas.back());
+    lambdas.push_back(l);
+    values.push_back(v);
+  }
+  TabulatedSpectrum t(lambdas, values, Extrapolation::Zero);
+  Spectrum d = t.toDense();
+  EXPECT_NEAR(d.integral(), exact, 1e-12 * exact);
+  for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_GE(d[i], 0.0);
 }
 
 TEST(TabulatedSpectrum, ExtrapolationRuleIsExplicit) {

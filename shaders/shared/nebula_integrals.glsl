@@ -18,10 +18,16 @@
 #define NEBULA_REAL float
 #define NEBULA_VEC4 vec4
 #endif
+#ifndef NEBULA_CF_DEPTH
+#define NEBULA_CF_DEPTH 24
+#endif
 
 // E_m(u) = ∫₁^∞ e^(−ut)/tᵐ dt for u ≥ 1 by its continued fraction (Abramowitz & Stegun 1964,
 // 5.1.22, in the even form e^(−u)/(u+m− 1·m/(u+m+2− 2(m+1)/(u+m+4− …)))), evaluated bottom-up
-// from depth 24: within 6e-8 relative for m = 1…9 at u ≥ 1 (its slowest point is u = 1).
+// from depth NEBULA_CF_DEPTH (a multiple of 8), for m = 1…9 at u ≥ 1 (its slowest point is u = 1):
+// 24 in float and GLSL, within 6e-8 relative, float's own rounding; 96 in double, within 3e-16
+// (at 24 its 6e-8 became 3e-4 in the projection's coefficients, whose orthonormalisation cancels
+// the raw moments by thousands).
 //
 // Its loop, and the series of nebulaE1 and nebulaInversePowerExpIntegrals, run in chunks of 8,
 // loops of constant count that shader compilers unroll: Mesa's llvmpipe stops a shader's loops
@@ -31,7 +37,7 @@
 PRISM_INLINE NEBULA_REAL nebulaEnContinuedFraction(int m, NEBULA_REAL u) {
   NEBULA_REAL order = NEBULA_REAL(m);
   NEBULA_REAL f = 0.0f;
-  for (int k0 = 24; k0 >= 1; k0 -= 8) {
+  for (int k0 = NEBULA_CF_DEPTH; k0 >= 1; k0 -= 8) {
     for (int j = 0; j < 8; ++j) {
       NEBULA_REAL kk = NEBULA_REAL(k0 - j);
       f = kk * (order + kk - 1.0f) / (u + order + 2.0f * kk - f);

@@ -16,6 +16,7 @@ using glm::log;
 #undef NEBULA_REAL
 #undef NEBULA_VEC4
 #undef NEBULA_VEC3
+#undef NEBULA_CF_DEPTH
 
 namespace f64 {
 using vec4 = glm::dvec4;
@@ -24,10 +25,12 @@ using std::log;
 #define NEBULA_REAL double
 #define NEBULA_VEC4 vec4
 #define NEBULA_VEC3 glm::dvec3
+#define NEBULA_CF_DEPTH 96
 #include "nebula_integrals.glsl"
 #include "nebula_march.glsl"
 #undef NEBULA_REAL
 #undef NEBULA_VEC4
 #undef NEBULA_VEC3
+#undef NEBULA_CF_DEPTH
 }  // namespace f64
 }  // namespace prism::shared

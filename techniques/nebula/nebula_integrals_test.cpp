@@ -53,7 +53,9 @@ TEST(NebulaIntegrals, E1MatchesQuadratureToOnePartInAMillion) {
     worstFloat = std::max(worstFloat, relativeError(prism::shared::nebulaE1(uf), e1Reference(uf)));
   }
   std::printf("E1 max relative error: double %.3g, float %.3g\n", worstDouble, worstFloat);
-  EXPECT_LE(worstDouble, 1e-6);
+  // The issue asks 1e-6; double holds 1e-12, which the projection's coefficients need (its
+  // orthonormalisation cancels the raw moments by thousands).
+  EXPECT_LE(worstDouble, 1e-12);
   // The float twin, evaluated at the float input (its rounding is the input's, not E₁'s).
   EXPECT_LE(worstFloat, 1e-6);
 }
@@ -83,7 +85,7 @@ TEST(NebulaIntegrals, ExponentialIntegralsOfHigherOrderMatchQuadrature) {
     }
   }
   std::printf("E_2..E_9 max relative error: double %.3g, float %.3g\n", worstDouble, worstFloat);
-  EXPECT_LE(worstDouble, 1e-6);
+  EXPECT_LE(worstDouble, 1e-12);
   EXPECT_LE(worstFloat, 1e-6);
   EXPECT_TRUE(std::isfinite(prism::shared::nebulaPolyExpIntegral(glm::vec4(1.0f), glm::vec4(1.0f), 0.0f, 0.38f, 0.78f)));
 }
@@ -184,7 +186,7 @@ TEST(NebulaIntegrals, NegativePowersMatchQuadrature) {
 TEST(NebulaIntegrals, AnalyticPiecesMatchQuadrature) {
   using prism::nebula::PolynomialPiece;
   const double xs[] = {0.0, 1e-3, 0.1, 1.0, 3.0, 10.0, 30.0};
-  Worst seriesDouble, seriesFloat, closedDouble, closedFloat, closedFormOnNarrow;
+  Worst seriesDouble, seriesFloat, closedDouble, closedFloat, closedFormOnNarrow, closedFormOnNarrowFloat;
   for (const char* filters : {"hubble", "cie1931"})
     for (auto model : {prism::nebula::StarModel::Planck, prism::nebula::StarModel::Wien}) {
       const auto star = prism::nebula::makeStarSpectrum(6000.0, model);
@@ -230,6 +232,14 @@ TEST(NebulaIntegrals, AnalyticPiecesMatchQuadrature) {
                   closedFormOnNarrow.update(error(wien ? prism::shared::f64::nebulaWienPolyIntegral(piece.cLo, x, l0, l1)
                                                        : prism::shared::f64::nebulaPolyExpIntegral(piece.cLo, piece.cHi, x, l0, l1)),
                                             0, x, l0, l1);
+                if (l1 - l0 < 0.002) {
+                  const auto xf = static_cast<float>(x);
+                  const auto lf0 = static_cast<float>(l0), lf1 = static_cast<float>(l1);
+                  closedFormOnNarrowFloat.update(
+                      error(wien ? prism::shared::nebulaWienPolyIntegral(pieceFloat.cLo, xf, lf0, lf1)
+                                 : prism::shared::nebulaPolyExpIntegral(pieceFloat.cLo, pieceFloat.cHi, xf, lf0, lf1)),
+                      0, x, l0, l1);
+                }
               } else {
                 closedDouble.update(d, 0, x, l0, l1);
                 closedFloat.update(f / (1.0 + x / l0), 0, x, l0, l1);
@@ -245,6 +255,7 @@ TEST(NebulaIntegrals, AnalyticPiecesMatchQuadrature) {
   show("analytic pieces, closed form where u > 1, double", closedDouble);
   show("analytic pieces, closed form where u > 1, float over its condition", closedFloat);
   show("the closed form on the narrow pieces (not used there), double", closedFormOnNarrow);
+  show("the closed form on the narrow pieces (not used there), float", closedFormOnNarrowFloat);
   // The series leaves out ≤ 2.3e-9 of e^(−x/c)·∫|P|, which is at most e times ∫|P|·e^(−x/λ).
   EXPECT_LE(seriesDouble.error, 1e-8);
   // Float: as the closed forms, a few roundings of the exponent x/λ, which e^(−x/λ) makes x/λ
@@ -252,7 +263,10 @@ TEST(NebulaIntegrals, AnalyticPiecesMatchQuadrature) {
   EXPECT_LE(seriesFloat.error, 8.0 * 0x1p-24);
   EXPECT_LE(closedDouble.error, 1e-6);
   EXPECT_GT(closedDouble.x, 0.0);  // both forms were taken
-  EXPECT_GT(closedFormOnNarrow.error, 1e-3);  // and the series is needed where it is taken
+  // And the series is needed where it is taken: there the closed form cancels beyond the GPU's
+  // float altogether, and beyond the series' own bound in double.
+  EXPECT_GT(closedFormOnNarrowFloat.error, 1.0);
+  EXPECT_GT(closedFormOnNarrow.error, 100 * 1e-8);
 }
 
 }  // namespace

@@ -189,16 +189,27 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
   pre.basis = findExpBasis(kBandLoUm, kBandHiUm, s.basisMaxDepthUm, 2.0, s.basisSize, s.basisSpacingUm);
   auto card = static_cast<int>(pre.basis.a.size());
   for (int j = 0; j < card; ++j) (j < 4 ? pre.basisLo[j] : pre.basisHi[j - 4]) = static_cast<float>(pre.basis.a[static_cast<std::size_t>(j)]);
-  for (int e = -1; e <= kMomentTableSize + 1; ++e) {
-    double x = std::abs(e * pre.moments.step);  // the entry before 0 mirrors (cₖ is smooth there)
+  auto coefficientsAt = [&pre](double x) {
     std::array<double, 8> raw{}, coefficients{};
     glm::dvec4 lo = shared::f64::nebulaExpMoments(x, pre.exponents(0), kBandLoUm, kBandHiUm);
     glm::dvec4 hi = shared::f64::nebulaExpMoments(x, pre.exponents(1), kBandLoUm, kBandHiUm);
     for (int j = 0; j < 4; ++j) raw[static_cast<std::size_t>(j)] = lo[j], raw[static_cast<std::size_t>(j + 4)] = hi[j];
     pre.toCoefficients(raw, coefficients);
-    pre.moments.lo.emplace_back(coefficients[0], coefficients[1], coefficients[2], coefficients[3]);
-    pre.moments.hi.emplace_back(coefficients[4], coefficients[5], coefficients[6], coefficients[7]);
-  }
+    return coefficients;
+  };
+  auto push = [&pre](const std::array<double, 8>& c) {
+    pre.moments.lo.emplace_back(c[0], c[1], c[2], c[3]);
+    pre.moments.hi.emplace_back(c[4], c[5], c[6], c[7]);
+  };
+  // The entry before 0, which Catmull–Rom's tangent at 0 reads, by cubic extrapolation: the
+  // exponential integrals take no negative depth, and mirroring c(h) there would make the slope
+  // at 0 vanish (1e-3 off over the first interval, the front of every cloud).
+  std::array<std::array<double, 8>, 4> first{};
+  for (int e = 0; e < 4; ++e) first[static_cast<std::size_t>(e)] = coefficientsAt(e * pre.moments.step);
+  std::array<double, 8> before{};
+  for (std::size_t k = 0; k < 8; ++k) before[k] = 4.0 * first[0][k] - 6.0 * first[1][k] + 4.0 * first[2][k] - first[3][k];
+  push(before);
+  for (int e = 0; e <= kMomentTableSize + 1; ++e) push(coefficientsAt(e * pre.moments.step));
   tick();
   // Light–density: the 2D basis over the stars' temperature range.
   if (!m.stars.empty()) {
@@ -332,7 +343,7 @@ void buildPreIntegration(NebulaPrecomputed& pre) {
     table.size = 4096;
     table.step = kMomentTableMaxUm / (table.size - 1);
     for (int e = -1; e <= table.size + 1; ++e) {
-      double x = std::abs(e * table.step);
+      double x = e * table.step;  // before 0 too: e^(+step/λ) is as smooth
       glm::dvec4 v(0.0);
       for (std::size_t c = 0; c < 3; ++c)
         v[static_cast<int>(c)] = integratePassband(pre.filters.channels[c], [&](double l) { return pre.spectra[st].at(l) * std::exp(-x / l); });

@@ -223,6 +223,12 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   if (o.gpu) {
     context = std::make_unique<gpu::HeadlessContext>();
     nebula::requireGpuFits(file.densitySize().z, file.scene.model.stars.size());  // before any work
+    const nebula::NebulaCamera& camera = file.scene.model.camera;
+    const auto pixels = static_cast<std::size_t>(camera.width) * static_cast<std::size_t>(camera.height);
+    if (method == nebula::Method::Projection)
+      nebula::requireMomentsFit(file.scene.model.stars.size(), "stars", s.basisSize, pixels);
+    if (method == nebula::Method::LightDensity)
+      nebula::requireMomentsFit(static_cast<std::size_t>(s.lightBasisSize), "light functions", s.basisSize, pixels);
   }
   nebula::NebulaScene scene = generateWithProgress(std::move(file), o.threads);
   if (!o.filters.empty()) scene.model.filters = o.filters;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 #include <span>
 #include <string_view>
@@ -171,6 +173,20 @@ void requireGpuFits(int voxelsZ, std::size_t stars) {
   requireSlabsFit(voxelsZ, static_cast<int>(stars), "nebula star depths");
 }
 
+void requireMomentsFit(std::size_t count, std::string_view what, int card, std::size_t pixels) {
+  // The shaders index the buffer in int (nebula_march.comp, nebula_finish.comp). Not held to
+  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE: llvmpipe advertises 128 MiB but binds whole buffers past it
+  // (141 MB of moments matched the CPU twin), and NVIDIA's is 2 GiB.
+  const double floats = static_cast<double>(count) * card * static_cast<double>(pixels);
+  constexpr double kLimit = std::numeric_limits<std::int32_t>::max();
+  if (floats > kLimit)
+    throw Error(fmt::format("nebula: the march's moments, {} {} × {} elements × {} pixels, are {:.3g} floats, more than "
+                            "the shaders index (2³¹): render fewer pixels{}",
+                            count, what, card, pixels, floats,
+                            what == "stars" ? " or stars, or by light-density, whose moments do not grow with the stars"
+                                            : ""));
+}
+
 MarchView marchView(const NebulaCamera& cam) {
   // In double, as the CPU marcher builds it, then handed over in float.
   const NebulaViewFrame frame = viewFrame(cam);
@@ -257,6 +273,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   }
   if (reference) uploadReferenceNodes(s);
   const std::size_t pixels = static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height);
+  requireMomentsFit(static_cast<std::size_t>(mCount), light ? "light functions" : "stars", mCard, pixels);
   const std::size_t momentBytes = std::max<std::size_t>(1, static_cast<std::size_t>(mCount * mCard) * pixels) * sizeof(float);
   if (mMoments.sizeBytes() != momentBytes) mMoments = gpu::Buffer({momentBytes, nullptr, GL_DYNAMIC_STORAGE_BIT, "nebula moments"});
   mLineCount = s.emissionLines && m.emission != 0.0 ? static_cast<int>(pre.lineLambdaUm.size()) : 0;
@@ -388,6 +405,7 @@ MarchLoopCost NebulaGpuMarcher::loopCost(Method method, const NebulaPrecomputed&
 void NebulaGpuMarcher::finishOnGpu() {
   const int pixels = mSize.x * mSize.y;
   if (pixels == 0) throw Error("nebula: finish() before march()");
+  mFinish.setUniform("uWidth", mSize.x);
   mFinish.setUniform("uPixelCount", pixels);
   mFinish.setUniform("uCount", mCount);
   mFinish.setUniform("uCard", mCard);
@@ -397,7 +415,7 @@ void NebulaGpuMarcher::finishOnGpu() {
   mMarchedValues.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
   (mMarched == Method::LightDensity ? mLightWeights : mProjectionWeights).bindBase(GL_SHADER_STORAGE_BUFFER, 6);
   mColour.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
-  gpu::runCompute1D(mFinish, static_cast<std::size_t>(pixels));
+  gpu::runCompute(mFinish, {static_cast<GLuint>((mSize.x + 7) / 8), static_cast<GLuint>((mSize.y + 7) / 8), 1});
 }
 
 NebulaImage NebulaGpuMarcher::finish() {

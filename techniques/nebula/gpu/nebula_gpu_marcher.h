@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -51,6 +52,11 @@ MarchView marchView(const NebulaCamera& camera);
 // this GPU (a current context's) over a density of `voxelsZ` along z: their optical depths stack
 // ⌈stars/4⌉ copies of the grid along a 3D texture's z.
 void requireGpuFits(int voxelsZ, std::size_t stars);
+// Error when the march's per-pixel moments (`count` stars for projection, light functions for
+// light-density, each `card` elements, over `pixels`) outgrow what the shaders index: 2³¹ floats
+// (8 stars × 4 elements at 8192²). Checked by every march; the command line checks it before any
+// work too.
+void requireMomentsFit(std::size_t count, std::string_view what, int card, std::size_t pixels);
 
 class NebulaGpuMarcher {
  public:

@@ -120,6 +120,43 @@ TEST(NebulaGpu, ACameraLookingStraightUpIsTheCpusView) {
   EXPECT_LE(twinRatio(image, cpu, gpu, s.steps, directTerms(renderer, s, s.method, s.steps, 2)), 1.0);
 }
 
+// The march's moments are indexed in int: 100 stars × 4 elements over 3840×2160 pixels (3.3e9
+// floats) wrapped the index to garbage with no word; now one error before the buffer is made, by
+// the march itself and by requireMomentsFit for the command line. And past 2048² pixels (65 536
+// groups of 64 in a line, llvmpipe's most) the finish pass failed; it runs in tiles now.
+TEST(NebulaGpu, MomentsBeyondTheShadersIndexAreOneError) {
+  gpu::HeadlessContext context;
+  EXPECT_NO_THROW(requireMomentsFit(3, "stars", 4, 8192 * 8192));
+  try {
+    requireMomentsFit(100, "stars", 4, 3840 * 2160);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("100 stars × 4 elements × 8294400 pixels"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("light-density"), std::string::npos) << e.what();
+  }
+  RenderSettings s;
+  s.method = Method::Projection;
+  s.steps = 1;
+  NebulaModel model = smallNebula("cie1931", 2);
+  model.stars.resize(9, model.stars.front());
+  model.camera.width = model.camera.height = 8192;  // 9 stars × 4 elements: 2.4e9 floats
+  NebulaRenderer renderer(model, s);
+  NebulaGpuMarcher gpu(renderer);
+  EXPECT_THROW(gpu.render(s), Error);
+
+  NebulaModel wide = smallNebula("cie1931", 1);
+  wide.camera.width = 8192;
+  wide.camera.height = 520;  // 4.26e6 pixels, 66 560 groups of 64
+  NebulaRenderer wideRenderer(wide, s);
+  NebulaGpuMarcher wideGpu(wideRenderer);
+  const NebulaImage cpu = wideRenderer.render(s), image = wideGpu.render(s);
+  ASSERT_GT(peakOf(cpu), 0.0);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < cpu.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(static_cast<double>(image.pixels[i][c]) - cpu.pixels[i][c]));
+  EXPECT_LE(worst, 1e-5 * peakOf(cpu));
+}
+
 // The twin test can fail: a march one step shorter than the CPU's (99 of 100) is a real
 // difference of a few tenths of a percent, and the comparison sees it, for every method held to
 // the rounding bound.

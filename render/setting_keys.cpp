@@ -38,11 +38,15 @@ std::string listOf(const std::vector<std::string>& names) {
 // Every key's parse and print read and write its field through `field`, so the key's text is
 // the only thing a builder below is given besides it.
 SettingKey integerKey(std::string name, std::string help, std::string example, long min, long max,
-                      Field<int> field) {
-  SettingKey k{std::move(name), SettingType::Integer, fmt::format("a whole number within {}–{}", min, max), {},
-               std::move(help), std::move(example), {}, {}};
-  k.parse = [name = k.name, min, max, field](FrameSettings& s, std::string_view v) {
-    field(s) = static_cast<int>(parseInteger(name, v, min, max));
+                      Field<int> field, long multipleOf = 1) {
+  SettingKey k{std::move(name), SettingType::Integer,
+               multipleOf == 1 ? fmt::format("a whole number within {}–{}", min, max)
+                               : fmt::format("a multiple of {} within {}–{}", multipleOf, min, max),
+               {}, std::move(help), std::move(example), {}, {}};
+  k.parse = [key = k, min, max, field, multipleOf](FrameSettings& s, std::string_view v) {
+    const long value = parseInteger(key.name, v, min, max);
+    if (value % multipleOf != 0) fail(key, v);
+    field(s) = static_cast<int>(value);
   };
   k.print = [field](const FrameSettings& s) { return std::to_string(read(field, s)); };
   return k;
@@ -160,8 +164,8 @@ std::vector<SettingKey> makeKeys() {
       "naive",
       {RenderMode::Rgb, RenderMode::Naive, RenderMode::JakobHanika, RenderMode::Reference, RenderMode::Optimised4},
       renderModeName, [](S s) -> RenderMode& { return s.mode; }));
-  keys.push_back(integerKey("wavelengths", "wavelengths per pixel (a multiple of 4)", "32", 4, 1000,
-                            [](S s) -> int& { return s.sampling.count; }));
+  keys.push_back(integerKey("wavelengths", "wavelengths per pixel", "32", 4, 1000,
+                            [](S s) -> int& { return s.sampling.count; }, 4));
   keys.push_back(rangeKey());
   keys.push_back(choiceKey<SamplingStrategy>(
       "strategy", "how the wavelengths are drawn", "rotated",

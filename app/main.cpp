@@ -1,18 +1,18 @@
-// The prism command line: one subcommand per job. This is the only translation unit that
-// includes CLI11 (its headers cost ~15 s per file on 2 cores); commands live in their own files.
+// The prism command line: one subcommand per job, each in its own file. CLI11's headers cost ~15 s
+// per file on 2 cores, so few files include them (this one, cli_settings.h, nebula_command_line.cpp
+// and parse_error_hint.cpp).
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <functional>
-#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "app/benchmark_command.h"
+#include "app/cli_settings.h"
 #include "app/cluster_command.h"
 #include "app/colour_commands.h"
 #include "app/merge_command.h"
@@ -36,52 +36,11 @@
 #include "core/error.h"
 #include "core/parallel_for.h"
 #include "render/setting_keys.h"
+#include "viewer/viewer.h"
 
 namespace {
 
-const char* typeName(prism::render::SettingType type) {
-  using prism::render::SettingType;
-  return type == SettingType::Integer ? "INT" : type == SettingType::Number ? "NUMBER" : type == SettingType::Range ? "MIN,MAX" : "NAME";
-}
-
-// The frame keys of render/setting_keys.h as options of a command: names, help and defaults come
-// from the table; what was given is handed on as text, parsed by the table (frameSettings).
-class CliSettings {
- public:
-  // The keys `takes` accepts (default: every one; a command leaves out those it gives another
-  // meaning or has no use for, rather than take them and do nothing), and --camera.
-  void addTo(CLI::App* command, const std::function<bool(std::string_view key)>& takes = {}) {
-    const prism::render::FrameSettings defaults;
-    for (const prism::render::SettingKey& key : prism::render::frameSettingKeys()) {
-      if (takes && !takes(key.name)) continue;
-      std::string& text = mTexts[key.name];  // a map: the references CLI11 keeps stay valid
-      std::string help = key.help + ": " + key.expects;
-      CLI::Option* option = key.type == prism::render::SettingType::Switch
-                                ? command->add_flag("--" + key.name + "{on}", text, help + " (--" + key.name + " is on)")
-                                : command->add_option("--" + key.name, text, help)->type_name(typeName(key.type));
-      option->default_str(key.print(defaults));
-      mOptions.emplace_back(key.name, option);
-    }
-    CLI::Option* camera = command->add_option("--camera", mCamera, "a camera as the observer (raw camera RGB, fitted matrix for display)");
-    // One observer: given both, the camera used to replace --observer without a word.
-    for (const auto& [name, option] : mOptions)
-      if (name == "observer") camera->excludes(option);
-  }
-
-  prism::app::SettingsOptions given() const {
-    prism::app::SettingsOptions o;
-    for (const auto& [name, option] : mOptions) {
-      if (option->count() > 0) o.values.emplace_back(name, mTexts.at(name));
-    }
-    o.camera = mCamera;
-    return o;
-  }
-
- private:
-  std::map<std::string, std::string> mTexts;
-  std::vector<std::pair<std::string, CLI::Option*>> mOptions;
-  std::string mCamera;
-};
+using prism::app::CliSettings;
 
 // The options of `prism reference` that shape one render, also taken by `prism cluster script
 // reference` to write the tasks' command lines.
@@ -410,6 +369,9 @@ int main(int argc, char** argv) {
   viewCmd->add_option("--script", view.script, "run these viewer commands (README), then close");
   viewCmd->add_option("--set", view.sets, "override a scene value: json.path=value (repeatable)");
   viewSettings.addTo(viewCmd);
+  for (const char* side : {"width", "height"})
+    viewSettings.describe(side, fmt::format("window {}: a whole number within {}–{}", side, prism::viewer::kMinWindowSide,
+                                            prism::viewer::kMaxWindowSide));
 
   SceneBenchOptions sceneBench;
   CliSettings benchSettings;

@@ -82,7 +82,7 @@ void putRatio(nlohmann::json& j, const std::string& key, const RatioSpread& s) {
   j[key + "_max"] = s.max;
 }
 
-double megabytes(std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
+double mebibytes(std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
 
 // Every frame a moving camera's (accumulation restarts: shadow maps and G-buffer drawn), or with
 // `still` the frames after the first accumulate as a still camera's do.
@@ -302,7 +302,7 @@ void runSceneBench(const SceneBenchOptions& options) {
       e["wavelengths"] = c.wavelengths;
       e["median_ms"] = c.medianMs();
       putRatio(e, "ratio_to_rgb", ratio(c, configs[rgb]));
-      e["gpu_memory_mb"] = megabytes(c.gpuMemoryBytes);
+      e["gpu_memory_mb"] = mebibytes(c.gpuMemoryBytes);
       j["spectral"].push_back(e);
     }
     // A line through one wavelength count is no measurement: null then.
@@ -311,10 +311,10 @@ void runSceneBench(const SceneBenchOptions& options) {
                   {"slope_fraction_of_rgb_frame", fit.slope / rgbFrame}};
     else
       j["fit"] = nullptr;
-    j["gpu_memory_mb"] = {{"rgb", megabytes(configs[rgb].gpuMemoryBytes)},
+    j["gpu_memory_mb"] = {{"rgb", mebibytes(configs[rgb].gpuMemoryBytes)},
                           {"largest_wavelength_count", largest->wavelengths},
-                          {"spectral_largest", megabytes(largest->gpuMemoryBytes)},
-                          {"coefficients_16", megabytes(configs[coefficients16].gpuMemoryBytes)}};
+                          {"spectral_largest", mebibytes(largest->gpuMemoryBytes)},
+                          {"coefficients_16", mebibytes(configs[coefficients16].gpuMemoryBytes)}};
     nlohmann::json& g = j["gbuffer_albedo_16"];
     g = {{"rgb_frame_ms", configs[rgbAlbedo16].frameMs()},
          {"coefficients_frame_ms", configs[coefficients16].frameMs()},
@@ -368,9 +368,9 @@ void runSceneBench(const SceneBenchOptions& options) {
                fit.intercept, 100.0 * fit.slope / rgbFrame);
   else
     fmt::print("fit: none (one wavelength count; give --wavelengths two or more for a slope)\n");
-  fmt::print("GPU memory held by the renderer: RGB {:.2f} MB, n = {} {:.2f} MB (+{:.3f} MB)\n",
-             megabytes(configs[rgb].gpuMemoryBytes), largest->wavelengths, megabytes(largest->gpuMemoryBytes),
-             megabytes(largest->gpuMemoryBytes) - megabytes(configs[rgb].gpuMemoryBytes));
+  fmt::print("GPU memory held by the renderer: RGB {:.2f} MiB, n = {} {:.2f} MiB (+{:.3f} MiB)\n",
+             mebibytes(configs[rgb].gpuMemoryBytes), largest->wavelengths, mebibytes(largest->gpuMemoryBytes),
+             mebibytes(largest->gpuMemoryBytes) - mebibytes(configs[rgb].gpuMemoryBytes));
   auto spread = [&](const RatioSpread& s) {
     return fmt::format("{:.3f}× {} [{:.3f}, {:.3f}]", s.median, confidence(s), s.min, s.max);
   };

@@ -170,9 +170,10 @@ void printValidateClusterScript(const ClusterOptions& o) {
   if (!v.scenes.empty()) common += " --scenes " + shellQuote(std::filesystem::absolute(v.scenes).string());
   if (!v.only.empty()) common += " --only " + shellQuote(fmt::format("{}", fmt::join(v.only, ",")));
   // The rasteriser runs on the GPU (EGL; Mesa's llvmpipe on a node without one, whose threads
-  // follow the CPUs Slurm gives: LP_NUM_THREADS).
+  // follow the CPUs Slurm gives: LP_NUM_THREADS), the path tracer and the bakes on --threads.
   s.array.command = "env LP_NUM_THREADS=\"$SLURM_CPUS_PER_TASK\" " + shellQuote(prismExecutable()) +
-                    fmt::format(" validate --task \"$SLURM_ARRAY_TASK_ID/{}\"", o.tasks) + common;
+                    fmt::format(" validate --task \"$SLURM_ARRAY_TASK_ID/{}\" --threads \"$SLURM_CPUS_PER_TASK\"", o.tasks) +
+                    common;
   // Measured peaks (/usr/bin/time): 183 MiB for a --quick task of two experiments, 185 and 189 MiB
   // for full-size tasks of one sphere scene and one reef depth: the renderer's, not the images'.
   s.array.memoryMiB = 512;

@@ -361,6 +361,8 @@ int main(int argc, char** argv) {
       ->excludes("--task");
   validateCmd->add_option("--only", val.only, "only these experiments (names as in results.json, e.g. spheres_d65,reef_5m)")
       ->delimiter(',');
+  validateCmd->add_option("--threads", val.threads, "CPU threads for the path tracer, bakes and references (0: all)")
+      ->check(CLI::Range(0u, prism::kMaxThreads));
 
   ViewOptions view;
   CliSettings viewSettings;

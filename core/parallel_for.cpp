@@ -7,6 +7,16 @@
 #include <vector>
 
 namespace prism {
+namespace {
+std::atomic<unsigned> gAllThreads{0};
+}  // namespace
+
+unsigned allThreads() {
+  const unsigned cap = gAllThreads.load();
+  return cap != 0 ? cap : std::max(1u, std::thread::hardware_concurrency());
+}
+
+void setAllThreads(unsigned threads) { gAllThreads.store(threads); }
 
 void parallelFor(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body,
                  const std::function<void(std::size_t, std::size_t)>& progress) {
@@ -22,7 +32,7 @@ void parallelFor(std::size_t count, unsigned threads, const std::function<void(s
       }
     }
   };
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  if (threads == 0) threads = allThreads();
   std::vector<std::jthread> pool;
   for (unsigned t = 1; t < threads && t < count; ++t) pool.emplace_back(worker);
   worker();

@@ -30,6 +30,7 @@
 #include "core/atomic_file.h"
 #include "core/data_files.h"
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "core/task_split.h"
 
 namespace prism::harness {
@@ -526,6 +527,7 @@ int runValidate(const ValidateOptions& o) {
     for (const nlohmann::json& row : collectValidateParts(o.output, identity, names)) results.push_back(resultFromJson(row));
     return report(o, sizes, results);
   }
+  setAllThreads(o.threads);  // every pass's "all threads": the images do not depend on it
   IndexRange share{0, count};
   std::filesystem::path partPath;
   if (!o.task.empty()) {

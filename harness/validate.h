@@ -44,6 +44,7 @@ struct ValidateOptions {
   std::string task;              // "I/N": only task I of N's experiments, into DIR/parts (skipped when there)
   bool collect = false;          // the report from DIR/parts instead of running experiments
   std::vector<std::string> only;  // experiment names, in any order; empty: every one
+  unsigned threads = 0;           // the CPU's share of every experiment (0: all hardware threads)
 };
 // 0 when every bound holds, 1 otherwise (the report is written either way); a task: 0.
 int runValidate(const ValidateOptions& options);

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/parallel_for.h"
 
 namespace prism::rays {
 namespace {
@@ -90,7 +91,8 @@ struct TriangleBvh::Handles {
 };
 
 TriangleBvh::TriangleBvh(std::span<const TriangleMesh> meshes) : mHandles(std::make_unique<Handles>()) {
-  mHandles->device = rtcNewDevice(nullptr);
+  // Its BVH builds on as many threads as the process's work (prism validate --threads caps both).
+  mHandles->device = rtcNewDevice(fmt::format("threads={}", allThreads()).c_str());
   if (!mHandles->device) {
     throw Error(fmt::format("Embree: cannot create a device ({})", embreeErrorName(rtcGetDeviceError(nullptr))));
   }

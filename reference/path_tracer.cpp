@@ -19,6 +19,7 @@
 #include "scene/scene_spectra.h"
 #include "shared_cpp.h"
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "spectral/colour_space.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_intent.h"
@@ -529,7 +530,7 @@ ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& tab
   const std::size_t total = static_cast<std::size_t>(passes) * static_cast<std::size_t>(rows);
   std::size_t done = 0;
   std::mutex progressMutex;
-  unsigned threadCount = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
+  unsigned threadCount = settings.threads ? settings.threads : allThreads();
 
   for (int pass = 0; pass < passes; ++pass) {
     const int first = region.sampleBegin + pass * kPassSamples;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "shared_cpp.h"
 #include "core/error.h"
@@ -78,17 +79,24 @@ double TabulatedSpectrum::at(double lambdaNm) const {
   return mValues[lo] * (1.0 - t) + mValues[hi] * t;
 }
 
-bool TabulatedSpectrum::hasSamplesBetweenNodes(int node) const {
-  auto first = std::upper_bound(mLambdasNm.begin(), mLambdasNm.end(), node - 1.0);
-  auto last = std::lower_bound(mLambdasNm.begin(), mLambdasNm.end(), node + 1.0);
-  return std::any_of(first, last, [](double l) { return l != std::floor(l); });
+double TabulatedSpectrum::onPieceOf(double inside, double lambdaNm) const {
+  if (inside < mLambdasNm.front() || inside > mLambdasNm.back()) return at(inside);  // constant out there
+  const auto hi = static_cast<std::size_t>(std::upper_bound(mLambdasNm.begin(), mLambdasNm.end(), inside) -
+                                           mLambdasNm.begin());
+  const std::size_t lo = hi - 1;
+  const double t = (lambdaNm - mLambdasNm[lo]) / (mLambdasNm[hi] - mLambdasNm[lo]);
+  return mValues[lo] * (1.0 - t) + mValues[hi] * t;
 }
 
 double TabulatedSpectrum::hatAverage(int node) const {
-  // f is linear between consecutive knots (and constant outside the table), so each piece of the
-  // hat's support between knots is a quadratic in f·hat, which Simpson's rule integrates exactly.
+  // f is linear on each piece of the hat's support between knots (and constant outside the
+  // table), so f·hat is a quadratic there, which Simpson's rule integrates exactly. The average
+  // lies within f's extremes on the support, its pieces' ends; held there against rounding (a
+  // reflectance of 1 stays 1, not 1 + 1e-14).
   const double centre = node;
   double sum = 0.0, weight = 0.0;
+  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+  auto hat = [centre](double l) { return 1.0 - std::abs(l - centre); };
   for (double outer : {centre - 1.0, centre + 1.0}) {
     if (outer < kLambdaMinNm || outer > kLambdaMaxNm) continue;
     const double lo = std::min(centre, outer), hi = std::max(centre, outer);
@@ -96,25 +104,27 @@ double TabulatedSpectrum::hatAverage(int node) const {
     cuts.insert(cuts.end(), std::upper_bound(mLambdasNm.begin(), mLambdasNm.end(), lo),
                 std::lower_bound(mLambdasNm.begin(), mLambdasNm.end(), hi));
     cuts.push_back(hi);
-    auto hat = [centre](double l) { return 1.0 - std::abs(l - centre); };
     for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
       const double a = cuts[k], b = cuts[k + 1], m = 0.5 * (a + b);
-      // The piece's ends as limits from inside it: f may jump at the table's ends.
-      const double fm = at(m);
-      const double slope = (at(m + 0.25 * (b - a)) - at(m - 0.25 * (b - a))) / (0.5 * (b - a));
-      const double fa = fm - slope * (m - a), fb = fm + slope * (b - m);
+      const double fa = onPieceOf(m, a), fm = onPieceOf(m, m), fb = onPieceOf(m, b);  // f may jump at the ends
       sum += (b - a) / 6.0 * (fa * hat(a) + 4.0 * fm * hat(m) + fb * hat(b));
+      lowest = std::min({lowest, fa, fb});
+      highest = std::max({highest, fa, fb});
     }
     weight += 0.5;
   }
-  return sum / weight;
+  return std::clamp(sum / weight, lowest, highest);
 }
 
 Spectrum TabulatedSpectrum::toDense() const {
+  // One rule for the whole table: nodes of both kinds side by side would not keep its integral
+  // (a point value differs from its hat average by the local curvature, which need not cancel).
+  const bool offWholeNanometres =
+      std::any_of(mLambdasNm.begin(), mLambdasNm.end(), [](double l) { return l != std::floor(l); });
   Spectrum dense;
   for (int i = 0; i < kSpectrumSamples; ++i) {
     const int node = kLambdaMinNm + i;
-    dense[i] = hasSamplesBetweenNodes(node) ? hatAverage(node) : at(node);
+    dense[i] = offWholeNanometres ? hatAverage(node) : at(node);
   }
   return dense;
 }

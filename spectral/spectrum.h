@@ -7,13 +7,14 @@
 //
 // TabulatedSpectrum: data as published (any increasing wavelengths, any spacing), piecewise linear
 // between its samples. Resampling onto the dense grid takes the table's value at each 1 nm node
-// (exact for the CIE's 1 nm and 5 nm tables); where the table has samples between whole
-// nanometres within a node's reach (a spectrometer's 0.1 nm lamp lines), the node takes instead
-// the table's average under the hat function of the dense grid, which keeps the table's integral,
-// its centroid and its sign: a mercury line between 546 and 547 nm keeps its energy instead of
-// falling between two nodes. Beyond the table's ends the Extrapolation rule of the table applies
-// (Zero for emitters and sensors, whose response outside the measured band is unknown and taken
-// as none; Clamp for reflectances, whose last measured value is the best estimate of the next).
+// when every sample lies on a whole nanometre (the CIE's 1 nm and 5 nm tables, exact); a table
+// with any sample between whole nanometres (a spectrometer's 0.1 nm lamp lines, the LSPDD lamp's
+// 0.5 nm, measured indices) gives each node instead its average under the dense grid's hat
+// function, which keeps the table's integral and centroid over 360–830 nm and its range of
+// values: a mercury line between 546 and 547 nm keeps its energy instead of falling between two
+// nodes. Beyond the table's ends the Extrapolation rule of the table applies (Zero for emitters
+// and sensors, whose response outside the measured band is unknown and taken as none; Clamp for
+// reflectances, whose last measured value is the best estimate of the next).
 #pragma once
 
 #include <array>
@@ -74,8 +75,8 @@ class TabulatedSpectrum {
   std::span<const double> values() const { return mValues; }
 
  private:
-  // Whether a sample lies off whole nanometres strictly within 1 nm of node.
-  bool hasSamplesBetweenNodes(int node) const;
+  // The value at lambdaNm of the linear piece of this table's function that holds `inside`.
+  double onPieceOf(double inside, double lambdaNm) const;
   // ∫ f·hat / ∫ hat over [node − 1, node + 1] ∩ [360, 830] nm, f this table's function.
   double hatAverage(int node) const;
 

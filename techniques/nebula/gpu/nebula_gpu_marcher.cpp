@@ -178,7 +178,7 @@ void requireMomentsFit(std::size_t count, std::string_view what, int card, std::
   // GL_MAX_SHADER_STORAGE_BLOCK_SIZE: llvmpipe advertises 128 MiB but binds whole buffers past it
   // (141 MB of moments matched the CPU twin), and NVIDIA's is 2 GiB.
   const double floats = static_cast<double>(count) * card * static_cast<double>(pixels);
-  constexpr double kLimit = std::numeric_limits<std::int32_t>::max();
+  constexpr double kLimit = static_cast<double>(std::numeric_limits<std::int32_t>::max()) + 1.0;  // the last index fits
   if (floats > kLimit)
     throw Error(fmt::format("nebula: the march's moments, {} {} × {} elements × {} pixels, are {:.3g} floats, more than "
                             "the shaders index (2³¹): render fewer pixels{}",

@@ -13,6 +13,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "core/file_extension.h"
 #include "core/task_split.h"
 #include "harness/progress_bar.h"
@@ -179,6 +180,7 @@ PrtBakeTarget prtBakeTarget(const PrtBakeOptions& o) {
 }
 
 void runPrtBake(const PrtBakeOptions& o) {
+  setAllThreads(o.threads);  // Embree's BVH build too, not only the bake
   if (o.samples) checkSamples(*o.samples);
   if (!o.output.empty()) requireOtherFile(o.output, o.input, "the input");
   PrtInput input = loadPrtInput(o.input, false);

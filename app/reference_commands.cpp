@@ -6,6 +6,7 @@
 #include "batch/reference_part.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "core/file_extension.h"
 #include "core/task_split.h"
 #include "harness/display_png.h"
@@ -135,6 +136,7 @@ void writeReferenceImage(const reference::ReferenceImage& image, const std::stri
 }
 
 void runReference(const ReferenceOptions& o) {
+  setAllThreads(o.threads);  // Embree's BVH build too, not only the paths
   if (o.ev100) render::validateEv100(*o.ev100);
   if (o.tile.empty() && o.samples.empty()) checkReferenceOutputs(o.output, o.variance);
   Scene scene = loadScene(o.scene, o.sets);

@@ -44,7 +44,12 @@ SettingKey integerKey(std::string name, std::string help, std::string example, l
                                : fmt::format("a multiple of {} within {}–{}", multipleOf, min, max),
                {}, std::move(help), std::move(example), {}, {}};
   k.parse = [key = k, min, max, field, multipleOf](FrameSettings& s, std::string_view v) {
-    const long value = parseInteger(key.name, v, min, max);
+    long value = 0;
+    try {
+      value = parseInteger(key.name, v, min, max);
+    } catch (const Error&) {
+      fail(key, v);  // in the key's words: "a multiple of 4 within …" where it has a step
+    }
     if (value % multipleOf != 0) fail(key, v);
     field(s) = static_cast<int>(value);
   };

@@ -379,33 +379,28 @@ nlohmann::json resultJson(const Result& r) {
                         {"median_delta_e", r.stats.medianDeltaE}, {"p95_delta_e", r.stats.p95DeltaE},
                         {"max_delta_e", r.stats.maxDeltaE}, {"mae_8bit", r.stats.mae8},
                         {"relative_error", r.stats.relativeError}};
-  if (!std::isnan(r.meanVsGlobal)) row["mean_delta_e_vs_multiple_scattering"] = r.meanVsGlobal;
+  if (!std::isnan(r.meanVsGlobal)) row[kResultVsMultipleScattering] = r.meanVsGlobal;
   return row;
 }
 
-// A row of a part (validate_parts.h) as its Result: what the report and the bounds read of it.
+// A row of a part (validate_parts.h, checked by readValidatePart) as its Result: what the report
+// and the bounds read of it.
 Result resultFromJson(const nlohmann::json& row) {
   Result r;
-  try {
-    r.scene = row.at("scene").get<std::string>();
-    r.mode = row.at("mode").get<std::string>();
-    // A statistic over a pixel that is not finite is +∞, which JSON writes as null.
-    auto statistic = [&row](const char* key) {
-      const nlohmann::json& v = row.at(key);
-      return v.is_null() ? std::numeric_limits<double>::infinity() : v.get<double>();
-    };
-    r.stats.meanDeltaE = statistic("mean_delta_e");
-    r.stats.medianDeltaE = statistic("median_delta_e");
-    r.stats.p95DeltaE = statistic("p95_delta_e");
-    r.stats.maxDeltaE = statistic("max_delta_e");
-    r.stats.mae8 = statistic("mae_8bit");
-    r.stats.relativeError = statistic("relative_error");
-    if (row.contains("mean_delta_e_vs_multiple_scattering"))
-      r.meanVsGlobal = row.at("mean_delta_e_vs_multiple_scattering").get<double>();
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(fmt::format("validate --collect: a result row of {} {}: {}", row.value("scene", "?"),
-                            row.value("mode", "?"), excerpt(e.what())));
-  }
+  r.scene = row.at("scene").get<std::string>();
+  r.mode = row.at("mode").get<std::string>();
+  // A statistic over a pixel that is not finite is +∞, which JSON writes as null.
+  auto statistic = [&row](const char* key) {
+    const nlohmann::json& v = row.at(key);
+    return v.is_null() ? std::numeric_limits<double>::infinity() : v.get<double>();
+  };
+  r.stats.meanDeltaE = statistic("mean_delta_e");
+  r.stats.medianDeltaE = statistic("median_delta_e");
+  r.stats.p95DeltaE = statistic("p95_delta_e");
+  r.stats.maxDeltaE = statistic("max_delta_e");
+  r.stats.mae8 = statistic("mae_8bit");
+  r.stats.relativeError = statistic("relative_error");
+  if (row.contains(kResultVsMultipleScattering)) r.meanVsGlobal = statistic(kResultVsMultipleScattering);
   return r;
 }
 

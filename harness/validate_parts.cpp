@@ -35,11 +35,16 @@ ValidatePart readValidatePart(const std::filesystem::path& path) {
   const std::vector<unsigned char> bytes = schema::readBinaryFile(path);  // a folder: its own error
   nlohmann::json json = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
   if (json.is_discarded() || !json.is_object()) throw fail("not JSON");
-  if (json.value("format", "") != kFormat) throw fail("format is not \"" + std::string(kFormat) + "\"");
+  // Members looked up, not value()d: value("format", "") throws nlohmann's own error on a number.
+  auto member = [&json](const char* key) {
+    auto it = json.find(key);
+    return it == json.end() ? nlohmann::json() : *it;
+  };
+  if (member("format") != kFormat) throw fail("format is not \"" + std::string(kFormat) + "\"");
   ValidatePart part;
-  part.identity = json.value("identity", nlohmann::json());
-  part.results = json.value("results", nlohmann::json());
-  const nlohmann::json experiments = json.value("experiments", nlohmann::json());
+  part.identity = member("identity");
+  part.results = member("results");
+  const nlohmann::json experiments = member("experiments");
   if (!experiments.is_array() || !part.results.is_array()) throw fail("no experiments or results");
   for (const nlohmann::json& e : experiments) {
     if (!e.is_string()) throw fail("an experiment's name is not a string");
@@ -47,9 +52,18 @@ ValidatePart readValidatePart(const std::filesystem::path& path) {
   }
   for (const nlohmann::json& row : part.results) {
     if (!row.is_object() || !row.contains("scene") || !row["scene"].is_string()) throw fail("a result without its scene");
-    if (std::find(part.experiments.begin(), part.experiments.end(), row["scene"].get<std::string>()) ==
-        part.experiments.end())
+    const std::string scene = row["scene"].get<std::string>();
+    if (std::find(part.experiments.begin(), part.experiments.end(), scene) == part.experiments.end())
       throw fail("a result of an experiment it does not name");
+    if (!row.contains("mode") || !row["mode"].is_string()) throw fail("a result of " + scene + " without its mode");
+    auto statistic = [&](const char* key, bool required) {
+      auto it = row.find(key);
+      if (it == row.end() ? required : !(it->is_number() || it->is_null()))
+        throw fail(fmt::format("the result of {} {} has \"{}\": {}, not a number or null", scene,
+                               row["mode"].get<std::string>(), key, it == row.end() ? "missing" : excerpt(it->dump())));
+    };
+    for (const char* key : kResultStatistics) statistic(key, true);
+    statistic(kResultVsMultipleScattering, false);
   }
   return part;
 }

@@ -6,6 +6,7 @@
 // A part that exists is a task whose images are all written.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,6 +16,12 @@
 #include "core/task_split.h"
 
 namespace prism::harness {
+
+// A result row's statistics (harness/validate.cpp writes them), each a number, or null for +∞;
+// the last only in the reef's rows.
+inline constexpr std::array<const char*, 6> kResultStatistics = {"mean_delta_e", "median_delta_e", "p95_delta_e",
+                                                                 "max_delta_e",  "mae_8bit",       "relative_error"};
+inline constexpr const char* kResultVsMultipleScattering = "mean_delta_e_vs_multiple_scattering";
 
 struct ValidatePart {
   nlohmann::json identity;
@@ -26,7 +33,8 @@ std::filesystem::path validatePartPath(const std::filesystem::path& dir, TaskInd
 
 void writeValidatePart(const std::filesystem::path& path, const ValidatePart& part);
 
-// Error "PATH: not a part of `prism validate --task` (WHY)" when it is not one.
+// Error "PATH: not a part of `prism validate --task` (WHY)" when it is not one: every row has its
+// scene (one the part names), its mode and its statistics.
 ValidatePart readValidatePart(const std::filesystem::path& path);
 
 // Every part in DIR/parts, checked to agree on `identity` and to hold each of `experiments`

@@ -25,10 +25,15 @@ class ValidateParts : public ::testing::Test {
   void part(TaskIndex task, const std::vector<std::string>& experiments, const nlohmann::json& identity = kIdentity) {
     ValidatePart p{identity, experiments, nlohmann::json::array()};
     for (const std::string& e : experiments) {
-      p.results.push_back({{"scene", e}, {"mode", "rgb"}});
-      if (e == "b") p.results.push_back({{"scene", e}, {"mode", "naive"}});
+      p.results.push_back(row(e, "rgb"));
+      if (e == "b") p.results.push_back(row(e, "naive"));
     }
     writeValidatePart(validatePartPath(mRoot, task), p);
+  }
+  static nlohmann::json row(const std::string& scene, const std::string& mode) {
+    nlohmann::json r = {{"scene", scene}, {"mode", mode}};
+    for (const char* key : kResultStatistics) r[key] = 0.5;
+    return r;
   }
   std::string collectError() {
     try {
@@ -79,6 +84,21 @@ TEST_F(ValidateParts, RefusesAMissingExperimentATwiceRunOneAndAnotherSweep) {
   part({1, 2}, {"c", "d"});
   EXPECT_EQ(collectError(), "validate --collect: " + validatePartPath(mRoot, {1, 2}).string() +
                                 ": experiment \"d\" is not one of this report's (a, b, c)");
+  // Types that nlohmann's value() and get() refused in their own words (exit 70 for a numeric
+  // format), and a row without its statistics: each the part's file and what is wrong.
+  std::ofstream(validatePartPath(mRoot, {1, 2})) << R"({"format": 1})";
+  EXPECT_EQ(collectError(), validatePartPath(mRoot, {1, 2}).string() +
+                                ": not a part of `prism validate --task` (format is not \"prism-validate-part 1\")");
+  ValidatePart wrong{kIdentity, {"c"}, nlohmann::json::array({row("c", "rgb")})};
+  wrong.results[0]["p95_delta_e"] = "x";
+  writeValidatePart(validatePartPath(mRoot, {1, 2}), wrong);
+  EXPECT_EQ(collectError(), validatePartPath(mRoot, {1, 2}).string() +
+                                ": not a part of `prism validate --task` (the result of c rgb has \"p95_delta_e\": "
+                                "\"x\", not a number or null)");
+  wrong.results[0].erase("p95_delta_e");
+  wrong.results[0]["max_delta_e"] = nullptr;  // +∞, as a non-finite pixel writes it
+  writeValidatePart(validatePartPath(mRoot, {1, 2}), wrong);
+  EXPECT_NE(collectError().find("\"p95_delta_e\": missing"), std::string::npos) << collectError();
   std::filesystem::remove(validatePartPath(mRoot, {1, 2}));
   std::filesystem::create_directories(validatePartPath(mRoot, {1, 2}));
   EXPECT_EQ(collectError(), validatePartPath(mRoot, {1, 2}).string() + ": is a folder, not a file");

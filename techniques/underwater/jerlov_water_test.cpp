@@ -26,10 +26,14 @@ TEST(JerlovWater, ValuesAtTableNodesAndTheDocumentedExtrapolation) {
   EXPECT_DOUBLE_EQ(clear.kd.at(830.0), 0.653);
   // Coastal water scatters far more than clear ocean.
   EXPECT_GT(jerlovWater("9C").sigmaS.at(500.0), 100.0 * clear.sigmaS.at(500.0));
-  // Williamson & Hollins give extinction: a = c − b (first row "IB,400.0000,0.144,0.189,0.051").
+  // Williamson & Hollins give extinction: a = c − b (rows "IB,400.0000,0.144,0.189,0.051" and
+  // "IB,415.7895,0.141,0.184,0.045"). Their wavelengths fall between whole nanometres, so each
+  // node is the table's average under the dense grid's hat (spectral/spectrum.h): at 400 nm, where
+  // the table starts and is held below, its value plus a sixth of its slope.
   WaterProperties ib = jerlovWater("IB", JerlovDataset::WilliamsonHollins2022);
-  EXPECT_NEAR(ib.sigmaA.at(400.0), 0.189 - 0.144, 1e-12);
-  EXPECT_NEAR(ib.sigmaS.at(400.0), 0.144, 1e-12);
+  const double step = 415.7895 - 400.0;
+  EXPECT_NEAR(ib.sigmaA.at(400.0), (0.189 - 0.144) + ((0.184 - 0.141) - (0.189 - 0.144)) / step / 6.0, 1e-12);
+  EXPECT_NEAR(ib.sigmaS.at(400.0), 0.144 + (0.141 - 0.144) / step / 6.0, 1e-12);
 }
 
 TEST(JerlovWater, UnknownNamesAreErrorsListingTheKnownOnes) {

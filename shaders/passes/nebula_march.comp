@@ -59,7 +59,8 @@ layout(std430, binding = 2) readonly buffer Stars { vec4 stars[]; };  // positio
 layout(std430, binding = 3) readonly buffer Lines { vec4 lines[]; };  // λ (µm); the finish reads the responses
 // Per pixel p of P, value v at moments[v·P + p] (neighbouring invocations write neighbouring
 // words): v = s·card + j (projection) or k·card + j (light–density), written once per group at the
-// ray's end, so the number of stars has no limit but the buffer's size.
+// ray's end, so the number of stars has no limit but the int index: 2³¹ floats of moments
+// (requireMomentsFit, nebula_gpu_marcher.h).
 layout(std430, binding = 4) buffer Moments { float moments[]; };
 // What the march made for the finish besides the moments, [v·P + p]: v = 0…2 the colour the direct
 // methods integrate in the march (0 for projection and light–density), v = 3 + l the light of

@@ -176,7 +176,7 @@ void requireGpuFits(int voxelsZ, std::size_t stars) {
 void requireMomentsFit(std::size_t count, std::string_view what, int card, std::size_t pixels) {
   // The shaders index the buffer in int (nebula_march.comp, nebula_finish.comp). Not held to
   // GL_MAX_SHADER_STORAGE_BLOCK_SIZE: llvmpipe advertises 128 MiB but binds whole buffers past it
-  // (141 MB of moments matched the CPU twin), and NVIDIA's is 2 GiB.
+  // (141 MB of moments matched the CPU twin); other drivers' limits were not measured.
   const double floats = static_cast<double>(count) * card * static_cast<double>(pixels);
   constexpr double kLimit = static_cast<double>(std::numeric_limits<std::int32_t>::max()) + 1.0;  // the last index fits
   if (floats > kLimit)

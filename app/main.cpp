@@ -2,7 +2,7 @@
 // per file on 2 cores, so few files include them (this one, cli_settings.h, nebula_command_line.cpp
 // and parse_error_hint.cpp).
 #include <CLI/CLI.hpp>
-#include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,7 @@
 #include "app/colour_commands.h"
 #include "app/merge_command.h"
 #include "app/nebula_command_line.h"
-#include "app/number_list.h"
+#include "app/option_lists.h"
 #include "app/parse_error_hint.h"
 #include "app/prt_commands.h"
 #include "app/reference_commands.h"
@@ -162,7 +162,9 @@ int main(int argc, char** argv) {
   metamerCmd->add_option("--reflectance", metamer.reflectance, "a ColorChecker patch name or a spectral CSV")->required();
   metamerCmd->add_option("--match", metamer.match, "illuminant under which the colours match")->capture_default_str();
   metamerCmd->add_option("--target", metamer.target, "illuminant under which they differ most")->capture_default_str();
-  metamerCmd->add_option("--under", metamer.under, "illuminants to report ΔE00 under")->delimiter(',')->capture_default_str();
+  std::string metamerUnder = fmt::format("{}", fmt::join(metamer.under, ","));
+  auto* metamerUnderOpt = metamerCmd->add_option("--under", metamerUnder, "illuminants to report ΔE00 under, comma-separated")
+                              ->capture_default_str();
   metamerCmd->add_option("--observer", metamer.observer, "cie1931 or cie1964")->capture_default_str();
   metamerCmd->add_option("-o,--output", metamer.output, "CSV of the metamer to write");
   metamerCmd->add_flag("--json", metamer.json, "JSON output");
@@ -207,7 +209,10 @@ int main(int argc, char** argv) {
   prtMetamersCmd->add_option("--reflectance", prtMetamers.reflectance, "a ColorChecker patch name or a spectral CSV")->capture_default_str();
   prtMetamersCmd->add_option("--match", prtMetamers.match, "illuminant under which the two match")->capture_default_str();
   prtMetamersCmd->add_option("--target", prtMetamers.target, "illuminant under which they differ most")->capture_default_str();
-  prtMetamersCmd->add_option("--under", prtMetamers.under, "illuminants of the skies to render under")->delimiter(',')->capture_default_str();
+  std::string prtMetamersUnder = fmt::format("{}", fmt::join(prtMetamers.under, ","));
+  auto* prtMetamersUnderOpt = prtMetamersCmd->add_option("--under", prtMetamersUnder,
+                                                         "illuminants of the skies to render under, comma-separated")
+                                  ->capture_default_str();
   prtMetamersCmd->add_option("--patch-vertices", prtMetamers.patchVertices, "vertices along each side of a patch")->capture_default_str();
   prtMetamersCmd->add_option("--samples", prtMetamers.samples, "directions per vertex")->capture_default_str();
   prtMetamersCmd->add_flag("--json", prtMetamers.json, "JSON output");
@@ -316,8 +321,9 @@ int main(int argc, char** argv) {
   scriptValidateCmd->add_option("-o,--output", cluster.validate.output, "folder to write")->capture_default_str();
   scriptValidateCmd->add_option("--scenes", cluster.validate.scenes, "folder of the scene files (default: the example scenes)");
   scriptValidateCmd->add_flag("--quick", cluster.validate.quick, "240x135 and fewer paths per pixel");
-  scriptValidateCmd->add_option("--only", cluster.validate.only, "only these experiments (names as in results.json)")
-      ->delimiter(',');
+  std::string clusterOnly;
+  auto* clusterOnlyOpt = scriptValidateCmd->add_option("--only", clusterOnly,
+                                                       "only these experiments, comma-separated (names as in results.json)");
   addClusterOptions(scriptValidateCmd);
   auto* scriptPrtCmd = scriptCmd->add_subcommand(
       "prt", "`prism prt bake --part I/N` (a share of the vertices each), then `prism merge` into the cache's transfer file");
@@ -359,8 +365,9 @@ int main(int argc, char** argv) {
                           "I/N: only task I of N's share of the experiments, as a part in OUT/parts (a Slurm array task)");
   validateCmd->add_flag("--collect", val.collect, "the report from the parts in OUT/parts (after every --task)")
       ->excludes("--task");
-  validateCmd->add_option("--only", val.only, "only these experiments (names as in results.json, e.g. spheres_d65,reef_5m)")
-      ->delimiter(',');
+  std::string validateOnly;
+  auto* validateOnlyOpt = validateCmd->add_option(
+      "--only", validateOnly, "only these experiments (names as in results.json, e.g. spheres_d65,reef_5m)");
   validateCmd->add_option("--threads", val.threads, "CPU threads for the path tracer, bakes and references (0: all)")
       ->check(CLI::Range(0u, prism::kMaxThreads));
 
@@ -443,14 +450,20 @@ int main(int argc, char** argv) {
     }
     if (*camCmd) colourCameraMatrix(cam);
     if (*listCmd) colourList(listWhat, listJson);
-    if (*metamerCmd) colourMetamer(metamer);
+    if (*metamerCmd) {
+      if (metamerUnderOpt->count() > 0) metamer.under = prism::app::parseNames(metamerUnder, "--under");
+      colourMetamer(metamer);
+    }
     if (*spectralTextureCmd) colourSpectralTexture(spectralTexture);
     if (*prtBakeCmd) runPrtBake(prtBake);
     if (*prtReportCmd) {
       if (!prtRotate.empty()) prtReport.rotate = prism::app::parseNumbers(prtRotate, "--rotate");
       runPrtReport(prtReport);
     }
-    if (*prtMetamersCmd) runPrtMetamers(prtMetamers);
+    if (*prtMetamersCmd) {
+      if (prtMetamersUnderOpt->count() > 0) prtMetamers.under = prism::app::parseNames(prtMetamersUnder, "--under");
+      runPrtMetamers(prtMetamers);
+    }
     if (*lutCmd) runLut(lut);
     if (*upCmd) {
       up.rgb = prism::app::parseNumbers(upRgb, "--rgb");
@@ -477,7 +490,10 @@ int main(int argc, char** argv) {
       if (!clusterEv.empty()) cluster.reference.ev100 = static_cast<float>(prism::app::parseNumber(clusterEv, "--ev"));
       printReferenceClusterScript(cluster);
     }
-    if (*scriptValidateCmd) printValidateClusterScript(cluster);
+    if (*scriptValidateCmd) {
+      if (clusterOnlyOpt->count() > 0) cluster.validate.only = prism::app::parseNames(clusterOnly, "--only");
+      printValidateClusterScript(cluster);
+    }
     if (*scriptLutCmd) printLutClusterScript(cluster);
     if (*scriptPrtCmd) printPrtClusterScript(cluster);
     if (*compareCmd) {
@@ -486,7 +502,10 @@ int main(int argc, char** argv) {
     }
     if (*atmEvaluate) return runAtmosphereEvaluate(atm);
     if (*atmOptimise) runAtmosphereOptimise(atm);
-    if (*validateCmd) return runValidate(val);
+    if (*validateCmd) {
+      if (validateOnlyOpt->count() > 0) val.only = prism::app::parseNames(validateOnly, "--only");
+      return runValidate(val);
+    }
     if (*viewCmd) {
       view.settings = viewSettings.given();
       return runView(view);

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "app/nebula_commands.h"
-#include "app/number_list.h"
+#include "app/option_lists.h"
 #include "core/error.h"
 #include "core/parallel_for.h"
 

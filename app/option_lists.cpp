@@ -1,4 +1,4 @@
-#include "app/number_list.h"
+#include "app/option_lists.h"
 
 #include <charconv>
 #include <cmath>
@@ -44,6 +44,19 @@ std::vector<double> parseNumbers(const std::string& text, const std::string& opt
 
 double parseNumber(const std::string& text, const std::string& option) {
   return parseField(text, text, option, "a number");
+}
+
+std::vector<std::string> parseNames(const std::string& text, const std::string& option) {
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (true) {
+    std::size_t comma = text.find(',', start);
+    std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (name.empty()) throw Error(fmt::format("{}: '{}' has an empty name (names separated by commas)", option, text));
+    names.push_back(std::move(name));
+    if (comma == std::string::npos) return names;
+    start = comma + 1;
+  }
 }
 
 }  // namespace prism::app

@@ -1,8 +1,10 @@
 #include "harness/gallery.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
+#include <span>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -30,6 +32,24 @@
 namespace prism::harness {
 namespace {
 
+// The images the gallery writes, named once for the renders, the page and the check of the
+// outputs before any work: a file suffix, the figure's caption and the image's alternative text
+// (after the scene's name).
+struct View {
+  const char* suffix;
+  const char* caption;
+  const char* alt;
+};
+constexpr std::array<View, 2> kSurfaceViews{{{"_rgb", "RGB", " in RGB mode"}, {"_spectral", "spectral", " in spectral mode"}}};
+constexpr std::array<View, 3> kSkyViews{
+    {{"_rgb", "RGB-3", ", RGB-3"}, {"_optimised4", "optimised4", ", optimised4"}, {"_reference", "reference", ", reference"}}};
+constexpr std::array<View, 2> kNebulaViews{
+    {{"_hubble", "Hubble palette", " in the Hubble palette"}, {"_natural", "natural colour", " in natural colour"}}};
+constexpr const char* kChartFile = "colorchecker.png";
+constexpr const char* kIndexFile = "index.html";
+
+std::string viewFile(const std::string& name, const View& view) { return name + view.suffix + ".png"; }
+
 struct Entry {
   std::string name;
   std::string description;
@@ -50,9 +70,9 @@ struct NebulaEntry {
 
 // The nebula of `file` at its camera's size or within `most` pixels a side, in the Hubble palette
 // and in natural colour (one precomputation and one march, refiltered and finished again), written
-// to `stem`_hubble.png and `stem`_natural.png; the entry holds each render's max relative error
+// into `folder` as kNebulaViews name them; the entry holds each render's max relative error
 // against the reference.
-void renderNebula(const std::filesystem::path& file, int most, const std::filesystem::path& stem, NebulaEntry& entry) {
+void renderNebula(const std::filesystem::path& file, int most, const std::filesystem::path& folder, NebulaEntry& entry) {
   nebula::NebulaScene scene = nebula::loadNebulaScene(file);
   scene.model.filters = "hubble";
   nebula::NebulaCamera& camera = scene.model.camera;
@@ -70,7 +90,7 @@ void renderNebula(const std::filesystem::path& file, int most, const std::filesy
     const nebula::NebulaImage image = marcher.finish();
     settings.method = nebula::Method::Reference;
     (palette ? entry.hubbleError : entry.naturalError) = nebula::maxRelativeError(image, renderer->render(settings));
-    nebulaDisplayPng(image, palette).write(stem.string() + (palette ? "_hubble.png" : "_natural.png"));
+    nebulaDisplayPng(image, palette).write(folder / viewFile(entry.name, kNebulaViews[palette ? 0 : 1]));
   }
 }
 
@@ -115,17 +135,13 @@ std::string indexHtml(const std::vector<Entry>& entries, const std::vector<Nebul
     }
   }
   page.table({"scene", "mean ΔE00", "p95", "max"}, rows);
+  auto figures = [&page](const std::string& name, std::span<const View> views) {
+    for (const View& view : views) page.figure({{viewFile(name, view), name + view.alt}}, view.caption);
+  };
   for (const Entry& e : entries) {
     page.beginSection(e.name, e.name);
     page.paragraph(htmlEscape(e.description));
-    if (e.sky) {
-      page.figure({{e.name + "_rgb.png", e.name + ", RGB-3"}}, "RGB-3");
-      page.figure({{e.name + "_optimised4.png", e.name + ", optimised4"}}, "optimised4");
-      page.figure({{e.name + "_reference.png", e.name + ", reference"}}, "reference");
-    } else {
-      page.figure({{e.name + "_rgb.png", e.name + " in RGB mode"}}, "RGB");
-      page.figure({{e.name + "_spectral.png", e.name + " in spectral mode"}}, "spectral");
-    }
+    figures(e.name, e.sky ? std::span<const View>(kSkyViews) : std::span<const View>(kSurfaceViews));
     page.endSection();
   }
   for (const NebulaEntry& n : nebulae) {
@@ -137,13 +153,12 @@ std::string indexHtml(const std::vector<Entry>& entries, const std::vector<Nebul
         "1 % of their channel's peak): {:.3g} % in the Hubble palette ([S II] 6716 → R, Hα → G, [O III] → B, "
         "each channel stretched to its 99.5th percentile), {:.3g} % in natural colour (CIE 1931).",
         100.0 * n.hubbleError, 100.0 * n.naturalError));
-    page.figure({{n.name + "_hubble.png", n.name + " in the Hubble palette"}}, "Hubble palette");
-    page.figure({{n.name + "_natural.png", n.name + " in natural colour"}}, "natural colour");
+    figures(n.name, kNebulaViews);
     page.endSection();
   }
   page.beginSection("", "ColorChecker");
   page.paragraph("The 24 patches lit spectrally by D65, A, F2 and F11, white-balanced to D65.");
-  page.image({"colorchecker.png", "ColorChecker chart"});
+  page.image({kChartFile, "ColorChecker chart"});
   page.endSection();
   return page.html();
 }
@@ -160,17 +175,16 @@ bool showsOptimisedWavelengths(const Scene& scene) {
 // scenes' folder: it was replaced by a render, and a later scene drew that).
 void requireOutputsClear(const std::filesystem::path& folder, const std::vector<Scene>& scenes,
                          const std::vector<std::filesystem::path>& nebulaFiles) {
-  std::vector<std::filesystem::path> outputs{folder / "colorchecker.png", folder / "index.html"};
+  std::vector<std::filesystem::path> outputs{folder / kChartFile, folder / kIndexFile};
   for (const Scene& scene : scenes) {
-    std::vector<std::string> suffixes{"_rgb", "_spectral"};
-    if (showsOptimisedWavelengths(scene)) suffixes = {"_rgb", "_optimised4", "_reference"};
-    for (const std::string& suffix : suffixes) outputs.push_back(folder / (scene.file.stem().string() + suffix + ".png"));
+    for (const View& view : showsOptimisedWavelengths(scene) ? std::span<const View>(kSkyViews)
+                                                             : std::span<const View>(kSurfaceViews))
+      outputs.push_back(folder / viewFile(scene.file.stem().string(), view));
   }
   std::vector<nebula::NebulaSceneFile> nebulae;
   for (const std::filesystem::path& file : nebulaFiles) {
     nebulae.push_back(nebula::readNebulaScene(file));
-    for (const char* suffix : {"_hubble.png", "_natural.png"})
-      outputs.push_back(folder / (file.stem().string() + suffix));
+    for (const View& view : kNebulaViews) outputs.push_back(folder / viewFile(file.stem().string(), view));
   }
   for (const std::filesystem::path& output : outputs) {
     requireWritable(output);
@@ -221,7 +235,7 @@ void runGallery(const GalleryOptions& o) {
   for (const Scene& scene : scenes) precomputeTechniques(scene);  // bars of their own
 
   DemoOptions chart;
-  chart.output = o.output / "colorchecker.png";
+  chart.output = o.output / kChartFile;
   chart.adaptation = o.adaptation;
   writeColourCheckerChart(chart);
 
@@ -264,9 +278,8 @@ void runGallery(const GalleryOptions& o) {
       imaging::FloatImage referenceXyz = tristimulus(renderer, o.width, o.height);
       e.difference = difference(rgbXyz, referenceXyz);
       e.optimisedDifference = difference(optimisedXyz, referenceXyz);
-      rgb.write(o.output / (e.name + "_rgb.png"));
-      optimised.write(o.output / (e.name + "_optimised4.png"));
-      reference.write(o.output / (e.name + "_reference.png"));
+      for (std::size_t v = 0; const imaging::PngImage* image : {&rgb, &optimised, &reference})
+        image->write(o.output / viewFile(e.name, kSkyViews[v++]));
       entries.push_back(std::move(e));
       bar.update(i + 1, scenes.size());
       continue;
@@ -277,8 +290,8 @@ void runGallery(const GalleryOptions& o) {
     imaging::PngImage spectral = displayPng(renderer);
     imaging::FloatImage spectralXyz = tristimulus(renderer, o.width, o.height);
     e.difference = difference(spectralXyz, rgbXyz);
-    rgb.write(o.output / (e.name + "_rgb.png"));
-    spectral.write(o.output / (e.name + "_spectral.png"));
+    rgb.write(o.output / viewFile(e.name, kSurfaceViews[0]));
+    spectral.write(o.output / viewFile(e.name, kSurfaceViews[1]));
     entries.push_back(std::move(e));
     bar.update(i + 1, scenes.size());
   }
@@ -287,11 +300,11 @@ void runGallery(const GalleryOptions& o) {
   for (std::size_t i = 0; i < nebulaFiles.size(); ++i) {
     NebulaEntry n;
     n.name = nebulaFiles[i].stem().string();
-    renderNebula(nebulaFiles[i], o.height, o.output / n.name, n);
+    renderNebula(nebulaFiles[i], o.height, o.output, n);
     nebulaBar.update(i + 1, nebulaFiles.size());
     nebulae.push_back(std::move(n));
   }
-  writeFileAtomically(o.output / "index.html", indexHtml(entries, nebulae, o));
+  writeFileAtomically(o.output / kIndexFile, indexHtml(entries, nebulae, o));
   fmt::print("{:<24} {:>10} {:>8} {:>8}\n", "scene (RGB vs spectral)", "mean ΔE00", "p95", "max");
   for (const Entry& e : entries) {
     if (e.sky) {
@@ -309,7 +322,7 @@ void runGallery(const GalleryOptions& o) {
                "natural {:.3g} %\n",
                n.name + " (nebula)", 100.0 * n.hubbleError, 100.0 * n.naturalError);
   }
-  fmt::print("wrote {}\n", (o.output / "index.html").string());
+  fmt::print("wrote {}\n", (o.output / kIndexFile).string());
 }
 
 }  // namespace prism::harness

@@ -459,6 +459,12 @@ void Renderer::forwardPass() {
   glBlendFunc(GL_ONE, GL_ONE);
   float radius = std::max(0.01f * glm::length(mBounds.max - mBounds.min), 1e-3f);
   float white = 1.2f * std::exp2(mSettings.display.ev100.value_or(mCamera.ev100));
+  // The markers' sum in the accumulation is 2·white times its frame count, whatever exposure the
+  // earlier frames had (an exposure change does not restart it): this frame adds what brings the
+  // sum there, so that the mean shows 2·white of the exposure now.
+  const float sum = 2.0f * white * static_cast<float>(mAccumulated);
+  const float add = sum - (mAccumulated == 1 ? 0.0f : mGizmoSum);
+  mGizmoSum = sum;
   glm::mat3 fromXyz = glm::inverse(mDisplayTransform.toXyz);
   // The colour as the lighting pass's observer sees it (CIE 1931 behind a camera's matrix).
   const Observer& seen = mContext.tristimulusObserver->isCamera ? cie1931Observer() : *mContext.tristimulusObserver;
@@ -471,7 +477,7 @@ void Renderer::forwardPass() {
     glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), light.position), glm::vec3(radius));
     mForwardProgram.setUniform("uModel", model);
     // In the lighting pass's tristimulus space (XYZ, or camera RGB for a camera observer).
-    mForwardProgram.setUniform("uTristimulus", fromXyz * (colour * (2.0f * white)));
+    mForwardProgram.setUniform("uTristimulus", fromXyz * (colour * add));
     mGizmo.vertexArray.draw();
   }
   glDepthMask(GL_TRUE);

@@ -138,6 +138,7 @@ class Renderer {
   DisplayTransform mDisplayTransform;  // of mSettings and the camera's exposure
   FrameData mFrame;
   int mAccumulated = 0;
+  float mGizmoSum = 0.0f;  // the light markers' scale summed in the accumulation (forwardPass)
   std::uint32_t mFrameIndex = 0;
   PassHook mPassHook;
 

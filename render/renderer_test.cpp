@@ -346,6 +346,18 @@ TEST(Renderer, ForwardPassAddsLightGizmosWhereTheGBufferDoesNotHideThem) {
   // Far from any light nothing changed, and the frame count did not move.
   EXPECT_EQ(with[1], without[1]);
   EXPECT_EQ(renderer.accumulatedFrames(), 1);
+  // An exposure change keeps the accumulation, and the marker is 2× the new white from the next
+  // frame on (it was a running mix of the old and new whites, at half the new one after +1 EV).
+  for (int i = 0; i < 3; ++i) renderer.renderFrame();
+  for (float ev : {1.0f, -1.0f}) {
+    settings.display.ev100 = scene.camera.ev100 + ev;
+    renderer.setSettings(settings);
+    renderer.renderFrame();
+    const float now = white * std::exp2(ev);
+    EXPECT_NEAR(renderer.readMeanTristimulus()[at] - without[at], 2.0f * now, 0.01f * now) << ev << " EV";
+  }
+  EXPECT_EQ(renderer.accumulatedFrames(), 6);
+  settings.display.ev100.reset();
 
   // Under the floor, the G-buffer's copied depth hides it entirely.
   scene.lights[0].position = {0.0f, -0.3f, 0.0f};

@@ -35,8 +35,11 @@ struct FrameContext {
 // Error on an unknown name. The pointers are to data that lives as long as the program. `table` is
 // the scene colour space's Jakob–Hanika table (the background's emission). `environmentFromAbove`,
 // when given, is taken as it is: it follows the scene, not the settings (Renderer::setSettings
-// keeps the one it has rather than summing a map's texels again).
+// keeps the one it has rather than summing a map's texels again). So is `wavelengths`, a sampler
+// made for the same effective sampling, observer and scene: making one reads the fitted set from
+// the cache (8 ms for an example scene), which an exposure dragged in the viewer paid every frame.
 FrameContext frameContext(const FrameSettings& settings, const Scene& scene, const RgbToSpectrumTable& table,
-                          std::optional<std::shared_ptr<const Spectrum>> environmentFromAbove = std::nullopt);
+                          std::optional<std::shared_ptr<const Spectrum>> environmentFromAbove = std::nullopt,
+                          std::shared_ptr<const WavelengthSampler> wavelengths = nullptr);
 
 }  // namespace prism::render

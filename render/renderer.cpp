@@ -115,7 +115,10 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
 
 void Renderer::setSettings(const FrameSettings& settings) {
   validate(settings);
-  FrameContext context = frameContext(settings, mScene, mTable, mContext.environmentFromAbove);
+  const bool sameWavelengths =
+      effectiveSampling(settings) == effectiveSampling(mSettings) && settings.observer == mSettings.observer;
+  FrameContext context = frameContext(settings, mScene, mTable, mContext.environmentFromAbove,
+                                      sameWavelengths ? mContext.wavelengths : nullptr);
   DisplayTransform display = displayTransform(settings.display, context.display, mCamera.ev100);
   bool resized = settings.width != mSettings.width || settings.height != mSettings.height ||
                  settings.gbufferAlbedo != mSettings.gbufferAlbedo;

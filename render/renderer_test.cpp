@@ -386,10 +386,14 @@ TEST(Renderer, SettingsChangeWithoutRestartAndRestartAccumulation) {
   EXPECT_EQ(renderer.accumulation().width(), 96);
   EXPECT_EQ(renderer.accumulation().height(), 64);
   EXPECT_EQ(renderer.readDisplayRgba8().size(), std::size_t{96 * 64 * 4});
-  // A display-only change keeps what has accumulated; a failed change leaves all as it was.
+  // A display-only change keeps what has accumulated, and the wavelength sampler (making one
+  // reads the fitted set again); a failed change leaves all as it was.
+  const std::shared_ptr<const WavelengthSampler> sampler = renderer.context().wavelengths;
   bigger.display.toneMap = ToneMap::Reinhard;
+  bigger.display.ev100 = 12.0f;
   renderer.setSettings(bigger);
   EXPECT_EQ(renderer.accumulatedFrames(), 1);
+  EXPECT_EQ(renderer.context().wavelengths, sampler);
   FrameSettings bad = bigger;
   bad.display.whiteBalance = "no-such-lamp";
   EXPECT_THROW(renderer.setSettings(bad), Error);
@@ -397,6 +401,16 @@ TEST(Renderer, SettingsChangeWithoutRestartAndRestartAccumulation) {
   renderer.renderFrame();
   EXPECT_EQ(renderer.accumulatedFrames(), 2);
   EXPECT_EQ(renderer.frameData().batches.size(), std::size_t{8});
+  // Another count or observer makes a sampler of its own.
+  bigger.sampling.count = 16;
+  renderer.setSettings(bigger);
+  const std::shared_ptr<const WavelengthSampler> sixteen = renderer.context().wavelengths;
+  EXPECT_EQ(sixteen->settings().count, 16);
+  bigger.observer = "cie1964";
+  renderer.setSettings(bigger);
+  EXPECT_NE(renderer.context().wavelengths, sixteen);
+  renderer.renderFrame();
+  EXPECT_EQ(renderer.frameData().batches.size(), std::size_t{4});
 }
 
 // Frames that accumulate light what the frame that restarted drew into the shadow maps and the

@@ -61,6 +61,7 @@ struct SamplingSettings {
   double minNm = kLambdaMinNm;
   double maxNm = kLambdaMaxNm;
   SamplingStrategy strategy = SamplingStrategy::Uniform;
+  bool operator==(const SamplingSettings&) const = default;
 };
 
 // Whether [minNm, maxNm] holds `count` whole nanometres apart: what a fitted (optimised) set of

@@ -69,7 +69,7 @@ TEST(Cli, BadDataFilesAreOneLineErrorsWithTheirPlace) {
   expectOneLineError("colour xyz --reflectance " + bad.string(), bad.string() + ":3:");
   auto text = writeTemp("text_reflectance.csv", "wavelength_nm,value\n400,0.5\n410,high\n");
   expectOneLineError("colour xyz --reflectance " + text.string(), text.string() + ":3:2:");
-  expectOneLineError("colour xyz --reflectance /nonexistent/r.csv", "/nonexistent/r.csv: cannot open file");
+  expectOneLineError("colour xyz --reflectance /nonexistent/r.csv", "/nonexistent/r.csv: cannot open: no such file");
   expectOneLineError("colour xyz --illuminant D65", "data file not found", "PRISM_DATA_DIR=/nonexistent");
 }
 

@@ -13,6 +13,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/input_file.h"
 #include "core/parallel_for.h"
 #include "core/file_extension.h"
 #include "core/task_split.h"
@@ -48,7 +49,7 @@ struct PrtInput {
 };
 
 PrtInput loadPrtInput(const std::filesystem::path& input, bool withReflectances) {
-  if (!std::filesystem::is_regular_file(input)) throw Error(input.string() + ": no such file");
+  requireInputFile(input, "a scene or a glTF model");
   std::string ext = lowercaseExtension(input);
   PrtInput in;
   Scene& scene = in.scene;

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/input_file.h"
 
 namespace prism {
 namespace {
@@ -43,8 +44,7 @@ std::vector<std::string> splitLine(const std::string& path, int lineNumber, cons
 CsvTable CsvTable::read(const std::filesystem::path& path) {
   CsvTable table;
   table.mPath = path.string();
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(table.mPath + ": is a folder, not a CSV file");
+  requireInputFile(path, "a CSV file");
   std::ifstream in(path);
   if (!in) throw Error(table.mPath + ": cannot open file");
   std::string line;

@@ -30,7 +30,7 @@ TEST(CsvTest, BrokenQuotingIsReported) {
 
 TEST(CsvTest, MissingFileIsNamed) {
   EXPECT_EQ(errorOf([] { CsvTable::read("/nonexistent/spd.csv"); }),
-            "/nonexistent/spd.csv: cannot open file");
+            "/nonexistent/spd.csv: cannot open: no such file");
 }
 
 TEST(CsvTest, HeaderOnlyFileIsRejected) {

@@ -14,6 +14,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/input_file.h"
 #include "imaging/exr_file.h"
 #include "imaging/openexr_message.h"
 
@@ -58,6 +59,7 @@ void writeExrBand(const std::filesystem::path& path, const ExrBand& band) {
 }
 
 ExrBand readExrBand(const std::filesystem::path& path, bool pixels) {
+  requireInputFile(path, "an image");
   try {
     checkExrHeaderSizes(path);
     Imf::InputFile file(path.c_str());

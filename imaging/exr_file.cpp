@@ -25,6 +25,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/input_file.h"
 #include "imaging/openexr_message.h"
 
 namespace prism::imaging {
@@ -230,6 +231,7 @@ void checkExrHeaderSizes(const std::filesystem::path& path) {
 }
 
 ExrImage readExr(const std::filesystem::path& path) {
+  requireInputFile(path, "an image");
   try {
     checkExrHeaderSizes(path);
     Imf::InputFile file(path.c_str());

@@ -12,11 +12,12 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/input_file.h"
 
 namespace prism::imaging {
 
 inline std::string readImageFileBytes(const std::filesystem::path& path) {
-  if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a folder, not an image");
+  requireInputFile(path, "an image");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path.string() + ": cannot open: " + std::strerror(errno));
   std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

@@ -96,7 +96,7 @@ TEST(RadianceHdr, BadFilesAreOneLineErrors) {
     EXPECT_EQ(readError(p), p.string() + c.error);
     std::filesystem::remove(p);
   }
-  EXPECT_EQ(readError(hdrPath("missing.hdr")), hdrPath("missing.hdr").string() + ": cannot open: No such file or directory");
+  EXPECT_EQ(readError(hdrPath("missing.hdr")), hdrPath("missing.hdr").string() + ": cannot open: no such file");
 }
 
 }  // namespace

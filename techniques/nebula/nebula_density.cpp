@@ -14,6 +14,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/input_file.h"
 #include "core/parallel_for.h"
 #include "techniques/nebula/nebula_integrals.h"
 
@@ -126,6 +127,7 @@ const DensityGrid& DeferredDensity::grid(const std::function<void(std::size_t do
 }
 
 DensityGrid readDensityFile(const std::filesystem::path& path) {
+  requireInputFile(path, "a density file");
   std::ifstream in(path, std::ios::binary);
   std::string file = path.string();
   if (!in) throw Error(FileLocation{file}, "cannot open the density file");

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/input_file.h"
 #include "core/json_schema.h"
 
 namespace prism::nebula {
@@ -140,6 +141,7 @@ DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps) 
 }
 
 NebulaSceneFile readNebulaScene(const std::filesystem::path& path) {
+  requireInputFile(path, "a nebula scene");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(FileLocation{path.string()}, "cannot open the scene file");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

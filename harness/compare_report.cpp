@@ -83,6 +83,9 @@ void runCompare(const CompareOptions& o) {
     requireOtherFile(*path, o.test, "the test image");
   }
   requireOtherFile(o.histogram, o.heatmap, "the heat map");
+  // Both outputs writable before either is written: a histogram refused after the heat map left it.
+  for (const std::filesystem::path& output : {o.heatmap, o.histogram})
+    if (!output.empty()) requireWritable(output);
   Loaded reference = load(o.reference, o.white);
   Loaded test = load(o.test, o.white);
   // Linear light against a display image (tone-mapped, exposed, encoded) measures the display

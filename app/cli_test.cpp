@@ -162,6 +162,7 @@ TEST(Cli, ChartWritesTheColourChecker) {
   EXPECT_TRUE(std::filesystem::is_regular_file(out));
   EXPECT_NE(r.out.find("dark skin"), std::string::npos);
   expectOneLineError("chart -o chart.jpg", "chart.jpg: the chart is written as a .png file");
+  expectOneLineError("chart -o ''", "the chart's file name is empty");
   expectOneLineError("chart -o chart.png --adaptation cat16", "(known: bradford, cat02, von-kries, none)");
 }
 

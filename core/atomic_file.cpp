@@ -12,8 +12,12 @@
 namespace prism {
 namespace {
 
-// A folder, device, pipe or socket where the file would go: the rename would replace it.
+// A folder, device, pipe or socket where the file would go: the rename would replace it. And no
+// file name at all: "x.bin/" made the folder x.bin before its write failed.
 void requireNoOtherKindOfFile(const std::filesystem::path& path) {
+  if (path.empty()) throw Error("an output's file name is empty");
+  if (!path.has_filename())
+    throw Error(path.string() + ": ends in a separator, so it names a folder; give a file to write");
   std::error_code ec;
   const std::filesystem::file_status s = std::filesystem::status(path, ec);
   if (std::filesystem::is_directory(s)) throw Error(path.string() + ": is a folder");

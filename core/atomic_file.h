@@ -7,15 +7,17 @@
 
 namespace prism {
 
-// Creates missing parent folders. Error naming the path when anything fails, or when a folder,
-// device, pipe or socket is there (never replaced); the temporary file is removed then.
+// Creates missing parent folders. Error naming the path when anything fails, when a folder,
+// device, pipe or socket is there (never replaced), or when the path has no file name (empty, or
+// ending in a separator); the temporary file is removed then.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
 // Before long work whose result goes to `path` (a table, a render): Error "PATH: cannot write:
 // why" (or "PATH: is a folder") unless a file can be created where it goes — in its folder, or
 // in the nearest existing folder above when folders are still to be made (made by
 // writeFileAtomically, not here); "PATH: is not a plain file" for a device, pipe or socket, which
-// neither function replaces. Leaves nothing behind.
+// neither function replaces; and a path with no file name, as writeFileAtomically refuses it.
+// Leaves nothing behind.
 void requireWritable(const std::filesystem::path& path);
 
 // requireWritable for an output folder (a gallery): Error "FOLDER: is a file, not a folder" when

@@ -5,9 +5,11 @@
 #include <sys/stat.h>
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/error_test_support.h"
 
 namespace prism {
 namespace {
@@ -63,6 +65,14 @@ TEST(RequireWritable, RefusesAFolderAFileAsAFolderAndAPlaceWithoutFiles) {
   }
   // /proc takes no new files, even from root.
   EXPECT_THROW(requireWritable("/proc/prism-out.png"), Error);
+  // No file name: refused by both, and the folder it names is not made.
+  const std::filesystem::path slash = dir / "table.bin/";
+  for (const auto& write : {std::function<void()>([&] { requireWritable(slash); }),
+                            std::function<void()>([&] { writeFileAtomically(slash, "x"); })}) {
+    EXPECT_EQ(errorOf(write), slash.string() + ": ends in a separator, so it names a folder; give a file to write");
+    EXPECT_FALSE(std::filesystem::exists(dir / "table.bin"));
+  }
+  EXPECT_EQ(errorOf([] { requireWritable(""); }), "an output's file name is empty");
 }
 
 // An output folder (the demo's gallery): one that is there or still to be made is accepted and

@@ -27,6 +27,8 @@ inline std::string lowercaseExtension(const std::filesystem::path& file) {
 inline void requireExtension(const std::filesystem::path& file, std::string_view extension, std::string_view option,
                              std::string_view what) {
   if (lowercaseExtension(file) == extension) return;
+  if (file.empty())
+    throw Error(fmt::format("{}the {}'s file name is empty", option.empty() ? "" : std::string(option) + ": ", what));
   // "an .svg", "a .png": the article of the first letter's name, as the extension is read out.
   const bool vowelSound = extension.size() > 1 && std::string_view("aefhilmnorsx").find(extension[1]) != std::string_view::npos;
   throw Error(fmt::format("{}{}: the {} is written as {} {} file", option.empty() ? "" : std::string(option) + " ",

@@ -202,6 +202,11 @@ TEST(Cli, LutWritesATableAndUpsampleBuildsItsCache) {
   ASSERT_EQ(j["spectrum"].size(), 4u);
   for (const auto& sample : j["spectrum"]) EXPECT_NEAR(sample[1].get<double>(), 0.5, 0.01);
   EXPECT_FALSE(std::filesystem::is_empty(dir / "cache"));
+  // The unbounded intent's own path, named, is the same as left out (it was refused).
+  const std::string unbounded = "upsample --rgb 1.5,0.5,0.5 --res 6 --wavelengths 400:700:100 --intent unbounded --json";
+  Result named = run(unbounded + " --path manual", "PRISM_CACHE_DIR=" + (dir / "cache").string());
+  ASSERT_EQ(named.exitCode, 0) << named.err;
+  EXPECT_EQ(named.out, run(unbounded, "PRISM_CACHE_DIR=" + (dir / "cache").string()).out);
 }
 
 TEST(Cli, BenchmarksRun) {

@@ -127,8 +127,8 @@ void runUpsample(const UpsampleOptions& o) {
   if (o.method == "box" && (o.path || o.resolution || o.gamut))
     throw Error(
         "--method box splits RGB into fixed bands with no table: --path, --res and --gamut are for jakob-hanika");
-  if (o.intent == "unbounded" && o.path)
-    throw Error("--path: the unbounded intent looks its scaled albedo up the manual way only");
+  if (o.intent == "unbounded" && path != "manual")
+    throw Error("--path " + path + ": the unbounded intent looks its scaled albedo up the manual way only");
   const std::string gamut = colourSpace(o.gamut.value_or("srgb")).name;
   glm::vec3 rgb(static_cast<float>(o.rgb[0]), static_cast<float>(o.rgb[1]), static_cast<float>(o.rgb[2]));
   glm::vec3 coeffs(0.0f);

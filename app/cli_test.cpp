@@ -417,6 +417,11 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("compare " + a + " " + (dir / "nope.exr").string(), "nope.exr");
   expectOneLineError("compare " + a + " " + (dir / "b.exr").string(), "reference 4 × 3, test 5 × 3");
   expectOneLineError("compare " + a + " " + (dir / "cam.exr").string(), "camera-rgb");
+  // A lone Y channel is read (the reader's own refusal names it as readable) but is no colour.
+  prism::imaging::writeExr(dir / "y.exr", prism::imaging::FloatImage(4, 3, 1, 0.5f),
+                           {.colour = prism::imaging::ColourMeaning::Xyz});
+  const std::string y = (dir / "y.exr").string();
+  expectOneLineError("compare " + y + " " + y, y + ": a lone Y channel (luminance alone); compare takes colour");
   expectOneLineError("compare " + a + " " + a + " --white -1", "--white");
   expectOneLineError("compare " + a + " " + a + " --white inf", "--white: must be a luminance within 1e-20–1e+12");
   const std::string heat = (dir / "heat.png").string();

@@ -48,6 +48,9 @@ Loaded load(const std::filesystem::path& path, const std::optional<double>& whit
     // pixel's paths under another exposure's white; compared as it stands, its numbers meant nothing.
     if (l.exr.part)
       throw Error(fmt::format("{}: a part of a reference render; merge the parts first (prism merge)", path.string()));
+    if (l.exr.image.channels < 3)
+      throw Error(fmt::format("{}: a lone Y channel (luminance alone); compare takes colour (R, G, B or X, Y, Z), "
+                              "which CIEDE2000 needs", path.string()));
     if (!l.exr.wholeImage)
       throw Error(fmt::format("{}: its data window is not its display window (a crop or an overscan); compare takes "
                               "whole images", path.string()));

@@ -32,6 +32,30 @@ std::string jobText(const SlurmJob& job, const SlurmScript& script, bool array) 
   return text;
 }
 
+// Error unless `option` is an sbatch option the script does not set itself: one it sets as well
+// would override its own for both jobs (--array=0-5 made the one finishing job an array of six).
+void checkSbatchOption(std::string_view option) {
+  if (option.size() < 2 || option[0] != '-')
+    throw Error(fmt::format("--sbatch {}: not an sbatch option (they start with -, e.g. --partition=gpu)", excerpt(option)));
+  const std::string_view name = option[1] == '-' ? option.substr(0, option.find('=')) : option.substr(0, 2);
+  struct Own {
+    std::string_view longName, shortName, instead;
+  };
+  for (const Own& own : {Own{"--array", "-a", "--tasks sets the array"}, Own{"--job-name", "-J", "the script names its jobs"},
+                         Own{"--cpus-per-task", "-c", "--cpus sets the array's"},
+                         Own{"--mem", "", "the script sets each job's memory"},
+                         Own{"--mem-per-cpu", "", "the script sets each job's memory with --mem"},
+                         Own{"--mem-per-gpu", "", "the script sets each job's memory with --mem"},
+                         Own{"--time", "-t", "--time sets the array's"},
+                         Own{"--output", "-o", "the logs go to the parts' folder"},
+                         Own{"--dependency", "-d", "the finishing job waits for the array"},
+                         Own{"--kill-on-invalid-dep", "", "the finishing job waits for the array"},
+                         Own{"--parsable", "", "the script reads the job IDs"}}) {
+    if (name == own.longName || (!own.shortName.empty() && name == own.shortName))
+      throw Error(fmt::format("--sbatch {}: the script sets {} itself ({})", excerpt(option), own.longName, own.instead));
+  }
+}
+
 }  // namespace
 
 std::string shellQuote(std::string_view text) {
@@ -79,6 +103,7 @@ std::string slurmScriptText(const SlurmScript& s) {
                             "job script cannot carry: \"{}\" (shown as '?')",
                             excerpt(std::string_view(text).substr(at > 40 ? at - 40 : 0))));
   }
+  for (const std::string& option : s.sbatchOptions) checkSbatchOption(option);
   std::string text = "#!/bin/bash\n";
   text += "# " + s.summary + "\n";
   text += fmt::format(

@@ -33,7 +33,10 @@ struct SlurmScript {
   std::vector<std::string> sbatchOptions;  // more #SBATCH lines for both (e.g. --partition=gpu)
 };
 
-// The script's text (bash). It prints "array JOBID finish JOBID" once both are submitted.
+// The script's text (bash). It prints "array JOBID finish JOBID" once both are submitted. Error
+// for a control character in anything it carries, and for an sbatch option that is none (no
+// leading -) or one the script sets itself (--array, --job-name, --cpus-per-task, --mem…,
+// --time, --output, --dependency, --kill-on-invalid-dep, --parsable; short forms too).
 std::string slurmScriptText(const SlurmScript& script);
 
 // `text` as one word for bash: itself when it holds only [A-Za-z0-9_./:=,+@%-], else in single quotes.

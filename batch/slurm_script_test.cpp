@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "core/error_test_support.h"
 
 namespace prism::batch {
 namespace {
@@ -71,6 +72,22 @@ TEST(SlurmScript, CarriesOddPathsAndOptionsSafely) {
     edit(bad);
     EXPECT_THROW(slurmScriptText(bad), Error);
   }
+}
+
+// An option the script sets itself would override it for both jobs (--array=0-5 made the one
+// finishing job an array of six); a word without a dash is no option.
+TEST(SlurmScript, RefusesOptionsItSetsItselfAndWordsThatAreNone) {
+  EXPECT_EQ(errorOf([] { slurmScriptText(referenceScript("/work/p", "--array=0-5")); }),
+            "--sbatch --array=0-5: the script sets --array itself (--tasks sets the array)");
+  EXPECT_EQ(errorOf([] { slurmScriptText(referenceScript("/work/p", "-J name")); }),
+            "--sbatch -J name: the script sets --job-name itself (the script names its jobs)");
+  EXPECT_EQ(errorOf([] { slurmScriptText(referenceScript("/work/p", "foo")); }),
+            "--sbatch foo: not an sbatch option (they start with -, e.g. --partition=gpu)");
+  for (const char* own : {"--mem-per-cpu=2G", "--time=1:00:00", "-o x.out", "--dependency=afterok:1", "--parsable"})
+    EXPECT_THROW(slurmScriptText(referenceScript("/work/p", own)), Error) << own;
+  // Others pass, --mem-bind too, whose name begins as --mem's does.
+  for (const char* other : {"--partition=gpu", "--mem-bind=local", "--account=astro", "-p gpu", "--exclusive"})
+    EXPECT_NO_THROW(slurmScriptText(referenceScript("/work/p", other))) << other;
 }
 
 }  // namespace

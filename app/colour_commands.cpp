@@ -6,10 +6,12 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "app/camera_option.h"
 #include "core/atomic_file.h"
+#include "harness/progress_bar.h"
 #include "imaging/spectral_texture_file.h"
 #include "spectral/camera_matrix.h"
 #include "spectral/colour_difference.h"
@@ -97,13 +99,18 @@ void colourXyz(const XyzOptions& o) {
                               samplingStrategyFromName(o.strategy)};
     validate(settings);
     // Lights follows the illuminant, the only light here; Optimised is fitted under it alone, on
-    // the standard training set (sRGB's gamut).
+    // the standard training set (sRGB's gamut), with a progress bar when not cached.
+    std::optional<harness::ProgressBar> bar;
     const WavelengthSampler sampler =
         settings.strategy == SamplingStrategy::Optimised
             ? WavelengthSampler(settings, cachedFitWavelengths({{light},
                                                                 standardTrainingReflectances(rendererRgbToSpectrumTable("srgb")),
                                                                 settings.count, settings.minNm, settings.maxNm},
-                                                               obs))
+                                                               obs,
+                                                               [&bar](std::size_t done, std::size_t total) {
+                                                                 if (!bar) bar.emplace("fitting wavelengths");
+                                                                 bar->update(done, total);
+                                                               }))
             : WavelengthSampler(settings, obs, light);
     std::vector<SampledWavelengths> batches = sampler.sample(o.seed);
     std::vector<IntegrationMatrix> matrices = sampler.matrices(batches, obs);

@@ -1,8 +1,12 @@
 #include "core/json_schema.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <system_error>
@@ -330,6 +334,9 @@ std::filesystem::path confinedFile(const std::filesystem::path& root,
   std::error_code ec;
   if (!std::filesystem::exists(full, ec)) throw Error("file not found: " + full.string());
   if (!std::filesystem::is_regular_file(full, ec)) throw Error("not a file: " + full.string());
+  // Here rather than where the file is read: a glTF's image is read by tinygltf, which said only
+  // that it "could not be loaded".
+  if (::access(full.c_str(), R_OK) != 0) throw Error("cannot read " + full.string() + ": " + std::strerror(errno));
   return full;
 }
 

@@ -125,7 +125,8 @@ class Node {
 
 // A file a document names, which must stay inside `root`: a relative path without "..",
 // resolved against `base` (a folder inside root), still inside root once symbolic links are
-// resolved (std::filesystem::weakly_canonical on both sides), and an existing regular file.
+// resolved (std::filesystem::weakly_canonical on both sides), and an existing regular file that
+// this process may read.
 // Returns base / relative; Error(what) without a location otherwise (callers add theirs).
 std::filesystem::path confinedFile(const std::filesystem::path& root,
                                    const std::filesystem::path& base, std::string_view relative);

@@ -498,7 +498,11 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   Result basis = run("nebula basis --spacing 0.2 --count 3");
   ASSERT_EQ(basis.exitCode, 0) << basis.err;
   EXPECT_NE(basis.out.find("0.8100"), std::string::npos) << basis.out;
-  expectOneLineError("nebula basis --count 9", "1 ≤ count ≤ 8");
+  expectOneLineError("nebula basis --count 9", "--count 9: need 1 to 8 elements");
+  expectOneLineError("nebula basis --domain 0.78,0.38", "--domain 0.78,0.38: need 0 ≤ LO < HI ≤ 100 µm");
+  expectOneLineError("nebula basis --max-depth 0", "--max-depth 0: need a depth within (0, 1000] µm");
+  expectOneLineError("nebula basis --max-exponent nan", "--max-exponent nan: need an exponent within (0, 1000] µm");
+  expectOneLineError("nebula basis --spacing 3", "--spacing 3: need a spacing within [0, --max-exponent] = [0, 2] µm");
   std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "nebula_cli";
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "tiny.json") << R"({"nebula": {"density": {"noise": {"resolution": 8}},
@@ -547,8 +551,8 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   Result converged = run("nebula render " + tiny + " --method reference --steps 10 --compare -o " + (dir / "ref.exr").string());
   ASSERT_EQ(converged.exitCode, 0) << converged.err;
   EXPECT_NE(converged.out.find("against the reference at 32 Simpson intervals"), std::string::npos) << converged.out;
-  expectOneLineError("nebula basis --max-exponent inf", "max depth and max exponent within (0, 1000]");
-  expectOneLineError("nebula basis --spacing nan", "spacing within [0, max exponent]");
+  expectOneLineError("nebula basis --max-exponent inf", "--max-exponent inf: need an exponent within (0, 1000] µm");
+  expectOneLineError("nebula basis --spacing nan", "--spacing nan: need a spacing within [0, --max-exponent]");
   expectOneLineError("nebula basis --spacing 1.5 --count 3", "only 2 of 3 elements found");
   // Exponents whose e^(−a/λ) vanishes over the band add no direction: the same a = 287.5 µm came
   // back as elements 2 to 6, and on a band of 1e-30 µm a = 0.005 five times.

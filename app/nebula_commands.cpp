@@ -57,12 +57,18 @@ void requireFilterSet(const std::string& filters) {
 }  // namespace
 
 void runNebulaBasis(const NebulaBasisOptions& o) {
-  // NaN fails every comparison, so each bound is written to be true of a good value.
-  if (!(o.lambda0Um >= 0.0 && o.lambda1Um > o.lambda0Um && o.lambda1Um <= 100.0) || o.count < 1 || o.count > 8 ||
-      !(o.maxDepthUm > 0.0 && o.maxDepthUm <= 1000.0) || !(o.maxExponentUm > 0.0 && o.maxExponentUm <= 1000.0) ||
-      !(o.spacingUm >= 0.0 && o.spacingUm <= o.maxExponentUm))
-    throw Error("nebula basis: need 0 ≤ λ0 < λ1 ≤ 100 µm, 1 ≤ count ≤ 8, max depth and max exponent within (0, 1000] µm, "
-                "spacing within [0, max exponent]");
+  // Each option named with its value. NaN fails every comparison, so each bound is written to be
+  // true of a good value.
+  if (!(o.lambda0Um >= 0.0 && o.lambda1Um > o.lambda0Um && o.lambda1Um <= 100.0))
+    throw Error(fmt::format("--domain {:g},{:g}: need 0 ≤ LO < HI ≤ 100 µm", o.lambda0Um, o.lambda1Um));
+  if (o.count < 1 || o.count > 8) throw Error(fmt::format("--count {}: need 1 to 8 elements", o.count));
+  if (!(o.maxDepthUm > 0.0 && o.maxDepthUm <= 1000.0))
+    throw Error(fmt::format("--max-depth {:g}: need a depth within (0, 1000] µm", o.maxDepthUm));
+  if (!(o.maxExponentUm > 0.0 && o.maxExponentUm <= 1000.0))
+    throw Error(fmt::format("--max-exponent {:g}: need an exponent within (0, 1000] µm", o.maxExponentUm));
+  if (!(o.spacingUm >= 0.0 && o.spacingUm <= o.maxExponentUm))
+    throw Error(fmt::format("--spacing {:g}: need a spacing within [0, --max-exponent] = [0, {:g}] µm", o.spacingUm,
+                            o.maxExponentUm));
   requirePlotFile(o.plotFile);
   nebula::ExpBasis b = nebula::findExpBasis(o.lambda0Um, o.lambda1Um, o.maxDepthUm, o.maxExponentUm, o.count,
                                             o.spacingUm, /*orthonormalise=*/false);

@@ -32,13 +32,25 @@ struct FileLocation {
   }
 };
 
-// A user's text as a message quotes it: whole up to `max` characters, else its first
-// characters and "..." (a 5 MB name is not echoed whole); control characters (a file's bytes
-// quoted by a decoder, a line break) become '?', so the message stays one line.
+// A user's text as a message quotes it: whole up to `max` bytes, else its first bytes and "..."
+// (a 5 MB name is not echoed whole); control characters (a file's bytes quoted by a decoder, a
+// line break) and bytes that are no UTF-8 (a PNG's first byte, quoted by the JSON parser, or a
+// character cut by the limit) become '?', so the message stays one line of text.
 inline std::string excerpt(std::string_view text, std::size_t max = 80) {
   std::string quoted(text.size() <= max ? text : text.substr(0, max - 3));
-  for (char& c : quoted)
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  for (std::size_t i = 0; i < quoted.size();) {
+    const auto byte = [&](std::size_t at) { return static_cast<unsigned char>(quoted[at]); };
+    const unsigned char c = byte(i);
+    // The sequence's length by its lead byte (RFC 3629: C2–DF, E0–EF, F0–F4 lead 2, 3, 4 bytes).
+    const std::size_t length = c < 0x80 ? 1 : c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+    bool valid = length > 0 && i + length <= quoted.size();
+    for (std::size_t k = 1; valid && k < length; ++k) valid = (byte(i + k) & 0xc0) == 0x80;
+    if (!valid || c < 0x20 || c == 0x7f) {
+      quoted[i++] = '?';
+      continue;
+    }
+    i += length;
+  }
   return text.size() <= max ? quoted : quoted + "...";
 }
 

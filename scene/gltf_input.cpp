@@ -302,6 +302,10 @@ tinygltf::Model loadGltfModel(const fs::path& file, const fs::path& root, std::v
   bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (!binary && lowercaseExtension(file) == ".glb")  // read as JSON, it was "malformed JSON"
     throw Error(name + ": not a binary glTF (it does not start with \"glTF\")");
+  // Neither JSON's object nor a binary glTF: an image or another file named in its place.
+  const auto first = std::find_if(bytes.begin(), bytes.end(), [](unsigned char c) { return !std::isspace(c); });
+  if (!binary && (first == bytes.end() || *first != '{'))
+    throw Error(name + ": not a glTF (a .gltf is a JSON object, a .glb starts with \"glTF\")");
   std::string_view text = binary ? glbJson(bytes, name)
                                  : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
   if (bytes.size() > std::numeric_limits<unsigned>::max()) throw Error(name + ": file too large");

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/input_file.h"
+#include "core/json_schema.h"
 
 namespace prism {
 namespace {
@@ -90,6 +91,8 @@ double CsvTable::number(const CsvRow& row, int column) const {
                            "', found '" + field + "'");
   if (!std::isfinite(value))
     throw Error(where, "value '" + field + "' is not finite");
+  if (std::abs(value) > schema::kFloatInputLimit)
+    throw Error(where, "value '" + field + "' is beyond ±1e12, the most any number Prism reads may reach");
   return value;
 }
 

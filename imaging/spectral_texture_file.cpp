@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "imaging/exr_band.h"
+#include "spectral/spectrum.h"
 
 namespace prism::imaging {
 namespace {
@@ -148,6 +149,14 @@ SpectralTexture readSpectralTexture(const std::filesystem::path& path) {
       order.push_back(coefficients[j]);
     }
   }
+  // As a spectrum's CSV must: two wavelengths at least, not all outside the range Prism renders
+  // (the texels would be their end values extrapolated).
+  if (t.wavelengthsNm.size() < 2)
+    throw Error(fmt::format("{}: a spectrum needs at least two wavelengths, the texture has {} ({:g} nm)", file,
+                            t.wavelengthsNm.size(), t.wavelengthsNm.front()));
+  if (t.wavelengthsNm.back() < kLambdaMinNm || t.wavelengthsNm.front() > kLambdaMaxNm)
+    throw Error(fmt::format("{}: its wavelengths ({:g}–{:g} nm) lie outside {}–{} nm, the range Prism renders", file,
+                            t.wavelengthsNm.front(), t.wavelengthsNm.back(), kLambdaMinNm, kLambdaMaxNm));
   const std::uint64_t texels = static_cast<std::uint64_t>(t.width) * static_cast<std::uint64_t>(t.height);
   if (texels * static_cast<std::uint64_t>(header.channels.size()) > kMaxValues)
     throw Error(fmt::format("{}: {} × {} texels × {} channels is more than 2²⁸ values", file, t.width, t.height,

@@ -106,7 +106,14 @@ TEST_F(SpectralTextureFile, BadFilesAreOneLineErrorsNamingTheFileAndThePlace) {
   EXPECT_NE(errorOf(oneTexel({"T.500nm", "T.500,0nm"}, {0.1f, 0.1f})).find("the same wavelength"), std::string::npos);
   EXPECT_NE(errorOf(oneTexel({"T.500nm", "T.600nm"}, {0.1f, 1.5f})).find("texel (0, 0): reflectance 1.5 at 600 nm"),
             std::string::npos);
-  EXPECT_NE(errorOf(oneTexel({"T.500nm"}, {std::numeric_limits<float>::quiet_NaN()})).find("is not finite"),
+  EXPECT_NE(errorOf(oneTexel({"T.500nm", "T.600nm"}, {std::numeric_limits<float>::quiet_NaN(), 0.1f}))
+                .find("is not finite"),
+            std::string::npos);
+  // A spectrum as a CSV's must be: two wavelengths at least, not all outside 360–830 nm.
+  EXPECT_NE(errorOf(oneTexel({"T.500nm"}, {0.5f})).find("a spectrum needs at least two wavelengths, the texture has 1 (500 nm)"),
+            std::string::npos);
+  EXPECT_NE(errorOf(oneTexel({"T.100nm", "T.200nm"}, {0.5f, 0.5f}))
+                .find("its wavelengths (100–200 nm) lie outside 360–830 nm, the range Prism renders"),
             std::string::npos);
   EXPECT_NE(errorOf(oneTexel({"coefficient.0"}, {0.5f})).find("no string attribute prism:basisWavelengthsNm"),
             std::string::npos);

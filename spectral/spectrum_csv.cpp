@@ -70,6 +70,14 @@ TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path, Extrapolati
     lines.push_back(row.line);
   }
   checkIncreasingWavelengths(csv.path(), lambdas, lines);
+  // Wholly outside what Prism renders, the spectrum would be its end values extrapolated: a
+  // reflectance at 100 and 200 nm read as a flat grey.
+  if (lambdas.back() < kLambdaMinNm || lambdas.front() > kLambdaMaxNm) {
+    std::ostringstream message;
+    message << csv.path() << ": its wavelengths (" << lambdas.front() << "–" << lambdas.back() << " nm) lie outside "
+            << kLambdaMinNm << "–" << kLambdaMaxNm << " nm, the range Prism renders";
+    throw Error(message.str());
+  }
   return TabulatedSpectrum(std::move(lambdas), std::move(values), extrapolation);
 }
 

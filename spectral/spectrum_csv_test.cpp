@@ -36,6 +36,19 @@ TEST(SpectrumCsvTest, WavelengthsMustBePositive) {
             p.string() + ":2: wavelengths must be positive (-5.000000 nm)");
 }
 
+// A wavelength beyond ±1e12 (the limit of every number Prism reads), and a spectrum wholly
+// outside 360–830 nm, which read as its end values extrapolated (a flat grey).
+TEST(SpectrumCsvTest, WavelengthsMustBeWithinReachAndMeetTheRenderedRange) {
+  auto huge = writeTempFile("huge.csv", "wavelength_nm,value\n400,0.5\n1e30,0.5\n");
+  EXPECT_EQ(errorOf([&] { readSpectrumCsv(huge, Extrapolation::Zero); }),
+            huge.string() + ":3:1: value '1e30' is beyond ±1e12, the most any number Prism reads may reach");
+  auto outside = writeTempFile("outside.csv", "wavelength_nm,value\n100,0.5\n200,0.5\n");
+  EXPECT_EQ(errorOf([&] { readSpectrumCsv(outside, Extrapolation::Zero); }),
+            outside.string() + ": its wavelengths (100–200 nm) lie outside 360–830 nm, the range Prism renders");
+  auto overlapping = writeTempFile("overlapping.csv", "wavelength_nm,value\n200,0.5\n360,0.5\n");
+  EXPECT_NO_THROW(readSpectrumCsv(overlapping, Extrapolation::Zero));
+}
+
 TEST(SpectrumCsvTest, MissingExpectedColumnIsNamed) {
   auto p = writeTempFile("columns.csv", "wavelength_nm,x_bar,y_bar\n400,1,1\n410,1,1\n");
   std::vector<std::string_view> expected{"x_bar", "y_bar", "z_bar"};

@@ -213,6 +213,9 @@ TEST(Cli, BenchmarksRun) {
   Result r = run("bench --benchmark_filter=spectrumToXyzSampled/4$ --benchmark_min_time=0.001");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("spectrumToXyzSampled/4"), std::string::npos);
+  // An empty list is refused, not taken for the default sweep (ten seconds of frames).
+  expectOneLineError("bench " + std::string(PRISM_SCENES_DIR) + "/spheres_d65.json --wavelengths ''",
+                     "--wavelengths: '' is not a ','-separated list of numbers");
 }
 
 }  // namespace

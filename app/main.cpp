@@ -413,7 +413,7 @@ int main(int argc, char** argv) {
   bench->add_option("scene", sceneBench.scene, "scene file: time its passes in RGB and spectral modes");
   // Its own --wavelengths; the mode is the bench's per configuration (RGB and Jakob–Hanika).
   benchSettings.addTo(bench, [](std::string_view key) { return key != "wavelengths" && key != "mode"; });
-  bench->add_option("--wavelengths", benchWavelengths, "wavelength counts, comma-separated (default 4,8,16,32,64,128,256; "
+  auto* benchWavelengthsOpt = bench->add_option("--wavelengths", benchWavelengths, "wavelength counts, comma-separated (default 4,8,16,32,64,128,256; "
                                                         "up to 64 with the optimised strategy)");
   bench->add_option("--frames", sceneBench.frames, "timed frames per configuration, spread over the rounds")
       ->capture_default_str();
@@ -518,7 +518,7 @@ int main(int argc, char** argv) {
       }
       sceneBench.settings = frameSettings(benchSettings.given());
       sceneBench.settings.mode = prism::render::RenderMode::Rgb;  // the bench sets the mode per configuration
-      if (!benchWavelengths.empty()) {
+      if (benchWavelengthsOpt->count() > 0) {  // given empty, it is refused, not the default
         sceneBench.wavelengths.clear();
         for (double n : prism::app::parseNumbers(benchWavelengths, "--wavelengths")) {
           if (n != std::trunc(n) || std::abs(n) > 1e6)

@@ -22,6 +22,7 @@
 #include "render/display_transform.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "spectral/wavelength_fit.h"
 #include "techniques/nebula/gpu/nebula_gpu_marcher.h"
 #include "techniques/nebula/nebula_scene.h"
 #include "core/atomic_file.h"
@@ -211,7 +212,11 @@ void runGallery(const GalleryOptions& o) {
   }
   if (files.empty()) throw Error(sceneDir.string() + ": no scene files (*.json) to render");
   std::sort(files.begin(), files.end());
-  // Bad options and an output that cannot be made fail before any long work.
+  // Bad options and an output that cannot be made fail before any long work. The spectral images
+  // are fitted sets (the optimised strategy), whose limits are narrower than the renderer's.
+  if (o.wavelengths < 4 || o.wavelengths > kMaxFittedWavelengths || o.wavelengths % 4 != 0)
+    throw Error(fmt::format("--wavelengths {}: the gallery fits 4 to {} wavelengths, a multiple of 4", o.wavelengths,
+                            kMaxFittedWavelengths));
   render::FrameSettings check;
   check.width = o.width;
   check.height = o.height;

@@ -13,6 +13,7 @@
 #include "harness/progress_bar.h"
 #include "harness/upsampling_table.h"
 #include "imaging/exr_file.h"
+#include "reference/path_tracer.h"
 #include "render/display_transform.h"
 #include "render/frame_settings.h"
 #include "scene/scene_loader.h"
@@ -140,6 +141,7 @@ void runReference(const ReferenceOptions& o) {
   if (o.ev100) render::validateEv100(*o.ev100);
   if (o.tile.empty() && o.samples.empty()) checkReferenceOutputs(o.output, o.variance);
   Scene scene = loadScene(o.scene, o.sets);
+  reference::requireTraceable(scene);  // before the upsampling table, which a cold cache builds first
   reference::ReferenceSettings settings = referenceSettings(o);
   const float ev100 = o.ev100.value_or(scene.camera.ev100);
   if (!o.tile.empty() || !o.samples.empty()) {

@@ -413,8 +413,10 @@ int main(int argc, char** argv) {
   bench->add_option("scene", sceneBench.scene, "scene file: time its passes in RGB and spectral modes");
   // Its own --wavelengths; the mode is the bench's per configuration (RGB and Jakob–Hanika).
   benchSettings.addTo(bench, [](std::string_view key) { return key != "wavelengths" && key != "mode"; });
-  auto* benchWavelengthsOpt = bench->add_option("--wavelengths", benchWavelengths, "wavelength counts, comma-separated (default 4,8,16,32,64,128,256; "
-                                                        "up to 64 with the optimised strategy)");
+  auto* benchWavelengthsOpt =
+      bench->add_option("--wavelengths", benchWavelengths,
+                        "wavelength counts, comma-separated (default 4,8,16,32,64,128,256; up to 64 with the optimised "
+                        "strategy)");
   bench->add_option("--frames", sceneBench.frames, "timed frames per configuration, spread over the rounds")
       ->capture_default_str();
   bench->add_option("--rounds", sceneBench.rounds, "rounds over every configuration in turn (load drift cancels "

@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/input_file.h"
 
 namespace prism::schema {
 
@@ -341,12 +342,7 @@ std::filesystem::path confinedFile(const std::filesystem::path& root,
 }
 
 std::vector<unsigned char> readBinaryFile(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(path.string() + ": is a folder, not a file");
-  // /dev/zero never ends; a pipe (a script from `<(…)`) is the user's own stream.
-  if (std::filesystem::is_character_file(path, ec) || std::filesystem::is_block_file(path, ec) ||
-      std::filesystem::is_socket(path, ec))
-    throw Error(path.string() + ": not a regular file (a device or a socket)");
+  requireInputFile(path, "a file");  // a pipe (a script from `<(…)`) is the user's own stream
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path.string() + ": cannot open file");
   std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -374,13 +374,13 @@ TEST(Cli, AtmosphereCommandsCheckTheirInput) {
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "bad.json") << R"({"sets": {"aerosols": {"lambda_nm": [300, 500, 600, 700], "weights_nm": [1, 1, 1, 1]}}})";
   expectOneLineError("atmosphere evaluate --quick --wavelengths " + (dir / "bad.json").string(),
-                     "bad.json: /sets/aerosols/lambda_nm/0: 300 nm is outside 360..830 nm");
+                     "bad.json: /sets/aerosols/lambda_nm/0: expected a number in [360, 830], got 300");
   // A folder, a file of another shape, a short array, an empty name: one line each, never the
   // JSON library's words or an internal error.
   expectOneLineError("atmosphere evaluate --quick --wavelengths " + dir.string(), "atmosphere_input: is a folder, not a file");
-  std::ofstream(dir / "other.json") << R"({"x": 1})";
+  std::ofstream(dir / "other.json") << R"({"sets": {}})";
   expectOneLineError("atmosphere evaluate --quick --wavelengths " + (dir / "other.json").string(),
-                     "other.json: /sets/aerosols: missing");
+                     "other.json: /sets: missing required key 'aerosols'");
   std::ofstream(dir / "short.json") << R"({"sets": {"aerosols": {"lambda_nm": [400, 500, 600], "weights_nm": [1, 1, 1, 1]}}})";
   expectOneLineError("atmosphere evaluate --quick --wavelengths " + (dir / "short.json").string(),
                      "short.json: /sets/aerosols/lambda_nm: expected an array of 4 numbers, got [400,500,600]");

@@ -93,50 +93,36 @@ OptimisedWavelengths loadOptimisedWavelengths(const std::filesystem::path& file,
   const std::vector<unsigned char> bytes = schema::readBinaryFile(file);
   const nlohmann::json j =
       schema::parseJson(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), file.string());
-  // The value at /sets/SET/KEY: an array of `count` numbers (each of `rows` if rows > 0).
-  const std::string at = fmt::format("/sets/{}", schema::pointerToken(set));
-  const nlohmann::json* s = j.is_object() && j.contains("sets") && j["sets"].is_object() && j["sets"].contains(std::string(set))
-                                ? &j["sets"][std::string(set)]
-                                : nullptr;
-  if (s == nullptr || !s->is_object()) throw Error(fmt::format("{}: {}: missing (the wavelength set of that atmosphere)", file.string(), at));
-  // Within ±kFloatInputLimit, as every number Prism reads: 1e300 in the matrix printed NaN errors.
-  auto numbers = [&](const nlohmann::json& v, const std::string& where, std::size_t count) {
-    std::vector<double> out;
-    if (v.is_array() && v.size() == count)
-      for (const nlohmann::json& x : v)
-        if (x.is_number()) out.push_back(x.get<double>());
-    if (out.size() != count)
-      throw Error(fmt::format("{}: {}: expected an array of {} numbers, got {}", file.string(), where, count, schema::describe(v)));
-    for (std::size_t i = 0; i < count; ++i)
-      if (!(std::abs(out[i]) <= schema::kFloatInputLimit))
-        throw Error(fmt::format("{}: {}/{}: {:g} is outside ±{:g}", file.string(), where, i, out[i], schema::kFloatInputLimit));
-    return out;
-  };
-  auto member = [&](const char* key) -> const nlohmann::json& {
-    if (!s->contains(key)) throw Error(fmt::format("{}: {}/{}: missing", file.string(), at, key));
-    return (*s)[key];
-  };
+  const schema::Document document{file.string(), {}};
+  const schema::Node root(j, "", document);
+  // What `prism atmosphere optimise` writes: a misspelt key is refused, not ignored.
+  root.expectObject({"sets", "settings"});
+  const schema::Node sets = root.child("sets");
+  sets.expectObject({"aerosols", "rayleigh-ozone"});
+  if (!sets.has(set)) sets.fail(fmt::format("missing required key '{}' (the wavelength set of that atmosphere)", set));
+  const schema::Node s = sets.child(set);
+  s.expectObject({"lambda_nm", "weights_nm", "matrix", "objective_grid", "objective_8", "objective_12", "evaluations"});
   OptimisedWavelengths w;
-  const std::vector<double> lambda = numbers(member("lambda_nm"), at + "/lambda_nm", 4);
-  const std::vector<double> weights = numbers(member("weights_nm"), at + "/weights_nm", 4);
+  const schema::Node lambda = s.child("lambda_nm");
+  const schema::Node weights = s.child("weights_nm");
+  const std::vector<double> lambdaNm = lambda.numbers(4, schema::Range::closed(kLambdaMinNm, kLambdaMaxNm));
+  const std::vector<double> weightsNm = weights.numbers(4, schema::Range::above(0.0).forFloat());
   for (std::size_t i = 0; i < 4; ++i) {
-    if (!(lambda[i] >= kLambdaMinNm && lambda[i] <= kLambdaMaxNm))
-      throw Error(fmt::format("{}: {}/lambda_nm/{}: {:g} nm is outside 360..830 nm", file.string(), at, i, lambda[i]));
-    if (i > 0 && !(lambda[i] > lambda[i - 1]))
-      throw Error(fmt::format("{}: {}/lambda_nm/{}: {:g} nm does not follow {:g} nm (four increasing wavelengths)",
-                              file.string(), at, i, lambda[i], lambda[i - 1]));
-    if (!(weights[i] > 0.0))
-      throw Error(fmt::format("{}: {}/weights_nm/{}: {:g} nm is not positive (a quadrature weight)", file.string(), at, i,
-                              weights[i]));
-    w.lambdaNm[i] = lambda[i];
-    w.weights[i] = weights[i];
+    if (i > 0 && !(lambdaNm[i] > lambdaNm[i - 1]))
+      lambda.element(i).fail(fmt::format("{:g} nm does not follow {:g} nm (four increasing wavelengths)", lambdaNm[i],
+                                         lambdaNm[i - 1]));
+    w.lambdaNm[i] = lambdaNm[i];
+    w.weights[i] = weightsNm[i];
   }
-  // The 12-parameter strategy's matrix, fitted with the weights: a set without it is incomplete.
-  const nlohmann::json& m = member("matrix");
-  if (!m.is_array() || m.size() != 3)
-    throw Error(fmt::format("{}: {}/matrix: expected 3 rows of 4 numbers, got {}", file.string(), at, schema::describe(m)));
+  // The 12-parameter strategy's matrix, fitted with the weights: a set without it is incomplete,
+  // and a row of zeros would leave X, Y or Z at 0 whatever the sky.
+  const schema::Node matrix = s.child("matrix");
+  if (!matrix.json().is_array() || matrix.arraySize() != 3)
+    matrix.fail("expected 3 rows of 4 numbers, got " + schema::describe(matrix.json()));
   for (std::size_t r = 0; r < 3; ++r) {
-    const std::vector<double> row = numbers(m[r], fmt::format("{}/matrix/{}", at, r), 4);
+    const std::vector<double> row = matrix.element(r).numbers(4, schema::Range::any().forFloat());
+    if (row[0] == 0.0 && row[1] == 0.0 && row[2] == 0.0 && row[3] == 0.0)
+      matrix.element(r).fail(fmt::format("a row of zeros gives every sky {} = 0", "XYZ"[r]));
     for (std::size_t c = 0; c < 4; ++c) w.matrix(static_cast<int>(r), static_cast<int>(c)) = row[c];
   }
   w.hasMatrix = true;

@@ -47,7 +47,8 @@ SkyStrategy uniformStrategy(int count);
 SkyStrategy optimisedStrategy(const OptimisedWavelengths& set, bool twelve);
 
 // The sets in data/atmosphere_wavelengths.json (read once per set and process): "aerosols" or
-// "rayleigh-ozone". Error naming the file and the key when it is missing or malformed.
+// "rayleigh-ozone". Error naming the file and the key when it is missing, malformed or unknown
+// (what `prism atmosphere optimise` writes, and nothing else).
 OptimisedWavelengths loadOptimisedWavelengths(std::string_view set);
 OptimisedWavelengths loadOptimisedWavelengths(const std::filesystem::path& file, std::string_view set);
 

@@ -120,8 +120,10 @@ PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, 
 
 void runSceneBench(const SceneBenchOptions& options) {
   if (options.wavelengths.empty()) throw Error("--wavelengths: give at least one count");
-  if (options.frames < 1 || options.warmup < 0 || options.rounds.value_or(1) < 1)
-    throw Error("--frames and --rounds must be ≥ 1, --warmup ≥ 0");
+  // A million frames is hours of a GPU's time; more overflowed the frame counters' int sums.
+  if (options.frames < 1 || options.warmup < 0 || options.rounds.value_or(1) < 1 || options.frames > kMaxBenchFrames ||
+      options.warmup > kMaxBenchFrames)
+    throw Error(fmt::format("--frames and --rounds must be within 1–{0}, --warmup within 0–{0}", kMaxBenchFrames));
   if (options.rounds > options.frames)  // it ran fewer rounds than asked, saying "1 rounds"
     throw Error(fmt::format("--rounds {}: more rounds than --frames {} (a round times at least one frame of each "
                             "configuration)", *options.rounds, options.frames));
@@ -255,7 +257,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   }
 
   std::size_t done = 0, total = 0;
-  for (const Config& c : configs) total += static_cast<std::size_t>(rounds * (c.warmup + c.frames));
+  for (const Config& c : configs) total += static_cast<std::size_t>(rounds) * static_cast<std::size_t>(c.warmup + c.frames);
   ProgressBar bar("benchmark " + options.scene.filename().string());
   for (int r = 0; r < rounds; ++r) {
     for (Config& c : configs) {

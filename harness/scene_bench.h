@@ -21,6 +21,8 @@
 namespace prism::harness {
 
 inline constexpr int kDefaultBenchRounds = 5;
+// The most --frames and --warmup take.
+inline constexpr int kMaxBenchFrames = 1000000;
 
 struct SceneBenchOptions {
   std::filesystem::path scene;

@@ -542,12 +542,12 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   EXPECT_GT(errors[0].get<double>(), errors[2].get<double>()) << sweep.out;
   EXPECT_NE(slurp(dir / "sweep.svg").find("the issue's bound, 2 %"), std::string::npos);
   expectOneLineError("nebula sweep " + tiny + " --max-basis 7", "--max-basis: 7 is not within 1..6");
-  expectOneLineError("nebula sweep " + tiny + " --steps 0", "nebula: steps 0 is not within 1..100000");
-  expectOneLineError("nebula render " + tiny + " -o x.exr --basis 7", "nebula: basis size 7 is not within 1..6");
-  expectOneLineError("nebula render " + tiny + " -o x.exr --steps -1", "nebula: steps -1 is not within 1..100000");
-  expectOneLineError("nebula render " + tiny + " -o x.exr --light-basis 0", "nebula: light basis size 0 is not within 1..16");
-  expectOneLineError("nebula render " + tiny + " -o x.exr --uniform-samples 1", "nebula: reference samples 1 is not within 2..1000");
-  expectOneLineError("nebula render " + tiny + " -o x.exr --reference-intervals 3", "nebula: reference intervals 3 is odd");
+  expectOneLineError("nebula sweep " + tiny + " --steps 0", "--steps: 0 is not within 1..100000");
+  expectOneLineError("nebula render " + tiny + " -o x.exr --basis 7", "--basis: 7 is not within 1..6");
+  expectOneLineError("nebula render " + tiny + " -o x.exr --steps -1", "--steps: -1 is not within 1..100000");
+  expectOneLineError("nebula render " + tiny + " -o x.exr --light-basis 0", "--light-basis: 0 is not within 1..16");
+  expectOneLineError("nebula render " + tiny + " -o x.exr --uniform-samples 1", "--uniform-samples: 1 is not within 2..1000");
+  expectOneLineError("nebula render " + tiny + " -o x.exr --reference-intervals 3", "--reference-intervals: 3 is odd (Simpson's rule takes pairs)");
   expectOneLineError("nebula render " + tiny + " -o x.exr --uniform-samples 7",
                      "--uniform-samples 7: only with --method reference");
   // --compare on the reference itself: against twice its Simpson intervals (it printed nothing).

@@ -32,6 +32,12 @@
 namespace prism::app {
 namespace {
 
+// An integer option within lo..hi, the message naming the option as the user wrote it
+// (nebula::validate checks the same settings again, by the names a library knows).
+void requireWithin(const char* option, std::optional<int> value, int lo, int hi) {
+  if (value && (*value < lo || *value > hi)) throw Error(fmt::format("{}: {} is not within {}..{}", option, *value, lo, hi));
+}
+
 // A plot's file, checked before the work: an .svg where a file can be written (none: nothing).
 void requirePlotFile(const std::filesystem::path& plot) {
   if (plot.empty()) return;
@@ -107,9 +113,9 @@ void runNebulaBasis(const NebulaBasisOptions& o) {
 }
 
 void runNebulaSweep(const NebulaSweepOptions& o) {
-  if (o.maxBasis < 1 || o.maxBasis > nebula::kMaxBasisSize)
-    throw Error(fmt::format("--max-basis: {} is not within 1..{}", o.maxBasis, nebula::kMaxBasisSize));
-  if (o.size && (*o.size < 1 || *o.size > 4096)) throw Error(fmt::format("--size: {} is not within 1..4096", *o.size));
+  requireWithin("--max-basis", o.maxBasis, 1, nebula::kMaxBasisSize);
+  requireWithin("--size", o.size, 1, 4096);
+  requireWithin("--steps", o.steps, 1, nebula::kMaxSteps);
   requirePlotFile(o.plotFile);
   nebula::RenderSettings s;
   s.steps = o.steps.value_or(s.steps);
@@ -197,6 +203,13 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   if (lowercaseExtension(o.output) != ".exr" && lowercaseExtension(o.output) != ".png")
     throw Error(fmt::format("{}: the output must be .exr or .png", o.output.string()));
   nebula::Method method = nebula::methodFromName(o.method);
+  requireWithin("--steps", o.steps, 1, nebula::kMaxSteps);
+  requireWithin("--basis", o.basisSize, 1, nebula::kMaxBasisSize);
+  requireWithin("--light-basis", o.lightBasisSize, 1, nebula::kMaxLightBasisSize);
+  requireWithin("--reference-intervals", o.referenceIntervals, 2, nebula::kMaxReferenceIntervals);
+  if (o.referenceIntervals && *o.referenceIntervals % 2 != 0)
+    throw Error(fmt::format("--reference-intervals: {} is odd (Simpson's rule takes pairs)", *o.referenceIntervals));
+  if (o.uniformSamples != 0) requireWithin("--uniform-samples", o.uniformSamples, 2, nebula::kMaxUniformSamples);
   nebula::RenderSettings s;
   s.method = method;
   s.steps = o.steps.value_or(s.steps);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "app/camera_option.h"
+#include "app/option_error.h"
 #include "core/atomic_file.h"
 #include "harness/progress_bar.h"
 #include "imaging/spectral_texture_file.h"
@@ -51,8 +52,8 @@ void requireThree(const std::vector<double>& v, const std::string& what) {
 }  // namespace
 
 void colourXyz(const XyzOptions& o) {
-  Spectrum light = illuminant(o.illuminant);
-  const Observer& obs = observer(o.observer);
+  Spectrum light = fromOption("--illuminant", [&] { return illuminant(o.illuminant); });
+  const Observer& obs = *fromOption("--observer", [&] { return &observer(o.observer); });
   if (!o.reflectanceFile.empty() && !o.rgb.empty())
     throw Error("colour xyz: give --reflectance or --rgb, not both");
   json out = {{"illuminant", o.illuminant}, {"observer", o.observer}};
@@ -66,7 +67,7 @@ void colourXyz(const XyzOptions& o) {
       if (!(channel >= 0.0 && channel <= 1.0))
         throw Error(fmt::format("--rgb: an albedo's channels lie within [0, 1], got {}", channel));
     }
-    const RgbColourSpace& gamut = colourSpace(o.gamut);
+    const RgbColourSpace& gamut = *fromOption("--gamut", [&] { return &colourSpace(o.gamut); });
     Eigen::Vector3d rgb(o.rgb[0], o.rgb[1], o.rgb[2]);
     if (o.encoded) rgb = gamut.decode(rgb);
     SigmoidFitter fitter(gamut, gamutWhiteIlluminant(gamut), observer("cie1931"));
@@ -96,7 +97,7 @@ void colourXyz(const XyzOptions& o) {
   if (o.sample) {
     if (o.rangeNm.size() != 2) throw Error("--range: expected MIN,MAX in nm");
     SamplingSettings settings{o.wavelengthCount, o.rangeNm[0], o.rangeNm[1],
-                              samplingStrategyFromName(o.strategy)};
+                              fromOption("--strategy", [&] { return samplingStrategyFromName(o.strategy); })};
     validate(settings);
     // Lights follows the illuminant, the only light here; Optimised is fitted under it alone, on
     // the standard training set (sRGB's gamut), with a progress bar when not cached.
@@ -189,7 +190,7 @@ void colourCct(const CctOptions& o) {
 void colourConvert(const ConvertOptions& o) {
   requireThree(o.values, "colour convert");
   Eigen::Vector3d in(o.values[0], o.values[1], o.values[2]);
-  Adaptation adaptation = adaptationFromName(o.adaptation);
+  Adaptation adaptation = fromOption("--adaptation", [&] { return adaptationFromName(o.adaptation); });
   // xyz or an RGB space; an unknown name's error lists xyz too, which colourSpace's cannot know.
   auto space = [](const std::string& name, const char* option) -> const RgbColourSpace* {
     if (name == "xyz") return nullptr;
@@ -230,7 +231,8 @@ void colourConvert(const ConvertOptions& o) {
 
 void colourCameraMatrix(const CameraMatrixOptions& o) {
   const Observer& camera = cameraOption(o.camera);
-  CameraMatrixFit fit = fitCameraToXyz(camera, illuminant(o.illuminant), observer("cie1931"));
+  CameraMatrixFit fit =
+      fitCameraToXyz(camera, fromOption("--illuminant", [&] { return illuminant(o.illuminant); }), observer("cie1931"));
   if (o.json) {
     fmt::print("{}\n", json{{"camera", o.camera}, {"illuminant", o.illuminant},
                             {"cameraToXyz", toJson(fit.cameraToXyz)},
@@ -327,14 +329,15 @@ void colourMetamer(const MetamerOptions& o) {
     requireWritable(o.output);
     requireOtherFile(o.output, o.reflectance, "the reflectance (--reflectance)");
   }
-  const Observer& obs = observer(o.observer);
+  const Observer& obs = *fromOption("--observer", [&] { return &observer(o.observer); });
   // The metamer is matched and measured in CIELAB, which a camera's raw RGB has no meaning in.
   if (obs.isCamera) throw Error(fmt::format("--observer: '{}' is a camera; metamers are matched in CIELAB "
                                             "(cie1931 or cie1964)", o.observer));
   Spectrum original = patchOrFileReflectance(o.reflectance, "--reflectance");
   std::vector<std::pair<std::string, Spectrum>> lights;
-  for (const std::string& name : o.under) lights.emplace_back(name, illuminant(name));
-  prt::Metamer m = prt::findMetamer(original, illuminant(o.match), illuminant(o.target), obs);
+  for (const std::string& name : o.under) lights.emplace_back(name, fromOption("--under", [&] { return illuminant(name); }));
+  prt::Metamer m = prt::findMetamer(original, fromOption("--match", [&] { return illuminant(o.match); }),
+                                    fromOption("--target", [&] { return illuminant(o.target); }), obs);
   json out = {{"reflectance", o.reflectance}, {"match", o.match}, {"target", o.target}};
   for (const auto& [name, spd] : lights) out["delta_e2000"][name] = prt::reflectanceDeltaE2000(original, m.reflectance, spd, obs);
   if (!o.output.empty()) {

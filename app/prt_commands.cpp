@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/option_error.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/input_file.h"
@@ -249,8 +250,9 @@ prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtI
   }
   const std::string shape = o.environment.value_or("sky");
   const std::string name = o.illuminant.value_or("F4");
-  if (shape == "sky") return prt::skyGradientEnvironment(name + " sky", illuminant(name));
-  if (shape == "uniform") return prt::uniformEnvironment(name + " uniform", illuminant(name));
+  auto light = [&] { return fromOption("--illuminant", [&] { return illuminant(name); }); };
+  if (shape == "sky") return prt::skyGradientEnvironment(name + " sky", light());
+  if (shape == "uniform") return prt::uniformEnvironment(name + " uniform", light());
   if (shape != "atmosphere") throw Error("--environment: '" + shape + "' is not sky, uniform or atmosphere");
   const double elevation = o.sunElevationDeg.value_or(30.0), azimuth = o.sunAzimuthDeg.value_or(180.0);
   if (!(std::abs(elevation) <= 90.0)) throw Error(fmt::format("--sun-elevation: {} is not within -90..90", elevation));
@@ -347,9 +349,11 @@ void runPrtMetamers(const PrtMetamersOptions& o) {
     throw Error(fmt::format("--patch-vertices: {} out of range 2..256", o.patchVertices));
   Spectrum original = patchOrFileReflectance(o.reflectance, "--reflectance");
   std::vector<prt::SpectralEnvironment> skies;
-  for (const std::string& name : o.under) skies.push_back(prt::skyGradientEnvironment(name, illuminant(name)));
+  for (const std::string& name : o.under)
+    skies.push_back(prt::skyGradientEnvironment(name, fromOption("--under", [&] { return illuminant(name); })));
   const Observer& obs = cie1931Observer();
-  prt::Metamer metamer = prt::findMetamer(original, illuminant(o.match), illuminant(o.target), obs);
+  prt::Metamer metamer = prt::findMetamer(original, fromOption("--match", [&] { return illuminant(o.match); }),
+                                          fromOption("--target", [&] { return illuminant(o.target); }), obs);
   prt::PrtObject object = prt::makeColourCheckerObject(o.patchVertices);
   prt::CachedTransfer transfer = transferFor(object.mesh, {o.samples, true}, "");
   std::vector<prt::DeltaEStatistics> halves =

@@ -9,6 +9,7 @@
 
 #include "harness/progress_bar.h"
 #include "spectral/colour_space.h"
+#include "app/option_error.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/file_extension.h"
@@ -77,7 +78,7 @@ void runLutPart(const LutOptions& o, const std::string& gamut) {
 }  // namespace
 
 void runLut(const LutOptions& o) {
-  const std::string gamut = colourSpace(o.gamut).name;  // unknown names fail before any work
+  const std::string gamut = fromOption("--gamut", [&] { return colourSpace(o.gamut).name; });  // before any work
   if (o.output.empty()) throw Error("lut: give the output file with -o");
   refuseImageExtension(o.output, "-o", o.part.empty() ? "upsampling table" : "part of an upsampling table");
   if (!o.part.empty()) {
@@ -129,7 +130,7 @@ void runUpsample(const UpsampleOptions& o) {
         "--method box splits RGB into fixed bands with no table: --path, --res and --gamut are for jakob-hanika");
   if (o.intent == "unbounded" && path != "manual")
     throw Error("--path " + path + ": the unbounded intent looks its scaled albedo up the manual way only");
-  const std::string gamut = colourSpace(o.gamut.value_or("srgb")).name;
+  const std::string gamut = fromOption("--gamut", [&] { return colourSpace(o.gamut.value_or("srgb")).name; });
   glm::vec3 rgb(static_cast<float>(o.rgb[0]), static_cast<float>(o.rgb[1]), static_cast<float>(o.rgb[2]));
   glm::vec3 coeffs(0.0f);
   float scale = 1.0f;

@@ -11,7 +11,9 @@
 namespace prism {
 
 struct LeftSingularVectors {
-  Eigen::MatrixXd vectors;  // rows × min(rows, cols), orthonormal columns
+  // rows × min(rows, cols), orthonormal columns, each signed so that its entry of largest
+  // magnitude is positive: a basis written to a file is the same whichever SVD made it.
+  Eigen::MatrixXd vectors;
   Eigen::VectorXd values;   // min(rows, cols) singular values, largest first
 };
 

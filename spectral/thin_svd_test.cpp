@@ -37,5 +37,20 @@ TEST(ThinSvd, FindsTheSingularValuesAndAnOrthonormalBasisOfTheColumns) {
   }
 }
 
+// A column's sign is the SVD's own choice; fixed here, the same matrix and its columns' negations
+// give one basis (a spectral texture's file the same bytes whichever SVD wrote it).
+TEST(ThinSvd, SignsEachVectorByItsLargestEntry) {
+  std::srand(11);
+  const Eigen::MatrixXd a = Eigen::MatrixXd::Random(81, 12);
+  const LeftSingularVectors s = leftSingularVectors(a);
+  const LeftSingularVectors negated = leftSingularVectors(-a);
+  for (Eigen::Index c = 0; c < s.vectors.cols(); ++c) {
+    Eigen::Index largest = 0;
+    s.vectors.col(c).cwiseAbs().maxCoeff(&largest);
+    EXPECT_GT(s.vectors(largest, c), 0.0) << c;
+  }
+  EXPECT_LT((s.vectors - negated.vectors).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 }  // namespace
 }  // namespace prism

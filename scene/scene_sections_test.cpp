@@ -87,6 +87,15 @@ TEST_F(SceneFolder, AtmosphereAddsTheSunAsALightAndChecksItsParameters) {
             f.string() + ": /atmosphere/rayleigh_scale_height: 80 km is above the atmosphere's height (60 km)");
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"atmosphere.humidity=3"}); }),
                          f.string() + ": /atmosphere/humidity: unknown key (set on the command line) (allowed: "));
+  // A radius alone keeps the height of the defaults `a` holds, whatever radius they had (it was
+  // their top less Earth's 6360 km: a Mars-sized default would have lost its atmosphere).
+  atmosphere::AtmosphereSky mars;
+  mars.parameters.bottomRadiusKm = 3390.0;
+  mars.parameters.topRadiusKm = 3490.0;
+  const nlohmann::json radius = {{"planet_radius", 3000}};
+  const schema::Document document{"mars", {}};
+  atmosphere::readAtmosphereKeys(schema::Node(radius, "", document), mars);
+  EXPECT_DOUBLE_EQ(mars.parameters.topRadiusKm, 3100.0);
   fs::path both = write("both.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "objects": [],
     "water": {"type": "I"}, "atmosphere": {}})");
   EXPECT_EQ(errorOf([&] { loadScene(both); }), both.string() + ": /atmosphere: a scene has water or an atmosphere, not both");

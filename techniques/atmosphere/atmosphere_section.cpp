@@ -67,8 +67,9 @@ void readAtmosphereKeys(const schema::Node& n, AtmosphereSky& a, std::vector<std
     a.sunAzimuthDeg = sun->numberF("azimuth", a.sunAzimuthDeg, Range::closed(-a.kSunAzimuthLimitDeg, a.kSunAzimuthLimitDeg));
   }
   a.groundAltitudeM = n.numberF("ground_altitude", 0.0f, Range::closed(0.0, 50000.0));
+  const double heightKm = p.topRadiusKm - p.bottomRadiusKm;  // kept when only the radius is given
   p.bottomRadiusKm = n.number("planet_radius", p.bottomRadiusKm, Range::closed(1.0, 1e5));
-  p.topRadiusKm = p.bottomRadiusKm + n.number("atmosphere_height", p.topRadiusKm - 6360.0, Range::closed(1.0, 1000.0));
+  p.topRadiusKm = p.bottomRadiusKm + n.number("atmosphere_height", heightKm, Range::closed(1.0, 1000.0));
   p.rayleighScaleHeightKm = n.number("rayleigh_scale_height", p.rayleighScaleHeightKm, Range::above(0.01));
   p.aerosols = n.boolean("aerosols", p.aerosols);
   p.mieAngstromBeta = n.number("turbidity", p.mieAngstromBeta, Range::closed(0.0, 5.0));

@@ -291,8 +291,12 @@ void runPrtReport(const PrtReportOptions& o) {
   const prt::PrtObject object = input ? input->object : prt::makeColourCheckerObject(patchVertices);
   const prt::BakeSettings bake =
       input ? bakeSettingsFor(*input, o.samples, true) : prt::BakeSettings{o.samples.value_or(prt::BakeSettings{}.samples)};
-  // Checked before the bake: the basis has at most one function per spectrum of the scene.
-  int mMax = std::min(static_cast<int>(object.reflectances.size() + environment.terms.size()), 16);
+  // The basis as basisSweep builds it, before the bake, so that --colours-m is checked against the
+  // functions it has: one per spectrum of the scene that is not black (a uniform sky's bands 1–4).
+  std::vector<Eigen::VectorXd> spectra;
+  for (const Spectrum& r : object.reflectances) spectra.push_back(prt::sampleOnGrid(r));
+  const prt::SpectralBasis basis(spectra, {prt::termSpectra(environment)});
+  const int mMax = std::min(basis.available(), 16);
   const int coloursM = o.coloursM.value_or(std::min(8, mMax));
   if (!o.coloursFile.empty() && (coloursM < 0 || coloursM > mMax))
     throw Error(fmt::format("--colours-m: {} out of range 0..{}", coloursM, mMax));
@@ -312,9 +316,6 @@ void runPrtReport(const PrtReportOptions& o) {
   if (!o.coloursFile.empty()) {
     Eigen::MatrixXd grid = prt::environmentOnGrid(environment);
     Eigen::Vector3d white = prt::sceneWhite(grid, obs);
-    std::vector<Eigen::VectorXd> spectra;  // as basisSweep builds its basis
-    for (const Spectrum& r : object.reflectances) spectra.push_back(prt::sampleOnGrid(r));
-    prt::SpectralBasis basis(spectra, {prt::termSpectra(environment)});
     auto xyz = coloursM == 0 ? prt::shadeReference(object, transfer.transfer, grid, obs)
                              : prt::shadeSpectral(object, transfer.transfer, grid, obs, basis.leading(coloursM));
     auto colours = prt::displayColours(xyz, white, colourSpace("srgb"));

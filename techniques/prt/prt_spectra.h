@@ -42,7 +42,7 @@ class SpectralBasis {
   explicit SpectralBasis(const std::vector<Eigen::VectorXd>& spectra,
                          const std::vector<std::vector<Eigen::VectorXd>>& groups = {});
 
-  // How many basis functions exist: min(81, number of spectra).
+  // How many basis functions exist: min(81, number of spectra that are not black).
   int available() const { return static_cast<int>(mSingularValues.size()); }
   // The leading m left singular vectors (81 × m, orthonormal columns); m in 1..available().
   Eigen::MatrixXd leading(int m) const;

@@ -88,12 +88,12 @@ SpectralEnvironment skyEnvironment(std::string name, const SkyRadianceGrid& grid
   Eigen::MatrixXd projection = Eigen::MatrixXd::Zero(kGridWavelengths, 25);
   for (int y = 0; y < grid.height; ++y) {
     for (int x = 0; x < grid.width; ++x) {
-      EquirectangularTexel texel = equirectangularTexel(x, y, grid.width, grid.height);
       const float* row = grid.radiance.data() +
                          (static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(x)) *
                              kGridWavelengths;
       Eigen::VectorXd spectrum = Eigen::Map<const Eigen::VectorXf>(row, kGridWavelengths).cast<double>();
-      projection += spectrum * (texel.solidAngle * evaluateSh(texel.direction)).transpose();
+      // Integrated over the texel, as a map's are: the sky as the piecewise-constant radiance it is.
+      projection += spectrum * equirectangularTexelSh(x, y, grid.width, grid.height).transpose();
     }
   }
   // A delta of irradiance E at the sun: L̃_k = E·Y_k(sun).

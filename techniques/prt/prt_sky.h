@@ -40,7 +40,8 @@ struct SkyRadianceGrid {
 // (atmosphere_tables.h), every texel in parallel (~0.6 s on 2 cores).
 SkyRadianceGrid tabulateSky(const PrtSky& sky, int width = kSkyGridWidth, int height = kSkyGridHeight);
 
-// The grid as a PRT environment: its texels and, with sunDisc, its sun; every value times `scale`.
+// The grid as a PRT environment: its texels (each integrated over its solid angle, as the path
+// tracer sees it: piecewise constant) and, with sunDisc, its sun; every value times `scale`.
 SpectralEnvironment skyEnvironment(std::string name, const SkyRadianceGrid& grid, bool sunDisc, double scale);
 
 // The sun's direction in PRT's frame (z up) for the atmosphere's elevation and azimuth.

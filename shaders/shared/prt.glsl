@@ -53,8 +53,11 @@ PRISM_INLINE vec3 prtXyz(IN(PrtBasisIrradiance) irradiance, IN(PrtReflectance) r
 // below zero beside a small bright source (a sun in a map: order 5 holds no lobe narrower than
 // about 40°), and a vertex turned away from it gets negative irradiance; light is never negative
 // and a real spectrum's tristimulus is ≥ 0 in every channel (x̄, ȳ, z̄ and a camera's curves are),
-// so a negative channel shows as 0. The reference mode's chunks of 16 wavelengths are clamped
-// each: where ringing makes a vertex's light negative it does so at every wavelength.
+// so a negative channel shows as 0. The reference mode's chunks of 16 wavelengths are drawn, and
+// so clamped, each on its own: under an environment of one colour that is the total's clamp (its
+// ringing is negative at every wavelength or at none), but where the ringing's colour varies (a
+// warm sun in a blue sky) a chunk's positive light is kept beside another's negative, so there,
+// and only there, the reference shows more light than a clamp of its whole sum would.
 PRISM_INLINE vec3 prtShownXyz(vec3 xyz) { return max(xyz, vec3(0.0f)); }
 
 // The renderer's PRT forward pass (techniques/prt/gpu/prt_pass.cpp, shaders/passes/prt.*): three

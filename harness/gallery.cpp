@@ -51,6 +51,12 @@ constexpr const char* kIndexFile = "index.html";
 
 std::string viewFile(const std::string& name, const View& view) { return name + view.suffix + ".png"; }
 
+// A scene's views: with a technique of its own optimised wavelengths (the sky), RGB-3, optimised-4
+// and the reference; otherwise RGB and spectral.
+std::span<const View> sceneViews(bool sky) {
+  return sky ? std::span<const View>(kSkyViews) : std::span<const View>(kSurfaceViews);
+}
+
 struct Entry {
   std::string name;
   std::string description;
@@ -142,7 +148,7 @@ std::string indexHtml(const std::vector<Entry>& entries, const std::vector<Nebul
   for (const Entry& e : entries) {
     page.beginSection(e.name, e.name);
     page.paragraph(htmlEscape(e.description));
-    figures(e.name, e.sky ? std::span<const View>(kSkyViews) : std::span<const View>(kSurfaceViews));
+    figures(e.name, sceneViews(e.sky));
     page.endSection();
   }
   for (const NebulaEntry& n : nebulae) {
@@ -164,8 +170,7 @@ std::string indexHtml(const std::vector<Entry>& entries, const std::vector<Nebul
   return page.html();
 }
 
-// Scenes with a technique of their own optimised wavelengths (the sky) show RGB-3, optimised-4 and
-// the reference; the others RGB and spectral.
+// Whether a scene has a technique of its own optimised wavelengths (the sky): sceneViews(true).
 bool showsOptimisedWavelengths(const Scene& scene) {
   return std::ranges::any_of(scene.techniques.all(),
                              [](const auto& t) { return t->optimisedWavelengths().has_value(); });
@@ -178,8 +183,7 @@ void requireOutputsClear(const std::filesystem::path& folder, const std::vector<
                          const std::vector<std::filesystem::path>& nebulaFiles) {
   std::vector<std::filesystem::path> outputs{folder / kChartFile, folder / kIndexFile};
   for (const Scene& scene : scenes) {
-    for (const View& view : showsOptimisedWavelengths(scene) ? std::span<const View>(kSkyViews)
-                                                             : std::span<const View>(kSurfaceViews))
+    for (const View& view : sceneViews(showsOptimisedWavelengths(scene)))
       outputs.push_back(folder / viewFile(scene.file.stem().string(), view));
   }
   std::vector<nebula::NebulaSceneFile> nebulae;

@@ -272,14 +272,24 @@ std::vector<double> Node::numbers(std::size_t n, const Range& range) const {
   return out;
 }
 
+float Node::numberF(const Range& range) const {
+  const Range r = range.forFloat();
+  const double v = number(r);
+  const auto f = static_cast<float>(v);
+  if (!r.contains(f))
+    fail("expected a number" + r.text() + ", got " + describe(*mValue) + " (" + formatNumber(f) +
+         " as a float, the renderer's precision)");
+  return f;
+}
+
 glm::vec3 Node::vec3(const Range& range) const {
-  std::vector<double> v = numbers(3, range.forFloat());
-  return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+  numbers(3, range.forFloat());  // the array's shape, in one message
+  return {element(0).numberF(range), element(1).numberF(range), element(2).numberF(range)};
 }
 
 glm::vec2 Node::vec2(const Range& range) const {
-  std::vector<double> v = numbers(2, range.forFloat());
-  return {static_cast<float>(v[0]), static_cast<float>(v[1])};
+  numbers(2, range.forFloat());
+  return {element(0).numberF(range), element(1).numberF(range)};
 }
 
 double Node::number(std::string_view key, double fallback, const Range& range) const {

@@ -101,7 +101,8 @@ class Node {
 
   // Values. Each checks the type (and range) and names what it expected and what it got.
   double number(const Range& range = Range::any()) const;
-  float numberF(const Range& range = Range::any()) const { return static_cast<float>(number(range.forFloat())); }
+  // A number within range.forFloat() that stays within it as a float (1e-300 > 0 is 0 as a float).
+  float numberF(const Range& range = Range::any()) const;
   int integer(const Range& range = Range::any()) const;
   bool boolean() const;
   std::string string() const;  // non-empty

@@ -14,6 +14,7 @@
 #include "imaging/exr_file.h"
 #include "imaging/radiance_hdr.h"
 #include "spectral/illuminant.h"
+#include "spectral/observer.h"
 #include "spectral/rgb_intent.h"
 #include "techniques/prt/prt_environment_radiance.h"
 #include "techniques/prt/prt_sky_cache.h"
@@ -64,6 +65,18 @@ imaging::FloatImage readEnvironmentMap(const std::filesystem::path& file) {
 
 double gridLuminance(const Spectrum& spd) {
   return sampleOnGrid(spd).dot(observerOnGrid(cie1931Observer()).col(1)) * kGridStepNm;
+}
+
+Spectrum environmentIlluminant(const std::string& name) {
+  Spectrum spd = illuminant(name);
+  // PRT's grid is 380–780 nm and the luminance is set on it: a light outside it was scaled by 1/0
+  // (black objects) or, mostly outside, came out of another colour in each mode.
+  const double onGrid = gridLuminance(spd), whole = luminousIntegral(spd) / double(shared::kLumensPerWatt);
+  if (!(onGrid >= kMinGridLuminanceShare * whole))
+    throw Error(fmt::format("{} has {:.3g} % of its luminance within PRT's {}–{} nm (at least {:g} %: the rest is lost)",
+                            name, 100.0 * onGrid / whole, kGridMinNm, kGridMinNm + (kGridWavelengths - 1) * kGridStepNm,
+                            100.0 * kMinGridLuminanceShare));
+  return spd;
 }
 
 std::string_view prtModeName(PrtMode mode) {
@@ -155,7 +168,7 @@ std::unique_ptr<TechniqueSection> PrtSection::parse(const schema::Node& n, const
     if (auto i = e->optionalChild("illuminant")) {
       s->illuminant = i->string();
       try {
-        prism::illuminant(s->illuminant);
+        environmentIlluminant(s->illuminant);
       } catch (const Error& err) {
         i->fail(err.what());
       }
@@ -197,7 +210,7 @@ SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpe
     environment = skyEnvironment(fmt::format("spectral sky, sun at {}°", section.sky->atmosphere.sunElevationDeg),
                                  *sectionSky(*section.sky), false, double(shared::kLumensPerWatt));
   } else {
-    Spectrum spd = illuminant(section.illuminant);
+    Spectrum spd = environmentIlluminant(section.illuminant);
     spd *= section.luminanceCdM2 / gridLuminance(spd);
     environment = section.shape == "uniform" ? uniformEnvironment(section.illuminant + " uniform", spd)
                                              : skyGradientEnvironment(section.illuminant + " sky", spd);

@@ -78,6 +78,10 @@ imaging::FloatImage readEnvironmentMap(const std::filesystem::path& file);
 // ∫ S ȳ dλ on PRT's 5 nm grid (CIE 1931): the scale that makes a spectrum's luminance 1 cd/m²
 // once 683 lm/W is folded into it (PRT's XYZ carry no 683 of their own).
 double gridLuminance(const Spectrum& spd);
+// An environment's illuminant by name: Error naming it when unknown, or when less than
+// kMinGridLuminanceShare of its luminance lies on PRT's 380–780 nm grid, where it is scaled.
+inline constexpr double kMinGridLuminanceShare = 0.9;
+Spectrum environmentIlluminant(const std::string& name);
 
 // The section's environment, z-up (PRT's convention), turned by rotationDeg about the zenith and
 // scaled to its luminance (the spectral sky: absolute, 683 lm/W folded in as PRT's spectra carry

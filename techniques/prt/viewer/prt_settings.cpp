@@ -4,7 +4,6 @@
 #include "core/error.h"
 #include "render/setting_keys.h"
 #include "scene/scene_loader.h"
-#include "spectral/illuminant.h"
 #include "techniques/prt/prt_section.h"
 #include "techniques/prt/viewer/prt_viewer.h"
 
@@ -38,7 +37,10 @@ bool setPrtKey(Scene& scene, const std::string& key, const std::string& value) {
   if (key == "prt.basis") {
     s->basis = static_cast<int>(render::parseInteger(key, value, 1, shared::kPrtMaxBasis));
   } else if (key == "prt.illuminant") {
-    illuminant(value);  // Error naming it when unknown, before anything changes
+    if (s->map || s->sky)
+      throw Error(std::string("prt.illuminant: the prt environment is ") + (s->map ? "a map" : "the spectral sky (\"atmosphere\")") +
+                  ", lit by no illuminant");
+    prt::environmentIlluminant(value);  // Error naming it, before anything changes
     s->illuminant = value;
   } else {
     float degrees = render::parseFloat(key, value);

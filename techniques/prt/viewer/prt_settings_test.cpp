@@ -37,6 +37,9 @@ TEST(PrtSetKeys, ChangeTheSectionAndRefuseBadValues) {
   EXPECT_NE(errorOf(scene, "prt.basis", "17"), "");
   EXPECT_EQ(errorOf(scene, "prt.mode", "rgb"), "prt.mode: expected spectral, rgb-prt or reference-5nm, got 'rgb'");
   EXPECT_NE(errorOf(scene, "prt.illuminant", "F99"), "");
+  // Light PRT's 380–780 nm grid does not hold (its luminance is set there: it drew black objects).
+  EXPECT_EQ(errorOf(scene, "prt.illuminant", "led:830:1"),
+            "led:830:1 has 0 % of its luminance within PRT's 380–780 nm (at least 90 %: the rest is lost)");
   EXPECT_EQ(errorOf(scene, "prt.rotation", "400"), "prt.rotation: expected degrees in [-360, 360], got 400");
   EXPECT_EQ(s->basis, 4);
   EXPECT_EQ(s->illuminant, "F11");
@@ -61,6 +64,10 @@ TEST(PrtSetKeys, MoveTheSpectralSkysSun) {
   EXPECT_FLOAT_EQ(s->sky->atmosphere.sunAzimuthDeg, -120.0f);
   EXPECT_EQ(errorOf(scene, "prt.sun-elevation", "91"), "prt.sun-elevation: expected degrees in [-90, 90], got 91");
   EXPECT_FLOAT_EQ(s->sky->atmosphere.sunElevationDeg, 5.5f);
+  // The sky is lit by its sun: an illuminant changed nothing (it was taken in silence).
+  EXPECT_EQ(errorOf(scene, "prt.illuminant", "A"),
+            "prt.illuminant: the prt environment is the spectral sky (\"atmosphere\"), lit by no illuminant");
+  EXPECT_EQ(s->illuminant, "D65");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "spectral/rgb_to_spectrum_part.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -90,6 +91,9 @@ RgbToSpectrumPart loadTablePart(const std::filesystem::path& path) {
     throw Error(where + "corrupt upsampling table part (checksum mismatch)");
   part.coefficients.resize(floats);
   std::memcpy(part.coefficients.data(), bytes.data() + kPartHeaderBytes, 4 * floats);
+  // As the table's loader: merged in, a NaN was written into a table that then failed to load.
+  for (float v : part.coefficients)
+    if (!std::isfinite(v)) throw Error(where + "non-finite coefficient in upsampling table part");
   return part;
 }
 

@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 
 #include "core/error.h"
@@ -64,6 +65,12 @@ TEST_F(TableParts, GapsOverlapsAndOtherTablesAreRefused) {
                                            a.string() + "'s is srgb 6³");
   std::filesystem::resize_file(b, std::filesystem::file_size(b) - 1);
   EXPECT_NE(mergeError({a, b, c}).find("truncated upsampling table part"), std::string::npos);
+  // A part whose checksum holds but whose numbers are not: merged, the table failed to load.
+  const IndexRange columns = shareOf({1, 3}, tableColumns(6));
+  RgbToSpectrumPart broken = tablePart(buildRgbToSpectrumTable({"srgb", 6, 1, {}}, columns), columns);
+  broken.coefficients[4] = std::numeric_limits<float>::quiet_NaN();
+  saveTablePart(b, broken);
+  EXPECT_EQ(mergeError({a, b, c}), b.string() + ": non-finite coefficient in upsampling table part");
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #include "batch/reference_merge.h"
 
 #include <gtest/gtest.h>
+
+#include <limits>
 #include <unistd.h>
 
 #include <algorithm>
@@ -209,6 +211,17 @@ TEST_F(ReferenceParts, AFileThatIsNotAWholePartIsRefused) {
   imaging::writeExr(mRoot / "image.exr", sWhole->tristimulus);
   EXPECT_EQ(mergeError({mRoot / "image.exr"}),
             (mRoot / "image.exr").string() + ": not a part of a reference render (no prism:part)");
+  // Numbers no path tracer writes, named at their pixel: a negative estimate passed into the
+  // merged image, a NaN was blamed on the scene's numbers.
+  reference::ReferenceImage negative = render({0, 16, 0, 12});
+  negative.tristimulus.pixels[3 * 5 + 2] = -1e6f;
+  const std::filesystem::path n = mRoot / "negative.exr";
+  writeReferencePart(n, partHeader(kScene, {}, *sScene, settings(), {0, 16, 0, 12}, 9.0f), negative);
+  EXPECT_EQ(mergeError({n}), n.string() + ": channel Z, pixel (5, 0) of the part: -1000000 is not a finite, non-negative estimate");
+  reference::ReferenceImage nan = render({0, 16, 0, 12});
+  nan.variance.pixels[3 * 25 + 1] = std::numeric_limits<float>::quiet_NaN();
+  writeReferencePart(n, partHeader(kScene, {}, *sScene, settings(), {0, 16, 0, 12}, 9.0f), nan);
+  EXPECT_EQ(mergeError({n}), n.string() + ": channel variance.Y, pixel (1, 1) of the part: nan is not a finite, non-negative estimate");
 }
 
 }  // namespace

@@ -196,7 +196,16 @@ ReferencePart readReferencePart(const std::filesystem::path& path) {
       auto it = std::find(band.channels.begin(), band.channels.end(), name);
       if (it == band.channels.end()) Attributes(path, band.attributes).fail("no channel " + name);
       const std::vector<float>& plane = band.planes[static_cast<std::size_t>(it - band.channels.begin())];
-      for (std::size_t i = 0; i < plane.size(); ++i) out.pixels[3 * i + static_cast<std::size_t>(c)] = plane[i];
+      // What the path tracer writes: finite estimates, the image's and its variance never
+      // negative (a tampered part passed -1e6 into the merged image; a NaN was blamed on the scene).
+      const bool signedValues = prefix == "residual.";
+      for (std::size_t i = 0; i < plane.size(); ++i) {
+        if (!std::isfinite(plane[i]) || (!signedValues && plane[i] < 0.0f))
+          throw Error(fmt::format("{}: channel {}, pixel ({}, {}) of the part: {} is not a {}estimate", path.string(), name,
+                                  i % static_cast<std::size_t>(band.width), i / static_cast<std::size_t>(band.width),
+                                  plane[i], signedValues ? "finite " : "finite, non-negative "));
+        out.pixels[3 * i + static_cast<std::size_t>(c)] = plane[i];
+      }
     }
     return out;
   };

@@ -14,6 +14,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/json_schema.h"
 #include "core/input_file.h"
 #include "core/parallel_for.h"
 #include "techniques/nebula/nebula_integrals.h"
@@ -161,13 +162,14 @@ DensityGrid readDensityFile(const std::filesystem::path& path) {
   in.seekg(static_cast<std::streamoff>(offset));
   in.read(reinterpret_cast<char*>(grid.values.data()), static_cast<std::streamsize>(expected));
   if (in.gcount() != static_cast<std::streamsize>(expected)) throw Error(FileLocation{file}, "the density file changed while read");
+  // Within a scene's limit on numbers: 3.4e38 overflowed the march and blamed the output image.
   for (std::size_t v = 0; v < count; ++v)
-    if (!std::isfinite(grid.values[v]) || grid.values[v] < 0.0f)
+    if (!(grid.values[v] >= 0.0f && grid.values[v] <= schema::kFloatInputLimit))
       throw Error(FileLocation{file},
-                  fmt::format("byte {}: voxel ({}, {}, {}) is {}: densities must be finite and ≥ 0",
+                  fmt::format("byte {}: voxel ({}, {}, {}) is {}: densities must lie within 0–{:g}",
                               offset + v * sizeof(float), v % static_cast<std::size_t>(nx),
                               v / static_cast<std::size_t>(nx) % static_cast<std::size_t>(ny),
-                              v / static_cast<std::size_t>(nx * ny), grid.values[v]));
+                              v / static_cast<std::size_t>(nx * ny), grid.values[v], schema::kFloatInputLimit));
   return grid;
 }
 

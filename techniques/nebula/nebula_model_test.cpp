@@ -184,8 +184,11 @@ TEST(NebulaDensity, BadFilesAreRefusedInOneLine) {
   EXPECT_EQ(e3, p3 + ": byte 22: expected 8 bytes of float32 data (1×1×2), found 4");
   float negative[2] = {0.5f, -1.0f};
   auto [p4, e4] = bad("d4.density", "prism-density 1\n2 1 1\n" + std::string(reinterpret_cast<char*>(negative), 8));
-  EXPECT_EQ(e4, p4 + ": byte 26: voxel (1, 0, 0) is -1: densities must be finite and ≥ 0");
-  for (const std::string& e : {e1, e2, e3, e4}) EXPECT_EQ(e.find('\n'), std::string::npos);
+  EXPECT_EQ(e4, p4 + ": byte 26: voxel (1, 0, 0) is -1: densities must lie within 0–1e+12");
+  float huge[2] = {0.5f, 3.4e38f};  // overflowed the march, which blamed the output image
+  auto [p5, e5] = bad("d5.density", "prism-density 1\n2 1 1\n" + std::string(reinterpret_cast<char*>(huge), 8));
+  EXPECT_EQ(e5, p5 + ": byte 26: voxel (1, 0, 0) is 3.4e+38: densities must lie within 0–1e+12");
+  for (const std::string& e : {e1, e2, e3, e4, e5}) EXPECT_EQ(e.find('\n'), std::string::npos);
 }
 
 // The paper's domain taken literally, λ ∈ [0, 1] µm, attenuations g ∈ [0, 1] µm: Barrès 2023

@@ -125,24 +125,25 @@ texture=$scratch/own/models/tiles_base_colour.png
 before=$(md5sum <"$texture")
 # view_error SCRIPT_TEXT NEEDLE: the run fails with NEEDLE in its one error line.
 view_error() {
-  printf '%s\n' "$1" >"$scratch/own/script"
+  printf '%s\n' "$1" >"$scratch/own/script.json"
   local err
-  if err=$(view "$scratch/own/textured_gltf.json" --width 64 --height 48 --script "$scratch/own/script" 2>&1); then
+  if err=$(view "$scratch/own/textured_gltf.json" --width 64 --height 48 --script "$scratch/own/script.json" 2>&1); then
     echo "'$1': exit 0" >&2
     exit 1
   fi
   grep -qF "$2" <<<"$err" || { echo "'$1': $err" >&2; exit 1; }
 }
 view_error "frames 1
-screenshot $texture" "script:2: $texture: is also a file the scene reads"
+screenshot $texture" "script.json:2: $texture: is also a file the scene reads"
 [ "$(md5sum <"$texture")" = "$before" ]
-view_error "save-settings $scratch/own/script" "script:1: $scratch/own/script: is also the script"
-grep -q '^save-settings' "$scratch/own/script"
-view_error "load-settings /dev/zero" "script:1: /dev/zero: not a regular file"
+# (the script named .json, as settings are: another name is refused for its extension first)
+view_error "save-settings $scratch/own/script.json" "script.json:1: $scratch/own/script.json: is also the script"
+grep -q '^save-settings' "$scratch/own/script.json"
+view_error "load-settings /dev/zero" "script.json:1: /dev/zero: not a regular file"
 # The rehearsal: a bad value, a light the scene lacks, a missing settings file fail at their lines
 # before a screenshot above them is written (it was, then the error came).
-for bad in "set mode bogus|script:2: mode: expected" "set light.9.intensity 5|script:2: light index: expected" \
-           "load-settings $scratch/own/none.json|script:2: $scratch/own/none.json"; do
+for bad in "set mode bogus|script.json:2: mode: expected" "set light.9.intensity 5|script.json:2: light index: expected" \
+           "load-settings $scratch/own/none.json|script.json:2: $scratch/own/none.json"; do
   rm -f "$scratch/own/early.png"
   view_error "screenshot $scratch/own/early.png
 ${bad%%|*}" "${bad#*|}"

@@ -81,6 +81,7 @@ void checkCommand(const std::vector<std::string>& w) {
     const std::string extension = lowercaseExtension(w[1]);
     if (verb == "screenshot" && extension != ".png" && extension != ".exr")
       throw Error(fmt::format("{}: a screenshot is a .png or an .exr", excerpt(w[1])));
+    if (verb == "save-settings") requireExtension(w[1], ".json", "", "settings file");
   } else if (verb == "heat-map-stats" || verb == "reload-shaders") {
     need(0);
   } else if (verb == "soak") {

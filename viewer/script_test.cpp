@@ -52,6 +52,8 @@ TEST(Script, EveryLineIsCheckedBeforeAnythingRuns) {
   EXPECT_EQ(loadError(arity), arity.string() + ":1: set takes 2 arguments");
   const std::filesystem::path quote = scriptFile("quote.txt", "set light.0.spd \"nist:Cool White FL\n");
   EXPECT_EQ(loadError(quote), quote.string() + ":1: a quote is not closed");
+  const std::filesystem::path png = scriptFile("png.txt", "frames 1\nsave-settings s.png\n");  // wrote JSON as .png
+  EXPECT_EQ(loadError(png), png.string() + ":2: s.png: the settings file is written as a .json file");
   const std::filesystem::path orbit = scriptFile("orbit.txt", "orbit left 10\n");
   EXPECT_NE(loadError(orbit).find(":1: yaw: expected"), std::string::npos) << loadError(orbit);
   // A negative soak bound passed, ran the soak and failed it; a .jpg screenshot and `set width`

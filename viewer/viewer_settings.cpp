@@ -8,6 +8,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "core/json_schema.h"
 #include "render/setting_keys.h"
 
@@ -60,6 +61,7 @@ bool applyViewSetting(ViewSettings& view, std::string_view key, std::string_view
 }
 
 void saveViewSettings(const std::filesystem::path& path, const ViewSettings& view, const Camera& camera) {
+  requireExtension(path, ".json", "", "settings file");  // JSON named x.png was taken for an image
   nlohmann::json j;
   for (const auto& [key, value] : render::frameSettingValues(view.left)) j["left"][key] = value;
   for (const auto& [key, value] : render::frameSettingValues(view.right)) j["right"][key] = value;

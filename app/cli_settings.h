@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <string>
@@ -49,6 +50,11 @@ class CliSettings {
   void describe(std::string_view key, const std::string& help) {
     for (const auto& [name, option] : mOptions)
       if (name == key) option->description(help);
+  }
+
+  // Whether `option` is one of this command's keys (their text is parsed by the key table).
+  bool owns(const CLI::Option* option) const {
+    return std::any_of(mOptions.begin(), mOptions.end(), [&](const auto& named) { return named.second == option; });
   }
 
   SettingsOptions given() const {

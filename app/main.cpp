@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -426,6 +427,12 @@ int main(int argc, char** argv) {
   bench->add_option("--plot", sceneBench.plot, "SVG plot of frame time against the wavelength count");
   bench->add_flag("--json", sceneBench.json, "JSON output");
 
+  // After every option is added; the frame settings' keys are parsed by their table.
+  const std::array<const CliSettings*, 5> settingsOptions{&renderSettings, &wavelengthsSettings, &settingsSettings,
+                                                          &viewSettings, &benchSettings};
+  prism::app::requireDecimalNumbers(app, [&](const CLI::Option* option) {
+    return std::any_of(settingsOptions.begin(), settingsOptions.end(), [&](const CliSettings* s) { return s->owns(option); });
+  });
   try {
     app.parse(argc, argv);
     if (*demoCmd) runGallery(gallery);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
 #include <string_view>
 
 namespace prism::app {
@@ -42,6 +43,45 @@ std::string conversionHint(const CLI::App& app, const std::string& message) {
   if (type == "INT") return fmt::format(" ({} takes a whole number written out, such as 1000)", name);
   if (type == "UINT") return fmt::format(" ({} takes a whole number from 0 to 4294967295, written out)", name);
   return "";
+}
+
+namespace {
+
+// The text without one leading '+', as from_chars reads no sign but '-'.
+std::string_view unsigned_(const std::string& text) {
+  return text.starts_with('+') ? std::string_view(text).substr(1) : std::string_view(text);
+}
+
+}  // namespace
+
+void requireDecimalNumbers(CLI::App& app, const std::function<bool(const CLI::Option*)>& parsedByPrism) {
+  const CLI::Validator decimal(
+      [](std::string& text) -> std::string {
+        const std::string_view digits = unsigned_(text);
+        double value = 0.0;
+        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+        // inf and nan pass to the option's own range, which names what it takes.
+        if (!digits.empty() && ec == std::errc() && end == digits.data() + digits.size()) return "";
+        return fmt::format("'{}' is not a decimal number (such as 6500, -2.5 or 1e-3)", text);
+      },
+      "");
+  // Whole numbers in base 10: CLI11 read "0x40" as 64 and "0b11" as 3 (its range errors still apply).
+  const CLI::Validator whole(
+      [](std::string& text) -> std::string {
+        const std::string_view digits = unsigned_(text);
+        long long value = 0;
+        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+        if (!digits.empty() && ec != std::errc::invalid_argument && end == digits.data() + digits.size()) return "";
+        return fmt::format("'{}' is not a whole number written out in decimal (such as 1000)", text);
+      },
+      "");
+  for (CLI::Option* option : app.get_options()) {
+    if (parsedByPrism(option)) continue;
+    const std::string type = option->get_type_name();
+    if (type == "FLOAT") option->check(decimal);
+    if (type == "INT" || type == "UINT") option->check(whole);
+  }
+  for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) requireDecimalNumbers(*sub, parsedByPrism);
 }
 
 }  // namespace prism::app

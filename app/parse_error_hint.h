@@ -1,7 +1,9 @@
-// What prism adds to three of CLI11's parse errors, whose own words leave the user guessing: the
-// subcommands a command takes, how to give a switch its value, and what an integer option takes.
+// What prism adds to CLI11's parsing, whose own words leave the user guessing: the subcommands a
+// command takes, how to give a switch its value, what an integer option takes, and decimal
+// numbers only where a number is read.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,5 +22,12 @@ std::string subcommandHint(const CLI::App& app);
 // For CLI11's "Could not convert: --frames = 1e3": what an integer option takes, which the message
 // does not say (a whole number written out, within its type's range); otherwise nothing.
 std::string conversionHint(const CLI::App& app, const std::string& message);
+
+// Gives every number option and positional of `app` and its subcommands (those added so far) a
+// check that its text is a number written in decimal ("6500", "-2.5", "1e-3"; whole numbers for
+// integers): CLI11 read "0x1964" and "0x1.964p12" as 6500, "0b11" as 3 and "" as 0, where every
+// other number Prism reads refuses them. Options that `parsedByPrism` names (text handed to
+// Prism's own parser, such as the frame settings) are left to it.
+void requireDecimalNumbers(CLI::App& app, const std::function<bool(const CLI::Option*)>& parsedByPrism);
 
 }  // namespace prism::app

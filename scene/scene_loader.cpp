@@ -58,8 +58,9 @@ class SceneParser {
       if (auto n = top.optionalChild(key); n && !n->json().is_string())
         n->fail("expected a string, got " + schema::describe(n->json()));
     if (auto n = top.optionalChild("colour_space")) {
+      const std::string name = n->string();  // its own error names the place: outside the try
       try {
-        mScene.colourSpace = colourSpace(n->string()).name;
+        mScene.colourSpace = colourSpace(name).name;
       } catch (const Error& e) {
         n->fail(e.what());
       }
@@ -291,8 +292,9 @@ class SceneParser {
         if (n.has(other))
           n.child(other).fail(std::string("a conductor's colour and metalness are its measured n and k: give ") + other +
                               " or conductor, not both");
+      const std::string metal = c->string();  // its own error names the place: outside the try
       try {
-        m.conductor = conductorIor(c->string());
+        m.conductor = conductorIor(metal);
       } catch (const Error& e) {
         c->fail(e.what());
       }

@@ -138,6 +138,16 @@ TEST(SceneLoader, OverridesApplyBeforeValidation) {
   EXPECT_EQ(s.lights[1].spdLabel, "blackbody:3000");
 }
 
+// An empty name is said once at its key: the name's own error was caught by the lookup's and
+// located again ("…/colour_space: …/colour_space: expected a non-empty string").
+TEST(SceneLoader, AnEmptyNameIsSaidOnceAtItsKey) {
+  fs::path f = kFixtures / "basic.json";
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"colour_space=\"\""}); }),
+            f.string() + ": /colour_space: expected a non-empty string, got \"\"");
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"materials.gold.conductor=\"\""}); }),
+            f.string() + ": /materials/gold/conductor: expected a non-empty string, got \"\"");
+}
+
 TEST(SceneLoader, OverrideOfAnUnknownPathFails) {
   fs::path f = kFixtures / "basic.json";
   EXPECT_EQ(errorOf([&] { loadScene(f, {"lights.9.intensity=5"}); }),

@@ -79,8 +79,9 @@ DensitySource readNebulaKeys(const schema::Node& n, NebulaModel& m, int& steps) 
     schema::Node file = density.child("file");
     std::filesystem::path dir = std::filesystem::path(n.document().name).parent_path();
     if (dir.empty()) dir = ".";
+    const std::string name = file.string();  // its own error names the place: outside the try
     try {
-      source.file = schema::confinedFile(dir, dir, file.string());
+      source.file = schema::confinedFile(dir, dir, name);
     } catch (const Error& e) {
       file.fail(e.what());
     }

@@ -174,8 +174,9 @@ std::unique_ptr<TechniqueSection> NebulaSection::parse(const schema::Node& n, co
     s->boxSize = static_cast<float>(box->number("size", s->boxSize, Range::open(0.0, 1e6)));
   }
   if (auto m = n.optionalChild("method")) {
+    const std::string name = m->string();  // its own error names the place: outside the try
     try {
-      s->method = methodFromName(m->string());
+      s->method = methodFromName(name);
     } catch (const Error& e) {
       m->fail(e.what());
     }

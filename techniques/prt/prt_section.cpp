@@ -26,8 +26,9 @@ std::shared_ptr<const PrtMap> readMap(const schema::Node& n) {
   std::filesystem::path folder = std::filesystem::path(n.document().name).parent_path();
   if (folder.empty()) folder = ".";
   auto map = std::make_shared<PrtMap>();
+  const std::string name = n.string();  // its own error names the place: outside the try
   try {
-    map->file = schema::confinedFile(folder, folder, n.string());
+    map->file = schema::confinedFile(folder, folder, name);
     imaging::FloatImage image = readEnvironmentMap(map->file);
     map->width = image.width;
     map->height = image.height;

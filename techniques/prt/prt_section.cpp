@@ -38,8 +38,8 @@ std::shared_ptr<const PrtMap> readMap(const schema::Node& n) {
         for (int c = 0; c < 3; ++c) {
           float v = image.at(x, y, c);
           if (!std::isfinite(v) || v < 0.0f || v > schema::kFloatInputLimit)
-            throw Error(fmt::format("texel ({}, {}): channel {} is {}, not a radiance within 0..{:g}", x, y, c, v,
-                                    schema::kFloatInputLimit));
+            throw Error(fmt::format("{}: texel ({}, {}): channel {} is {}, not a radiance within 0..{:g}", name, x, y, c,
+                                    v, schema::kFloatInputLimit));
           map->linearRgb.push_back(v);
         }
       }

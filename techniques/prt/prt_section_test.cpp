@@ -57,6 +57,20 @@ TEST(EnvironmentMap, OnlyLinearSrgbIsAMap) {
   std::filesystem::remove(xyz);
 }
 
+// A texel that is no radiance is named in its map's file (the message named the scene's key only).
+TEST(EnvironmentMap, ABadTexelIsNamedInItsFile) {
+  imaging::FloatImage map = skyMap();
+  map.at(3, 2, 1) = -0.5f;
+  const std::filesystem::path file = mapPath("negative.exr");
+  imaging::writeExr(file, map);
+  const schema::Document document{(file.parent_path() / "scene.json").string(), {}};
+  const nlohmann::json json = {{"environment", {{"map", file.filename().string()}}}};
+  EXPECT_EQ(errorOf([&] { PrtSection::parse(schema::Node(json, "/prt", document), TechniqueSections()); }),
+            document.name + ": /prt/environment/map: " + file.filename().string() +
+                ": texel (3, 2): channel 1 is -0.5, not a radiance within 0..1e+12");
+  std::filesystem::remove(file);
+}
+
 // The section's "atmosphere" environment, parsed as the scene loader parses it: the atmosphere
 // section's keys plus sun_disc, and no luminance (the sky is absolute); errors at their pointer.
 std::unique_ptr<TechniqueSection> parseSection(const std::string& text) {

@@ -575,7 +575,8 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   for (int i = 0; i < 2800; ++i) many += std::string(i ? "," : "") + R"({"position": [0.5, 0.5, 0.5], "temperature": 9000})";
   std::ofstream(dir / "many.json") << many + R"(], "camera": {"width": 8, "height": 8}}})";
   expectOneLineError("nebula render " + (dir / "many.json").string() + " --gpu -o x.png",
-                     "nebula star depths needs 24 × 700 texels along z");
+                     "many.json: /nebula/stars: the optical depths of 2800 stars need 700 slabs of 24 texels along z "
+                     "(16800), more than this GPU's 3D textures hold");
   // The renderer's scenes too, before the table, the fit and the precomputation (30 s, then the error,
   // after their progress bars: more than one line).
   std::ofstream(dir / "many_scene.json") << R"({"camera": {"position": [0, 0, -6], "target": [0, 0, 0]}, "objects": [], )" +
@@ -583,7 +584,7 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   const std::string manyScene = (dir / "many_scene.json").string();
   for (const std::string& command : {"render " + manyScene + " -o x.png", "bench " + manyScene + " --frames 1"})
     expectOneLineError(command + " --width 8 --height 8",
-                       "many_scene.json: /nebula/stars: nebula: nebula star depths needs 24 × 700 texels along z");
+                       "many_scene.json: /nebula/stars: the optical depths of 2800 stars need 700 slabs of 24 texels");
   expectOneLineError("nebula render " + tiny + " --method reference --reference-intervals 1024 --compare -o x.exr",
                      "--compare: the reference at 1024 Simpson intervals has no finer one");
   expectOneLineError("nebula basis --plot basis.png", "--plot basis.png: the plot is written as an .svg file");

@@ -241,7 +241,11 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   std::unique_ptr<gpu::HeadlessContext> context;
   if (o.gpu) {
     context = std::make_unique<gpu::HeadlessContext>();
-    nebula::requireGpuFits(file.densitySize().z, file.scene.model.stars.size());  // before any work
+    try {  // before any work, at the scene's stars as the renderer's scenes say it
+      nebula::requireGpuFits(file.densitySize().z, file.scene.model.stars.size());
+    } catch (const Error& e) {
+      throw Error(fmt::format("{}: /nebula/stars: {}", o.scene.string(), e.what()));
+    }
     const nebula::NebulaCamera& camera = file.scene.model.camera;
     const auto pixels = static_cast<std::size_t>(camera.width) * static_cast<std::size_t>(camera.height);
     if (method == nebula::Method::Projection)

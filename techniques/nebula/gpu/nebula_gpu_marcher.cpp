@@ -34,14 +34,15 @@ void setIfActive(const gpu::Program& program, std::string_view name, const T& va
   if (program.hasUniform(name)) program.setUniform(name, value);
 }
 
-// Error unless ⌈width/4⌉ slabs of nz texels fit along a 3D texture's z on this GPU.
-void requireSlabsFit(int nz, int width, std::string_view label) {
+// Error "WHAT need S slabs of NZ texels along z (S·NZ), more than …" unless ⌈width/4⌉ slabs of nz
+// texels fit along a 3D texture's z on this GPU.
+void requireSlabsFit(int nz, int width, std::string_view what) {
   const int slabs = (width + 3) / 4;
   GLint maxDepth = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxDepth);
   if (static_cast<long>(nz) * slabs > maxDepth)
-    throw Error(fmt::format("nebula: {} needs {} × {} texels along z, more than this GPU's 3D textures hold ({})",
-                            label, nz, slabs, maxDepth));
+    throw Error(fmt::format("{} need {} slabs of {} texels along z ({}), more than this GPU's 3D textures hold ({})", what,
+                            slabs, nz, static_cast<long>(nz) * slabs, maxDepth));
 }
 
 // Per-voxel fields of `width` values as an RGBA32F texture of ⌈width/4⌉ slabs stacked along z
@@ -58,7 +59,7 @@ gpu::Texture3D fieldTexture(int nx, int ny, int nz, int width, const std::vector
     desc.texels = texels;
     return gpu::Texture3D(desc);
   }
-  requireSlabsFit(nz, width, label);
+  requireSlabsFit(nz, width, fmt::format("nebula: {} ({} values a voxel)", label, width));
   const int slabs = (width + 3) / 4;
   const std::size_t voxels = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz);
   texels.assign(voxels * static_cast<std::size_t>(slabs) * 4, 0.0f);
@@ -170,7 +171,7 @@ bool NebulaGpuMarcher::refilter(const NebulaRenderer& renderer) {
 }
 
 void requireGpuFits(int voxelsZ, std::size_t stars) {
-  requireSlabsFit(voxelsZ, static_cast<int>(stars), "nebula star depths");
+  requireSlabsFit(voxelsZ, static_cast<int>(stars), fmt::format("the optical depths of {} stars", stars));
 }
 
 void requireMomentsFit(std::size_t count, std::string_view what, int card, std::size_t pixels) {

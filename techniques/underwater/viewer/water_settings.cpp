@@ -1,9 +1,8 @@
 // The viewer script's `set water.*` keys (viewer/technique_settings.h).
 #include "techniques/underwater/viewer/water_viewer.h"
 
-#include <limits>
-
 #include "core/error.h"
+#include "core/json_schema.h"
 #include "render/setting_keys.h"
 #include "techniques/underwater/water_section.h"
 
@@ -14,7 +13,8 @@ bool setWaterKey(Scene& scene, const std::string& key, const std::string& value)
   auto* water = scene.techniques.find<underwater::WaterSection>();
   if (!water) throw Error("the scene has no water");
   if (key == "water.type") water->type = value;
-  else water->depthM = render::parseFloatWithin(key, value, 0.0f, std::numeric_limits<float>::max());  // never clamped
+  else  // the scene's own limit, said in the message (it said 3.4e38, then refused 1e30 at ±1e12)
+    water->depthM = render::parseFloatWithin(key, value, 0.0f, static_cast<float>(schema::kFloatInputLimit));
   water->resolve();
   return true;
 }

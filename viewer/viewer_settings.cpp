@@ -111,10 +111,14 @@ void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Cam
         if (k == "position") nextCamera.position = vec3Of(v, where);
         else if (k == "target") nextCamera.target = vec3Of(v, where);
         else if (k == "up") nextCamera.up = vec3Of(v, where);
-        else if (k == "fov_deg" && v.is_number() && v.get<double>() >= kMinCameraFovDeg &&
-                 v.get<double>() < kMaxCameraFovDeg)
+        else if (k == "fov_deg") {
+          if (!(v.is_number() && v.get<double>() >= kMinCameraFovDeg && v.get<double>() < kMaxCameraFovDeg))
+            throw Error(fmt::format("{}: expected degrees in [{:g}, {:g}), got {}", where, kMinCameraFovDeg, kMaxCameraFovDeg,
+                                    excerpt(v.dump())));
           nextCamera.verticalFovDeg = v.get<float>();  // a scene's range: 1e-30 was taken
-        else throw Error(fmt::format("{}: unknown key or bad value {}", where, excerpt(v.dump())));
+        } else {
+          throw Error(fmt::format("{}: unknown key (allowed: position, target, up, fov_deg)", where));
+        }
       }
     } else {
       throw Error(fmt::format("{}: /{}: unknown key (allowed: left, right, split, heat_map, camera)", file, excerpt(key)));

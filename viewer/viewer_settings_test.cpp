@@ -118,7 +118,10 @@ TEST(ViewerSettings, FilesRoundTripAndBadOnesChangeNothing) {
     }
     return std::string("loaded");
   };
-  EXPECT_NE(cameraError(R"({"fov_deg": 1e-30})").find("/camera/fov_deg: unknown key or bad value"), std::string::npos);
+  EXPECT_NE(cameraError(R"({"fov_deg": 1e-30})").find("/camera/fov_deg: expected degrees in [0.001, 180), got 1e-30"),
+            std::string::npos);
+  EXPECT_NE(cameraError(R"({"fov": 40})").find("/camera/fov: unknown key (allowed: position, target, up, fov_deg)"),
+            std::string::npos);
   EXPECT_EQ(cameraError(R"({"fov_deg": 179.99})"), "loaded");
   EXPECT_NE(cameraError(R"({"position": [1e15, 0, 1]})").find("/camera/position: expected [x, y, z], each within ±1e+12"),
             std::string::npos)

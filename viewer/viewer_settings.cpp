@@ -63,8 +63,12 @@ bool applyViewSetting(ViewSettings& view, std::string_view key, std::string_view
 void saveViewSettings(const std::filesystem::path& path, const ViewSettings& view, const Camera& camera) {
   requireExtension(path, ".json", "", "settings file");  // JSON named x.png was taken for an image
   nlohmann::json j;
-  for (const auto& [key, value] : render::frameSettingValues(view.left)) j["left"][key] = value;
-  for (const auto& [key, value] : render::frameSettingValues(view.right)) j["right"][key] = value;
+  // Not the views' size: the window's (a loaded 9000 × 20 was saved back while 64 × 48 was drawn).
+  auto windowSized = [](const std::string& key) { return key == "width" || key == "height"; };
+  for (const auto& [key, value] : render::frameSettingValues(view.left))
+    if (!windowSized(key)) j["left"][key] = value;
+  for (const auto& [key, value] : render::frameSettingValues(view.right))
+    if (!windowSized(key)) j["right"][key] = value;
   j["split"] = view.split;
   j["heat_map"] = view.heatMap;
   j["camera"] = {{"position", {camera.position.x, camera.position.y, camera.position.z}},
@@ -128,6 +132,10 @@ void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Cam
   if (!(glm::length(look) > 0.0f) || !(glm::length(glm::cross(look, nextCamera.up)) > 1e-6f * glm::length(look))) {
     throw Error(fmt::format("{}: /camera: the target must differ from the position, and up must not be parallel "
                             "to the view", file));
+  }
+  for (auto [from, to] : {std::pair{&view.left, &next.left}, std::pair{&view.right, &next.right}}) {
+    to->width = from->width;  // the window's, whatever a file says
+    to->height = from->height;
   }
   view = next;
   camera = nextCamera;

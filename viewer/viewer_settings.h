@@ -29,7 +29,8 @@ bool applyViewSetting(ViewSettings& view, std::string_view key, std::string_view
 
 // Settings files: {"left": {KEY: VALUE…}, "right": {…}, "split": bool, "heat_map": bool,
 // "camera": {"position", "target", "up", "fov_deg"}}, written atomically. Loading checks all of
-// it first (Error "FILE: /left/mode: …") and changes nothing on failure.
+// it first (Error "FILE: /left/mode: …") and changes nothing on failure. The views' width and
+// height are the window's: not written, and a file's (older files hold them) not taken.
 void saveViewSettings(const std::filesystem::path& path, const ViewSettings& view, const Camera& camera);
 void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Camera& camera);
 

@@ -4,16 +4,16 @@
 #include "batch/reference_merge.h"
 
 #include <gtest/gtest.h>
-
-#include <limits>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 
 #include "core/error.h"
+#include "imaging/exr_band.h"
 #include "imaging/exr_file.h"
 #include "scene/scene_loader.h"
 #include "spectral/rgb_to_spectrum_cache.h"
@@ -222,6 +222,12 @@ TEST_F(ReferenceParts, AFileThatIsNotAWholePartIsRefused) {
   nan.variance.pixels[3 * 25 + 1] = std::numeric_limits<float>::quiet_NaN();
   writeReferencePart(n, partHeader(kScene, {}, *sScene, settings(), {0, 16, 0, 12}, 9.0f), nan);
   EXPECT_EQ(mergeError({n}), n.string() + ": channel variance.Y, pixel (1, 1) of the part: nan is not a finite, non-negative estimate");
+  // A number no float holds is said as such, not as no number ("\"1e39\" is not a number").
+  imaging::ExrBand band = imaging::readExrBand(n, true);
+  band.attributes["prism:ev100"] = "1e39";
+  const std::filesystem::path far = mRoot / "far.exr";
+  imaging::writeExrBand(far, band);
+  EXPECT_NE(mergeError({far}).find("prism:ev100 1e39 is out of its type's range"), std::string::npos) << mergeError({far});
 }
 
 }  // namespace

@@ -48,6 +48,8 @@ class Attributes {
     const std::string& t = text(name);
     T value{};
     auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    if (!t.empty() && ec == std::errc::result_out_of_range && end == t.data() + t.size())
+      fail(name + " " + excerpt(t) + " is out of its type's range");  // 1e39 for a float: a number, but no float
     if (t.empty() || ec != std::errc() || end != t.data() + t.size()) fail(name + " \"" + excerpt(t) + "\" is not a number");
     return value;
   }

@@ -25,6 +25,10 @@ int runView(const ViewOptions& options) {
       throw Error(fmt::format("{} {}: the viewer's window is {}–{} pixels a side", name, side, viewer::kMinWindowSide,
                               viewer::kMaxWindowSide));
   render::requireLightCount(scene);  // the renderer's own check, before the work ahead of it
+  // The script rehearsed on the state the viewer starts from, before the table and the techniques'
+  // precomputation (a nebula's density: seconds): `set nebula.steps 0` failed after them. The run
+  // rehearses it again on the viewer's own state.
+  if (script) viewer::rehearseScript(*script, viewer::initialView(settings), viewer::CameraController(scene.camera), scene);
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::precomputeTechniques(scene);
   viewer::ViewerOptions v;

@@ -127,7 +127,8 @@ void set(const Settable& target, const std::string& key, const std::string& valu
     return;
   }
   throw Error(fmt::format("unknown setting \"{}\" (the frame keys of `prism settings --keys`, right.KEY, split, "
-                          "heat-map, fov, light.N.*, material.NAME.*, water.type, water.depth, sky.*, prt.*)", excerpt(key)));
+                          "heat-map, fov, light.N.*, material.NAME.*, water.type, water.depth, sky.*, prt.*, nebula.*)",
+                          excerpt(key)));
 }
 
 // One checked command (checkCommand).

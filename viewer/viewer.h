@@ -11,7 +11,7 @@
 //                        light.N.position X,Y,Z (point, spot), light.N.shadows on|off,
 //                        material.NAME.base-colour R,G,B, material.NAME.roughness X,
 //                        material.NAME.metallic X, water.type T, water.depth M, sky.*,
-//                        prt.mode M, prt.basis N, prt.illuminant NAME, prt.rotation DEG
+//                        prt.mode M, prt.basis N, prt.illuminant NAME, prt.rotation DEG, nebula.*
 //   frames N             render N frames (the window shows them)
 //   resize W H           resize the window
 //   orbit YAW PITCH      degrees

@@ -36,12 +36,8 @@ Viewer::ImGuiSession::~ImGuiSession() {
 
 Viewer::Viewer(gpu::WindowContext& window, Scene& scene, const RgbToSpectrumTable& table,
                const render::FrameSettings& initial)
-    : mWindow(window), mScene(scene), mTable(table), mCamera(scene.camera), mImGui(window),
+    : mWindow(window), mScene(scene), mTable(table), mCamera(scene.camera), mView(initialView(initial)), mImGui(window),
       mCompositor(scene, table) {
-  mView.left = initial;
-  mView.right = initial;
-  mView.right.mode = render::RenderMode::Rgb;
-  mView.right.observer = "cie1931";  // RGB mode's own: its colour spaces are defined on it
   Bounds b = sceneBounds(scene);
   mFlySpeed = std::max(0.5f, 0.25f * glm::length(b.max - b.min));
   mPanels.push_back(makeCameraPanel());

@@ -60,6 +60,15 @@ bool applyViewSetting(ViewSettings& view, std::string_view key, std::string_view
   return true;
 }
 
+ViewSettings initialView(const render::FrameSettings& initial) {
+  ViewSettings view;
+  view.left = initial;
+  view.right = initial;
+  view.right.mode = render::RenderMode::Rgb;
+  view.right.observer = "cie1931";
+  return view;
+}
+
 void saveViewSettings(const std::filesystem::path& path, const ViewSettings& view, const Camera& camera) {
   requireExtension(path, ".json", "", "settings file");  // JSON named x.png was taken for an image
   nlohmann::json j;

@@ -21,6 +21,10 @@ struct ViewSettings {
   bool heatMap = false;
 };
 
+// The viewer's first view: `initial` on the left, and on the right RGB mode under CIE 1931 (RGB
+// mode's own observer: its colour spaces are defined on it).
+ViewSettings initialView(const render::FrameSettings& initial);
+
 // The view's keys of the script's `set KEY VALUE`: a frame key (the left view, or the only one),
 // right.KEY (the right view), split and heat-map (on or off). Returns false when `key` is none of
 // these; Error naming the key and what it expects when the value is bad (validate() then checks

@@ -276,7 +276,11 @@ float Node::numberF(const Range& range) const {
   const Range r = range.forFloat();
   const double v = number(r);
   const auto f = static_cast<float>(v);
-  if (!r.contains(f))
+  // Against the bounds as floats too: 0.7 ≥ 0.7 holds once both are rounded, not as float(0.7) ≥ 0.7.
+  Range asFloat = r;
+  asFloat.min = static_cast<float>(r.min);
+  asFloat.max = static_cast<float>(r.max);
+  if (!asFloat.contains(f))
     fail("expected a number" + r.text() + ", got " + describe(*mValue) + " (" + formatNumber(f) +
          " as a float, the renderer's precision)");
   return f;

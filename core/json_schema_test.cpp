@@ -1,0 +1,33 @@
+// What a scene's numbers read as float (Node::numberF, vec2, vec3) must hold as floats.
+#include "core/json_schema.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/error.h"
+
+namespace prism::schema {
+namespace {
+
+std::string errorOf(const nlohmann::json& value, const Range& range) {
+  const Document document{"scene.json", {}};
+  try {
+    Node(value, "/x", document).numberF(range);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "read";
+}
+
+TEST(NumberAsFloat, IsInItsRangeOnceAFloat) {
+  // 1e-300 > 0 as a double, 0 as a float: a sphere of that radius aborted every command.
+  EXPECT_EQ(errorOf(1e-300, Range::above(0.0)),
+            "scene.json: /x: expected a number in (0, 1e+12], got 1e-300 (0 as a float, the renderer's precision)");
+  // A bound no float holds is compared as a float too: float(0.7) < 0.7, yet 0.7 is in [0.7, 1].
+  EXPECT_EQ(errorOf(0.7, Range::closed(0.7, 1.0)), "read");
+  EXPECT_EQ(errorOf(0.69, Range::closed(0.7, 1.0)), "scene.json: /x: expected a number in [0.7, 1], got 0.69");
+}
+
+}  // namespace
+}  // namespace prism::schema

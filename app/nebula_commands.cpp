@@ -26,6 +26,7 @@
 #include "imaging/exr_file.h"
 #include "imaging/float_image.h"
 #include "techniques/nebula/nebula_basis.h"
+#include "techniques/nebula/nebula_basis_coverage.h"
 #include "techniques/nebula/gpu/nebula_gpu_marcher.h"
 #include "techniques/nebula/nebula_scene.h"
 
@@ -53,6 +54,18 @@ nebula::NebulaScene generateWithProgress(nebula::NebulaSceneFile file, unsigned 
     if (!bar) bar.emplace("nebula: density noise");
     bar->update(done, total);
   });
+}
+
+// One line on stderr when some pixel gathers more than 1 % of its star light through more dust than
+// the basis was fitted for (nebula_basis_coverage.h): its error there is not the README's.
+void warnBeyondBasis(const nebula::BasisCoverage& coverage, const nebula::RenderSettings& s) {
+  if (coverage.worstShare <= 0.01) return;
+  fmt::print(stderr,
+             "prism: warning: up to {:.0f} % of a pixel's star light reaches the camera through more dust than the "
+             "basis is fitted for (optical depth up to {:.1f} µm, the basis {:g} µm): the {} method's error there can "
+             "exceed 2 % by far; --basis-depth {:.0f} --basis 6 fits deeper, --method analytic integrates exactly\n",
+             100.0 * coverage.worstShare, coverage.deepestUm, s.basisMaxDepthUm, nebula::methodName(s.method),
+             std::min(std::ceil(coverage.deepestUm), nebula::kMaxBasisDepthUm));
 }
 
 void requireFilterSet(const std::string& filters) {
@@ -205,6 +218,8 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   nebula::Method method = nebula::methodFromName(o.method);
   requireWithin("--steps", o.steps, 1, nebula::kMaxSteps);
   requireWithin("--basis", o.basisSize, 1, nebula::kMaxBasisSize);
+  if (o.basisDepthUm && !(*o.basisDepthUm > 0.0 && *o.basisDepthUm <= nebula::kMaxBasisDepthUm))
+    throw Error(fmt::format("--basis-depth: {:g} is not within (0, {:g}] µm", *o.basisDepthUm, nebula::kMaxBasisDepthUm));
   requireWithin("--light-basis", o.lightBasisSize, 1, nebula::kMaxLightBasisSize);
   requireWithin("--reference-intervals", o.referenceIntervals, 2, nebula::kMaxReferenceIntervals);
   if (o.referenceIntervals && *o.referenceIntervals % 2 != 0)
@@ -214,6 +229,7 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   s.method = method;
   s.steps = o.steps.value_or(s.steps);
   s.basisSize = o.basisSize.value_or(s.basisSize);
+  s.basisMaxDepthUm = o.basisDepthUm.value_or(s.basisMaxDepthUm);
   s.lightBasisSize = o.lightBasisSize.value_or(s.lightBasisSize);
   s.referenceIntervals = o.referenceIntervals.value_or(s.referenceIntervals);
   s.uniformSamples = o.uniformSamples;
@@ -229,6 +245,9 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   if (o.basisSize && !onBasis)
     throw Error(fmt::format("--basis {}: only with --method projection or light-density; {} projects on no basis",
                             *o.basisSize, o.method));
+  if (o.basisDepthUm && !onBasis)
+    throw Error(fmt::format("--basis-depth {:g}: only with --method projection or light-density; {} projects on no basis",
+                            *o.basisDepthUm, o.method));
   if (o.lightBasisSize && method != nebula::Method::LightDensity)
     throw Error(fmt::format("--light-basis {}: only with --method light-density; {} has no light basis",
                             *o.lightBasisSize, o.method));
@@ -264,6 +283,7 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   auto t0 = std::chrono::steady_clock::now();
   nebula::NebulaRenderer renderer(std::move(scene.model), s, [&bar](std::size_t d, std::size_t n) { bar.update(d, n); });
   auto t1 = std::chrono::steady_clock::now();
+  warnBeyondBasis(nebula::basisCoverage(renderer, s), s);
   nebula::NebulaImage image;
   if (o.gpu) {
     nebula::NebulaGpuMarcher marcher(renderer);

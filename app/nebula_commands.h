@@ -48,6 +48,7 @@ struct NebulaRenderOptions {
   // Each method's own options, unset: RenderSettings' defaults; given to a method that has no use
   // for it, refused.
   std::optional<int> basisSize;           // projection, light-density
+  std::optional<double> basisDepthUm;     // projection, light-density: the basis's family g ≤ this
   std::optional<int> lightBasisSize;      // light-density
   std::optional<int> referenceIntervals;  // the reference by Simpson (itself, or --compare's)
   int uniformSamples = 0;

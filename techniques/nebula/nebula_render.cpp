@@ -153,6 +153,8 @@ void validate(const RenderSettings& s) {
   within("reference intervals", s.referenceIntervals, 2, kMaxReferenceIntervals);
   if (s.referenceIntervals % 2) throw Error(fmt::format("nebula: reference intervals {} is odd (Simpson's rule)", s.referenceIntervals));
   if (s.uniformSamples != 0) within("reference samples", s.uniformSamples, 2, kMaxUniformSamples);
+  if (!(s.basisMaxDepthUm > 0.0 && s.basisMaxDepthUm <= kMaxBasisDepthUm))
+    throw Error(fmt::format("nebula: basis depth {:g} µm is not within (0, {:g}]", s.basisMaxDepthUm, kMaxBasisDepthUm));
 }
 
 NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
@@ -186,7 +188,8 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
   }
   if (zoned) buildLineZones(pre, lineGroups, s.threads, tick);
   // Projection: the 1D basis on the band and each star's filter integrals of it.
-  pre.basis = findExpBasis(kBandLoUm, kBandHiUm, s.basisMaxDepthUm, 2.0, s.basisSize, s.basisSpacingUm);
+  const double exponentMaxUm = std::max(2.0, s.basisMaxDepthUm);
+  pre.basis = findExpBasis(kBandLoUm, kBandHiUm, s.basisMaxDepthUm, exponentMaxUm, s.basisSize, s.basisSpacingUm);
   auto card = static_cast<int>(pre.basis.a.size());
   for (int j = 0; j < card; ++j) (j < 4 ? pre.basisLo[j] : pre.basisHi[j - 4]) = static_cast<float>(pre.basis.a[static_cast<std::size_t>(j)]);
   auto coefficientsAt = [&pre](double x) {
@@ -220,7 +223,7 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
     std::vector<double> nodes, weights;
     gaussLegendre(kLightNodes, kBandLoUm, kBandHiUm, nodes, weights);
     const int aCount = 41, tCount = 5, gCount = 24, familyTemps = tMax > tMin ? 8 : 1;
-    const double aMax = 2.0;
+    const double aMax = exponentMaxUm;
     Eigen::MatrixXd family(kLightNodes, gCount * familyTemps), candidates(kLightNodes, aCount * tCount);
     for (int q = 0; q < kLightNodes; ++q) {
       double l = nodes[static_cast<std::size_t>(q)];

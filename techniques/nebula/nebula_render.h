@@ -95,6 +95,8 @@ inline constexpr int kMaxBasisSize = 6;
 inline constexpr int kMaxLightBasisSize = 16;
 inline constexpr int kMaxReferenceIntervals = 1024;
 inline constexpr int kMaxUniformSamples = 1000;
+// The bases' family reaches no deeper than the coefficient table (kMomentTableMaxUm, 16 µm).
+inline constexpr double kMaxBasisDepthUm = 16.0;
 
 struct RenderSettings {
   Method method = Method::Reference;
@@ -103,7 +105,10 @@ struct RenderSettings {
   int uniformSamples = 0;        // reference: if > 0, that many λ per channel instead (trapezoid)
   int basisSize = 4;             // projection / lightDensity: card(B) of the 1D basis
   double basisSpacingUm = 0.2;   // its exponents' minimum spacing (nebula_basis.h; README)
-  double basisMaxDepthUm = 2.0;  // its family: attenuations g ∈ [0, this]
+  // Its family: attenuations g ∈ [0, this], its candidates' exponents a ∈ [0, max(2, this)]. Light
+  // that reaches the camera through more dust (x = g + g_s beyond it) projects badly: the basis's
+  // error there grows without bound (lightBeyondBasis tells how much of a pixel's light does).
+  double basisMaxDepthUm = 2.0;
   int lightBasisSize = 8;        // lightDensity: card of the 2D basis
   bool emissionLines = true;
   // The shared formulas in double (their f64 instantiation) instead of float, the GPU's

@@ -1,0 +1,61 @@
+#include "techniques/nebula/nebula_basis_coverage.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "techniques/nebula/nebula_integrals.h"
+#include "techniques/nebula/nebula_precomputed.h"
+
+namespace prism::nebula {
+
+BasisCoverage basisCoverage(const NebulaRenderer& renderer, const RenderSettings& s, int rays) {
+  BasisCoverage coverage;
+  if (s.method != Method::Projection) return coverage;
+  const NebulaPrecomputed& pre = renderer.precomputed();
+  const NebulaModel& m = pre.model;
+  const NebulaCamera& cam = m.camera;
+  const NebulaViewFrame frame = viewFrame(cam);
+  const double tanHalf = std::tan(cam.fovYDeg * std::numbers::pi / 360.0);
+  const double aspect = static_cast<double>(cam.width) / cam.height;
+  const int across = std::min(rays, cam.width), down = std::min(rays, cam.height);
+  const double family = s.basisMaxDepthUm;
+  std::vector<double> total, beyond;
+  for (int row = 0; row < down; ++row)
+    for (int col = 0; col < across; ++col) {
+      const double px = (col + 0.5) * cam.width / across, py = (row + 0.5) * cam.height / down;
+      const double u = (2.0 * px / cam.width - 1.0) * tanHalf * aspect, v = (1.0 - 2.0 * py / cam.height) * tanHalf;
+      const glm::dvec3 dir = glm::normalize(frame.forward + u * frame.right + v * frame.up);
+      double t0 = 0.0, t1 = 0.0, light = 0.0, far = 0.0;
+      if (shared::f64::nebulaClipToCube(cam.position, dir, 1e30, t0, t1)) {
+        const double dt = (t1 - t0) / s.steps;
+        double gCam = 0.0;
+        for (int i = 0; i < s.steps && !shared::f64::nebulaRayOpaque(gCam); ++i) {
+          const glm::dvec3 p = cam.position + dir * (t0 + (i + 0.5) * dt);
+          const double rho = m.density.sample(p);
+          if (rho <= 0.0) continue;
+          const double dg = kCtUm * m.extinction * rho * dt, g = gCam + 0.5 * dg;
+          gCam += dg;
+          for (std::size_t st = 0; st < m.stars.size(); ++st) {
+            float gs = 0.0f;
+            pre.starDepth[st].sample(p, &gs);
+            const glm::dvec3 toStar = m.stars[st].position - p;
+            const double x = g + gs;
+            const double w = shared::f64::nebulaStarWeight(m.scattering * rho * dt, m.stars[st].luminosity, glm::dot(toStar, toStar)) *
+                             shared::f64::nebulaExpMoments(x, glm::dvec4(0.0), kBandLoUm, kBandHiUm).x;
+            light += w;
+            if (w <= 0.0) continue;
+            coverage.deepestUm = std::max(coverage.deepestUm, x);
+            if (x > family) far += w;
+          }
+        }
+      }
+      total.push_back(light), beyond.push_back(far);
+    }
+  const double brightest = total.empty() ? 0.0 : *std::max_element(total.begin(), total.end());
+  for (std::size_t r = 0; r < total.size(); ++r)
+    if (brightest > 0.0 && total[r] >= 0.01 * brightest) coverage.worstShare = std::max(coverage.worstShare, beyond[r] / total[r]);
+  return coverage;
+}
+
+}  // namespace prism::nebula

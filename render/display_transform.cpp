@@ -19,16 +19,26 @@ glm::mat3 toGlm(const Eigen::Matrix3d& m) {
 
 }  // namespace
 
-DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tristimulusObserver) {
+DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tristimulusObserver,
+                             const Spectrum* cameraLight) {
   DisplayInputs inputs;
   inputs.colourSpace = &colourSpace(settings.colourSpace);
-  const Observer& cie = cie1931Observer();
-  if (settings.whiteBalance != "none") {
-    Eigen::Vector3d white = cie.integrate(illuminant(settings.whiteBalance));
-    inputs.whiteBalanceXyz = white / white.y();
-  }
   if (tristimulusObserver.isCamera) {
-    inputs.tristimulusToXyz = fitCameraToXyz(tristimulusObserver, illuminant("D65"), cie).cameraToXyz;
+    const Observer& cie = cie1931Observer();
+    const Spectrum& d65 = illuminant("D65");
+    const bool lit = cameraLight && cie.integrate(*cameraLight).y() > 0.0;
+    const Spectrum& light = lit ? *cameraLight : d65;
+    // The fit maps camera RGB to XYZ each normalised by its own white's green and Y under `light`;
+    // the renderer scales camera RGB to match XYZ under D65 (absoluteTristimulusScale). The ratio of
+    // the two normalisations keeps a light's luminance (1 under D65).
+    auto greenOverY = [&](const Spectrum& s) { return tristimulusObserver.integrate(s).y() / cie.integrate(s).y(); };
+    inputs.tristimulusToXyz = fitCameraToXyz(tristimulusObserver, light, cie).cameraToXyz * (greenOverY(d65) / greenOverY(light));
+  }
+  if (settings.whiteBalance != "none") {
+    // The white the image holds: the illuminant as this observer (or camera, then its matrix) sees
+    // it — a camera's own white, CIE 1964's X₁₀Y₁₀Z₁₀ — so that a surface lit by it shows neutral.
+    Eigen::Vector3d white = inputs.tristimulusToXyz * tristimulusObserver.integrate(illuminant(settings.whiteBalance));
+    inputs.whiteBalanceXyz = white / white.y();
   }
   return inputs;
 }

@@ -20,13 +20,18 @@ namespace prism::render {
 // camera matrix.
 struct DisplayInputs {
   const RgbColourSpace* colourSpace = nullptr;
-  std::optional<Eigen::Vector3d> whiteBalanceXyz;  // the illuminant's white (CIE 1931, Y = 1); none: no balance
+  // The illuminant's white as the shown tristimulus sees it, through the camera matrix (Y = 1);
+  // none: no balance.
+  std::optional<Eigen::Vector3d> whiteBalanceXyz;
   Eigen::Matrix3d tristimulusToXyz = Eigen::Matrix3d::Identity();  // a camera's fitted matrix, or identity
 };
 
 // `tristimulusObserver` is whose tristimulus is shown: XYZ (a CIE observer), or a camera's raw RGB,
-// which goes through its matrix fitted on the ColorChecker under D65. Error on unknown names.
-DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tristimulusObserver);
+// which goes through its matrix fitted on the ColorChecker under `cameraLight` — the scene's light
+// (sceneEmission), D65 when none is given or it is dark. A matrix fitted under D65 turned a blue
+// LED's camera response into negative luminance: the image came out black. Error on unknown names.
+DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tristimulusObserver,
+                             const Spectrum* cameraLight = nullptr);
 
 struct DisplayTransform {
   glm::mat3 toDisplay{1.0f};        // tristimulus → linear display RGB, exposure included

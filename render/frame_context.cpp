@@ -11,7 +11,12 @@ FrameContext frameContext(const FrameSettings& settings, const Scene& scene, con
   c.observer = &observer(settings.observer);
   c.tristimulusObserver = settings.mode == RenderMode::Rgb ? &cie1931Observer() : c.observer;
   c.sceneColourSpace = &colourSpace(scene.colourSpace);
-  c.display = resolveDisplay(settings.display, *c.tristimulusObserver);
+  if (c.tristimulusObserver->isCamera) {
+    const Spectrum light = sceneEmission(scene, *c.sceneColourSpace, table);
+    c.display = resolveDisplay(settings.display, *c.tristimulusObserver, &light);
+  } else {
+    c.display = resolveDisplay(settings.display, *c.tristimulusObserver);
+  }
   c.wavelengths = wavelengths ? std::move(wavelengths)
                               : std::make_shared<const WavelengthSampler>(sceneWavelengthSampler(
                                     effectiveSampling(settings), *c.observer, scene, *c.sceneColourSpace, table));

@@ -29,7 +29,7 @@ struct Loaded {
   bool linear = false;
   imaging::DifferenceInput input() const {
     return linear ? imaging::linearInput(exr.image, exr.colour, exr.displayWhite.value_or(1.0))
-                  : imaging::srgb8Input(png);
+                  : imaging::png8Input(png);
   }
 };
 

@@ -10,6 +10,7 @@ imaging::PngImage displayPng(const render::Renderer& renderer) {
   const int width = renderer.settings().width, height = renderer.settings().height;
   std::vector<std::uint8_t> rgba = renderer.readDisplayRgba8();
   imaging::PngImage image(width, height, {});
+  image.setColourSpace(renderer.settings().display.colourSpace);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4;
@@ -24,6 +25,7 @@ imaging::PngImage displayImage(const imaging::FloatImage& tristimulus, const ren
   render::DisplayTransform transform =
       render::displayTransform(settings, render::resolveDisplay(settings, tristimulusObserver), sceneEv100);
   imaging::PngImage image(tristimulus.width, tristimulus.height, {});
+  image.setColourSpace(settings.colourSpace);
   auto byte = [](float v) { return static_cast<std::uint8_t>(std::lround(v * 255.0f)); };
   for (int y = 0; y < tristimulus.height; ++y) {
     for (int x = 0; x < tristimulus.width; ++x) {

@@ -25,11 +25,14 @@ struct PixelForms {
 // One input's pixels in the three forms of image_difference.h.
 class PixelReader {
  public:
-  explicit PixelReader(const DifferenceInput& input) : mInput(input), mSrgb(colourSpace("srgb")) {
+  explicit PixelReader(const DifferenceInput& input)
+      : mInput(input),
+        mSrgb(colourSpace("srgb")),
+        mDisplay(input.srgb8 ? colourSpace(input.srgb8->colourSpace()) : mSrgb) {
     PRISM_CHECK((input.srgb8 == nullptr) != (input.linear == nullptr));
     if (input.srgb8) {
-      // 256 entries through the exact IEC 61966-2-1 decode.
-      for (int v = 0; v < 256; ++v) mDecode[v] = mSrgb.decode(Eigen::Vector3d::Constant(v / 255.0)).x();
+      // 256 entries through the exact decode of the image's transfer.
+      for (int v = 0; v < 256; ++v) mDecode[v] = mDisplay.decode(Eigen::Vector3d::Constant(v / 255.0)).x();
       return;
     }
     if (input.colour != ColourMeaning::LinearSrgb && input.colour != ColourMeaning::Xyz)
@@ -47,11 +50,26 @@ class PixelReader {
     PixelForms p;
     if (mInput.srgb8) {
       Rgb8 v = mInput.srgb8->pixel(x, y);
-      p.srgb8 = {v.r, v.g, v.b};
-      p.linear = {mDecode[v.r], mDecode[v.g], mDecode[v.b]};
-      p.xyz = mSrgb.rgbToXyz * p.linear;
-      return p;
+      const Eigen::Vector3d decoded(mDecode[v.r], mDecode[v.g], mDecode[v.b]);
+      if (&mDisplay == &mSrgb) {
+        p.srgb8 = {v.r, v.g, v.b};
+        p.linear = decoded;
+        p.xyz = mSrgb.rgbToXyz * p.linear;
+        return p;
+      }
+      p.xyz = mDisplay.rgbToXyz * decoded;
+      p.linear = mSrgb.xyzToRgb * p.xyz;
+    } else {
+      fromLinear(p, x, y);
     }
+    Eigen::Vector3d encoded = mSrgb.encode(p.linear.cwiseMax(0.0).cwiseMin(1.0));
+    for (int c = 0; c < 3; ++c) p.srgb8[c] = static_cast<int>(std::lround(encoded[c] * 255.0));
+    return p;
+  }
+
+ private:
+  // A linear input's pixel, in XYZ and linear sRGB relative to white.
+  void fromLinear(PixelForms& p, int x, int y) const {
     const FloatImage& image = *mInput.linear;
     Eigen::Vector3d value(image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2));
     value /= mInput.whiteLuminance;
@@ -62,14 +80,11 @@ class PixelReader {
       p.linear = value;
       p.xyz = mSrgb.rgbToXyz * value;
     }
-    Eigen::Vector3d encoded = mSrgb.encode(p.linear.cwiseMax(0.0).cwiseMin(1.0));
-    for (int c = 0; c < 3; ++c) p.srgb8[c] = static_cast<int>(std::lround(encoded[c] * 255.0));
-    return p;
   }
 
- private:
   const DifferenceInput& mInput;
   const RgbColourSpace& mSrgb;
+  const RgbColourSpace& mDisplay;  // an 8-bit input's space
   std::array<double, 256> mDecode{};
 };
 

@@ -8,10 +8,10 @@
 //   XYZ / Y_white       for ΔE00 (CIELAB with the sRGB D65 white; no chromatic adaptation, so
 //                       XYZ input should already be relative to a D65-ish white)
 //   linear sRGB         for the relative error (white = 1; may be negative out of gamut)
-//   8-bit sRGB          for the MAE (raw bytes for 8-bit input; linear input clipped to [0, 1],
+//   8-bit sRGB          for the MAE (raw bytes for 8-bit sRGB input; other input clipped to [0, 1],
 //                       sRGB-encoded and rounded)
-// 8-bit input is decoded with the exact IEC 61966-2-1 transfer and the sRGB matrix; alpha is
-// ignored everywhere.
+// 8-bit input is decoded with its colour space's exact transfer and matrix (the PNG's own: sRGB,
+// Display P3 or Rec.2020); alpha is ignored everywhere.
 #pragma once
 
 #include <cstddef>
@@ -22,15 +22,15 @@
 
 namespace prism::imaging {
 
-// One side of a comparison: a view (the image must outlive the call). Make it with srgb8Input()
+// One side of a comparison: a view (the image must outlive the call). Make it with png8Input()
 // or linearInput().
 struct DifferenceInput {
-  const PngImage* srgb8 = nullptr;                   // 8-bit sRGB-encoded, or
+  const PngImage* srgb8 = nullptr;                   // 8-bit display-encoded (PngImage::colourSpace), or
   const FloatImage* linear = nullptr;                // a linear image with 3 or 4 channels, and then:
   ColourMeaning colour = ColourMeaning::LinearSrgb;  // LinearSrgb or Xyz (others are an Error)
   double whiteLuminance = 1.0;  // the value of white: Y_white for XYZ (e.g. in cd/m²), R=G=B for sRGB
 };
-inline DifferenceInput srgb8Input(const PngImage& image) { return {.srgb8 = &image}; }
+inline DifferenceInput png8Input(const PngImage& image) { return {.srgb8 = &image}; }
 inline DifferenceInput linearInput(const FloatImage& image, ColourMeaning colour,
                                    double whiteLuminance = 1.0) {
   return {.linear = &image, .colour = colour, .whiteLuminance = whiteLuminance};

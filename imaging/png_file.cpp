@@ -8,6 +8,9 @@
 #include <limits>
 #include <string>
 
+#include <fmt/format.h>
+#include <zlib.h>
+
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "imaging/image_file_bytes.h"
@@ -23,6 +26,54 @@
 #include <stb/stb_image_write.h>
 
 namespace prism::imaging {
+namespace {
+
+// The display spaces a PNG may be in and their ITU-T H.273 codes (colour primaries, transfer):
+// BT.709 with IEC 61966-2-1's curve, SMPTE EG 432-1 (P3, D65) with the same curve, BT.2020 with
+// its own (written as code 14; 1 and 15 name the same function).
+struct CicpSpace {
+  const char* name;
+  std::uint8_t primaries, transfer;
+};
+constexpr CicpSpace kCicpSpaces[] = {{"srgb", 1, 13}, {"display-p3", 12, 13}, {"rec2020", 9, 14}};
+
+std::uint32_t bigEndian32(const std::uint8_t* p) {
+  return static_cast<std::uint32_t>(p[0]) << 24 | static_cast<std::uint32_t>(p[1]) << 16 |
+         static_cast<std::uint32_t>(p[2]) << 8 | p[3];
+}
+
+// The name of the space the PNG's cICP chunk gives ("srgb" without one), found among the chunks
+// before the image data; Error naming the file for codes of another space.
+std::string cicpColourSpace(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
+  for (std::size_t at = 8; at + 12 <= bytes.size();) {
+    const std::uint32_t length = bigEndian32(&bytes[at]);
+    const std::uint8_t* type = &bytes[at + 4];
+    if (std::memcmp(type, "IDAT", 4) == 0 || length > bytes.size() - at - 12) break;
+    if (std::memcmp(type, "cICP", 4) == 0 && length == 4) {
+      const std::uint8_t primaries = bytes[at + 8], transfer = bytes[at + 9];
+      for (const CicpSpace& s : kCicpSpaces) {
+        const bool sameCurve = transfer == s.transfer || (s.primaries == 9 && (transfer == 1 || transfer == 15));
+        if (primaries == s.primaries && sameCurve && bytes[at + 10] == 0 && bytes[at + 11] == 1) return s.name;
+      }
+      throw Error(fmt::format("{}: cICP names colour primaries {}, transfer {}, matrix {}, full range {}: Prism reads "
+                              "sRGB (1, 13), Display P3 (12, 13) and Rec.2020 (9, 14) RGB at full range",
+                              path.string(), primaries, transfer, bytes[at + 10], bytes[at + 11]));
+    }
+    at += 12 + length;
+  }
+  return "srgb";
+}
+
+}  // namespace
+
+void PngImage::setColourSpace(const std::string& name) {
+  for (const CicpSpace& s : kCicpSpaces)
+    if (name == s.name) {
+      mColourSpace = name;
+      return;
+    }
+  throw Error(fmt::format("{}: no display encodes it; a PNG is in srgb, display-p3 or rec2020", name));
+}
 
 PngImage::PngImage(int width, int height, Rgb8 background)
     : mWidth(width),
@@ -94,6 +145,16 @@ void PngImage::write(const std::filesystem::path& path) const {
   };
   if (!stbi_write_png_to_func(append, &bytes, mWidth, mHeight, components, data, mWidth * components))
     throw Error(path.string() + ": PNG encoding failed");
+  // cICP after IHDR (8-byte signature, IHDR's 25 bytes): primaries, transfer, matrix 0 (RGB), full range.
+  for (const CicpSpace& s : kCicpSpaces)
+    if (mColourSpace == s.name) {
+      const std::uint8_t typeAndData[8] = {'c', 'I', 'C', 'P', s.primaries, s.transfer, 0, 1};
+      const auto crc = static_cast<std::uint32_t>(crc32(0L, typeAndData, sizeof typeAndData));
+      std::string chunk = {'\0', '\0', '\0', '\4'};
+      chunk.append(reinterpret_cast<const char*>(typeAndData), sizeof typeAndData);
+      for (int shift = 24; shift >= 0; shift -= 8) chunk.push_back(static_cast<char>((crc >> shift) & 0xFF));
+      bytes.insert(33, chunk);
+    }
   writeFileAtomically(path, bytes);
 }
 
@@ -144,6 +205,12 @@ PngImage readPng8(const std::filesystem::path& path) {
   // stb's reason may quote the file's bytes (an unknown chunk's type).
   if (!pixels) throw Error(path.string() + ": not a readable image: " + excerpt(stbi_failure_reason()));
   PngImage image;
+  try {
+    image.mColourSpace = cicpColourSpace(path, {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
+  } catch (...) {
+    stbi_image_free(pixels);
+    throw;
+  }
   image.mWidth = width;
   image.mHeight = height;
   image.mRgba.assign(pixels, pixels + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);

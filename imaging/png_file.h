@@ -1,7 +1,10 @@
-// 8-bit sRGB-encoded images as PNG files: reading (stb_image), writing atomically
+// 8-bit display-encoded images as PNG files: reading (stb_image), writing atomically
 // (stb_image_write), and simple drawing for charts, legends and galleries (rectangles, and
 // ASCII text in the stb_easy_font face). The stb implementations come compiled in Debian's
-// libstb, so no file here defines STB_*_IMPLEMENTATION.
+// libstb, so no file here defines STB_*_IMPLEMENTATION. An image is sRGB unless it says it is
+// Display P3 or Rec.2020: a written PNG carries its colour space in a cICP chunk (PNG third
+// edition; ITU-T H.273 codes), which viewers and `prism compare` read — an untagged P3 or
+// Rec.2020 file is shown as sRGB everywhere.
 #pragma once
 
 #include <cstdint>
@@ -41,6 +44,12 @@ class PngImage {
 
   const std::vector<std::uint8_t>& rgba() const { return mRgba; }
 
+  // The colour space its bytes encode: "srgb" (the default, and a file without cICP),
+  // "display-p3" or "rec2020" (spectral/colour_space.h's names). Error for any other: no display
+  // encodes it.
+  const std::string& colourSpace() const { return mColourSpace; }
+  void setColourSpace(const std::string& name);
+
  private:
   friend PngImage readPng8(const std::filesystem::path& path);
   std::size_t index(int x, int y) const {
@@ -49,14 +58,16 @@ class PngImage {
 
   int mWidth = 0, mHeight = 0;
   std::vector<std::uint8_t> mRgba;
+  std::string mColourSpace = "srgb";
 };
 
 // Width in pixels of `text` drawn by PngImage::drawText at `scale` (its widest line).
 int textWidth(std::string_view text, int scale);
 
-// A PNG of any bit depth (stb_image) as 8-bit RGBA; grey and RGB files come back opaque. Error
-// naming the file when it is missing, not a PNG (stb's other formats, TGA above all, have no
-// signature: any 17 bytes may claim a huge TGA), or fails checkPngBeforeDecoding.
+// A PNG of any bit depth (stb_image) as 8-bit RGBA; grey and RGB files come back opaque, with the
+// colour space its cICP chunk names (sRGB without one). Error naming the file when it is missing,
+// not a PNG (stb's other formats, TGA above all, have no signature: any 17 bytes may claim a huge
+// TGA), fails checkPngBeforeDecoding, or its cICP names a space Prism does not decode.
 PngImage readPng8(const std::filesystem::path& path);
 
 // The largest side Prism decodes (what `prism render` can write: its --width/--height limit).

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
 
 #include "core/error.h"
 
@@ -59,6 +60,45 @@ TEST(PngImage, ReadsBackWhatItWrote) {
   back = readPng8(tempPath("translucent.png"));
   EXPECT_EQ(back.rgba(), translucent.rgba());
   EXPECT_EQ(back.alpha(1, 0), 100);
+}
+
+// A P3 or Rec.2020 image says so in a cICP chunk (H.273 primaries, transfer, RGB, full range),
+// which reading gives back; an untagged file is sRGB. A space no display encodes is refused, and so
+// is a file whose cICP names codes Prism does not decode, with the file's name.
+TEST(PngImage, CarriesItsColourSpaceInCicp) {
+  struct Case {
+    const char* space;
+    char primaries, transfer;
+  };
+  for (const Case& c : {Case{"srgb", 1, 13}, Case{"display-p3", 12, 13}, Case{"rec2020", 9, 14}}) {
+    PngImage image(4, 2, {200, 100, 50});
+    image.setColourSpace(c.space);
+    const std::filesystem::path p = tempPath(std::string(c.space) + ".png");
+    image.write(p);
+    std::ifstream in(p, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string chunk = std::string("\0\0\0\4cICP", 8) + std::string{c.primaries, c.transfer, 0, 1};
+    EXPECT_EQ(bytes.substr(33, 12), chunk) << c.space;
+    const PngImage back = readPng8(p);
+    EXPECT_EQ(back.colourSpace(), c.space);
+    EXPECT_EQ(back.rgba(), image.rgba());
+  }
+  EXPECT_THROW(PngImage(1, 1, {}).setColourSpace("acescg"), Error);
+
+  const std::filesystem::path p = tempPath("display-p3.png"), odd = tempPath("pq.png");
+  std::string bytes;
+  {
+    std::ifstream in(p, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  bytes[42] = 16;  // transfer: SMPTE ST 2084 (PQ); the chunk's CRC is left as it was (not checked)
+  std::ofstream(odd, std::ios::binary) << bytes;
+  try {
+    readPng8(odd);
+    FAIL() << "expected an Error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(odd.string() + ": cICP names colour primaries 12, transfer 16", 0), 0u) << e.what();
+  }
 }
 
 TEST(PngImage, ReadErrorsNameTheFile) {

@@ -185,7 +185,7 @@ TEST_P(Golden, FrameStaysWithinDeltaE2000OfItsGolden) {
   }
   imaging::PngImage expected = imaging::readPng8(golden);
   imaging::DifferenceStats d =
-      imaging::compareImages(imaging::srgb8Input(expected), imaging::srgb8Input(image)).stats;
+      imaging::compareImages(imaging::png8Input(expected), imaging::png8Input(image)).stats;
   std::printf("%s: ΔE00 mean %.3f, p99 %.3f, max %.3f\n", name.c_str(), d.meanDeltaE,
               d.p99DeltaE, d.maxDeltaE);
   // Deterministic path (uniform wavelengths, no dither): only driver rounding may differ, and

@@ -158,6 +158,7 @@ void Viewer::writeWindowPng(const std::filesystem::path& path, int width, int he
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   imaging::PngImage image(width, height, {});
+  image.setColourSpace(mView.left.display.colourSpace);  // the (left) view's display space, as the window shows it
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const std::uint8_t* p = &rgba[(static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(width) +

@@ -156,6 +156,8 @@ void Renderer::sceneChanged() {
     mShadows = makeShadows(mScene, mSettings.shadowMapSize);
   }
   mContext = std::move(context);
+  // A camera's matrix is fitted under the lights (resolveDisplay): the display follows them too.
+  mDisplayTransform = displayTransform(mSettings.display, mContext.display, mCamera.ev100);
   mAccumulated = 0;
 }
 

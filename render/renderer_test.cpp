@@ -322,6 +322,29 @@ TEST(Renderer, LightsStrategyFollowsTheLightsWhenTheSceneChanges) {
   EXPECT_GE(near(620.0), 12);
 }
 
+// A camera's matrix is fitted under the scene's lights (display_transform_test.cpp): when they
+// change, the display follows. Under the blue LED a D65 matrix showed the camera's image black.
+TEST(Renderer, ACameraImageFollowsTheLightsWhenTheSceneChanges) {
+  gpu::HeadlessContext context;
+  Scene scene = loadScene(kScenes / "spheres_d65.json");
+  FrameSettings settings = smallFrame(RenderMode::JakobHanika, 16);
+  settings.observer = "nikon_d850";
+  Renderer renderer(scene, cachedTestTable(), settings);
+  auto meanBlue = [&] {
+    renderer.renderFrame();
+    const std::vector<std::uint8_t> rgba = renderer.readDisplayRgba8();
+    double sum = 0.0;
+    for (std::size_t i = 2; i < rgba.size(); i += 4) sum += rgba[i];
+    return sum / static_cast<double>(rgba.size() / 4);
+  };
+  const double underD65 = meanBlue();
+  scene.lights[0].spd = normalisedLightSpectrum(illuminant("led:450:20"));
+  renderer.sceneChanged();
+  const double underBlue = meanBlue();
+  std::printf("camera image, mean blue: D65 %.1f, blue LED %.1f\n", underD65, underBlue);
+  EXPECT_GT(underBlue, underD65);  // the blue LED lights the scene blue (a D65 matrix: 0.1)
+}
+
 TEST(Renderer, ForwardPassAddsLightGizmosWhereTheGBufferDoesNotHideThem) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kScenes / "textured_gltf.json");

@@ -515,6 +515,21 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   Result render = run("nebula render " + tiny + " --method projection --steps 10 -o " + (dir / "tiny.png").string());
   ASSERT_EQ(render.exitCode, 0) << render.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "tiny.png"));
+  EXPECT_EQ(render.err.find("warning"), std::string::npos) << render.err;  // its star lights the cloud from within
+  // Lit from behind through thick dust, projection's light lies beyond its basis: one line says so
+  // (nebula_basis_coverage.h), and a basis fitted deeper, as it advises, says nothing.
+  std::ofstream(dir / "backlit.json") << R"({"nebula": {"density": {"noise": {"resolution": 8, "bias": 0.8}},
+    "extinction": 25, "emission": 0, "stars": [{"position": [0.5, 0.5, 1.4], "temperature": 9000}],
+    "camera": {"width": 8, "height": 8}}})";
+  const std::string backlit = (dir / "backlit.json").string();
+  Result shallow = run("nebula render " + backlit + " --method projection --steps 20 -o " + (dir / "backlit.exr").string());
+  ASSERT_EQ(shallow.exitCode, 0) << shallow.err;
+  EXPECT_NE(shallow.err.find("prism: warning: up to 100 % of a pixel's star light reaches the camera through more dust "
+                             "than the basis is fitted for"), std::string::npos) << shallow.err;
+  Result deep = run("nebula render " + backlit + " --method projection --steps 20 --basis 6 --basis-depth 16 -o " +
+                    (dir / "backlit.exr").string());
+  ASSERT_EQ(deep.exitCode, 0) << deep.err;
+  EXPECT_EQ(deep.err.find("warning"), std::string::npos) << deep.err;
   expectOneLineError("nebula render " + tiny + " --method spline -o x.png", "unknown nebula method 'spline'");
   expectOneLineError("nebula render " + tiny + " -o x.jpg", "x.jpg: the output must be .exr or .png");
   expectOneLineError("nebula render " + (dir / "bad.json").string() + " -o x.png", "bad.json: /nebula/stars/0/position");

@@ -56,18 +56,6 @@ nebula::NebulaScene generateWithProgress(nebula::NebulaSceneFile file, unsigned 
   });
 }
 
-// One line on stderr when some pixel gathers more than 1 % of its star light through more dust than
-// the basis was fitted for (nebula_basis_coverage.h): its error there is not the README's.
-void warnBeyondBasis(const nebula::BasisCoverage& coverage, const nebula::RenderSettings& s) {
-  if (coverage.worstShare <= 0.01) return;
-  fmt::print(stderr,
-             "prism: warning: up to {:.0f} % of a pixel's star light reaches the camera through more dust than the "
-             "basis is fitted for (optical depth up to {:.1f} µm, the basis {:g} µm): the {} method's error there can "
-             "exceed 2 % by far; --basis-depth {:.0f} --basis 6 fits deeper, --method analytic integrates exactly\n",
-             100.0 * coverage.worstShare, coverage.deepestUm, s.basisMaxDepthUm, nebula::methodName(s.method),
-             std::min(std::ceil(coverage.deepestUm), nebula::kMaxBasisDepthUm));
-}
-
 void requireFilterSet(const std::string& filters) {
   if (!filters.empty() && filters != "hubble" && filters != "cie1931")
     throw Error(fmt::format("--filters: '{}' is not hubble or cie1931", excerpt(filters)));
@@ -283,7 +271,10 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   auto t0 = std::chrono::steady_clock::now();
   nebula::NebulaRenderer renderer(std::move(scene.model), s, [&bar](std::size_t d, std::size_t n) { bar.update(d, n); });
   auto t1 = std::chrono::steady_clock::now();
-  warnBeyondBasis(nebula::basisCoverage(renderer, s), s);
+  if (const std::string warning = nebula::basisCoverageWarning(nebula::basisCoverage(renderer, s, renderer.model().camera), s,
+                                                                "--basis-depth {:.0f} --basis 6");
+      !warning.empty())
+    fmt::print(stderr, "prism: warning: {}\n", warning);
   nebula::NebulaImage image;
   if (o.gpu) {
     nebula::NebulaGpuMarcher marcher(renderer);

@@ -101,6 +101,33 @@ void expectTwins(const Frame& f, const char* what) {
   EXPECT_LE(ratio, 1.0);
 }
 
+// A scene's nebula lit from behind through thick dust sends its light beyond the projection
+// basis (nebula_basis_coverage.h): its precomputation says so in one line naming the scene, and
+// says nothing once the section's basis is fitted as deep as it advises. No GPU: the precomputation
+// is the CPU's.
+TEST(NebulaPass, ThePrecomputationWarnsOfLightBeyondTheBasis) {
+  auto warning = [](const std::string& basis) {
+    const std::string json = fmt::format(R"json({{
+  "camera": {{"position": [0, 0, -6], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 40}},
+  "materials": {{}}, "lights": [], "objects": [],
+  "nebula": {{
+    "density": {{"noise": {{"resolution": 16, "seed": 7, "bias": 0.8}}}}, "extinction": 25, "scattering": 1, "emission": 0,
+    "stars": [{{"position": [0.5, 0.5, 1.4], "temperature": 12000}}], "filters": "cie1931",
+    "box": {{"min": [-2, -2, -2], "size": 4}}, "method": "projection"{}
+  }}
+}})json", basis);
+    const Scene scene = loadScene(writeTempFile("nebula_backlit.json", json));
+    ::testing::internal::CaptureStderr();
+    nebula::NebulaPass::precompute(scene, {});
+    return ::testing::internal::GetCapturedStderr();
+  };
+  const std::string shallow = warning("");
+  EXPECT_NE(shallow.find("nebula_backlit.json: /nebula: up to 100 % of a pixel's star light"), std::string::npos) << shallow;
+  EXPECT_NE(shallow.find("\"basis_depth\": "), std::string::npos) << shallow;
+  const std::string deep = warning(R"(, "basis": 6, "basis_depth": 16)");
+  EXPECT_EQ(deep.find("warning"), std::string::npos) << deep;
+}
+
 TEST(NebulaPass, TheFramesNebulaIsTheCpuMarchersFromTheSameCamera) {
   gpu::HeadlessContext context;
   for (const char* method : {"projection", "light-density"}) {

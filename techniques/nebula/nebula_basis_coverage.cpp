@@ -4,17 +4,18 @@
 #include <cmath>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "techniques/nebula/nebula_integrals.h"
 #include "techniques/nebula/nebula_precomputed.h"
 
 namespace prism::nebula {
 
-BasisCoverage basisCoverage(const NebulaRenderer& renderer, const RenderSettings& s, int rays) {
+BasisCoverage basisCoverage(const NebulaRenderer& renderer, const RenderSettings& s, const NebulaCamera& cam, int rays) {
   BasisCoverage coverage;
   if (s.method != Method::Projection) return coverage;
   const NebulaPrecomputed& pre = renderer.precomputed();
   const NebulaModel& m = pre.model;
-  const NebulaCamera& cam = m.camera;
   const NebulaViewFrame frame = viewFrame(cam);
   const double tanHalf = std::tan(cam.fovYDeg * std::numbers::pi / 360.0);
   const double aspect = static_cast<double>(cam.width) / cam.height;
@@ -56,6 +57,16 @@ BasisCoverage basisCoverage(const NebulaRenderer& renderer, const RenderSettings
   for (std::size_t r = 0; r < total.size(); ++r)
     if (brightest > 0.0 && total[r] >= 0.01 * brightest) coverage.worstShare = std::max(coverage.worstShare, beyond[r] / total[r]);
   return coverage;
+}
+
+std::string basisCoverageWarning(const BasisCoverage& coverage, const RenderSettings& s, std::string_view deeperBasisFormat) {
+  if (coverage.worstShare <= 0.01) return "";
+  const double depth = std::min(std::ceil(coverage.deepestUm), kMaxBasisDepthUm);
+  return fmt::format("up to {:.0f} % of a pixel's star light reaches the camera through more dust than the basis is "
+                     "fitted for (optical depth up to {:.1f} µm, the basis {:g} µm): the {} method's error there can "
+                     "exceed 2 % by far; {} fits deeper, method analytic integrates exactly",
+                     100.0 * coverage.worstShare, coverage.deepestUm, s.basisMaxDepthUm, methodName(s.method),
+                     fmt::format(fmt::runtime(deeperBasisFormat), depth));
 }
 
 }  // namespace prism::nebula

@@ -6,6 +6,9 @@
 // reach. The renderer cannot tell from its image; this coarse march tells before a render.
 #pragma once
 
+#include <string>
+#include <string_view>
+
 #include "techniques/nebula/nebula_render.h"
 
 namespace prism::nebula {
@@ -15,12 +18,20 @@ struct BasisCoverage {
   double deepestUm = 0.0;   // the deepest x = g + g_s at which any sampled ray gathers star light
 };
 
-// Over at most rays × rays of the model camera's pixels (evenly spread), marched as settings
+// Over at most rays × rays of `camera`'s pixels (evenly spread; in the cube's units), marched as settings
 // march: each sample's star light weighted by its band integral ∫ e^(−x/λ) dλ, and the share of it
 // at x beyond the family. Rays with less than 1 % of the brightest ray's star light are left out,
 // as maxRelativeError leaves out such pixels. Other methods: nothing beyond. (Light–density's 2D
 // basis is fitted over the same depths, but widening them does not lower its error behind thick
 // dust — README, "Spectral nebulae" — so this does not speak for it.)
-BasisCoverage basisCoverage(const NebulaRenderer& renderer, const RenderSettings& settings, int rays = 32);
+BasisCoverage basisCoverage(const NebulaRenderer& renderer, const RenderSettings& settings, const NebulaCamera& camera,
+                            int rays = 32);
+
+// One line for stderr when some ray gathers more than 1 % of its star light beyond the basis
+// ("" otherwise): how much, how deep, and what fits it (a deeper basis, or the analytic method).
+// `deeperBasis` names the way to ask for one where the user is ("--basis-depth 12 --basis 6", or
+// the scene's keys).
+std::string basisCoverageWarning(const BasisCoverage& coverage, const RenderSettings& settings,
+                                 std::string_view deeperBasisFormat);
 
 }  // namespace prism::nebula

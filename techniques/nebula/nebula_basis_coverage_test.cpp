@@ -33,7 +33,7 @@ TEST(NebulaBasisCoverage, AStarInsideTheCloudStaysWithinTheBasis) {
   NebulaModel m = smallCloud("cie1931", 1);
   const RenderSettings s = projection(4, 2.0);
   NebulaRenderer renderer(std::move(m), s);
-  const BasisCoverage coverage = basisCoverage(renderer, s);
+  const BasisCoverage coverage = basisCoverage(renderer, s, renderer.model().camera);
   std::printf("star inside: share beyond %.4f, deepest %.2f µm\n", coverage.worstShare, coverage.deepestUm);
   EXPECT_LE(coverage.worstShare, 0.01);
 }
@@ -44,11 +44,11 @@ TEST(NebulaBasisCoverage, AThickCloudLitFromBehindNeedsADeeperBasis) {
   m.stars[0].position = glm::dvec3(0.5, 0.5, 1.4);  // behind the cube, the camera before it
   const RenderSettings shallow = projection(4, 2.0);
   const NebulaRenderer renderer(NebulaModel(m), shallow);
-  const BasisCoverage coverage = basisCoverage(renderer, shallow);
+  const BasisCoverage coverage = basisCoverage(renderer, shallow, renderer.model().camera);
   const double shallowError = errorAgainstTheReference(renderer, shallow);
   const RenderSettings deep = projection(6, std::ceil(coverage.deepestUm));
   const NebulaRenderer deeper(std::move(m), deep);
-  const BasisCoverage deepCoverage = basisCoverage(deeper, deep);
+  const BasisCoverage deepCoverage = basisCoverage(deeper, deep, deeper.model().camera);
   const double deepError = errorAgainstTheReference(deeper, deep);
   std::printf("lit from behind: share beyond %.3f, deepest %.2f µm, error %.4f; basis 6 to %.0f µm: share %.3f, error %.4f\n",
               coverage.worstShare, coverage.deepestUm, shallowError, deep.basisMaxDepthUm, deepCoverage.worstShare, deepError);

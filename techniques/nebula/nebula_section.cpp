@@ -121,6 +121,7 @@ RenderSettings NebulaSection::renderSettings() const {
   s.method = method;
   s.steps = steps;
   s.basisSize = basis;
+  s.basisMaxDepthUm = basisDepthUm;
   s.uniformSamples = referenceSamples;
   return s;
 }
@@ -134,11 +135,11 @@ std::string NebulaSection::precomputationKey() const {
 std::string NebulaSection::volumeKey() const {
   const NebulaModel& m = model;
   const glm::ivec3 size = density->size();
-  std::string key = fmt::format("{}|{}x{}x{}|{}|{}|{}|{},{},{},{}|{}|{}|", source.file.string(), size.x, size.y,
+  std::string key = fmt::format("{}|{}x{}x{}|{}|{}|{}|{},{},{},{}|{}|{}|{}|", source.file.string(), size.x, size.y,
                                 size.z, m.extinction, m.scattering, m.emission,
                                 m.scatteringSpectrum.coeffs[0], m.scatteringSpectrum.coeffs[1],
                                 m.scatteringSpectrum.coeffs[2], m.scatteringSpectrum.coeffs[3],
-                                static_cast<int>(m.starModel), basis);
+                                static_cast<int>(m.starModel), basis, basisDepthUm);
   if (source.noise) {
     const NoiseParameters& p = *source.noise;
     key += fmt::format("noise {} {} {} {} {} {} {}|", p.resolution, p.octaves, p.frequency, p.amplitude, p.gain, p.bias,
@@ -158,7 +159,7 @@ void NebulaSection::regenerateDensity() {
 std::unique_ptr<TechniqueSection> NebulaSection::parse(const schema::Node& n, const TechniqueSections&) {
   using schema::Range;
   n.expectObject({"density", "extinction", "scattering", "scattering_spectrum", "emission", "lines", "ionisation", "stars",
-                  "star_model", "filters", "passbands", "steps", "box", "method", "basis", "reference_samples", "intensity", "march_every_frame",
+                  "star_model", "filters", "passbands", "steps", "box", "method", "basis", "basis_depth", "reference_samples", "intensity", "march_every_frame",
                   "light_surfaces"});
   auto s = std::make_unique<NebulaSection>();
   s->source = readNebulaKeys(n, s->model, s->steps);
@@ -182,6 +183,7 @@ std::unique_ptr<TechniqueSection> NebulaSection::parse(const schema::Node& n, co
     }
   }
   if (n.has("basis")) s->basis = n.child("basis").integer(Range::closed(1, kMaxBasisSize));
+  s->basisDepthUm = n.number("basis_depth", s->basisDepthUm, Range{0.0, kMaxBasisDepthUm, true, false});
   if (auto r = n.optionalChild("reference_samples")) {
     s->referenceSamples = r->integer(Range::closed(0, kMaxUniformSamples));
     if (s->referenceSamples == 1) r->fail("must be 0 (Simpson over each passband piece) or at least 2 wavelengths a channel");

@@ -38,7 +38,8 @@ struct NebulaSection final : TechniqueSection {
   DensitySource source;
   int steps = 100;
   Method method = Method::Projection;  // any of the five, all marched on the GPU
-  int basis = 4;                       // card(B), 1..8
+  int basis = 4;                       // card(B), 1..6
+  double basisDepthUm = 2.0;           // the basis's family: e^(−g/λ) for g up to this (µm), (0, 16]
   // The reference's wavelengths: 0, composite Simpson over each passband piece (the ground
   // truth); n, n per channel by the trapezoid rule (7: the paper's baseline, 21 a step).
   int referenceSamples = 0;

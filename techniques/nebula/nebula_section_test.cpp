@@ -24,7 +24,7 @@ const std::string kNoise = R"("density": {"noise": {"resolution": 8}}, "stars": 
 
 TEST(NebulaSection, ReadsTheModelAndWhereItLies) {
   auto parsed = parseSection("{" + kNoise + R"(, "box": {"min": [-2, 0, 1], "size": 4}, "method": "light-density",
-                                              "basis": 5, "reference_samples": 7, "intensity": 250, "steps": 80})");
+                                              "basis": 5, "basis_depth": 6, "reference_samples": 7, "intensity": 250, "steps": 80})");
   const auto& s = dynamic_cast<const NebulaSection&>(*parsed);
   EXPECT_EQ(s.density->size(), glm::ivec3(8));
   EXPECT_EQ(s.model.density.values.size(), 0u);  // the section holds it once, in `density`
@@ -34,6 +34,7 @@ TEST(NebulaSection, ReadsTheModelAndWhereItLies) {
   EXPECT_EQ(s.boxSize, 4.0f);
   EXPECT_EQ(s.method, Method::LightDensity);
   EXPECT_EQ(s.renderSettings().basisSize, 5);
+  EXPECT_EQ(s.renderSettings().basisMaxDepthUm, 6.0);
   EXPECT_EQ(s.renderSettings().uniformSamples, 7);
   EXPECT_EQ(s.renderSettings().steps, 80);
   EXPECT_EQ(s.intensity, 250.0f);
@@ -88,6 +89,7 @@ TEST(NebulaSection, BadValuesNameTheirPlace) {
             "light-density, pre-integration)");
   EXPECT_EQ(error(R"("box": {"size": 0})"), "scene.json: /nebula/box/size: expected a number in (0, 1000000), got 0");
   EXPECT_EQ(error(R"("basis": 7)"), "scene.json: /nebula/basis: expected an integer in [1, 6], got 7");
+  EXPECT_EQ(error(R"("basis_depth": 17)"), "scene.json: /nebula/basis_depth: expected a number in (0, 16], got 17");
   EXPECT_EQ(error(R"("reference_samples": 1)"),
             "scene.json: /nebula/reference_samples: must be 0 (Simpson over each passband piece) or at least 2 "
             "wavelengths a channel");

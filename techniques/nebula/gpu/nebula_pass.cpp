@@ -8,6 +8,7 @@
 #include "core/data_files.h"
 #include "core/error.h"
 #include "spectral/colour_space.h"
+#include "techniques/nebula/nebula_basis_coverage.h"
 #include "techniques/nebula/nebula_cpu_twin.h"
 
 namespace prism::nebula {
@@ -36,6 +37,7 @@ std::shared_ptr<const NebulaRenderer> precomputation(const NebulaSection& sectio
   }
   RenderSettings basis;
   basis.basisSize = section.basis;
+  basis.basisMaxDepthUm = section.basisDepthUm;
   const auto start = std::chrono::steady_clock::now();
   section.density->grid([&](std::size_t done, std::size_t total) {
     if (progress) progress("nebula density", done, total);
@@ -96,7 +98,20 @@ glm::mat3 channelsToXyz(const NebulaSection& section) {
 NebulaPass::NebulaPass() : mComposite(compositeProgram()), mEmpty(gpu::VertexArray::attributeless()) {}
 
 void NebulaPass::precompute(const Scene& scene, const TechniqueProgress& progress) {
-  precomputation(sectionOf(scene), progress);
+  const NebulaSection& section = sectionOf(scene);
+  std::shared_ptr<const NebulaRenderer> renderer = precomputation(section, progress);
+  // What the scene's camera sees of light beyond the projection basis (its view as it starts: a
+  // square of 32 × 32 rays in the cube, at the camera's vertical field of view).
+  NebulaCamera camera;
+  camera.position = glm::dvec3((scene.camera.position - section.boxMin) / section.boxSize);
+  camera.target = glm::dvec3((scene.camera.target - section.boxMin) / section.boxSize);
+  camera.fovYDeg = scene.camera.verticalFovDeg;
+  camera.width = camera.height = 32;
+  const RenderSettings settings = section.renderSettings();
+  if (const std::string warning = basisCoverageWarning(basisCoverage(*renderer, settings, camera), settings,
+                                                       "\"basis_depth\": {:.0f} and \"basis\": 6");
+      !warning.empty())
+    fmt::print(stderr, "prism: warning: {}: /nebula: {}\n", scene.file.string(), warning);
 }
 
 void NebulaPass::requireFits(const Scene& scene) {

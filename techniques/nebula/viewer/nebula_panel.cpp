@@ -160,6 +160,7 @@ class NebulaPanel final : public Panel {
       changed = true;
     }
     changed |= mEdits.slider("basis size", s.basis, 1, nebula::kMaxBasisSize);
+    changed |= mEdits.slider("basis depth (µm)", s.basisDepthUm, 0.5f, static_cast<float>(nebula::kMaxBasisDepthUm), "%.1f");
     changed |= mEdits.slider("steps", s.steps, 10, 400);
     changed |= stringCombo("filters", s.model.filters, {"hubble", "cie1931"});
     if (ImGui::TreeNode("passbands")) {

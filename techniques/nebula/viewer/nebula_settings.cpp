@@ -85,7 +85,7 @@ bool setStarKey(nebula::NebulaSection& s, const std::string& key, const std::str
 }  // namespace
 
 bool setNebulaKey(Scene& scene, const std::string& key, const std::string& value) {
-  static const char* const kKeys[] = {"nebula.method",     "nebula.basis",      "nebula.steps",
+  static const char* const kKeys[] = {"nebula.method",     "nebula.basis",      "nebula.basis_depth", "nebula.steps",
                                       "nebula.filters",    "nebula.intensity",  "nebula.extinction",
                                       "nebula.scattering", "nebula.emission",   "nebula.ionisation",
                                       "nebula.ionisation.front_radius",         "nebula.ionisation.front_width",
@@ -105,6 +105,11 @@ bool setNebulaKey(Scene& scene, const std::string& key, const std::string& value
     }
   } else if (key == "nebula.basis") {
     s->basis = static_cast<int>(render::parseInteger(key, value, 1, nebula::kMaxBasisSize));
+  } else if (key == "nebula.basis_depth") {
+    const double v = render::parseNumber(key, value);
+    if (!(v > 0.0 && v <= nebula::kMaxBasisDepthUm))
+      throw Error(fmt::format("{}: expected a depth in (0, {:g}] µm, got {}", key, nebula::kMaxBasisDepthUm, excerpt(value)));
+    s->basisDepthUm = v;
   } else if (key == "nebula.steps") {
     s->steps = static_cast<int>(render::parseInteger(key, value, 1, nebula::kMaxSteps));
   } else if (key == "nebula.filters") {

@@ -28,6 +28,7 @@ TEST(NebulaSetKeys, ChangeTheSectionAndRefuseBadValues) {
   EXPECT_TRUE(setNebulaKey(scene, "nebula.method", "reference"));
   EXPECT_TRUE(setNebulaKey(scene, "nebula.basis", "6"));
   EXPECT_TRUE(setNebulaKey(scene, "nebula.steps", "150"));
+  EXPECT_TRUE(setNebulaKey(scene, "nebula.basis_depth", "9.5"));
   EXPECT_TRUE(setNebulaKey(scene, "nebula.filters", "cie1931"));
   EXPECT_TRUE(setNebulaKey(scene, "nebula.intensity", "300"));
   EXPECT_TRUE(setNebulaKey(scene, "nebula.extinction", "2.5"));
@@ -37,6 +38,7 @@ TEST(NebulaSetKeys, ChangeTheSectionAndRefuseBadValues) {
   EXPECT_EQ(s->method, nebula::Method::Reference);
   EXPECT_EQ(s->basis, 6);
   EXPECT_EQ(s->steps, 150);
+  EXPECT_DOUBLE_EQ(s->renderSettings().basisMaxDepthUm, 9.5);
   EXPECT_EQ(s->model.filters, "cie1931");
   EXPECT_FLOAT_EQ(s->intensity, 300.0f);
   EXPECT_DOUBLE_EQ(s->model.extinction, 2.5);
@@ -48,6 +50,7 @@ TEST(NebulaSetKeys, ChangeTheSectionAndRefuseBadValues) {
             "nebula.method: unknown nebula method 'spline' (reference, analytic, projection, light-density, "
             "pre-integration)");
   EXPECT_NE(nebulaKeyError(scene, "nebula.basis", "9"), "");
+  EXPECT_EQ(nebulaKeyError(scene, "nebula.basis_depth", "0"), "nebula.basis_depth: expected a depth in (0, 16] µm, got 0");
   EXPECT_EQ(nebulaKeyError(scene, "nebula.filters", "jwst"), "nebula.filters: expected hubble or cie1931, got 'jwst'");
   EXPECT_EQ(nebulaKeyError(scene, "nebula.intensity", "-1"), "nebula.intensity: expected a number ≥ 0, got -1");
   EXPECT_EQ(nebulaKeyError(scene, "nebula.star.1.temperature", "5000"), "nebula.star.1.temperature: the nebula has 1 star(s)");

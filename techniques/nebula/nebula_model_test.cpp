@@ -81,7 +81,7 @@ TEST(NebulaSpectra, CcmScatteringIsACubicThroughTheMeasuredCurve) {
 }
 
 TEST(NebulaSpectra, StarFitAndNormalisation) {
-  for (double t : {3000.0, 5800.0, 10000.0, 30000.0}) {
+  for (double t : {3000.0, 5800.0, 10000.0, 30000.0, 42000.0, 50000.0}) {  // 42 000 K: ionised.json's hottest
     StarSpectrum s = makeStarSpectrum(t, StarModel::Planck);
     std::printf("star %.0f K: P_L (degree 5) max relative error %.2e\n", t, s.fitMaxRelativeError);
     EXPECT_LT(s.fitMaxRelativeError, 1e-3);

@@ -420,6 +420,10 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("compare " + a + " " + (dir / "nope.exr").string(), "nope.exr");
   expectOneLineError("compare " + a + " " + (dir / "b.exr").string(), "reference 4 × 3, test 5 × 3");
   expectOneLineError("compare " + a + " " + (dir / "cam.exr").string(), "camera-rgb");
+  prism::imaging::writeExr(dir / "xyz10.exr", small, {.colour = prism::imaging::ColourMeaning::Xyz1964});
+  expectOneLineError("compare " + a + " " + (dir / "xyz10.exr").string(),
+                     "xyz10.exr: holds xyz-1964 values; compare takes CIE 1931 XYZ or linear sRGB (render with "
+                     "--observer cie1931 to compare them)");
   // A lone Y channel is read (the reader's own refusal names it as readable) but is no colour.
   prism::imaging::writeExr(dir / "y.exr", prism::imaging::FloatImage(4, 3, 1, 0.5f),
                            {.colour = prism::imaging::ColourMeaning::Xyz});

@@ -120,8 +120,7 @@ void checkReferenceOutputs(const std::filesystem::path& output, const std::files
 
 void writeReferenceImage(const reference::ReferenceImage& image, const std::string& observerName, float ev100,
                          const std::filesystem::path& output, const std::filesystem::path& variance) {
-  const bool camera = observer(observerName).isCamera;
-  imaging::ExrWriteOptions exr{camera ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,
+  imaging::ExrWriteOptions exr{imaging::tristimulusMeaning(observer(observerName)),
                                imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour,
                                render::displayWhiteLuminance(ev100)};
   imaging::requireFiniteOutput(image.tristimulus, output.string());

@@ -65,9 +65,8 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
     harness::displayPng(renderer).write(output);
     return;
   }
-  bool camera = settings.mode != render::RenderMode::Rgb && observer(settings.observer).isCamera;
   imaging::writeExr(output, image,
-                    {camera ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,
+                    {imaging::tristimulusMeaning(*renderer.context().tristimulusObserver),
                      imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour,
                      render::displayWhiteLuminance(settings.display.ev100.value_or(scene.camera.ev100))});
 }

@@ -166,8 +166,7 @@ void writeReferencePart(const std::filesystem::path& path, const ReferencePartHe
       {"prism:ev100", fmt::format("{}", h.ev100)},
       {"prism:samples", fmt::format("{}:{}", h.region.sampleBegin, h.region.sampleEnd)},
       {"prism:sampleCount", std::to_string(h.region.samples())},
-      {"prism:colour", std::string(imaging::colourMeaningName(isCamera(h.observer) ? imaging::ColourMeaning::CameraRgb
-                                                                                   : imaging::ColourMeaning::Xyz))},
+      {"prism:colour", std::string(imaging::colourMeaningName(imaging::tristimulusMeaning(observer(h.observer))))},
   };
   const std::vector<std::string> names = colourNames(h.observer);
   auto addPlanes = [&](const imaging::FloatImage& planes, const std::string& prefix) {

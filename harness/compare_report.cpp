@@ -40,8 +40,8 @@ Loaded load(const std::filesystem::path& path, const std::optional<double>& whit
     l.linear = true;
     l.exr = imaging::readExr(path);
     if (l.exr.colour != imaging::ColourMeaning::Xyz && l.exr.colour != imaging::ColourMeaning::LinearSrgb) {
-      throw Error(fmt::format("{}: holds {} values; compare takes XYZ or linear sRGB (render camera "
-                              "images with a CIE observer to compare them)",
+      throw Error(fmt::format("{}: holds {} values; compare takes CIE 1931 XYZ or linear sRGB (render with "
+                              "--observer cie1931 to compare them)",
                               path.string(), imaging::colourMeaningName(l.exr.colour)));
     }
     // A reference render's part: a band of rows (the rest of the image left out), or some of each

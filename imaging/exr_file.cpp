@@ -53,7 +53,8 @@ bool sameChromaticities(const Imf::Chromaticities& a, const Imf::Chromaticities&
 std::vector<std::string> channelNamesToWrite(const FloatImage& image, const ExrWriteOptions& options) {
   if (image.channels == 1) return {"Y"};
   bool xyz = options.names == ExrChannelNames::Xyz ||
-             (options.names == ExrChannelNames::FromColour && options.colour == ColourMeaning::Xyz);
+             (options.names == ExrChannelNames::FromColour &&
+              (options.colour == ColourMeaning::Xyz || options.colour == ColourMeaning::Xyz1964));
   std::vector<std::string> names =
       xyz ? std::vector<std::string>{"X", "Y", "Z"} : std::vector<std::string>{"R", "G", "B"};
   if (image.channels == 4) names.push_back("A");

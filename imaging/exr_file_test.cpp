@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "spectral/observer.h"
 
 namespace prism::imaging {
 namespace {
@@ -97,11 +98,19 @@ TEST_F(Exr, TheDisplayWhiteTravelsWithTheImage) {
 TEST_F(Exr, ChannelNamesAndMeaningsRoundTrip) {
   std::filesystem::path dir = freshDir("meanings");
   FloatImage image = ramp(3, 2, 3);
-  for (ColourMeaning colour : {ColourMeaning::LinearSrgb, ColourMeaning::Xyz, ColourMeaning::CameraRgb}) {
+  for (ColourMeaning colour :
+       {ColourMeaning::LinearSrgb, ColourMeaning::Xyz, ColourMeaning::Xyz1964, ColourMeaning::CameraRgb}) {
     std::filesystem::path p = dir / (std::string(colourMeaningName(colour)) + ".exr");
     writeExr(p, image, {.colour = colour, .names = ExrChannelNames::Rgb});
     EXPECT_EQ(readExr(p).colour, colour) << colourMeaningName(colour);
   }
+  // CIE 1964's tristimulus is named X, Y, Z like 1931's and told apart by its meaning; each
+  // observer's images say which they hold (a 1964 render was written as "xyz").
+  writeExr(dir / "xyz10.exr", image, {.colour = ColourMeaning::Xyz1964});
+  EXPECT_EQ(readExr(dir / "xyz10.exr").colour, ColourMeaning::Xyz1964);
+  EXPECT_EQ(tristimulusMeaning(observer("cie1931")), ColourMeaning::Xyz);
+  EXPECT_EQ(tristimulusMeaning(observer("cie1964")), ColourMeaning::Xyz1964);
+  EXPECT_EQ(tristimulusMeaning(observer("nikon_d850")), ColourMeaning::CameraRgb);
   FloatImage map = ramp(4, 4, 1);
   writeExr(dir / "map.exr", map);
   ExrImage back = readExr(dir / "map.exr");

@@ -15,6 +15,7 @@ struct NamedMeaning {
 constexpr NamedMeaning kMeanings[] = {
     {ColourMeaning::LinearSrgb, "linear-srgb"},
     {ColourMeaning::Xyz, "xyz"},
+    {ColourMeaning::Xyz1964, "xyz-1964"},
     {ColourMeaning::CameraRgb, "camera-rgb"},
     {ColourMeaning::OtherRgb, "other-rgb"},
 };
@@ -32,7 +33,12 @@ ColourMeaning colourMeaningFromName(std::string_view name) {
   for (const NamedMeaning& m : kMeanings)
     if (m.name == name) return m.colour;
   throw Error("unknown colour meaning '" + std::string(name) +
-              "' (known: linear-srgb, xyz, camera-rgb, other-rgb)");
+              "' (known: linear-srgb, xyz, xyz-1964, camera-rgb, other-rgb)");
+}
+
+ColourMeaning tristimulusMeaning(const Observer& observer) {
+  if (observer.isCamera) return ColourMeaning::CameraRgb;
+  return observer.name == "cie1964" ? ColourMeaning::Xyz1964 : ColourMeaning::Xyz;
 }
 
 FloatImage::FloatImage(int width_, int height_, int channels_, float fill)

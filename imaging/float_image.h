@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "spectral/observer.h"
+
 namespace prism::imaging {
 
 // What the three colour channels of a linear image mean. Written into EXR headers as the string
@@ -13,12 +15,16 @@ namespace prism::imaging {
 enum class ColourMeaning {
   LinearSrgb,  // "linear-srgb": BT.709 primaries, D65 white, no transfer curve
   Xyz,         // "xyz": CIE 1931 XYZ, on whatever scale the producer chose (absolute or Y_white = 1)
+  Xyz1964,     // "xyz-1964": CIE 1964 X₁₀Y₁₀Z₁₀ (the 10° observer), on the producer's scale
   CameraRgb,   // "camera-rgb": a sensor's raw RGB, not colorimetric without its camera matrix
   OtherRgb,    // "other-rgb": RGB with primaries Prism does not interpret (a foreign EXR)
 };
 std::string_view colourMeaningName(ColourMeaning colour);
 // Error listing the known names when `name` is none of them.
 ColourMeaning colourMeaningFromName(std::string_view name);
+// What a tristimulus under `observer` means: XYZ for CIE 1931, X₁₀Y₁₀Z₁₀ for CIE 1964, a camera's
+// raw RGB for a camera. (An RGB-mode frame's tristimulus is CIE 1931 XYZ whatever its observer.)
+ColourMeaning tristimulusMeaning(const Observer& observer);
 
 struct FloatImage {
   int width = 0;

@@ -16,11 +16,6 @@
 namespace prism::viewer {
 namespace {
 
-// Camera RGB is not XYZ: what the heat map compares and the EXR's colour meaning depend on it.
-bool underCameraCurves(const render::Renderer& renderer) {
-  return renderer.context().tristimulusObserver->isCamera;
-}
-
 // The luminance the view's exposure maps to display white.
 double whiteLuminance(const render::FrameSettings& s, const Camera& camera) {
   return render::displayWhiteLuminance(s.display.ev100.value_or(camera.ev100));
@@ -99,8 +94,12 @@ void Compositor::updateHeatMap(const Camera& camera) {
   mFramesSinceHeatMap = 0;
   const render::FrameSettings& s = mLeft->settings();
   const render::FrameSettings& t = mRight->settings();
-  if (underCameraCurves(*mLeft) || underCameraCurves(*mRight)) {
-    throw Error("the heat map compares XYZ: choose a CIE observer on both sides");
+  const auto xyz = [](const render::Renderer& r) {
+    return imaging::tristimulusMeaning(*r.context().tristimulusObserver) == imaging::ColourMeaning::Xyz;
+  };
+  if (!xyz(*mLeft) || !xyz(*mRight)) {
+    throw Error("the heat map compares CIE 1931 XYZ: choose cie1931 on both sides (a camera's RGB or CIE 1964's "
+                "X10Y10Z10 is not it)");
   }
   imaging::FloatImage a(s.width, s.height, 3), b(t.width, t.height, 3);
   a.pixels = mLeft->readMeanTristimulus();
@@ -127,7 +126,7 @@ void Compositor::writeLeftExr(const std::filesystem::path& path, const Camera& c
   imaging::FloatImage image(s.width, s.height, 3);
   image.pixels = mLeft->readMeanTristimulus();
   imaging::writeExr(path, image,
-                    {underCameraCurves(*mLeft) ? imaging::ColourMeaning::CameraRgb : imaging::ColourMeaning::Xyz,
+                    {imaging::tristimulusMeaning(*mLeft->context().tristimulusObserver),
                      imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour, whiteLuminance(s, camera)});
 }
 

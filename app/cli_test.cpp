@@ -473,6 +473,18 @@ TEST(Cli, ReferenceWritesWhatCompareReads) {
   Result png = run("reference " + scene + " -o " + (dir / "ref.png").string() +
                    " --width 48 --height 27 --spp 2 --transport global --max-depth 3");
   ASSERT_EQ(png.exitCode, 0) << png.err;
+  // A camera's PNG: `reference` fits its matrix under the scene's light; merged parts, which do not
+  // record the light, say that theirs is D65's.
+  const std::string blue = scenes + "/spheres_blue_led.json", tiny = " --width 16 --height 9 --camera nikon_d850";
+  Result cameraPng = run("reference " + blue + " -o " + (dir / "cam.png").string() + tiny + " --spp 2");
+  ASSERT_EQ(cameraPng.exitCode, 0) << cameraPng.err;
+  EXPECT_EQ(cameraPng.err.find("warning"), std::string::npos) << cameraPng.err;
+  Result cameraPart = run("reference " + blue + " -o " + (dir / "cam_part.exr").string() + tiny + " --spp 2 --samples 0:2");
+  ASSERT_EQ(cameraPart.exitCode, 0) << cameraPart.err;
+  Result merged = run("merge " + (dir / "cam_part.exr").string() + " -o " + (dir / "cam_merged.png").string());
+  ASSERT_EQ(merged.exitCode, 0) << merged.err;
+  EXPECT_NE(merged.err.find("cam_merged.png: the camera's matrix is fitted under D65, not the scene's light"),
+            std::string::npos) << merged.err;
 
   Result raster = run("render " + scene + " -o " + (dir / "raster.exr").string() + " --width 48 --height 27");
   ASSERT_EQ(raster.exitCode, 0) << raster.err;

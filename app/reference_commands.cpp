@@ -16,7 +16,9 @@
 #include "reference/path_tracer.h"
 #include "render/display_transform.h"
 #include "render/frame_settings.h"
+#include "scene/scene_emission.h"
 #include "scene/scene_loader.h"
+#include "spectral/colour_space.h"
 #include "spectral/observer.h"
 
 namespace prism::app {
@@ -119,7 +121,8 @@ void checkReferenceOutputs(const std::filesystem::path& output, const std::files
 }
 
 void writeReferenceImage(const reference::ReferenceImage& image, const std::string& observerName, float ev100,
-                         const std::filesystem::path& output, const std::filesystem::path& variance) {
+                         const std::filesystem::path& output, const std::filesystem::path& variance,
+                         const Spectrum* cameraLight) {
   imaging::ExrWriteOptions exr{imaging::tristimulusMeaning(observer(observerName)),
                                imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour,
                                render::displayWhiteLuminance(ev100)};
@@ -129,7 +132,11 @@ void writeReferenceImage(const reference::ReferenceImage& image, const std::stri
   } else {
     render::DisplaySettings display;
     display.ev100 = ev100;
-    harness::displayImage(image.tristimulus, display, observer(observerName), ev100).write(output);
+    if (observer(observerName).isCamera && !cameraLight)
+      fmt::print(stderr, "prism: warning: {}: the camera's matrix is fitted under D65, not the scene's light, which "
+                         "the parts do not record (`prism reference` fits it under the light; the EXR is the camera's "
+                         "RGB, untouched)\n", output.string());
+    harness::displayImage(image.tristimulus, display, observer(observerName), ev100, cameraLight).write(output);
   }
   // The variance is in squared units and no colour: not something compare should take for one.
   if (!variance.empty()) imaging::writeExr(variance, image.variance, {.colour = imaging::ColourMeaning::OtherRgb});
@@ -157,7 +164,8 @@ void runReference(const ReferenceOptions& o) {
   harness::ProgressBar bar("tracing " + o.output.filename().string());
   reference::ReferenceImage image = reference::renderReference(
       scene, table, settings, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
-  writeReferenceImage(image, settings.observer, ev100, o.output, o.variance);
+  const Spectrum light = sceneEmission(scene, colourSpace(scene.colourSpace), table);
+  writeReferenceImage(image, settings.observer, ev100, o.output, o.variance, &light);
   fmt::print("wrote {} ({}x{}, {} paths per pixel, {} lighting)\n", o.output.string(), settings.width,
              settings.height, settings.samplesPerPixel, o.transport);
 }

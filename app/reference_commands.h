@@ -44,8 +44,11 @@ void checkReferenceOutputs(const std::filesystem::path& output, const std::files
 
 // A whole reference image as `prism reference` writes it (and `prism merge`, the same bytes):
 // OUT.exr of tristimulus for `observerName` with the display white of `ev100`, or OUT.png after
-// the display transform; the variance EXR when `variance` is not empty. Refuses non-finite pixels.
+// the display transform — a camera's matrix fitted under `cameraLight`, the scene's light (D65
+// without one: `merge`'s parts do not record it, and it says so); the variance EXR when
+// `variance` is not empty. Refuses non-finite pixels.
 void writeReferenceImage(const reference::ReferenceImage& image, const std::string& observerName, float ev100,
-                         const std::filesystem::path& output, const std::filesystem::path& variance);
+                         const std::filesystem::path& output, const std::filesystem::path& variance,
+                         const Spectrum* cameraLight);
 
 }  // namespace prism::app

@@ -15,7 +15,10 @@ namespace prism::harness {
 
 imaging::PngImage displayPng(const render::Renderer& renderer);
 
+// `cameraLight`: the scene's light, which a camera's matrix is fitted under (render::resolveDisplay;
+// D65 without one).
 imaging::PngImage displayImage(const imaging::FloatImage& tristimulus, const render::DisplaySettings& settings,
-                               const Observer& tristimulusObserver, float sceneEv100);
+                               const Observer& tristimulusObserver, float sceneEv100,
+                               const Spectrum* cameraLight = nullptr);
 
 }  // namespace prism::harness

@@ -17,6 +17,24 @@ glm::mat3 toGlm(const Eigen::Matrix3d& m) {
   return g;
 }
 
+// A camera's RGB → XYZ for images lit by `light`: fitted on the ColorChecker under it and scaled to
+// keep its luminance — the fit normalises camera RGB and XYZ each by its own white's green and Y,
+// while the renderer scales camera RGB to match XYZ under D65 (absoluteTristimulusScale), so the
+// ratio of the two normalisations (1 under D65). A light the eye or the camera's green does not
+// see (a 790 nm LED) fits nothing: D65's matrix then, which shows the next to nothing the camera
+// sees of it as such.
+Eigen::Matrix3d cameraMatrixUnder(const Observer& camera, const Spectrum& light) {
+  const Observer& cie = cie1931Observer();
+  const Spectrum& d65 = illuminant("D65");
+  auto greenOverY = [&](const Spectrum& s) { return camera.integrate(s).y() / cie.integrate(s).y(); };
+  auto fitted = [&](const Spectrum& s) {
+    return Eigen::Matrix3d(fitCameraToXyz(camera, s, cie).cameraToXyz * (greenOverY(d65) / greenOverY(s)));
+  };
+  if (cie.integrate(light).y() > 0.0 && camera.integrate(light).y() > 0.0)
+    if (const Eigen::Matrix3d m = fitted(light); m.allFinite()) return m;
+  return fitted(d65);
+}
+
 }  // namespace
 
 DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tristimulusObserver,
@@ -24,20 +42,16 @@ DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tr
   DisplayInputs inputs;
   inputs.colourSpace = &colourSpace(settings.colourSpace);
   if (tristimulusObserver.isCamera) {
-    const Observer& cie = cie1931Observer();
-    const Spectrum& d65 = illuminant("D65");
-    const bool lit = cameraLight && cie.integrate(*cameraLight).y() > 0.0;
-    const Spectrum& light = lit ? *cameraLight : d65;
-    // The fit maps camera RGB to XYZ each normalised by its own white's green and Y under `light`;
-    // the renderer scales camera RGB to match XYZ under D65 (absoluteTristimulusScale). The ratio of
-    // the two normalisations keeps a light's luminance (1 under D65).
-    auto greenOverY = [&](const Spectrum& s) { return tristimulusObserver.integrate(s).y() / cie.integrate(s).y(); };
-    inputs.tristimulusToXyz = fitCameraToXyz(tristimulusObserver, light, cie).cameraToXyz * (greenOverY(d65) / greenOverY(light));
+    inputs.tristimulusToXyz = cameraMatrixUnder(tristimulusObserver, cameraLight ? *cameraLight : illuminant("D65"));
   }
   if (settings.whiteBalance != "none") {
-    // The white the image holds: the illuminant as this observer (or camera, then its matrix) sees
-    // it — a camera's own white, CIE 1964's X₁₀Y₁₀Z₁₀ — so that a surface lit by it shows neutral.
-    Eigen::Vector3d white = inputs.tristimulusToXyz * tristimulusObserver.integrate(illuminant(settings.whiteBalance));
+    // The white a surface lit by the illuminant shows: its tristimulus under this observer, or for
+    // a camera its raw white through the matrix fitted under that illuminant — the image's own
+    // matrix when it is the scene's light, so that the light's grey shows exactly neutral. (The
+    // image's matrix for another white: fitted under a narrow LED it gave D65 a negative Y.)
+    const Spectrum& wb = illuminant(settings.whiteBalance);
+    Eigen::Vector3d white = tristimulusObserver.integrate(wb);
+    if (tristimulusObserver.isCamera) white = cameraMatrixUnder(tristimulusObserver, wb) * white;
     inputs.whiteBalanceXyz = white / white.y();
   }
   return inputs;

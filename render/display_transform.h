@@ -20,8 +20,8 @@ namespace prism::render {
 // camera matrix.
 struct DisplayInputs {
   const RgbColourSpace* colourSpace = nullptr;
-  // The illuminant's white as the shown tristimulus sees it, through the camera matrix (Y = 1);
-  // none: no balance.
+  // The illuminant's white in the shown tristimulus' terms (CIE 1964's for that observer, XYZ for
+  // CIE 1931 and cameras; Y = 1); none: no balance.
   std::optional<Eigen::Vector3d> whiteBalanceXyz;
   Eigen::Matrix3d tristimulusToXyz = Eigen::Matrix3d::Identity();  // a camera's fitted matrix, or identity
 };

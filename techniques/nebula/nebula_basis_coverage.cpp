@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -21,13 +23,15 @@ BasisCoverage basisCoverage(const NebulaRenderer& renderer, const RenderSettings
   const double aspect = static_cast<double>(cam.width) / cam.height;
   const int across = std::min(rays, cam.width), down = std::min(rays, cam.height);
   const double family = s.basisMaxDepthUm;
-  std::vector<double> total, beyond;
+  std::vector<double> total, beyond, depth;  // per ray
+  std::vector<std::pair<double, double>> samples;  // a ray's (x, star light)
   for (int row = 0; row < down; ++row)
     for (int col = 0; col < across; ++col) {
       const double px = (col + 0.5) * cam.width / across, py = (row + 0.5) * cam.height / down;
       const double u = (2.0 * px / cam.width - 1.0) * tanHalf * aspect, v = (1.0 - 2.0 * py / cam.height) * tanHalf;
       const glm::dvec3 dir = glm::normalize(frame.forward + u * frame.right + v * frame.up);
       double t0 = 0.0, t1 = 0.0, light = 0.0, far = 0.0;
+      samples.clear();
       if (shared::f64::nebulaClipToCube(cam.position, dir, 1e30, t0, t1)) {
         const double dt = (t1 - t0) / s.steps;
         double gCam = 0.0;
@@ -44,29 +48,41 @@ BasisCoverage basisCoverage(const NebulaRenderer& renderer, const RenderSettings
             const double x = g + gs;
             const double w = shared::f64::nebulaStarWeight(m.scattering * rho * dt, m.stars[st].luminosity, glm::dot(toStar, toStar)) *
                              shared::f64::nebulaExpMoments(x, glm::dvec4(0.0), kBandLoUm, kBandHiUm).x;
-            light += w;
             if (w <= 0.0) continue;
-            coverage.deepestUm = std::max(coverage.deepestUm, x);
+            light += w;
+            samples.emplace_back(x, w);
             if (x > family) far += w;
           }
         }
       }
-      total.push_back(light), beyond.push_back(far);
+      // The depth within which 99 % of the ray's star light arrives.
+      std::sort(samples.begin(), samples.end());
+      double within = 0.0, at = 0.0;
+      for (const auto& [x, w] : samples) {
+        at = x;
+        if ((within += w) >= 0.99 * light) break;
+      }
+      total.push_back(light), beyond.push_back(far), depth.push_back(at);
     }
   const double brightest = total.empty() ? 0.0 : *std::max_element(total.begin(), total.end());
   for (std::size_t r = 0; r < total.size(); ++r)
-    if (brightest > 0.0 && total[r] >= 0.01 * brightest) coverage.worstShare = std::max(coverage.worstShare, beyond[r] / total[r]);
+    if (brightest > 0.0 && total[r] >= 0.01 * brightest) {
+      coverage.worstShare = std::max(coverage.worstShare, beyond[r] / total[r]);
+      coverage.lightDepthUm = std::max(coverage.lightDepthUm, depth[r]);
+    }
   return coverage;
 }
 
 std::string basisCoverageWarning(const BasisCoverage& coverage, const RenderSettings& s, std::string_view deeperBasisFormat) {
   if (coverage.worstShare <= 0.01) return "";
-  const double depth = std::min(std::ceil(coverage.deepestUm), kMaxBasisDepthUm);
+  const double depth = std::ceil(coverage.lightDepthUm);
+  const std::string remedy = depth <= kMaxBasisDepthUm
+                                 ? fmt::format(fmt::runtime(deeperBasisFormat), depth) + " fits deeper, method analytic integrates exactly"
+                                 : fmt::format("no basis is fitted deeper than {:g} µm: method analytic integrates exactly", kMaxBasisDepthUm);
   return fmt::format("up to {:.0f} % of a pixel's star light reaches the camera through more dust than the basis is "
-                     "fitted for (optical depth up to {:.1f} µm, the basis {:g} µm): the {} method's error there can "
-                     "exceed 2 % by far; {} fits deeper, method analytic integrates exactly",
-                     100.0 * coverage.worstShare, coverage.deepestUm, s.basisMaxDepthUm, methodName(s.method),
-                     fmt::format(fmt::runtime(deeperBasisFormat), depth));
+                     "fitted for (99 % of it within an optical depth of {:.1f} µm, the basis {:g} µm): the {} method's "
+                     "error there can exceed 2 % by far; {}",
+                     100.0 * coverage.worstShare, coverage.lightDepthUm, s.basisMaxDepthUm, methodName(s.method), remedy);
 }
 
 }  // namespace prism::nebula

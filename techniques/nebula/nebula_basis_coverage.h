@@ -14,8 +14,8 @@
 namespace prism::nebula {
 
 struct BasisCoverage {
-  double worstShare = 0.0;  // the largest share, over the sampled rays, of a ray's star light beyond
-  double deepestUm = 0.0;   // the deepest x = g + g_s at which any sampled ray gathers star light
+  double worstShare = 0.0;    // the largest share, over the sampled rays, of a ray's star light beyond the family
+  double lightDepthUm = 0.0;  // the optical depth x = g + g_s within which 99 % of a ray's star light arrives, at the deepest ray
 };
 
 // Over at most rays × rays of `camera`'s pixels (evenly spread; in the cube's units), marched as settings

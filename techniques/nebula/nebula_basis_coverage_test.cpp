@@ -34,7 +34,7 @@ TEST(NebulaBasisCoverage, AStarInsideTheCloudStaysWithinTheBasis) {
   const RenderSettings s = projection(4, 2.0);
   NebulaRenderer renderer(std::move(m), s);
   const BasisCoverage coverage = basisCoverage(renderer, s, renderer.model().camera);
-  std::printf("star inside: share beyond %.4f, deepest %.2f µm\n", coverage.worstShare, coverage.deepestUm);
+  std::printf("star inside: share beyond %.4f, 99 %% of the light within %.2f µm\n", coverage.worstShare, coverage.lightDepthUm);
   EXPECT_LE(coverage.worstShare, 0.01);
 }
 
@@ -46,15 +46,15 @@ TEST(NebulaBasisCoverage, AThickCloudLitFromBehindNeedsADeeperBasis) {
   const NebulaRenderer renderer(NebulaModel(m), shallow);
   const BasisCoverage coverage = basisCoverage(renderer, shallow, renderer.model().camera);
   const double shallowError = errorAgainstTheReference(renderer, shallow);
-  const RenderSettings deep = projection(6, std::ceil(coverage.deepestUm));
+  const RenderSettings deep = projection(6, std::ceil(coverage.lightDepthUm));
   const NebulaRenderer deeper(std::move(m), deep);
   const BasisCoverage deepCoverage = basisCoverage(deeper, deep, deeper.model().camera);
   const double deepError = errorAgainstTheReference(deeper, deep);
-  std::printf("lit from behind: share beyond %.3f, deepest %.2f µm, error %.4f; basis 6 to %.0f µm: share %.3f, error %.4f\n",
-              coverage.worstShare, coverage.deepestUm, shallowError, deep.basisMaxDepthUm, deepCoverage.worstShare, deepError);
+  std::printf("lit from behind: share beyond %.3f, 99 %% of the light within %.2f µm, error %.4f; basis 6 to %.0f µm: share %.3f, error %.4f\n",
+              coverage.worstShare, coverage.lightDepthUm, shallowError, deep.basisMaxDepthUm, deepCoverage.worstShare, deepError);
   EXPECT_GE(coverage.worstShare, 0.5);
   EXPECT_GT(shallowError, 0.02);  // what the coverage warns of
-  EXPECT_EQ(deepCoverage.worstShare, 0.0);
+  EXPECT_LE(deepCoverage.worstShare, 0.01);  // fitted to where 99 % of each ray's light arrives: no warning
   EXPECT_LE(deepError, 0.02);
 }
 

@@ -107,7 +107,7 @@ struct RenderSettings {
   double basisSpacingUm = 0.2;   // its exponents' minimum spacing (nebula_basis.h; README)
   // Its family: attenuations g ∈ [0, this], its candidates' exponents a ∈ [0, max(2, this)]. Light
   // that reaches the camera through more dust (x = g + g_s beyond it) projects badly: the basis's
-  // error there grows without bound (lightBeyondBasis tells how much of a pixel's light does).
+  // error there grows without bound (basisCoverage, nebula_basis_coverage.h, tells how much of a pixel's light does).
   double basisMaxDepthUm = 2.0;
   int lightBasisSize = 8;        // lightDensity: card of the 2D basis
   bool emissionLines = true;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <string>
 
 #include <fmt/format.h>
@@ -14,6 +15,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "imaging/image_file_bytes.h"
+#include "spectral/colour_space.h"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -67,9 +69,10 @@ std::string cicpColourSpace(const std::filesystem::path& path, std::span<const s
 }  // namespace
 
 void PngImage::setColourSpace(const std::string& name) {
+  const std::string& canonical = prism::colourSpace(name).name;  // "p3" is "display-p3"
   for (const CicpSpace& s : kCicpSpaces)
-    if (name == s.name) {
-      mColourSpace = name;
+    if (canonical == s.name) {
+      mColourSpace = canonical;
       return;
     }
   throw Error(fmt::format("{}: no display encodes it; a PNG is in srgb, display-p3 or rec2020", name));
@@ -204,17 +207,12 @@ PngImage readPng8(const std::filesystem::path& path) {
                                           static_cast<int>(bytes.size()), &width, &height, &fileChannels, 4);
   // stb's reason may quote the file's bytes (an unknown chunk's type).
   if (!pixels) throw Error(path.string() + ": not a readable image: " + excerpt(stbi_failure_reason()));
+  const std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> owned(pixels, &stbi_image_free);
   PngImage image;
-  try {
-    image.mColourSpace = cicpColourSpace(path, {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
-  } catch (...) {
-    stbi_image_free(pixels);
-    throw;
-  }
+  image.mColourSpace = cicpColourSpace(path, {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
   image.mWidth = width;
   image.mHeight = height;
   image.mRgba.assign(pixels, pixels + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
-  stbi_image_free(pixels);
   return image;
 }
 

@@ -14,6 +14,18 @@ std::filesystem::path tempPath(const std::string& name) {
   return std::filesystem::path(::testing::TempDir()) / "prism_png" / name;
 }
 
+// CRC-32 (ISO 3309, as PNG's chunks carry it), bit by bit, as four big-endian bytes: written out
+// here so that the test does not share zlib's.
+std::string bigEndianCrc32(const std::string& bytes) {
+  std::uint32_t crc = 0xFFFFFFFFu;
+  for (unsigned char byte : bytes) {
+    crc ^= byte;
+    for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  crc ^= 0xFFFFFFFFu;
+  return {static_cast<char>(crc >> 24), static_cast<char>(crc >> 16), static_cast<char>(crc >> 8), static_cast<char>(crc)};
+}
+
 TEST(PngImage, FillsClippedRectangles) {
   PngImage image(8, 4, {1, 2, 3});
   image.fillRect(6, 2, 10, 10, {200, 100, 50});
@@ -79,11 +91,15 @@ TEST(PngImage, CarriesItsColourSpaceInCicp) {
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const std::string chunk = std::string("\0\0\0\4cICP", 8) + std::string{c.primaries, c.transfer, 0, 1};
     EXPECT_EQ(bytes.substr(33, 12), chunk) << c.space;
+    EXPECT_EQ(bytes.substr(45, 4), bigEndianCrc32(chunk.substr(4))) << c.space << ": the CRC of type and data";
     const PngImage back = readPng8(p);
     EXPECT_EQ(back.colourSpace(), c.space);
     EXPECT_EQ(back.rgba(), image.rgba());
   }
   EXPECT_THROW(PngImage(1, 1, {}).setColourSpace("acescg"), Error);
+  PngImage p3(1, 1, {});
+  p3.setColourSpace("p3");  // the display settings' other name for it
+  EXPECT_EQ(p3.colourSpace(), "display-p3");
 
   const std::filesystem::path p = tempPath("display-p3.png"), odd = tempPath("pq.png");
   std::string bytes;

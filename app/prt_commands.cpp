@@ -231,7 +231,8 @@ prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtI
     throw Error("--illuminant: the atmosphere is lit by its sun, not by an illuminant");
   const prt::PrtSection* section = input ? input->section() : nullptr;
   if (section && o.exr.empty() && !o.environment && !o.illuminant) {
-    prt::SpectralEnvironment environment = prt::sectionEnvironment(*section, rendererRgbToSpectrumTable("srgb"));
+    // The report has no lights: the spectral sky's sun, the renderer's light, is projected with it.
+    prt::SpectralEnvironment environment = prt::sectionEnvironment(*section, rendererRgbToSpectrumTable("srgb"), true);
     environment.name = "the scene's (" + environment.name + ")";
     return environment;
   }

@@ -70,13 +70,15 @@ double gridLuminance(const Spectrum& spd) {
 
 Spectrum environmentIlluminant(const std::string& name) {
   Spectrum spd = illuminant(name);
-  // PRT's grid is 380–780 nm and the luminance is set on it: a light outside it was scaled by 1/0
-  // (black objects) or, mostly outside, came out of another colour in each mode.
+  // PRT's grid is 380–780 nm every 5 nm and the luminance is set on it: a light outside it was
+  // scaled by 1/0 (black objects) or, mostly outside, came out of another colour in each mode; a
+  // line narrower than the step between two nodes (led:452:1) is lost the same way.
   const double onGrid = gridLuminance(spd), whole = luminousIntegral(spd) / double(shared::kLumensPerWatt);
   if (!(onGrid >= kMinGridLuminanceShare * whole))
-    throw Error(fmt::format("{} has {:.3g} % of its luminance within PRT's {}–{} nm (at least {:g} %: the rest is lost)",
+    throw Error(fmt::format("{} has {:.3g} % of its luminance on PRT's grid, {}–{} nm every {:g} nm (at least {:g} %: "
+                            "the rest, outside it or between its nodes, is lost)",
                             name, 100.0 * onGrid / whole, kGridMinNm, kGridMinNm + (kGridWavelengths - 1) * kGridStepNm,
-                            100.0 * kMinGridLuminanceShare));
+                            kGridStepNm, 100.0 * kMinGridLuminanceShare));
   return spd;
 }
 
@@ -198,7 +200,8 @@ std::unique_ptr<TechniqueSection> PrtSection::parse(const schema::Node& n, const
   return s;
 }
 
-SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpectrumTable& srgbTable) {
+SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpectrumTable& srgbTable,
+                                       bool sunInEnvironment) {
   SpectralEnvironment environment;
   if (section.map) {
     auto toSpectrum = [&srgbTable](const glm::vec3& rgb) { return RgbUnboundedSpectrum(srgbTable, rgb).toDense(); };
@@ -207,9 +210,10 @@ SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpe
                                              section.map->linearRgb,
                                              [&](const glm::vec3& rgb) { return toSpectrum(rgb) * scale; });
   } else if (section.sky) {
-    // The sun is the scene's light (PrtSection::light): the environment is the sky alone.
-    environment = skyEnvironment(fmt::format("spectral sky, sun at {}°", section.sky->atmosphere.sunElevationDeg),
-                                 *sectionSky(*section.sky), false, double(shared::kLumensPerWatt));
+    const bool sun = sunInEnvironment && section.sky->sunDisc;
+    environment = skyEnvironment(fmt::format("spectral sky, sun at {}°{}", section.sky->atmosphere.sunElevationDeg,
+                                             sun ? ", its disc on SH-5" : section.sky->sunDisc ? "" : ", no sun disc"),
+                                 *sectionSky(*section.sky), sun, double(shared::kLumensPerWatt));
   } else {
     Spectrum spd = environmentIlluminant(section.illuminant);
     spd *= section.luminanceCdM2 / gridLuminance(spd);

@@ -85,8 +85,11 @@ Spectrum environmentIlluminant(const std::string& name);
 
 // The section's environment, z-up (PRT's convention), turned by rotationDeg about the zenith and
 // scaled to its luminance (the spectral sky: absolute, 683 lm/W folded in as PRT's spectra carry
-// it); srgbTable upsamples a map's texels (the unbounded intent).
-SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpectrumTable& srgbTable);
+// it); srgbTable upsamples a map's texels (the unbounded intent). The spectral sky's sun (when
+// sun_disc) is the renderer's light (PrtSection::light), so the environment holds the sky alone;
+// with `sunInEnvironment` (what has no lights: `prt report`) it holds the sun too, on SH-5.
+SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpectrumTable& srgbTable,
+                                       bool sunInEnvironment = false);
 
 // What the section's environment is made from, as text: equal keys, the same environment.
 std::string environmentKey(const PrtSection& section);

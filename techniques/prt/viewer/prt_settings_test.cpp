@@ -39,7 +39,10 @@ TEST(PrtSetKeys, ChangeTheSectionAndRefuseBadValues) {
   EXPECT_NE(errorOf(scene, "prt.illuminant", "F99"), "");
   // Light PRT's 380–780 nm grid does not hold (its luminance is set there: it drew black objects).
   EXPECT_EQ(errorOf(scene, "prt.illuminant", "led:830:1"),
-            "led:830:1 has 0 % of its luminance within PRT's 380–780 nm (at least 90 %: the rest is lost)");
+            "led:830:1 has 0 % of its luminance on PRT's grid, 380–780 nm every 5 nm (at least 90 %: the rest, "
+            "outside it or between its nodes, is lost)");
+  // A line narrower than the grid's step between two nodes is lost too, and the message says so.
+  EXPECT_NE(errorOf(scene, "prt.illuminant", "led:452:1").find("outside it or between its nodes"), std::string::npos);
   EXPECT_EQ(errorOf(scene, "prt.rotation", "400"), "prt.rotation: expected degrees in [-360, 360], got 400");
   EXPECT_EQ(s->basis, 4);
   EXPECT_EQ(s->illuminant, "F11");

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/worst_of.h"
 #include "imaging/exr_band.h"
 #include "imaging/exr_file.h"
 #include "scene/scene_loader.h"
@@ -146,9 +147,9 @@ TEST_F(ReferenceParts, PathRangesMergeIntoTheWholeRenderToFloatRounding) {
   double worstMean = 0.0, worstVariance = 0.0;
   for (std::size_t k = 0; k < sWhole->tristimulus.pixels.size(); ++k) {
     const double whole = sWhole->tristimulus.pixels[k], mean = merged.image.tristimulus.pixels[k];
-    if (whole != mean) worstMean = std::max(worstMean, std::abs(mean - whole) / std::abs(whole));
+    if (whole != mean) worstMean = worstOf(worstMean, std::abs(mean - whole) / std::abs(whole));
     const double wv = sWhole->variance.pixels[k], v = merged.image.variance.pixels[k];
-    if (wv != v) worstVariance = std::max(worstVariance, std::abs(v - wv) / std::abs(wv));
+    if (wv != v) worstVariance = worstOf(worstVariance, std::abs(v - wv) / std::abs(wv));
   }
   EXPECT_LE(worstMean, 1.2e-7);  // one float rounding: the means agree to double precision first
   EXPECT_LE(worstVariance, 1e-5);  // Chan's sum against the whole render's Σx² − n·m²

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "core/worst_of.h"
 #include "scene/camera_transform.h"
 #include "scene/procedural_mesh.h"
 #include "scene/scene_loader.h"
@@ -326,7 +327,7 @@ TEST(PathTracer, AnAbsorbingSlabAttenuatesBothLegsByBeerLambert) {
       // 1 m of slab: 1/0.6 m along the light, 1/|d_y| m along the view.
       double expected = 0.5 * 1000.0 * 0.6 / kPi * std::exp(-0.7 / 0.6) * std::exp(-0.7 / std::abs(d.y));
       double sigma = std::sqrt(image.variance.at(x, y, 1));
-      worstZ = std::max(worstZ, std::abs(image.tristimulus.at(x, y, 1) - expected) / sigma);
+      worstZ = worstOf(worstZ, std::abs(image.tristimulus.at(x, y, 1) - expected) / sigma);
       meanRatio += image.tristimulus.at(x, y, 1) / expected;
     }
   }
@@ -400,7 +401,7 @@ TEST(PathTracer, SingleScatteringInAChromaticMediumMatchesNumericalIntegration) 
         const ReferenceImage& image = e == 0 ? forced : freeFlight;
         double got = image.tristimulus.at(x, y, 1);
         double variance = image.variance.at(x, y, 1);
-        worstZ[e] = std::max(worstZ[e], std::abs(got - expectedY) / std::sqrt(variance));
+        worstZ[e] = worstOf(worstZ[e], std::abs(got - expectedY) / std::sqrt(variance));
         sumDifference[e] += got - expectedY;
         sumVariance[e] += variance;
       }

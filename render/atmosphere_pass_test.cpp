@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/worst_of.h"
 #include "gpu/headless_context.h"
 #include "techniques/atmosphere/atmosphere_texels.h"
 #include "techniques/atmosphere/atmosphere_reference.h"
@@ -57,9 +58,9 @@ TEST(AtmospherePass, TablesMatchTheDoublePrecisionReference) {
       for (int j = 0; j < 4; ++j) {
         double tauRef = ref[static_cast<std::size_t>(j)];
         double relative = std::abs(std::exp(-double(depth[i][j])) - std::exp(-tauRef)) / std::exp(-tauRef);
-        worstAll = std::max(worstAll, relative);
-        if (tauRef <= kDeepestOpticalDepth) worst = std::max(worst, relative);
-        worstCpu = std::max(worstCpu, std::abs(double(depth[i][j]) - double(cpu.transmittance[i][j])) /
+        worstAll = worstOf(worstAll, relative);
+        if (tauRef <= kDeepestOpticalDepth) worst = worstOf(worst, relative);
+        worstCpu = worstOf(worstCpu, std::abs(double(depth[i][j]) - double(cpu.transmittance[i][j])) /
                                           std::max(double(cpu.transmittance[i][j]), 1e-30));
       }
     }
@@ -93,8 +94,8 @@ TEST(AtmospherePass, TablesMatchTheDoublePrecisionReference) {
       for (std::size_t k = 0; k < want.size(); ++k) {
         double w = want[k][static_cast<std::size_t>(j)];
         double relative = std::abs(got[k][static_cast<std::size_t>(j)] - w) / std::max(w, 1e-30);
-        worstSkyAll = std::max(worstSkyAll, relative);
-        if (w >= 0.01 * peak) worstSky = std::max(worstSky, relative);
+        worstSkyAll = worstOf(worstSkyAll, relative);
+        if (w >= 0.01 * peak) worstSky = worstOf(worstSky, relative);
       }
     }
     std::printf("single scattering, sun %g°, GPU vs double reference: max relative %.3g where at least 1%% of "
@@ -160,7 +161,7 @@ TEST(AtmospherePass, IrradianceAndAerialPerspectiveMatchIndependentIntegrals) {
   double worstSh = 0.0;
   for (int k = 0; k < 4; ++k) {
     for (int j = 0; j < 4; ++j) {
-      worstSh = std::max(worstSh, std::abs(double(sh[std::size_t(k)][j]) - c[std::size_t(k)][j]) / c[0][j]);
+      worstSh = worstOf(worstSh, std::abs(double(sh[std::size_t(k)][j]) - c[std::size_t(k)][j]) / c[0][j]);
     }
   }
   std::printf("sky irradiance coefficients, GPU vs CPU integral: max error %.3g of the constant term\n", worstSh);
@@ -179,8 +180,8 @@ TEST(AtmospherePass, IrradianceAndAerialPerspectiveMatchIndependentIntegrals) {
         glm::vec4 in = ap[std::size_t(k)][std::size_t(y * shared::kAerialPerspectiveSize + x)];
         glm::vec4 t = ap[std::size_t(shared::kAerialPerspectiveSlices + k)][std::size_t(y * shared::kAerialPerspectiveSize + x)];
         for (int j = 0; j < 4; ++j) {
-          worstIn = std::max(worstIn, std::abs(double(in[j]) - ref.radiance[std::size_t(j)]) / ref.radiance[std::size_t(j)]);
-          worstT = std::max(worstT, std::abs(double(t[j]) - ref.transmittance[std::size_t(j)]) / ref.transmittance[std::size_t(j)]);
+          worstIn = worstOf(worstIn, std::abs(double(in[j]) - ref.radiance[std::size_t(j)]) / ref.radiance[std::size_t(j)]);
+          worstT = worstOf(worstT, std::abs(double(t[j]) - ref.transmittance[std::size_t(j)]) / ref.transmittance[std::size_t(j)]);
         }
       }
     }

@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "core/temp_file_test_support.h"
+#include "core/worst_of.h"
 #include "render/cpu_shading.h"
 #include "render/gbuffer_readback_test_support.h"
 #include "gpu/headless_context.h"
@@ -236,7 +237,7 @@ double compareWithTheTwin(const Scene& scene, RenderMode mode, OnObject onObject
       const glm::dvec3 expected = lit + glm::dvec3(nebulaColour[static_cast<std::size_t>((kSize - 1 - y) * kSize + x)]);
       const glm::dvec3 actual(g.accumulated(i));
       const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z), 1e-3});
-      worst = std::max(worst, glm::length(actual - expected) / scale);
+      worst = worstOf(worst, glm::length(actual - expected) / scale);
       if (t.materialId != 0) onObject(lit, glm::dvec3(undimmed.shade(t, uv, renderer.cameraTransform())));
     }
   return worst;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/cache_dir_test_support.h"
+#include "core/worst_of.h"
 #include "gpu/headless_context.h"
 #include "gpu/texture.h"
 #include "render/cpu_shading.h"
@@ -68,7 +69,7 @@ void expectRandomPixelsAgreeWithTheSharedSums(const PrtModeCase& mode, const std
     const glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
     const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
     const double error = glm::length(actual - expected) / scale;
-    worst = std::max(worst, error);
+    worst = worstOf(worst, error);
     sum += error;
     kept += prtSums.y / cpuTristimulus(dry, hit, camera).y;
     haze += lit0.y / expected.y;
@@ -135,7 +136,7 @@ TEST(PrtGpuCpuParity, PrtObjectsInsideANebulaAreDimmedByIt) {
     const glm::dvec3 expected = cpuTristimulus(*data, hit, renderer.cameraTransform().position, g);
     const glm::dvec3 actual(lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]);
     const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
-    worst = std::max(worst, glm::length(actual - expected) / scale);
+    worst = worstOf(worst, glm::length(actual - expected) / scale);
     kept = std::min(kept, expected.y / cpuTristimulus(*data, hit, renderer.cameraTransform().position).y);
     depth = std::max(depth, static_cast<double>(g));
   });
@@ -179,7 +180,7 @@ TEST(PrtGpuCpuParity, PrtObjectsAreLitByTheScenesLightsToo) {
     const glm::dvec3 expected = lights + cpuTristimulus(*data, hit, renderer.cameraTransform().position);
     const glm::dvec3 actual(g.accumulated(i));
     const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
-    worst = std::max(worst, glm::length(actual - expected) / scale);
+    worst = worstOf(worst, glm::length(actual - expected) / scale);
     lightShare += lights.y / expected.y;
   });
   lightShare /= std::max(compared, 1);
@@ -221,7 +222,7 @@ TEST(PrtGpuCpuParity, PrtObjectsInsideANebulaAreLitByItsStars) {
         stars + cpuTristimulus(*data, hit, renderer.cameraTransform().position, nebula->opticalDepthUm[i]);
     const glm::dvec3 actual(g.accumulated(i));
     const double scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
-    worst = std::max(worst, glm::length(actual - expected) / scale);
+    worst = worstOf(worst, glm::length(actual - expected) / scale);
     starShare += stars.y / expected.y;
   });
   starShare /= std::max(compared, 1);

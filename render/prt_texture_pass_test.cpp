@@ -17,6 +17,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/worst_of.h"
 #include "gpu/headless_context.h"
 #include "gpu/texture.h"
 #include "render/gbuffer_readback_test_support.h"
@@ -113,8 +114,8 @@ void expectMagnifiedTexelsAgreeWithTheTwin(const PrtModeCase& mode, const std::v
       if (moved) snap += glm::length(below + cpuTristimulus(*data, *moved, renderer.cameraTransform().position) - expected) / scale;
     }
     const double error = glm::length(actual - expected) / scale;
-    worst = std::max(worst, error);
-    worstShare = std::max(worstShare, error / (kSums + snap));
+    worst = worstOf(worst, error);
+    worstShare = worstOf(worstShare, error / (kSums + snap));
     materials.insert(data->vertexMaterial[data->indices[hit.triangle]]);
     ++compared;
   });

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/worst_of.h"
 #include "gpu/headless_context.h"
 #include "imaging/image_difference.h"
 #include "imaging/png_file.h"
@@ -101,7 +102,7 @@ TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {
     float scale = std::max({std::abs(expected.x), std::abs(expected.y), std::abs(expected.z)});
     double error = scale > 0.0f ? glm::length(actual - expected) / scale
                                 : glm::length(actual - expected);
-    worst = std::max(worst, error);
+    worst = worstOf(worst, error);
     sum += error;
   }
   std::printf("%s, %s, %s: %d of %d pixels on surfaces; relative error mean %.3g, max %.3g\n",
@@ -515,7 +516,7 @@ TEST(Renderer, GBufferCoefficientsRenderWhatTheRgbAlbedoRenders) {
   double worst = 0.0, peak = 0.0;
   for (float v : fromRgb) peak = std::max(peak, static_cast<double>(std::abs(v)));
   for (std::size_t i = 0; i < fromRgb.size(); ++i) {
-    worst = std::max(worst, std::abs(static_cast<double>(fromRgb[i]) - fromCoefficients[i]) / peak);
+    worst = worstOf(worst, std::abs(static_cast<double>(fromRgb[i]) - fromCoefficients[i]) / peak);
   }
   EXPECT_GT(peak, 0.0);
   // Half-float albedo (2⁻¹¹ relative) moves a saturated colour's reflectance by a few 1e-4.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 
+#include "core/worst_of.h"
 #include "gpu/buffer.h"
 #include "gpu/compute.h"
 #include "gpu/headless_context.h"
@@ -25,10 +26,10 @@ namespace {
 
 // The largest difference between the reflectances two coefficient sets give, 380–730 nm: the
 // quantity a renderer consumes (coefficients themselves span 1e-4 to 1e2 and cancel).
-float reflectanceDifference(const glm::vec3& a, const glm::vec3& b) {
-  float worst = 0.0f;
+double reflectanceDifference(const glm::vec3& a, const glm::vec3& b) {
+  double worst = 0.0;
   for (float l = 380.0f; l <= 730.0f; l += 10.0f)
-    worst = std::max(worst, std::abs(shared::upsampledReflectance(a, l) - shared::upsampledReflectance(b, l)));
+    worst = worstOf(worst, std::abs(shared::upsampledReflectance(a, l) - shared::upsampledReflectance(b, l)));
   return worst;
 }
 
@@ -64,13 +65,13 @@ TEST(UpsamplingTexture, GpuLookupsMatchTheCpu) {
   std::vector<glm::vec4> gpuManual = manual.read<glm::vec4>();
   std::vector<glm::vec4> gpuFiltered = filtered.read<glm::vec4>();
 
-  float manualWorst = 0.0f, filteredWorst = 0.0f, model8BitWorst = 0.0f;
+  double manualWorst = 0.0, filteredWorst = 0.0, model8BitWorst = 0.0;
   for (std::size_t i = 0; i < rgbs.size(); ++i) {
     glm::vec3 rgb(rgbs[i]);
-    manualWorst = std::max(manualWorst, reflectanceDifference(glm::vec3(gpuManual[i]), table.lookup(rgb)));
+    manualWorst = worstOf(manualWorst, reflectanceDifference(glm::vec3(gpuManual[i]), table.lookup(rgb)));
     glm::vec3 exact = table.lookupFiltered(rgb);
-    filteredWorst = std::max(filteredWorst, reflectanceDifference(glm::vec3(gpuFiltered[i]), exact));
-    model8BitWorst = std::max(model8BitWorst, reflectanceDifference(table.lookupFiltered(rgb, 8), exact));
+    filteredWorst = worstOf(filteredWorst, reflectanceDifference(glm::vec3(gpuFiltered[i]), exact));
+    model8BitWorst = worstOf(model8BitWorst, reflectanceDifference(table.lookupFiltered(rgb, 8), exact));
   }
   std::printf("%s: manual |ΔR| %.3g, filtered vs exact weights %.3g (8-bit weight model: %.3g)\n",
               context.renderer().c_str(), manualWorst, filteredWorst, model8BitWorst);
@@ -79,12 +80,12 @@ TEST(UpsamplingTexture, GpuLookupsMatchTheCpu) {
   // values: llvmpipe, which rounds every operation correctly, agrees with the CPU bit for bit
   // (measured 0). The bound is the target, leaving room for GLSL's licence on division
   // (2.5 ULP, GLSL 4.50 §4.7.1) on other drivers.
-  EXPECT_LE(manualWorst, 1e-5f);
+  EXPECT_LE(manualWorst, 1e-5);
   // The hardware filter rounds its weights. llvmpipe measured 4.4e-3 against 3.2e-3 for the CPU
   // model that rounds weights to the nearest 1/256, i.e. a little coarser (truncation instead of
   // rounding would explain it); the bound allows 1.5× that model. The quality tests show that
   // 8-bit rounding keeps the sRGB round trip at max 0.066 ΔE00 against the bound of 0.2.
-  EXPECT_LE(filteredWorst, 1.5f * model8BitWorst + 1e-6f);
+  EXPECT_LE(filteredWorst, 1.5 * model8BitWorst + 1e-6);
 }
 
 }  // namespace

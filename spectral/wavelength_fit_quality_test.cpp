@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/worst_of.h"
 #include "spectral/colour_checker.h"
 #include "spectral/colour_difference.h"
 #include "spectral/colour_space.h"
@@ -92,8 +93,8 @@ TEST(WavelengthFit, ColourCheckerSpheresUnderF11AndF2HoldTheirChromaticity) {
         const Eigen::Vector3d& e = estimates[k];
         const double dxy = std::hypot(e.x() / e.sum() - truth.x() / truth.sum(), e.y() / e.sum() - truth.y() / truth.sum());
         const double dY = std::abs(e.y() / truth.y() - 1.0);
-        worstXy[k] = std::max(worstXy[k], dxy);
-        worstY[k] = std::max(worstY[k], dY);
+        worstXy[k] = worstOf(worstXy[k], dxy);
+        worstY[k] = worstOf(worstY[k], dY);
       }
       EXPECT_LE(std::hypot(estimates[0].x() / estimates[0].sum() - truth.x() / truth.sum(),
                            estimates[0].y() / estimates[0].sum() - truth.y() / truth.sum()),

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "core/data_files.h"
+#include "core/worst_of.h"
 #include "techniques/nebula/nebula_precomputed.h"
 #include "techniques/nebula/nebula_render.h"
 #include "techniques/nebula/nebula_scene.h"
@@ -85,8 +86,8 @@ TEST(NebulaIonisation, AStarInAUniformCloudHasNestedStromgrenZones) {
           const double bound = 2.0 * 1.5 / (2.0 * 0.05) * 1.05 / (12.0 * n * n) + 1e-6;
           for (std::size_t g = 0; g < groups.size(); ++g) {
             const double e = std::abs(field.values[v * groups.size() + g] - analytic(groups[g], r));
-            worst = std::max(worst, e);
-            worstRatio = std::max(worstRatio, e / bound);
+            worst = worstOf(worst, e);
+            worstRatio = worstOf(worstRatio, e / bound);
           }
           oiiiPeak = std::max(oiiiPeak, static_cast<double>(field.values[v * groups.size() + 1]));
         }

@@ -9,6 +9,7 @@
 #include "core/data_files.h"
 #include "core/error_test_support.h"
 #include "core/temp_file_test_support.h"
+#include "core/worst_of.h"
 #include "techniques/nebula/nebula_basis.h"
 #include "techniques/nebula/nebula_density.h"
 #include "techniques/nebula/nebula_integrals.h"
@@ -66,7 +67,7 @@ TEST(NebulaSpectra, CcmScatteringIsACubicThroughTheMeasuredCurve) {
   double worst = 0.0;
   for (int i = 0; i <= 80; ++i) {
     const double l = kBandLoUm + (kBandHiUm - kBandLoUm) * i / 80.0;
-    worst = std::max(worst, std::abs(p.at(l) / ccmExtinction(l) - 1.0));
+    worst = worstOf(worst, std::abs(p.at(l) / ccmExtinction(l) - 1.0));
   }
   std::printf("CCM's cubic fit over the band: worst %.2g relative\n", worst);
   // A cubic in λ bends less than CCM's optical polynomial in 1/λ (its knee near 0.45 µm): 2.0 %

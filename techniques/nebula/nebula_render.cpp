@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <numbers>
@@ -13,6 +14,7 @@
 #include "core/error.h"
 #include "core/gauss_legendre.h"
 #include "core/parallel_for.h"
+#include "core/worst_of.h"
 #include "techniques/nebula/nebula_integrals.h"
 #include "techniques/nebula/nebula_precomputed.h"
 
@@ -562,8 +564,9 @@ double maxRelativeError(const NebulaImage& image, const NebulaImage& reference, 
     for (const auto& p : reference.pixels) peak = std::max(peak, static_cast<double>(p[c]));
     for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
       double r = reference.pixels[i][c];
+      if (!std::isfinite(r) || !std::isfinite(image.pixels[i][c])) return std::numeric_limits<double>::infinity();
       if (r <= 0.0 || r < floorOfMax * peak) continue;
-      worst = std::max(worst, std::abs(image.pixels[i][c] - r) / r);
+      worst = worstOf(worst, std::abs(image.pixels[i][c] - r) / r);
     }
   }
   return worst;

@@ -174,7 +174,8 @@ class NebulaRenderer {
 };
 
 // Per channel, over pixels whose reference value is at least `floorOfMax` × that channel's
-// maximum: the largest |image − reference| / reference.
+// maximum: the largest |image − reference| / reference; infinite where either image has a pixel
+// that is not finite (anywhere, not only over the floor).
 double maxRelativeError(const NebulaImage& image, const NebulaImage& reference, double floorOfMax = 0.01);
 
 }  // namespace prism::nebula

@@ -11,6 +11,7 @@
 #include "core/data_files.h"
 #include "core/error.h"
 #include "core/gauss_legendre.h"
+#include "core/worst_of.h"
 #include "spectral/observer.h"
 
 namespace prism::nebula {
@@ -95,7 +96,7 @@ Passband fitPassband(std::string name, const std::vector<double>& lambdaUm, cons
   double peak = *std::max_element(values.begin(), values.end()), worst = 0.0;
   for (std::size_t i = 0; i < lambdaUm.size(); ++i)
     if (lambdaUm[i] >= loUm && lambdaUm[i] <= hiUm)
-      worst = std::max(worst, std::abs(band.response.at(lambdaUm[i]) - values[i]));
+      worst = worstOf(worst, std::abs(band.response.at(lambdaUm[i]) - values[i]));
   band.fitMaxErrorOfPeak = worst / peak;
   return band;
 }

@@ -13,6 +13,7 @@
 #include <numbers>
 #include <optional>
 
+#include "core/worst_of.h"
 #include "shared_cpp.h"
 #include "spectral/table_test_support.h"
 #include "spectral/observer.h"
@@ -36,7 +37,7 @@ double projectionDifference(const PrtSection& section, double lambdaNm, const Pr
       [&](const glm::dvec3& d) { return environment->radiance(glm::vec3(d.x, d.z, -d.y), lambdaNm); }, 512, 1024) *
       double(shared::kLumensPerWatt);  // the path tracer's radiance carries 683 lm/W in its luminance; PRT's does not
   double worst = 0.0;
-  for (int k = 0; k < 25; ++k) worst = std::max(worst, std::abs(projected[k] - expected[k]) / std::abs(expected[0]));
+  for (int k = 0; k < 25; ++k) worst = worstOf(worst, std::abs(projected[k] - expected[k]) / std::abs(expected[0]));
   return worst;
 }
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/worst_of.h"
 #include "spectral/illuminant.h"
 #include "techniques/prt/prt_evaluation.h"
 #include "techniques/prt/prt_medium.h"
@@ -135,7 +136,7 @@ TEST(PrtMedium, WithNothingToDimTheNodeSumIsPrtXyz) {
       glm::vec3 plain = shared::prtXyz(e, r, p.basisCount);
       for (const std::vector<glm::vec3>* rho : {&p.nodeReflectances[material], static_cast<const std::vector<glm::vec3>*>(nullptr)}) {
         glm::vec3 sum = prtXyzThroughMedium(e, r, p.basisCount, nodes, rho, &air, {0, -1, 0}, {0, -2, 1});
-        worst = std::max(worst, static_cast<double>(glm::length(sum - plain) / glm::length(plain)));
+        worst = worstOf(worst, static_cast<double>(glm::length(sum - plain) / glm::length(plain)));
       }
     }
     EXPECT_LT(worst, 1e-5) << p.basisCount << " basis functions";
@@ -162,7 +163,7 @@ TEST(PrtMedium, TheReferenceThroughWaterAndANebulaIsTheFiveNanometreSumWrittenOu
       const double t = std::exp(-m.sigmaT.at(l) * path - m.kd.at(l) * depth - nebula * 1000.0 / l);
       expect += t * e * rho(i) * cmf.row(i).transpose() * kGridStepNm;
     }
-    worst = std::max(worst, (nodes[v] - expect).norm() / expect.norm());
+    worst = worstOf(worst, (nodes[v] - expect).norm() / expect.norm());
   }
   EXPECT_LT(worst, 1e-5);
 }
@@ -213,9 +214,9 @@ TEST(PrtMedium, ThroughJerlovWatersEightFunctionsHoldToTheReference) {
                   "water's, m = 8 %.3f / %.3f, m = 16 %.3f / %.3f\n",
                   std::string(type).c_str(), metres, exactScene.mean94, exactScene.max94, exact.mean94, exact.max94,
                   s8.mean94, s8.max94, s16.mean94, s16.max94, m8.mean94, m8.max94, m16.mean94, m16.max94);
-      worstExact = std::max(worstExact, exactScene.max94);
-      worstScene = std::max(worstScene, (held == 8 ? s8 : s16).max94);
-      if (metres <= 10.0f) worstHeld = std::max(worstHeld, (held == 8 ? m8 : m16).max94);
+      worstExact = worstOf(worstExact, exactScene.max94);
+      worstScene = worstOf(worstScene, (held == 8 ? s8 : s16).max94);
+      if (metres <= 10.0f) worstHeld = worstOf(worstHeld, (held == 8 ? m8 : m16).max94);
     }
     EXPECT_LE(worstExact, 1.0) << type;
     EXPECT_LE(worstHeld, 1.0) << type;

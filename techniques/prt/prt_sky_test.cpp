@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "core/cache_dir_test_support.h"
+#include "core/worst_of.h"
 #include "spectral/observer.h"
 #include "techniques/atmosphere/atmosphere_reference.h"
 #include "techniques/prt/prt_sky_cache.h"
@@ -53,7 +54,7 @@ TEST(PrtSky, TexelsAreTheAtmospheresSingleScatteringSeenFromTheGround) {
           sky.atmosphere.parameters, lambdaNm, sky.atmosphere.originKm(), sun.z, zenith, azimuth);
       for (int j = 0; j < 4; ++j) {
         double got = grid.radianceAt(texel.direction, lambdaNm[static_cast<std::size_t>(j)]);
-        worst = std::max(worst, std::abs(got / expected[static_cast<std::size_t>(j)] - 1.0));
+        worst = worstOf(worst, std::abs(got / expected[static_cast<std::size_t>(j)] - 1.0));
       }
     }
   }

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "core/worst_of.h"
 #include "techniques/prt/prt_evaluation.h"
 #include "techniques/prt/sh_tools.h"
 #include "techniques/prt/transfer_bake.h"
@@ -76,7 +77,7 @@ TEST(TransferBake, ConvexObjectMatchesRamamoorthiHanrahanWithinOnePercent) {
     double x = glm::dot(glm::dvec3(mesh.normals[v]), d), exact = 0.0;
     for (int b = 0; b < 5; ++b) exact += hat[b] * a[b] * legendre(b, x);
     double baked = shared::shDot(l, shadowed[v]);
-    worst = std::max(worst, std::abs(baked / exact - 1.0));
+    worst = worstOf(worst, std::abs(baked / exact - 1.0));
     for (int k = 0; k < 25; ++k) ASSERT_EQ(shadowed[v].c[k], open[v].c[k]) << "a ray hit the convex object";
   }
   std::printf("convex icosphere, %zu vertices, 1024 directions: worst relative irradiance error %.3g %%\n",

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/worst_of.h"
 #include "techniques/underwater/jerlov_water.h"
 #include "techniques/underwater/underwater_layout.h"
 
@@ -49,7 +50,7 @@ TEST(UnderwaterModel, ClosedFormMatchesNumericalIntegrationForEveryWaterType) {
               continue;
             }
             double relative = std::abs(closed[j] - numeric) / numeric;
-            worst = std::max(worst, relative);
+            worst = worstOf(worst, relative);
             EXPECT_LT(relative, 1e-3) << type << " depth " << depth << " w " << w << " S " << distance
                                       << " λ " << lambdaNm[j];
           }

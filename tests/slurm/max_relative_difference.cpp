@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "core/worst_of.h"
 #include "imaging/exr_file.h"
 
 int main(int argc, char** argv) {
@@ -22,7 +23,7 @@ int main(int argc, char** argv) {
     double worst = 0.0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) {
       const double x = a.pixels[i], y = b.pixels[i];
-      if (x != y) worst = std::max(worst, std::abs(x - y) / std::max(std::abs(x), std::abs(y)));
+      if (x != y) worst = prism::worstOf(worst, std::abs(x - y) / std::max(std::abs(x), std::abs(y)));
     }
     std::printf("%.3g\n", worst);
   } catch (const std::exception& e) {

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/worst_of.h"
 #include "gpu/headless_context.h"
 #include "imaging/exr_file.h"
 #include "imaging/float_image.h"
@@ -153,7 +154,7 @@ TEST(NebulaGpu, MomentsBeyondTheShadersIndexAreOneError) {
   ASSERT_GT(peakOf(cpu), 0.0);
   double worst = 0.0;
   for (std::size_t i = 0; i < cpu.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(static_cast<double>(image.pixels[i][c]) - cpu.pixels[i][c]));
+    for (int c = 0; c < 3; ++c) worst = worstOf(worst, std::abs(static_cast<double>(image.pixels[i][c]) - cpu.pixels[i][c]));
   EXPECT_LE(worst, 1e-5 * peakOf(cpu));
 }
 

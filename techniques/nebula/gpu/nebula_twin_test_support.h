@@ -27,6 +27,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/worst_of.h"
 #include "techniques/nebula/gpu/nebula_gpu_marcher.h"
 #include "techniques/nebula/nebula_test_cloud.h"
 
@@ -76,7 +77,7 @@ inline double twinRatio(const NebulaImage& gpuImage, const NebulaImage& cpu, con
         for (std::size_t j = 0; j < card; ++j)
           magnitude += std::abs(static_cast<double>(weights[(g * 3 + static_cast<std::size_t>(c)) * card + j]) *
                                 moments[(g * card + j) * pixels + i]);
-      worst = std::max(worst, std::abs(gpuImage.pixels[i][c] - cpu.pixels[i][c]) / (rounding * magnitude));
+      worst = worstOf(worst, std::abs(gpuImage.pixels[i][c] - cpu.pixels[i][c]) / (rounding * magnitude));
     }
   }
   return worst;
@@ -89,7 +90,7 @@ inline double relativeError(const NebulaImage& a, const NebulaImage& b) {
     double peak = 0.0;
     for (const auto& p : b.pixels) peak = std::max(peak, std::abs(static_cast<double>(p[c])));
     for (std::size_t i = 0; i < b.pixels.size(); ++i)
-      worst = std::max(worst, std::abs(a.pixels[i][c] - b.pixels[i][c]) /
+      worst = worstOf(worst, std::abs(a.pixels[i][c] - b.pixels[i][c]) /
                                   std::max(std::abs(static_cast<double>(b.pixels[i][c])), 0.01 * peak));
   }
   return worst;

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -75,6 +76,17 @@ Errors measure(const std::string& filters, int stars, bool doublePrecision = fal
 // The table of projection coefficients against the same coefficients made in double at each
 // depth: Catmull–Rom within float's storage everywhere, the first interval included (there it
 // was 1e-3 off while the entry before 0 mirrored the one after, a slope of 0 at the cloud's front).
+TEST(NebulaRender, TheRelativeErrorOfANonFinitePixelIsInfinite) {
+  const NebulaImage reference{2, 1, {glm::vec3(1.0f), glm::vec3(0.0f)}};
+  EXPECT_NEAR(maxRelativeError({2, 1, {glm::vec3(1.5f), glm::vec3(0.0f)}}, reference), 0.5, 1e-12);
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  // Also where the reference is black, which the measure otherwise leaves out.
+  for (const glm::vec3 bad : {glm::vec3(nan, 1.0f, 1.0f), glm::vec3(0.0f, inf, 0.0f)}) {
+    EXPECT_EQ(maxRelativeError({2, 1, {glm::vec3(1.0f), bad}}, reference), std::numeric_limits<double>::infinity());
+    EXPECT_EQ(maxRelativeError({2, 1, {bad, glm::vec3(0.0f)}}, reference), std::numeric_limits<double>::infinity());
+  }
+}
+
 TEST(NebulaRender, TheCoefficientTableHoldsFromTheFirstInterval) {
   RenderSettings s;
   NebulaRenderer r(smallNebula("cie1931", 1), s);

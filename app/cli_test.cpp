@@ -635,6 +635,17 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   expectOneLineError("nebula density " + (dir / "from_file.json").string() + " -o " + (dir / "tiny.density").string(),
                      "is also the scene's density file");
   EXPECT_EQ(slurp(dir / "tiny.json"), sceneBefore);
+  // Nor does `nebula render -o` write over its scene or its density file (it did, exit 0, when
+  // their names ended in .png or .exr).
+  std::filesystem::copy_file(dir / "tiny.json", dir / "scene.png", std::filesystem::copy_options::overwrite_existing);
+  expectOneLineError("nebula render " + (dir / "scene.png").string() + " -o " + (dir / "scene.png").string(),
+                     "scene.png: is also the scene file; write it to another file");
+  std::filesystem::copy_file(dir / "tiny.density", dir / "grid.exr", std::filesystem::copy_options::overwrite_existing);
+  std::ofstream(dir / "exr_grid.json") << R"({"nebula": {"density": {"file": "grid.exr"}, "stars": []}})";
+  expectOneLineError("nebula render " + (dir / "exr_grid.json").string() + " -o " + (dir / "grid.exr").string(),
+                     "grid.exr: is also the scene's density file");
+  EXPECT_EQ(slurp(dir / "grid.exr"), slurp(dir / "tiny.density"));
+  expectOneLineError("nebula render " + tiny + " -o ''", "an output's file name is empty");
 
   // The GPU's timings at a size of one's own, without the CPU's columns.
   Result bench = run("nebula bench --repeats 1 --size 8 --no-cpu");

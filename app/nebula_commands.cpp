@@ -118,11 +118,14 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
   requireWithin("--size", o.size, 1, 4096);
   requireWithin("--steps", o.steps, 1, nebula::kMaxSteps);
   requirePlotFile(o.plotFile);
+  requireOtherFile(o.plotFile, o.scene, "the scene file");
   nebula::RenderSettings s;
   s.steps = o.steps.value_or(s.steps);
   nebula::validate(s);
   requireFilterSet(o.filters);
-  nebula::NebulaScene scene = generateWithProgress(nebula::readNebulaScene(o.scene), o.threads);
+  nebula::NebulaSceneFile file = nebula::readNebulaScene(o.scene);
+  requireOtherFile(o.plotFile, file.source.file, "the scene's density file");
+  nebula::NebulaScene scene = generateWithProgress(std::move(file), o.threads);
   if (!o.filters.empty()) scene.model.filters = o.filters;
   nebula::NebulaCamera& camera = scene.model.camera;
   if (o.size) nebula::scaleImage(camera, *o.size);
@@ -201,6 +204,8 @@ void writeImage(const nebula::NebulaImage& image, const std::string& filters, co
 }  // namespace
 
 void runNebulaRender(const NebulaRenderOptions& o) {
+  requireWritable(o.output);  // first, so that an empty name is said to be one
+  requireOtherFile(o.output, o.scene, "the scene file");
   if (lowercaseExtension(o.output) != ".exr" && lowercaseExtension(o.output) != ".png")
     throw Error(fmt::format("{}: the output must be .exr or .png", o.output.string()));
   nebula::Method method = nebula::methodFromName(o.method);
@@ -242,9 +247,9 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   if (o.referenceIntervals && !o.compare && !(method == nebula::Method::Reference && o.uniformSamples == 0))
     throw Error(fmt::format("--reference-intervals {}: only for the reference by Simpson's rule (--method reference "
                             "without --uniform-samples, or --compare)", *o.referenceIntervals));
-  requireWritable(o.output);
   requireFilterSet(o.filters);
   nebula::NebulaSceneFile file = nebula::readNebulaScene(o.scene);
+  requireOtherFile(o.output, file.source.file, "the scene's density file");
   std::unique_ptr<gpu::HeadlessContext> context;
   if (o.gpu) {
     context = std::make_unique<gpu::HeadlessContext>();

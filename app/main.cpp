@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <new>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -578,6 +579,10 @@ int main(int argc, char** argv) {
     // The environment, not a bug: an output folder that cannot be made, a folder where a file
     // belongs, a path without permission.
     fmt::print(stderr, "prism: error: {}: {}\n", prism::excerpt(e.path1().string()), e.code().message());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    // The environment, not a bug: an image, grid or star count beyond this machine's memory.
+    fmt::print(stderr, "prism: error: out of memory (a smaller image, grid or count may fit)\n");
     return 1;
   } catch (const std::exception& e) {
     // nlohmann::json (type_error 316) will not write text that is not UTF-8: a file's name in --json.

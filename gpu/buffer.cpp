@@ -1,9 +1,11 @@
 #include "gpu/buffer.h"
 
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "gpu/object_counter.h"
+#include "gpu/storage.h"
 
 namespace prism::gpu {
 
@@ -11,7 +13,15 @@ Buffer::Buffer(const BufferDesc& desc) : mSizeBytes(desc.sizeBytes) {
   if (desc.sizeBytes == 0) throw std::invalid_argument("prism::gpu::Buffer: size 0");
   glCreateBuffers(1, &mId);
   countGlObjects(GlObjectKind::Buffer, 1);
-  glNamedBufferStorage(mId, static_cast<GLsizeiptr>(desc.sizeBytes), desc.data, desc.storageFlags);
+  try {
+    makeStorage(Diagnostic::BufferStorageFailed,
+                "prism::gpu::Buffer" + (desc.label.empty() ? "" : " '" + desc.label + "'") + " of " +
+                    std::to_string(desc.sizeBytes) + " bytes",
+                [&] { glNamedBufferStorage(mId, static_cast<GLsizeiptr>(desc.sizeBytes), desc.data, desc.storageFlags); });
+  } catch (...) {
+    release();  // no destructor runs for a constructor that throws
+    throw;
+  }
   if (!desc.label.empty())
     glObjectLabel(GL_BUFFER, mId, static_cast<GLsizei>(desc.label.size()), desc.label.data());
   if (!desc.data) {

@@ -5,10 +5,13 @@
 #include <array>
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
+#include "gpu/error.h"
 #include "gpu/gpu_test_support.h"
+#include "gpu/object_counter.h"
 
 namespace prism::gpu {
 namespace {
@@ -64,6 +67,22 @@ TEST_F(GpuTest, BufferRangesAreChecked) {
   using Vec3 = std::array<float, 3>;
   EXPECT_THROW(buffer.read<Vec3>(), std::invalid_argument);  // 16 bytes ≠ k·12
   EXPECT_THROW(Buffer({0, nullptr, GL_DYNAMIC_STORAGE_BIT, {}}), std::invalid_argument);
+}
+
+// A buffer no GPU holds (a tebibyte) is one GpuError naming it, with no driver message before it
+// and no GL object left behind: it went on as a broken buffer after the driver's KHR_debug line,
+// and the command that wanted it ended in an internal error.
+TEST_F(GpuTest, StorageNoGpuHoldsIsOneErrorNamingTheBuffer) {
+  const GlObjectCounts start = liveGlObjects();
+  try {
+    Buffer huge({std::size_t{1} << 40, nullptr, 0, "huge"});
+    ADD_FAILURE() << "a buffer of a tebibyte was made";
+  } catch (const GpuError& e) {
+    EXPECT_EQ(e.id(), Diagnostic::BufferStorageFailed);
+    EXPECT_EQ(std::string(e.what()).rfind("prism::gpu::Buffer 'huge' of 1099511627776 bytes: out of GPU memory", 0), 0u)
+        << e.what();
+  }
+  EXPECT_EQ(liveGlObjects(), start);
 }
 
 }  // namespace

@@ -26,7 +26,8 @@ namespace prism::gpu {
   X(GlDebugInfo, "KHR_debug: a notification from the driver or the application")                \
   X(FramebufferIncomplete, "the attachments do not make a complete framebuffer")                \
   X(NoOpenGl45, "no window with an OpenGL 4.5 core context could be created through GLFW")       \
-  X(TextureStorageFailed, "the driver could not make a texture's storage (out of memory, above all)")
+  X(TextureStorageFailed, "the driver could not make a texture's storage (out of memory, above all)") \
+  X(BufferStorageFailed, "the driver could not make a buffer's storage (out of memory, above all)")
 
 enum class Diagnostic {
 #define PRISM_GPU_DIAGNOSTIC_ENUM(name, meaning) name,

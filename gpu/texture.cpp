@@ -2,37 +2,25 @@
 
 #include <algorithm>
 #include <bit>
+#include <functional>
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
 
 #include "gpu/error.h"
 #include "gpu/object_counter.h"
+#include "gpu/storage.h"
 
 namespace prism::gpu {
 
 namespace {
 
-// Runs a glTextureStorage* call with the driver's error messages muted (a debug group), and throws
-// one GpuError when it failed: running out of memory printed the driver's KHR_debug line, then
-// the framebuffer's "incomplete" line, then the error — three lines for one failure (`prism demo`
-// at 16 384² on llvmpipe).
-template <class Storage>
-void makeStorage(const char* kind, const std::string& label, std::size_t texels, Storage storage) {
-  // Earlier errors were reported where they happened (the debug output): not this call's.
-  while (glGetError() != GL_NO_ERROR) {
-  }
-  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "texture storage");
-  glDebugMessageControl(GL_DEBUG_SOURCE_API, GL_DEBUG_TYPE_ERROR, GL_DONT_CARE, 0, nullptr, GL_FALSE);
-  storage();
-  const GLenum error = glGetError();
-  glPopDebugGroup();
-  if (error == GL_NO_ERROR) return;
-  const std::string what = std::string("prism::gpu::") + kind + (label.empty() ? "" : " '" + label + "'") + " of " +
-                           std::to_string(texels) + " texels";
-  throw GpuError(Diagnostic::TextureStorageFailed,
-                 error == GL_OUT_OF_MEMORY ? what + ": out of GPU memory (a smaller size may fit)"
-                                           : what + ": the driver refused its storage (GL error " + std::to_string(error) + ")");
+void makeTextureStorage(const char* kind, const std::string& label, std::size_t texels,
+                        const std::function<void()>& storage) {
+  makeStorage(Diagnostic::TextureStorageFailed,
+              std::string("prism::gpu::") + kind + (label.empty() ? "" : " '" + label + "'") + " of " +
+                  std::to_string(texels) + " texels",
+              storage);
 }
 
 std::size_t channels(GLenum format) {
@@ -268,7 +256,7 @@ Texture3D::Texture3D(const Texture3DDesc& desc) {
   glCreateTextures(GL_TEXTURE_3D, 1, &mId);
   countGlObjects(GlObjectKind::Texture, 1);
   try {
-    makeStorage("Texture3D", desc.label, expected / channels(desc.format),
+    makeTextureStorage("Texture3D", desc.label, expected / channels(desc.format),
                 [&] { glTextureStorage3D(mId, 1, desc.internalFormat, desc.width, desc.height, desc.depth); });
   } catch (...) {
     release();  // no destructor runs for a constructor that throws
@@ -316,7 +304,7 @@ Texture2D::Texture2D(const Texture2DDesc& desc)
   glCreateTextures(GL_TEXTURE_2D, 1, &mId);
   countGlObjects(GlObjectKind::Texture, 1);
   try {
-    makeStorage("Texture2D", desc.label, static_cast<std::size_t>(mWidth) * static_cast<std::size_t>(mHeight),
+    makeTextureStorage("Texture2D", desc.label, static_cast<std::size_t>(mWidth) * static_cast<std::size_t>(mHeight),
                 [&] { glTextureStorage2D(mId, mLevels, mInternalFormat, mWidth, mHeight); });
     applySampling(mId, desc.sampling, mInternalFormat, mLevels);
     setLabel(mId, desc.label);
@@ -419,7 +407,7 @@ Texture2DArray::Texture2DArray(const Texture2DArrayDesc& desc)
   glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &mId);
   countGlObjects(GlObjectKind::Texture, 1);
   try {
-    makeStorage("Texture2DArray", desc.label,
+    makeTextureStorage("Texture2DArray", desc.label,
                 static_cast<std::size_t>(mWidth) * static_cast<std::size_t>(mHeight) * static_cast<std::size_t>(mLayers),
                 [&] { glTextureStorage3D(mId, mLevels, mInternalFormat, mWidth, mHeight, mLayers); });
   } catch (...) {

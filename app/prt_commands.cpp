@@ -23,6 +23,7 @@
 #include "imaging/float_image.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_loader.h"
+#include "spectral/colour_space.h"
 #include "spectral/illuminant.h"
 #include "spectral/rgb_intent.h"
 #include "spectral/rgb_to_spectrum_cache.h"
@@ -247,7 +248,9 @@ prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtI
     const RgbToSpectrumTable& table =
         rendererRgbToSpectrumTable("srgb", [&bar](std::size_t done, std::size_t total) { bar.update(done, total); });
     return prt::equirectangularEnvironment(o.exr, map.width, map.height, rgb,
-                                           [&table](const glm::vec3& c) { return RgbUnboundedSpectrum(table, c).toDense(); });
+                                           [&table](const glm::vec3& c) {
+                                             return RgbIlluminantSpectrum(table, colourSpace("srgb"), c).toDense();
+                                           });
   }
   const std::string shape = o.environment.value_or("sky");
   const std::string name = o.illuminant.value_or("F4");

@@ -11,8 +11,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "shared_cpp.h"
+#include "spectral/colour_space.h"
 #include "spectral/illuminant.h"
 #include "spectral/rgb_intent.h"
+#include "spectral/sigmoid_fit.h"
 #include "techniques/prt/prt_evaluation.h"
 
 namespace prism::prt {
@@ -20,8 +22,10 @@ namespace {
 
 // A map's texels as spectra (per unit of the section's scale) and, when first asked for, their
 // radiance over the sky: what the environment's rotation about the zenith and its luminance leave
-// alone.
+// alone. A texel is light, the illuminant intent: the map's white times its unbounded spectrum
+// (held apart, 16 bytes a texel).
 struct MapSpectra {
+  Spectrum white;  // the colour space's white illuminant (D65)
   std::vector<RgbUnboundedSpectrum> texels;
   mutable std::once_flag summed;
   mutable Spectrum fromAbove;  // Σ over the texels above the horizon of their radiance × solid angle there
@@ -29,7 +33,7 @@ struct MapSpectra {
 
 // Texel (x, y) covers the part of its solid angle above the horizon, (2π/width)·(max(cos θ₀, 0) −
 // max(cos θ₁, 0)); the sum runs at every 5 nm, linear between (texels' spectra are smooth).
-Spectrum sumAboveHorizon(const std::vector<RgbUnboundedSpectrum>& texels, int w, int h) {
+Spectrum sumAboveHorizon(const MapSpectra& map, int w, int h) {
   std::vector<double> lambdasNm, sums;
   for (int lambdaNm = kLambdaMinNm; lambdaNm <= kLambdaMaxNm; lambdaNm += 5) lambdasNm.push_back(lambdaNm);
   sums.assign(lambdasNm.size(), 0.0);
@@ -39,11 +43,11 @@ Spectrum sumAboveHorizon(const std::vector<RgbUnboundedSpectrum>& texels, int w,
     if (above <= 0.0) break;  // rows run from the zenith down
     const double solidAngle = 2.0 * std::numbers::pi / w * above;
     for (int x = 0; x < w; ++x) {
-      const RgbUnboundedSpectrum& texel = texels[static_cast<std::size_t>(y * w + x)];
+      const RgbUnboundedSpectrum& texel = map.texels[static_cast<std::size_t>(y * w + x)];
       for (std::size_t i = 0; i < lambdasNm.size(); ++i) sums[i] += solidAngle * texel.at(static_cast<float>(lambdasNm[i]));
     }
   }
-  return TabulatedSpectrum(std::move(lambdasNm), std::move(sums), Extrapolation::Clamp).toDense();
+  return map.white * TabulatedSpectrum(std::move(lambdasNm), std::move(sums), Extrapolation::Clamp).toDense();
 }
 
 // The last map's spectra, kept for the process (16 bytes a texel: a 4K map's hold about 130 MB
@@ -60,6 +64,7 @@ std::shared_ptr<const MapSpectra> mapSpectra(const std::shared_ptr<const PrtMap>
   std::lock_guard lock(mutex);
   if (last && lastMap.lock() == map && lastTable == &table && lastTableHash == table.inputsHash()) return last;
   auto spectra = std::make_shared<MapSpectra>();
+  spectra->white = gamutWhiteIlluminant(colourSpace(table.gamut()));
   spectra->texels.reserve(map->linearRgb.size() / 3);
   for (std::size_t i = 0; i < map->linearRgb.size(); i += 3)
     spectra->texels.emplace_back(table, glm::vec3(map->linearRgb[i], map->linearRgb[i + 1], map->linearRgb[i + 2]));
@@ -83,7 +88,8 @@ class SectionEnvironment final : public TechniqueEnvironment {
       mSky = sectionSky(*section.sky);  // radiance in W·m⁻²·sr⁻¹·nm⁻¹ already; its sun is a light
     } else if (mMap) {
       mSpectra = mapSpectra(mMap, table);
-      mScale = section.luminanceCdM2 / gridLuminance(RgbUnboundedSpectrum(table, glm::vec3(1.0f)).toDense()) /
+      mScale = section.luminanceCdM2 /
+               gridLuminance(mSpectra->white * RgbUnboundedSpectrum(table, glm::vec3(1.0f)).toDense()) /
                double(shared::kLumensPerWatt);
     } else {
       mSpd = illuminant(section.illuminant);
@@ -104,9 +110,10 @@ class SectionEnvironment final : public TechniqueEnvironment {
     }
     const glm::ivec2 t = equirectangularTexelOf(d, mMap->width, mMap->height);
     const int x = t.x, y = t.y;
-    return mScale *
-           mSpectra->texels[static_cast<std::size_t>(y) * static_cast<std::size_t>(mMap->width) + static_cast<std::size_t>(x)]
-               .at(static_cast<float>(lambdaNm));
+    return mScale * mSpectra->white.at(lambdaNm) *
+           static_cast<double>(
+               mSpectra->texels[static_cast<std::size_t>(y) * static_cast<std::size_t>(mMap->width) + static_cast<std::size_t>(x)]
+                   .at(static_cast<float>(lambdaNm)));
   }
 
   // Exact, whatever the rotation about the zenith: the uniform sky 2π·L, the overcast gradient
@@ -116,7 +123,7 @@ class SectionEnvironment final : public TechniqueEnvironment {
     if (mSky) return TechniqueEnvironment::scalarIrradianceFromAbove();
     if (!mMap) return mSpd * (mUniform ? 2.0 * std::numbers::pi : 4.0 * std::numbers::pi / 3.0);
     const MapSpectra& m = *mSpectra;
-    std::call_once(m.summed, [&] { m.fromAbove = sumAboveHorizon(m.texels, mMap->width, mMap->height); });
+    std::call_once(m.summed, [&] { m.fromAbove = sumAboveHorizon(m, mMap->width, mMap->height); });
     return m.fromAbove * mScale;
   }
 

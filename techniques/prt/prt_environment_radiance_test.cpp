@@ -13,8 +13,11 @@
 #include <numbers>
 #include <optional>
 
+#include <glm/geometric.hpp>
+
 #include "core/worst_of.h"
 #include "shared_cpp.h"
+#include "spectral/illuminant.h"
 #include "spectral/table_test_support.h"
 #include "spectral/observer.h"
 #include "techniques/prt/prt_evaluation.h"
@@ -79,6 +82,34 @@ TEST(EnvironmentRadiance, ProjectsToTheSectionsEnvironment) {
   std::printf("SH-5 coefficients of the projected radiance against the section's, worst relative to the constant "
               "term: sky %.2g, map turned 30° %.2g\n",
               projectionDifference(sky, 550.0), turned);
+}
+
+// A map's texels are light, as a background's colour is: (1, 1, 1) is the colour space's white,
+// D65, in the environment PRT projects and in the one the path tracer traces. Upsampled as
+// unbounded colours they were equal-energy white (x, y = ⅓), pink on screen (prt_rock's sky).
+TEST(EnvironmentRadiance, AWhiteMapIsTheColourSpacesWhite) {
+  const RgbToSpectrumTable& table = smallSrgbTable();
+  auto white = std::make_shared<PrtMap>();
+  white->file = "white map";
+  white->width = 16;
+  white->height = 8;
+  white->linearRgb.assign(3 * 16 * 8, 1.0f);
+  PrtSection section;
+  section.map = white;
+  const Eigen::Vector3d d65 = luminousTristimulus(illuminant("D65"));
+  auto chromaticity = [](const Eigen::Vector3d& xyz) { return glm::dvec2(xyz[0], xyz[1]) / xyz.sum(); };
+  const Eigen::MatrixXd grid = environmentOnGrid(sectionEnvironment(section, table));
+  const Spectrum projected = Spectrum::fromFunction([&](double lambdaNm) {
+    const double t = std::clamp((lambdaNm - kGridMinNm) / kGridStepNm, 0.0, kGridWavelengths - 1.0);
+    const int i = std::min(static_cast<int>(t), kGridWavelengths - 2);
+    return (1.0 - (t - i)) * grid(i, 0) + (t - i) * grid(i + 1, 0);  // the constant SH term
+  });
+  const auto traced = environmentRadiance(section, table);
+  const Spectrum radiance =
+      Spectrum::fromFunction([&](double lambdaNm) { return traced->radiance(glm::vec3(0.3f, 0.8f, 0.5f), lambdaNm); });
+  // The 5 nm grid and the small table's white leave about 1e-3 in x and y.
+  EXPECT_LT(glm::distance(chromaticity(luminousTristimulus(projected)), chromaticity(d65)), 2e-3);
+  EXPECT_LT(glm::distance(chromaticity(luminousTristimulus(radiance)), chromaticity(d65)), 2e-3);
 }
 
 // What the water in-scatters of an environment (scalarIrradianceFromAbove, ∫ L dω over the sky):

@@ -73,8 +73,9 @@ std::vector<Eigen::VectorXd> termSpectra(const SpectralEnvironment& environment)
 // grid wavelengths).
 SpectralEnvironment gridEnvironment(std::string name, const Eigen::MatrixXd& grid);
 // An equirectangular map (row 0 at the zenith +z, u = φ/2π from +x towards +y), linear RGB per
-// texel as `width × height` triples, each texel upsampled by `toSpectrum` (Prism's unbounded RGB
-// intent: RgbUnboundedSpectrum(table, rgb).toDense()) and projected by equirectangularTexelSh.
+// texel as `width × height` triples, each texel upsampled by `toSpectrum` (a texel is light, so
+// Prism's illuminant RGB intent: RgbIlluminantSpectrum(table, space, rgb).toDense(), white the
+// space's white) and projected by equirectangularTexelSh.
 // Held as 25 terms, the spectrum of each SH coefficient on the 5 nm
 // grid (linear between grid wavelengths), so rotation and the basis's columns work as for the
 // analytic environments. Error "SOURCE: texel (x, y): …" for a negative or non-finite value.

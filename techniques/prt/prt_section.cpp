@@ -13,6 +13,7 @@
 #include "shared_cpp.h"
 #include "imaging/exr_file.h"
 #include "imaging/radiance_hdr.h"
+#include "spectral/colour_space.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_intent.h"
@@ -204,7 +205,10 @@ SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpe
                                        bool sunInEnvironment) {
   SpectralEnvironment environment;
   if (section.map) {
-    auto toSpectrum = [&srgbTable](const glm::vec3& rgb) { return RgbUnboundedSpectrum(srgbTable, rgb).toDense(); };
+    // A texel is light: (1, 1, 1) is the map's white, D65 (the illuminant intent, as a background's).
+    auto toSpectrum = [&srgbTable](const glm::vec3& rgb) {
+      return RgbIlluminantSpectrum(srgbTable, colourSpace(srgbTable.gamut()), rgb).toDense();
+    };
     double scale = section.luminanceCdM2 / gridLuminance(toSpectrum(glm::vec3(1.0f)));
     environment = equirectangularEnvironment(section.map->file.string(), section.map->width, section.map->height,
                                              section.map->linearRgb,

@@ -276,10 +276,10 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   auto t0 = std::chrono::steady_clock::now();
   nebula::NebulaRenderer renderer(std::move(scene.model), s, [&bar](std::size_t d, std::size_t n) { bar.update(d, n); });
   auto t1 = std::chrono::steady_clock::now();
-  if (const std::string warning = nebula::basisCoverageWarning(nebula::basisCoverage(renderer, s, renderer.model().camera), s,
-                                                                "--basis-depth {:.0f} --basis 6");
-      !warning.empty())
-    fmt::print(stderr, "prism: warning: {}\n", warning);
+  const nebula::BasisCoverage coverage = nebula::basisCoverage(renderer, s, renderer.model().camera);
+  for (const std::string& warning : {nebula::stepThicknessWarning(coverage, s, "--steps {:.0f}"),
+                                     nebula::basisCoverageWarning(coverage, s, "--basis-depth {:.0f} --basis 6")})
+    if (!warning.empty()) fmt::print(stderr, "prism: warning: {}\n", warning);
   nebula::NebulaImage image;
   if (o.gpu) {
     nebula::NebulaGpuMarcher marcher(renderer);

@@ -15,7 +15,7 @@ namespace prism::nebula {
 
 BasisCoverage basisCoverage(const NebulaRenderer& renderer, const RenderSettings& s, const NebulaCamera& cam, int rays) {
   BasisCoverage coverage;
-  if (s.method != Method::Projection) return coverage;
+  const bool projection = s.method == Method::Projection;
   const NebulaPrecomputed& pre = renderer.precomputed();
   const NebulaModel& m = pre.model;
   const NebulaViewFrame frame = viewFrame(cam);
@@ -40,7 +40,9 @@ BasisCoverage basisCoverage(const NebulaRenderer& renderer, const RenderSettings
           const double rho = m.density.sample(p);
           if (rho <= 0.0) continue;
           const double dg = kCtUm * m.extinction * rho * dt, g = gCam + 0.5 * dg;
+          if (gCam < 5.0 * kBandLoUm) coverage.thickestStep = std::max(coverage.thickestStep, dg / kBandLoUm);
           gCam += dg;
+          if (!projection) continue;
           for (std::size_t st = 0; st < m.stars.size(); ++st) {
             float gs = 0.0f;
             pre.starDepth[st].sample(p, &gs);
@@ -83,6 +85,21 @@ std::string basisCoverageWarning(const BasisCoverage& coverage, const RenderSett
                      "fitted for (99 % of it within an optical depth of {:.1f} µm, the basis {:g} µm): the {} method's "
                      "error there can exceed 2 % by far; {}",
                      100.0 * coverage.worstShare, coverage.lightDepthUm, s.basisMaxDepthUm, methodName(s.method), remedy);
+}
+
+std::string stepThicknessWarning(const BasisCoverage& coverage, const RenderSettings& s, std::string_view moreStepsFormat) {
+  constexpr double kThickest = 0.5;
+  const double tau = coverage.thickestStep;
+  if (tau <= kThickest) return "";
+  const double kept = std::exp(-0.5 * tau) * tau / -std::expm1(-tau);  // the midpoint's share of the step's light
+  const double steps = std::ceil(s.steps * tau / kThickest);
+  const std::string remedy =
+      steps <= kMaxSteps ? fmt::format(fmt::runtime(moreStepsFormat), steps) + " keeps every step within 0.5"
+                         : fmt::format("even {} steps leave them {:.2g} thick: the cloud is too dense for the march", kMaxSteps,
+                                       tau * s.steps / kMaxSteps);
+  return fmt::format("the march's steps are up to {:.3g} optical depths thick at 380 nm, where such a step's emission "
+                     "and scattered light come out {:.3g} % too dark (each is taken at the step's middle); {}",
+                     tau, 100.0 * (1.0 - kept), remedy);
 }
 
 }  // namespace prism::nebula

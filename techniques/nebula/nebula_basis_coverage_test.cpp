@@ -6,7 +6,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "techniques/nebula/nebula_test_cloud.h"
@@ -56,6 +59,47 @@ TEST(NebulaBasisCoverage, AThickCloudLitFromBehindNeedsADeeperBasis) {
   EXPECT_GT(shallowError, 0.02);  // what the coverage warns of
   EXPECT_LE(deepCoverage.worstShare, 0.01);  // fitted to where 99 % of each ray's light arrives: no warning
   EXPECT_LE(deepError, 0.02);
+}
+
+}  // namespace
+}  // namespace prism::nebula
+
+namespace prism::nebula {
+namespace {
+
+// A glowing cloud so dense that a hundred steps are each about 5 optical depths thick at 380 nm:
+// every method takes a step's light at its middle, so the image comes out far too dark, and the
+// coverage says so; at the step count the warning names (each step within τ = 0.5) the image is
+// within 1 % of a march four times finer.
+TEST(NebulaBasisCoverage, StepsTooThickForTheCloudAreSaid) {
+  NebulaModel m = smallCloud("cie1931", 0);
+  m.density = {24, 24, 24, std::vector<float>(24 * 24 * 24, 1.0f)};
+  m.extinction = 340.0;
+  m.lineGroups = {{"H I Balmer (case B)", 1.0}};
+  m.emission = 0.01;
+  RenderSettings s;
+  s.method = Method::Reference;
+  const NebulaRenderer renderer(std::move(m), s);
+  auto total = [&](int steps) {
+    RenderSettings r = s;
+    r.steps = steps;
+    double y = 0.0;
+    for (const glm::vec3& p : renderer.render(r).pixels) y += p.y;
+    return y;
+  };
+  const BasisCoverage coverage = basisCoverage(renderer, s, renderer.model().camera);
+  const std::string warning = stepThicknessWarning(coverage, s, "--steps {:.0f}");
+  ASSERT_GT(coverage.thickestStep, 0.5) << "no warning";
+  const int advised = static_cast<int>(std::ceil(s.steps * coverage.thickestStep / 0.5));
+  EXPECT_NE(warning.find(fmt::format("--steps {} keeps every step within 0.5", advised)), std::string::npos) << warning;
+  const double coarse = total(s.steps), enough = total(advised), finer = total(4 * advised);
+  std::printf("%s\nY over the image: %d steps %.4g, %d steps %.4g, %d steps %.4g\n", warning.c_str(), s.steps, coarse,
+              advised, enough, 4 * advised, finer);
+  EXPECT_LT(coarse, 0.8 * finer);
+  EXPECT_NEAR(enough, finer, 0.01 * finer);
+  RenderSettings thin = s;
+  thin.steps = advised;
+  EXPECT_EQ(stepThicknessWarning(basisCoverage(renderer, thin, renderer.model().camera), thin, "--steps {:.0f}"), "");
 }
 
 }  // namespace

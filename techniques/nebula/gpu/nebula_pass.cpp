@@ -100,18 +100,19 @@ NebulaPass::NebulaPass() : mComposite(compositeProgram()), mEmpty(gpu::VertexArr
 void NebulaPass::precompute(const Scene& scene, const TechniqueProgress& progress) {
   const NebulaSection& section = sectionOf(scene);
   std::shared_ptr<const NebulaRenderer> renderer = precomputation(section, progress);
-  // What the scene's camera sees of light beyond the projection basis (its view as it starts: a
-  // square of 32 × 32 rays in the cube, at the camera's vertical field of view).
+  // What the scene's camera sees of light beyond the projection basis, and how thick the march's
+  // steps are (its view as it starts: a square of 32 × 32 rays in the cube, at the camera's
+  // vertical field of view).
   NebulaCamera camera;
   camera.position = glm::dvec3((scene.camera.position - section.boxMin) / section.boxSize);
   camera.target = glm::dvec3((scene.camera.target - section.boxMin) / section.boxSize);
   camera.fovYDeg = scene.camera.verticalFovDeg;
   camera.width = camera.height = 32;
   const RenderSettings settings = section.renderSettings();
-  if (const std::string warning = basisCoverageWarning(basisCoverage(*renderer, settings, camera), settings,
-                                                       "\"basis_depth\": {:.0f} and \"basis\": 6");
-      !warning.empty())
-    fmt::print(stderr, "prism: warning: {}: /nebula: {}\n", scene.file.string(), warning);
+  const BasisCoverage coverage = basisCoverage(*renderer, settings, camera);
+  for (const std::string& warning : {stepThicknessWarning(coverage, settings, "\"steps\": {:.0f}"),
+                                     basisCoverageWarning(coverage, settings, "\"basis_depth\": {:.0f} and \"basis\": 6")})
+    if (!warning.empty()) fmt::print(stderr, "prism: warning: {}: /nebula: {}\n", scene.file.string(), warning);
 }
 
 void NebulaPass::requireFits(const Scene& scene) {

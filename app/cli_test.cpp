@@ -551,7 +551,7 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
     "stars": [{"position": [0.5, 0.5, 0.5], "temperature": 9000}], "camera": {"width": 8, "height": 8}}})";
   std::ofstream(dir / "bad.json") << R"({"nebula": {"density": {"noise": {}}, "stars": [{"position": [0, 0]}]}})";
   const std::string tiny = (dir / "tiny.json").string();
-  Result render = run("nebula render " + tiny + " --method projection --steps 10 -o " + (dir / "tiny.png").string());
+  Result render = run("nebula render " + tiny + " --method projection --steps 20 -o " + (dir / "tiny.png").string());
   ASSERT_EQ(render.exitCode, 0) << render.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "tiny.png"));
   EXPECT_EQ(render.err.find("warning"), std::string::npos) << render.err;  // its star lights the cloud from within
@@ -561,11 +561,12 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
     "extinction": 25, "emission": 0, "stars": [{"position": [0.5, 0.5, 1.4], "temperature": 9000}],
     "camera": {"width": 8, "height": 8}}})";
   const std::string backlit = (dir / "backlit.json").string();
-  Result shallow = run("nebula render " + backlit + " --method projection --steps 20 -o " + (dir / "backlit.exr").string());
+  // (120 steps: each within τ = 0.5, or the march's steps are warned of too.)
+  Result shallow = run("nebula render " + backlit + " --method projection --steps 120 -o " + (dir / "backlit.exr").string());
   ASSERT_EQ(shallow.exitCode, 0) << shallow.err;
   EXPECT_NE(shallow.err.find("prism: warning: up to 100 % of a pixel's star light reaches the camera through more dust "
                              "than the basis is fitted for"), std::string::npos) << shallow.err;
-  Result deep = run("nebula render " + backlit + " --method projection --steps 20 --basis 6 --basis-depth 16 -o " +
+  Result deep = run("nebula render " + backlit + " --method projection --steps 120 --basis 6 --basis-depth 16 -o " +
                     (dir / "backlit.exr").string());
   ASSERT_EQ(deep.exitCode, 0) << deep.err;
   EXPECT_EQ(deep.err.find("warning"), std::string::npos) << deep.err;

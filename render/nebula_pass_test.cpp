@@ -104,8 +104,8 @@ void expectTwins(const Frame& f, const char* what) {
 
 // A scene's nebula lit from behind through thick dust sends its light beyond the projection
 // basis (nebula_basis_coverage.h): its precomputation says so in one line naming the scene, and
-// says nothing once the section's basis is fitted as deep as it advises. No GPU: the precomputation
-// is the CPU's.
+// says nothing once the section's basis is fitted as deep as it advises (120 steps, each within
+// τ = 0.5: the march's steps are not warned of). No GPU: the precomputation is the CPU's.
 TEST(NebulaPass, ThePrecomputationWarnsOfLightBeyondTheBasis) {
   auto warning = [](const std::string& basis) {
     const std::string json = fmt::format(R"json({{
@@ -114,7 +114,7 @@ TEST(NebulaPass, ThePrecomputationWarnsOfLightBeyondTheBasis) {
   "nebula": {{
     "density": {{"noise": {{"resolution": 16, "seed": 7, "bias": 0.8}}}}, "extinction": 25, "scattering": 1, "emission": 0,
     "stars": [{{"position": [0.5, 0.5, 1.4], "temperature": 12000}}], "filters": "cie1931",
-    "box": {{"min": [-2, -2, -2], "size": 4}}, "method": "projection"{}
+    "box": {{"min": [-2, -2, -2], "size": 4}}, "method": "projection", "steps": 120{}
   }}
 }})json", basis);
     const Scene scene = loadScene(writeTempFile("nebula_backlit.json", json));

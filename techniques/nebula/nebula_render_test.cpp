@@ -34,8 +34,8 @@ struct Errors {
 };
 
 // The analytic method's one approximation is each star's spectrum (scattered through P_σ) as its
-// fit P_L: a pixel sums the stars' light, so it stays within the worst star's fit error (≤ 5e-4
-// over 3 000–50 000 K, NebulaSpectra.StarFitAndNormalisation), plus 1e-5 for float's rounding and
+// fit P_L: a pixel sums the stars' light, so it stays within the worst star's fit error (≤ 1e-4
+// over 1 000–100 000 K, NebulaSpectra.StarFitAndNormalisation), plus 1e-5 for float's rounding and
 // the reference's own convergence.
 double analyticBound(const NebulaModel& m) {
   double worst = 0.0;

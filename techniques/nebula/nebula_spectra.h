@@ -46,9 +46,10 @@ struct PiecewisePolynomial {
 
 // Least-squares fit of samples (λ in µm, value) over [loUm, hiUm] by `pieceCount` equal pieces of
 // degree `degree`, each solved in the piece's own variable s ∈ [−1, 1] (well conditioned) and
-// expanded to powers of λ in double.
+// expanded to powers of λ in double. `relative`: each sample weighted by 1/|value| (the relative
+// error's least squares).
 PiecewisePolynomial fitPiecewisePolynomial(std::span<const double> lambdaUm, std::span<const double> values,
-                                           double loUm, double hiUm, int pieceCount, int degree);
+                                           double loUm, double hiUm, int pieceCount, int degree, bool relative = false);
 
 // The product of two polynomials (degrees adding up to ≤ kMaxDegree), on a's interval; and of two
 // piecewise ones, on the intersections of their pieces.
@@ -131,6 +132,9 @@ struct StarSpectrum {
 };
 // The star's normalisation alone (no P_σ, no fit): what shape() needs, for the light it sheds.
 StarSpectrum starShape(double temperatureK, StarModel model);
+// Its fit P_L: quintic pieces, as many as hold the spectrum (times P_σ) within 1e-4 relative, up
+// to kMaxStarFitPieces.
+inline constexpr int kMaxStarFitPieces = 16;
 StarSpectrum makeStarSpectrum(double temperatureK, StarModel model, const PolynomialPiece& scattering = greyScattering());
 
 // An emission line of ionised gas: a Dirac at λ (vacuum, µm) with a weight.

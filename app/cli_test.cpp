@@ -247,6 +247,7 @@ TEST(Cli, RenderChecksItsInputBeforeRendering) {
   const std::string scenes = PRISM_SCENES_DIR;
   expectOneLineError("render " + scenes + "/missing.json -o x.png", "missing.json");
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.jpg", "x.jpg: the output must be a .png or an .exr");
+  expectOneLineError("render " + scenes + "/spheres_d65.json -o ''", "an output's file name is empty");
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --mode rainbow", "mode: expected rgb, naive, jakob-hanika, reference or optimised4, got \"rainbow\"");
   expectOneLineError("render " + scenes + "/spheres_d65.json -o x.png --wavelengths 6", "multiple of 4");
   // Sampling options a mode would ignore, without a word, before.
@@ -418,6 +419,9 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   const std::string scene = scenes + "/spheres_d65.json";
   expectOneLineError("reference " + scenes + "/missing.json -o x.exr", "missing.json");
   expectOneLineError("reference " + scene + " -o x.jpg", "x.jpg: the output must be a .png or an .exr");
+  expectOneLineError("reference " + scene + " -o ''", "an output's file name is empty");
+  expectOneLineError("compare a.exr b.exr --heatmap ''", "--heatmap: an output's file name is empty");
+  expectOneLineError("compare a.exr b.exr --histogram '' --scale-max 5", "--histogram: an output's file name is empty");
   expectOneLineError("reference " + scene + " -o x.exr --variance v.png", "v.png: the variance image must be an .exr");
   expectOneLineError("reference " + scene + " -o x.exr --spp 0", "--spp must be within 1–1048576");
   expectOneLineError("reference " + scene + " -o x.exr --transport photons", "unknown light transport \"photons\"");

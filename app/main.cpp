@@ -347,8 +347,11 @@ int main(int argc, char** argv) {
   auto* compareCmd = app.add_subcommand("compare", "CIEDE2000 and MAE between a reference and a test image (EXR or PNG)");
   compareCmd->add_option("reference", cmp.reference, "reference image (.exr XYZ or linear sRGB, or 8-bit .png)")->required();
   compareCmd->add_option("test", cmp.test, "test image, the same size")->required();
-  compareCmd->add_option("--heatmap", cmp.heatmap, "write a ΔE00 heat map (PNG)");
-  compareCmd->add_option("--histogram", cmp.histogram, "write a ΔE00 histogram (PNG)");
+  // An empty name is not "no heat map" (it was, exit 0, and --scale-max then said none was asked for).
+  const CLI::Validator nonEmptyFileName(
+      [](std::string& name) { return name.empty() ? std::string("an output's file name is empty") : std::string(); }, "");
+  compareCmd->add_option("--heatmap", cmp.heatmap, "write a ΔE00 heat map (PNG)")->check(nonEmptyFileName);
+  compareCmd->add_option("--histogram", cmp.histogram, "write a ΔE00 histogram (PNG)")->check(nonEmptyFileName);
   auto* whiteOpt = compareCmd->add_option("--white", cmpWhite,
                                           "luminance of white for linear images (default: the file's display white, else 1)");
   compareCmd->add_option("--threshold", cmp.threshold, "ΔE00 above which a pixel fails")->capture_default_str();

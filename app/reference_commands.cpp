@@ -111,6 +111,7 @@ reference::ReferenceSettings referenceSettings(const ReferenceOptions& o) {
 }
 
 void checkReferenceOutputs(const std::filesystem::path& output, const std::filesystem::path& variance) {
+  if (output.empty()) throw Error("an output's file name is empty");
   if (lowercaseExtension(output) != ".png" && lowercaseExtension(output) != ".exr") {
     throw Error(fmt::format("{}: the output must be a .png or an .exr file", output.string()));
   }

@@ -38,12 +38,12 @@ render::FrameSettings frameSettings(const SettingsOptions& o) {
 
 void renderToFile(const Scene& scene, const render::FrameSettings& settings, int frames,
                   const std::filesystem::path& output, bool progress) {
+  requireWritable(output);  // first, so that an empty name is said to be one
   std::string extension = lowercaseExtension(output);
   if (extension != ".png" && extension != ".exr") {
     throw Error(fmt::format("{}: the output must be a .png or an .exr file", output.string()));
   }
   if (frames < 1) throw Error("--frames: must be at least 1");
-  requireWritable(output);
   requireNotSceneInput(output, scene);
   render::requireLightCount(scene);  // the renderer's own check, before the work ahead of it
   gpu::HeadlessContext context;

@@ -53,7 +53,7 @@ void addNebulaCommands(CLI::App& app) {
   nebRenderCmd->add_option("--steps", o->render.steps, "ray steps (default: the scene's)");
   nebRenderCmd->add_option("--filters", o->render.filters, "hubble or cie1931 (default: the scene's)");
   nebRenderCmd->add_option("--basis", o->render.basisSize,
-                           "projection, light-density: elements of the exp(-a/λ) basis (1..6, default 4, the most accurate)");
+                           "projection, light-density: elements of the exp(-a/λ) basis (1..6, default 4; more: more accurate, a moment more per pixel and star)");
   nebRenderCmd->add_option("--basis-depth", o->render.basisDepthUm,
                            "projection, light-density: the optical depth (µm) the basis is fitted up to (0..16, default 2)");
   nebRenderCmd->add_option("--light-basis", o->render.lightBasisSize, "light-density: elements of the 2D light basis (1..16, default 8)");

@@ -574,6 +574,11 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
                     (dir / "backlit.exr").string());
   ASSERT_EQ(deep.exitCode, 0) << deep.err;
   EXPECT_EQ(deep.err.find("warning"), std::string::npos) << deep.err;
+  // A scene's passband edit that --filters' other set cannot take: said before the work, naming both.
+  std::ofstream(dir / "edited.json") << R"({"nebula": {"density": {"noise": {"resolution": 8}}, "stars": [],
+    "filters": "cie1931", "passbands": [{"shift_nm": 120}, {}, {}]}})";
+  expectOneLineError("nebula render " + (dir / "edited.json").string() + " --filters hubble -o x.exr",
+                     "edited.json: /nebula/passbands: under --filters hubble: passband FQ672N");
   expectOneLineError("nebula render " + tiny + " --method spline -o x.png", "unknown nebula method 'spline'");
   expectOneLineError("nebula render " + tiny + " -o x.jpg", "x.jpg: the output must be .exr or .png");
   expectOneLineError("nebula render " + (dir / "bad.json").string() + " -o x.png", "bad.json: /nebula/stars/0/position");

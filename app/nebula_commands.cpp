@@ -61,6 +61,19 @@ void requireFilterSet(const std::string& filters) {
     throw Error(fmt::format("--filters: '{}' is not hubble or cie1931", excerpt(filters)));
 }
 
+// --filters over the scene's own set. The scene's passband edits are per channel, so they move
+// the other set's passbands: one that leaves nothing of its passband is the scene's error, said
+// before the work (it came after the precomputation, naming neither the scene nor --filters).
+void overrideFilters(nebula::NebulaSceneFile& file, const std::filesystem::path& scene, const std::string& filters) {
+  if (filters.empty()) return;
+  try {
+    nebula::editedFilterSet(nebula::filterSet(filters), file.scene.model.passbands);
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: /nebula/passbands: under --filters {}: {}", scene.string(), filters, e.what()));
+  }
+  file.scene.model.filters = filters;
+}
+
 }  // namespace
 
 void runNebulaBasis(const NebulaBasisOptions& o) {
@@ -125,8 +138,8 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
   requireFilterSet(o.filters);
   nebula::NebulaSceneFile file = nebula::readNebulaScene(o.scene);
   requireOtherFile(o.plotFile, file.source.file, "the scene's density file");
+  overrideFilters(file, o.scene, o.filters);
   nebula::NebulaScene scene = generateWithProgress(std::move(file), o.threads);
-  if (!o.filters.empty()) scene.model.filters = o.filters;
   nebula::NebulaCamera& camera = scene.model.camera;
   if (o.size) nebula::scaleImage(camera, *o.size);
   s.steps = o.steps.value_or(scene.steps);
@@ -265,8 +278,8 @@ void runNebulaRender(const NebulaRenderOptions& o) {
     if (method == nebula::Method::LightDensity)
       nebula::requireMomentsFit(static_cast<std::size_t>(s.lightBasisSize), "light functions", s.basisSize, pixels);
   }
+  overrideFilters(file, o.scene, o.filters);
   nebula::NebulaScene scene = generateWithProgress(std::move(file), o.threads);
-  if (!o.filters.empty()) scene.model.filters = o.filters;
   s.steps = o.steps.value_or(scene.steps);
   s.emissionLines = !o.noLines;
   s.threads = o.threads;

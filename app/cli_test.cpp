@@ -283,11 +283,27 @@ TEST(Cli, WavelengthsOptimiseFitsAndReports) {
   ASSERT_EQ(again.exitCode, 0) << again.err;
   EXPECT_EQ(nlohmann::json::parse(again.out)["wavelengths_nm"], j["wavelengths_nm"]);
   EXPECT_EQ(again.err.find("warning"), std::string::npos) << again.err;
-  // A range too narrow for the scene's colours fits what it can, and says how far that is.
-  Result narrow = run("wavelengths optimise " + scenes + "/spheres_d65.json --wavelengths 4 --range 360,400");
+  // A range is the integral's, as for every strategy: four wavelengths within 360–400 nm show the
+  // light of that band as its 1 nm integral does (fitted to the whole 360–830 nm, they missed it
+  // by 48 ΔE00, and a reference over that band by as much), and every strategy is measured on it.
+  Result narrow = run("wavelengths optimise " + scenes + "/spheres_d65.json --wavelengths 4 --range 360,400 --json");
   ASSERT_EQ(narrow.exitCode, 0) << narrow.err;
-  EXPECT_NE(narrow.err.find("prism: warning: the 4 wavelengths fitted over 360–400 nm show this scene's surfaces"),
-            std::string::npos) << narrow.err;
+  EXPECT_EQ(narrow.err.find("warning"), std::string::npos) << narrow.err;
+  const nlohmann::json narrowReport = nlohmann::json::parse(narrow.out);
+  const nlohmann::json& banded = narrowReport["lights"][0]["delta_e2000"];
+  EXPECT_LT(banded["optimised"]["training_set"]["mean"].get<double>(), 1.0);
+  EXPECT_LT(banded["optimised"]["training_set"]["mean"].get<double>(), banded["uniform"]["training_set"]["mean"].get<double>());
+  // Too few wavelengths for the lights fit what they can, and say how far that is: four under A,
+  // a blue LED and F11 at once.
+  const std::string light = R"({"type": "directional", "direction": [0, -1, 0], "intensity": 1000, "spd": )";
+  const std::filesystem::path three = writeTemp("three_lights.json",
+      R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]}, "materials": {"grey": {"base_colour": [0.5, 0.5, 0.5]}},
+          "objects": [{"sphere": {"centre": [0, 0, 0], "radius": 1}, "material": "grey"}], "lights": [)" +
+      light + R"("A"}, )" + light + R"("led:450:20"}, )" + light + R"("F11"}]})");
+  Result few = run("wavelengths optimise " + three.string() + " --wavelengths 4");
+  ASSERT_EQ(few.exitCode, 0) << few.err;
+  EXPECT_NE(few.err.find("prism: warning: the 4 wavelengths fitted over 360–830 nm show this scene's surfaces"),
+            std::string::npos) << few.err;
 }
 
 // One test for everything that needs the 64³ upsampling table (built once per build folder,

@@ -28,7 +28,7 @@ void fitOptimisedWavelengths(const Scene& scene, const render::FrameSettings& se
   if (error.mean > kVisibleFitError)
     fmt::print(stderr,
                "prism: warning: the {} wavelengths fitted over {:g}–{:g} nm show this scene's surfaces under its lights "
-               "{:.1f} ΔE00 from the 1 nm integral on average (worst {:.1f}): more wavelengths or a wider range\n",
+               "{:.1f} ΔE00 from the 1 nm integral over that range on average (worst {:.1f}): more wavelengths\n",
                set.lambdaNm.size(), sampling.minNm, sampling.maxNm, error.mean, error.max);
 }
 

@@ -69,9 +69,11 @@ WavelengthReport wavelengthReport(const Scene& scene, const render::FrameSetting
         l.light = sceneLight.spdLabel;
         break;
       }
+    // Against the integral over the range, which every strategy's frames estimate.
+    const Spectrum banded = lightWithinRange(light, sampling.minNm, sampling.maxNm);
     auto add = [&](std::string name, const WavelengthSampler& sampler, int frames) {
-      l.strategies.push_back({std::move(name), errors(sampler, frames, light, chart, obs),
-                              errors(sampler, frames, light, problem.reflectances, obs)});
+      l.strategies.push_back({std::move(name), errors(sampler, frames, banded, chart, obs),
+                              errors(sampler, frames, banded, problem.reflectances, obs)});
     };
     add("optimised", optimised, 1);
     add("uniform", uniformSampler, 1);

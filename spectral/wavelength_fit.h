@@ -43,6 +43,8 @@ struct WavelengthFitProblem {
   std::vector<Spectrum> lights;        // each light's SPD (any scale), fitted alone
   std::vector<Spectrum> reflectances;  // the training surfaces
   int count = 16;                      // n, a multiple of 4 within 4–kMaxFittedWavelengths
+  // The range: the wavelengths lie in it, and the truth is the integral over it alone (what the
+  // other strategies' frames estimate; the lights' whites too).
   double minNm = kLambdaMinNm;
   double maxNm = kLambdaMaxNm;
 };
@@ -54,6 +56,10 @@ using FitProgress = std::function<void(std::size_t done, std::size_t total)>;
 FittedWavelengths fitWavelengths(const WavelengthFitProblem& problem, const Observer& obs,
                                  const FitProgress& progress = {});
 
+// The light zero beyond the range's whole-nm nodes: what a frame sampled within [minNm, maxNm]
+// integrates, whatever its strategy, and so the truth it is measured against.
+Spectrum lightWithinRange(const Spectrum& light, double minNm, double maxNm);
+
 // The white a light's colours are put into CIELAB against, for the fit and every report of it: the
 // light's XYZ under `obs`, each channel at least 1e-6 of its Y, as CIELAB takes it (labWhite,
 // colour_difference.h). A light that a channel all but misses (a far-red LED's Z, 1e-81 of its Y)
@@ -61,7 +67,7 @@ FittedWavelengths fitWavelengths(const WavelengthFitProblem& problem, const Obse
 Eigen::Vector3d fitWhite(const Spectrum& light, const Observer& obs);
 
 // The mean and largest ΔE00 of a set over the problem's lights × reflectances (CIELAB relative to
-// each light's perfect white, fitWhite).
+// each light's perfect white, fitWhite; truth and white over the problem's range).
 struct FitError {
   double mean = 0.0;
   double max = 0.0;

@@ -225,7 +225,8 @@ double relativeError(const Renderer& renderer, const std::vector<float>& truth) 
 }
 
 // The post pass (post.frag) against its CPU twin (encodeForDisplay) over a whole frame of the
-// blue LED, whose over-range wall goes through keepHue's bisection: within 2 of 255 everywhere.
+// blue LED, whose over-range wall goes through keepHue's bisection: within 1 of 255 everywhere (a
+// last-bit difference may round to the next byte; measured 0).
 TEST(Renderer, PostPassMatchesItsCpuTwin) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kScenes / "spheres_blue_led.json");
@@ -247,7 +248,7 @@ TEST(Renderer, PostPassMatchesItsCpuTwin) {
     }
   }
   std::printf("post pass vs CPU twin: at most %d of 255 apart\n", worst);
-  EXPECT_LE(worst, 2);
+  EXPECT_LE(worst, 1);
 }
 
 TEST(Renderer, StratifiedAccumulationConvergesToTheReference) {

@@ -59,7 +59,11 @@ TEST(PrtSky, TexelsAreTheAtmospheresSingleScatteringSeenFromTheGround) {
     }
   }
   std::printf("tabulated sky against the atmosphere's double-precision single scattering: worst %.3g relative\n", worst);
-  EXPECT_LT(worst, 0.02);  // the tables' float integration (the atmosphere's own tests bound it at 2 %)
+  // The tables' float integration, which the atmosphere's own tests hold to 1e-3
+  // (AtmosphereTables.SingleScatteringMatchesTheReference), and as much again for the grid's lookup
+  // between texels and 10 nm nodes (measured 7.8e-4 in all; the bound was 2 %, named after a 2 % the
+  // atmosphere's tests do not hold).
+  EXPECT_LT(worst, 2e-3);
 }
 
 TEST(PrtSky, TheSunsDiscIsTheSolarSpectrumThroughTheAtmosphere) {

@@ -104,6 +104,34 @@ TEST(AtmospherePass, TablesMatchTheDoublePrecisionReference) {
   }
 }
 
+// Multiple scattering (the Ψ_ms table) on the GPU against its CPU twin, texel by texel: the
+// sky-view tests turn it off, so nothing else looks at the GPU's table.
+TEST(AtmospherePass, MultipleScatteringMatchesItsCpuTwin) {
+  gpu::HeadlessContext context;
+  AtmosphereParameters p;
+  p.multipleScattering = true;
+  shared::GpuAtmosphere batch = packAtmosphere(p, glm::vec4(360.0f, 440.0f, 550.0f, 680.0f));
+  const AtmosphereTables cpu = computeTables(batch);
+  atmosphere::AtmospherePass pass;
+  atmosphere::AtmosphereView view;
+  view.originKm = float(p.bottomRadiusKm) + 0.2f;
+  pass.update({batch}, view);
+  const std::vector<glm::vec4> gpuTable = readTexels(pass).multipleScattering[0];
+  ASSERT_EQ(gpuTable.size(), cpu.multipleScattering.size());
+  ASSERT_FALSE(gpuTable.empty());
+  double worst = 0.0;
+  for (int j = 0; j < 4; ++j) {
+    double peak = 0.0;
+    for (const glm::vec4& c : cpu.multipleScattering) peak = std::max(peak, double(c[j]));
+    ASSERT_GT(peak, 0.0);
+    for (std::size_t i = 0; i < gpuTable.size(); ++i)
+      worst = worstOf(worst, std::abs(double(gpuTable[i][j]) - double(cpu.multipleScattering[i][j])) /
+                                 std::max(double(cpu.multipleScattering[i][j]), 1e-3 * peak));
+  }
+  std::printf("multiple scattering, GPU vs CPU twin: max relative %.3g (floored at 1e-3 of each channel's peak)\n", worst);
+  EXPECT_LE(worst, 1e-4);
+}
+
 // The sky's irradiance coefficients (a compute pass over 192 × 216 cells of the sky-view table's
 // own coordinates) against the same projection of the read-back table integrated on the CPU in
 // double over 960 × 1080 cells; and the aerial-perspective volume (single scattering only) against the reference

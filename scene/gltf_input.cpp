@@ -176,14 +176,15 @@ bool hasScheme(const std::string& uri) {
 
 // glTF's ids and sizes (a glTFid, byteOffset, count, …) are whole numbers ≥ 0 (glTF 2.0 §5):
 // tinygltf took "indices": -1 for none, drawing the mesh as a triangle soup, and a byteOffset of
-// −4 for 0. Numbers only: other types are tinygltf's to refuse; extras and extensions are free.
+// −4 for 0; and it dropped one of another type without a word ("material": "0" drew glTF's
+// default material, "mesh": "0" nothing). Extras and extensions are free.
 void checkIdsAndSizes(const Node& node) {
   static constexpr std::string_view kIds[] = {"indices",    "material",   "bufferView", "buffer",  "byteOffset",
                                               "byteLength", "byteStride", "count",      "source",  "sampler",
                                               "index",      "texCoord",   "mesh",       "camera",  "skin",
                                               "scene",      "nodes",      "children"};
   auto requireId = [](const Node& n) {
-    const double v = n.json().get<double>();
+    const double v = n.json().is_number() ? n.json().get<double>() : -1.0;
     if (!(v >= 0.0 && v == std::floor(v))) n.fail("expected a whole number ≥ 0, got " + schema::describe(n.json()));
   };
   if (!node.json().is_object()) return;
@@ -196,14 +197,77 @@ void checkIdsAndSizes(const Node& node) {
       if (ids) requireId(child);
     } else if (value.is_array()) {
       for (std::size_t i = 0; i < value.size(); ++i) {
-        if (!value[i].is_number()) checkIdsAndSizes(child.element(i));
-        else if (ids) requireId(child.element(i));
+        if (value[i].is_number()) {
+          if (ids) requireId(child.element(i));
+        } else if (ids && !value[i].is_object()) {  // objects: the top level's "nodes"
+          child.element(i).fail("expected a whole number ≥ 0, got " + schema::describe(value[i]));
+        } else {
+          checkIdsAndSizes(child.element(i));
+        }
       }
     } else if (key == "attributes" && value.is_object()) {
-      for (const std::string& attribute : child.keys())
-        if (child.child(attribute).json().is_number()) requireId(child.child(attribute));
+      for (const std::string& attribute : child.keys()) requireId(child.child(attribute));
+    } else if (ids) {
+      child.fail("expected a whole number ≥ 0, got " + schema::describe(value));
     } else {
       checkIdsAndSizes(child);
+    }
+  }
+}
+
+// The materials' and nodes' keys, their types and their arrays' lengths (glTF 2.0 §5.19, §5.25):
+// tinygltf dropped a value of the wrong type, or a misspelt key, without a word — the material fell
+// back to glTF's default white metal ("baseColorFactor": "red" or three numbers, a misspelt
+// "baseColourFactor", "metallicFactor": "0" rendered as metal), a node kept no transform
+// ("translation": "0,0,0") — and drew a node with both a matrix and translation, rotation or scale,
+// which glTF forbids, by its matrix alone.
+void checkMaterialsAndNodes(const Node& top) {
+  auto textureInfo = [](const Node& n, std::string_view factor) {
+    std::vector<std::string_view> keys{"index", "texCoord", "extensions", "extras"};
+    if (!factor.empty()) keys.push_back(factor);
+    n.expectObject(keys);
+    n.child("index");  // required
+    if (!factor.empty() && n.has(factor)) n.child(factor).number();
+  };
+  if (auto materials = top.optionalChild("materials")) {
+    for (std::size_t i = 0; i < materials->arraySize(); ++i) {
+      const Node m = materials->element(i);
+      m.expectObject({"name", "extensions", "extras", "pbrMetallicRoughness", "normalTexture", "occlusionTexture",
+                      "emissiveTexture", "emissiveFactor", "alphaMode", "alphaCutoff", "doubleSided"});
+      if (auto pbr = m.optionalChild("pbrMetallicRoughness")) {
+        pbr->expectObject({"baseColorFactor", "baseColorTexture", "metallicFactor", "roughnessFactor",
+                           "metallicRoughnessTexture", "extensions", "extras"});
+        if (pbr->has("baseColorFactor")) pbr->child("baseColorFactor").numbers(4);
+        for (const char* factor : {"metallicFactor", "roughnessFactor"})
+          if (pbr->has(factor)) pbr->child(factor).number();
+        for (const char* texture : {"baseColorTexture", "metallicRoughnessTexture"})
+          if (pbr->has(texture)) textureInfo(pbr->child(texture), "");
+      }
+      if (m.has("normalTexture")) textureInfo(m.child("normalTexture"), "scale");
+      if (m.has("occlusionTexture")) textureInfo(m.child("occlusionTexture"), "strength");
+      if (m.has("emissiveTexture")) textureInfo(m.child("emissiveTexture"), "");
+      if (m.has("emissiveFactor")) m.child("emissiveFactor").numbers(3);
+      if (m.has("alphaMode")) {
+        const Node mode = m.child("alphaMode");
+        const std::string name = mode.string();
+        if (name != "OPAQUE" && name != "MASK" && name != "BLEND")
+          mode.fail("expected OPAQUE, MASK or BLEND, got " + schema::describe(mode.json()));
+      }
+      if (m.has("alphaCutoff")) m.child("alphaCutoff").number();
+      if (m.has("doubleSided")) m.child("doubleSided").boolean();
+    }
+  }
+  if (auto nodes = top.optionalChild("nodes")) {
+    for (std::size_t i = 0; i < nodes->arraySize(); ++i) {
+      const Node n = nodes->element(i);
+      n.expectObject({"camera", "children", "skin", "matrix", "mesh", "rotation", "scale", "translation", "weights",
+                      "name", "extensions", "extras"});
+      if (n.has("matrix")) n.child("matrix").numbers(16);
+      if (n.has("translation")) n.child("translation").numbers(3);
+      if (n.has("rotation")) n.child("rotation").numbers(4);
+      if (n.has("scale")) n.child("scale").numbers(3);
+      if (n.has("matrix") && (n.has("translation") || n.has("rotation") || n.has("scale")))
+        n.child("matrix").fail("a node has a matrix or translation, rotation and scale, not both (glTF 2.0 §5.25)");
     }
   }
 }
@@ -321,6 +385,7 @@ tinygltf::Model loadGltfModel(const fs::path& file, const fs::path& root, std::v
   fs::path base = file.parent_path().empty() ? fs::path(".") : file.parent_path();
   checkUris(top, root, base);
   checkIdsAndSizes(top);
+  checkMaterialsAndNodes(top);
 
   Guard guard{root, {}, -1, {}, {}};
   tinygltf::TinyGLTF loader;

@@ -567,7 +567,7 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   expectOneLineError("nebula basis --spacing 3", "--spacing 3: need a spacing within [0, --max-exponent] = [0, 2] µm");
   std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "nebula_cli";
   std::filesystem::create_directories(dir);
-  std::ofstream(dir / "tiny.json") << R"({"nebula": {"density": {"noise": {"resolution": 8}},
+  std::ofstream(dir / "tiny.json") << R"({"nebula": {"density": {"noise": {"resolution": 16}},
     "stars": [{"position": [0.5, 0.5, 0.5], "temperature": 9000}], "camera": {"width": 8, "height": 8}}})";
   std::ofstream(dir / "bad.json") << R"({"nebula": {"density": {"noise": {}}, "stars": [{"position": [0, 0]}]}})";
   const std::string tiny = (dir / "tiny.json").string();
@@ -575,9 +575,17 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   ASSERT_EQ(render.exitCode, 0) << render.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "tiny.png"));
   EXPECT_EQ(render.err.find("warning"), std::string::npos) << render.err;  // its star lights the cloud from within
+  // A grid coarser than 16 voxels an axis is said to make an image of its own (the stars' optical
+  // depths are kept per voxel of it).
+  std::ofstream(dir / "coarse.json") << R"({"nebula": {"density": {"noise": {"resolution": 4}},
+    "stars": [{"position": [0.5, 0.5, 0.5], "temperature": 9000}], "camera": {"width": 8, "height": 8}}})";
+  Result coarse = run("nebula render " + (dir / "coarse.json").string() + " --steps 20 -o " + (dir / "coarse.png").string());
+  ASSERT_EQ(coarse.exitCode, 0) << coarse.err;
+  EXPECT_NE(coarse.err.find("prism: warning: the density grid is 4×4×4: each star's optical depth is kept per voxel"),
+            std::string::npos) << coarse.err;
   // Lit from behind through thick dust, projection's light lies beyond its basis: one line says so
   // (nebula_basis_coverage.h), and a basis fitted deeper, as it advises, says nothing.
-  std::ofstream(dir / "backlit.json") << R"({"nebula": {"density": {"noise": {"resolution": 8, "bias": 0.8}},
+  std::ofstream(dir / "backlit.json") << R"({"nebula": {"density": {"noise": {"resolution": 16, "bias": 0.8}},
     "extinction": 25, "emission": 0, "stars": [{"position": [0.5, 0.5, 1.4], "temperature": 9000}],
     "camera": {"width": 8, "height": 8}}})";
   const std::string backlit = (dir / "backlit.json").string();

@@ -290,7 +290,8 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   nebula::NebulaRenderer renderer(std::move(scene.model), s, [&bar](std::size_t d, std::size_t n) { bar.update(d, n); });
   auto t1 = std::chrono::steady_clock::now();
   const nebula::BasisCoverage coverage = nebula::basisCoverage(renderer, s, renderer.model().camera);
-  for (const std::string& warning : {nebula::stepThicknessWarning(coverage, s, "--steps {:.0f}"),
+  for (const std::string& warning : {nebula::coarseGridWarning(renderer.model().density),
+                                     nebula::stepThicknessWarning(coverage, s, "--steps {:.0f}"),
                                      nebula::basisCoverageWarning(coverage, s, "--basis-depth {:.0f} --basis 6")})
     if (!warning.empty()) fmt::print(stderr, "prism: warning: {}\n", warning);
   nebula::NebulaImage image;

@@ -29,6 +29,14 @@ TrilinearAxis trilinearAxis(double u, int n) {
   return axis;
 }
 
+std::string coarseGridWarning(const DensityGrid& grid) {
+  if (std::min({grid.nx, grid.ny, grid.nz}) >= kFineGridVoxels) return "";
+  return fmt::format("the density grid is {}×{}×{}: each star's optical depth is kept per voxel of it, so a grid of "
+                     "fewer than {} voxels an axis gives an image of its own (a uniform cloud 5 % darker at 8³, 30 % "
+                     "at 2³ than at 64³); a finer grid of the same density fixes it",
+                     grid.nx, grid.ny, grid.nz, kFineGridVoxels);
+}
+
 double DensityGrid::sample(const glm::dvec3& p) const {
   if (p.x < 0.0 || p.y < 0.0 || p.z < 0.0 || p.x > 1.0 || p.y > 1.0 || p.z > 1.0) return 0.0;
   const TrilinearAxis ax = trilinearAxis(p.x, nx), ay = trilinearAxis(p.y, ny), az = trilinearAxis(p.z, nz);

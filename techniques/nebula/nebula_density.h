@@ -15,6 +15,7 @@
 #include <functional>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -40,6 +41,14 @@ struct DensityGrid {
   // Trilinear between voxel centres, clamped at the faces; 0 outside the unit cube.
   double sample(const glm::dvec3& p) const;
 };
+
+// One line for stderr when the grid has fewer than kFineGridVoxels voxels along an axis ("" else):
+// each star's optical depth is kept per voxel of the density grid (nebula_precomputed.h), so a
+// coarse grid makes an image of its own. A new-user review's uniform cloud, three stars, Hubble
+// palette, reference, the image's B: 64³ 0.1066, 32³ 0.1062, 8³ 0.1005, 4³ 0.0916, 2³ 0.0725,
+// 1³ 0.175 (its brightest pixel 6× the converged one).
+inline constexpr int kFineGridVoxels = 16;
+std::string coarseGridWarning(const DensityGrid& grid);
 
 // fBm over Perlin's improved noise (Perlin 2002): Σ_{o<octaves} gainᵒ·noise(frequency·2ᵒ·p),
 // scaled by `amplitude`, plus `bias`, shaped by a radial falloff so that the cloud fades before

@@ -637,7 +637,7 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   expectOneLineError("nebula render " + tiny + " -o x.exr --basis-depth 20", "--basis-depth: 20 is not within (0, 16] µm");
   expectOneLineError("nebula render " + tiny + " -o x.exr --method analytic --basis-depth 4",
                      "--basis-depth 4: only with --method projection or light-density; analytic projects on no basis");
-  expectOneLineError("nebula render " + tiny + " -o x.exr --uniform-samples 1", "--uniform-samples: 1 is not within 2..1000");
+  expectOneLineError("nebula render " + tiny + " -o x.exr --uniform-samples 1", "--uniform-samples: 1 is not 0 (Simpson) or within 2..1000");
   expectOneLineError("nebula render " + tiny + " -o x.exr --reference-intervals 3", "--reference-intervals: 3 is odd (Simpson's rule takes pairs)");
   expectOneLineError("nebula render " + tiny + " -o x.exr --uniform-samples 7",
                      "--uniform-samples 7: only with --method reference");

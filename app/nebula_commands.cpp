@@ -230,7 +230,9 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   requireWithin("--reference-intervals", o.referenceIntervals, 2, nebula::kMaxReferenceIntervals);
   if (o.referenceIntervals && *o.referenceIntervals % 2 != 0)
     throw Error(fmt::format("--reference-intervals: {} is odd (Simpson's rule takes pairs)", *o.referenceIntervals));
-  if (o.uniformSamples != 0) requireWithin("--uniform-samples", o.uniformSamples, 2, nebula::kMaxUniformSamples);
+  if (o.uniformSamples != 0 && (o.uniformSamples < 2 || o.uniformSamples > nebula::kMaxUniformSamples))
+    throw Error(fmt::format("--uniform-samples: {} is not 0 (Simpson) or within 2..{}", o.uniformSamples,
+                            nebula::kMaxUniformSamples));
   nebula::RenderSettings s;
   s.method = method;
   s.steps = o.steps.value_or(s.steps);
@@ -379,7 +381,7 @@ double medianGpuMs(gpu::GpuTimer& timer, int repeats, nebula::NebulaGpuMarcher& 
 
 void runNebulaBench(const NebulaBenchOptions& o) {
   const int repeats = o.repeats;
-  if (repeats < 1) throw Error("nebula bench: --repeats must be ≥ 1");
+  if (repeats < 1 || repeats > 1000) throw Error("nebula bench: --repeats must be 1 to 1000");
   if (o.size < 1 || o.size > 8192) throw Error("nebula bench: --size must be 1 to 8192 pixels");
   gpu::HeadlessContext context;
   gpu::GpuTimer timer;

@@ -55,7 +55,7 @@ void checkParts(const std::vector<std::filesystem::path>& files, const std::vect
     const auto other = headers[i].identity();
     for (std::size_t k = 0; k < identity.size(); ++k) {
       if (other[k].second != identity[k].second) {
-        throw Error(fmt::format("merge: {} is a part of another render: its {} is \"{}\", {}'s is \"{}\"",
+        throw Error(fmt::format("merge: {} is a part of another render: its {}: \"{}\"; {}'s: \"{}\"",
                                 files[i].string(), identity[k].first, excerpt(other[k].second),
                                 files.front().string(), excerpt(identity[k].second)));
       }

@@ -192,15 +192,15 @@ TEST_F(ReferenceParts, PartsOfAnotherRenderAreRefused) {
   reference::ReferenceSettings otherSeed = settings();
   otherSeed.seed = 6;
   std::filesystem::path a = part("a", {0, 8, 0, 12}), b = part("b", {8, 16, 0, 12}, otherSeed);
-  EXPECT_EQ(mergeError({a, b}), "merge: " + b.string() + " is a part of another render: its seed is \"6\", " +
-                                    a.string() + "'s is \"5\"");
+  EXPECT_EQ(mergeError({a, b}), "merge: " + b.string() + " is a part of another render: its seed: \"6\"; " +
+                                    a.string() + "'s: \"5\"");
   reference::ReferenceSettings global = settings();
   global.transport = reference::LightTransport::Global;
   std::filesystem::path c = part("c", {8, 16, 0, 12}, global);
-  EXPECT_NE(mergeError({a, c}).find("its settings is \"transport=global"), std::string::npos) << mergeError({a, c});
+  EXPECT_NE(mergeError({a, c}).find("its settings: \"transport=global"), std::string::npos) << mergeError({a, c});
   std::filesystem::path d = mRoot / "d.exr";
   writeReferencePart(d, partHeader(kScene, {"lights.0.spd=F11"}, *sScene, settings(), {8, 16, 0, 12}, 9.0f), render({8, 16, 0, 12}));
-  EXPECT_NE(mergeError({a, d}).find("its scene is"), std::string::npos);
+  EXPECT_NE(mergeError({a, d}).find("its scene: "), std::string::npos);
 }
 
 TEST_F(ReferenceParts, AFileThatIsNotAWholePartIsRefused) {

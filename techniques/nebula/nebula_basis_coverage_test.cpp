@@ -1,7 +1,8 @@
 // The projection basis's reach (nebula_basis_coverage.h): a cloud whose stars sit inside it stays
 // within the family the basis was fitted for; the same cloud, thick and lit from behind, sends its
 // light through more dust than that, where projection misses the reference by far more than 2 % —
-// and a basis fitted as deep as the coverage says brings it back within 2 %.
+// and a basis fitted as deep as the coverage says brings it back within 2 %. And the march's steps:
+// a cloud too dense for them is said, with the step count that fits it.
 #include "techniques/nebula/nebula_basis_coverage.h"
 
 #include <cmath>
@@ -60,12 +61,6 @@ TEST(NebulaBasisCoverage, AThickCloudLitFromBehindNeedsADeeperBasis) {
   EXPECT_LE(deepCoverage.worstShare, 0.01);  // fitted to where 99 % of each ray's light arrives: no warning
   EXPECT_LE(deepError, 0.02);
 }
-
-}  // namespace
-}  // namespace prism::nebula
-
-namespace prism::nebula {
-namespace {
 
 // A glowing cloud so dense that a hundred steps are each about 5 optical depths thick at 380 nm:
 // every method takes a step's light at its middle, so the image comes out far too dark, and the

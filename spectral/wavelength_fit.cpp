@@ -50,13 +50,6 @@ double labSlope(double t) {  // d f(t) / dt, f CIELAB's cube root with its linea
   return t > kToe ? (1.0 / 3.0) * std::pow(t, -2.0 / 3.0) : 24389.0 / (27.0 * 116.0);
 }
 
-// The truth is the integral over the range alone, as every other strategy's frame estimates it (a
-// set fitted to the whole 360–830 nm from wavelengths within 500–600 nm showed a white sphere white
-// where the reference over that band shows it green: 27.7 mean ΔE00 apart).
-Spectrum withinRange(const Spectrum& light, const WavelengthFitProblem& problem) {
-  return lightWithinRange(light, problem.minNm, problem.maxNm);
-}
-
 // The training set on the whole-nm nodes of the range, ready for evaluations.
 class FitData {
  public:
@@ -65,7 +58,10 @@ class FitData {
     nodes_ = static_cast<int>(std::floor(problem.maxNm)) - first_ + 1;
     std::vector<Spectrum> lights;
     for (const Spectrum& light : problem.lights) {
-      Spectrum positive = withinRange(light, problem);
+      // The truth is the integral over the range alone, as every other strategy's frame estimates
+      // it (a set fitted to the whole 360–830 nm from wavelengths within 500–600 nm showed a white
+      // sphere white where the reference over that band shows it green: 27.7 mean ΔE00 apart).
+      Spectrum positive = lightWithinRange(light, problem.minNm, problem.maxNm);
       for (int i = 0; i < kSpectrumSamples; ++i) positive[i] = std::max(0.0, positive[i]);
       double y = obs.integrate(positive).y();
       if (y > 0.0) lights.push_back(positive * (1.0 / y));  // white Y = 1
@@ -344,7 +340,7 @@ FitError fitError(const FittedWavelengths& set, const WavelengthFitProblem& prob
   FitError error;
   std::size_t count = 0;
   for (const Spectrum& unbanded : problem.lights) {
-    const Spectrum light = withinRange(unbanded, problem);
+    const Spectrum light = lightWithinRange(unbanded, problem.minNm, problem.maxNm);
     const Eigen::Vector3d white = fitWhite(light, obs);
     if (white.y() <= 0.0) continue;
     for (const Spectrum& reflectance : problem.reflectances) {

@@ -226,13 +226,20 @@ NebulaRenderer::NebulaRenderer(NebulaModel model, const RenderSettings& s,
     gaussLegendre(kLightNodes, kBandLoUm, kBandHiUm, nodes, weights);
     const int aCount = 41, tCount = 5, gCount = 24, familyTemps = tMax > tMin ? 8 : 1;
     const double aMax = exponentMaxUm;
+    // The family's stars, once each (their spectra, not their fits P_L: the basis is fitted to
+    // the light itself).
+    std::vector<StarSpectrum> familyStars;
+    for (int t = 0; t < familyTemps; ++t) {
+      familyStars.push_back(starShape(familyTemps == 1 ? tMin : tMin * std::pow(tMax / tMin, t / (familyTemps - 1.0)),
+                                      m.starModel));
+      familyStars.back().scattering = m.scatteringSpectrum;
+    }
     Eigen::MatrixXd family(kLightNodes, gCount * familyTemps), candidates(kLightNodes, aCount * tCount);
     for (int q = 0; q < kLightNodes; ++q) {
       double l = nodes[static_cast<std::size_t>(q)];
       for (int t = 0; t < familyTemps; ++t) {
-        double temp = familyTemps == 1 ? tMin : tMin * std::pow(tMax / tMin, t / (familyTemps - 1.0));
-        StarSpectrum st = makeStarSpectrum(temp, m.starModel, m.scatteringSpectrum);
-        for (int g = 0; g < gCount; ++g) family(q, t * gCount + g) = st.at(l) * std::exp(-s.basisMaxDepthUm * g / (gCount - 1) / l);
+        const double light = familyStars[static_cast<std::size_t>(t)].at(l);
+        for (int g = 0; g < gCount; ++g) family(q, t * gCount + g) = light * std::exp(-s.basisMaxDepthUm * g / (gCount - 1) / l);
       }
       for (int t = 0; t < tCount; ++t)
         for (int a = 0; a < aCount; ++a) {

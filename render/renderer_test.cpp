@@ -325,26 +325,35 @@ TEST(Renderer, LightsStrategyFollowsTheLightsWhenTheSceneChanges) {
 }
 
 // A camera's matrix is fitted under the scene's lights (display_transform_test.cpp): when they
-// change, the display follows. Under the blue LED a D65 matrix showed the camera's image black.
+// change, the display follows, to the image a renderer built under the new lights shows. Under the
+// blue LED a D65 matrix showed the camera's image black.
 TEST(Renderer, ACameraImageFollowsTheLightsWhenTheSceneChanges) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(kScenes / "spheres_d65.json");
   FrameSettings settings = smallFrame(RenderMode::JakobHanika, 16);
   settings.observer = "nikon_d850";
+  settings.display.dither = false;
   Renderer renderer(scene, cachedTestTable(), settings);
-  auto meanBlue = [&] {
-    renderer.renderFrame();
-    const std::vector<std::uint8_t> rgba = renderer.readDisplayRgba8();
+  auto meanBlue = [](const std::vector<std::uint8_t>& rgba) {
     double sum = 0.0;
     for (std::size_t i = 2; i < rgba.size(); i += 4) sum += rgba[i];
     return sum / static_cast<double>(rgba.size() / 4);
   };
-  const double underD65 = meanBlue();
+  renderer.renderFrame();
+  const double underD65 = meanBlue(renderer.readDisplayRgba8());
   scene.lights[0].spd = normalisedLightSpectrum(illuminant("led:450:20"));
   renderer.sceneChanged();
-  const double underBlue = meanBlue();
-  std::printf("camera image, mean blue: D65 %.1f, blue LED %.1f\n", underD65, underBlue);
-  EXPECT_GT(underBlue, underD65);  // the blue LED lights the scene blue (a D65 matrix: 0.1)
+  renderer.renderFrame();
+  const std::vector<std::uint8_t> followed = renderer.readDisplayRgba8();
+  Renderer builtUnderBlue(scene, cachedTestTable(), settings);
+  builtUnderBlue.renderFrame();
+  const std::vector<std::uint8_t> expected = builtUnderBlue.readDisplayRgba8();
+  std::printf("camera image, mean blue: D65 %.1f, blue LED %.1f\n", underD65, meanBlue(followed));
+  EXPECT_GT(meanBlue(followed), underD65);  // the blue LED lights the scene blue (a D65 matrix: 0.1)
+  ASSERT_EQ(followed.size(), expected.size());
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < followed.size(); ++i) differing += followed[i] != expected[i] ? 1 : 0;
+  EXPECT_EQ(differing, 0u) << "bytes that differ from a renderer built under the blue LED";
 }
 
 TEST(Renderer, ForwardPassAddsLightGizmosWhereTheGBufferDoesNotHideThem) {

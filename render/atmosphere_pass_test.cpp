@@ -68,9 +68,14 @@ TEST(AtmospherePass, TablesMatchTheDoublePrecisionReference) {
   std::printf("transmittance, GPU vs double reference: max relative %.3g where T >= 1e-6 (%.3g everywhere)\n",
               worst, worstAll);
   // The CPU twin is held to the same reference in atmosphere_test; the two differ by the
-  // driver's exp() and summation order.
+  // driver's exp() and summation order, and most where rays graze the atmosphere's top, where
+  // float's r and μ move the path's length: 2.1e-4 on the top texel row, the same in all four
+  // channels (a length, not a spectrum; the twin is within 1e-5 of the reference there). Held
+  // within 5e-4, so that a formula changed on one side alone shows before it reaches the
+  // reference's 1e-3.
   std::printf("transmittance, GPU vs CPU twin: max relative optical depth %.3g\n", worstCpu);
   EXPECT_LE(worst, 1e-3);
+  EXPECT_LE(worstCpu, 5e-4);
 
   // Single scattering: sky-view texels above the horizon, for a low and a high sun.
   for (double elevationDeg : {5.0, 45.0}) {

@@ -5,16 +5,20 @@
 # leave its output folder empty (nothing half-written). ARGS are words separated by spaces, with
 # {F} for tests/bad_input/files, {S} for scenes/, {Z} for fuzz/corpus/ and {O} for an empty folder
 # made for the case; leading NAME=VALUE words are the command's environment. Lines starting with
-# # and blank lines are skipped. Prints every case that fails, then a count.
-# Usage: bad_input_test.sh PRISM CASES FILES SCENES FUZZ_CORPUS SCRATCH
+# # and blank lines are skipped. Prints every case that fails, then a count. PART/PARTS (say 1/2)
+# runs every PARTS-th case from the PART-th on, so that ctest runs the corpus's parts side by side.
+# Usage: bad_input_test.sh PRISM CASES FILES SCENES FUZZ_CORPUS SCRATCH [PART/PARTS]
 set -uo pipefail
-prism=$1 cases=$2 files=$3 scenes=$4 corpus=$5 scratch=$6
+prism=$1 cases=$2 files=$3 scenes=$4 corpus=$5 scratch=$6 share=${7:-1/1}
+part=${share%/*} parts=${share#*/}
 rm -rf "$scratch" && mkdir -p "$scratch"
 export PRISM_CACHE_DIR=${PRISM_CACHE_DIR:-$scratch/cache}
-total=0 failed=0 line_number=0
+total=0 failed=0 line_number=0 seen=0
 while IFS= read -r line || [ -n "$line" ]; do
   line_number=$((line_number + 1))
   [[ -z "$line" || "$line" == \#* ]] && continue
+  seen=$((seen + 1))
+  [ $(((seen - 1) % parts + 1)) = "$part" ] || continue
   total=$((total + 1))
   if ! [[ "$line" =~ ^([^|]*[^|\ ])\ \|\ ([^|]*[^|\ ])\ \|(\ (.*))?$ ]]; then
     echo "$cases:$line_number: not EXIT | ARGS | FRAGMENT"
@@ -48,5 +52,5 @@ while IFS= read -r line || [ -n "$line" ]; do
     echo "    stderr: $(head -c 400 "$out/stderr" | tr '\n' '|')"
   fi
 done <"$cases"
-echo "bad input: $((total - failed)) of $total cases give their one-line error and exit code"
+echo "bad input (part $share): $((total - failed)) of $total cases give their one-line error and exit code"
 [ "$total" -gt 0 ] && [ "$failed" = 0 ]

@@ -187,12 +187,17 @@ TEST_P(Golden, FrameStaysWithinDeltaE2000OfItsGolden) {
   imaging::PngImage expected = imaging::readPng8(golden);
   imaging::DifferenceStats d =
       imaging::compareImages(imaging::png8Input(expected), imaging::png8Input(image)).stats;
-  std::printf("%s: ΔE00 mean %.3f, p99 %.3f, max %.3f\n", name.c_str(), d.meanDeltaE,
-              d.p99DeltaE, d.maxDeltaE);
+  const double over = d.fractionAbove * static_cast<double>(d.pixelCount);
+  std::printf("%s: ΔE00 mean %.3f, p99 %.3f, max %.3f, %.0f pixels over %.0f\n", name.c_str(), d.meanDeltaE,
+              d.p99DeltaE, d.maxDeltaE, over, d.thresholdDeltaE);
   // Deterministic path (uniform wavelengths, no dither): only driver rounding may differ, and
-  // silhouettes and shadow edges may flip a pixel. Mean 0.2 and 99 % of pixels within 1 ΔE00.
+  // silhouettes and shadow edges may flip a pixel. Mean 0.2 and 99 % of pixels within 1 ΔE00,
+  // and at most 0.05 % over it (10 of 192 × 108 pixels: a few flipped edges; llvmpipe on
+  // another CPU flipped one of sunset's, 7.7 ΔE00), so that a small thing missing or misplaced,
+  // a light's marker, a far sphere, the sun's disc, fails where the percentile let 1 % go.
   EXPECT_LE(d.meanDeltaE, 0.2);
   EXPECT_LE(d.p99DeltaE, 1.0);
+  EXPECT_LE(d.fractionAbove, 5e-4);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Golden,

@@ -119,7 +119,7 @@ struct PrtProjection {
 PrtProjection projectSpectral(const std::vector<Spectrum>& reflectances, const Eigen::MatrixXd& environmentGrid,
                               const Observer& observer, const Eigen::MatrixXd& basis);
 // RGB-PRT in `space`: L̃ the environment's linear RGB per SH coefficient, R̂_c = albedo_c · primary
-// c's XYZ, albedos the reflectances' colours under CIE D65.
+// c's XYZ, albedos the reflectances' colours under CIE D65. Error under any observer but CIE 1931.
 PrtProjection projectRgb(const std::vector<Spectrum>& reflectances, const Eigen::MatrixXd& environmentGrid,
                          const Observer& observer, const RgbColourSpace& space);
 // The 5 nm reference: 81 deltas, R̂_i = f_r(λ_i) c̄(λ_i) · 5 nm, in chunks of 16.

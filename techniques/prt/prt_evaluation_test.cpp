@@ -90,6 +90,35 @@ TEST(SpectralPrt, SceneWhiteOfAUniformEnvironmentIsPiTimesItsColour) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(white[c] / expect[c], 1.0, 1e-5);  // float sums
 }
 
+TEST(SpectralPrt, ACamerasGreenOfAWhiteIsCie1931sLuminance) {
+  // Under a camera PRT's tristimulus is on the renderer's scale (absoluteTristimulusScale): a
+  // perfect white under a uniform D65 sky shows G equal to CIE 1931's Y, as the deferred
+  // pipeline and the path tracer show it. Raw curves gave the Nikon D850 0.85 of it. Within the
+  // 5 nm grid's sampling of curves the scale integrates at 1 nm.
+  const Eigen::MatrixXd grid = environmentOnGrid(uniformEnvironment("D65", illuminant("D65")));
+  const double y = sceneWhite(grid, cie1931Observer())[1];
+  for (const char* camera : {"nikon_d850", "sony_ilce_7m3", "canon_eos_5d_mkii"}) {
+    const double g = sceneWhite(grid, observer(camera))[1];
+    std::printf("%s: G of the white / CIE 1931's Y = %.5f\n", camera, g / y);
+    EXPECT_NEAR(g / y, 1.0, 5e-4) << camera;
+  }
+}
+
+TEST(RgbPrt, IsRefusedUnderAnyObserverButCie1931) {
+  // Its colours are a colour space's, on CIE 1931; a camera's RGB went through xyzToRgb as XYZ.
+  const Eigen::MatrixXd grid = environmentOnGrid(uniformEnvironment("D65", illuminant("D65")));
+  const std::vector<Spectrum> white = {Spectrum::constant(1.0)};
+  EXPECT_NO_THROW(projectRgb(white, grid, cie1931Observer(), colourSpace("srgb")));
+  for (const char* other : {"nikon_d850", "cie1964"}) {
+    try {
+      projectRgb(white, grid, observer(other), colourSpace("srgb"));
+      ADD_FAILURE() << other << " was not refused";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(other), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(SpectralPrt, ColourCheckerUnderF4AtEightFunctionsIsWithinDeltaE94OfOne) {
   // The bound (Schwenk et al.: m = 8 "indistinguishable" from 5 nm sampling, even
   // under F-series lamps): max ΔE94 ≤ 1 over the object; RGB-PRT is reported beside it and must

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "shared_cpp.h"
 #include "spectral/thin_svd.h"
 
 namespace prism::prt {
@@ -26,8 +27,9 @@ Eigen::VectorXd sampleOnGrid(const Spectrum& spectrum) {
 }
 
 Eigen::MatrixXd observerOnGrid(const Observer& observer) {
+  const double scale = absoluteTristimulusScale(observer) / double(shared::kLumensPerWatt);
   Eigen::MatrixXd cmf(kGridWavelengths, 3);
-  for (int i = 0; i < kGridWavelengths; ++i) cmf.row(i) = observer.at(gridWavelengthNm(i)).transpose();
+  for (int i = 0; i < kGridWavelengths; ++i) cmf.row(i) = observer.at(gridWavelengthNm(i)).transpose() * scale;
   return cmf;
 }
 

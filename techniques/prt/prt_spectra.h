@@ -28,7 +28,10 @@ double gridWavelengthNm(int i);
 std::vector<double> gridWavelengthsNm();
 // The spectrum's values at the 81 grid wavelengths.
 Eigen::VectorXd sampleOnGrid(const Spectrum& spectrum);
-// The observer's three curves at the grid wavelengths (81 × 3).
+// The observer's three curves at the grid wavelengths (81 × 3). A camera's are scaled as the
+// renderer and the path tracer scale them (absoluteTristimulusScale, less the 683 lm/W that PRT's
+// radiance does not carry), so that its G of D65 is CIE 1931's Y: raw, a white under a D65 sky of
+// 1 000 cd/m² came out at G 849 through the Nikon D850 where the rest of the frame showed 1 000.
 Eigen::MatrixXd observerOnGrid(const Observer& observer);
 
 class SpectralBasis {

@@ -360,6 +360,13 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
   EXPECT_GT(j["gpu_memory_mb"]["rgb"].get<double>(), 9.0);
   EXPECT_GT(j["still_camera_16"]["ratio_to_moving"].get<double>(), 0.0);
   EXPECT_NE(slurp(dir / "plot.svg").find("<svg"), std::string::npos);
+  // Under a camera or CIE 1964 the spectral configurations take it and the RGB ones CIE 1931:
+  // the bench refused both, checking them against its RGB configuration.
+  for (const char* observer : {"--camera nikon_d850", "--observer cie1964"}) {
+    Result other = run("bench " + scenes + "/spheres_d65.json --width 16 --height 9 --frames 1 --rounds 1 --warmup 0 "
+                       "--wavelengths 4 " + observer);
+    EXPECT_EQ(other.exitCode, 0) << observer << ": " << other.err;
+  }
 
   Result demo = run("demo -o " + (dir / "gallery").string() + " --width 64 --height 36");
   ASSERT_EQ(demo.exitCode, 0) << demo.err;

@@ -43,6 +43,9 @@ struct Config {
   int warmup = 0, frames = 0;  // per round
   int wavelengths = 0;         // spectral configurations of the fit; 0 otherwise
   bool still = false;          // frames accumulate as under a still camera; else each restarts
+  bool wait = false;           // each frame's times waited for (measure): frames of seconds
+  // Frames rendered a round: the timed ones, the warm-up and, unless waited for, the ring's.
+  int renderedPerRound() const { return warmup + frames + (wait ? 0 : kFramesInFlight); }
   std::vector<PassTimes> rounds;  // per round, the median of its frames
   std::size_t gpuMemoryBytes = 0;  // held by the renderer after the first round
 
@@ -85,8 +88,13 @@ void putRatio(nlohmann::json& j, const std::string& key, const RatioSpread& s) {
 double mebibytes(std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
 
 // Every frame a moving camera's (accumulation restarts: shadow maps and G-buffer drawn), or with
-// `still` the frames after the first accumulate as a still camera's do.
-PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, int frames, bool still,
+// `still` the frames after the first accumulate as a still camera's do. With `wait` each timed
+// frame's times are waited for (GpuTimer::resolve) rather than read kFramesInFlight frames later:
+// for frames of seconds (a technique's reference), where the frames rendered only to push the
+// last timed ones out of the ring cost more than the wait (the sky's reference: three frames of
+// 34 s a round at 64×36, during which the progress bar stood at 100 %). The bar counts every
+// frame rendered.
+PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, int frames, bool still, bool wait,
                   ProgressBar& bar, std::size_t& done, std::size_t total) {
   std::map<std::string, std::vector<double>> samples;
   auto collect = [&](const gpu::GpuTimings& timings) {
@@ -102,13 +110,15 @@ PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, 
   });
   // A frame's times arrive kFramesInFlight frames later: render that many more frames than are
   // timed, so that exactly `frames` frames after the warm-up are collected, none waited for.
-  for (int f = 0; f < warmup + frames + kFramesInFlight; ++f) {
+  const int rendered = warmup + frames + (wait ? 0 : kFramesInFlight);
+  for (int f = 0; f < rendered; ++f) {
     timer.beginFrame();
-    if (f >= warmup + kFramesInFlight) collect(timer.latest());
+    if (!wait && f >= warmup + kFramesInFlight) collect(timer.latest());
     if (!still || f == 0) renderer.resetAccumulation();
     renderer.renderFrame();
     timer.endFrame();
-    if (f < warmup + frames) bar.update(++done, total);
+    if (wait && f >= warmup) collect(timer.resolve());
+    bar.update(++done, total);
   }
   renderer.setPassHook({});
   PassTimes result;
@@ -134,8 +144,9 @@ void runSceneBench(const SceneBenchOptions& options) {
   const render::FrameSettings& settings = options.settings;
   std::vector<int> counts = options.wavelengths;
   counts.push_back(16);  // the bench's own configurations (G-buffer, still camera, strategies)
-  for (int n : counts) {
+  for (int n : counts) {  // as the spectral configurations take them (the RGB one takes CIE 1931, below)
     render::FrameSettings check = settings;
+    check.mode = render::RenderMode::JakobHanika;
     check.sampling.count = n;
     render::validate(check);
   }
@@ -234,21 +245,26 @@ void runSceneBench(const SceneBenchOptions& options) {
       if (tc.withoutTechnique && !without) {
         Scene& s = scenesWithout.emplace_back(scene);
         s.techniques.remove(section->key());
-        without = renderersWithout.emplace_back(std::make_unique<render::Renderer>(s, table, settings)).get();
+        without = renderersWithout.emplace_back(std::make_unique<render::Renderer>(s, table, rgbSettings)).get();
       }
       render::Renderer* on = tc.withoutTechnique ? without : &renderer;
       if (tc.section) {  // the scene with another version of the technique's section
         Scene& other = scenesWithout.emplace_back(scene);
         other.techniques.add(tc.section->clone());
-        on = renderersWithout.emplace_back(std::make_unique<render::Renderer>(other, table, settings)).get();
+        on = renderersWithout.emplace_back(std::make_unique<render::Renderer>(other, table, rgbSettings)).get();
       }
       render::FrameSettings s = settings;
       for (const auto& [key, value] : tc.settings) PRISM_CHECK(render::applyFrameSetting(s, key, value));
+      // RGB and optimised4 are defined on CIE 1931 (render::validate refuses them another
+      // observer): they take it, as the run's RGB frames do. An observer's curves change the
+      // frame's weights, not its cost.
+      if (s.mode == render::RenderMode::Rgb || s.mode == render::RenderMode::Optimised4) s.observer = "cie1931";
       render::validate(s);
       const std::size_t i = add(tc.label, *on, s);
       if (tc.framesPerRound > 0) {
         configs[i].warmup = std::min(options.warmup, 1);
         configs[i].frames = tc.framesPerRound;
+        configs[i].wait = true;
       }
       run.configs[tc.label] = i;
     }
@@ -257,12 +273,12 @@ void runSceneBench(const SceneBenchOptions& options) {
   }
 
   std::size_t done = 0, total = 0;
-  for (const Config& c : configs) total += static_cast<std::size_t>(rounds) * static_cast<std::size_t>(c.warmup + c.frames);
+  for (const Config& c : configs) total += static_cast<std::size_t>(rounds) * static_cast<std::size_t>(c.renderedPerRound());
   ProgressBar bar("benchmark " + options.scene.filename().string());
   for (int r = 0; r < rounds; ++r) {
     for (Config& c : configs) {
       c.renderer->setSettings(c.settings);
-      c.rounds.push_back(measure(*c.renderer, timer, c.warmup, c.frames, c.still, bar, done, total));
+      c.rounds.push_back(measure(*c.renderer, timer, c.warmup, c.frames, c.still, c.wait, bar, done, total));
       if (r == 0) c.gpuMemoryBytes = c.renderer->gpuMemoryBytes();
     }
   }

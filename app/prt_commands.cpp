@@ -282,9 +282,11 @@ void runPrtReport(const PrtReportOptions& o) {
   if (!o.input.empty()) input = loadPrtInput(o.input, true);
   prt::SpectralEnvironment environment = reportEnvironment(o, input ? &*input : nullptr);
   if (!o.rotate.empty()) {  // the environment turned by its SH rotation, not projected again
-    glm::dvec3 axis = o.rotate.size() == 4 ? glm::dvec3(o.rotate[0], o.rotate[1], o.rotate[2]) : glm::dvec3(0.0);
+    if (o.rotate.size() != 4)
+      throw Error(fmt::format("--rotate: expected four numbers X,Y,Z,DEGREES, got {}", o.rotate.size()));
+    glm::dvec3 axis(o.rotate[0], o.rotate[1], o.rotate[2]);
     if (!(glm::length(axis) > 0.0) || !std::isfinite(glm::length(axis)))
-      throw Error("--rotate: expected X,Y,Z,DEGREES with a non-zero axis");
+      throw Error("--rotate: the axis X,Y,Z must be non-zero and finite");
     glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(o.rotate[3]), glm::normalize(axis)));
     environment = prt::rotateEnvironment(environment, rotation);
     environment.name += fmt::format(" turned {}° about ({}, {}, {})", o.rotate[3], axis.x, axis.y, axis.z);

@@ -148,19 +148,24 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
   std::vector<double> errors;
   nebula::NebulaImage reference;
   {
+    // By rows rendered: the reference's, the longest by far, moved the bar by one step in
+    // maxBasis + 1, and it stood at 0 % until it was done.
     harness::ProgressBar bar("nebula sweep: the reference, then projection by basis size");
-    const std::size_t total = static_cast<std::size_t>(o.maxBasis) + 1;
+    const std::size_t rows = static_cast<std::size_t>(camera.height);
+    const std::size_t total = (static_cast<std::size_t>(o.maxBasis) + 1) * rows;
+    std::size_t before = 0;  // rows of the renders done
+    auto progress = [&](std::size_t done, std::size_t) { bar.update(before + done, total); };
     for (int n = 1; n <= o.maxBasis; ++n) {
       s.basisSize = n;
       nebula::NebulaRenderer renderer(scene.model, s);
       if (n == 1) {
         s.method = nebula::Method::Reference;
-        reference = renderer.render(s);
-        bar.update(1, total);
+        reference = renderer.render(s, progress);
+        before += rows;
       }
       s.method = nebula::Method::Projection;
-      errors.push_back(nebula::maxRelativeError(renderer.render(s), reference));
-      bar.update(static_cast<std::size_t>(n) + 1, total);
+      errors.push_back(nebula::maxRelativeError(renderer.render(s, progress), reference));
+      before += rows;
     }
   }
   const std::string filters = scene.model.filters;
@@ -302,7 +307,8 @@ void runNebulaRender(const NebulaRenderOptions& o) {
     t1 = std::chrono::steady_clock::now();  // the upload and the shaders' compilation count as precomputation
     image = marcher.render(s);
   } else {
-    image = renderer.render(s);
+    harness::ProgressBar renderBar(fmt::format("nebula: {} on the CPU", nebula::methodName(method)));
+    image = renderer.render(s, [&renderBar](std::size_t d, std::size_t n) { renderBar.update(d, n); });
   }
   auto t2 = std::chrono::steady_clock::now();
   auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
@@ -319,7 +325,9 @@ void runNebulaRender(const NebulaRenderOptions& o) {
       r.referenceIntervals = 2 * s.referenceIntervals;
       against = fmt::format("the reference at {} Simpson intervals", r.referenceIntervals);
     }
-    nebula::NebulaImage reference = renderer.render(r);
+    harness::ProgressBar referenceBar("nebula: " + against + ", to compare with");
+    nebula::NebulaImage reference =
+        renderer.render(r, [&referenceBar](std::size_t d, std::size_t n) { referenceBar.update(d, n); });
     fmt::print("max relative error per pixel against {} (pixels ≥ 1 % of their channel's maximum): {:.4g}\n", against,
                nebula::maxRelativeError(image, reference));
   }

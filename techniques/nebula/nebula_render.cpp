@@ -410,7 +410,8 @@ NebulaRenderer::ReferenceNodes NebulaRenderer::referenceNodes(const RenderSettin
   return nodes;
 }
 
-NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
+NebulaImage NebulaRenderer::render(const RenderSettings& s,
+                                   const std::function<void(std::size_t, std::size_t)>& progress) const {
   const NebulaPrecomputed& pre = *mPre;
   if (s.method == Method::PreIntegration) preparePreIntegration();
   const NebulaModel& m = pre.model;
@@ -559,7 +560,7 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s) const {
               colour[c] += pre.lightU[static_cast<std::size_t>((c * pre.lightCount + k) * 8 + j)] * lightAcc[static_cast<std::size_t>(k * 8 + j)];
       image.pixels[row * static_cast<std::size_t>(cam.width) + static_cast<std::size_t>(px)] = glm::vec3(colour);
     }
-  });
+  }, progress);
   return image;
 }
 

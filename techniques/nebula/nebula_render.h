@@ -151,7 +151,9 @@ class NebulaRenderer {
   NebulaRenderer(const NebulaRenderer&) = delete;
   NebulaRenderer& operator=(const NebulaRenderer&) = delete;
 
-  NebulaImage render(const RenderSettings& settings) const;
+  // progress, if set: rows done of the image's, serialised (core/parallel_for.h).
+  NebulaImage render(const RenderSettings& settings,
+                     const std::function<void(std::size_t done, std::size_t total)>& progress = {}) const;
   const ExpBasis& basis() const;
   const GreedyResult& lightBasis() const;
   const NebulaModel& model() const;

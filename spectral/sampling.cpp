@@ -1,5 +1,6 @@
 #include "spectral/sampling.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -52,8 +53,9 @@ void validate(const SamplingSettings& s) {
   if (s.strategy == SamplingStrategy::Optimised && !holdsWholeNanometres(s.minNm, s.maxNm, s.count)) {
     std::ostringstream range;
     range << s.minNm << "–" << s.maxNm;
-    throw Error("the optimised strategy fits its " + std::to_string(s.count) + " wavelengths a whole nm apart: " +
-                range.str() + " nm holds fewer");
+    const double held = std::max(0.0, std::floor(s.maxNm) - std::ceil(s.minNm) + 1.0);
+    throw Error("the optimised strategy fits its " + std::to_string(s.count) + " wavelengths on whole nanometres: " +
+                range.str() + " nm holds " + std::to_string(static_cast<int>(held)));
   }
 }
 

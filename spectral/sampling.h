@@ -29,6 +29,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -64,9 +65,12 @@ struct SamplingSettings {
   bool operator==(const SamplingSettings&) const = default;
 };
 
-// Whether [minNm, maxNm] holds `count` whole nanometres apart: what a fitted (optimised) set of
-// `count` wavelengths needs.
-inline bool holdsWholeNanometres(double minNm, double maxNm, int count) { return maxNm - minNm >= count; }
+// Whether [minNm, maxNm] holds `count` whole nanometres, its ends included: what a fitted
+// (optimised) set of `count` wavelengths needs, one a node of the fit's 1 nm grid. It asked for one
+// more (500–503 nm was said to hold fewer than 4).
+inline bool holdsWholeNanometres(double minNm, double maxNm, int count) {
+  return std::floor(maxNm) - std::ceil(minNm) + 1.0 >= count;
+}
 
 // Error naming the setting when count or range is invalid (Optimised: count ≤ kMaxFittedWavelengths
 // and a range that holdsWholeNanometres).

@@ -249,5 +249,14 @@ TEST(Sampling, InvalidSettingsAreErrors) {
     EXPECT_EQ(samplingStrategyFromName(samplingStrategyName(s)), s);
 }
 
+TEST(Sampling, AnOptimisedSetTakesEveryWholeNanometreOfItsRangeEndsIncluded) {
+  // The fit's nodes are the whole nanometres of the range, both ends included: 500–503 holds 4
+  // (it was refused as holding fewer), 500–502.9 and 500.1–503 hold 3.
+  EXPECT_NO_THROW(validate({4, 500, 503, SamplingStrategy::Optimised}));
+  EXPECT_NO_THROW(validate({4, 499.5, 503, SamplingStrategy::Optimised}));
+  EXPECT_THROW(validate({4, 500, 502.9, SamplingStrategy::Optimised}), Error);
+  EXPECT_THROW(validate({4, 500.1, 503, SamplingStrategy::Optimised}), Error);
+}
+
 }  // namespace
 }  // namespace prism

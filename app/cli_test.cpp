@@ -121,6 +121,11 @@ TEST(Cli, XyzJsonOfD65WhiteAndSampledEstimate) {
   EXPECT_NEAR(j["xy"][0].get<double>(), 0.3127, 1e-4);
   EXPECT_NEAR(j["xyz"][1].get<double>(), 1.0, 1e-12);
   EXPECT_LT(j["sampled"]["deltaE2000"].get<double>(), 0.01);
+  // Within a range the estimate is measured against that range's integral, as a frame within it
+  // integrates (against the whole band every strategy read about 34, at 400 wavelengths too).
+  Result banded = run("colour xyz --illuminant D65 --rgb 0.2,0.5,0.3 --wavelengths 400 --range 500,600 --json");
+  ASSERT_EQ(banded.exitCode, 0) << banded.err;
+  EXPECT_LT(nlohmann::json::parse(banded.out)["sampled"]["deltaE2000"].get<double>(), 0.05) << banded.out;
 }
 
 TEST(Cli, XyzOfAnRgbAlbedoRoundTripsUnderItsOwnWhite) {

@@ -123,10 +123,18 @@ void colourXyz(const XyzOptions& o) {
             reflectance.at(batches[b].lambdaNm[j]) * light.at(batches[b].lambdaNm[j]);
       sampled += matrices[b] * radiance;
     }
-    sampled /= (light * obs.curves[1]).integral();
-    json s = {{"count", o.wavelengthCount}, {"strategy", o.strategy},
-              {"rangeNm", {o.rangeNm[0], o.rangeNm[1]}}, {"value", toJson(sampled)}};
-    if (!obs.isCamera) s["deltaE2000"] = deltaE(xyzToLab(sampled, white), xyzToLab(value, white));
+    const double whiteY = (light * obs.curves[1]).integral();
+    sampled /= whiteY;
+    // What a frame within the range integrates, whatever its strategy: the light zero beyond the
+    // range's whole nanometres, 1 nm apart, on the same scale (the whole light's white, Y = 1),
+    // in CIELAB against the range's own white, as `wavelengths optimise` measures. Against the
+    // whole band every strategy read the range's cut: ΔE00 34 for 500–600 nm, even at 400 wavelengths.
+    const Spectrum banded = lightWithinRange(light, settings.minNm, settings.maxNm);
+    const Eigen::Vector3d truth = obs.integrate(banded * reflectance) / whiteY;
+    const Eigen::Vector3d bandWhite = labWhite(obs.integrate(banded) / whiteY);
+    json s = {{"count", o.wavelengthCount}, {"strategy", o.strategy}, {"rangeNm", {o.rangeNm[0], o.rangeNm[1]}},
+              {"value", toJson(sampled)}, {"integral", toJson(truth)}};
+    if (!obs.isCamera) s["deltaE2000"] = deltaE(xyzToLab(sampled, bandWhite), xyzToLab(truth, bandWhite));
     out["sampled"] = s;
   }
   if (o.json) {
@@ -148,6 +156,10 @@ void colourXyz(const XyzOptions& o) {
     if (out["sampled"].contains("deltaE2000"))
       fmt::print("   ΔE00 vs 1 nm: {:.4f}", out["sampled"]["deltaE2000"].get<double>());
     fmt::print("\n");
+    if (o.rangeNm[0] > kLambdaMinNm || o.rangeNm[1] < kLambdaMaxNm)
+      fmt::print("1 nm within {:g}–{:g} nm: {:.6f} {:.6f} {:.6f}   (what the sampled value is measured against)\n",
+                 o.rangeNm[0], o.rangeNm[1], out["sampled"]["integral"][0].get<double>(),
+                 out["sampled"]["integral"][1].get<double>(), out["sampled"]["integral"][2].get<double>());
   }
   if (out.contains("upsampling")) {
     const json& c = out["upsampling"]["coefficients"];

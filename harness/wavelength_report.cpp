@@ -17,13 +17,15 @@ namespace {
 
 constexpr int kMovingStrategyFrames = 32;  // a moving strategy's single frames, each alone, averaged
 
-FitError errors(const WavelengthSampler& sampler, int frames, const Spectrum& light,
+// The sampler's frames of `light` against the 1 nm integral of `banded`, the light within the
+// sampling range (lightWithinRange), in CIELAB against banded's white.
+FitError errors(const WavelengthSampler& sampler, int frames, const Spectrum& light, const Spectrum& banded,
                 const std::vector<Spectrum>& reflectances, const Observer& obs) {
-  const Eigen::Vector3d white = fitWhite(light, obs);
+  const Eigen::Vector3d white = fitWhite(banded, obs);
   FitError e;
   for (const Spectrum& r : reflectances) {
     const Spectrum radiance = light * r;
-    const Eigen::Vector3d truth = xyzToLab(obs.integrate(radiance), white);
+    const Eigen::Vector3d truth = xyzToLab(obs.integrate(banded * r), white);
     double sum = 0.0;
     for (int f = 0; f < frames; ++f)
       sum += deltaE(xyzToLab(sampler.estimate(static_cast<std::uint32_t>(f), radiance, obs), white), truth,
@@ -72,8 +74,8 @@ WavelengthReport wavelengthReport(const Scene& scene, const render::FrameSetting
     // Against the integral over the range, which every strategy's frames estimate.
     const Spectrum banded = lightWithinRange(light, sampling.minNm, sampling.maxNm);
     auto add = [&](std::string name, const WavelengthSampler& sampler, int frames) {
-      l.strategies.push_back({std::move(name), errors(sampler, frames, banded, chart, obs),
-                              errors(sampler, frames, banded, problem.reflectances, obs)});
+      l.strategies.push_back({std::move(name), errors(sampler, frames, light, banded, chart, obs),
+                              errors(sampler, frames, light, banded, problem.reflectances, obs)});
     };
     add("optimised", optimised, 1);
     add("uniform", uniformSampler, 1);

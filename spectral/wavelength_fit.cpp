@@ -28,7 +28,7 @@
 namespace prism {
 namespace {
 
-constexpr int kFitVersion = 5;  // 2: a checksum line; 3: fitWhite's floor; 4: dark nodes weigh 0; 5: the range's integral
+constexpr int kFitVersion = 6;  // 2: a checksum line; 3: fitWhite's floor; 4: dark nodes weigh 0; 5: the range's integral; 6: its ends
 
 // A node where every light × reflectance is below this share of the brightest sample carries no
 // light the renderer's floats hold (an LED at 830 nm, 1 nm wide, is e^−225 at 815 nm): its weights
@@ -56,15 +56,19 @@ class FitData {
   FitData(const WavelengthFitProblem& problem, const Observer& obs) {
     first_ = static_cast<int>(std::ceil(problem.minNm));
     nodes_ = static_cast<int>(std::floor(problem.maxNm)) - first_ + 1;
-    std::vector<Spectrum> lights;
+    // Per light, as the nodes sample it and as the truth integrates it: over the range alone, as
+    // every other strategy's frame estimates it (a set fitted to the whole 360–830 nm from
+    // wavelengths within 500–600 nm showed a white sphere white where the reference over that
+    // band shows it green: 27.7 mean ΔE00 apart).
+    std::vector<Spectrum> lights, bandedLights;
     for (const Spectrum& light : problem.lights) {
-      // The truth is the integral over the range alone, as every other strategy's frame estimates
-      // it (a set fitted to the whole 360–830 nm from wavelengths within 500–600 nm showed a white
-      // sphere white where the reference over that band shows it green: 27.7 mean ΔE00 apart).
-      Spectrum positive = lightWithinRange(light, problem.minNm, problem.maxNm);
+      Spectrum positive = light;
       for (int i = 0; i < kSpectrumSamples; ++i) positive[i] = std::max(0.0, positive[i]);
-      double y = obs.integrate(positive).y();
-      if (y > 0.0) lights.push_back(positive * (1.0 / y));  // white Y = 1
+      const Spectrum banded = lightWithinRange(positive, problem.minNm, problem.maxNm);
+      double y = obs.integrate(banded).y();
+      if (!(y > 0.0)) continue;
+      lights.push_back(positive * (1.0 / y));  // white Y = 1
+      bandedLights.push_back(banded * (1.0 / y));
     }
     if (lights.empty()) throw Error("wavelength fit: no light the observer sees");
     const std::size_t pairs = lights.size() * problem.reflectances.size();
@@ -74,12 +78,12 @@ class FitData {
     truthLab_.resize(3, static_cast<Eigen::Index>(pairs));
     white_.resize(3, static_cast<Eigen::Index>(pairs));
     Eigen::Index p = 0;
-    for (const Spectrum& light : lights) {
-      const Eigen::Vector3d white = fitWhite(light, obs);
+    for (std::size_t k = 0; k < lights.size(); ++k) {
+      const Eigen::Vector3d white = fitWhite(bandedLights[k], obs);
       for (const Spectrum& reflectance : problem.reflectances) {
-        const Spectrum radiance = light * reflectance;
+        const Spectrum radiance = lights[k] * reflectance;
         for (int i = 0; i < nodes_; ++i) samples_(i, p) = radiance[first_ - kLambdaMinNm + i];
-        const Eigen::Vector3d xyz = obs.integrate(radiance);
+        const Eigen::Vector3d xyz = obs.integrate(bandedLights[k] * reflectance);
         truth_.col(p) = xyz;
         white_.col(p) = white;
         truthLab_.col(p) = xyzToLab(xyz, white);
@@ -90,8 +94,8 @@ class FitData {
         ++p;
       }
     }
-    emission_ = lights.front();
-    for (std::size_t k = 1; k < lights.size(); ++k) emission_ += lights[k];
+    emission_ = bandedLights.front();
+    for (std::size_t k = 1; k < bandedLights.size(); ++k) emission_ += bandedLights[k];
     const double brightest = samples_.cwiseAbs().maxCoeff();
     for (int i = 0; i < nodes_; ++i)
       if (!(samples_.row(i).cwiseAbs().maxCoeff() >= kDarkNode * brightest)) samples_.row(i).setZero();
@@ -325,9 +329,20 @@ FittedWavelengths fitWavelengths(const WavelengthFitProblem& problem, const Obse
 }
 
 Spectrum lightWithinRange(const Spectrum& light, double minNm, double maxNm) {
+  // w: each node's weight in ∫ over [minNm, maxNm] of the light's linear interpolation.
+  std::vector<double> w(kSpectrumSamples, 0.0);
+  for (int i = 0; i + 1 < kSpectrumSamples; ++i) {
+    const double node = kLambdaMinNm + i;
+    const double s = std::max(minNm, node) - node, t = std::min(maxNm, node + 1.0) - node;  // within [0, 1]
+    if (!(t > s)) continue;
+    w[static_cast<std::size_t>(i)] += (t - s) - 0.5 * (t * t - s * s);
+    w[static_cast<std::size_t>(i + 1)] += 0.5 * (t * t - s * s);
+  }
   Spectrum banded = light;
-  for (int i = 0; i < kSpectrumSamples; ++i)
-    if (kLambdaMinNm + i < minNm || kLambdaMinNm + i > maxNm) banded[i] = 0.0;
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    const double trapezoid = (i == 0 || i == kSpectrumSamples - 1) ? 0.5 : 1.0;  // Spectrum::integral's
+    banded[i] = light[i] * w[static_cast<std::size_t>(i)] / trapezoid;
+  }
   return banded;
 }
 
@@ -339,16 +354,16 @@ FitError fitError(const FittedWavelengths& set, const WavelengthFitProblem& prob
   validateProblem(problem);
   FitError error;
   std::size_t count = 0;
-  for (const Spectrum& unbanded : problem.lights) {
-    const Spectrum light = lightWithinRange(unbanded, problem.minNm, problem.maxNm);
-    const Eigen::Vector3d white = fitWhite(light, obs);
+  for (const Spectrum& light : problem.lights) {
+    const Spectrum banded = lightWithinRange(light, problem.minNm, problem.maxNm);  // the truth's
+    const Eigen::Vector3d white = fitWhite(banded, obs);
     if (white.y() <= 0.0) continue;
     for (const Spectrum& reflectance : problem.reflectances) {
       const Spectrum radiance = light * reflectance;
       Eigen::Vector3d estimate = Eigen::Vector3d::Zero();
       for (std::size_t i = 0; i < set.lambdaNm.size(); ++i)
         estimate += set.weights.col(static_cast<Eigen::Index>(i)) * radiance.at(set.lambdaNm[i]);
-      const double e = deltaE(xyzToLab(estimate, white), xyzToLab(obs.integrate(radiance), white),
+      const double e = deltaE(xyzToLab(estimate, white), xyzToLab(obs.integrate(banded * reflectance), white),
                               DeltaEFormula::Ciede2000);
       error.mean += e;
       error.max = std::max(error.max, e);

@@ -38,6 +38,21 @@ TEST(WavelengthFit, FittedWavelengthsAreAscendingWholeNanometresInRange) {
   EXPECT_LE(fitError(set, problem, cie).mean, fitError(four, problem, cie).mean);
 }
 
+// The light within a range integrates to the range's own integral, its ends included by the part
+// of their intervals inside it; the whole band leaves the light as it is.
+TEST(WavelengthFit, TheLightWithinARangeIntegratesOverTheRangeAlone) {
+  const Spectrum one = Spectrum::constant(1.0);
+  EXPECT_NEAR(lightWithinRange(one, 500.0, 600.0).integral(), 100.0, 1e-12);  // 101.0 with its ends' ramps
+  EXPECT_NEAR(lightWithinRange(one, 500.25, 599.5).integral(), 99.25, 1e-12);
+  const Spectrum d65 = illuminant("D65");
+  const Spectrum whole = lightWithinRange(d65, kLambdaMinNm, kLambdaMaxNm);
+  for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_EQ(whole[i], d65[i]) << i;
+  // A linear light's integral over the range is exact: ∫ x dx over [500, 600] = 55 000.
+  Spectrum ramp;
+  for (int i = 0; i < kSpectrumSamples; ++i) ramp[i] = kLambdaMinNm + i;
+  EXPECT_NEAR(lightWithinRange(ramp, 500.0, 600.0).integral(), 55000.0, 1e-9);
+}
+
 // A range narrower than four points of n = 4's 20 nm seed grid (80 nm) fits from the other seeds:
 // the grid's combinations once ran past its end, without end.
 TEST(WavelengthFit, ANarrowRangeFitsFourWavelengths) {

@@ -213,6 +213,7 @@ void rehearseScript(const Script& script, ViewSettings view, CameraController ca
         if (w[0] == "save-settings") saved[resolved(w[1])] = {view, camera.camera()};
       } else if (w[0] == "set") {
         set({view, camera, scene, changes}, w[1], w[2]);
+        if (w[0] == "screenshot" && lowercaseExtension(w[1]) == ".png") requireOneDisplaySpace(view, w[1]);
       } else if (w[0] == "orbit") {  // a settings file giving part of the camera is checked with the rest
         camera.orbit(render::parseFloat("yaw", w[1]) * kDegrees, render::parseFloat("pitch", w[2]) * kDegrees);
       } else if (w[0] == "load-settings") {

@@ -111,6 +111,19 @@ TEST(Script, TheRehearsalFindsBadLinesBeforeAnythingRuns) {
                            scene),
             "rehearsed");
   EXPECT_FALSE(std::filesystem::exists(saved)) << "the rehearsal writes nothing";
+  // A PNG of a split window names one display space: halves encoded for two are refused there
+  // (the file was tagged as the left's), an EXR (the left view alone) or one space is taken.
+  const std::string twoSpaces = "set split on\nset right.display rec2020\nscreenshot " + dir + "/split.png\n";
+  EXPECT_EQ(rehearsalError("r6.txt", twoSpaces, scene).rfind(":3: " + dir + "/split.png: a PNG names one display space", 0),
+            0u)
+      << rehearsalError("r6.txt", twoSpaces, scene);
+  EXPECT_EQ(rehearsalError("r7.txt", "set split on\nset right.display rec2020\nscreenshot " + dir + "/split.exr\n", scene),
+            "rehearsed");
+  EXPECT_EQ(rehearsalError("r8.txt",
+                           "set split on\nset display rec2020\nset right.display rec2020\nscreenshot " + dir +
+                               "/split.png\n",
+                           scene),
+            "rehearsed");
 }
 
 }  // namespace

@@ -173,6 +173,7 @@ void Viewer::screenshot(const std::filesystem::path& path, bool renderNow) {
   requireOutputClear(path);
   if (lowercaseExtension(path) == ".exr") return mCompositor.writeLeftExr(path, mCamera.camera());
   if (lowercaseExtension(path) != ".png") throw Error(fmt::format("{}: a screenshot is a .png or an .exr", path.string()));
+  requireOneDisplaySpace(mView, path);
   mPendingScreenshot = path;  // written after the interface is drawn, before the swap
   if (renderNow) {
     frame();

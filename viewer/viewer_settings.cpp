@@ -87,6 +87,13 @@ void saveViewSettings(const std::filesystem::path& path, const ViewSettings& vie
   writeFileAtomically(path, j.dump(2) + "\n");
 }
 
+void requireOneDisplaySpace(const ViewSettings& view, const std::filesystem::path& png) {
+  if (view.split && view.right.display.colourSpace != view.left.display.colourSpace)
+    throw Error(fmt::format("{}: a PNG names one display space, and the split views show {} and {}: set both alike "
+                            "(display, right.display)",
+                            png.string(), view.left.display.colourSpace, view.right.display.colourSpace));
+}
+
 void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Camera& camera) {
   const std::vector<unsigned char> bytes = schema::readBinaryFile(path);
   const std::string file = path.string();

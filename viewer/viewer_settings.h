@@ -25,6 +25,11 @@ struct ViewSettings {
 // mode's own observer: its colour spaces are defined on it).
 ViewSettings initialView(const render::FrameSettings& initial);
 
+// Error naming `png` when a PNG of the window would hold two display spaces: the split views
+// encoded for different ones. A PNG names one (its cICP chunk), which compare and colour-managed
+// viewers decode all of it by; the window's was tagged as the left view's.
+void requireOneDisplaySpace(const ViewSettings& view, const std::filesystem::path& png);
+
 // The view's keys of the script's `set KEY VALUE`: a frame key (the left view, or the only one),
 // right.KEY (the right view), split and heat-map (on or off). Returns false when `key` is none of
 // these; Error naming the key and what it expects when the value is bad (validate() then checks

@@ -8,7 +8,8 @@
 # - in the nebula scene, the palette changes the view and the reference mode does not;
 # - a point light's shadows and position, set by the script (the lights panel's controls),
 #   change the view;
-# - a screenshot or settings file over a file the scene reads or over the script is refused.
+# - a screenshot or settings file over a file the scene reads or over the script is refused;
+# - a heat map that cannot be computed says why.
 # Usage: viewer_window_test.sh PRISM SCENES_DIR SCRATCH_DIR
 set -euo pipefail
 prism=$1 scenes=$2 scratch=$3
@@ -149,6 +150,15 @@ for bad in "set mode bogus|script.json:2: mode: expected" "set light.9.intensity
 ${bad%%|*}" "${bad#*|}"
   [ ! -e "$scratch/own/early.png" ] || { echo "'${bad%%|*}': the screenshot above it was written" >&2; exit 1; }
 done
+# A heat map that cannot be computed (CIE 1964 on both sides) says why at heat-map-stats: it said
+# only "no heat map yet (set split on, heat-map on, frames N)", the steps the script had taken.
+view_error "set observer cie1964
+set split on
+set right.mode jakob-hanika
+set right.observer cie1964
+set heat-map on
+frames 16
+heat-map-stats" "script.json:7: no heat map: the heat map compares CIE 1931 XYZ"
 # A settings file the script saves before loading it is taken as it, not refused as missing.
 view "$scratch/own/textured_gltf.json" --width 64 --height 48 --script <(printf 'save-settings %s\nload-settings %s\n' \
   "$scratch/own/saved.json" "$scratch/own/saved.json") >/dev/null

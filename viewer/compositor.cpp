@@ -66,7 +66,7 @@ std::string Compositor::render(ViewSettings& view, const Changes& changes, const
   try {
     if (view.split && view.heatMap && mLeft && mRight && ++mFramesSinceHeatMap >= 15) updateHeatMap(camera);
   } catch (const std::exception& e) {
-    error = e.what();
+    error = mHeatError = e.what();
     view.heatMap = false;
   }
   if (!(view.split && view.heatMap)) mHeatTexture = gpu::Texture2D();  // its GL object goes with it
@@ -110,6 +110,7 @@ void Compositor::updateHeatMap(const Camera& camera) {
       imaging::compareImages(imaging::linearInput(a, imaging::ColourMeaning::Xyz, whiteLuminance(s, camera)),
                              imaging::linearInput(b, imaging::ColourMeaning::Xyz, whiteLuminance(t, camera)), options);
   mHeatStats = d.stats;
+  mHeatError.clear();
   imaging::PngImage heat = imaging::heatMap(d.deltaEMap, {.maxDeltaE = 5.0, .legend = true});
   gpu::Texture2DDesc desc;
   desc.width = heat.width();

@@ -36,6 +36,8 @@ class Compositor {
   // The heat map while shown (a texture with id 0 otherwise) and the statistics it shows.
   const gpu::Texture2D& heatMap() const { return mHeatTexture; }
   const imaging::DifferenceStats& heatMapStats() const { return mHeatStats; }
+  // Why the heat map last went off, until one is computed again (empty: it never failed).
+  const std::string& heatMapError() const { return mHeatError; }
 
  private:
   // Changes a view's renderer has yet to take: each view keeps its own, so that one hidden or
@@ -55,6 +57,7 @@ class Compositor {
   Pending mLeftPending, mRightPending;
   gpu::Texture2D mHeatTexture;
   imaging::DifferenceStats mHeatStats;
+  std::string mHeatError;
   int mFramesSinceHeatMap = 1000;
 };
 

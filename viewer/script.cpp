@@ -155,7 +155,10 @@ void execute(Viewer& viewer, const std::vector<std::string>& w) {
   } else if (verb == "heat-map-stats") {
     const ViewSettings& view = viewer.view();
     if (!(view.split && view.heatMap) || viewer.compositor().heatMap().id() == 0) {
-      throw Error("no heat map yet (set split on, heat-map on, frames N)");
+      // The reason the heat map went off, if it did: the script had asked for it as this says.
+      const std::string& why = viewer.compositor().heatMapError();
+      throw Error(why.empty() ? std::string("no heat map yet (set split on, heat-map on, frames N)")
+                              : "no heat map: " + why);
     }
     const imaging::DifferenceStats& stats = viewer.compositor().heatMapStats();
     fmt::print("heat map: mean {:.3f} p95 {:.3f} max {:.3f}\n", stats.meanDeltaE, stats.p95DeltaE, stats.maxDeltaE);
@@ -210,10 +213,10 @@ void rehearseScript(const Script& script, ViewSettings view, CameraController ca
         requireWritable(w[1]);
         requireOtherFile(w[1], script.path, "the script");
         requireNotSceneInput(w[1], scene);
+        if (w[0] == "screenshot" && lowercaseExtension(w[1]) == ".png") requireOneDisplaySpace(view, w[1]);
         if (w[0] == "save-settings") saved[resolved(w[1])] = {view, camera.camera()};
       } else if (w[0] == "set") {
         set({view, camera, scene, changes}, w[1], w[2]);
-        if (w[0] == "screenshot" && lowercaseExtension(w[1]) == ".png") requireOneDisplaySpace(view, w[1]);
       } else if (w[0] == "orbit") {  // a settings file giving part of the camera is checked with the rest
         camera.orbit(render::parseFloat("yaw", w[1]) * kDegrees, render::parseFloat("pitch", w[2]) * kDegrees);
       } else if (w[0] == "load-settings") {

@@ -4,6 +4,8 @@
 
 #include "scene/scene_loader.h"
 #include "core/error.h"
+#include "core/file_extension.h"
+#include "spectral/spectrum_csv.h"
 #include "spectral/illuminant.h"
 
 namespace prism::viewer {
@@ -17,6 +19,12 @@ void setLightSpectrum(Light& light, const Spectrum& spd, const std::string& labe
   light.spdLabel = label;
 }
 
-void setLightSpd(Light& light, const std::string& name) { setLightSpectrum(light, illuminant(name), name); }
+void setLightSpd(Light& light, const std::string& name) {
+  if (lowercaseExtension(name) == ".csv") {
+    setLightSpectrum(light, readSpectrumCsv(name, Extrapolation::Zero, 0.0).toDense(), "csv:" + name);
+    return;
+  }
+  setLightSpectrum(light, illuminant(name), name);
+}
 
 }  // namespace prism::viewer

@@ -11,7 +11,8 @@ namespace prism::viewer {
 
 // Error "LABEL: what" when the spectrum cannot light anything; the light is then unchanged.
 void setLightSpectrum(Light& light, const Spectrum& spd, const std::string& label);
-// A named illuminant, or a parametric one ("blackbody:3000", "led:450:20").
+// A named illuminant, a parametric one ("blackbody:3000", "led:450:20"), or a spectrum's CSV file
+// (a name ending in .csv, as the panel's CSV field reads it: zero beyond its rows).
 void setLightSpd(Light& light, const std::string& name);
 
 }  // namespace prism::viewer

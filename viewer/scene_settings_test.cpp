@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "core/error.h"
 #include "scene/conductors.h"
 
@@ -45,6 +48,18 @@ TEST(SceneSettings, MovesAPointLightAndTurnsItsShadowsOnAndOff) {
   EXPECT_EQ(scene.lights[0].intensity, 250.0f);
   EXPECT_TRUE(applySceneSetting(scene, "material.floor.roughness", "0.3"));
   EXPECT_EQ(scene.materials[0].roughness, 0.3f);
+}
+
+TEST(SceneSettings, ALightsSpdComesFromACsvFileAsThePanelsDoes) {
+  // A script's light.N.spd took names alone: "red.csv" was an unknown illuminant.
+  const std::filesystem::path csv = std::filesystem::path(::testing::TempDir()) / "red_lamp.csv";
+  std::ofstream(csv) << "wavelength,value\n600,0\n650,1\n700,0\n";
+  Scene scene = twoLights();
+  EXPECT_TRUE(applySceneSetting(scene, "light.1.spd", csv.string()));
+  EXPECT_EQ(scene.lights[1].spdLabel, "csv:" + csv.string());
+  EXPECT_GT(scene.lights[1].spd.at(650.0), 0.0);
+  EXPECT_EQ(scene.lights[1].spd.at(550.0), 0.0);
+  EXPECT_NE(error(scene, "light.1.spd", (std::filesystem::path(::testing::TempDir()) / "none.csv").string()), "");
 }
 
 TEST(SceneSettings, OtherKeysAreNotItsOwn) {

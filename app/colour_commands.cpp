@@ -125,10 +125,10 @@ void colourXyz(const XyzOptions& o) {
     }
     const double whiteY = (light * obs.curves[1]).integral();
     sampled /= whiteY;
-    // What a frame within the range integrates, whatever its strategy: the light zero beyond the
-    // range's whole nanometres, 1 nm apart, on the same scale (the whole light's white, Y = 1),
-    // in CIELAB against the range's own white, as `wavelengths optimise` measures. Against the
-    // whole band every strategy read the range's cut: ΔE00 34 for 500–600 nm, even at 400 wavelengths.
+    // What a frame within the range integrates, whatever its strategy: the light within it
+    // (lightWithinRange) at 1 nm, on the same scale (the whole light's white, Y = 1), in CIELAB
+    // against the range's own white, as `wavelengths optimise` measures. Against the whole band
+    // every strategy read the range's cut: ΔE00 34 for 500–600 nm, even at 400 wavelengths.
     const Spectrum banded = lightWithinRange(light, settings.minNm, settings.maxNm);
     const Eigen::Vector3d truth = obs.integrate(banded * reflectance) / whiteY;
     const Eigen::Vector3d bandWhite = labWhite(obs.integrate(banded) / whiteY);

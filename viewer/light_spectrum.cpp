@@ -19,11 +19,12 @@ void setLightSpectrum(Light& light, const Spectrum& spd, const std::string& labe
   light.spdLabel = label;
 }
 
+void setLightSpdFromCsv(Light& light, const std::string& path) {
+  setLightSpectrum(light, readSpectrumCsv(path, Extrapolation::Zero, 0.0).toDense(), "csv:" + path);
+}
+
 void setLightSpd(Light& light, const std::string& name) {
-  if (lowercaseExtension(name) == ".csv") {
-    setLightSpectrum(light, readSpectrumCsv(name, Extrapolation::Zero, 0.0).toDense(), "csv:" + name);
-    return;
-  }
+  if (lowercaseExtension(name) == ".csv") return setLightSpdFromCsv(light, name);
   setLightSpectrum(light, illuminant(name), name);
 }
 

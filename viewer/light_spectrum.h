@@ -11,8 +11,10 @@ namespace prism::viewer {
 
 // Error "LABEL: what" when the spectrum cannot light anything; the light is then unchanged.
 void setLightSpectrum(Light& light, const Spectrum& spd, const std::string& label);
-// A named illuminant, a parametric one ("blackbody:3000", "led:450:20"), or a spectrum's CSV file
-// (a name ending in .csv, as the panel's CSV field reads it: zero beyond its rows).
+// A spectrum's CSV file (zero beyond its rows), labelled "csv:PATH".
+void setLightSpdFromCsv(Light& light, const std::string& path);
+// A named illuminant, a parametric one ("blackbody:3000", "led:450:20"), or a name ending in .csv,
+// a CSV file (setLightSpdFromCsv, as the panel's CSV field reads any file).
 void setLightSpd(Light& light, const std::string& name);
 
 }  // namespace prism::viewer

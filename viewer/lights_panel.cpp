@@ -9,7 +9,6 @@
 
 #include <fmt/format.h>
 
-#include "spectral/spectrum_csv.h"
 #include "viewer/light_spectrum.h"
 #include "viewer/panel_widgets.h"
 #include "viewer/panels.h"
@@ -65,8 +64,7 @@ class LightsPanel final : public Panel {
     ImGui::SameLine();
     if (ImGui::Button("load")) {
       runAction(context, [&] {
-        std::string path = mCsvPath.data();
-        setLightSpectrum(light, readSpectrumCsv(path, Extrapolation::Zero, 0.0).toDense(), "csv:" + path);
+        setLightSpdFromCsv(light, mCsvPath.data());
         changed = true;
       });
     }

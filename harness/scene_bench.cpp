@@ -87,15 +87,17 @@ void putRatio(nlohmann::json& j, const std::string& key, const RatioSpread& s) {
 
 double mebibytes(std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
 
-// Every frame a moving camera's (accumulation restarts: shadow maps and G-buffer drawn), or with
-// `still` the frames after the first accumulate as a still camera's do. With `wait` each timed
-// frame's times are waited for (GpuTimer::resolve) rather than read kFramesInFlight frames later:
-// for frames of seconds (a technique's reference), where the frames rendered only to push the
-// last timed ones out of the ring cost more than the wait (the sky's reference: three frames of
-// 34 s a round at 64×36, during which the progress bar stood at 100 %). The bar counts every
-// frame rendered.
-PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, int frames, bool still, bool wait,
-                  ProgressBar& bar, std::size_t& done, std::size_t total) {
+// One round of `c` on its renderer: every frame a moving camera's (accumulation restarts: shadow
+// maps and G-buffer drawn), or with `still` the frames after the first accumulate as a still
+// camera's do. With `wait` each timed frame's times are waited for (GpuTimer::resolve) rather
+// than read kFramesInFlight frames later: for frames of seconds (a technique's reference), where
+// the frames rendered only to push the last timed ones out of the ring cost more than the wait
+// (the sky's reference: three more frames of 15 s a round at 64×36 on 2 idle cores, with the
+// progress bar at 100 %). The bar counts every frame rendered.
+PassTimes measure(const Config& c, gpu::GpuTimer& timer, ProgressBar& bar, std::size_t& done, std::size_t total) {
+  render::Renderer& renderer = *c.renderer;
+  const int warmup = c.warmup;
+  const bool still = c.still, wait = c.wait;
   std::map<std::string, std::vector<double>> samples;
   auto collect = [&](const gpu::GpuTimings& timings) {
     std::map<std::string, double> frame;  // a technique's passes before and after lighting share its name
@@ -109,9 +111,8 @@ PassTimes measure(render::Renderer& renderer, gpu::GpuTimer& timer, int warmup, 
     if (open) timer.beginScope(pass);
   });
   // A frame's times arrive kFramesInFlight frames later: render that many more frames than are
-  // timed, so that exactly `frames` frames after the warm-up are collected, none waited for.
-  const int rendered = warmup + frames + (wait ? 0 : kFramesInFlight);
-  for (int f = 0; f < rendered; ++f) {
+  // timed, so that exactly c.frames frames after the warm-up are collected, none waited for.
+  for (int f = 0; f < c.renderedPerRound(); ++f) {
     timer.beginFrame();
     if (!wait && f >= warmup + kFramesInFlight) collect(timer.latest());
     if (!still || f == 0) renderer.resetAccumulation();
@@ -278,7 +279,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   for (int r = 0; r < rounds; ++r) {
     for (Config& c : configs) {
       c.renderer->setSettings(c.settings);
-      c.rounds.push_back(measure(*c.renderer, timer, c.warmup, c.frames, c.still, c.wait, bar, done, total));
+      c.rounds.push_back(measure(c, timer, bar, done, total));
       if (r == 0) c.gpuMemoryBytes = c.renderer->gpuMemoryBytes();
     }
   }

@@ -169,7 +169,6 @@ void colourXyz(const XyzOptions& o) {
 }
 
 void colourDeltaE(const DeltaEOptions& o) {
-  if (o.labs.size() != 2) throw Error("colour delta-e: give --lab exactly twice");
   for (const std::vector<double>& lab : o.labs) {
     requireThree(lab, "--lab");
     if (lab[0] < 0.0) throw Error(fmt::format("--lab: L* {:g} is negative", lab[0]));

@@ -453,6 +453,8 @@ int main(int argc, char** argv) {
       colourXyz(xyz);
     }
     if (*deCmd) {
+      // A malformed command line (exit 2), as a missing --lab is.
+      if (labTexts.size() != 2) throw CLI::ValidationError("--lab", "give it exactly twice, one colour each");
       for (const std::string& t : labTexts) de.labs.push_back(prism::app::parseNumbers(t, "--lab"));
       colourDeltaE(de);
     }

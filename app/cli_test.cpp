@@ -460,9 +460,9 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("reference " + scenes + "/sunset.json -o x.exr", "does not trace the atmosphere");
   expectOneLineError("reference " + scene + " -o v.exr --variance ./v.exr", "./v.exr: is also the image (-o)");
   // An exposure whose display white float cannot hold (2^128 overflows) is refused before any work.
-  expectOneLineError("reference " + scene + " -o x.exr --ev 200", "exposure (EV100) 200 must be within ±50");
+  expectOneLineError("reference " + scene + " -o x.exr --ev 200", "--ev: exposure (EV100) 200 must be within ±50");
   expectOneLineError("reference " + scene + " -o x.exr --ev 1e39", "--ev: 1e39 is beyond ±1e+12");
-  expectOneLineError("render " + scene + " -o x.exr --ev -60", "exposure (EV100) -60 must be within ±50");
+  expectOneLineError("render " + scene + " -o x.exr --ev -60", "ev: expected an EV100 within ±50 or scene, got \"-60\"");
   expectOneLineError("render " + scene + " -o x.exr --set camera.ev100=300", "/camera/ev100");
 
   std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "compare_input";

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "app/option_error.h"
 #include "batch/slurm_script.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -91,7 +92,7 @@ void printReferenceClusterScript(const ClusterOptions& o) {
   checkReferenceOutputs(r.output, r.variance);
   if (o.split != "rows" && o.split != "samples") throw Error(fmt::format("--split: expected rows or samples, got \"{}\"", excerpt(o.split)));
   const bool rows = o.split == "rows";
-  if (r.ev100) render::validateEv100(*r.ev100);
+  if (r.ev100) fromOption("--ev", [&] { render::validateEv100(*r.ev100); });
   if (r.threads != 0) throw Error("--threads: each task runs as many threads as its --cpus (SLURM_CPUS_PER_TASK)");
   const Scene scene = loadScene(r.scene, r.sets);  // refused here, not in a hundred tasks
   reference::requireTraceable(scene);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "app/camera_option.h"
+#include "app/option_error.h"
 #include "batch/reference_part.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -145,7 +146,7 @@ void writeReferenceImage(const reference::ReferenceImage& image, const std::stri
 
 void runReference(const ReferenceOptions& o) {
   setAllThreads(o.threads);  // Embree's BVH build too, not only the paths
-  if (o.ev100) render::validateEv100(*o.ev100);
+  if (o.ev100) fromOption("--ev", [&] { render::validateEv100(*o.ev100); });
   if (o.tile.empty() && o.samples.empty()) checkReferenceOutputs(o.output, o.variance);
   Scene scene = loadScene(o.scene, o.sets);
   reference::requireTraceable(scene);  // before the upsampling table, which a cold cache builds first

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/json_schema.h"
+#include "scene/scene.h"
 #include "spectral/illuminant.h"
 #include "spectral/observer.h"
 
@@ -140,18 +141,21 @@ SettingKey rangeKey() {
 }
 
 SettingKey exposureKey() {
-  SettingKey k{"ev", SettingType::Number, "an EV100 or scene", {}, "exposure EV100 (scene: the scene camera's)",
-               "9.5", {}, {}};
+  SettingKey k{"ev", SettingType::Number, fmt::format("an EV100 within ±{:g} or scene", kEv100Limit), {},
+               "exposure EV100 (scene: the scene camera's)", "9.5", {}, {}};
   k.parse = [k](FrameSettings& s, std::string_view v) {
     if (v == "scene") {
       s.display.ev100.reset();
       return;
     }
+    float ev100 = 0.0f;
     try {
-      s.display.ev100 = parseFloat(k.name, v);
+      ev100 = parseFloat(k.name, v);
     } catch (const Error&) {
       fail(k, v);
     }
+    if (!(std::abs(ev100) <= kEv100Limit)) fail(k, v);  // said as the option, not as validate's sentence
+    s.display.ev100 = ev100;
   };
   k.print = [](const FrameSettings& s) {
     return s.display.ev100 ? fmt::format("{}", *s.display.ev100) : std::string("scene");

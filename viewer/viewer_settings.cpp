@@ -28,14 +28,20 @@ glm::vec3 vec3Of(const nlohmann::json& j, const std::string& where) {
   return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
 }
 
+bool isRangeKey(std::string_view key) {
+  const render::SettingKey* k = render::findFrameSettingKey(key);
+  return k && k->type == render::SettingType::Range;
+}
+
 // A frame key's value as the table parses it: a string as written, a number as JSON writes it
-// (a hand-written 32 or 9.5 means what "32" or "9.5" does), true and false as on and off, an
-// array of numbers joined by commas ([380, 720] is "380,720"); nullopt for anything else.
-std::optional<std::string> settingText(const nlohmann::json& value) {
+// (a hand-written 32 or 9.5 means what "32" or "9.5" does), true and false as on and off, and
+// for a range key (`range`) an array of numbers joined by commas ([380, 720] is "380,720");
+// nullopt for anything else: "wavelengths": [8] is not 8.
+std::optional<std::string> settingText(std::string_view key, const nlohmann::json& value) {
   if (value.is_string()) return value.get<std::string>();
   if (value.is_boolean()) return value.get<bool>() ? "on" : "off";
   if (value.is_number()) return value.dump();
-  if (!value.is_array() || value.empty()) return std::nullopt;
+  if (!value.is_array() || value.empty() || !isRangeKey(key)) return std::nullopt;
   std::string text;
   for (const nlohmann::json& element : value) {
     if (!element.is_number()) return std::nullopt;
@@ -106,10 +112,10 @@ void loadViewSettings(const std::filesystem::path& path, ViewSettings& view, Cam
       render::FrameSettings& side = key == "left" ? next.left : next.right;
       if (!value.is_object()) throw Error(fmt::format("{}: /{}: expected an object", file, excerpt(key)));
       for (const auto& [k, v] : value.items()) {
-        std::optional<std::string> valueText = settingText(v);
+        std::optional<std::string> valueText = settingText(k, v);
         if (!valueText)
-          throw Error(fmt::format("{}: /{}/{}: expected a string, a number, true or false, or an array of numbers, got {}",
-                                  file, excerpt(key), excerpt(k), excerpt(v.dump())));
+          throw Error(fmt::format("{}: /{}/{}: expected a string, a number, true or false{}, got {}", file, excerpt(key),
+                                  excerpt(k), isRangeKey(k) ? ", or an array of numbers" : "", excerpt(v.dump())));
         try {
           if (!render::applyFrameSetting(side, k, *valueText)) throw Error("unknown setting");
         } catch (const Error& e) {

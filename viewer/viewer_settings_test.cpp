@@ -105,6 +105,17 @@ TEST(ViewerSettings, FilesRoundTripAndBadOnesChangeNothing) {
     EXPECT_NE(std::string(e.what()).find("object.json: /left/range: expected a string, a number"), std::string::npos)
         << e.what();
   }
+  // An array is a range's alone: [8] was read as 8 wavelengths.
+  std::ofstream(dir / "listed.json") << R"({"left": {"wavelengths": [8]}})";
+  try {
+    loadViewSettings(dir / "listed.json", loaded, loadedCamera);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("listed.json: /left/wavelengths: expected a string, a number, true or false, got [8]"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(loaded.left.sampling.count, 32) << "a failed load changes nothing";
   std::ofstream(dir / "unknown.json") << R"({"lefty": {}})";
   EXPECT_THROW(loadViewSettings(dir / "unknown.json", loaded, loadedCamera), Error);
   // The camera as a scene's: a field of view of 1e-30 and a position of 1e15 were taken, 1e30 was

@@ -63,8 +63,8 @@ void addReferenceOptions(CLI::App* command, prism::app::ReferenceOptions& ref, s
   command->add_option("--camera", ref.camera, "a camera as the observer (raw camera RGB)")->excludes(observer);
   command->add_option("--range", refRange, "MIN,MAX nm of the hero wavelengths (within 360–830)");
   command->add_option("--strategy", ref.strategy,
-                           "importance (observer response), lights (the scene's emission × that response), "
-                           "rotated, stratified or uniform")
+                           "lights (the scene's emission × the observer's response), importance (the response "
+                           "alone), rotated, stratified or uniform")
       ->capture_default_str();
   command->add_option("--seed", ref.seed, "random seed (the image depends on it alone)")->capture_default_str();
   command->add_option("--threads", ref.threads, "worker threads (0: all)")->check(CLI::Range(0u, prism::kMaxThreads));

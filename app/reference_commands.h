@@ -29,7 +29,7 @@ struct ReferenceOptions {
   std::string observer = "cie1931";
   std::string camera;              // a camera as the observer (overrides observer)
   std::vector<double> range;       // min, max nm
-  std::string strategy = "importance";
+  std::string strategy = "lights";
   std::uint32_t seed = 0;
   unsigned threads = 0;
   std::optional<float> ev100;      // for the PNG and the display white (default: the scene's)

@@ -3,9 +3,9 @@
 // sigmoid.glsl), with rays traced by Embree. It is the ground truth the real-time path is held to.
 //
 // Estimator. Each path carries four hero wavelengths (Wilkie et al. 2014) drawn as one
-// stratified batch over [λmin, λmax] (by default importance-sampled by the observer's
-// x̄ + ȳ + z̄; with the Lights strategy by the scene's emission × the observer's curves, the
-// rasteriser's pdf: spectral/sampling.h, scene/scene_emission.h) with their pdfs, path s of a pixel's N in part s of each of
+// stratified batch over [λmin, λmax] (by default, the Lights strategy, importance-sampled by the
+// scene's emission × the observer's curves, the rasteriser's pdf: spectral/sampling.h,
+// scene/scene_emission.h; Importance by the observer's x̄ + ȳ + z̄ alone) with their pdfs, path s of a pixel's N in part s of each of
 // the four strata (so the N paths together stratify the spectrum 4·N ways); its radiance at them goes to tristimulus
 // through that batch's integration matrix (observer or camera curves / (4·pdf), times
 // absoluteTristimulusScale), so every path is an unbiased estimate of the pixel's XYZ in cd/m².
@@ -68,9 +68,9 @@ struct ReferenceSettings {
   int maxDepth = 16;         // global: interactions per path at most (surface hits and scattering events)
   PixelFilter filter = PixelFilter::Box;
   std::string observer = "cie1931";  // or a camera: raw camera RGB (on the luminance scale)
-  // The hero wavelengths: count must be 4. Importance (the observer's response) by default;
-  // Lights follows the scene's emission as well.
-  SamplingSettings wavelengths{4, kLambdaMinNm, kLambdaMaxNm, SamplingStrategy::Importance};
+  // The hero wavelengths: count must be 4. Lights (the scene's emission × the observer's
+  // response) by default: the observer's alone drew a narrow lamp's line in few paths or none.
+  SamplingSettings wavelengths{4, kLambdaMinNm, kLambdaMaxNm, SamplingStrategy::Lights};
   std::uint32_t seed = 0;    // the image is a deterministic function of the seed and settings
   unsigned threads = 0;      // 0: all hardware threads (the image does not depend on it)
 };

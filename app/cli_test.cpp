@@ -474,11 +474,16 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   const std::string a = (dir / "a.exr").string();
   expectOneLineError("compare " + a + " " + (dir / "nope.exr").string(), "nope.exr");
   expectOneLineError("compare " + a + " " + (dir / "b.exr").string(), "reference 4 × 3, test 5 × 3");
-  expectOneLineError("compare " + a + " " + (dir / "cam.exr").string(), "camera-rgb");
+  expectOneLineError("compare " + a + " " + (dir / "cam.exr").string(), "camera-rgb values; compare takes CIE 1931 XYZ or "
+                     "linear sRGB (a camera's raw RGB: render it without --camera)");
+  // Each refusal says what would be taken: a nebula's palette and a variance were told to render
+  // with an --observer neither has.
+  prism::imaging::writeExr(dir / "palette.exr", small, {.colour = prism::imaging::ColourMeaning::OtherRgb});
+  expectOneLineError("compare " + a + " " + (dir / "palette.exr").string(), "(nebula render --filters cie1931 writes XYZ)");
   prism::imaging::writeExr(dir / "xyz10.exr", small, {.colour = prism::imaging::ColourMeaning::Xyz1964});
   expectOneLineError("compare " + a + " " + (dir / "xyz10.exr").string(),
-                     "xyz10.exr: holds xyz-1964 values; compare takes CIE 1931 XYZ or linear sRGB (render with "
-                     "--observer cie1931 to compare them)");
+                     "xyz10.exr: holds xyz-1964 values; compare takes CIE 1931 XYZ or linear sRGB (render it with "
+                     "--observer cie1931)");
   // A lone Y channel is read (the reader's own refusal names it as readable) but is no colour.
   prism::imaging::writeExr(dir / "y.exr", prism::imaging::FloatImage(4, 3, 1, 0.5f),
                            {.colour = prism::imaging::ColourMeaning::Xyz});

@@ -33,6 +33,17 @@ struct Loaded {
   }
 };
 
+// What makes an image of that meaning one compare takes, for its refusal.
+std::string_view colourRemedy(imaging::ColourMeaning colour) {
+  switch (colour) {
+    case imaging::ColourMeaning::Xyz1964: return "render it with --observer cie1931";
+    case imaging::ColourMeaning::CameraRgb: return "a camera's raw RGB: render it without --camera";
+    default:
+      return "RGB of primaries Prism does not know: a nebula's filter palette (nebula render --filters cie1931 "
+             "writes XYZ), a reference's --variance (squared units, no colour) or a foreign EXR";
+  }
+}
+
 Loaded load(const std::filesystem::path& path, const std::optional<double>& white) {
   Loaded l;
   std::string extension = lowercaseExtension(path);
@@ -40,9 +51,8 @@ Loaded load(const std::filesystem::path& path, const std::optional<double>& whit
     l.linear = true;
     l.exr = imaging::readExr(path);
     if (l.exr.colour != imaging::ColourMeaning::Xyz && l.exr.colour != imaging::ColourMeaning::LinearSrgb) {
-      throw Error(fmt::format("{}: holds {} values; compare takes CIE 1931 XYZ or linear sRGB (render with "
-                              "--observer cie1931 to compare them)",
-                              path.string(), imaging::colourMeaningName(l.exr.colour)));
+      throw Error(fmt::format("{}: holds {} values; compare takes CIE 1931 XYZ or linear sRGB ({})", path.string(),
+                              imaging::colourMeaningName(l.exr.colour), colourRemedy(l.exr.colour)));
     }
     // A reference render's part: a band of rows (the rest of the image left out), or some of each
     // pixel's paths under another exposure's white; compared as it stands, its numbers meant nothing.
@@ -139,7 +149,7 @@ void runCompare(const CompareOptions& o) {
     fmt::print("{}\n", j.dump(2));
     return;
   }
-  fmt::print("{} vs {} ({} pixels)\n", o.test.string(), o.reference.string(), s.pixelCount);
+  fmt::print("{} vs {} ({} pixels)\n", o.reference.string(), o.test.string(), s.pixelCount);  // as given, as errors say
   fmt::print("CIEDE2000  mean {:.4f}  median {:.4f}  p95 {:.4f}  p99 {:.4f}  max {:.4f}\n", s.meanDeltaE,
              s.medianDeltaE, s.p95DeltaE, s.p99DeltaE, s.maxDeltaE);
   fmt::print("pixels above ΔE00 {:g}: {:.2f} %\n", s.thresholdDeltaE, 100.0 * s.fractionAbove);

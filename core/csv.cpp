@@ -53,10 +53,12 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
   while (std::getline(in, line)) {
     ++lineNumber;
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    const std::size_t first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
     std::vector<std::string> fields = splitLine(table.mPath, lineNumber, line);
     if (table.mHeader.empty()) {
       table.mHeader = std::move(fields);
+      table.mHeaderLine = lineNumber;
       continue;
     }
     if (fields.size() != table.mHeader.size())
@@ -73,7 +75,7 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
 int CsvTable::column(std::string_view name) const {
   auto it = std::find(mHeader.begin(), mHeader.end(), name);
   if (it == mHeader.end())
-    throw Error(FileLocation{mPath, 1}, "missing column '" + std::string(name) + "'");
+    throw Error(FileLocation{mPath, mHeaderLine}, "missing column '" + std::string(name) + "'");
   return static_cast<int>(it - mHeader.begin());
 }
 

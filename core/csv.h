@@ -1,4 +1,6 @@
-// Reading the CSV files Prism is handed: its own data/ tables and users' files.
+// Reading the CSV files Prism is handed: its own data/ tables and users' files. Blank lines and
+// lines whose first non-blank character is '#' (comments, as spectral data files often start) are
+// skipped; the first other line is the header.
 //
 // Every failure is a prism::Error whose message starts with "FILE:LINE:" (LINE:COLUMN for a bad
 // field), so a user can go straight to the place. Tokenising (RFC 4180 quoting) is libcsv's;
@@ -25,6 +27,7 @@ class CsvTable {
 
   const std::string& path() const { return mPath; }
   const std::vector<std::string>& header() const { return mHeader; }
+  int headerLine() const { return mHeaderLine; }  // 1-based, after any comments
   const std::vector<CsvRow>& rows() const { return mRows; }
   // Index of a header column; Error naming the file and the column when absent.
   int column(std::string_view name) const;
@@ -34,6 +37,7 @@ class CsvTable {
  private:
   std::string mPath;
   std::vector<std::string> mHeader;
+  int mHeaderLine = 0;
   std::vector<CsvRow> mRows;
 };
 

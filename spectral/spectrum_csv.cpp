@@ -16,7 +16,7 @@ SpectraTable SpectraTable::read(const std::filesystem::path& path,
   SpectraTable table;
   table.mPath = csv.path();
   if (csv.header().front() != "wavelength_nm")
-    throw Error(table.mPath + ":1: first column must be 'wavelength_nm', found '" +
+    throw Error(table.mPath + ":" + std::to_string(csv.headerLine()) + ": first column must be 'wavelength_nm', found '" +
                 csv.header().front() + "'");
   for (std::string_view name : expectedColumns) csv.column(name);
   table.mNames.assign(csv.header().begin() + 1, csv.header().end());
@@ -47,13 +47,14 @@ TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path, Extrapolati
                                   double minValue, double maxValue) {
   CsvTable csv = CsvTable::read(path);
   if (csv.header().size() != 2)
-    throw Error(csv.path() + ":1: a spectrum file has two columns (wavelength in nm, value), found " +
+    throw Error(csv.path() + ":" + std::to_string(csv.headerLine()) + ": a spectrum file has two columns (wavelength in nm, value), found " +
                 std::to_string(csv.header().size()));
   double number = 0.0;
   const std::string& first = csv.header().front();
   const auto parsed = std::from_chars(first.data(), first.data() + first.size(), number);
   if (!first.empty() && parsed.ec == std::errc() && parsed.ptr == first.data() + first.size())
-    throw Error(csv.path() + ":1: expected a header line (e.g. wavelength_nm,value) before the numbers, got " + first);
+    throw Error(csv.path() + ":" + std::to_string(csv.headerLine()) +
+                ": expected a header line (e.g. wavelength_nm,value) before the numbers, got " + first);
   std::vector<double> lambdas, values;
   std::vector<int> lines;
   for (const CsvRow& row : csv.rows()) {

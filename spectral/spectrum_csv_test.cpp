@@ -62,5 +62,20 @@ TEST(SpectrumCsvTest, SpectrumFileNeedsTwoColumns) {
             std::string::npos);
 }
 
+// A data file's notes: '#' lines are skipped, and the header's errors name its own line. A
+// comment before the header was read as a one-column header, and the real header blamed.
+TEST(SpectrumCsvTest, CommentLinesAreSkippedAndTheHeaderNamedByItsLine) {
+  auto noted = writeTempFile("noted.csv", "# measured 2026\n  # by hand\nwavelength_nm,value\n400,1\n# a gap\n500,2\n");
+  TabulatedSpectrum s = readSpectrumCsv(noted, Extrapolation::Zero);
+  EXPECT_DOUBLE_EQ(s.at(450.0), 1.5);
+  EXPECT_EQ(s.lambdasNm().size(), 2u);
+  auto commentedHeader = writeTempFile("commented_header.csv", "# wavelength_nm,value\n400,1\n500,2\n");
+  EXPECT_EQ(errorOf([&] { readSpectrumCsv(commentedHeader, Extrapolation::Zero); }),
+            commentedHeader.string() + ":2: expected a header line (e.g. wavelength_nm,value) before the numbers, got 400");
+  auto three = writeTempFile("noted_three.csv", "# notes\nwavelength_nm,a,b\n400,1,1\n410,1,1\n");
+  EXPECT_EQ(errorOf([&] { readSpectrumCsv(three, Extrapolation::Zero); }),
+            three.string() + ":2: a spectrum file has two columns (wavelength in nm, value), found 3");
+}
+
 }  // namespace
 }  // namespace prism

@@ -149,7 +149,7 @@ NebulaSceneFile readNebulaScene(const std::filesystem::path& path) {
   schema::Document doc{path.string(), {}};
   nlohmann::json json = schema::parseJson(text, doc.name);
   schema::Node root(json, "", doc);
-  if (json.is_object() && json.contains("camera") && json.contains("nebula"))  // said before "/camera: unknown key"
+  if (json.is_object() && json.contains("camera"))  // said before "/camera: unknown key", nebula or not
     root.fail("a scene of the renderer (it has a camera): `prism render` and `prism view` take it; `prism nebula` "
               "takes a file whose only key is \"nebula\"");
   root.expectObject({"nebula"});

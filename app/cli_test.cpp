@@ -709,6 +709,18 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   expectOneLineError("nebula density " + (dir / "from_file.json").string() + " -o " + (dir / "tiny.density").string(),
                      "is also the scene's density file");
   EXPECT_EQ(slurp(dir / "tiny.json"), sceneBefore);
+  // A renderer scene's nebula section gives its grid too (it was refused as "a scene of the
+  // renderer"), the same as the nebula file with the same keys; one without a section says so.
+  std::ofstream(dir / "tiny_scene.json") << R"({"camera": {"position": [0, 0, -6], "target": [0, 0, 0]}, "objects": [],
+    "nebula": {"density": {"noise": {"resolution": 16}}, "stars": [{"position": [0.5, 0.5, 0.5], "temperature": 9000}]}})";
+  Result sectionDensity = run("nebula density " + (dir / "tiny_scene.json").string() + " -o " +
+                              (dir / "tiny_scene.density").string());
+  ASSERT_EQ(sectionDensity.exitCode, 0) << sectionDensity.err;
+  EXPECT_EQ(slurp(dir / "tiny_scene.density"), slurp(dir / "tiny.density"));
+  std::ofstream(dir / "no_nebula.json") << R"({"camera": {"position": [0, 0, -6], "target": [0, 0, 0]}, "objects": []})";
+  expectOneLineError("nebula density " + (dir / "no_nebula.json").string() + " -o " + (dir / "n.density").string(),
+                     "no_nebula.json: a scene of the renderer without a \"nebula\" section: no density to write");
+  EXPECT_FALSE(std::filesystem::exists(dir / "n.density"));
   // Nor does `nebula render -o` write over its scene or its density file (it did, exit 0, when
   // their names ended in .png or .exr).
   std::filesystem::copy_file(dir / "tiny.json", dir / "scene.png", std::filesystem::copy_options::overwrite_existing);

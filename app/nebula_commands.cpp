@@ -16,6 +16,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/input_file.h"
+#include "core/json_schema.h"
 #include "gpu/headless_context.h"
 #include "gpu/timer_query.h"
 #include "core/atomic_file.h"
@@ -28,7 +30,9 @@
 #include "techniques/nebula/nebula_basis.h"
 #include "techniques/nebula/nebula_basis_coverage.h"
 #include "techniques/nebula/gpu/nebula_gpu_marcher.h"
+#include "scene/scene_loader.h"
 #include "techniques/nebula/nebula_scene.h"
+#include "techniques/nebula/nebula_section.h"
 
 namespace prism::app {
 namespace {
@@ -335,16 +339,47 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   fmt::print("wrote {}\n", o.output.string());
 }
 
+namespace {
+
+// Whether the file is a scene of the renderer (it has a camera), which may hold a nebula section.
+bool isRendererScene(const std::filesystem::path& path) {
+  requireInputFile(path, "a scene");
+  const std::vector<unsigned char> bytes = schema::readBinaryFile(path);
+  const nlohmann::json json =
+      schema::parseJson(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path.string());
+  return json.is_object() && json.contains("camera");
+}
+
+// The grid of a renderer scene's nebula section: its density file's, or its noise generated.
+nebula::DensityGrid sectionDensity(const std::filesystem::path& scenePath, const std::filesystem::path& output) {
+  const Scene scene = loadScene(scenePath);
+  const auto* section = scene.techniques.find<nebula::NebulaSection>();
+  if (!section) throw Error(fmt::format("{}: a scene of the renderer without a \"nebula\" section: no density to write", scenePath.string()));
+  requireOtherFile(output, section->source.file, "the scene's density file");
+  if (!section->source.noise) return section->fullModel().density;
+  std::optional<harness::ProgressBar> bar;
+  return nebula::generateFbm(*section->source.noise, 0, [&bar](std::size_t done, std::size_t total) {
+    if (!bar) bar.emplace("nebula: density noise");
+    bar->update(done, total);
+  });
+}
+
+}  // namespace
+
 void runNebulaDensity(const std::filesystem::path& scenePath, const std::filesystem::path& output) {
   requireExtension(output, ".density", "-o", "density grid");
   requireOtherFile(output, scenePath, "the scene file");
   requireWritable(output);
-  nebula::NebulaSceneFile file = nebula::readNebulaScene(scenePath);
-  requireOtherFile(output, file.source.file, "the scene's density file");
-  nebula::NebulaScene scene = generateWithProgress(std::move(file), 0);
-  nebula::writeDensityFile(output, scene.model.density);
-  fmt::print("wrote {} ({}x{}x{})\n", output.string(), scene.model.density.nx, scene.model.density.ny,
-             scene.model.density.nz);
+  nebula::DensityGrid grid;
+  if (isRendererScene(scenePath)) {
+    grid = sectionDensity(scenePath, output);
+  } else {
+    nebula::NebulaSceneFile file = nebula::readNebulaScene(scenePath);
+    requireOtherFile(output, file.source.file, "the scene's density file");
+    grid = generateWithProgress(std::move(file), 0).model.density;
+  }
+  nebula::writeDensityFile(output, grid);
+  fmt::print("wrote {} ({}x{}x{})\n", output.string(), grid.nx, grid.ny, grid.nz);
 }
 
 namespace {

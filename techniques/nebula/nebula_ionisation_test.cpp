@@ -129,5 +129,29 @@ TEST(NebulaIonisation, ZonesDimTheLinesOutsideThem) {
   EXPECT_LT(oiiiZoned, 1e-3 * oiii);
 }
 
+// Zones with no star to make them: the lines glow nowhere, and the model says so (the image was
+// black without a word). Not so without zones, without lines, or with a star that shines.
+TEST(NebulaIonisation, ZonesWithoutAShiningStarWarnThatNoLineGlows) {
+  NebulaModel m = benchNebulaModel(0);
+  m.emission = 0.01;
+  m.lineGroups = {{"H I Balmer (case B)", 1.0}};
+  EXPECT_EQ(unlitLinesWarning(m), "");
+  m.ionisation = IonisationModel{};
+  EXPECT_NE(unlitLinesWarning(m).find("no emission line glows"), std::string::npos);
+  m.stars = {{{0.5, 0.5, 0.5}, 40000.0, 0.0}};
+  EXPECT_NE(unlitLinesWarning(m), "") << "a star of luminosity 0 ionises nothing";
+  m.camera.width = m.camera.height = 8;
+  RenderSettings s;
+  s.method = Method::Projection;
+  double y = 0.0;
+  for (const glm::vec3& p : NebulaRenderer(m, s).render(s).pixels) y += p.y;
+  EXPECT_EQ(y, 0.0) << "what the warning says";
+  m.stars[0].luminosity = 1.0;
+  EXPECT_EQ(unlitLinesWarning(m), "");
+  m.emission = 0.0;
+  m.stars.clear();
+  EXPECT_EQ(unlitLinesWarning(m), "") << "no lines asked for";
+}
+
 }  // namespace
 }  // namespace prism::nebula

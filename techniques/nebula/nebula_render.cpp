@@ -564,6 +564,13 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s,
   return image;
 }
 
+std::string unlitLinesWarning(const NebulaModel& model) {
+  const bool lit = std::any_of(model.stars.begin(), model.stars.end(), [](const NebulaStar& s) { return s.luminosity > 0.0; });
+  if (!model.ionisation || model.emission <= 0.0 || lit) return "";
+  return "ionisation zones without a star (of luminosity above 0) to ionise the gas: no emission line glows; "
+         "without \"ionisation\" the lines glow wherever the density is";
+}
+
 double maxRelativeError(const NebulaImage& image, const NebulaImage& reference, double floorOfMax) {
   PRISM_CHECK(image.pixels.size() == reference.pixels.size());
   double worst = 0.0;

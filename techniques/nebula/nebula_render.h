@@ -82,6 +82,11 @@ struct NebulaModel {
   std::array<PassbandEdit, 3> passbands{};  // each channel's passband moved and resized
 };
 
+// Empty, or why the model's emission lines glow nowhere: ionisation zones with no star of
+// luminosity above 0 to ionise the gas (a valid model, whose lines a user asked for and would not
+// see: the image had them all black, with no word).
+std::string unlitLinesWarning(const NebulaModel& model);
+
 enum class Method { Reference, Analytic, Projection, LightDensity, PreIntegration };
 const char* methodName(Method m);
 Method methodFromName(std::string_view name);  // Error naming it when unknown

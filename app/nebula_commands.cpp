@@ -302,6 +302,7 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   auto t1 = std::chrono::steady_clock::now();
   const nebula::BasisCoverage coverage = nebula::basisCoverage(renderer, s, renderer.model().camera);
   for (const std::string& warning : {nebula::coarseGridWarning(renderer.model().density),
+                                     nebula::emptyGridWarning(renderer.model().density),
                                      nebula::unlitLinesWarning(renderer.model()),
                                      nebula::stepThicknessWarning(coverage, s, "--steps {:.0f}"),
                                      nebula::basisCoverageWarning(coverage, s, "--basis-depth {:.0f} --basis 6")})

@@ -37,6 +37,12 @@ std::string coarseGridWarning(const DensityGrid& grid) {
                      grid.nx, grid.ny, grid.nz, kFineGridVoxels);
 }
 
+std::string emptyGridWarning(const DensityGrid& grid) {
+  if (std::any_of(grid.values.begin(), grid.values.end(), [](float v) { return v > 0.0f; })) return "";
+  return "the density is 0 in every voxel, so the nebula neither glows nor dims what lies behind it (noise: a bias "
+         "below about −amplitude empties the cube)";
+}
+
 double DensityGrid::sample(const glm::dvec3& p) const {
   if (p.x < 0.0 || p.y < 0.0 || p.z < 0.0 || p.x > 1.0 || p.y > 1.0 || p.z > 1.0) return 0.0;
   const TrilinearAxis ax = trilinearAxis(p.x, nx), ay = trilinearAxis(p.y, ny), az = trilinearAxis(p.z, nz);

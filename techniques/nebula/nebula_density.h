@@ -49,6 +49,9 @@ struct DensityGrid {
 // 1³ 0.175 (its brightest pixel 6× the converged one).
 inline constexpr int kFineGridVoxels = 16;
 std::string coarseGridWarning(const DensityGrid& grid);
+// Empty, or that the grid holds no density anywhere (noise whose bias is below about −amplitude, a
+// file of zeros): a valid nebula that renders nothing, which a user would not expect unannounced.
+std::string emptyGridWarning(const DensityGrid& grid);
 
 // fBm over Perlin's improved noise (Perlin 2002): Σ_{o<octaves} gainᵒ·noise(frequency·2ᵒ·p),
 // scaled by `amplitude`, plus `bias`, shaped by a radial falloff so that the cloud fades before

@@ -163,6 +163,15 @@ TEST(NebulaDensity, NoiseIsDeterministicAndSeeded) {
   EXPECT_GT(sum, 0.0);
 }
 
+// A bias below −amplitude leaves every voxel at 0: valid, but said (it rendered nothing unannounced).
+TEST(NebulaDensity, AnEmptyGridIsWarnedOf) {
+  NoiseParameters p;
+  p.resolution = 8;
+  EXPECT_EQ(emptyGridWarning(generateFbm(p, 1)), "");
+  p.bias = -5.0;
+  EXPECT_NE(emptyGridWarning(generateFbm(p, 1)).find("the density is 0 in every voxel"), std::string::npos);
+}
+
 TEST(NebulaDensity, FileRoundTrips) {
   NoiseParameters p;
   p.resolution = 8;

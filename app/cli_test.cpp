@@ -382,6 +382,16 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / sky)) << sky;
   }
   EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / "colorchecker.png"));
+  // The contact sheet: one cell a scene (the sky's optimised4) and two a nebula, four a row, each
+  // half the render's size.
+  std::size_t cells = 0;
+  for (const auto& folder : {std::filesystem::path(scenes), std::filesystem::path(scenes) / "nebula"})
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+      if (entry.path().extension() == ".json") cells += folder.filename() == "nebula" ? 2 : 1;
+  const prism::imaging::PngImage sheet = prism::imaging::readPng8(dir / "gallery" / "contact_sheet.png");
+  EXPECT_EQ(sheet.width(), 4 * 32);
+  EXPECT_EQ(sheet.height(), static_cast<int>((cells + 3) / 4) * 18);
+  EXPECT_NE(index.find("contact_sheet.png"), std::string::npos);
   for (const char* nebula : {"nebula_hubble.png", "nebula_natural.png"}) {
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / "gallery" / nebula)) << nebula;
     EXPECT_NE(index.find(nebula), std::string::npos) << nebula;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 #include <fstream>
 #include <span>
 
@@ -11,6 +12,7 @@
 
 #include "gpu/headless_context.h"
 #include "harness/colour_checker_chart.h"
+#include "harness/contact_sheet.h"
 #include "harness/display_png.h"
 #include "harness/html_report.h"
 #include "harness/nebula_display.h"
@@ -48,6 +50,11 @@ constexpr std::array<View, 2> kNebulaViews{
     {{"_hubble", "Hubble palette", " in the Hubble palette"}, {"_natural", "natural colour", " in natural colour"}}};
 constexpr const char* kChartFile = "colorchecker.png";
 constexpr const char* kIndexFile = "index.html";
+constexpr const char* kSheetFile = "contact_sheet.png";
+
+// The contact sheet's images, each with its label, in the gallery's order (a deque: the cells
+// point into it).
+using SheetImages = std::deque<std::pair<imaging::PngImage, std::string>>;
 
 std::string viewFile(const std::string& name, const View& view) { return name + view.suffix + ".png"; }
 
@@ -78,8 +85,9 @@ struct NebulaEntry {
 // The nebula of `file` at its camera's size or within `most` pixels a side, in the Hubble palette
 // and in natural colour (one precomputation and one march, refiltered and finished again), written
 // into `folder` as kNebulaViews name them; the entry holds each render's max relative error
-// against the reference.
-void renderNebula(const std::filesystem::path& file, int most, const std::filesystem::path& folder, NebulaEntry& entry) {
+// against the reference; both images go on the sheet.
+void renderNebula(const std::filesystem::path& file, int most, const std::filesystem::path& folder, NebulaEntry& entry,
+                  SheetImages& sheet) {
   nebula::NebulaScene scene = nebula::loadNebulaScene(file);
   scene.model.filters = "hubble";
   nebula::NebulaCamera& camera = scene.model.camera;
@@ -97,7 +105,10 @@ void renderNebula(const std::filesystem::path& file, int most, const std::filesy
     const nebula::NebulaImage image = marcher.finish();
     settings.method = nebula::Method::Reference;
     (palette ? entry.hubbleError : entry.naturalError) = nebula::maxRelativeError(image, renderer->render(settings));
-    nebulaDisplayPng(image, palette).write(folder / viewFile(entry.name, kNebulaViews[palette ? 0 : 1]));
+    const View& view = kNebulaViews[palette ? 0 : 1];
+    imaging::PngImage png = nebulaDisplayPng(image, palette);
+    png.write(folder / viewFile(entry.name, view));
+    sheet.emplace_back(std::move(png), fmt::format("{} ({})", entry.name, view.caption));
   }
 }
 
@@ -118,6 +129,8 @@ std::string description(const std::filesystem::path& file) {
 std::string indexHtml(const std::vector<Entry>& entries, const std::vector<NebulaEntry>& nebulae,
                       const GalleryOptions& o) {
   HtmlPage page("Prism gallery");
+  page.paragraph("All of it at once, the spectral images shrunk (the sky's: optimised4):");
+  page.image({kSheetFile, "every scene's spectral image and both views of every nebula, in a grid"});
   page.paragraph(fmt::format(
       "Each scene rendered by <code>prism demo</code> at {}×{} in RGB mode (three channels, the common "
       "practice) and in spectral mode (Jakob–Hanika upsampling, one frame of {} wavelengths and a 3×{} matrix "
@@ -181,7 +194,7 @@ bool showsOptimisedWavelengths(const Scene& scene) {
 // scenes' folder: it was replaced by a render, and a later scene drew that).
 void requireOutputsClear(const std::filesystem::path& folder, const std::vector<Scene>& scenes,
                          const std::vector<std::filesystem::path>& nebulaFiles) {
-  std::vector<std::filesystem::path> outputs{folder / kChartFile, folder / kIndexFile};
+  std::vector<std::filesystem::path> outputs{folder / kChartFile, folder / kIndexFile, folder / kSheetFile};
   for (const Scene& scene : scenes) {
     for (const View& view : sceneViews(showsOptimisedWavelengths(scene)))
       outputs.push_back(folder / viewFile(scene.file.stem().string(), view));
@@ -251,6 +264,7 @@ void runGallery(const GalleryOptions& o) {
   gpu::HeadlessContext context;
   ProgressBar bar("gallery");
   std::vector<Entry> entries;
+  SheetImages sheet;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     const Scene& scene = scenes[i];
     render::FrameSettings settings;
@@ -289,6 +303,7 @@ void runGallery(const GalleryOptions& o) {
       e.optimisedDifference = difference(optimisedXyz, referenceXyz);
       for (std::size_t v = 0; const imaging::PngImage* image : {&rgb, &optimised, &reference})
         image->write(o.output / viewFile(e.name, kSkyViews[v++]));
+      sheet.emplace_back(std::move(optimised), fmt::format("{} ({})", e.name, kSkyViews[1].caption));
       entries.push_back(std::move(e));
       bar.update(i + 1, scenes.size());
       continue;
@@ -301,6 +316,7 @@ void runGallery(const GalleryOptions& o) {
     e.difference = difference(spectralXyz, rgbXyz);
     rgb.write(o.output / viewFile(e.name, kSurfaceViews[0]));
     spectral.write(o.output / viewFile(e.name, kSurfaceViews[1]));
+    sheet.emplace_back(std::move(spectral), e.name);
     entries.push_back(std::move(e));
     bar.update(i + 1, scenes.size());
   }
@@ -309,10 +325,14 @@ void runGallery(const GalleryOptions& o) {
   for (std::size_t i = 0; i < nebulaFiles.size(); ++i) {
     NebulaEntry n;
     n.name = nebulaFiles[i].stem().string();
-    renderNebula(nebulaFiles[i], o.height, o.output, n);
+    renderNebula(nebulaFiles[i], o.height, o.output, n, sheet);
     nebulaBar.update(i + 1, nebulaFiles.size());
     nebulae.push_back(std::move(n));
   }
+  std::vector<SheetCell> cells;
+  for (const auto& [image, label] : sheet) cells.push_back({&image, label});
+  contactSheet(cells, {.columns = 4, .cellWidth = std::clamp(o.width / 2, 16, 4096), .cellHeight = std::clamp(o.height / 2, 16, 4096)})
+      .write(o.output / kSheetFile);
   writeFileAtomically(o.output / kIndexFile, indexHtml(entries, nebulae, o));
   fmt::print("{:<24} {:>10} {:>8} {:>8}\n", "scene (RGB vs spectral)", "mean ΔE00", "p95", "max");
   for (const Entry& e : entries) {

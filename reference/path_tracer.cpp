@@ -521,6 +521,7 @@ ReferenceImage renderReference(const Scene& scene, const RgbToSpectrumTable& tab
   validate(settings);
   validate(region, settings);
   requireTraceable(scene);
+  requireTableForColourSpace(table, scene.colourSpace, scene.file.string());
   PathTracer tracer(scene, table, settings);
   const int width = settings.width, rows = region.rows();
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(rows);

@@ -126,6 +126,20 @@ TEST(PathTracer, TheDefaultLightsPdfIsUnbiasedAndQuieterUnderASpikyLamp) {
   EXPECT_LT(lights.meanVariance, importance.meanVariance / 10.0);
 }
 
+// A table of another colour space than the scene's is the caller's error, said as the renderer
+// says it (the tracer aborted on an internal check).
+TEST(PathTracer, RefusesAnUpsamplingTableOfAnotherColourSpace) {
+  Scene scene = litPlane(0.5, 1000.0f);
+  scene.colourSpace = "rec2020";
+  scene.file = "plane.json";
+  try {
+    renderReference(scene, srgbTable(), small(1));
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "plane.json: the upsampling table is for srgb, the scene is in rec2020");
+  }
+}
+
 TEST(PathTracer, LambertianSphereUnderADirectionalLightMatchesTheClosedFormPerPixel) {
   Scene scene;
   scene.camera.position = {0.0f, 0.0f, 4.0f};

@@ -101,10 +101,7 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
       mFullScreen(gpu::VertexArray::attributeless("full-screen triangle")),
       mGizmo(uploadMesh(makeSphere(glm::vec3(0.0f), 1.0f, 16))) {
   validate(mSettings);
-  if (table.gamut() != colourSpace(scene.colourSpace).name) {
-    throw Error(fmt::format("{}: the upsampling table is for {}, the scene is in {}",
-                            scene.file.string(), table.gamut(), scene.colourSpace));
-  }
+  requireTableForColourSpace(table, scene.colourSpace, scene.file.string());
   requireLightCount(scene);
   mLightingPrograms.emplace(lightingVariant(scene), lightingProgram(scene));
   mContext = frameContext(mSettings, mScene, mTable);

@@ -9,6 +9,7 @@
 #include "shared_cpp.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "spectral/colour_space.h"
 #include "spectral/table_file_bytes.h"
 
 namespace prism::shared {
@@ -161,6 +162,13 @@ RgbToSpectrumTable RgbToSpectrumTable::load(const std::filesystem::path& path) {
   for (float v : table.mData)
     if (!std::isfinite(v)) throw Error(where + "non-finite coefficient in upsampling table");
   return table;
+}
+
+void requireTableForColourSpace(const RgbToSpectrumTable& table, std::string_view colourSpaceName,
+                                std::string_view where) {
+  if (table.gamut() != colourSpace(colourSpaceName).name)
+    throw Error(std::string(where) + ": the upsampling table is for " + table.gamut() + ", the scene is in " +
+                std::string(colourSpaceName));
 }
 
 }  // namespace prism

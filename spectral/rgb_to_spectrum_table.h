@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -63,5 +64,11 @@ class RgbToSpectrumTable {
   std::uint32_t mInputsHash = 0;
   std::vector<float> mData;
 };
+
+// Error "WHERE: the upsampling table is for G, the scene is in S" unless `table` is for the colour
+// space `colourSpaceName` names (by any of its names): a scene's albedos upsampled by another
+// space's table come out other colours (the path tracer aborted on it, the renderer said so).
+void requireTableForColourSpace(const RgbToSpectrumTable& table, std::string_view colourSpaceName,
+                                std::string_view where);
 
 }  // namespace prism

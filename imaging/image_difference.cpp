@@ -39,6 +39,13 @@ class PixelReader {
       throw Error("cannot compare a " + std::string(colourMeaningName(input.colour)) +
                   " image: only linear-srgb and xyz have a colorimetric meaning here");
     if (input.linear->channels < 3) throw Error("cannot compare a 1-channel image as colour");
+    // A caller's image whose pixels do not fill it was read past its end (a mean of 100, no error).
+    const FloatImage& image = *input.linear;
+    if (image.width < 0 || image.height < 0 ||
+        image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) *
+                                   static_cast<std::size_t>(image.channels))
+      throw Error("cannot compare a " + std::to_string(image.width) + " × " + std::to_string(image.height) + " × " +
+                  std::to_string(image.channels) + " image holding " + std::to_string(image.pixels.size()) + " values");
     if (!(input.whiteLuminance > 0.0))
       throw Error("white luminance must be positive, not " + std::to_string(input.whiteLuminance));
   }

@@ -43,6 +43,14 @@ TEST(ImageDifference, IdenticalImagesDifferByZero) {
   EXPECT_TRUE(d.deltaEMap.pixels.empty());  // not asked for
 }
 
+// An image whose pixels do not fill its size is refused: it was read past its end.
+TEST(ImageDifference, AnImageShortOfItsPixelsIsRefused) {
+  FloatImage white(3, 3, 3, 1.0f), shortOfPixels(3, 3, 3, 1.0f);
+  shortOfPixels.pixels.resize(3);
+  EXPECT_THROW(compareImages(linearInput(shortOfPixels, ColourMeaning::Xyz, 1.0), linearInput(white, ColourMeaning::Xyz, 1.0)),
+               Error);
+}
+
 TEST(ImageDifference, KnownPairMatchesCiede2000Directly) {
   // Uniform sRGB (128, 0, 0) against (130, 0, 0).
   const Eigen::Vector3d white = colourSpace("srgb").whiteXyz();

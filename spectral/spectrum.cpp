@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "shared_cpp.h"
 #include "core/error.h"
@@ -60,10 +61,19 @@ Spectrum& Spectrum::operator+=(const Spectrum& other) {
 TabulatedSpectrum::TabulatedSpectrum(std::vector<double> lambdasNm, std::vector<double> values,
                                      Extrapolation extrapolation)
     : mLambdasNm(std::move(lambdasNm)), mValues(std::move(values)), mExtrapolation(extrapolation) {
-  PRISM_CHECK(mLambdasNm.size() == mValues.size());
-  PRISM_CHECK(mLambdasNm.size() >= 2);
-  PRISM_CHECK(std::adjacent_find(mLambdasNm.begin(), mLambdasNm.end(),
-                                 [](double a, double b) { return !(a < b); }) == mLambdasNm.end());
+  // A library's caller may hand any table: what the CSV reader refuses with its file and line is
+  // refused here too, as an Error (it aborted on an internal check, and took NaN values).
+  if (mLambdasNm.size() != mValues.size())
+    throw Error("a tabulated spectrum needs as many values as wavelengths, not " + std::to_string(mValues.size()) +
+                " for " + std::to_string(mLambdasNm.size()));
+  if (mLambdasNm.size() < 2)
+    throw Error("a tabulated spectrum needs at least two wavelengths, not " + std::to_string(mLambdasNm.size()));
+  if (std::adjacent_find(mLambdasNm.begin(), mLambdasNm.end(), [](double a, double b) { return !(a < b); }) !=
+          mLambdasNm.end() ||
+      !std::isfinite(mLambdasNm.front()) || !std::isfinite(mLambdasNm.back()))
+    throw Error("a tabulated spectrum's wavelengths must be finite and increase strictly");
+  if (!std::all_of(mValues.begin(), mValues.end(), [](double v) { return std::isfinite(v); }))
+    throw Error("a tabulated spectrum's values must be finite");
 }
 
 double TabulatedSpectrum::at(double lambdaNm) const {

@@ -65,7 +65,8 @@ enum class Extrapolation { Zero, Clamp };
 
 class TabulatedSpectrum {
  public:
-  // Wavelengths strictly increasing, at least two samples, same count as values (checked).
+  // Wavelengths strictly increasing, at least two samples, same count as values, every number
+  // finite: Error otherwise.
   TabulatedSpectrum(std::vector<double> lambdasNm, std::vector<double> values,
                     Extrapolation extrapolation);
 

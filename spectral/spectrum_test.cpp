@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -11,6 +12,18 @@
 
 namespace prism {
 namespace {
+
+// A table a library's caller builds is checked as a file's is: an Error, not an abort, and no NaN.
+TEST(TabulatedSpectrumTest, RefusesABadTableWithAnError) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(TabulatedSpectrum({400, 500}, {1.0}, Extrapolation::Zero), Error);
+  EXPECT_THROW(TabulatedSpectrum({400}, {1.0}, Extrapolation::Zero), Error);
+  EXPECT_THROW(TabulatedSpectrum({500, 400}, {1.0, 1.0}, Extrapolation::Zero), Error);
+  EXPECT_THROW(TabulatedSpectrum({400, 400}, {1.0, 1.0}, Extrapolation::Zero), Error);
+  EXPECT_THROW(TabulatedSpectrum({400, nan}, {1.0, 1.0}, Extrapolation::Zero), Error);
+  EXPECT_THROW(TabulatedSpectrum({400, 500}, {1.0, nan}, Extrapolation::Zero), Error);
+  EXPECT_NO_THROW(TabulatedSpectrum({400, 500}, {1.0, 2.0}, Extrapolation::Zero));
+}
 
 TEST(Spectrum, ConstantIntegratesToTheDomainWidth) {
   EXPECT_DOUBLE_EQ(Spectrum::constant(2.0).integral(), 2.0 * (kLambdaMaxNm - kLambdaMinNm));

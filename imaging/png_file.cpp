@@ -87,11 +87,13 @@ PngImage::PngImage(int width, int height, Rgb8 background)
 }
 
 Rgb8 PngImage::pixel(int x, int y) const {
+  PRISM_CHECK(x >= 0 && y >= 0 && x < mWidth && y < mHeight);  // out of range read another row or past the end
   std::size_t i = index(x, y);
   return {mRgba[i], mRgba[i + 1], mRgba[i + 2]};
 }
 
 void PngImage::setPixel(int x, int y, Rgb8 colour, std::uint8_t alpha) {
+  PRISM_CHECK(x >= 0 && y >= 0 && x < mWidth && y < mHeight);
   std::size_t i = index(x, y);
   mRgba[i] = colour.r;
   mRgba[i + 1] = colour.g;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 
@@ -272,6 +273,21 @@ void checkMaterialsAndNodes(const Node& top) {
   }
 }
 
+// A buffer's byteLength within what its base64 data: URI decodes to: tinygltf's own refusal quoted
+// the whole URI ("Failed to decode 'uri' : data:…").
+void requireDataUriHoldsByteLength(const Node& buffer, const std::string& uri) {
+  auto length = buffer.optionalChild("byteLength");
+  const std::size_t comma = uri.find(',');
+  if (!length || !length->json().is_number_unsigned() || comma == std::string::npos) return;
+  const std::string_view payload = std::string_view(uri).substr(comma + 1);
+  std::size_t padding = 0;
+  for (std::size_t i = payload.size(); i > 0 && payload[i - 1] == '=' && padding < 2; --i) ++padding;
+  const std::size_t holds = payload.size() / 4 * 3 - std::min(padding, payload.size() / 4 * 3);
+  const auto needs = length->json().get<std::uint64_t>();
+  if (needs > holds)
+    length->fail(std::to_string(needs) + " bytes, but the buffer's data: URI holds " + std::to_string(holds));
+}
+
 void checkUris(const Node& top, const fs::path& root, const fs::path& base) {
   for (const char* section : {"buffers", "images"}) {
     auto list = top.optionalChild(section);
@@ -288,6 +304,7 @@ void checkUris(const Node& top, const fs::path& root, const fs::path& base) {
         if (!tinygltf::IsDataURI(uri))
           uriNode->fail("unsupported data URI (base64 data of type application/octet-stream, "
                         "application/gltf-buffer, image/png or image/jpeg expected)");
+        if (std::string_view(section) == "buffers") requireDataUriHoldsByteLength(item, uri);
         continue;
       }
       if (hasScheme(uri))

@@ -273,19 +273,24 @@ void checkMaterialsAndNodes(const Node& top) {
   }
 }
 
-// A buffer's byteLength within what its base64 data: URI decodes to: tinygltf's own refusal quoted
-// the whole URI ("Failed to decode 'uri' : data:…").
+// A buffer's byteLength equal to what its base64 data: URI decodes to, as tinygltf requires:
+// its own refusal quoted the whole URI ("Failed to decode 'uri' : data:…"). Counted as tinygltf
+// decodes: the base64 characters up to the first '=' or other character, padding optional.
 void requireDataUriHoldsByteLength(const Node& buffer, const std::string& uri) {
   auto length = buffer.optionalChild("byteLength");
   const std::size_t comma = uri.find(',');
   if (!length || !length->json().is_number_unsigned() || comma == std::string::npos) return;
-  const std::string_view payload = std::string_view(uri).substr(comma + 1);
-  std::size_t padding = 0;
-  for (std::size_t i = payload.size(); i > 0 && payload[i - 1] == '=' && padding < 2; --i) ++padding;
-  const std::size_t holds = payload.size() / 4 * 3 - std::min(padding, payload.size() / 4 * 3);
+  std::size_t characters = 0;
+  for (std::size_t i = comma + 1; i < uri.size(); ++i, ++characters) {
+    const unsigned char c = static_cast<unsigned char>(uri[i]);
+    if (!std::isalnum(c) && c != '+' && c != '/') break;
+  }
+  const std::size_t rest = characters % 4;
+  const std::size_t holds = characters / 4 * 3 + (rest > 1 ? rest - 1 : 0);
   const auto needs = length->json().get<std::uint64_t>();
-  if (needs > holds)
-    length->fail(std::to_string(needs) + " bytes, but the buffer's data: URI holds " + std::to_string(holds));
+  if (needs != holds)
+    length->fail(std::to_string(needs) + " bytes, but the buffer's data: URI holds " + std::to_string(holds) +
+                 " (the loader takes them equal)");
 }
 
 void checkUris(const Node& top, const fs::path& root, const fs::path& base) {

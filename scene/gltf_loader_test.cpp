@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -168,6 +169,35 @@ TEST(GltfLoader, ATextureBeyondTheLargestSideIsRefusedAtItsImage) {
                                          "1 to 16384 on each side"),
               std::string::npos)
         << e.what();
+  }
+}
+
+// A buffer's byteLength is held to its data: URI as the loader decodes it, unpadded base64
+// included: 2 more characters are 1 more byte (a first count took them for none); any other
+// length is said at its pointer (tinygltf quoted the whole URI).
+TEST(GltfLoader, ABuffersByteLengthIsHeldToItsDataUri) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_byte_length";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(kGltfFixtures / "quad.gltf"));
+  ASSERT_EQ(gltf["buffers"][0]["byteLength"], 144);  // 192 characters
+  gltf["buffers"][0]["uri"] = gltf["buffers"][0]["uri"].get<std::string>() + "AA";
+  gltf["buffers"][0]["byteLength"] = 145;
+  std::ofstream(dir / "unpadded.gltf") << gltf.dump();
+  Scene scene;
+  EXPECT_NO_THROW(appendGltf(dir / "unpadded.gltf", dir, {}, scene));
+  for (int length : {144, 146}) {
+    gltf["buffers"][0]["byteLength"] = length;
+    std::ofstream(dir / "mismatch.gltf") << gltf.dump();
+    try {
+      appendGltf(dir / "mismatch.gltf", dir, {}, scene);
+      ADD_FAILURE() << "no Error at " << length;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("mismatch.gltf: /buffers/0/byteLength: " + std::to_string(length) +
+                                           " bytes, but the buffer's data: URI holds 145"),
+                std::string::npos)
+          << e.what();
+    }
   }
 }
 

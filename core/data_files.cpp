@@ -32,7 +32,7 @@ std::filesystem::path findDirectory(const char* variable, const char* name, cons
     std::filesystem::path beside = exe.parent_path().parent_path() / "share" / "prism" / name;
     if (std::filesystem::is_directory(beside, ec)) return beside;
   }
-  if (!package.empty()) return package;
+  if (!package.empty() && std::filesystem::is_directory(package, ec)) return package;
   if (std::filesystem::is_directory(source)) return source;
   return installed;
 }

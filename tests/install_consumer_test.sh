@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the build into a scratch prefix and uses it the way other projects would:
-# tests/consumer_spectral links only prism::spectral (no GL needed) and runs on the installed
-# data; tests/consumer_gpu links prism::gpu and runs an installed shared shader on llvmpipe;
+# tests/consumer_spectral links only prism::spectral (no GL needed), through a static library of
+# its own, and runs on the installed data; tests/consumer_gpu links prism::gpu and runs an installed shared shader on llvmpipe;
 # tests/consumer_render links prism::render and renders an installed scene with the installed
 # shaders; tests/consumer_reference links prism::reference (no GL) and traces that scene;
 # tests/consumer_atmosphere links prism::atmosphere_fit (NLopt) and fits a tiny sky; none is told
@@ -39,8 +39,8 @@ echo "$output"
 # by a list per request that had missed them.
 components="core spectral imaging rays gpu technique underwater atmosphere atmosphere_fit prt nebula techniques scene
             atmosphere_gpu prt_gpu nebula_gpu techniques_gpu reference batch render harness"
-for component in $components; do
-  if ! log=$(cmake -S "$source_dir/tests/consumer_component" -B "$scratch/component_$component" -G Ninja \
+for component in $components; do  # one build folder, so that the compiler is found once
+  if ! log=$(cmake -S "$source_dir/tests/consumer_component" -B "$scratch/component" -G Ninja \
                    -DCMAKE_PREFIX_PATH="$prefix" -DPRISM_COMPONENT="$component" 2>&1); then
     echo "find_package(Prism COMPONENTS $component) does not configure:" >&2
     echo "$log" >&2
@@ -49,7 +49,8 @@ for component in $components; do
 done
 echo "every component configures alone"
 
-# A consumer reads the package's data, not the source tree's: hide a file there and watch it say so.
+# A consumer reads the package's data, not the source tree's, though it links Prism through a
+# static library of its own: hide a file there and watch it say so.
 mv "$prefix/share/prism/data/cie_illuminants_A_D65_1nm.csv" "$scratch/d65.csv"
 if err=$(env -u PRISM_DATA_DIR "$scratch/build_spectral/consumer" 2>&1); then
   echo "the consumer did not read the package's data" >&2

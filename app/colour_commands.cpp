@@ -169,6 +169,7 @@ void colourXyz(const XyzOptions& o) {
 }
 
 void colourDeltaE(const DeltaEOptions& o) {
+  PRISM_CHECK(o.labs.size() == 2);  // main.cpp refuses any other count as a malformed command line
   for (const std::vector<double>& lab : o.labs) {
     requireThree(lab, "--lab");
     if (lab[0] < 0.0) throw Error(fmt::format("--lab: L* {:g} is negative", lab[0]));

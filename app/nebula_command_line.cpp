@@ -70,7 +70,7 @@ void addNebulaCommands(CLI::App& app) {
       ->capture_default_str();
   nebBenchCmd->add_flag_callback("--no-cpu", [o] { o->bench.cpu = false; }, "leave out the CPU's columns");
   auto* nebDensityCmd = nebulaCmd->add_subcommand("density", "write a scene's density grid as a prism-density file");
-  nebDensityCmd->add_option("scene", o->densityScene, "nebula scene file")->required();
+  nebDensityCmd->add_option("scene", o->densityScene, "nebula scene file, or a renderer scene with a 'nebula' section")->required();
   nebDensityCmd->add_option("-o,--output", o->densityOut, "OUT.density")->required();
 
   nebBasisCmd->callback([o] {

@@ -67,7 +67,7 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
                       std::to_string(fields.size()));
     table.mRows.push_back({lineNumber, std::move(fields)});
   }
-  if (table.mHeader.empty()) throw Error(table.mPath + ": empty file, expected a header line");
+  if (table.mHeader.empty()) throw Error(table.mPath + ": no header line (the file is empty, or blank and # lines)");
   if (table.mRows.empty()) throw Error(table.mPath + ": no data rows after the header");
   return table;
 }

@@ -18,6 +18,19 @@ TEST(CsvTest, ReadsQuotedFieldsAndSkipsBlankLines) {
   EXPECT_EQ(t.number(t.rows()[1], 1), 410.0);
 }
 
+// '#' lines are notes wherever they are, and the header is the first other line.
+TEST(CsvTest, CommentLinesAreSkippedAndTheHeaderKeepsItsLine) {
+  auto p = writeTempFile("noted.csv", "# source: a lab\n\n  # measured 2026\nwavelength_nm,value\n400,1\n# gap\n410,2\n");
+  CsvTable t = CsvTable::read(p);
+  EXPECT_EQ(t.headerLine(), 4);
+  ASSERT_EQ(t.rows().size(), 2u);
+  EXPECT_EQ(t.rows()[1].line, 7);
+  EXPECT_EQ(errorOf([&] { t.column("z"); }), p.string() + ":4: missing column 'z'");
+  auto notes = writeTempFile("only_notes.csv", "# nothing here\n\n");
+  EXPECT_EQ(errorOf([&] { CsvTable::read(notes); }),
+            notes.string() + ": no header line (the file is empty, or blank and # lines)");
+}
+
 TEST(CsvTest, MalformedRowNamesFileAndLine) {
   auto p = writeTempFile("short_row.csv", "wavelength_nm,value\n400,1\n410\n");
   EXPECT_EQ(errorOf([&] { CsvTable::read(p); }), p.string() + ":3: expected 2 fields, found 1");

@@ -38,10 +38,14 @@ std::string_view colourRemedy(imaging::ColourMeaning colour) {
   switch (colour) {
     case imaging::ColourMeaning::Xyz1964: return "render it with --observer cie1931";
     case imaging::ColourMeaning::CameraRgb: return "a camera's raw RGB: render it without --camera";
-    default:
+    case imaging::ColourMeaning::OtherRgb:
       return "RGB of primaries Prism does not know: a nebula's filter palette (nebula render --filters cie1931 "
              "writes XYZ), a reference's --variance (squared units, no colour) or a foreign EXR";
+    case imaging::ColourMeaning::Xyz:
+    case imaging::ColourMeaning::LinearSrgb: break;  // taken
   }
+  PRISM_CHECK(false);
+  return "";
 }
 
 Loaded load(const std::filesystem::path& path, const std::optional<double>& white) {

@@ -92,6 +92,11 @@ Rgb8 PngImage::pixel(int x, int y) const {
   return {mRgba[i], mRgba[i + 1], mRgba[i + 2]};
 }
 
+std::uint8_t PngImage::alpha(int x, int y) const {
+  PRISM_CHECK(x >= 0 && y >= 0 && x < mWidth && y < mHeight);
+  return mRgba[index(x, y) + 3];
+}
+
 void PngImage::setPixel(int x, int y, Rgb8 colour, std::uint8_t alpha) {
   PRISM_CHECK(x >= 0 && y >= 0 && x < mWidth && y < mHeight);
   std::size_t i = index(x, y);

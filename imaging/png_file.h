@@ -31,7 +31,7 @@ class PngImage {
   int width() const { return mWidth; }
   int height() const { return mHeight; }
   Rgb8 pixel(int x, int y) const;
-  std::uint8_t alpha(int x, int y) const { return mRgba[index(x, y) + 3]; }
+  std::uint8_t alpha(int x, int y) const;
   void setPixel(int x, int y, Rgb8 colour, std::uint8_t alpha = 255);
   // Fills [x, x+w) × [y, y+h), clipped to the image, opaque.
   void fillRect(int x, int y, int w, int h, Rgb8 colour);

@@ -148,9 +148,12 @@ TEST(NebulaIonisation, ZonesWithoutAShiningStarWarnThatNoLineGlows) {
   EXPECT_EQ(y, 0.0) << "what the warning says";
   m.stars[0].luminosity = 1.0;
   EXPECT_EQ(unlitLinesWarning(m), "");
-  m.emission = 0.0;
   m.stars.clear();
-  EXPECT_EQ(unlitLinesWarning(m), "") << "no lines asked for";
+  m.lineGroups = {{"H I Balmer (case B)", 0.0}};
+  EXPECT_EQ(unlitLinesWarning(m), "") << "no line asked for";
+  m.lineGroups = {{"H I Balmer (case B)", 1.0}};
+  m.emission = 0.0;
+  EXPECT_EQ(unlitLinesWarning(m), "") << "no emission";
 }
 
 }  // namespace

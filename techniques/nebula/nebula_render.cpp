@@ -566,7 +566,9 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s,
 
 std::string unlitLinesWarning(const NebulaModel& model) {
   const bool lit = std::any_of(model.stars.begin(), model.stars.end(), [](const NebulaStar& s) { return s.luminosity > 0.0; });
-  if (!model.ionisation || model.emission <= 0.0 || lit) return "";
+  const bool lines = std::any_of(model.lineGroups.begin(), model.lineGroups.end(),
+                                 [](const LineGroupStrength& g) { return g.strength > 0.0; });
+  if (!model.ionisation || model.emission <= 0.0 || !lines || lit) return "";
   return "ionisation zones without a star (of luminosity above 0) to ionise the gas: no emission line glows; "
          "without \"ionisation\" the lines glow wherever the density is";
 }

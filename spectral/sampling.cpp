@@ -61,8 +61,12 @@ void validate(const SamplingSettings& s) {
 
 WavelengthSampler::WavelengthSampler(const SamplingSettings& settings, const Observer& importance)
     : mSettings(settings) {
-  // Lights needs the lights' emission, Optimised its fitted set.
-  PRISM_CHECK(settings.strategy != SamplingStrategy::Lights && settings.strategy != SamplingStrategy::Optimised);
+  // Lights needs the lights' emission, Optimised its fitted set: a library caller's choice, said as
+  // an Error (it aborted on an internal check).
+  if (settings.strategy == SamplingStrategy::Lights || settings.strategy == SamplingStrategy::Optimised)
+    throw Error("the " + std::string(samplingStrategyName(settings.strategy)) + " strategy needs " +
+                (settings.strategy == SamplingStrategy::Lights ? "the lights' emission" : "its fitted set") +
+                ": construct a WavelengthSampler with it");
   validate(settings);
   if (settings.strategy == SamplingStrategy::Importance) {
     mPdf = WavelengthPdf::observerResponse(importance, settings.minNm, settings.maxNm);
@@ -72,7 +76,8 @@ WavelengthSampler::WavelengthSampler(const SamplingSettings& settings, const Obs
 WavelengthSampler::WavelengthSampler(const SamplingSettings& settings, const Observer& importance,
                                      const Spectrum& emission)
     : mSettings(settings) {
-  PRISM_CHECK(settings.strategy != SamplingStrategy::Optimised);
+  if (settings.strategy == SamplingStrategy::Optimised)
+    throw Error("the optimised strategy needs its fitted set: construct a WavelengthSampler with it");
   validate(settings);
   if (settings.strategy == SamplingStrategy::Importance) {
     mPdf = WavelengthPdf::observerResponse(importance, settings.minNm, settings.maxNm);

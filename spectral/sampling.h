@@ -77,7 +77,7 @@ inline bool holdsWholeNanometres(double minNm, double maxNm, int count) {
 void validate(const SamplingSettings& settings);
 
 // The batches for one pixel and frame (seed unused by Uniform). `importance` is the observer
-// whose response Importance follows. Not for Lights or Optimised, which need the lights:
+// whose response Importance follows. Not for Lights or Optimised, which need the lights (Error):
 // WavelengthSampler.
 std::vector<SampledWavelengths> sampleWavelengths(const SamplingSettings& settings,
                                                   std::uint32_t seed, const Observer& importance);
@@ -87,9 +87,9 @@ std::vector<SampledWavelengths> sampleWavelengths(const SamplingSettings& settin
 // construction.
 class WavelengthSampler {
  public:
-  // Every strategy but Lights and Optimised.
+  // Every strategy but Lights and Optimised (Error for those).
   WavelengthSampler(const SamplingSettings& settings, const Observer& importance);
-  // Every strategy but Optimised; Lights follows `emission`, what the scene emits
+  // Every strategy but Optimised (Error); Lights follows `emission`, what the scene emits
   // (scene/scene_emission.h: its lights and background, summed), the others ignore it.
   WavelengthSampler(const SamplingSettings& settings, const Observer& importance, const Spectrum& emission);
   // Optimised: the fitted set (settings.count wavelengths, fitted for the observer the caller's

@@ -18,6 +18,14 @@ Eigen::Vector3d estimate(const SamplingSettings& s, std::uint32_t seed, const Sp
   return WavelengthSampler(s, obs).estimate(seed, spd, obs);
 }
 
+// The strategies that need what this entry point lacks are a caller's error, not an abort.
+TEST(Sampling, LightsAndOptimisedWithoutWhatTheyNeedAreAnError) {
+  const Observer& cie = observer("cie1931");
+  EXPECT_THROW(sampleWavelengths({16, 360, 830, SamplingStrategy::Lights}, 1, cie), Error);
+  EXPECT_THROW(sampleWavelengths({16, 360, 830, SamplingStrategy::Optimised}, 1, cie), Error);
+  EXPECT_THROW(WavelengthSampler({16, 360, 830, SamplingStrategy::Optimised}, cie, Spectrum::constant(1.0)), Error);
+}
+
 TEST(Sampling, Uniform400ReproducesThe1nmIntegralsOfD65) {
   const Observer& cie = observer("cie1931");
   Spectrum d65 = illuminant("D65");

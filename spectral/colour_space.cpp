@@ -1,5 +1,8 @@
 #include "spectral/colour_space.h"
 
+#include <cmath>
+#include <string>
+
 #include <Eigen/LU>
 
 #include "shared_cpp.h"
@@ -67,13 +70,22 @@ RgbColourSpace RgbColourSpace::fromPrimaries(std::string name, Chromaticity red,
                                              Chromaticity blue, Chromaticity white,
                                              Transfer transfer) {
   RgbColourSpace space{std::move(name), red, green, blue, white, transfer, {}, {}};
+  // A library caller's primaries may be any numbers: degenerate ones gave a NaN matrix silently.
+  for (const Chromaticity& c : {red, green, blue, white})
+    if (!std::isfinite(c.x) || !std::isfinite(c.y) || c.y == 0.0)
+      throw Error("colour space " + space.name + ": a primary's or the white's chromaticity is not finite or has y 0");
+  if (!(white.y > 0.0)) throw Error("colour space " + space.name + ": its white's y must be above 0");
   Eigen::Matrix3d primaries;
   primaries.col(0) = xyToXyz(red);
   primaries.col(1) = xyToXyz(green);
   primaries.col(2) = xyToXyz(blue);
+  if (!primaries.fullPivLu().isInvertible())
+    throw Error("colour space " + space.name + ": its primaries lie on one line, so no RGB spans the white");
   Eigen::Vector3d scale = primaries.partialPivLu().solve(xyToXyz(white));
   space.rgbToXyz = primaries * scale.asDiagonal();
   space.xyzToRgb = space.rgbToXyz.inverse();
+  if (!space.rgbToXyz.allFinite() || !space.xyzToRgb.allFinite())
+    throw Error("colour space " + space.name + ": its matrices are not finite (a white on a line of two primaries?)");
   return space;
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/error.h"
 
 namespace prism {
@@ -17,6 +19,19 @@ Eigen::Matrix3d matrix(std::initializer_list<double> v) {
 
 void expectNear(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b, double tolerance) {
   EXPECT_LE((a - b).cwiseAbs().maxCoeff(), tolerance) << "derived\n" << a << "\npublished\n" << b;
+}
+
+// A caller's primaries are checked: degenerate ones gave a NaN matrix, silently.
+TEST(ColourSpace, DegeneratePrimariesAreRefused) {
+  const Chromaticity d65{0.3127, 0.3290};
+  EXPECT_NO_THROW(RgbColourSpace::fromPrimaries("ok", {0.64, 0.33}, {0.30, 0.60}, {0.15, 0.06}, d65, Transfer::Linear));
+  EXPECT_THROW(RgbColourSpace::fromPrimaries("line", {0.1, 0.1}, {0.2, 0.2}, {0.3, 0.3}, d65, Transfer::Linear), Error);
+  EXPECT_THROW(RgbColourSpace::fromPrimaries("flat", {0.64, 0.33}, {0.30, 0.60}, {0.15, 0.06}, {0.31, 0.0},
+                                             Transfer::Linear),
+               Error);
+  EXPECT_THROW(RgbColourSpace::fromPrimaries("nan", {0.64, std::nan("")}, {0.30, 0.60}, {0.15, 0.06}, d65,
+                                             Transfer::Linear),
+               Error);
 }
 
 TEST(ColourSpace, SrgbMatchesIec61966) {

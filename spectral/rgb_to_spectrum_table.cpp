@@ -52,6 +52,8 @@ float RgbToSpectrumTable::brightnessNode(int k) const {
 }
 
 std::size_t RgbToSpectrumTable::index(int block, int zi, int yi, int xi) const {
+  PRISM_CHECK(block >= 0 && block < 3 && zi >= 0 && zi < mResolution && yi >= 0 && yi < mResolution && xi >= 0 &&
+              xi < mResolution);  // out of range read past the table
   auto n = static_cast<std::size_t>(mResolution);
   return (((static_cast<std::size_t>(block) * n + static_cast<std::size_t>(zi)) * n +
            static_cast<std::size_t>(yi)) * n + static_cast<std::size_t>(xi)) * 3;

@@ -52,12 +52,17 @@ void requirePlotFile(const std::filesystem::path& plot) {
 
 // A scene file's noise generated with a progress bar (512³: 15 s on 2 cores, the file written), once the
 // command has checked what it could without it.
-nebula::NebulaScene generateWithProgress(nebula::NebulaSceneFile file, unsigned threads) {
-  std::optional<harness::ProgressBar> bar;
-  return nebula::generateDensity(std::move(file), threads, [&bar](std::size_t done, std::size_t total) {
+// A density's progress, its bar shown at its first report (none when nothing is generated).
+nebula::DensityProgress densityBar(std::optional<harness::ProgressBar>& bar) {
+  return [&bar](std::size_t done, std::size_t total) {
     if (!bar) bar.emplace("nebula: density noise");
     bar->update(done, total);
-  });
+  };
+}
+
+nebula::NebulaScene generateWithProgress(nebula::NebulaSceneFile file, unsigned threads) {
+  std::optional<harness::ProgressBar> bar;
+  return nebula::generateDensity(std::move(file), threads, densityBar(bar));
 }
 
 void requireFilterSet(const std::string& filters) {
@@ -360,10 +365,7 @@ nebula::DensityGrid sectionDensity(const std::filesystem::path& scenePath, const
   requireOtherFile(output, section->source.file, "the scene's density file");
   if (!section->source.noise) return section->fullModel().density;
   std::optional<harness::ProgressBar> bar;
-  return nebula::generateFbm(*section->source.noise, 0, [&bar](std::size_t done, std::size_t total) {
-    if (!bar) bar.emplace("nebula: density noise");
-    bar->update(done, total);
-  });
+  return nebula::generateFbm(*section->source.noise, 0, densityBar(bar));
 }
 
 }  // namespace

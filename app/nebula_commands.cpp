@@ -27,10 +27,10 @@
 #include "harness/progress_bar.h"
 #include "imaging/exr_file.h"
 #include "imaging/float_image.h"
+#include "scene/scene_loader.h"
 #include "techniques/nebula/nebula_basis.h"
 #include "techniques/nebula/nebula_basis_coverage.h"
 #include "techniques/nebula/gpu/nebula_gpu_marcher.h"
-#include "scene/scene_loader.h"
 #include "techniques/nebula/nebula_scene.h"
 #include "techniques/nebula/nebula_section.h"
 
@@ -50,8 +50,6 @@ void requirePlotFile(const std::filesystem::path& plot) {
   requireWritable(plot);
 }
 
-// A scene file's noise generated with a progress bar (512³: 15 s on 2 cores, the file written), once the
-// command has checked what it could without it.
 // A density's progress, its bar shown at its first report (none when nothing is generated).
 nebula::DensityProgress densityBar(std::optional<harness::ProgressBar>& bar) {
   return [&bar](std::size_t done, std::size_t total) {
@@ -60,6 +58,8 @@ nebula::DensityProgress densityBar(std::optional<harness::ProgressBar>& bar) {
   };
 }
 
+// A scene file's noise generated with a progress bar (512³: 15 s on 2 cores, the file written), once the
+// command has checked what it could without it.
 nebula::NebulaScene generateWithProgress(nebula::NebulaSceneFile file, unsigned threads) {
   std::optional<harness::ProgressBar> bar;
   return nebula::generateDensity(std::move(file), threads, densityBar(bar));

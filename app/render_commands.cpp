@@ -45,7 +45,8 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
   }
   if (frames < 1) throw Error("--frames: must be at least 1");
   requireNotSceneInput(output, scene);
-  render::requireLightCount(scene);  // the renderer's own check, before the work ahead of it
+  render::requireLightCount(scene);  // the renderer's own checks, before the work ahead of them
+  render::requireTechniquesShow(scene, settings);
   gpu::HeadlessContext context;
   requireTechniquesFit(scene);  // this GPU's limits, before the work ahead of it too
   const RgbToSpectrumTable& table = harness::upsamplingTable(scene);

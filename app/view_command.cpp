@@ -24,7 +24,8 @@ int runView(const ViewOptions& options) {
     if (side < viewer::kMinWindowSide || side > viewer::kMaxWindowSide)
       throw Error(fmt::format("{} {}: the viewer's window is {}–{} pixels a side", name, side, viewer::kMinWindowSide,
                               viewer::kMaxWindowSide));
-  render::requireLightCount(scene);  // the renderer's own check, before the work ahead of it
+  render::requireLightCount(scene);  // the renderer's own checks, before the work ahead of them
+  render::requireTechniquesShow(scene, settings);
   // The script rehearsed on the state the viewer starts from, before the table and the techniques'
   // precomputation (a nebula's density: seconds): `set nebula.steps 0` failed after them. The run
   // rehearses it again on the viewer's own state.

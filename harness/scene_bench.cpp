@@ -154,7 +154,8 @@ void runSceneBench(const SceneBenchOptions& options) {
   const int rounds = options.rounds.value_or(std::min(kDefaultBenchRounds, options.frames));
   const int frames = (options.frames + rounds - 1) / rounds;  // per round
   Scene scene = loadScene(options.scene);
-  render::requireLightCount(scene);  // the renderer's own check, before the work ahead of it
+  render::requireLightCount(scene);  // the renderer's own checks, before the work ahead of them
+  render::requireTechniquesShow(scene, settings);
   gpu::HeadlessContext context;
   requireTechniquesFit(scene);  // this GPU's limits, before the work ahead of it too
   const RgbToSpectrumTable& table = upsamplingTable(scene);

@@ -99,6 +99,10 @@ void requireLightCount(const Scene& scene) {
                           added.empty() ? "" : fmt::format(" ({} in the file{})", own, added), shared::kMaxLights));
 }
 
+void requireTechniquesShow(const Scene& scene, const FrameSettings& settings) {
+  scene.techniques.requireObserver(observer(settings.observer), settings.mode == RenderMode::Reference);
+}
+
 FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, const FrameContext& context,
                          const RgbToSpectrumTable& table, const std::vector<ShadowView>& shadows,
                          std::uint32_t frameIndex, const CameraTransform& camera) {

@@ -59,6 +59,11 @@ struct FrameData {
 // technique adds (the sky's sun) count, and are named.
 void requireLightCount(const Scene& scene);
 
+// Error when one of the scene's techniques cannot show a frame of these settings (PRT's rgb-prt
+// mode under a camera's curves): the renderer's own check, which callers make before the work
+// ahead of it too.
+void requireTechniquesShow(const Scene& scene, const FrameSettings& settings);
+
 // context holds settings' names resolved and the wavelength sampler (frameContext). frameIndex
 // seeds the wavelength strategies that change between frames (a new set every frame). camera is
 // where the frame is seen from (the water's depth there; the surface stays where the scene put it).

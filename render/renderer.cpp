@@ -103,6 +103,7 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
   validate(mSettings);
   requireTableForColourSpace(table, scene.colourSpace, scene.file.string());
   requireLightCount(scene);
+  requireTechniquesShow(scene, mSettings);
   mLightingPrograms.emplace(lightingVariant(scene), lightingProgram(scene));
   mContext = frameContext(mSettings, mScene, mTable);
   mDisplayTransform = displayTransform(mSettings.display, mContext.display, mCamera.ev100);
@@ -112,6 +113,7 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
 
 void Renderer::setSettings(const FrameSettings& settings) {
   validate(settings);
+  requireTechniquesShow(mScene, settings);
   const bool sameWavelengths =
       effectiveSampling(settings) == effectiveSampling(mSettings) && settings.observer == mSettings.observer;
   FrameContext context = frameContext(settings, mScene, mTable, mContext.environmentFromAbove,
@@ -143,6 +145,7 @@ void Renderer::setSettings(const FrameSettings& settings) {
 }
 
 void Renderer::sceneChanged() {
+  requireTechniquesShow(mScene, mSettings);
   // The wavelengths' pdf follows the lights (Lights strategy); made before anything changes.
   FrameContext context = frameContext(mSettings, mScene, mTable);
   // The views follow the lights; the maps are made again only when their number changes.

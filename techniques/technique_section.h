@@ -30,6 +30,7 @@ namespace prism {
 
 class RgbToSpectrumTable;
 struct RgbColourSpace;
+struct Observer;
 
 // A directional light a technique puts into the scene (the sky's sun). The scene loader adds it
 // to the scene's lights like any other, normalised photometrically (spd is absolute, W/m²/nm;
@@ -226,6 +227,10 @@ class TechniqueSection {
   // and the deferred pipeline only keeps their depth. The scene loader refuses an object naming a
   // technique that is absent from the scene or does not shade objects.
   virtual bool shadesObjects() const { return false; }
+  // Error when it cannot show a frame through `observer` (PRT's rgb-prt mode, colours defined on
+  // CIE 1931, under a camera's curves), in the many-wavelength reference mode or another:
+  // checked before a frame's work, not at its draw.
+  virtual void requireObserver(const Observer& /*observer*/, bool /*referenceMode*/) const {}
 };
 
 // A scene's sections, at most one per technique, in registration order; copied deeply (a scene
@@ -269,6 +274,9 @@ class TechniqueSections {
     for (const auto& s : mSections)
       if (std::shared_ptr<const TechniqueEnvironment> e = s->environment(table)) return e;
     return nullptr;
+  }
+  void requireObserver(const Observer& observer, bool referenceMode) const {
+    for (const auto& s : mSections) s->requireObserver(observer, referenceMode);
   }
 
  private:

@@ -215,8 +215,7 @@ PrtProjection projectSpectral(const std::vector<Spectrum>& reflectances, const E
   return p;
 }
 
-PrtProjection projectRgb(const std::vector<Spectrum>& reflectances, const Eigen::MatrixXd& environmentGrid,
-                         const Observer& observer, const RgbColourSpace& space) {
+void requireRgbPrtObserver(const Observer& observer) {
   // RGB-PRT's colours are a colour space's, defined on CIE 1931 as the frame's RGB mode's are
   // (render/frame_settings.cpp): a camera's RGB went through xyzToRgb as if it were XYZ (a white
   // floor yellow through the Nikon D850).
@@ -224,6 +223,11 @@ PrtProjection projectRgb(const std::vector<Spectrum>& reflectances, const Eigen:
     throw Error(fmt::format("PRT's rgb-prt mode carries colours defined under CIE 1931, not spectra: the {} \"{}\" "
                             "needs prt.mode spectral or reference-5nm",
                             observer.isCamera ? "camera" : "observer", observer.name));
+}
+
+PrtProjection projectRgb(const std::vector<Spectrum>& reflectances, const Eigen::MatrixXd& environmentGrid,
+                         const Observer& observer, const RgbColourSpace& space) {
+  requireRgbPrtObserver(observer);
   Eigen::MatrixXd cmf = observerOnGrid(observer);
   PrtProjection p;
   p.basisCount = 3;

@@ -118,8 +118,10 @@ struct PrtProjection {
 // Spectral PRT: L̃ = Φᵀ L, R̂_j = Σ_i φ_j(λ_i) f_r(λ_i) c̄(λ_i) · 5 nm; basis 81 × m, m ≤ 16.
 PrtProjection projectSpectral(const std::vector<Spectrum>& reflectances, const Eigen::MatrixXd& environmentGrid,
                               const Observer& observer, const Eigen::MatrixXd& basis);
+// Error under any observer but CIE 1931, on which RGB-PRT's colours are defined.
+void requireRgbPrtObserver(const Observer& observer);
 // RGB-PRT in `space`: L̃ the environment's linear RGB per SH coefficient, R̂_c = albedo_c · primary
-// c's XYZ, albedos the reflectances' colours under CIE D65. Error under any observer but CIE 1931.
+// c's XYZ, albedos the reflectances' colours under CIE D65. requireRgbPrtObserver first.
 PrtProjection projectRgb(const std::vector<Spectrum>& reflectances, const Eigen::MatrixXd& environmentGrid,
                          const Observer& observer, const RgbColourSpace& space);
 // The 5 nm reference: 81 deltas, R̂_i = f_r(λ_i) c̄(λ_i) · 5 nm, in chunks of 16.

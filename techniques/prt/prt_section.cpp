@@ -92,6 +92,10 @@ std::string_view prtModeName(PrtMode mode) {
   return "?";
 }
 
+void PrtSection::requireObserver(const Observer& observer, bool referenceMode) const {
+  if (mode == PrtMode::RgbPrt && !referenceMode) requireRgbPrtObserver(observer);
+}
+
 TechniqueBlock PrtSection::pack(const FramePackInput&) const {
   TechniqueBlock block;
   block.key = kKey;

@@ -66,6 +66,9 @@ struct PrtSection final : TechniqueSection {
   // Spectral PRT with m = 8 against RGB-PRT, both on this scene, the PRT pass timed in each.
   TechniqueBench bench() const override;
   bool shadesObjects() const override { return true; }
+  // RGB-PRT's under any observer but CIE 1931 (requireRgbPrtObserver); the reference mode's frame
+  // draws the 5 nm reference whatever the mode.
+  void requireObserver(const Observer& observer, bool referenceMode) const override;
 
   static std::unique_ptr<TechniqueSection> parse(const schema::Node& node, const TechniqueSections& earlier);
 };

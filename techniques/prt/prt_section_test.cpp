@@ -12,6 +12,7 @@
 #include "core/json_schema.h"
 #include "imaging/exr_file.h"
 #include "imaging/radiance_hdr.h"
+#include "spectral/observer.h"
 
 namespace prism::prt {
 namespace {
@@ -96,6 +97,20 @@ TEST(SpectralSkySection, TakesTheAtmospheresKeysAndNoLuminance) {
   EXPECT_EQ(errorOf([] { parseSection(R"({"environment": {"atmosphere": {"sun": {"elevation": 95}}}})"); })
                 .rfind("scene.json: /prt/environment/atmosphere/sun/elevation: ", 0),
             0u);
+}
+
+TEST(PrtSection, RgbPrtRefusesACameraBeforeAFrameUnlessTheFrameIsTheReference) {
+  // What the forward pass's projection refuses at its draw, said before a frame's work (the
+  // renderer, render, view and bench ask); the reference mode's frame draws the 5 nm reference.
+  PrtSection section;
+  section.mode = PrtMode::RgbPrt;
+  EXPECT_NO_THROW(section.requireObserver(cie1931Observer(), false));
+  EXPECT_NO_THROW(section.requireObserver(observer("nikon_d850"), true));
+  EXPECT_EQ(errorOf([&] { section.requireObserver(observer("nikon_d850"), false); }),
+            "PRT's rgb-prt mode carries colours defined under CIE 1931, not spectra: the camera \"nikon_d850\" needs "
+            "prt.mode spectral or reference-5nm");
+  section.mode = PrtMode::Spectral;
+  EXPECT_NO_THROW(section.requireObserver(observer("nikon_d850"), false));
 }
 
 }  // namespace

@@ -146,9 +146,12 @@ TechniqueBench PrtSection::bench() const {
   spectral8->basis = 8;
   auto rgb = std::make_shared<PrtSection>(*this);
   rgb->mode = PrtMode::RgbPrt;
+  // Both in one spectral frame, so that the section's mode decides what the PRT pass draws: the
+  // run's RGB frame (the configurations' default) draws RGB-PRT whatever the section says.
+  const std::vector<std::pair<std::string, std::string>> spectral16 = {{"mode", "jakob-hanika"}, {"wavelengths", "16"}};
   TechniqueBench b;
-  b.configs.push_back({"prt m=8", {}, false, 0, spectral8});
-  b.configs.push_back({"rgb-prt", {}, false, 0, rgb});
+  b.configs.push_back({"prt m=8", spectral16, false, 0, spectral8});
+  b.configs.push_back({"rgb-prt", spectral16, false, 0, rgb});
   b.ratios.push_back({"ratio_spectral8_to_rgb_prt", "prt m=8", "rgb-prt"});
   return b;
 }

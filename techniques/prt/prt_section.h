@@ -63,7 +63,8 @@ struct PrtSection final : TechniqueSection {
   // The environment map's size and texels, when there is one.
   std::uint64_t hashLoadedData(std::uint64_t hash) const override;
   std::vector<std::filesystem::path> inputFiles() const override;  // the map's, when there is one
-  // Spectral PRT with m = 8 against RGB-PRT, both on this scene, the PRT pass timed in each.
+  // Spectral PRT with m = 8 against RGB-PRT, both on this scene in a frame of 16 wavelengths, the
+  // PRT pass timed in each.
   TechniqueBench bench() const override;
   bool shadesObjects() const override { return true; }
   // RGB-PRT's under any observer but CIE 1931 (requireRgbPrtObserver); the reference mode's frame

@@ -113,5 +113,26 @@ TEST(PrtSection, RgbPrtRefusesACameraBeforeAFrameUnlessTheFrameIsTheReference) {
   EXPECT_NO_THROW(section.requireObserver(observer("nikon_d850"), false));
 }
 
+TEST(PrtSection, TheBenchTimesSpectralAgainstRgbPrtInOneSpectralFrame) {
+  // An RGB frame draws RGB-PRT whatever the section's mode: timed there, both configurations drew
+  // RGB-PRT (the first H200 run: 2.083 / 2.083 ms).
+  PrtSection section;
+  const TechniqueBench b = section.bench();
+  ASSERT_EQ(b.configs.size(), 2u);
+  const auto& spectral = dynamic_cast<const PrtSection&>(*b.configs[0].section);
+  const auto& rgb = dynamic_cast<const PrtSection&>(*b.configs[1].section);
+  EXPECT_EQ(spectral.mode, PrtMode::Spectral);
+  EXPECT_EQ(spectral.basis, 8);
+  EXPECT_EQ(rgb.mode, PrtMode::RgbPrt);
+  for (const TechniqueBenchConfig& c : b.configs) {
+    EXPECT_FALSE(c.withoutTechnique);
+    EXPECT_EQ(c.settings, (std::vector<std::pair<std::string, std::string>>{{"mode", "jakob-hanika"}, {"wavelengths", "16"}}))
+        << c.label;
+  }
+  ASSERT_EQ(b.ratios.size(), 1u);
+  EXPECT_EQ(b.ratios[0].numerator, b.configs[0].label);
+  EXPECT_EQ(b.ratios[0].denominator, b.configs[1].label);
+}
+
 }  // namespace
 }  // namespace prism::prt

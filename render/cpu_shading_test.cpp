@@ -220,6 +220,45 @@ TEST(CpuShading, UnderWaterTheEnvironmentInScattersAsTheSunDoes) {
   EXPECT_NEAR(background.y, luminance, 2e-3 * luminance);
 }
 
+// A lamp above the water lights a point below it through the water only on its path's lower part:
+// at 10 m and at 100 m above the surface, its intensity scaled by the squared distance, the same
+// point 2.5 m down shows the same (it was dimmed over the whole distance, e^(−σt·100 m): black).
+TEST(CpuShading, ALampAboveTheWaterIsDimmedOnlyBelowTheSurface) {
+  Scene scene;
+  scene.file = "test.json";
+  Material white;
+  white.baseColour = glm::vec3(1.0f);
+  white.lambertian = true;
+  scene.materials.push_back(white);
+  UpFacing p(glm::vec3(1.0f), 0.0f, 1.0f);
+  scene.camera.position = {0.0f, 2.0f, 0.0f};
+  scene.camera.target = {0.0f, 0.0f, 0.0f};
+  scene.camera.up = {0.0f, 0.0f, -1.0f};
+  auto water = std::make_unique<underwater::WaterSection>();
+  water->type.assign("II");
+  water->depthM = 0.5f;  // the camera's: the surface at y = 2.5, the lit point 2.5 m below it
+  water->resolve();
+  scene.techniques.add(std::move(water));
+  auto lit = [&](float heightAboveSurface) {
+    Scene s = scene;
+    Light lamp;
+    lamp.type = LightType::Point;
+    lamp.position = {0.0f, 2.5f + heightAboveSurface, 0.0f};
+    lamp.spd = illuminant("A") * (1.0 / luminousIntegral(illuminant("A")));
+    const float distance = lamp.position.y / 12.5f;
+    lamp.intensity = 1000.0f * distance * distance;
+    lamp.castsShadows = false;
+    s.lights.push_back(lamp);
+    FrameSettings settings;
+    settings.mode = RenderMode::Reference;
+    return shadeOnce(s, settings, p, productionTable());
+  };
+  const glm::vec3 near = lit(10.0f), far = lit(100.0f);
+  std::printf("a lamp 10 m / 100 m above the water, 2.5 m below it: Y %.6g / %.6g\n", near.y, far.y);
+  EXPECT_GT(near.y, 0.1f);  // dry, E/π = 6.4 lux/π = 2.04 cd/m²; through 2.5 m of water down and 2 m up
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(far[c], near[c], 1e-4f * near[c]) << c;
+}
+
 TEST(Brdf, ConductorFresnelAtOneAngleMatchesTheComplexFresnelEquations) {
   // Rs and Rp from the complex index η = n + ik in double precision (Born & Wolf), at 0°, 45°,
   // 60° and 85°: the closed form in brdf.glsl must agree, oblique angles included (at normal

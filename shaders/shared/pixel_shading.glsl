@@ -260,7 +260,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
   MicrofacetTerms terms[kMaxLights];
   float irradiance[kMaxLights];
 #ifdef PRISM_TECHNIQUE_WATER
-  float waterPathM[kMaxLights];  // depth (directional) or distance (point, spot)
+  float waterPathM[kMaxLights];  // depth (directional) or distance under water (point, spot)
 #endif
   for (int l = 0; l < fc.lightCount; ++l) {
     GpuLight light = frameLight(l);
@@ -275,7 +275,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 #ifdef PRISM_TECHNIQUE_WATER
     waterPathM[l] = light.type == kLightDirectional
                         ? frameWater().surfaceY - s.position.y
-                        : li.distance;
+                        : li.distance * shareBelowSurface(s.position.y, light.positionW.y, frameWater().surfaceY);
 #endif
   }
 

@@ -64,6 +64,17 @@ PRISM_INLINE vec4 waterTransmittance(IN(vec4) sigmaT, float distanceM) {
   return exp(-sigmaT * distanceM);
 }
 
+// The share of the straight segment between heights y0 and y1 (world y, m) that lies below the
+// water surface at surfaceY: a lamp above the water lights a point below it through the water
+// only on the segment's lower part (refraction at the surface left out).
+PRISM_INLINE float shareBelowSurface(float y0, float y1, float surfaceY) {
+  float low = min(y0, y1);
+  float high = max(y0, y1);
+  if (high <= surfaceY) return 1.0f;
+  if (low >= surfaceY) return 0.0f;
+  return (surfaceY - low) / (high - low);
+}
+
 // The share of the surface's downwelling irradiance left at a depth (≥ 0), per wavelength.
 PRISM_INLINE vec4 downwellingAttenuation(IN(vec4) kd, float depthM) {
   return exp(-kd * max(depthM, 0.0f));

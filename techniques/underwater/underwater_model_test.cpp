@@ -112,5 +112,13 @@ TEST(UnderwaterModel, TransmittanceAndDownwellingAreBeerLambert) {
   EXPECT_FLOAT_EQ(e.x, 1.0f);
 }
 
+TEST(UnderwaterModel, ALampsPathIsUnderWaterBelowTheSurfaceOnly) {
+  EXPECT_FLOAT_EQ(shared::shareBelowSurface(-3.0f, -1.0f, 0.0f), 1.0f);  // both below
+  EXPECT_FLOAT_EQ(shared::shareBelowSurface(1.0f, 4.0f, 0.0f), 0.0f);    // both above
+  EXPECT_FLOAT_EQ(shared::shareBelowSurface(-2.0f, 8.0f, 0.0f), 0.2f);   // 2 m of 10 below
+  EXPECT_FLOAT_EQ(shared::shareBelowSurface(8.0f, -2.0f, 0.0f), 0.2f);   // either way round
+  EXPECT_FLOAT_EQ(shared::shareBelowSurface(-1.0f, -1.0f, -1.0f), 1.0f); // level, at the surface
+}
+
 }  // namespace
 }  // namespace prism::underwater

@@ -136,9 +136,10 @@ TEST_P(PrtTexturedParity, MagnifiedTexelsAgreeWithTheTwinUnderWater) {
 
 INSTANTIATE_TEST_SUITE_P(Modes, PrtTexturedParity, prtModeCases(), prtModeCaseName);
 
-// The spectral sky's sun is the deferred pipeline's light, which reads no spectral texture: such a
-// material under it is refused in one line naming the way out, before anything is drawn.
-TEST(PrtTextured, ASpectralTextureUnderTheSpectralSkysSunIsRefused) {
+// The scene's lights (here the spectral sky's sun) are the lighting pass's, which reads no spectral
+// texture: the loader refuses such a material under them (tests/bad_input), and so does the pass
+// when an edit brings them together, in one line naming the material, before anything is drawn.
+TEST(PrtTextured, ASpectralTextureUnderASceneLightIsRefused) {
   gpu::HeadlessContext context;
   Scene scene = loadScene(std::filesystem::path(PRISM_SCENES_DIR) / "prt_sky.json");
   const Scene textured = loadScene(std::filesystem::path(PRISM_SCENES_DIR) / "prt_textures.json");
@@ -152,7 +153,9 @@ TEST(PrtTextured, ASpectralTextureUnderTheSpectralSkysSunIsRefused) {
     renderer.renderFrame();
     FAIL() << "rendered";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("set prt.environment.atmosphere.sun_disc to false"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("prt_sky.json: /materials/"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("a spectral texture, which the scene's lights cannot read"), std::string::npos)
+        << e.what();
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
   }
 }

@@ -92,6 +92,17 @@ class SceneParser {
       if (!section->shadesObjects()) node.fail("'" + key + "' does not shade objects");
     }
     addTechniqueLights(mScene);
+    // The scene's lights reach PRT objects through the lighting pass, which reads no spectral
+    // texture: such an object came out as its base colour, flat grey, without a word.
+    if (!mScene.lights.empty()) {
+      const Light& first = mScene.lights.front();
+      const std::string remedy = first.technique.empty()      ? "give the scene no /lights"
+                                 : first.technique == "prt" ? "set prt.environment.atmosphere.sun_disc to false"
+                                                            : "take out the " + first.technique + " section, whose sun it is";
+      for (const auto& [node, name] : mSpectrallyTextured)
+        node.fail("material '" + name + "' has a spectral texture, which the scene's lights cannot read (the lighting "
+                  "pass lights PRT objects by their base colour): it takes the PRT environment's light alone; " + remedy);
+    }
     return std::move(mScene);
   }
 
@@ -246,10 +257,11 @@ class SceneParser {
   // Only PRT objects shade spectral textures: the deferred pipeline reads no such texture. PRT
   // objects are diffuse by definition, so a conductor, which PRT cannot shade and the reference
   // would trace with its own spectra, is refused on them.
-  void checkTechniqueMaterial(const Node& o, int material, const std::string& technique) const {
+  void checkTechniqueMaterial(const Node& o, int material, const std::string& technique) {
     const Material& m = mScene.materials.at(static_cast<std::size_t>(material));
     if (m.spectralTexture && technique != "prt")
       o.fail("material '" + m.name + "' has a spectral texture, which only PRT objects (\"technique\": \"prt\") shade");
+    if (m.spectralTexture) mSpectrallyTextured.emplace_back(o, m.name);
     if (m.conductor && technique == "prt")
       o.fail("material '" + m.name + "' is a conductor, which PRT objects (diffuse by definition) cannot shade");
   }
@@ -414,6 +426,7 @@ class SceneParser {
   std::map<std::string, int> mTextureIndex;
   std::map<std::string, std::shared_ptr<const SpectralTexture>> mSpectralTextures;  // by canonical path
   std::vector<std::pair<Node, std::string>> mObjectTechniques;  // an object's `technique` and its node
+  std::vector<std::pair<Node, std::string>> mSpectrallyTextured;  // a PRT object's node, its material's name
 };
 
 // Applies one "PATH=VALUE" override to the parsed document (scene_loader.h).

@@ -156,7 +156,7 @@ TechniqueBench PrtSection::bench() const {
   return b;
 }
 
-std::unique_ptr<TechniqueSection> PrtSection::parse(const schema::Node& n, const TechniqueSections&) {
+std::unique_ptr<TechniqueSection> PrtSection::parse(const schema::Node& n, const TechniqueSections& earlier) {
   using schema::Range;
   n.expectObject({"environment", "basis", "mode", "samples", "shadows"});
   auto s = std::make_unique<PrtSection>();
@@ -174,6 +174,11 @@ std::unique_ptr<TechniqueSection> PrtSection::parse(const schema::Node& n, const
       PrtSky sky;
       atmosphere::readAtmosphereKeys(*a, sky.atmosphere, {"sun_disc"});
       sky.sunDisc = a->boolean("sun_disc", true);
+      // Its sun would be a second light beside the atmosphere section's, lighting every object twice.
+      if (sky.sunDisc && earlier.has("atmosphere"))
+        (a->has("sun_disc") ? a->child("sun_disc") : *a)
+            .fail("the scene's atmosphere section adds its sun to every object, PRT's too: set sun_disc to false here, "
+                  "or the scene is lit by two suns");
       s->sky = sky;
     }
     if (auto i = e->optionalChild("illuminant")) {

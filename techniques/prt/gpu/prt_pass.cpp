@@ -186,11 +186,13 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
     const Material& material = input.scene.materials.at(static_cast<std::size_t>(m));
     std::shared_ptr<const PrtTextureSource> texture;
     if (material.spectralTexture) {
-      // The sun of the spectral sky is the deferred pipeline's light, and it reads no spectral texture.
-      if (section.sky && section.sky->sunDisc)
-        throw Error(fmt::format("PRT: material '{}' has a spectral texture, which the spectral sky's sun (lit by the "
-                                "deferred pipeline) cannot read: set prt.environment.atmosphere.sun_disc to false",
-                                material.name));
+      // The scene's lights (the spectral sky's sun among them) are the lighting pass's, which reads
+      // no spectral texture: the loader refuses them, this an edit that adds one.
+      if (!input.scene.lights.empty())
+        throw Error(fmt::format("{}: /materials/{}: a spectral texture, which the scene's lights cannot read (the "
+                                "lighting pass lights PRT objects by their base colour): it takes the PRT environment's "
+                                "light alone",
+                                input.scene.file.string(), material.name));
       texture = std::make_shared<const PrtTextureSource>(material.spectralTexture);
     } else if (material.baseColourTexture >= 0) {
       const Image& image = input.scene.textures.at(static_cast<std::size_t>(material.baseColourTexture));

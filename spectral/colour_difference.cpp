@@ -27,8 +27,7 @@ DeltaEFormula deltaEFormulaFromName(std::string_view name) {
   throw Error("unknown colour-difference formula '" + std::string(name) + "' (known: 76, 94, 2000)");
 }
 
-// In double, cielab.glsl's floor: the wavelength fit weighs its channels by it (fitWhite), whose
-// whites a float rounding would move by 1e-7 and with them the fitted sets.
+// In double, cielab.glsl's floor: a float rounding would move the whites by 1e-7.
 Eigen::Vector3d labWhite(const Eigen::Vector3d& whiteXyz) {
   return whiteXyz.cwiseMax(static_cast<double>(shared::kLabWhiteFloor) * whiteXyz.y());
 }

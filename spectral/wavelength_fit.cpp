@@ -28,7 +28,7 @@
 namespace prism {
 namespace {
 
-constexpr int kFitVersion = 6;  // 2: a checksum line; 3: fitWhite's floor; 4: dark nodes weigh 0; 5: the range's integral; 6: its ends
+constexpr int kFitVersion = 7;  // 2: a checksum line; 3: fitWhite's floor; 4: dark nodes weigh 0; 5: the range's integral; 6: its ends; 7: the floor at 1 %
 
 // A node where every light × reflectance is below this share of the brightest sample carries no
 // light the renderer's floats hold (an LED at 830 nm, 1 nm wide, is e^−225 at 815 nm): its weights
@@ -38,6 +38,7 @@ constexpr double kDarkNode = 1e-12;
 // holding one is damaged.
 constexpr double kMaxWeight = 1e30;
 constexpr int kMaxSweeps = 40;
+constexpr double kFitWhiteFloor = 1e-2;  // fitWhite's, of Y
 constexpr double kGridStepNm = 20.0;  // n = 4's exhaustive seed grid
 constexpr int kFinalReweightings = 8;
 constexpr double kReweightFloor = 0.05;  // ΔE00 below which a pair's weight stops growing
@@ -347,7 +348,8 @@ Spectrum lightWithinRange(const Spectrum& light, double minNm, double maxNm) {
 }
 
 Eigen::Vector3d fitWhite(const Spectrum& light, const Observer& obs) {
-  return labWhite(obs.integrate(light));
+  const Eigen::Vector3d white = obs.integrate(light);
+  return white.cwiseMax(kFitWhiteFloor * white.y());
 }
 
 FitError fitError(const FittedWavelengths& set, const WavelengthFitProblem& problem, const Observer& obs) {

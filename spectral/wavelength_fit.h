@@ -64,9 +64,11 @@ FittedWavelengths fitWavelengths(const WavelengthFitProblem& problem, const Obse
 Spectrum lightWithinRange(const Spectrum& light, double minNm, double maxNm);
 
 // The white a light's colours are put into CIELAB against, for the fit and every report of it: the
-// light's XYZ under `obs`, each channel at least 1e-6 of its Y, as CIELAB takes it (labWhite,
-// colour_difference.h). A light that a channel all but misses (a far-red LED's Z, 1e-81 of its Y)
-// would otherwise weigh that channel's errors by 1/Z, past what the least squares can hold.
+// light's XYZ under `obs`, each channel at least 1 % of its Y. A light that a channel all but
+// misses (a far-red LED's Z, 1e-81 of its Y; a sodium line's CIE 1964 Z, 0) would otherwise weigh
+// that channel's errors by 1/Z: past what the least squares can hold, or, beside other lights, so
+// far past theirs that their fit of the channel was lost. Every light the tables use (D65,
+// A, F2, F11, the LEDs) has each channel above 1 % of Y: the floor leaves them as they were.
 Eigen::Vector3d fitWhite(const Spectrum& light, const Observer& obs);
 
 // The mean and largest ΔE00 of a set over the problem's lights × reflectances (CIELAB relative to

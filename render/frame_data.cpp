@@ -101,6 +101,13 @@ void requireLightCount(const Scene& scene) {
 
 void requireTechniquesShow(const Scene& scene, const FrameSettings& settings) {
   scene.techniques.requireObserver(observer(settings.observer), settings.mode == RenderMode::Reference);
+  if (settings.mode == RenderMode::Optimised4) {
+    try {
+      optimisedWavelengths(scene.techniques);
+    } catch (const Error& e) {
+      throw Error(scene.file.string() + ": " + e.what());
+    }
+  }
 }
 
 FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, const FrameContext& context,

@@ -60,8 +60,8 @@ struct FrameData {
 void requireLightCount(const Scene& scene);
 
 // Error when one of the scene's techniques cannot show a frame of these settings (PRT's rgb-prt
-// mode under a camera's curves): the renderer's own check, which callers make before the work
-// ahead of it too.
+// mode under a camera's curves), or the optimised4 mode has no technique's wavelengths to render:
+// the renderer's own check, which callers make before the work ahead of it too.
 void requireTechniquesShow(const Scene& scene, const FrameSettings& settings);
 
 // context holds settings' names resolved and the wavelength sampler (frameContext). frameIndex

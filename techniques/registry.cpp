@@ -1,7 +1,7 @@
 #include "techniques/registry.h"
 
+#include "core/error.h"
 #include "technique_sections.h"
-#include "techniques/atmosphere/sky_strategy.h"
 
 namespace prism {
 
@@ -13,8 +13,8 @@ TechniqueWavelengths optimisedWavelengths(const TechniqueSections& sections) {
   for (const auto& section : sections.all()) {
     if (std::optional<TechniqueWavelengths> own = section->optimisedWavelengths()) return *own;
   }
-  atmosphere::OptimisedWavelengths set = atmosphere::loadOptimisedWavelengths("aerosols");
-  return {set.lambdaNm, set.weights};
+  throw Error("mode optimised4 renders the four wavelengths fitted for the scene's sky, and it has no atmosphere "
+              "section: use jakob-hanika, whose default fits 16 for the scene's lights (--wavelengths 4 for four)");
 }
 
 }  // namespace prism

@@ -101,12 +101,12 @@ double CsvTable::number(const CsvRow& row, int column) const {
 void checkIncreasingWavelengths(const std::string& path, std::span<const double> lambdasNm,
                                 std::span<const int> lines) {
   if (!lambdasNm.empty() && !(lambdasNm[0] > 0.0))
-    throw Error(FileLocation{path, lines[0]}, "wavelengths must be positive (" + std::to_string(lambdasNm[0]) + " nm)");
+    throw Error(FileLocation{path, lines[0]}, "wavelengths must be positive (" + shortestNumber(lambdasNm[0]) + " nm)");
   for (std::size_t i = 1; i < lambdasNm.size(); ++i)
     if (!(lambdasNm[i] > lambdasNm[i - 1]))
       throw Error(FileLocation{path, lines[i]}, "wavelengths must increase strictly (" +
-                                                    std::to_string(lambdasNm[i]) + " nm after " +
-                                                    std::to_string(lambdasNm[i - 1]) + " nm)");
+                                                    shortestNumber(lambdasNm[i]) + " nm after " +
+                                                    shortestNumber(lambdasNm[i - 1]) + " nm)");
   if (lambdasNm.size() < 2) throw Error(path + ": a spectrum needs at least two wavelengths");
 }
 

@@ -6,6 +6,7 @@
 //   and where, then aborts.
 #pragma once
 
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -31,6 +32,14 @@ struct FileLocation {
     return s;
   }
 };
+
+// A number as a message quotes it, the shortest text that reads back the same: 0.01 and 3000,
+// not std::to_string's 0.010000 and 3000.000000.
+inline std::string shortestNumber(double value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
+}
 
 // A user's text as a message quotes it: whole up to `max` bytes, else its first bytes and "..."
 // (a 5 MB name is not echoed whole); control characters (a file's bytes quoted by a decoder, a

@@ -44,8 +44,7 @@ Spectrum scaledTo100At560(Spectrum s) { return s * (100.0 / s.at(560.0)); }
 
 Spectrum daylight(double cctK) {
   if (!(cctK >= 4000.0 && cctK <= 25000.0))
-    throw Error("daylight: correlated colour temperature must be within 4000–25000 K, got " +
-                std::to_string(cctK));
+    throw Error("daylight: correlated colour temperature must be within 4000–25000 K, got " + shortestNumber(cctK));
   // CIE 15:2004 Eqs. 3.3–3.5 (chromaticity of daylight), 3.6 (M1, M2, rounded to three
   // decimals as CIE 15:2004 §3.1 prescribes, which is what makes 6504 K reproduce D65).
   double t = cctK;
@@ -71,21 +70,17 @@ Spectrum blackbodyIlluminant(double temperatureK) {
   // Below 500 K a body gives no light that 360–830 nm carries in floats once scaled at 560 nm
   // (at 1 K its 560 nm radiance underflows to 0); above 10⁶ K its shape no longer changes.
   if (!(temperatureK >= 500.0 && temperatureK <= 1e6))
-    throw Error("blackbody: temperature must be within 500–1000000 K, got " + excerpt(std::to_string(temperatureK)));
+    throw Error("blackbody: temperature must be within 500–1000000 K, got " + excerpt(shortestNumber(temperatureK)));
   return scaledTo100At560(blackbody(temperatureK));
 }
 
 Spectrum narrowbandLed(double peakNm, double widthNm) {
   if (!(peakNm >= kLambdaMinNm && peakNm <= kLambdaMaxNm))
-    throw Error("led: peak wavelength must be within 360–830 nm, got " + std::to_string(peakNm));
+    throw Error("led: peak wavelength must be within 360–830 nm, got " + shortestNumber(peakNm));
   // Spectra are sampled at whole nanometres: narrower, the samples miss the line (0.01 nm at 700 nm
   // was one sample, and a white with no Z made CIELAB NaN), and their sum is no longer its integral.
-  if (!(widthNm >= 1.0 && widthNm <= 200.0)) {
-    char text[32];
-    const auto end = std::to_chars(text, text + sizeof text, widthNm).ptr;  // shortest: 0.01, not 0.010000
-    throw Error("led: spectral width must be within 1–200 nm (spectra are sampled at whole nm), got " +
-                std::string(text, end));
-  }
+  if (!(widthNm >= 1.0 && widthNm <= 200.0))
+    throw Error("led: spectral width must be within 1–200 nm (spectra are sampled at whole nm), got " + shortestNumber(widthNm));
   return Spectrum::fromFunction([=](double lambdaNm) {
     double d = (lambdaNm - peakNm) / widthNm;
     double g = std::exp(-d * d);

@@ -150,8 +150,7 @@ double planckRadianceWPerSrM2Nm(double lambdaNm, double temperatureK) {
 
 Spectrum blackbody(double temperatureK) {
   if (!(temperatureK > 0.0 && std::isfinite(temperatureK)))
-    throw Error("blackbody: temperature must be a positive number of kelvin, got " +
-                std::to_string(temperatureK));
+    throw Error("blackbody: temperature must be a positive number of kelvin, got " + shortestNumber(temperatureK));
   return Spectrum::fromFunction(
       [temperatureK](double lambdaNm) { return planckRadianceWPerSrM2Nm(lambdaNm, temperatureK); });
 }

@@ -33,7 +33,7 @@ TEST(SpectrumCsvTest, WavelengthsMustIncrease) {
 TEST(SpectrumCsvTest, WavelengthsMustBePositive) {
   auto p = writeTempFile("negative.csv", "wavelength_nm,value\n-5,1\n410,1\n");
   EXPECT_EQ(errorOf([&] { readSpectrumCsv(p, Extrapolation::Zero); }),
-            p.string() + ":2: wavelengths must be positive (-5.000000 nm)");
+            p.string() + ":2: wavelengths must be positive (-5 nm)");
 }
 
 // A wavelength beyond ±1e12 (the limit of every number Prism reads), and a spectrum wholly

@@ -141,8 +141,8 @@ void colourXyz(const XyzOptions& o) {
     fmt::print("{}\n", out.dump(2));
     return;
   }
-  fmt::print("{} {:.6f} {:.6f} {:.6f}   (perfect white: Y = 1 under {})\n",
-             obs.isCamera ? "camera RGB" : "XYZ", value.x(), value.y(), value.z(), o.illuminant);
+  fmt::print("{} {:.6f} {:.6f} {:.6f}   (perfect white: {} = 1 under {})\n", obs.isCamera ? "camera RGB" : "XYZ",
+             value.x(), value.y(), value.z(), obs.isCamera ? "G" : "Y", o.illuminant);
   if (!obs.isCamera) {
     if (out["xy"].is_null()) fmt::print("xy  none (black)\n");
     else fmt::print("xy  {:.6f} {:.6f}\n", out["xy"][0].get<double>(), out["xy"][1].get<double>());

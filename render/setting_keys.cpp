@@ -169,11 +169,11 @@ std::vector<SettingKey> makeKeys() {
   keys.push_back(integerKey("width", "image width", "640", 1, 16384, [](S s) -> int& { return s.width; }));
   keys.push_back(integerKey("height", "image height", "360", 1, 16384, [](S s) -> int& { return s.height; }));
   keys.push_back(choiceKey<RenderMode>(
-      "mode", "how colour is rendered (reference: 472 wavelengths; optimised4: the sky's four)",
+      "mode", "how colour is rendered (reference: 472 wavelengths; optimised4: the sky's four, with an atmosphere)",
       "naive",
       {RenderMode::Rgb, RenderMode::Naive, RenderMode::JakobHanika, RenderMode::Reference, RenderMode::Optimised4},
       renderModeName, [](S s) -> RenderMode& { return s.mode; }));
-  keys.push_back(integerKey("wavelengths", "wavelengths per pixel", "32", 4, 1000,
+  keys.push_back(integerKey("wavelengths", "wavelengths per pixel (4–64 under the optimised strategy, the default)", "32", 4, 1000,
                             [](S s) -> int& { return s.sampling.count; }, 4));
   keys.push_back(rangeKey());
   keys.push_back(choiceKey<SamplingStrategy>(

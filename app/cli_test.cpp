@@ -174,6 +174,23 @@ TEST(Cli, CctWritesACsvSpectrumAtomically) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 95);
 }
 
+// A lamp of one's own, as a scene's {"csv": …} light: the same colours as the lamp by its name.
+TEST(Cli, ColourCommandsTakeALampFromASpectrumFile) {
+  std::filesystem::path lamp = std::filesystem::path(::testing::TempDir()) / "lamp" / "daylight_5000.csv";
+  ASSERT_EQ(run("colour cct 5000 --step 1 -o " + lamp.string()).exitCode, 0);
+  Result byName = run("colour xyz --illuminant daylight:5000 --rgb 0.2,0.5,0.3 --json");
+  Result byFile = run("colour xyz --illuminant " + lamp.string() + " --rgb 0.2,0.5,0.3 --json");
+  ASSERT_EQ(byFile.exitCode, 0) << byFile.err;
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(nlohmann::json::parse(byFile.out)["xyz"][c].get<double>(),
+                nlohmann::json::parse(byName.out)["xyz"][c].get<double>(), 1e-5);
+  auto orange = writeTemp("orange.csv", "wavelength_nm,value\n400,0.1\n550,0.3\n700,0.7\n");
+  Result metamer = run("colour metamer --reflectance " + orange.string() + " --match " + lamp.string() + " --target A --json");
+  EXPECT_EQ(metamer.exitCode, 0) << metamer.err;
+  auto negative = writeTemp("negative_lamp.csv", "wavelength_nm,value\n400,1\n500,-1\n");
+  expectOneLineError("colour xyz --illuminant " + negative.string(), "--illuminant: " + negative.string() + ":3:2: value -1 is negative");
+}
+
 TEST(Cli, CameraMatrixAndLists) {
   Result r = run("colour camera-matrix --camera nikon_d850 --json");
   ASSERT_EQ(r.exitCode, 0) << r.err;

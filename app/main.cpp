@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
   XyzOptions xyz;
   std::string rgbText;
   auto* xyzCmd = colour->add_subcommand("xyz", "XYZ (or camera RGB) of a reflectance or RGB albedo under an illuminant");
-  xyzCmd->add_option("--illuminant", xyz.illuminant, "illuminant name (see `colour list illuminants`)")->capture_default_str();
+  xyzCmd->add_option("--illuminant", xyz.illuminant, "illuminant name (see `colour list illuminants`) or a spectrum file (.csv)")->capture_default_str();
   xyzCmd->add_option("--observer", xyz.observer, "cie1931, cie1964 or a camera")->capture_default_str();
   auto* reflOpt = xyzCmd->add_option("--reflectance", xyz.reflectanceFile, "spectral CSV: wavelength_nm,value");
   auto* xyzRgbOpt =
@@ -149,7 +149,7 @@ int main(int argc, char** argv) {
   CameraMatrixOptions cam;
   auto* camCmd = colour->add_subcommand("camera-matrix", "least-squares camera RGB → XYZ matrix on the ColorChecker");
   camCmd->add_option("--camera", cam.camera, "camera name (see `colour list cameras`)")->required();
-  camCmd->add_option("--illuminant", cam.illuminant, "illuminant of the fit")->capture_default_str();
+  camCmd->add_option("--illuminant", cam.illuminant, "illuminant of the fit (a name or a .csv spectrum)")->capture_default_str();
   camCmd->add_flag("--json", cam.json, "JSON output");
 
   std::string listWhat;
@@ -162,8 +162,8 @@ int main(int argc, char** argv) {
   MetamerOptions metamer;
   auto* metamerCmd = colour->add_subcommand("metamer", "a metamer: the same colour under one illuminant, as different as possible under another");
   metamerCmd->add_option("--reflectance", metamer.reflectance, "a ColorChecker patch name or a spectral CSV")->required();
-  metamerCmd->add_option("--match", metamer.match, "illuminant under which the colours match")->capture_default_str();
-  metamerCmd->add_option("--target", metamer.target, "illuminant under which they differ most")->capture_default_str();
+  metamerCmd->add_option("--match", metamer.match, "illuminant under which the colours match (a name or a .csv spectrum)")->capture_default_str();
+  metamerCmd->add_option("--target", metamer.target, "illuminant under which they differ most (a name or a .csv spectrum)")->capture_default_str();
   std::string metamerUnder = fmt::format("{}", fmt::join(metamer.under, ","));
   auto* metamerUnderOpt = metamerCmd->add_option("--under", metamerUnder, "illuminants to report ΔE00 under, comma-separated")
                               ->capture_default_str();

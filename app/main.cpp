@@ -186,7 +186,7 @@ int main(int argc, char** argv) {
   prtBakeCmd->add_flag_callback("--no-shadows", [&prtBake] { prtBake.shadows = false; },
                                 "unshadowed transfer (so is a scene's whose prt.shadows is false)");
   prtBakeCmd->add_option("--cache", prtBake.cacheDir, "cache folder (default: Prism's cache)");
-  prtBakeCmd->add_option("--part", prtBake.part, "I/N: only task I of N's share of the vertices, as a part for `prism merge` (-o)");
+  prtBakeCmd->add_option("--part", prtBake.part, "I/N, I from 0 (a Slurm array task id): only task I of N's share of the vertices, as a part for `prism merge` (-o)");
   prtBakeCmd->add_option("-o,--output", prtBake.output, "the part's file (with --part)");
   prtBakeCmd->add_option("--threads", prtBake.threads, "worker threads (0: every core)")->capture_default_str()->check(CLI::Range(0u, prism::kMaxThreads));
   PrtReportOptions prtReport;
@@ -227,7 +227,7 @@ int main(int argc, char** argv) {
   lutCmd->add_option("--threads", lut.threads, "worker threads (0: all)")->check(CLI::Range(0u, prism::kMaxThreads));
   lutCmd->add_flag("--report", lut.report, "measure node and round-trip CIEDE2000 after building");
   lutCmd->add_flag("--json", lut.json, "JSON output");
-  lutCmd->add_option("--part", lut.part, "I/N: only task I of N's columns of the table, as a part for `prism merge`");
+  lutCmd->add_option("--part", lut.part, "I/N, I from 0 (a Slurm array task id): only task I of N's columns of the table, as a part for `prism merge`");
 
   UpsampleOptions up;
   std::string upRgb, upWavelengths;
@@ -282,7 +282,7 @@ int main(int argc, char** argv) {
                    "(linear XYZ in cd/m²) or a PNG");
   addReferenceOptions(referenceCmd, ref, refRange, refEv);
   referenceCmd->add_option("--tile", ref.tile,
-                           "I/N: only rows ⌊I·height/N⌋ to ⌊(I+1)·height/N⌋, as a part for `prism merge` (.exr)");
+                           "I/N, I from 0: only rows ⌊I·height/N⌋ to ⌊(I+1)·height/N⌋, as a part for `prism merge` (.exr)");
   referenceCmd->add_option("--samples", ref.samples,
                            "A:B: only path indices A to B (of --spp) of every pixel, as a part for `prism merge` (.exr)");
 
@@ -367,7 +367,7 @@ int main(int argc, char** argv) {
   validateCmd->add_flag("--quick", val.quick, "240x135 and fewer paths per pixel (seconds on 2 cores), for CI");
   validateCmd->add_flag("--json", val.json, "JSON output");
   validateCmd->add_option("--task", val.task,
-                          "I/N: only task I of N's share of the experiments, as a part in OUT/parts (a Slurm array task)");
+                          "I/N, I from 0: only task I of N's share of the experiments, as a part in OUT/parts (a Slurm array task)");
   validateCmd->add_flag("--collect", val.collect, "the report from the parts in OUT/parts (after every --task)")
       ->excludes("--task");
   std::string validateOnly;
@@ -404,7 +404,7 @@ int main(int argc, char** argv) {
     c->add_option("--azimuths", atm.azimuths, "view azimuth bins over 0..180° from the sun (1..1024; default 32, --quick 16)");
     c->add_flag("--quick", atm.quick, "10 nm reference, 8 x 16 directions (seconds) where those options are not given");
   }
-  atmEvaluate->add_flag("!--no-aerosols", atm.aerosols, "Rayleigh + ozone only (and its optimised set)");
+  atmEvaluate->add_flag_callback("--no-aerosols", [&atm] { atm.aerosols = false; }, "Rayleigh + ozone only (and its optimised set)");
   atmEvaluate->add_option("--wavelengths", atm.wavelengths, "an optimised wavelength file (default: data/atmosphere_wavelengths.json)");
   atmEvaluate->add_flag("--json", atm.json, "JSON output");
   atmOptimise->add_option("-o,--output", atm.output, "where to write (the shipped fit is data/atmosphere_wavelengths.json: name it to replace it)")->required();

@@ -371,7 +371,7 @@ void runSceneBench(const SceneBenchOptions& options) {
   header += fmt::format(" {:>9} {:>17} {:>15}", "× RGB", "95 % interval", "rounds");
   fmt::print("{}\n", header);
   auto confidence = [](const RatioSpread& s) {
-    return std::isnan(s.confidence.low) ? std::string("(under 6 rounds)")
+    return std::isnan(s.confidence.low) ? std::string("(none: < 6 rounds)")
                                         : fmt::format("({:.3f}, {:.3f})", s.confidence.low, s.confidence.high);
   };
   auto row = [&](const Config& c) {

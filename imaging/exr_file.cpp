@@ -248,9 +248,13 @@ ExrImage readExr(const std::filesystem::path& path) {
     } else if (has("Y") && !has("RY") && !has("BY")) {
       names = {"Y"};
     } else {
+      // The first few names and a count: a spectral texture has 81, a message of 1 000 characters.
+      constexpr int kNamed = 4;
       std::string found;
-      for (auto it = channels.begin(); it != channels.end(); ++it)
-        found += (found.empty() ? "" : ", ") + std::string(it.name());
+      int count = 0;
+      for (auto it = channels.begin(); it != channels.end(); ++it, ++count)
+        if (count < kNamed) found += (found.empty() ? "" : ", ") + excerpt(it.name(), 24);
+      if (count > kNamed) found += " and " + std::to_string(count - kNamed) + " more";
       throw Error(path.string() + ": no R, G, B or X, Y, Z or lone Y channels (it has: " +
                   (found.empty() ? "none" : found) + ")");
     }

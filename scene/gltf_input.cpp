@@ -293,6 +293,19 @@ void requireDataUriHoldsByteLength(const Node& buffer, const std::string& uri) {
                  " (the loader takes them equal)");
 }
 
+// A buffer file's size equal to its byteLength, as tinygltf requires: its own refusal named neither
+// the glTF nor the buffer ("File size mismatch : cube.bin, requestedBytes 99999, but got 840").
+void requireFileHoldsByteLength(const Node& buffer, const fs::path& file) {
+  auto length = buffer.optionalChild("byteLength");
+  std::error_code ec;
+  const std::uintmax_t holds = fs::file_size(file, ec);
+  if (!length || !length->json().is_number_unsigned() || ec) return;
+  const auto needs = length->json().get<std::uint64_t>();
+  if (needs != holds)
+    length->fail(std::to_string(needs) + " bytes, but " + file.filename().string() + " holds " + std::to_string(holds) +
+                 " (the loader takes them equal)");
+}
+
 void checkUris(const Node& top, const fs::path& root, const fs::path& base) {
   for (const char* section : {"buffers", "images"}) {
     auto list = top.optionalChild(section);
@@ -314,11 +327,13 @@ void checkUris(const Node& top, const fs::path& root, const fs::path& base) {
       }
       if (hasScheme(uri))
         uriNode->fail("'" + uri + "': only relative paths and data: URIs are allowed");
+      fs::path path;
       try {
-        schema::confinedFile(root, base, decodeUri(uri));
+        path = schema::confinedFile(root, base, decodeUri(uri));
       } catch (const Error& e) {
         uriNode->fail(e.what());
       }
+      if (std::string_view(section) == "buffers") requireFileHoldsByteLength(item, path);
     }
   }
   if (auto required = top.optionalChild("extensionsRequired")) {

@@ -201,6 +201,32 @@ TEST(GltfLoader, ABuffersByteLengthIsHeldToItsDataUri) {
   }
 }
 
+// A buffer file's size is held to its byteLength, at the glTF's place (tinygltf named neither file
+// nor buffer: "File size mismatch : tiles.bin, requestedBytes 1297, but got 1296").
+TEST(GltfLoader, ABuffersByteLengthIsHeldToItsFile) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_file_byte_length";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path models = fs::path(PRISM_EXAMPLE_SCENE_DIR) / "models";
+  for (const auto& entry : fs::directory_iterator(models))
+    if (entry.path().filename().string().starts_with("tiles")) fs::copy_file(entry.path(), dir / entry.path().filename());
+  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(dir / "tiles.gltf"));
+  ASSERT_EQ(gltf["buffers"][0]["byteLength"], fs::file_size(dir / "tiles.bin"));
+  Scene scene;
+  EXPECT_NO_THROW(appendGltf(dir / "tiles.gltf", dir, {}, scene));
+  gltf["buffers"][0]["byteLength"] = fs::file_size(dir / "tiles.bin") + 1;
+  std::ofstream(dir / "mismatch.gltf") << gltf.dump();
+  try {
+    appendGltf(dir / "mismatch.gltf", dir, {}, scene);
+    ADD_FAILURE() << "no Error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("mismatch.gltf: /buffers/0/byteLength: 1297 bytes, but tiles.bin holds 1296 "
+                                         "(the loader takes them equal)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // A .glb that is not a binary glTF says so (read as JSON, it was "malformed JSON").
 TEST(GltfLoader, AGlbWithoutItsMagicIsNamedSo) {
   const fs::path dir = fs::path(::testing::TempDir()) / "gltf_no_magic";

@@ -71,6 +71,13 @@ PrtInput loadPrtInput(const std::filesystem::path& input, bool withReflectances)
   if (withReflectances) {
     const RgbToSpectrumTable* table = nullptr;
     for (const Material& material : scene.materials) {
+      // The report's sums take one reflectance a material: a textured chart came out as its grey.
+      const bool used = std::ranges::find(object.vertexMaterial, static_cast<int>(&material - scene.materials.data())) !=
+                        object.vertexMaterial.end();
+      if (used && (material.spectralTexture || material.baseColourTexture >= 0))
+        fmt::print(stderr, "prism: warning: {}: material '{}' has a texture, which the report does not read: it takes "
+                           "its {}\n", input.string(), material.name,
+                   material.reflectance ? "measured reflectance" : "base colour");
       if (material.reflectance) {
         object.reflectances.push_back(*material.reflectance);
       } else {

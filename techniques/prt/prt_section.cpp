@@ -147,8 +147,11 @@ TechniqueBench PrtSection::bench() const {
   auto rgb = std::make_shared<PrtSection>(*this);
   rgb->mode = PrtMode::RgbPrt;
   // Both in one spectral frame, so that the section's mode decides what the PRT pass draws: the
-  // run's RGB frame (the configurations' default) draws RGB-PRT whatever the section says.
-  const std::vector<std::pair<std::string, std::string>> spectral16 = {{"mode", "jakob-hanika"}, {"wavelengths", "16"}};
+  // run's RGB frame (the configurations' default) draws RGB-PRT whatever the section says. Under
+  // CIE 1931, on which RGB-PRT is defined, whatever the run's observer (its curves change the
+  // weights, not the cost).
+  const std::vector<std::pair<std::string, std::string>> spectral16 = {
+      {"mode", "jakob-hanika"}, {"wavelengths", "16"}, {"observer", "cie1931"}};
   TechniqueBench b;
   b.configs.push_back({"prt m=8", spectral16, false, 0, spectral8});
   b.configs.push_back({"rgb-prt", spectral16, false, 0, rgb});

@@ -126,7 +126,8 @@ TEST(PrtSection, TheBenchTimesSpectralAgainstRgbPrtInOneSpectralFrame) {
   EXPECT_EQ(rgb.mode, PrtMode::RgbPrt);
   for (const TechniqueBenchConfig& c : b.configs) {
     EXPECT_FALSE(c.withoutTechnique);
-    EXPECT_EQ(c.settings, (std::vector<std::pair<std::string, std::string>>{{"mode", "jakob-hanika"}, {"wavelengths", "16"}}))
+    EXPECT_EQ(c.settings, (std::vector<std::pair<std::string, std::string>>{
+                              {"mode", "jakob-hanika"}, {"wavelengths", "16"}, {"observer", "cie1931"}}))
         << c.label;
   }
   ASSERT_EQ(b.ratios.size(), 1u);

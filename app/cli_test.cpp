@@ -189,6 +189,9 @@ TEST(Cli, ColourCommandsTakeALampFromASpectrumFile) {
   EXPECT_EQ(metamer.exitCode, 0) << metamer.err;
   auto negative = writeTemp("negative_lamp.csv", "wavelength_nm,value\n400,1\n500,-1\n");
   expectOneLineError("colour xyz --illuminant " + negative.string(), "--illuminant: " + negative.string() + ":3:2: value -1 is negative");
+  // As a scene refuses it: a lamp that gives no light has no colour (it printed nan, exit 0).
+  auto dark = writeTemp("dark_lamp.csv", "wavelength_nm,value\n400,0\n700,0\n");
+  expectOneLineError("colour xyz --illuminant " + dark.string(), dark.string() + ": the lamp has no luminous power");
 }
 
 TEST(Cli, CameraMatrixAndLists) {

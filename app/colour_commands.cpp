@@ -49,17 +49,10 @@ void requireThree(const std::vector<double>& v, const std::string& what) {
     if (!std::isfinite(x)) throw Error(what + ": values must be finite");
 }
 
-// A light as `prism colour list illuminants` names it, or a spectrum file of one (.csv), read as a
-// scene's {"csv": …} light is: no negative value, zero outside its band.
-Spectrum lightSpectrum(const std::string& text) {
-  if (lowercaseExtension(text) == ".csv") return readSpectrumCsv(text, Extrapolation::Zero, 0.0).toDense();
-  return illuminant(text);
-}
-
 }  // namespace
 
 void colourXyz(const XyzOptions& o) {
-  Spectrum light = fromOption("--illuminant", [&] { return lightSpectrum(o.illuminant); });
+  Spectrum light = fromOption("--illuminant", [&] { return lampSpectrum(o.illuminant); });
   const Observer& obs = *fromOption("--observer", [&] { return &observer(o.observer); });
   if (!o.reflectanceFile.empty() && !o.rgb.empty())
     throw Error("colour xyz: give --reflectance or --rgb, not both");
@@ -251,7 +244,7 @@ void colourConvert(const ConvertOptions& o) {
 void colourCameraMatrix(const CameraMatrixOptions& o) {
   const Observer& camera = cameraOption(o.camera);
   CameraMatrixFit fit =
-      fitCameraToXyz(camera, fromOption("--illuminant", [&] { return lightSpectrum(o.illuminant); }), observer("cie1931"));
+      fitCameraToXyz(camera, fromOption("--illuminant", [&] { return lampSpectrum(o.illuminant); }), observer("cie1931"));
   if (o.json) {
     fmt::print("{}\n", json{{"camera", o.camera}, {"illuminant", o.illuminant},
                             {"cameraToXyz", toJson(fit.cameraToXyz)},
@@ -354,9 +347,9 @@ void colourMetamer(const MetamerOptions& o) {
                                             "(cie1931 or cie1964)", o.observer));
   Spectrum original = patchOrFileReflectance(o.reflectance, "--reflectance");
   std::vector<std::pair<std::string, Spectrum>> lights;
-  for (const std::string& name : o.under) lights.emplace_back(name, fromOption("--under", [&] { return lightSpectrum(name); }));
-  prt::Metamer m = prt::findMetamer(original, fromOption("--match", [&] { return lightSpectrum(o.match); }),
-                                    fromOption("--target", [&] { return lightSpectrum(o.target); }), obs);
+  for (const std::string& name : o.under) lights.emplace_back(name, fromOption("--under", [&] { return lampSpectrum(name); }));
+  prt::Metamer m = prt::findMetamer(original, fromOption("--match", [&] { return lampSpectrum(o.match); }),
+                                    fromOption("--target", [&] { return lampSpectrum(o.target); }), obs);
   json out = {{"reflectance", o.reflectance}, {"match", o.match}, {"target", o.target}};
   for (const auto& [name, spd] : lights) out["delta_e2000"][name] = prt::reflectanceDeltaE2000(original, m.reflectance, spd, obs);
   if (!o.output.empty()) {

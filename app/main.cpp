@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
   metamerCmd->add_option("--match", metamer.match, "illuminant under which the colours match (a name or a .csv spectrum)")->capture_default_str();
   metamerCmd->add_option("--target", metamer.target, "illuminant under which they differ most (a name or a .csv spectrum)")->capture_default_str();
   std::string metamerUnder = fmt::format("{}", fmt::join(metamer.under, ","));
-  auto* metamerUnderOpt = metamerCmd->add_option("--under", metamerUnder, "illuminants to report ΔE00 under, comma-separated")
+  auto* metamerUnderOpt = metamerCmd->add_option("--under", metamerUnder, "illuminants to report ΔE00 under, comma-separated (names or .csv spectra)")
                               ->capture_default_str();
   metamerCmd->add_option("--observer", metamer.observer, "cie1931 or cie1964")->capture_default_str();
   metamerCmd->add_option("-o,--output", metamer.output, "CSV of the metamer to write");

@@ -158,8 +158,7 @@ class SceneParser {
         fs::path path = file(*csv);
         label = "csv:" + csv->string();
         try {
-          // Emitters: zero outside the measured band (spectral/spectrum.h).
-          s = readSpectrumCsv(path, Extrapolation::Zero, 0.0).toDense();
+          s = readLampCsv(path);
         } catch (const Error& e) {
           csv->fail(e.what());
         }

@@ -322,7 +322,8 @@ TEST_F(SceneFolder, SpdCsvWithBadDataNamesFileLineAndColumn) {
                                                 ": its wavelengths (850–900 nm) lie outside 360–830 nm, the range Prism renders");
   write("lamp.csv", "wavelength_nm,value\n400,0\n500,0\n");
   EXPECT_EQ(errorOf([&] { loadScene(f); }),
-            f.string() + ": /lights/0/spd: the spectrum has no luminous power (683 lm/W · ∫ S ȳ dλ = 0 over 360–830 nm)");
+            f.string() + ": /lights/0/spd/csv: " + csv.string() +
+                ": the lamp has no luminous power (683 lm/W · ∫ S ȳ dλ = 0 over 360–830 nm)");
   fs::path paint = write("paint.csv", "wavelength_nm,reflectance\n400,0.5\n500,1.5\n");
   f = sceneWithMaterial(R"({"reflectance": {"csv": "paint.csv"}})");
   EXPECT_EQ(errorOf([&] { loadScene(f); }),

@@ -6,6 +6,7 @@
 #include "spectral/spectrum_csv.h"
 #include "core/data_files.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 
 namespace prism {
 namespace {
@@ -136,6 +137,11 @@ std::vector<IlluminantInfo> listIlluminants() {
   list.push_back({"blackbody:<K>", "Planck, 100 at 560 nm"});
   list.push_back({"led:<peak>:<width>", "Ohno 2005 single LED, peak 1"});
   return list;
+}
+
+Spectrum lampSpectrum(const std::string& nameOrFile) {
+  if (lowercaseExtension(nameOrFile) == ".csv") return readLampCsv(nameOrFile);
+  return illuminant(nameOrFile);
 }
 
 }  // namespace prism

@@ -29,6 +29,9 @@ struct IlluminantInfo {
 Spectrum illuminant(std::string_view name);
 std::vector<IlluminantInfo> listIlluminants();
 
+// A lamp a user names: an illuminant's name, or a spectrum file when it ends in .csv (readLampCsv).
+Spectrum lampSpectrum(const std::string& nameOrFile);
+
 // CIE 15:2004 §3.1: daylight of a correlated colour temperature in 4000–25000 K, from the
 // S0, S1, S2 components; 100 at 560 nm.
 Spectrum daylight(double cctK);

@@ -7,6 +7,7 @@
 
 #include "core/csv.h"
 #include "core/error.h"
+#include "spectral/observer.h"
 
 namespace prism {
 
@@ -80,6 +81,13 @@ TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path, Extrapolati
     throw Error(message.str());
   }
   return TabulatedSpectrum(std::move(lambdas), std::move(values), extrapolation);
+}
+
+Spectrum readLampCsv(const std::filesystem::path& path) {
+  Spectrum lamp = readSpectrumCsv(path, Extrapolation::Zero, 0.0).toDense();
+  if (!(luminousIntegral(lamp) > 0.0))
+    throw Error(path.string() + ": the lamp has no luminous power (683 lm/W · ∫ S ȳ dλ = 0 over 360–830 nm)");
+  return lamp;
 }
 
 }  // namespace prism

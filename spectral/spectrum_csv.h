@@ -41,4 +41,9 @@ TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path, Extrapolati
                                   double minValue = -std::numeric_limits<double>::infinity(),
                                   double maxValue = std::numeric_limits<double>::infinity());
 
+// A lamp's spectrum file, as scenes, the viewer and the colour commands read one: no negative
+// value, zero outside its rows; Error "PATH: the lamp has no luminous power …" when ∫ S ȳ dλ = 0
+// (its colour would be 0/0).
+Spectrum readLampCsv(const std::filesystem::path& path);
+
 }  // namespace prism

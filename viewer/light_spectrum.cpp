@@ -20,7 +20,7 @@ void setLightSpectrum(Light& light, const Spectrum& spd, const std::string& labe
 }
 
 void setLightSpdFromCsv(Light& light, const std::string& path) {
-  setLightSpectrum(light, readSpectrumCsv(path, Extrapolation::Zero, 0.0).toDense(), "csv:" + path);
+  setLightSpectrum(light, readLampCsv(path), "csv:" + path);
 }
 
 void setLightSpd(Light& light, const std::string& name) {

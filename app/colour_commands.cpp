@@ -131,7 +131,7 @@ void colourXyz(const XyzOptions& o) {
     // every strategy read the range's cut: ΔE00 34 for 500–600 nm, even at 400 wavelengths.
     const Spectrum banded = lightWithinRange(light, settings.minNm, settings.maxNm);
     const Eigen::Vector3d truth = obs.integrate(banded * reflectance) / whiteY;
-    const Eigen::Vector3d bandWhite = labWhite(obs.integrate(banded) / whiteY);
+    const Eigen::Vector3d bandWhite = fitWhite(banded, obs) / whiteY;
     json s = {{"count", o.wavelengthCount}, {"strategy", o.strategy}, {"rangeNm", {o.rangeNm[0], o.rangeNm[1]}},
               {"value", toJson(sampled)}, {"integral", toJson(truth)}};
     if (!obs.isCamera) s["deltaE2000"] = deltaE(xyzToLab(sampled, bandWhite), xyzToLab(truth, bandWhite));

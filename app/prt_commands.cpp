@@ -265,18 +265,26 @@ prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtI
   if (shape == "sky") return prt::skyGradientEnvironment(name + " sky", light());
   if (shape == "uniform") return prt::uniformEnvironment(name + " uniform", light());
   if (shape != "atmosphere") throw Error("--environment: '" + shape + "' is not sky, uniform or atmosphere");
-  // The scene's own sky, when it has one, with the sun moved as asked: its azimuth and its other
-  // keys were the defaults' (a report at --sun-elevation 15 on prt_sky.json put the sun at 180°,
-  // not the scene's 120°, under the same header).
-  prt::PrtSky sky = section && section->sky ? *section->sky : prt::PrtSky{};
-  const double elevation = o.sunElevationDeg.value_or(section && section->sky ? sky.atmosphere.sunElevationDeg : 30.0);
-  const double azimuth = o.sunAzimuthDeg.value_or(section && section->sky ? sky.atmosphere.sunAzimuthDeg : 180.0);
+  // The scene's own sky, when it has one, with the sun moved as asked (its disc, its other keys and
+  // the section's rotation kept): the defaults' sky stood in for it, a report at --sun-elevation 15
+  // on prt_sky.json putting the sun at 180°, not the scene's 120°, under the same header.
+  const bool own = section && section->sky;
+  const double elevation = o.sunElevationDeg.value_or(own ? section->sky->atmosphere.sunElevationDeg : 30.0);
+  const double azimuth = o.sunAzimuthDeg.value_or(own ? section->sky->atmosphere.sunAzimuthDeg : 180.0);
   if (!(std::abs(elevation) <= 90.0)) throw Error(fmt::format("--sun-elevation: {} is not within -90..90", elevation));
   if (!(std::abs(azimuth) <= 360.0)) throw Error(fmt::format("--sun-azimuth: {} is not within -360..360", azimuth));
+  if (own) {
+    prt::PrtSection moved = *section;
+    moved.sky->atmosphere.sunElevationDeg = static_cast<float>(elevation);
+    moved.sky->atmosphere.sunAzimuthDeg = static_cast<float>(azimuth);
+    prt::SpectralEnvironment environment = prt::sectionEnvironment(moved, rendererRgbToSpectrumTable("srgb"), true);
+    environment.name = "the scene's " + environment.name;
+    return environment;
+  }
+  prt::PrtSky sky;
   sky.atmosphere.sunElevationDeg = static_cast<float>(elevation);
   sky.atmosphere.sunAzimuthDeg = static_cast<float>(azimuth);
-  return prt::skyEnvironment(fmt::format("{}spectral sky, sun at {}° elevation, {}° azimuth",
-                                         section && section->sky ? "the scene's " : "Prism's ", elevation, azimuth),
+  return prt::skyEnvironment(fmt::format("Prism's spectral sky, sun at {:g}° elevation, {:g}° azimuth", elevation, azimuth),
                              prt::tabulateSky(sky), true, 1.0);
 }
 

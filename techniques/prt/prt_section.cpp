@@ -230,7 +230,8 @@ SpectralEnvironment sectionEnvironment(const PrtSection& section, const RgbToSpe
                                              [&](const glm::vec3& rgb) { return toSpectrum(rgb) * scale; });
   } else if (section.sky) {
     const bool sun = sunInEnvironment && section.sky->sunDisc;
-    environment = skyEnvironment(fmt::format("spectral sky, sun at {}°{}", section.sky->atmosphere.sunElevationDeg,
+    environment = skyEnvironment(fmt::format("spectral sky, sun at {:g}° elevation, {:g}° azimuth{}",
+                                             section.sky->atmosphere.sunElevationDeg, section.sky->atmosphere.sunAzimuthDeg,
                                              sun ? ", its disc on SH-5" : section.sky->sunDisc ? "" : ", no sun disc"),
                                  *sectionSky(*section.sky), sun, double(shared::kLumensPerWatt));
   } else {

@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "core/file_extension.h"
 #include "core/json_schema.h"
+#include "render/frame_data.h"
 #include "render/setting_keys.h"
 #include "viewer/camera_controller.h"
 #include "viewer/scene_settings.h"
@@ -104,10 +105,16 @@ struct Settable {
 
 void set(const Settable& target, const std::string& key, const std::string& value) {
   Changes& changes = target.changes;
+  // A combination the renderer refuses (rgb-prt under a camera) fails here, at its line.
+  auto requireShown = [&target] {
+    for (const render::FrameSettings* side : {&target.view.left, &target.view.right})
+      render::requireTechniquesShow(target.scene, *side);
+  };
   if (applyViewSetting(target.view, key, value)) {
     changes.settings = true;
     render::validate(target.view.left);  // a bad combination fails here, at its line
     render::validate(target.view.right);
+    requireShown();
     return;
   }
   if (key == "fov") {
@@ -119,6 +126,7 @@ void set(const Settable& target, const std::string& key, const std::string& valu
   for (TechniqueSetKey set : techniqueSetKeys()) {
     if (set(scene, key, value)) {
       changes.scene = true;
+      requireShown();
       return;
     }
   }

@@ -47,8 +47,9 @@ class PrtPanel final : public Panel {
       ImGui::SliderFloat("sun azimuth deg", &s.sky->atmosphere.sunAzimuthDeg, -180.0f, 180.0f, "%.1f");
       changed |= ImGui::IsItemDeactivatedAfterEdit();
       // The sun is the deferred pipeline's light, which reads no spectral texture: the pass
-      // refuses the two together, so the disc stays off while a PRT material has one.
-      ImGui::BeginDisabled(!s.sky->sunDisc && hasSpectralTexture(context.scene));
+      // refuses the two together, so the disc stays off while a PRT material has one — and while
+      // the atmosphere section's sun lights the scene (the loader refuses two suns).
+      ImGui::BeginDisabled(!s.sky->sunDisc && (hasSpectralTexture(context.scene) || context.scene.techniques.has("atmosphere")));
       changed |= ImGui::Checkbox("sun disc", &s.sky->sunDisc);
       ImGui::EndDisabled();
     } else {

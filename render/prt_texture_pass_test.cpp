@@ -154,7 +154,7 @@ TEST(PrtTextured, ASpectralTextureUnderASceneLightIsRefused) {
     FAIL() << "rendered";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("prt_sky.json: /materials/"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("a spectral texture, which the scene's lights cannot read"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("has a spectral texture, which the scene's lights cannot read"), std::string::npos)
         << e.what();
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
   }

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -87,12 +88,19 @@ struct Material {
   // Optional conductor: specular-only, Fresnel from n and k per wavelength. Never upsampled.
   std::optional<ConductorIor> conductor;
   // Optional spectral texture (docs/spectral-texture.md): the reflectance per texel, in place of
-  // base colour, texture and reflectance. Only PRT objects shade it (the loader refuses others).
+  // base colour, texture and reflectance. Only PRT objects shade it (the loader refuses others),
+  // and only by their environment (kSpectralTextureUnderLights).
   std::shared_ptr<const SpectralTexture> spectralTexture;
   int baseColourTexture = -1;         // index into Scene::textures, sRGB-encoded
   int metallicRoughnessTexture = -1;  // glTF: metallic in B, roughness in G, linear
   int normalTexture = -1;             // tangent-space normal map, linear
 };
+
+// Why a material with a spectral texture is refused under any light of the scene, by the loader
+// and by PRT's pass after an edit: such an object came out flat grey, without a word.
+inline constexpr std::string_view kSpectralTextureUnderLights =
+    "has a spectral texture, which the scene's lights cannot read (the lighting pass lights PRT objects by their "
+    "base colour): it takes the PRT environment's light alone";
 
 // An 8-bit RGBA image as decoded from a file (row 0 at the top). `srgb` says whether the RGB
 // channels are sRGB-encoded colour (decoded with the sRGB transfer function when sampled).

@@ -94,14 +94,18 @@ class SceneParser {
     addTechniqueLights(mScene);
     // The scene's lights reach PRT objects through the lighting pass, which reads no spectral
     // texture: such an object came out as its base colour, flat grey, without a word.
-    if (!mScene.lights.empty()) {
-      const Light& first = mScene.lights.front();
-      const std::string remedy = first.technique.empty()      ? "give the scene no /lights"
-                                 : first.technique == "prt" ? "set prt.environment.atmosphere.sun_disc to false"
-                                                            : "take out the " + first.technique + " section, whose sun it is";
-      for (const auto& [node, name] : mSpectrallyTextured)
-        node.fail("material '" + name + "' has a spectral texture, which the scene's lights cannot read (the lighting "
-                  "pass lights PRT objects by their base colour): it takes the PRT environment's light alone; " + remedy);
+    if (!mScene.lights.empty() && !mSpectrallyTextured.empty()) {
+      std::vector<std::string> remedies;
+      for (const Light& light : mScene.lights) {
+        const std::string remedy = light.technique.empty()      ? "give the scene no /lights"
+                                   : light.technique == "prt" ? "set prt.environment.atmosphere.sun_disc to false"
+                                                              : "take out the " + light.technique + " section, whose sun it is";
+        if (std::ranges::find(remedies, remedy) == remedies.end()) remedies.push_back(remedy);
+      }
+      std::string joined = remedies.front();
+      for (std::size_t i = 1; i < remedies.size(); ++i) joined += (i + 1 == remedies.size() ? " and " : ", ") + remedies[i];
+      const auto& [node, name] = mSpectrallyTextured.front();
+      node.fail("material '" + name + "' " + std::string(kSpectralTextureUnderLights) + "; " + joined);
     }
     return std::move(mScene);
   }

@@ -189,10 +189,8 @@ void PrtPass::prepareProjections(const ForwardDrawInput& input) {
       // The scene's lights (the spectral sky's sun among them) are the lighting pass's, which reads
       // no spectral texture: the loader refuses them, this an edit that adds one.
       if (!input.scene.lights.empty())
-        throw Error(fmt::format("{}: /materials/{}: a spectral texture, which the scene's lights cannot read (the "
-                                "lighting pass lights PRT objects by their base colour): it takes the PRT environment's "
-                                "light alone",
-                                input.scene.file.string(), material.name));
+        throw Error(fmt::format("{}: /materials/{}: {}", input.scene.file.string(), material.name,
+                                kSpectralTextureUnderLights));
       texture = std::make_shared<const PrtTextureSource>(material.spectralTexture);
     } else if (material.baseColourTexture >= 0) {
       const Image& image = input.scene.textures.at(static_cast<std::size_t>(material.baseColourTexture));

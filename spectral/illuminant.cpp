@@ -71,7 +71,7 @@ Spectrum blackbodyIlluminant(double temperatureK) {
   // Below 500 K a body gives no light that 360–830 nm carries in floats once scaled at 560 nm
   // (at 1 K its 560 nm radiance underflows to 0); above 10⁶ K its shape no longer changes.
   if (!(temperatureK >= 500.0 && temperatureK <= 1e6))
-    throw Error("blackbody: temperature must be within 500–1000000 K, got " + excerpt(shortestNumber(temperatureK)));
+    throw Error("blackbody: temperature must be within 500–1000000 K, got " + shortestNumber(temperatureK));
   return scaledTo100At560(blackbody(temperatureK));
 }
 

@@ -24,8 +24,7 @@ void setLightSpdFromCsv(Light& light, const std::string& path) {
 }
 
 void setLightSpd(Light& light, const std::string& name) {
-  if (lowercaseExtension(name) == ".csv") return setLightSpdFromCsv(light, name);
-  setLightSpectrum(light, illuminant(name), name);
+  setLightSpectrum(light, lampSpectrum(name), lowercaseExtension(name) == ".csv" ? "csv:" + name : name);
 }
 
 }  // namespace prism::viewer

@@ -14,7 +14,7 @@ void setLightSpectrum(Light& light, const Spectrum& spd, const std::string& labe
 // A spectrum's CSV file (zero beyond its rows), labelled "csv:PATH".
 void setLightSpdFromCsv(Light& light, const std::string& path);
 // A named illuminant, a parametric one ("blackbody:3000", "led:450:20"), or a name ending in .csv,
-// a CSV file (setLightSpdFromCsv, as the panel's CSV field reads any file).
+// a CSV file labelled as setLightSpdFromCsv labels it (lampSpectrum).
 void setLightSpd(Light& light, const std::string& name);
 
 }  // namespace prism::viewer

@@ -5,7 +5,7 @@
 # prism loads but the C library's, the C++ runtime's and the GL/EGL loaders' (which come with the
 # machine's driver), packed into OUT.tar.xz. Use it there as
 #   mkdir -p DIR && tar -xJf OUT.tar.xz -C DIR && LD_LIBRARY_PATH=DIR/lib DIR/bin/prism …
-# The machine's own C++ runtime must be GCC 12's or newer (Debian 12's, which built prism).
+# The machine's own C++ runtime must be GCC 12's libstdc++ or newer (Debian 12's, which prism links).
 # Usage: scripts/bundle.sh OUT.tar.xz [BUILD_DIR]   (BUILD_DIR: build/release, already built)
 set -euo pipefail
 [ $# -ge 1 ] || { echo "usage: scripts/bundle.sh OUT.tar.xz [BUILD_DIR]" >&2; exit 2; }

@@ -17,7 +17,7 @@ target=$1 seconds=$2 jobs=${3:-1}
 
 scripts/install-deps.sh
 export CCACHE_BASEDIR="$PWD"
-cmake --preset fuzz >/dev/null
+cmake --preset fuzz --fresh >/dev/null  # the cache holds only what the preset says
 cmake --build --preset fuzz --target "${target}_fuzz"
 
 work=build/fuzz/corpus/$target

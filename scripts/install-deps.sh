@@ -4,8 +4,8 @@
 set -euo pipefail
 
 packages=(
-  cmake ninja-build pkg-config g++ ccache
-  clang libclang-rt-dev  # the asan and fuzz presets (ASan, UBSan and libFuzzer runtimes)
+  cmake ninja-build pkg-config g++ ccache  # g++: the C++ runtime, and the compiler of the install test's consumers
+  clang libclang-rt-dev  # every preset's compiler; the ASan, UBSan and libFuzzer runtimes
   libcli11-dev nlohmann-json3-dev libfmt-dev libeigen3-dev libglm-dev libcsv-dev libstb-dev zlib1g-dev
   libopenexr-dev libtinygltf-dev libembree-dev libnlopt-cxx-dev
   libgtest-dev libbenchmark-dev glslang-tools

@@ -12,7 +12,10 @@ werror=OFF
 
 for preset in release asan; do
   echo "== $preset: configure, build, test"
-  cmake --preset "$preset" -DPRISM_WERROR=$werror >/dev/null
+  # --fresh: the cache holds only what the preset and this line say (a folder configured by
+  # another compiler or other options would otherwise keep them, or lose the preset's when CMake
+  # drops its cache on a change of compiler).
+  cmake --preset "$preset" --fresh -DPRISM_WERROR=$werror >/dev/null
   cmake --build --preset "$preset"
   ctest --preset "$preset"
 done

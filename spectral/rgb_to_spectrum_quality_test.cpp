@@ -96,8 +96,9 @@ TEST_P(WideGamut, ReportsReachabilityAndStaysPhysical) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Gamuts, WideGamut,
-                         // Measured: P3 99.14 / 99.75 / 100 %, Rec.2020 89.81 / 91.47 / 99.98 %,
-                         // ACEScg 86.95 / 88.77 / 99.96 %.
+                         // Measured (clang 14): P3 99.14 / 99.77 / 100 %, Rec.2020 89.80 / 91.98 /
+                         // 99.97 %, ACEScg 86.95 / 89.28 / 99.96 %; GCC 12's fits reached 91.47 %
+                         // and 88.77 % of the random Rec.2020 and ACEScg colours.
                          ::testing::Values(WideGamutFloors{"display-p3", 0.99, 0.995, 0.999},
                                            WideGamutFloors{"rec2020", 0.89, 0.91, 0.999},
                                            WideGamutFloors{"acescg", 0.86, 0.88, 0.999}),

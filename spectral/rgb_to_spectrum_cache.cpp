@@ -24,7 +24,7 @@ namespace prism {
 namespace {
 
 // Bump when the optimiser or the table's meaning changes.
-constexpr int kOptimiserVersion = 1;
+constexpr int kOptimiserVersion = 2;
 
 // How much worse than a fresh fit a stored node may reproduce its colour (CIE76) and be trusted:
 // the builder seeds each fit from its neighbour, which lands within hundredths of a fresh fit.

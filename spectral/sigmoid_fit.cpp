@@ -48,14 +48,23 @@ const Spectrum& gamutWhiteIlluminant(const RgbColourSpace& gamut) {
 
 SigmoidFitter::SigmoidFitter(const RgbColourSpace& gamut, const Spectrum& illuminant,
                              const Observer& obs)
-    : mGamut(gamut), mWeights(reflectanceWeights(obs, illuminant)) {
+    : mGamut(gamut) {
+  // The reflectance is flat beyond [380, 730] nm, so the 1 nm nodes there share one value each
+  // end: one node with their summed weight, a quarter fewer sigmoids per residual.
+  const std::vector<Eigen::Vector3d> weights = reflectanceWeights(obs, illuminant);
   for (int i = 0; i < kSpectrumSamples; ++i) {
     double lambdaNm = std::clamp<double>(kLambdaMinNm + i, shared::kReflectanceMinNm,
                                          shared::kReflectanceMaxNm);
-    mT.push_back((lambdaNm - kLambdaMinNm) / kSpanNm);
+    double t = (lambdaNm - kLambdaMinNm) / kSpanNm;
+    if (!mT.empty() && mT.back() == t) {
+      mWeights.back() += weights[static_cast<std::size_t>(i)];
+    } else {
+      mT.push_back(t);
+      mWeights.push_back(weights[static_cast<std::size_t>(i)]);
+    }
   }
   mWhiteXyz = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& w : mWeights) mWhiteXyz += w;
+  for (const Eigen::Vector3d& w : weights) mWhiteXyz += w;
 }
 
 SigmoidFit SigmoidFitter::fit(const Eigen::Vector3d& linearRgb, const Eigen::Vector3d& seed) const {

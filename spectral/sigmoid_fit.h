@@ -43,8 +43,8 @@ class SigmoidFitter {
 
  private:
   RgbColourSpace mGamut;
-  std::vector<double> mT;                        // normalised, clamped wavelength per 1 nm node
-  std::vector<Eigen::Vector3d> mWeights;         // node weight · illuminant · observer / ∫Sȳ
+  std::vector<double> mT;                        // normalised, clamped wavelength of each distinct node
+  std::vector<Eigen::Vector3d> mWeights;         // Σ node weight · illuminant · observer / ∫Sȳ there
   Eigen::Vector3d mWhiteXyz;                     // the lit perfect reflector
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <utility>
@@ -91,7 +92,7 @@ class SceneParser {
       if (!section) node.fail("the scene has no '" + key + "' section to shade this object");
       if (!section->shadesObjects()) node.fail("'" + key + "' does not shade objects");
     }
-    addTechniqueLights(mScene);
+    applyTechniqueLights(mScene);
     // The scene's lights reach PRT objects through the lighting pass, which reads no spectral
     // texture: such an object came out as its base colour, flat grey, without a word.
     if (!mScene.lights.empty() && !mSpectrallyTextured.empty()) {
@@ -502,35 +503,29 @@ Spectrum normalisedLightSpectrum(const Spectrum& spd) {
   return spd * (1.0 / luminous);
 }
 
-void addTechniqueLights(Scene& scene) {
-  for (const auto& section : scene.techniques.all()) {
-    std::optional<TechniqueLight> added = section->light();
-    if (!added) continue;
-    Light light;
-    light.type = LightType::Directional;
-    light.intensity = static_cast<float>(added->illuminanceLux >= 0.0 ? added->illuminanceLux : luminousIntegral(added->spd));
-    light.spd = normalisedLightSpectrum(added->spd);
-    light.spdLabel = added->spdLabel;
-    light.castsShadows = added->castsShadows;
-    light.technique = std::string(section->key());
-    scene.lights.push_back(light);
-  }
-  applyTechniqueLights(scene);
-}
-
 void applyTechniqueLights(Scene& scene) {
-  for (Light& light : scene.lights) {
-    if (light.technique.empty()) continue;
-    const TechniqueSection* section = scene.techniques.find(light.technique);
-    if (!section) continue;
-    std::optional<TechniqueLight> l = section->light();
-    if (!l) continue;
-    light.direction = l->direction;
-    if (l->followsSection) {
-      light.intensity = static_cast<float>(l->illuminanceLux >= 0.0 ? l->illuminanceLux : luminousIntegral(l->spd));
-      light.spd = normalisedLightSpectrum(l->spd);
-      light.spdLabel = l->spdLabel;
+  for (const auto& section : scene.techniques.all()) {
+    const std::optional<TechniqueLight> l = section->light();
+    if (!l) {  // switched off (PRT's sun disc): its light goes
+      std::erase_if(scene.lights, [&](const Light& light) { return light.technique == section->key(); });
+      continue;
     }
+    auto light = std::ranges::find(scene.lights, section->key(), &Light::technique);
+    if (light == scene.lights.end()) {  // on load, or switched on
+      Light added;
+      added.type = LightType::Directional;
+      added.castsShadows = l->castsShadows;
+      added.technique = std::string(section->key());
+      scene.lights.push_back(std::move(added));
+      light = std::prev(scene.lights.end());
+    } else if (!l->followsSection) {
+      light->direction = l->direction;  // its spectrum and intensity are the user's to edit
+      continue;
+    }
+    light->direction = l->direction;
+    light->intensity = static_cast<float>(l->illuminanceLux >= 0.0 ? l->illuminanceLux : luminousIntegral(l->spd));
+    light->spd = normalisedLightSpectrum(l->spd);
+    light->spdLabel = l->spdLabel;
   }
 }
 

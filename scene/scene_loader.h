@@ -33,12 +33,10 @@ Scene loadScene(const std::filesystem::path& file, const std::vector<std::string
 // Error when a value is negative or not finite, or when there is no luminous power.
 Spectrum normalisedLightSpectrum(const Spectrum& spd);
 
-// The lights the scene's technique sections add (the sky's sun: the solar spectrum at the top of
-// the atmosphere, its illuminance there, about 133 klux), normalised like every light and tagged
-// with their technique (Light::technique); added on load.
-void addTechniqueLights(Scene& scene);
-// Points each technique's light as its section says again (after an editor changed the section,
-// e.g. the sun's angles).
+// Makes the scene's technique lights what their sections say (the sky's sun: the solar spectrum
+// at the top of the atmosphere, its illuminance there, about 133 klux), normalised like every light
+// and tagged with their technique (Light::technique): on load, and again after an editor changed a
+// section (the sun's angles; PRT's sun disc switched on adds its light, off takes it away).
 void applyTechniqueLights(Scene& scene);
 
 }  // namespace prism

@@ -155,5 +155,42 @@ TEST_F(SceneFolder, PrtObjectsNameTheTechniqueAndItsSectionIsChecked) {
             orphan.string() + ": /objects/0/technique: 'water' does not shade objects");
 }
 
+// The viewer's PRT panel switches the spectral sky's sun disc: the sun is the scene's light, so
+// switching it on must add that light and switching it off take it away. Loaded without it, the
+// switch added no light (applyTechniqueLights only pointed lights already there), and a sun
+// switched off kept shining on every surface.
+TEST_F(SceneFolder, PrtSunDiscSwitchedAddsOrTakesAwayItsLight) {
+  fs::path f = write("prt_sky.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]},
+    "materials": {"m": {}},
+    "objects": [{"sphere": {"centre": [0, 0, 0], "radius": 1}, "material": "m", "technique": "prt"}],
+    "lights": [{"type": "point", "position": [0, 3, 0], "spd": "A", "intensity": 100}],
+    "prt": {"environment": {"atmosphere": {"sun": {"elevation": 20}, "sun_disc": false}}}})");
+  Scene s = loadScene(f);
+  ASSERT_EQ(s.lights.size(), 1u);
+  prt::PrtSection& section = *s.techniques.find<prt::PrtSection>();
+  section.sky->sunDisc = true;
+  applyTechniqueLights(s);
+  ASSERT_EQ(s.lights.size(), 2u);
+  EXPECT_EQ(s.lights[0].technique, "");
+  const Light& sun = s.lights[1];
+  EXPECT_EQ(sun.technique, "prt");
+  EXPECT_EQ(sun.type, LightType::Directional);
+  // As loaded with the disc on: the same light, direction, spectrum and illuminance.
+  const Scene loadedOn = loadScene(f, {"prt.environment.atmosphere.sun_disc=true"});
+  ASSERT_EQ(loadedOn.lights.size(), 2u);
+  EXPECT_GT(sun.intensity, 1e4f);
+  EXPECT_EQ(sun.intensity, loadedOn.lights[1].intensity);
+  EXPECT_EQ(sun.direction, loadedOn.lights[1].direction);
+  EXPECT_EQ(sun.spd.at(550.0), loadedOn.lights[1].spd.at(550.0));
+  EXPECT_EQ(sun.spdLabel, loadedOn.lights[1].spdLabel);
+  // Off again: the scene's own light stays, the sun goes; applied twice, nothing more changes.
+  section.sky->sunDisc = false;
+  applyTechniqueLights(s);
+  applyTechniqueLights(s);
+  ASSERT_EQ(s.lights.size(), 1u);
+  EXPECT_EQ(s.lights[0].technique, "");
+  EXPECT_EQ(s.lights[0].intensity, 100.0f);
+}
+
 }  // namespace
 }  // namespace prism

@@ -723,6 +723,35 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   for (const std::string& command : {"render " + manyScene + " -o x.png", "bench " + manyScene + " --frames 1"})
     expectOneLineError(command + " --width 8 --height 8",
                        "many_scene.json: /nebula/stars: the optical depths of 2800 stars need 700 slabs of 24 texels");
+  // Light-density reads none of the stars' optical depths, so it marches any number of them on the
+  // GPU: 1 028 stars over 8³ voxels (257 slabs of 8, past llvmpipe's 2 048) were refused with the
+  // other methods' limit, its own point being a cost that does not grow with the stars.
+  std::string more = R"({"nebula": {"density": {"noise": {"resolution": 8}}, "stars": [)";
+  for (int i = 0; i < 1028; ++i)
+    more += std::string(i ? "," : "") + R"({"position": [)" + std::to_string(0.2 + 0.6 * i / 1027.0) +
+            R"(, 0.5, 0.5], "temperature": 9000})";
+  std::ofstream(dir / "more.json") << more + R"(], "camera": {"width": 8, "height": 8}}})";
+  Result lightDensity =
+      run("nebula render " + (dir / "more.json").string() + " --gpu --method light-density -o " + (dir / "more.exr").string());
+  EXPECT_EQ(lightDensity.exitCode, 0) << lightDensity.err;
+  expectOneLineError("nebula render " + (dir / "more.json").string() + " --gpu -o x.png",
+                     "more.json: /nebula/stars: the optical depths of 1028 stars need 257 slabs of 8 texels along z "
+                     "(2056), more than this GPU's 3D textures hold (2048); light-density's march reads none of them");
+  // In a scene of the renderer, as long as the stars light no surface and no frame is the reference's.
+  std::ofstream(dir / "more_scene.json") << R"({"camera": {"position": [0, 0, -6], "target": [0, 0, 0]}, "objects": [], )" +
+                                                more.substr(1) + "]}}";
+  const std::string moreScene = (dir / "more_scene.json").string() + " --width 8 --height 8 -o " + (dir / "more.png").string();
+  Result sceneLightDensity = run("render " + moreScene + " --set nebula.method=light-density --set nebula.light_surfaces=false");
+  EXPECT_EQ(sceneLightDensity.exitCode, 0) << sceneLightDensity.err;
+  expectOneLineError("render " + moreScene + " --set nebula.method=light-density",
+                     "more_scene.json: /nebula/stars: the optical depths of 1028 stars");
+  // The reference mode marches the reference: refused at its first frame, after the precomputation
+  // (whose progress bars come first), nothing written.
+  std::filesystem::remove(dir / "more.png");
+  Result reference = run("render " + moreScene + " --set nebula.method=light-density --set nebula.light_surfaces=false --mode reference");
+  EXPECT_EQ(reference.exitCode, 1);
+  EXPECT_NE(reference.err.find("more_scene.json: /nebula/stars: the optical depths of 1028 stars"), std::string::npos) << reference.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "more.png"));
   expectOneLineError("nebula render " + tiny + " --method reference --reference-intervals 1024 --compare -o x.exr",
                      "--compare: the reference at 1024 Simpson intervals has no finer one");
   expectOneLineError("nebula basis --plot basis.png", "--plot basis.png: the plot is written as an .svg file");

@@ -283,7 +283,8 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   if (o.gpu) {
     context = std::make_unique<gpu::HeadlessContext>();
     try {  // before any work, at the scene's stars as the renderer's scenes say it
-      nebula::requireGpuFits(file.densitySize().z, file.scene.model.stars.size());
+      if (method != nebula::Method::LightDensity)
+        nebula::requireGpuFits(file.densitySize().z, file.scene.model.stars.size());
     } catch (const Error& e) {
       throw Error(fmt::format("{}: /nebula/stars: {}", o.scene.string(), e.what()));
     }

@@ -108,9 +108,6 @@ NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
   density.label = "nebula density";
   mDensity = gpu::Texture3D(density);
 
-  std::vector<const VoxelField*> depths;
-  for (const VoxelField& f : pre.starDepth) depths.push_back(&f);
-  mStarDepth = fieldTexture(d.nx, d.ny, d.nz, static_cast<int>(depths.size()), depths, "nebula star depths");
   mLightCoefficients = fieldTexture(d.nx, d.ny, d.nz, pre.lightCount, {&pre.lightCoefficients}, "nebula light coefficients");
   if (pre.lineZones.width > kMaxZones)
     throw Error(fmt::format("nebula: {} ionisation zones, the GPU march holds {}", pre.lineZones.width, kMaxZones));
@@ -129,6 +126,17 @@ NebulaGpuMarcher::NebulaGpuMarcher(const NebulaRenderer& renderer)
     for (Eigen::Index j = 0; j <= k; ++j) basisM[static_cast<std::size_t>(8 * k + j)] = static_cast<float>(pre.basis.m(k, j));
   mBasisMatrix = bufferOf(basisM, "nebula basis matrix");
   uploadFilters();
+}
+
+const gpu::Texture3D& NebulaGpuMarcher::starDepth() {
+  if (mStarDepth.id() != 0) return mStarDepth;
+  const NebulaPrecomputed& pre = mRenderer->precomputed();
+  const DensityGrid& d = pre.model.density;
+  requireGpuFits(d.nz, pre.starDepth.size());
+  std::vector<const VoxelField*> depths;
+  for (const VoxelField& f : pre.starDepth) depths.push_back(&f);
+  mStarDepth = fieldTexture(d.nx, d.ny, d.nz, static_cast<int>(depths.size()), depths, "nebula star depths");
+  return mStarDepth;
 }
 
 void NebulaGpuMarcher::uploadFilters() {
@@ -171,7 +179,11 @@ bool NebulaGpuMarcher::refilter(const NebulaRenderer& renderer) {
 }
 
 void requireGpuFits(int voxelsZ, std::size_t stars) {
-  requireSlabsFit(voxelsZ, static_cast<int>(stars), fmt::format("the optical depths of {} stars", stars));
+  try {
+    requireSlabsFit(voxelsZ, static_cast<int>(stars), fmt::format("the optical depths of {} stars", stars));
+  } catch (const Error& e) {
+    throw Error(std::string(e.what()) + "; light-density's march reads none of them");
+  }
 }
 
 void requireMomentsFit(std::size_t count, std::string_view what, int card, std::size_t pixels) {
@@ -329,7 +341,7 @@ void NebulaGpuMarcher::march(const RenderSettings& s, const MarchView& view) {
   setIfActive(p, "uBandLoUm", static_cast<float>(kBandLoUm));
   setIfActive(p, "uBandHiUm", static_cast<float>(kBandHiUm));
   mDensity.bind(0);
-  (light ? mLightCoefficients : mStarDepth).bind(1);
+  (light ? mLightCoefficients : starDepth()).bind(1);
   mZones.bind(3);
   mMomentLo.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
   mMomentHi.bindBase(GL_SHADER_STORAGE_BUFFER, 1);

@@ -48,9 +48,10 @@ struct MarchView {
 // The view of a nebula scene's own camera, as the CPU marcher builds its rays.
 MarchView marchView(const NebulaCamera& camera);
 
-// Error, before any precomputation (or the density's generation), when `stars` stars would not fit
-// this GPU (a current context's) over a density of `voxelsZ` along z: their optical depths stack
-// ⌈stars/4⌉ copies of the grid along a 3D texture's z.
+// Error, before any precomputation (or the density's generation), when the optical depths of
+// `stars` stars would not fit this GPU (a current context's) over a density of `voxelsZ` along z:
+// they stack ⌈stars/4⌉ copies of the grid along a 3D texture's z. Only where they are read:
+// every method but light-density, and the lighting of surfaces by the stars.
 void requireGpuFits(int voxelsZ, std::size_t stars);
 // Error when the march's per-pixel moments (`count` stars for projection, light functions for
 // light-density, each `card` elements, over `pixels`) outgrow what the shaders index: 2³¹ floats
@@ -89,8 +90,11 @@ class NebulaGpuMarcher {
   // image's size, row 0 at the bottom (shared/nebula_lighting.glsl).
   const gpu::Texture2D& opticalDepth() const { return mOpticalDepth; }
   // Each star's optical depth g_s (µm) per voxel, RGBA32F, star s in lane s % 4 of the z-slab s / 4
-  // (nebula_march.comp's uField for projection; a 1×1×1 zero texel without stars).
-  const gpu::Texture3D& starDepth() const { return mStarDepth; }
+  // (nebula_march.comp's uField for every method but light-density, and the lighting pass's where
+  // the stars light surfaces; a 1×1×1 zero texel without stars). Uploaded when first asked for, so
+  // that light-density, which reads none, marches any number of stars; Error (requireGpuFits)
+  // when they do not fit this GPU.
+  const gpu::Texture3D& starDepth();
   // march + finish.
   NebulaImage render(const RenderSettings& settings);
 

@@ -20,6 +20,24 @@ const NebulaSection& sectionOf(const Scene& scene) {
   return *s;
 }
 
+// Whether the GPU reads the stars' optical depths (NebulaGpuMarcher::starDepth): every march but
+// light-density's (the renderer's reference mode marches the reference), and the lighting pass
+// where the stars light surfaces.
+bool readsStarDepths(const NebulaSection& section, bool referenceMode) {
+  if (section.model.stars.empty()) return false;
+  return referenceMode || section.renderSettings().method != Method::LightDensity || section.lightSurfaces;
+}
+
+void requireStarDepthsFit(const Scene& scene, bool referenceMode) {
+  const NebulaSection& section = sectionOf(scene);
+  if (!readsStarDepths(section, referenceMode)) return;
+  try {
+    requireGpuFits(section.density->size().z, section.model.stars.size());
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: /nebula/stars: {}", scene.file.string(), e.what()));
+  }
+}
+
 // The last section's precomputation, shared by precompute() and the passes (a viewer's second
 // view, the bench's configurations): building it is the slow part (each star's optical depth per
 // voxel).
@@ -117,22 +135,17 @@ void NebulaPass::precompute(const Scene& scene, const TechniqueProgress& progres
     if (!warning.empty()) fmt::print(stderr, "prism: warning: {}: /nebula: {}\n", scene.file.string(), warning);
 }
 
-void NebulaPass::requireFits(const Scene& scene) {
-  const NebulaSection& section = sectionOf(scene);
-  try {
-    requireGpuFits(section.density->size().z, section.model.stars.size());
-  } catch (const Error& e) {
-    throw Error(fmt::format("{}: /nebula/stars: {}", scene.file.string(), e.what()));
-  }
-}
+void NebulaPass::requireFits(const Scene& scene) { requireStarDepthsFit(scene, false); }
 
 void NebulaPass::run(const TechniqueBlock&, const Scene& scene, const CameraTransform& camera,
                      const TechniqueFrame& frame) {
   const NebulaSection& section = sectionOf(scene);
   const std::string key = section.precomputationKey();
   bool refiltered = false;
+  // Every frame, before a precomputation made here: the method and the stars' light on surfaces
+  // change without one.
+  requireStarDepthsFit(scene, frame.referenceMode);
   if (!mRenderer || key != mPrecomputationKey) {
-    requireFits(scene);  // before a precomputation made here
     std::shared_ptr<const NebulaRenderer> renderer = precomputation(section, {});
     const std::string volumeKey = section.volumeKey();
     if (mMarcher && volumeKey == mVolumeKey) {  // other filters or passbands: the same volume uploaded
@@ -147,6 +160,8 @@ void NebulaPass::run(const TechniqueBlock&, const Scene& scene, const CameraTran
     mPrecomputationKey = key;
     mVolumeKey = volumeKey;
   }
+  mStarsLightSurfaces = section.lightSurfaces && !section.model.stars.empty();
+  if (mStarsLightSurfaces) mMarcher->starDepth();  // uploaded ahead of the lighting pass, which binds it
   RenderSettings settings = section.renderSettings();
   if (frame.referenceMode) {  // the renderer's ground truth: the nebula's own
     settings.method = Method::Reference;
@@ -176,7 +191,9 @@ void NebulaPass::run(const TechniqueBlock&, const Scene& scene, const CameraTran
 void NebulaPass::bindForLighting() const {
   if (!mMarcher) return;
   mMarcher->opticalDepth().bind(static_cast<GLuint>(shared::kNebulaOpticalDepthUnit));
-  mMarcher->starDepth().bind(static_cast<GLuint>(shared::kNebulaStarDepthUnit));
+  // Unbound where the stars light no surface: the lighting pass then reads no star's depth.
+  if (mStarsLightSurfaces) mMarcher->starDepth().bind(static_cast<GLuint>(shared::kNebulaStarDepthUnit));
+  else glBindTextureUnit(static_cast<GLuint>(shared::kNebulaStarDepthUnit), 0);
 }
 
 std::shared_ptr<const TechniqueTexels> NebulaPass::readTexels() const {

@@ -35,7 +35,9 @@ class NebulaPass final : public TechniquePass {
   // then takes instead of computing it again.
   static void precompute(const Scene& scene, const TechniqueProgress& progress);
   // The stars' optical depths in this GPU's 3D textures (requireTechniquesFit), named at
-  // /nebula/stars; run() checks it too, before a precomputation of its own.
+  // /nebula/stars, where they are read: every method but light-density, and where the stars light
+  // surfaces. run() checks it too at every frame (the renderer's reference mode marches the
+  // reference), before a precomputation of its own.
   static void requireFits(const Scene& scene);
   void run(const TechniqueBlock& block, const Scene& scene, const CameraTransform& camera,
            const TechniqueFrame& frame) override;
@@ -62,6 +64,7 @@ class NebulaPass final : public TechniquePass {
   MarchView mView;
   RenderSettings mSettings;
   int mMarches = 0;
+  bool mStarsLightSurfaces = false;  // the lighting pass reads the stars' depths (bindForLighting)
 };
 
 }  // namespace prism::nebula

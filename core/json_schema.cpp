@@ -49,10 +49,10 @@ TextPosition textPosition(std::string_view text, std::size_t offset) {
 namespace {
 
 // %g: "0", "90", "0.5", "1e-06": what a user would have typed.
-// Whole numbers below 1e9 in full (a range [1, 1048576], not [1, 1.04858e+06]), others as %g.
+// Whole numbers below 1e10 in full (a range [1, 1048576], not [1, 1.04858e+06]; int's limits), others as %g.
 std::string formatNumber(double v) {
   char buffer[32];
-  if (v == std::trunc(v) && std::abs(v) < 1e9) std::snprintf(buffer, sizeof buffer, "%.0f", v);
+  if (v == std::trunc(v) && std::abs(v) < 1e10) std::snprintf(buffer, sizeof buffer, "%.0f", v);
   else std::snprintf(buffer, sizeof buffer, "%g", v);
   return buffer;
 }
@@ -166,6 +166,14 @@ Range Range::forFloat() const {
   return r;
 }
 
+Range Range::forInt() const {
+  constexpr double kMin = std::numeric_limits<int>::min(), kMax = std::numeric_limits<int>::max();
+  Range r = *this;
+  if (!(r.min > kMin)) r = {kMin, r.max, false, r.maxExclusive};
+  if (!(r.max < kMax)) r = {r.min, kMax, r.minExclusive, false};
+  return r;
+}
+
 std::string Range::text() const {
   bool hasMin = std::isfinite(min), hasMax = std::isfinite(max);
   if (hasMin && hasMax)
@@ -245,11 +253,10 @@ double Node::number(const Range& range) const {
 }
 
 int Node::integer(const Range& range) const {
-  bool ok = mValue->is_number_integer() &&
-            mValue->get<double>() >= static_cast<double>(std::numeric_limits<int>::min()) &&
-            mValue->get<double>() <= static_cast<double>(std::numeric_limits<int>::max()) &&
-            range.contains(mValue->get<double>());
-  if (!ok) fail("expected an integer" + range.text() + ", got " + describe(*mValue));
+  // Within int's range too, said in the message (2147483648 read "expected an integer >= 0").
+  const Range r = range.forInt();
+  bool ok = mValue->is_number_integer() && r.contains(mValue->get<double>());
+  if (!ok) fail("expected an integer" + r.text() + ", got " + describe(*mValue));
   return mValue->get<int>();
 }
 

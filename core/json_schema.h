@@ -64,6 +64,8 @@ struct Range {
   std::string text() const;  // "" for any finite number
   // This range within ±kFloatInputLimit.
   Range forFloat() const;
+  // This range within int's.
+  Range forInt() const;
 };
 
 // What a number read as float (numberF, vec2, vec3) may reach in magnitude: a scene's lengths,

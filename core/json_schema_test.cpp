@@ -1,4 +1,5 @@
-// What a scene's numbers read as float (Node::numberF, vec2, vec3) must hold as floats.
+// What a scene's numbers read as float (Node::numberF, vec2, vec3) must hold as floats, and what
+// its integers (Node::integer) must hold as ints, said in the error.
 #include "core/json_schema.h"
 
 #include <gtest/gtest.h>
@@ -27,6 +28,26 @@ TEST(NumberAsFloat, IsInItsRangeOnceAFloat) {
   // A bound no float holds is compared as a float too: float(0.7) < 0.7, yet 0.7 is in [0.7, 1].
   EXPECT_EQ(errorOf(0.7, Range::closed(0.7, 1.0)), "read");
   EXPECT_EQ(errorOf(0.69, Range::closed(0.7, 1.0)), "scene.json: /x: expected a number in [0.7, 1], got 0.69");
+}
+
+std::string integerErrorOf(const nlohmann::json& value, const Range& range) {
+  const Document document{"scene.json", {}};
+  try {
+    return std::to_string(Node(value, "/x", document).integer(range));
+  } catch (const Error& e) {
+    return e.what();
+  }
+}
+
+TEST(Integer, IsInItsRangeAndInts) {
+  // A nebula's seed past int's range read "expected an integer >= 0, got 2147483648".
+  EXPECT_EQ(integerErrorOf(2147483648LL, Range::atLeast(0)),
+            "scene.json: /x: expected an integer in [0, 2147483647], got 2147483648");
+  EXPECT_EQ(integerErrorOf(2147483647LL, Range::atLeast(0)), "2147483647");
+  EXPECT_EQ(integerErrorOf(-1, Range::atLeast(0)), "scene.json: /x: expected an integer in [0, 2147483647], got -1");
+  EXPECT_EQ(integerErrorOf(-2147483648LL, Range::any()), "-2147483648");
+  EXPECT_EQ(integerErrorOf(17, Range::closed(1, 16)), "scene.json: /x: expected an integer in [1, 16], got 17");
+  EXPECT_EQ(integerErrorOf(1.5, Range::closed(1, 16)), "scene.json: /x: expected an integer in [1, 16], got 1.5");
 }
 
 }  // namespace

@@ -346,6 +346,11 @@ class Converter {
     } else {
       out.material = defaultMaterial();
     }
+    if (uvs.empty()) {  // a texture at one uv shows one texel's colour over the whole primitive
+      const Material& m = mScene.materials.at(static_cast<std::size_t>(out.material));
+      if (m.baseColourTexture >= 0 || m.metallicRoughnessTexture >= 0 || m.normalTexture >= 0 || m.spectralTexture)
+        fail(at + "/attributes", "no TEXCOORD_0, which material '" + m.name + "' needs for its textures");
+    }
     auto vertex = [&](std::uint32_t i) {
       Vertex v;
       v.position = glm::vec3(positions[i]);

@@ -173,6 +173,43 @@ TEST(GltfLoader, ATextureBeyondTheLargestSideIsRefusedAtItsImage) {
   }
 }
 
+// A textured material on a primitive without TEXCOORD_0 (the file's own or the scene's, by
+// placement) is refused at the primitive: it rendered with exit 0, every texture collapsed to the
+// colour of one texel (a new-user review: a ColorChecker of tiles as one brown square).
+TEST(GltfLoader, ATexturedMaterialNeedsTexCoords) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_no_uv";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(kGltfFixtures / "quad.gltf"));
+  gltf["meshes"][0]["primitives"][0]["attributes"].erase("TEXCOORD_0");
+  fs::copy_file(kGltfFixtures / "checker.png", dir / "checker.png");
+  std::ofstream(dir / "quad.gltf") << gltf.dump();
+  Scene scene;
+  EXPECT_EQ(errorOf([&] { appendGltf(dir / "quad.gltf", dir, {}, scene); }),
+            (dir / "quad.gltf").string() +
+                ": /meshes/0/primitives/0/attributes: no TEXCOORD_0, which material 'quad.gltf/tiles' needs for its textures");
+  // The scene's material in place of the file's: the same.
+  Scene placed;
+  Material painted;
+  painted.name = "painted";
+  painted.baseColourTexture = 0;
+  placed.materials.push_back(painted);
+  placed.textures.resize(1);
+  gltf["meshes"][0]["primitives"][0].erase("material");
+  gltf["materials"] = nlohmann::json::array();
+  gltf["textures"] = nlohmann::json::array();
+  gltf["images"] = nlohmann::json::array();
+  std::ofstream(dir / "quad.gltf") << gltf.dump();
+  GltfPlacement placement;
+  placement.materialOverride = 0;
+  EXPECT_EQ(errorOf([&] { appendGltf(dir / "quad.gltf", dir, placement, placed); }),
+            (dir / "quad.gltf").string() +
+                ": /meshes/0/primitives/0/attributes: no TEXCOORD_0, which material 'painted' needs for its textures");
+  // Untextured, no uv is needed: the file's second primitive has none.
+  placed.materials[0].baseColourTexture = -1;
+  EXPECT_NO_THROW(appendGltf(dir / "quad.gltf", dir, placement, placed));
+}
+
 // A buffer's byteLength is held to its data: URI as the loader decodes it, unpadded base64
 // included: 2 more characters are 1 more byte (a first count took them for none); any other
 // length is said at its pointer (tinygltf quoted the whole URI).

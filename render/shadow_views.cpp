@@ -16,13 +16,17 @@ glm::vec3 upFor(const glm::vec3& direction) {
 }
 
 // A perspective view's depth range from a light `distance` away from the centre of the scene's
-// bounding sphere: the sphere, from no nearer than 5 cm.
+// bounding sphere: the sphere, from no nearer than 5 cm, or than a hundredth of the range's far
+// end in a scene smaller than that makes 5 cm (what lies nearer the light casts no shadow: a
+// fixed 5 cm left a scene in centimetres without its point and spot lights' shadows). Scenes of
+// metres keep the 5 cm, so their shadows are as they were.
 struct DepthRange {
   float nearM, farM;
 };
 DepthRange depthRange(float distance, float radius) {
-  const float nearM = std::max(0.05f, distance - radius);
-  return {nearM, std::max(nearM * 2.0f, distance + radius)};
+  const float farM = distance + radius;
+  const float nearM = std::max(std::min(0.05f, 0.01f * farM), distance - radius);
+  return {nearM, std::max(nearM * 2.0f, farM)};
 }
 
 constexpr float kPerspectiveDepthBias = 5e-5f;  // in the map's [0, 1] depth

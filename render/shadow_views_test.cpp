@@ -1,7 +1,7 @@
 // Where the shadow maps look from (render/shadow_views.h) and the point lights' faces
 // (shaders/shared/shadow_filter.glsl), on the CPU: the faces are the views lookAt and perspective
-// would build, every direction lands inside its face with the PCF footprint's room, and a point
-// light takes six consecutive layers.
+// would build, every direction lands inside its face with the PCF footprint's room, a point
+// light takes six consecutive layers, and a scene's shadows do not depend on its unit of length.
 #include "render/shadow_views.h"
 
 #include <gtest/gtest.h>
@@ -92,6 +92,39 @@ TEST(ShadowViews, APointLightTakesSixConsecutiveLayers) {
   const glm::vec3 ball(0.0f, 0.5f, 0.0f);
   const ShadowView& seen = views[static_cast<std::size_t>(1 + shared::pointShadowFace(ball - point.position))];
   EXPECT_TRUE(shared::shadowFootprint(seen.viewProjection * glm::vec4(ball, 1.0f), 256).inside);
+}
+
+// A scene in centimetres (every length a hundredth) sees its surfaces in its point and spot
+// lights' maps where the scene in metres does: the cube, 2.5 cm from the lamp, was nearer than
+// the maps' fixed 5 cm near plane and cast no shadow (a new-user review).
+TEST(ShadowViews, AScenesShadowsDoNotDependOnItsUnitOfLength) {
+  auto scene = [](float unit) {
+    Scene s;
+    s.meshes.push_back(makeBox(glm::vec3(0.0f, 0.5f, 0.0f) * unit, glm::vec3(1.0f) * unit));
+    s.meshes.push_back(makePlane(glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec2(4.0f) * unit));
+    Light point;
+    point.type = LightType::Point;
+    point.position = glm::vec3(1.5f, 3.0f, 1.0f) * unit;
+    Light spot = point;
+    spot.type = LightType::Spot;
+    spot.direction = glm::normalize(glm::vec3(-1.5f, -2.5f, -1.0f));
+    s.lights = {point, spot};
+    return s;
+  };
+  const std::vector<ShadowView> metres = planShadowViews(scene(1.0f), 512), centimetres = planShadowViews(scene(0.01f), 512);
+  ASSERT_EQ(metres.size(), centimetres.size());
+  const glm::vec3 cubeTop(0.0f, 1.0f, 0.0f);
+  int seen = 0;
+  for (std::size_t i = 0; i < metres.size(); ++i) {
+    const glm::vec4 m = metres[i].viewProjection * glm::vec4(cubeTop, 1.0f);
+    const glm::vec4 c = centimetres[i].viewProjection * glm::vec4(0.01f * cubeTop, 1.0f);
+    if (!shared::shadowFootprint(m, 512).inside) continue;
+    ++seen;
+    EXPECT_TRUE(shared::shadowFootprint(c, 512).inside) << "view " << i;
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(c[k] / c.w, m[k] / m.w, 1e-4f) << "view " << i << ", axis " << k;
+    EXPECT_NEAR(centimetres[i].normalOffsetM, 0.01f * metres[i].normalOffsetM, 1e-4f * metres[i].normalOffsetM);
+  }
+  EXPECT_EQ(seen, 2);  // the point light's face towards it, and the spot
 }
 
 }  // namespace

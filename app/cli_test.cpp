@@ -645,6 +645,27 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
                     (dir / "backlit.exr").string());
   ASSERT_EQ(deep.exitCode, 0) << deep.err;
   EXPECT_EQ(deep.err.find("warning"), std::string::npos) << deep.err;
+  // `nebula sweep` says it too, and takes the deeper basis (it printed 1779 % … 68.6 % with no word).
+  Result sweepShallow = run("nebula sweep " + backlit + " --steps 120 --max-basis 2");
+  ASSERT_EQ(sweepShallow.exitCode, 0) << sweepShallow.err;
+  EXPECT_NE(sweepShallow.err.find("prism: warning: up to 100 % of a pixel's star light reaches the camera through more "
+                                  "dust than the basis is fitted for"), std::string::npos) << sweepShallow.err;
+  EXPECT_NE(sweepShallow.err.find("--max-basis 6"), std::string::npos) << sweepShallow.err;
+  Result sweepDeep = run("nebula sweep " + backlit + " --steps 120 --max-basis 2 --basis-depth 16");
+  ASSERT_EQ(sweepDeep.exitCode, 0) << sweepDeep.err;
+  EXPECT_EQ(sweepDeep.err.find("warning"), std::string::npos) << sweepDeep.err;
+  expectOneLineError("nebula sweep " + backlit + " --basis-depth 0", "--basis-depth: 0 is not within (0, 16] µm");
+  // A camera looking away from the cube, a nebula that gives no light: black images, said.
+  std::ofstream(dir / "away.json") << R"({"nebula": {"density": {"noise": {"resolution": 16}}, "emission": 0,
+    "stars": [{"position": [0.5, 0.5, 0.5], "temperature": 9000, "luminosity": 0}],
+    "camera": {"position": [0.5, 0.5, -1], "target": [0.5, 0.5, -2], "width": 8, "height": 8}}})";
+  Result away = run("nebula render " + (dir / "away.json").string() + " -o " + (dir / "away.exr").string());
+  ASSERT_EQ(away.exitCode, 0) << away.err;
+  EXPECT_NE(away.err.find("prism: warning: the camera looks away from the nebula, so its image is black"),
+            std::string::npos) << away.err;
+  EXPECT_NE(away.err.find("prism: warning: the nebula gives no light, it only dims what lies behind it (its own image "
+                          "is black): no star of luminosity above 0 to scatter the light of, and emission 0"),
+            std::string::npos) << away.err;
   // A scene's passband edit that --filters' other set cannot take: said before the work, naming both.
   std::ofstream(dir / "edited.json") << R"({"nebula": {"density": {"noise": {"resolution": 8}}, "stars": [],
     "filters": "cie1931", "passbands": [{"shift_nm": 120}, {}, {}]}})";

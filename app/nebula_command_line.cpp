@@ -41,6 +41,8 @@ void addNebulaCommands(CLI::App& app) {
   nebSweepCmd->add_option("--filters", o->sweep.filters, "hubble or cie1931 (default: the scene's)");
   nebSweepCmd->add_option("--steps", o->sweep.steps, "ray steps (default: the scene's)");
   nebSweepCmd->add_option("--max-basis", o->sweep.maxBasis, "largest basis (1..6)")->capture_default_str();
+  nebSweepCmd->add_option("--basis-depth", o->sweep.basisDepthUm,
+                          "the optical depth (µm) the basis is fitted up to (0..16, default 2)");
   nebSweepCmd->add_option("--size", o->sweep.size, "the camera's longer side in pixels (default: the scene's)");
   nebSweepCmd->add_flag("--no-lines", o->sweep.noLines, "leave out the emission lines");
   nebSweepCmd->add_flag("--json", o->sweep.json, "JSON output");

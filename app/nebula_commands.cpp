@@ -135,14 +135,40 @@ void runNebulaBasis(const NebulaBasisOptions& o) {
   }
 }
 
+namespace {
+
+// Error unless an asked basis depth is within (0, kMaxBasisDepthUm].
+void requireBasisDepth(const std::optional<double>& basisDepthUm) {
+  if (basisDepthUm && !(*basisDepthUm > 0.0 && *basisDepthUm <= nebula::kMaxBasisDepthUm))
+    throw Error(fmt::format("--basis-depth: {:g} is not within (0, {:g}] µm", *basisDepthUm, nebula::kMaxBasisDepthUm));
+}
+
+// On stderr, what the scene's grid, light and view, and the march and basis of `s`, would get wrong
+// or leave black (nebula_density.h, nebula_render.h, nebula_basis_coverage.h); `deeperBasisFormat`
+// names the options that fit a deeper basis.
+void printWarnings(const nebula::NebulaRenderer& renderer, const nebula::BasisCoverage& coverage,
+                   const nebula::RenderSettings& s, std::string_view deeperBasisFormat) {
+  for (const std::string& warning : {nebula::coarseGridWarning(renderer.model().density),
+                                     nebula::emptyGridWarning(renderer.model().density),
+                                     nebula::unlitLinesWarning(renderer.model()), nebula::darkNebulaWarning(renderer),
+                                     nebula::outOfViewWarning(coverage),
+                                     nebula::stepThicknessWarning(coverage, s, "--steps {:.0f}"),
+                                     nebula::basisCoverageWarning(coverage, s, deeperBasisFormat)})
+    if (!warning.empty()) fmt::print(stderr, "prism: warning: {}\n", warning);
+}
+
+}  // namespace
+
 void runNebulaSweep(const NebulaSweepOptions& o) {
   requireWithin("--max-basis", o.maxBasis, 1, nebula::kMaxBasisSize);
   requireWithin("--size", o.size, 1, 4096);
   requireWithin("--steps", o.steps, 1, nebula::kMaxSteps);
   requirePlotFile(o.plotFile);
   requireOtherFile(o.plotFile, o.scene, "the scene file");
+  requireBasisDepth(o.basisDepthUm);
   nebula::RenderSettings s;
   s.steps = o.steps.value_or(s.steps);
+  s.basisMaxDepthUm = o.basisDepthUm.value_or(s.basisMaxDepthUm);
   nebula::validate(s);
   requireFilterSet(o.filters);
   nebula::NebulaSceneFile file = nebula::readNebulaScene(o.scene);
@@ -168,6 +194,11 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
       s.basisSize = n;
       nebula::NebulaRenderer renderer(scene.model, s);
       if (n == 1) {
+        // What `nebula render` says of the scene, before the sweep's renders: a sweep whose every
+        // size missed by far (thick dust beyond the basis's depth) said nothing of why.
+        s.method = nebula::Method::Projection;
+        const nebula::BasisCoverage coverage = nebula::basisCoverage(renderer, s, renderer.model().camera);
+        printWarnings(renderer, coverage, s, "--basis-depth {:.0f} --max-basis 6");
         s.method = nebula::Method::Reference;
         reference = renderer.render(s, progress);
         before += rows;
@@ -238,8 +269,7 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   nebula::Method method = nebula::methodFromName(o.method);
   requireWithin("--steps", o.steps, 1, nebula::kMaxSteps);
   requireWithin("--basis", o.basisSize, 1, nebula::kMaxBasisSize);
-  if (o.basisDepthUm && !(*o.basisDepthUm > 0.0 && *o.basisDepthUm <= nebula::kMaxBasisDepthUm))
-    throw Error(fmt::format("--basis-depth: {:g} is not within (0, {:g}] µm", *o.basisDepthUm, nebula::kMaxBasisDepthUm));
+  requireBasisDepth(o.basisDepthUm);
   requireWithin("--light-basis", o.lightBasisSize, 1, nebula::kMaxLightBasisSize);
   requireWithin("--reference-intervals", o.referenceIntervals, 2, nebula::kMaxReferenceIntervals);
   if (o.referenceIntervals && *o.referenceIntervals % 2 != 0)
@@ -307,12 +337,7 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   nebula::NebulaRenderer renderer(std::move(scene.model), s, [&bar](std::size_t d, std::size_t n) { bar.update(d, n); });
   auto t1 = std::chrono::steady_clock::now();
   const nebula::BasisCoverage coverage = nebula::basisCoverage(renderer, s, renderer.model().camera);
-  for (const std::string& warning : {nebula::coarseGridWarning(renderer.model().density),
-                                     nebula::emptyGridWarning(renderer.model().density),
-                                     nebula::unlitLinesWarning(renderer.model()),
-                                     nebula::stepThicknessWarning(coverage, s, "--steps {:.0f}"),
-                                     nebula::basisCoverageWarning(coverage, s, "--basis-depth {:.0f} --basis 6")})
-    if (!warning.empty()) fmt::print(stderr, "prism: warning: {}\n", warning);
+  printWarnings(renderer, coverage, s, "--basis-depth {:.0f} --basis 6");
   nebula::NebulaImage image;
   if (o.gpu) {
     nebula::NebulaGpuMarcher marcher(renderer);

@@ -31,6 +31,7 @@ struct NebulaSweepOptions {
   std::string filters;           // empty: the scene's
   std::optional<int> steps;      // unset: the scene's
   int maxBasis = 5;
+  std::optional<double> basisDepthUm;  // the basis's family g ≤ this; unset: RenderSettings' default
   std::optional<int> size;       // the camera's longer side, in pixels (the aspect kept); unset: the scene's
   bool noLines = false;
   bool json = false;

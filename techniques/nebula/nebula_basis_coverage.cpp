@@ -32,7 +32,9 @@ BasisCoverage basisCoverage(const NebulaRenderer& renderer, const RenderSettings
       const glm::dvec3 dir = glm::normalize(frame.forward + u * frame.right + v * frame.up);
       double t0 = 0.0, t1 = 0.0, light = 0.0, far = 0.0;
       samples.clear();
+      ++coverage.rays;
       if (shared::f64::nebulaClipToCube(cam.position, dir, 1e30, t0, t1)) {
+        ++coverage.raysMeetingCube;
         const double dt = (t1 - t0) / s.steps;
         double gCam = 0.0;
         for (int i = 0; i < s.steps && !shared::f64::nebulaRayOpaque(gCam); ++i) {
@@ -73,6 +75,13 @@ BasisCoverage basisCoverage(const NebulaRenderer& renderer, const RenderSettings
       coverage.lightDepthUm = std::max(coverage.lightDepthUm, depth[r]);
     }
   return coverage;
+}
+
+std::string outOfViewWarning(const BasisCoverage& coverage) {
+  if (coverage.rays == 0 || coverage.raysMeetingCube > 0) return "";
+  return fmt::format("the camera looks away from the nebula, so its image is black: none of {} rays spread over the "
+                     "image meets the nebula's cube (see the camera's position and target)",
+                     coverage.rays);
 }
 
 std::string basisCoverageWarning(const BasisCoverage& coverage, const RenderSettings& s, std::string_view deeperBasisFormat) {

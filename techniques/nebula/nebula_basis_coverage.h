@@ -23,6 +23,9 @@ struct BasisCoverage {
   // Every method: the largest optical depth of one step at 380 nm, over the steps the camera still
   // sees (less than τ = 5 in front of them).
   double thickestStep = 0.0;
+  // Every method: the rays sampled, and how many of them meet the cube.
+  int rays = 0;
+  int raysMeetingCube = 0;
 };
 
 // Over at most rays × rays of `camera`'s pixels (evenly spread; in the cube's units), marched as settings
@@ -46,5 +49,9 @@ std::string basisCoverageWarning(const BasisCoverage& coverage, const RenderSett
 // within 0.5. `moreStepsFormat` names the way to ask for it ("--steps {}", or the scene's key).
 std::string stepThicknessWarning(const BasisCoverage& coverage, const RenderSettings& settings,
                                  std::string_view moreStepsFormat);
+
+// One line for stderr when none of the sampled rays meets the nebula's cube ("" otherwise): the
+// camera looks away from it (a new-user review's image came out black with no word).
+std::string outOfViewWarning(const BasisCoverage& coverage);
 
 }  // namespace prism::nebula

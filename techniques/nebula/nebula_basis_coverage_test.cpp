@@ -97,5 +97,28 @@ TEST(NebulaBasisCoverage, StepsTooThickForTheCloudAreSaid) {
   EXPECT_EQ(stepThicknessWarning(basisCoverage(renderer, thin, renderer.model().camera), thin, "--steps {:.0f}"), "");
 }
 
+// A camera that looks away from the cube: every ray misses it, said (the image came out black
+// with no word); looking at it, nothing is said.
+TEST(NebulaBasisCoverage, ACameraLookingAwayFromTheCubeIsSaid) {
+  NebulaModel m = smallCloud("cie1931", 1);
+  m.camera.position = {0.5, 0.5, -1.0};
+  m.camera.target = {0.5, 0.5, 0.5};
+  const RenderSettings s = projection(4, 2.0);
+  const NebulaRenderer renderer(NebulaModel(m), s);
+  const BasisCoverage towards = basisCoverage(renderer, s, m.camera);
+  EXPECT_EQ(towards.rays, 32 * 32);
+  EXPECT_GT(towards.raysMeetingCube, 0);
+  EXPECT_EQ(outOfViewWarning(towards), "");
+  m.camera.target = {0.5, 0.5, -2.0};
+  const BasisCoverage away = basisCoverage(renderer, s, m.camera);
+  EXPECT_EQ(away.raysMeetingCube, 0);
+  EXPECT_EQ(outOfViewWarning(away), "the camera looks away from the nebula, so its image is black: none of 1024 rays "
+                                    "spread over the image meets the nebula's cube (see the camera's position and target)");
+  double y = 0.0;
+  NebulaModel awayModel = m;
+  for (const glm::vec3& p : NebulaRenderer(std::move(awayModel), s).render(s).pixels) y += p.y;
+  EXPECT_EQ(y, 0.0) << "what the warning says";
+}
+
 }  // namespace
 }  // namespace prism::nebula

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -38,7 +39,13 @@ std::string coarseGridWarning(const DensityGrid& grid) {
 }
 
 std::string emptyGridWarning(const DensityGrid& grid) {
-  if (std::any_of(grid.values.begin(), grid.values.end(), [](float v) { return v > 0.0f; })) return "";
+  const float largest = grid.values.empty() ? 0.0f : *std::max_element(grid.values.begin(), grid.values.end());
+  if (largest >= std::numeric_limits<float>::min()) return "";
+  if (largest > 0.0f)
+    return fmt::format("the density is below float's smallest normal number ({:.3g}) in every voxel, the largest {:.3g}, "
+                       "so the nebula neither glows nor dims what lies behind it: a file written big-endian? Density "
+                       "files hold little-endian float32",
+                       std::numeric_limits<float>::min(), largest);
   return "the density is 0 in every voxel, so the nebula neither glows nor dims what lies behind it (noise: a bias "
          "below about −amplitude empties the cube)";
 }

@@ -50,7 +50,8 @@ struct DensityGrid {
 inline constexpr int kFineGridVoxels = 16;
 std::string coarseGridWarning(const DensityGrid& grid);
 // Empty, or that the grid holds no density anywhere (noise whose bias is below about −amplitude, a
-// file of zeros): a valid nebula that renders nothing, which a user would not expect unannounced.
+// file of zeros) or none above float's subnormals (1.0 written big-endian reads 4.6e-41): a valid
+// nebula that renders nothing, which a user would not expect unannounced.
 std::string emptyGridWarning(const DensityGrid& grid);
 
 // fBm over Perlin's improved noise (Perlin 2002): Σ_{o<octaves} gainᵒ·noise(frequency·2ᵒ·p),

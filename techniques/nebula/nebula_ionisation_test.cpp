@@ -156,5 +156,41 @@ TEST(NebulaIonisation, ZonesWithoutAShiningStarWarnThatNoLineGlows) {
   EXPECT_EQ(unlitLinesWarning(m), "") << "no emission";
 }
 
+// A nebula that gives no light at all (a new-user review rendered each of these black, with no
+// word): nothing to scatter and nothing that glows within the filters, each cause named; not said
+// where unlitLinesWarning speaks, nor where anything gives light.
+TEST(NebulaIonisation, ANebulaThatGivesNoLightIsSaid) {
+  const RenderSettings s;
+  auto warning = [&s](NebulaModel m) {
+    m.camera.width = m.camera.height = 4;
+    NoiseParameters small;
+    small.resolution = 16;
+    m.density = generateFbm(small, 1);
+    const NebulaRenderer renderer(std::move(m), s);
+    return darkNebulaWarning(renderer);
+  };
+  NebulaModel m = benchNebulaModel(1);
+  m.emission = 0.0;
+  EXPECT_EQ(warning(m), "");
+  const std::string black = "the nebula gives no light, it only dims what lies behind it (its own image is black): ";
+  m.stars[0].luminosity = 0.0;
+  EXPECT_EQ(warning(m), black + "no star of luminosity above 0 to scatter the light of, and emission 0");
+  m.stars[0].luminosity = 1.0;
+  m.scattering = 0.0;
+  m.emission = 0.01;
+  m.lineGroups = {{"H I Balmer (case B)", 0.0}};
+  EXPECT_EQ(warning(m), black + "scattering 0, which scatters no star's light, and no emission line of strength above 0");
+  m.stars.clear();
+  m.filters = "cie1931";
+  m.lineGroups = {{"[O II] doublet", 1.0}};  // 372.6 and 372.9 nm, where no CIE 1931 curve is fitted
+  EXPECT_EQ(warning(m), black + "no star to scatter the light of, and emission lines only outside every passband of the "
+                                "cie1931 filters");
+  m.lineGroups = {{"H I Balmer (case B)", 1.0}};
+  EXPECT_EQ(warning(m), "") << "the Balmer lines glow within the CIE curves";
+  m.lineGroups = {{"[O II] doublet", 1.0}};
+  m.ionisation = IonisationModel{};
+  EXPECT_EQ(warning(m), "") << "unlitLinesWarning says it";
+}
+
 }  // namespace
 }  // namespace prism::nebula

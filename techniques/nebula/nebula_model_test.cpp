@@ -2,8 +2,11 @@
 // format's errors, the noise's determinism, the greedy basis on the paper's domain.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "core/data_files.h"
@@ -170,6 +173,15 @@ TEST(NebulaDensity, AnEmptyGridIsWarnedOf) {
   EXPECT_EQ(emptyGridWarning(generateFbm(p, 1)), "");
   p.bias = -5.0;
   EXPECT_NE(emptyGridWarning(generateFbm(p, 1)).find("the density is 0 in every voxel"), std::string::npos);
+  // 1.0 written big-endian reads 4.6e-41, a subnormal float: said too (it rendered black).
+  DensityGrid swapped = generateFbm(p, 1);
+  std::fill(swapped.values.begin(), swapped.values.end(), std::bit_cast<float>(0x0000803fu));
+  EXPECT_EQ(emptyGridWarning(swapped),
+            "the density is below float's smallest normal number (1.18e-38) in every voxel, the largest 4.6e-41, so the "
+            "nebula neither glows nor dims what lies behind it: a file written big-endian? Density files hold "
+            "little-endian float32");
+  swapped.values[3] = std::numeric_limits<float>::min();
+  EXPECT_EQ(emptyGridWarning(swapped), "");
 }
 
 TEST(NebulaDensity, FileRoundTrips) {

@@ -180,6 +180,12 @@ class NebulaRenderer {
   std::unique_ptr<NebulaPrecomputed> mPre;
 };
 
+// Empty, or why the nebula gives no light at all and its image comes out black: no star light to
+// scatter (no star, none of luminosity above 0, or scattering 0) and no line to glow (emission 0,
+// no line of strength above 0, or lines only outside every filter's passband). A valid model; a
+// new-user review rendered such ones black with no word. Says nothing where unlitLinesWarning does.
+std::string darkNebulaWarning(const NebulaRenderer& renderer);
+
 // Per channel, over pixels whose reference value is at least `floorOfMax` × that channel's
 // maximum: the largest |image − reference| / reference; infinite where either image has a pixel
 // that is not finite (anywhere, not only over the floor).

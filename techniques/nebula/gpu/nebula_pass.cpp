@@ -130,6 +130,7 @@ void NebulaPass::precompute(const Scene& scene, const TechniqueProgress& progres
   const BasisCoverage coverage = basisCoverage(*renderer, settings, camera);
   for (const std::string& warning : {coarseGridWarning(renderer->model().density),
                                      emptyGridWarning(renderer->model().density), unlitLinesWarning(renderer->model()),
+                                     darkNebulaWarning(*renderer),
                                      stepThicknessWarning(coverage, settings, "\"steps\": {:.0f}"),
                                      basisCoverageWarning(coverage, settings, "\"basis_depth\": {:.0f} and \"basis\": 6")})
     if (!warning.empty()) fmt::print(stderr, "prism: warning: {}: /nebula: {}\n", scene.file.string(), warning);

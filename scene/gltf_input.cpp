@@ -163,6 +163,21 @@ std::string decodeUri(const std::string& uri) {
   return out;
 }
 
+// Empty, or what is wrong with the URI's %-escapes (RFC 3986 §2.1: '%' and two hex digits): a
+// raw '%' ("100%.png") decoded with the next two characters as hex, here a NUL, and the file
+// searched was "100"; and a %00, a NUL in a path.
+std::string badEscape(const std::string& uri) {
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] != '%') continue;
+    if (i + 2 >= uri.size() || !std::isxdigit(static_cast<unsigned char>(uri[i + 1])) ||
+        !std::isxdigit(static_cast<unsigned char>(uri[i + 2])))
+      return "a '%' not followed by two hex digits (a URI writes '%' as %25)";
+    if (uri[i + 1] == '0' && uri[i + 2] == '0') return "%00, a NUL character, in a path";
+    i += 2;
+  }
+  return "";
+}
+
 // RFC 3986 §3.1: scheme = ALPHA *( ALPHA / DIGIT / "+" / "-" / "." ) followed by ':'.
 bool hasScheme(const std::string& uri) {
   std::size_t colon = uri.find(':');
@@ -327,6 +342,7 @@ void checkUris(const Node& top, const fs::path& root, const fs::path& base) {
       }
       if (hasScheme(uri))
         uriNode->fail("'" + uri + "': only relative paths and data: URIs are allowed");
+      if (const std::string bad = badEscape(uri); !bad.empty()) uriNode->fail("'" + uri + "': " + bad);
       fs::path path;
       try {
         path = schema::confinedFile(root, base, decodeUri(uri));
@@ -403,6 +419,10 @@ tinygltf::Model loadGltfModel(const fs::path& file, const fs::path& root, std::v
   bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (!binary && lowercaseExtension(file) == ".glb")  // read as JSON, it was "malformed JSON"
     throw Error(name + ": not a binary glTF (it does not start with \"glTF\")");
+  // glTF 2.0 §3.2 (JSON without a byte-order mark; tinygltf refuses one): said as such, not as
+  // "not a glTF".
+  if (!binary && bytes.size() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF)
+    throw Error(name + ": starts with a UTF-8 byte-order mark, which glTF's JSON must not have (save it without one)");
   // Neither JSON's object nor a binary glTF: an image or another file named in its place.
   const auto first = std::find_if(bytes.begin(), bytes.end(), [](unsigned char c) { return !std::isspace(c); });
   if (!binary && (first == bytes.end() || *first != '{'))

@@ -68,6 +68,7 @@ class Converter {
       fail(pointer + "/texCoord", "only TEXCOORD_0 is supported, got " + std::to_string(info.texCoord));
     const tinygltf::Texture& tex = item(mModel.textures, info.index, "texture", pointer + "/index");
     std::string texturePointer = "/textures/" + std::to_string(info.index);
+    if (tex.source < 0) fail(texturePointer, "no \"source\": the texture names no image");
     const tinygltf::Image& src = item(mModel.images, tex.source, "image", texturePointer + "/source");
     auto key = std::make_pair(tex.source, srgb);
     if (auto it = mTextures.find(key); it != mTextures.end()) return it->second;

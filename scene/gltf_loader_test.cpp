@@ -210,6 +210,35 @@ TEST(GltfLoader, ATexturedMaterialNeedsTexCoords) {
   EXPECT_NO_THROW(appendGltf(dir / "quad.gltf", dir, placement, placed));
 }
 
+// A texture without a source (glTF allows it, for extensions Prism does not read) is said so; it
+// read "no image -1 (the file has 1)".
+TEST(GltfLoader, ATextureWithoutASourceIsSaidSo) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_no_source";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(kGltfFixtures / "quad.gltf"));
+  gltf["textures"][0] = nlohmann::json::object();
+  std::ofstream(dir / "quad.gltf") << gltf.dump();
+  fs::copy_file(kGltfFixtures / "checker.png", dir / "checker.png");
+  Scene scene;
+  EXPECT_EQ(errorOf([&] { appendGltf(dir / "quad.gltf", dir, {}, scene); }),
+            (dir / "quad.gltf").string() + ": /textures/0: no \"source\": the texture names no image");
+}
+
+// A .gltf saved with a UTF-8 byte-order mark, which glTF forbids: said as such (it read "not a
+// glTF (a .gltf is a JSON object …)").
+TEST(GltfLoader, AByteOrderMarkIsSaidSo) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_bom";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ifstream in(kGltfFixtures / "quad.gltf");
+  std::ofstream(dir / "quad.gltf") << "\xEF\xBB\xBF" << in.rdbuf();
+  Scene scene;
+  EXPECT_EQ(errorOf([&] { appendGltf(dir / "quad.gltf", dir, {}, scene); }),
+            (dir / "quad.gltf").string() +
+                ": starts with a UTF-8 byte-order mark, which glTF's JSON must not have (save it without one)");
+}
+
 // A buffer's byteLength is held to its data: URI as the loader decodes it, unpadded base64
 // included: 2 more characters are 1 more byte (a first count took them for none); any other
 // length is said at its pointer (tinygltf quoted the whole URI).

@@ -354,6 +354,18 @@ TEST_F(SceneFolder, GltfUrisMustStayInsideTheSceneFolder) {
                 ": /buffers/0/uri: 'file:///etc/hostname': only relative paths and data: URIs are allowed");
   f = withUri("%2E%2E/outside.bin");  // percent-encoded ".."
   EXPECT_TRUE(contains(errorOf([&] { loadScene(f); }), ": /buffers/0/uri: '..' is not allowed"));
+  // A raw '%' decoded with the two characters after it as hex: "100%.bin" searched "100" (a
+  // new-user review); %00, a NUL, ends a path as early.
+  write("models/100%.bin", std::string(12, '\0'));
+  f = withUri("100%.bin");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }),
+            f.string() + ": /objects/0/gltf: " + model.string() +
+                ": /buffers/0/uri: '100%.bin': a '%' not followed by two hex digits (a URI writes '%' as %25)");
+  f = withUri("100%25.bin");
+  EXPECT_NO_THROW(loadScene(f));
+  f = withUri("a%00.bin");
+  EXPECT_EQ(errorOf([&] { loadScene(f); }), f.string() + ": /objects/0/gltf: " + model.string() +
+                                                ": /buffers/0/uri: 'a%00.bin': %00, a NUL character, in a path");
   f = withUri("missing.bin");
   EXPECT_EQ(errorOf([&] { loadScene(f); }),
             f.string() + ": /objects/0/gltf: " + model.string() +

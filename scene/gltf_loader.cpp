@@ -182,7 +182,15 @@ class Converter {
     const tinygltf::Node& node = item(mModel.nodes, index, "node", from);
     std::string at = "/nodes/" + std::to_string(index);
     if (mOnPath.size() < mModel.nodes.size()) mOnPath.resize(mModel.nodes.size(), false);
+    if (mReachedFrom.size() < mModel.nodes.size()) mReachedFrom.resize(mModel.nodes.size());
     if (mOnPath[static_cast<std::size_t>(index)]) fail(at, "the node is its own ancestor");
+    // glTF 2.0 §3.5: disjoint trees, a node with one parent at most, a scene listing roots only. A
+    // node reached twice (two parents, a root listed twice or also a child) drew its meshes twice.
+    std::string& first = mReachedFrom[static_cast<std::size_t>(index)];
+    if (!first.empty())
+      fail(from, "node " + std::to_string(index) + " again, already reached from " + first +
+                     " (a glTF node has one parent at most, and a scene lists root nodes only)");
+    first = from;
     mOnPath[static_cast<std::size_t>(index)] = true;
     glm::mat4 world = parent * localMatrix(node, at);
     // A zero scale (a node hidden by its transform) draws nothing: skipped with what hangs below
@@ -393,6 +401,7 @@ class Converter {
   std::map<std::pair<int, bool>, int> mTextures;  // (glTF image, sRGB) → Scene::textures
   int mDefaultMaterial = -1;
   std::vector<bool> mOnPath;
+  std::vector<std::string> mReachedFrom;  // per node, the pointer it was first reached from
 };
 
 }  // namespace

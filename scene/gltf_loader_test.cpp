@@ -239,6 +239,42 @@ TEST(GltfLoader, AByteOrderMarkIsSaidSo) {
                 ": starts with a UTF-8 byte-order mark, which glTF's JSON must not have (save it without one)");
 }
 
+// glTF's node hierarchy is disjoint trees (§3.5): a node reached twice — two parents, a scene's
+// root listed twice or also a child — is refused where it is reached again (each drew its meshes
+// twice on top of each other, exit 0; a new-user review).
+TEST(GltfLoader, ANodeReachedTwiceIsRefused) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_reached_twice";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(kGltfFixtures / "checker.png", dir / "checker.png");
+  const nlohmann::json quad = nlohmann::json::parse(std::ifstream(kGltfFixtures / "quad.gltf"));
+  auto errorWith = [&](const std::function<void(nlohmann::json&)>& edit) {
+    nlohmann::json gltf = quad;
+    edit(gltf);
+    std::ofstream(dir / "quad.gltf") << gltf.dump();
+    Scene scene;
+    return errorOf([&] { appendGltf(dir / "quad.gltf", dir, {}, scene); });
+  };
+  const std::string file = (dir / "quad.gltf").string();
+  EXPECT_EQ(errorWith([](nlohmann::json& g) { g["scenes"][0]["nodes"] = {0, 0}; }),
+            file + ": /scenes/0/nodes/1: node 0 again, already reached from /scenes/0/nodes/0 (a glTF node has one "
+                   "parent at most, and a scene lists root nodes only)");
+  EXPECT_EQ(errorWith([](nlohmann::json& g) { g["scenes"][0]["nodes"] = {0, 1}; }),
+            file + ": /scenes/0/nodes/1: node 1 again, already reached from /nodes/0/children/0 (a glTF node has one "
+                   "parent at most, and a scene lists root nodes only)");
+  EXPECT_EQ(errorWith([](nlohmann::json& g) {
+              g["nodes"].push_back({{"name", "second parent"}, {"children", {1}}});
+              g["scenes"][0]["nodes"] = {0, 2};
+            }),
+            file + ": /nodes/2/children/0: node 1 again, already reached from /nodes/0/children/0 (a glTF node has one "
+                   "parent at most, and a scene lists root nodes only)");
+  EXPECT_EQ(errorWith([](nlohmann::json& g) { g["nodes"][1]["children"] = {0}; }),
+            file + ": /nodes/0: the node is its own ancestor");
+  std::ofstream(dir / "quad.gltf") << quad.dump();
+  Scene scene;
+  EXPECT_NO_THROW(appendGltf(dir / "quad.gltf", dir, {}, scene));
+}
+
 // A buffer's byteLength is held to its data: URI as the loader decodes it, unpadded base64
 // included: 2 more characters are 1 more byte (a first count took them for none); any other
 // length is said at its pointer (tinygltf quoted the whole URI).

@@ -73,7 +73,9 @@ class Converter {
     auto key = std::make_pair(tex.source, srgb);
     if (auto it = mTextures.find(key); it != mTextures.end()) return it->second;
     std::string imagePointer = "/images/" + std::to_string(tex.source);
-    if (src.image.empty()) fail(imagePointer, "the image could not be loaded");
+    if (src.image.empty())
+      fail(imagePointer, src.uri.empty() ? std::string("the image could not be loaded")
+                                         : "the image '" + src.uri + "' could not be loaded");
     Image image;
     try {
       image = toImage(src, srgb, mName + " " + imagePointer);

@@ -239,6 +239,20 @@ TEST(GltfLoader, AByteOrderMarkIsSaidSo) {
                 ": starts with a UTF-8 byte-order mark, which glTF's JSON must not have (save it without one)");
 }
 
+// An image file that decodes to nothing (empty) is named in the error, not only its pointer.
+TEST(GltfLoader, AnImageThatCannotBeLoadedIsNamed) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_empty_image";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(kGltfFixtures / "quad.gltf"));
+  gltf["images"][0] = {{"uri", "empty.png"}};
+  std::ofstream(dir / "quad.gltf") << gltf.dump();
+  std::ofstream(dir / "empty.png").close();
+  Scene scene;
+  EXPECT_EQ(errorOf([&] { appendGltf(dir / "quad.gltf", dir, {}, scene); }),
+            (dir / "quad.gltf").string() + ": /images/0: the image 'empty.png' could not be loaded");
+}
+
 // glTF's node hierarchy is disjoint trees (§3.5): a node reached twice — two parents, a scene's
 // root listed twice or also a child — is refused where it is reached again (each drew its meshes
 // twice on top of each other, exit 0; a new-user review).

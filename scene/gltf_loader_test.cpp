@@ -53,18 +53,21 @@ TEST(GltfLoader, NodeTransformsApplyToPositionsNormalsAndTangents) {
   EXPECT_EQ(quad.vertices[3].uv, glm::vec2(0.0f, 0.0f));
 }
 
-// quad.gltf with one node edited, written beside the fixtures' copy in a scratch folder.
+// quad.gltf edited, written with its checker.png into a fresh folder `name` under the test's
+// temporary one: the edited file.
 fs::path editedQuad(const std::string& name, const std::function<void(nlohmann::json&)>& edit) {
-  std::ifstream in(kGltfFixtures / "quad.gltf");
-  nlohmann::json gltf = nlohmann::json::parse(in);
+  const fs::path dir = fs::path(::testing::TempDir()) / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(kGltfFixtures / "checker.png", dir / "checker.png");
+  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(kGltfFixtures / "quad.gltf"));
   edit(gltf);
-  const fs::path file = fs::path(::testing::TempDir()) / name;
-  std::ofstream(file) << gltf.dump();
-  return file;
+  std::ofstream(dir / "quad.gltf") << gltf.dump();
+  return dir / "quad.gltf";
 }
 
 TEST(GltfLoader, NodeNumbersStayWithinTheScenesRangeAndAZeroScaleHidesItsNode) {
-  const fs::path far = editedQuad("far_quad.gltf", [](nlohmann::json& g) { g["nodes"][0]["translation"] = {1e30, 0, 0}; });
+  const fs::path far = editedQuad("far_quad", [](nlohmann::json& g) { g["nodes"][0]["translation"] = {1e30, 0, 0}; });
   try {
     Scene scene;
     appendGltf(far, far.parent_path(), {}, scene);
@@ -73,7 +76,7 @@ TEST(GltfLoader, NodeNumbersStayWithinTheScenesRangeAndAZeroScaleHidesItsNode) {
     EXPECT_NE(std::string(e.what()).find("/nodes/0/translation/0: expected a number within ±1e12, got 1e+30"),
               std::string::npos) << e.what();
   }
-  const fs::path hidden = editedQuad("hidden_quad.gltf", [](nlohmann::json& g) { g["nodes"][0]["scale"] = {0, 0, 0}; });
+  const fs::path hidden = editedQuad("hidden_quad", [](nlohmann::json& g) { g["nodes"][0]["scale"] = {0, 0, 0}; });
   Scene scene;
   appendGltf(hidden, hidden.parent_path(), {}, scene);
   EXPECT_TRUE(scene.meshes.empty());  // the parent's zero scale hides its child's mesh too
@@ -173,120 +176,87 @@ TEST(GltfLoader, ATextureBeyondTheLargestSideIsRefusedAtItsImage) {
   }
 }
 
+// The Error appendGltf gives for `file` (its folder the root) into `scene`.
+std::string loadError(const fs::path& file, const GltfPlacement& placement = {}, Scene scene = {}) {
+  return errorOf([&] { appendGltf(file, file.parent_path(), placement, scene); });
+}
+
 // A textured material on a primitive without TEXCOORD_0 (the file's own or the scene's, by
 // placement) is refused at the primitive: it rendered with exit 0, every texture collapsed to the
 // colour of one texel (a new-user review: a ColorChecker of tiles as one brown square).
 TEST(GltfLoader, ATexturedMaterialNeedsTexCoords) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_no_uv";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(kGltfFixtures / "quad.gltf"));
-  gltf["meshes"][0]["primitives"][0]["attributes"].erase("TEXCOORD_0");
-  fs::copy_file(kGltfFixtures / "checker.png", dir / "checker.png");
-  std::ofstream(dir / "quad.gltf") << gltf.dump();
-  Scene scene;
-  EXPECT_EQ(errorOf([&] { appendGltf(dir / "quad.gltf", dir, {}, scene); }),
-            (dir / "quad.gltf").string() +
-                ": /meshes/0/primitives/0/attributes: no TEXCOORD_0, which material 'quad.gltf/tiles' needs for its textures");
+  fs::path file = editedQuad("gltf_no_uv", [](nlohmann::json& g) { g["meshes"][0]["primitives"][0]["attributes"].erase("TEXCOORD_0"); });
+  EXPECT_EQ(loadError(file), file.string() + ": /meshes/0/primitives/0/attributes: no TEXCOORD_0, which material "
+                                             "'quad.gltf/tiles' needs for its textures");
   // The scene's material in place of the file's: the same.
+  file = editedQuad("gltf_no_uv", [](nlohmann::json& g) {
+    g["meshes"][0]["primitives"][0]["attributes"].erase("TEXCOORD_0");
+    g["meshes"][0]["primitives"][0].erase("material");
+    g["materials"] = g["textures"] = g["images"] = nlohmann::json::array();
+  });
   Scene placed;
   Material painted;
   painted.name = "painted";
   painted.baseColourTexture = 0;
   placed.materials.push_back(painted);
   placed.textures.resize(1);
-  gltf["meshes"][0]["primitives"][0].erase("material");
-  gltf["materials"] = nlohmann::json::array();
-  gltf["textures"] = nlohmann::json::array();
-  gltf["images"] = nlohmann::json::array();
-  std::ofstream(dir / "quad.gltf") << gltf.dump();
   GltfPlacement placement;
   placement.materialOverride = 0;
-  EXPECT_EQ(errorOf([&] { appendGltf(dir / "quad.gltf", dir, placement, placed); }),
-            (dir / "quad.gltf").string() +
-                ": /meshes/0/primitives/0/attributes: no TEXCOORD_0, which material 'painted' needs for its textures");
+  EXPECT_EQ(loadError(file, placement, placed),
+            file.string() + ": /meshes/0/primitives/0/attributes: no TEXCOORD_0, which material 'painted' needs for its textures");
   // Untextured, no uv is needed: the file's second primitive has none.
   placed.materials[0].baseColourTexture = -1;
-  EXPECT_NO_THROW(appendGltf(dir / "quad.gltf", dir, placement, placed));
+  EXPECT_NO_THROW(appendGltf(file, file.parent_path(), placement, placed));
 }
 
 // A texture without a source (glTF allows it, for extensions Prism does not read) is said so; it
 // read "no image -1 (the file has 1)".
 TEST(GltfLoader, ATextureWithoutASourceIsSaidSo) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_no_source";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(kGltfFixtures / "quad.gltf"));
-  gltf["textures"][0] = nlohmann::json::object();
-  std::ofstream(dir / "quad.gltf") << gltf.dump();
-  fs::copy_file(kGltfFixtures / "checker.png", dir / "checker.png");
-  Scene scene;
-  EXPECT_EQ(errorOf([&] { appendGltf(dir / "quad.gltf", dir, {}, scene); }),
-            (dir / "quad.gltf").string() + ": /textures/0: no \"source\": the texture names no image");
+  const fs::path file = editedQuad("gltf_no_source", [](nlohmann::json& g) { g["textures"][0] = nlohmann::json::object(); });
+  EXPECT_EQ(loadError(file), file.string() + ": /textures/0: no \"source\": the texture names no image");
 }
 
 // A .gltf saved with a UTF-8 byte-order mark, which glTF forbids: said as such (it read "not a
 // glTF (a .gltf is a JSON object …)").
 TEST(GltfLoader, AByteOrderMarkIsSaidSo) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_bom";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ifstream in(kGltfFixtures / "quad.gltf");
-  std::ofstream(dir / "quad.gltf") << "\xEF\xBB\xBF" << in.rdbuf();
-  Scene scene;
-  EXPECT_EQ(errorOf([&] { appendGltf(dir / "quad.gltf", dir, {}, scene); }),
-            (dir / "quad.gltf").string() +
-                ": starts with a UTF-8 byte-order mark, which glTF's JSON must not have (save it without one)");
+  const fs::path file = editedQuad("gltf_bom", [](nlohmann::json&) {});
+  const std::string text = nlohmann::json::parse(std::ifstream(file)).dump();
+  std::ofstream(file) << "\xEF\xBB\xBF" << text;
+  EXPECT_EQ(loadError(file),
+            file.string() + ": starts with a UTF-8 byte-order mark, which glTF's JSON must not have (save it without one)");
 }
 
 // An image file that decodes to nothing (empty) is named in the error, not only its pointer.
 TEST(GltfLoader, AnImageThatCannotBeLoadedIsNamed) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_empty_image";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(kGltfFixtures / "quad.gltf"));
-  gltf["images"][0] = {{"uri", "empty.png"}};
-  std::ofstream(dir / "quad.gltf") << gltf.dump();
-  std::ofstream(dir / "empty.png").close();
-  Scene scene;
-  EXPECT_EQ(errorOf([&] { appendGltf(dir / "quad.gltf", dir, {}, scene); }),
-            (dir / "quad.gltf").string() + ": /images/0: the image 'empty.png' could not be loaded");
+  const fs::path file = editedQuad("gltf_empty_image", [](nlohmann::json& g) { g["images"][0] = {{"uri", "empty.png"}}; });
+  std::ofstream(file.parent_path() / "empty.png").close();
+  EXPECT_EQ(loadError(file), file.string() + ": /images/0: the image 'empty.png' could not be loaded");
 }
 
 // glTF's node hierarchy is disjoint trees (§3.5): a node reached twice — two parents, a scene's
 // root listed twice or also a child — is refused where it is reached again (each drew its meshes
 // twice on top of each other, exit 0; a new-user review).
 TEST(GltfLoader, ANodeReachedTwiceIsRefused) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "gltf_reached_twice";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  fs::copy_file(kGltfFixtures / "checker.png", dir / "checker.png");
-  const nlohmann::json quad = nlohmann::json::parse(std::ifstream(kGltfFixtures / "quad.gltf"));
-  auto errorWith = [&](const std::function<void(nlohmann::json&)>& edit) {
-    nlohmann::json gltf = quad;
-    edit(gltf);
-    std::ofstream(dir / "quad.gltf") << gltf.dump();
-    Scene scene;
-    return errorOf([&] { appendGltf(dir / "quad.gltf", dir, {}, scene); });
+  auto errorWith = [](const std::function<void(nlohmann::json&)>& edit) {
+    const fs::path file = editedQuad("gltf_reached_twice", edit);
+    return loadError(file).substr(file.string().size());
   };
-  const std::string file = (dir / "quad.gltf").string();
   EXPECT_EQ(errorWith([](nlohmann::json& g) { g["scenes"][0]["nodes"] = {0, 0}; }),
-            file + ": /scenes/0/nodes/1: node 0 again, already reached from /scenes/0/nodes/0 (a glTF node has one "
-                   "parent at most, and a scene lists root nodes only)");
+            ": /scenes/0/nodes/1: node 0 again, already reached from /scenes/0/nodes/0 (a glTF node has one parent at "
+            "most, and a scene lists root nodes only)");
   EXPECT_EQ(errorWith([](nlohmann::json& g) { g["scenes"][0]["nodes"] = {0, 1}; }),
-            file + ": /scenes/0/nodes/1: node 1 again, already reached from /nodes/0/children/0 (a glTF node has one "
-                   "parent at most, and a scene lists root nodes only)");
+            ": /scenes/0/nodes/1: node 1 again, already reached from /nodes/0/children/0 (a glTF node has one parent at "
+            "most, and a scene lists root nodes only)");
   EXPECT_EQ(errorWith([](nlohmann::json& g) {
               g["nodes"].push_back({{"name", "second parent"}, {"children", {1}}});
               g["scenes"][0]["nodes"] = {0, 2};
             }),
-            file + ": /nodes/2/children/0: node 1 again, already reached from /nodes/0/children/0 (a glTF node has one "
-                   "parent at most, and a scene lists root nodes only)");
-  EXPECT_EQ(errorWith([](nlohmann::json& g) { g["nodes"][1]["children"] = {0}; }),
-            file + ": /nodes/0: the node is its own ancestor");
-  std::ofstream(dir / "quad.gltf") << quad.dump();
+            ": /nodes/2/children/0: node 1 again, already reached from /nodes/0/children/0 (a glTF node has one parent "
+            "at most, and a scene lists root nodes only)");
+  EXPECT_EQ(errorWith([](nlohmann::json& g) { g["nodes"][1]["children"] = {0}; }), ": /nodes/0: the node is its own ancestor");
+  const fs::path file = editedQuad("gltf_reached_twice", [](nlohmann::json&) {});
   Scene scene;
-  EXPECT_NO_THROW(appendGltf(dir / "quad.gltf", dir, {}, scene));
+  EXPECT_NO_THROW(appendGltf(file, file.parent_path(), {}, scene));
 }
 
 // A buffer's byteLength is held to its data: URI as the loader decodes it, unpadded base64

@@ -30,6 +30,7 @@
 #include "scene/scene_loader.h"
 #include "techniques/nebula/nebula_basis.h"
 #include "techniques/nebula/nebula_basis_coverage.h"
+#include "techniques/nebula/nebula_light_warnings.h"
 #include "techniques/nebula/gpu/nebula_gpu_marcher.h"
 #include "techniques/nebula/nebula_scene.h"
 #include "techniques/nebula/nebula_section.h"

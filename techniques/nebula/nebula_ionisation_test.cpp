@@ -11,6 +11,7 @@
 
 #include "core/data_files.h"
 #include "core/worst_of.h"
+#include "techniques/nebula/nebula_light_warnings.h"
 #include "techniques/nebula/nebula_precomputed.h"
 #include "techniques/nebula/nebula_render.h"
 #include "techniques/nebula/nebula_scene.h"

@@ -82,11 +82,6 @@ struct NebulaModel {
   std::array<PassbandEdit, 3> passbands{};  // each channel's passband moved and resized
 };
 
-// Empty, or why the model's emission lines glow nowhere: ionisation zones with no star of
-// luminosity above 0 to ionise the gas (a valid model, whose lines a user asked for and would not
-// see: the image had them all black, with no word).
-std::string unlitLinesWarning(const NebulaModel& model);
-
 enum class Method { Reference, Analytic, Projection, LightDensity, PreIntegration };
 const char* methodName(Method m);
 Method methodFromName(std::string_view name);  // Error naming it when unknown
@@ -179,12 +174,6 @@ class NebulaRenderer {
  private:
   std::unique_ptr<NebulaPrecomputed> mPre;
 };
-
-// Empty, or why the nebula gives no light at all and its image comes out black: no star light to
-// scatter (no star, none of luminosity above 0, or scattering 0) and no line to glow (emission 0,
-// no line of strength above 0, or lines only outside every filter's passband). A valid model; a
-// new-user review rendered such ones black with no word. Says nothing where unlitLinesWarning does.
-std::string darkNebulaWarning(const NebulaRenderer& renderer);
 
 // Per channel, over pixels whose reference value is at least `floorOfMax` × that channel's
 // maximum: the largest |image − reference| / reference; infinite where either image has a pixel

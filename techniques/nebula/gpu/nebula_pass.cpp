@@ -10,6 +10,7 @@
 #include "spectral/colour_space.h"
 #include "techniques/nebula/nebula_basis_coverage.h"
 #include "techniques/nebula/nebula_cpu_twin.h"
+#include "techniques/nebula/nebula_light_warnings.h"
 
 namespace prism::nebula {
 namespace {

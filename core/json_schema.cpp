@@ -349,9 +349,10 @@ std::filesystem::path confinedFile(const std::filesystem::path& root,
   }
   std::filesystem::path full = base / rel;
   if (!isInside(root, full)) {
+    // Both resolved: a relative root read "outside ." for a scene in the working folder.
     std::error_code ec;
-    throw Error("'" + std::string(relative) + "' resolves to " +
-                std::filesystem::weakly_canonical(full, ec).string() + ", outside " + root.string());
+    throw Error("'" + std::string(relative) + "' resolves to " + std::filesystem::weakly_canonical(full, ec).string() +
+                ", outside " + std::filesystem::weakly_canonical(root, ec).string());
   }
   std::error_code ec;
   if (!std::filesystem::exists(full, ec)) throw Error("file not found: " + full.string());

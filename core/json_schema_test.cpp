@@ -1,9 +1,12 @@
 // What a scene's numbers read as float (Node::numberF, vec2, vec3) must hold as floats, and what
-// its integers (Node::integer) must hold as ints, said in the error.
+// its integers (Node::integer) must hold as ints, said in the error; and where a file that leaves
+// its root is said to go (confinedFile).
 #include "core/json_schema.h"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "core/error.h"
@@ -48,6 +51,26 @@ TEST(Integer, IsInItsRangeAndInts) {
   EXPECT_EQ(integerErrorOf(-2147483648LL, Range::any()), "-2147483648");
   EXPECT_EQ(integerErrorOf(17, Range::closed(1, 16)), "scene.json: /x: expected an integer in [1, 16], got 17");
   EXPECT_EQ(integerErrorOf(1.5, Range::closed(1, 16)), "scene.json: /x: expected an integer in [1, 16], got 1.5");
+}
+
+// A file that resolves outside its root names the root resolved, as the file is: a scene in the
+// working folder, its root ".", read "outside .".
+TEST(ConfinedFile, NamesTheRootResolved) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::path(::testing::TempDir()) / "confined" / "scene";
+  fs::remove_all(root.parent_path());
+  fs::create_directories(root);
+  std::ofstream(root.parent_path() / "outside.png") << "x";
+  fs::create_directory_symlink(root.parent_path(), root / "escape");
+  const fs::path relativeRoot = fs::relative(root);
+  ASSERT_TRUE(relativeRoot.is_relative());
+  try {
+    confinedFile(relativeRoot, relativeRoot, "escape/outside.png");
+    ADD_FAILURE() << "no Error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "'escape/outside.png' resolves to " + fs::weakly_canonical(root.parent_path() / "outside.png").string() +
+                                         ", outside " + fs::weakly_canonical(root).string());
+  }
 }
 
 }  // namespace

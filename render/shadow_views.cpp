@@ -18,8 +18,8 @@ glm::vec3 upFor(const glm::vec3& direction) {
 // A perspective view's depth range from a light `distance` away from the centre of the scene's
 // bounding sphere: the sphere, from no nearer than 5 cm, or than a hundredth of the range's far
 // end in a scene smaller than that makes 5 cm (what lies nearer the light casts no shadow: a
-// fixed 5 cm left a scene in centimetres without its point and spot lights' shadows). Scenes of
-// metres keep the 5 cm, so their shadows are as they were.
+// fixed 5 cm left a scene in centimetres without its point and spot lights' shadows). A range
+// reaching 5 m or more keeps the 5 cm, as every example scene and test fixture does.
 struct DepthRange {
   float nearM, farM;
 };

@@ -766,12 +766,17 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   EXPECT_EQ(sceneLightDensity.exitCode, 0) << sceneLightDensity.err;
   expectOneLineError("render " + moreScene + " --set nebula.method=light-density",
                      "more_scene.json: /nebula/stars: the optical depths of 1028 stars");
+  expectOneLineError("render " + moreScene + " --set nebula.method=light-density",
+                     "; the stars light surfaces, which reads them (\"light_surfaces\": false reads none)");
+  expectOneLineError("render " + moreScene,
+                     "; \"method\": \"light-density\" with \"light_surfaces\": false reads none of them");
   // The reference mode marches the reference: refused at its first frame, after the precomputation
   // (whose progress bars come first), nothing written.
   std::filesystem::remove(dir / "more.png");
   Result reference = run("render " + moreScene + " --set nebula.method=light-density --set nebula.light_surfaces=false --mode reference");
   EXPECT_EQ(reference.exitCode, 1);
   EXPECT_NE(reference.err.find("more_scene.json: /nebula/stars: the optical depths of 1028 stars"), std::string::npos) << reference.err;
+  EXPECT_NE(reference.err.find("; the reference mode's march reads them"), std::string::npos) << reference.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "more.png"));
   expectOneLineError("nebula render " + tiny + " --method reference --reference-intervals 1024 --compare -o x.exr",
                      "--compare: the reference at 1024 Simpson intervals has no finer one");

@@ -317,7 +317,7 @@ void runNebulaRender(const NebulaRenderOptions& o) {
       if (method != nebula::Method::LightDensity)
         nebula::requireGpuFits(file.densitySize().z, file.scene.model.stars.size());
     } catch (const Error& e) {
-      throw Error(fmt::format("{}: /nebula/stars: {}", o.scene.string(), e.what()));
+      throw Error(fmt::format("{}: /nebula/stars: {}; light-density's march reads none of them", o.scene.string(), e.what()));
     }
     const nebula::NebulaCamera& camera = file.scene.model.camera;
     const auto pixels = static_cast<std::size_t>(camera.width) * static_cast<std::size_t>(camera.height);

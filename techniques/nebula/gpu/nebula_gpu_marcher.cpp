@@ -179,11 +179,7 @@ bool NebulaGpuMarcher::refilter(const NebulaRenderer& renderer) {
 }
 
 void requireGpuFits(int voxelsZ, std::size_t stars) {
-  try {
-    requireSlabsFit(voxelsZ, static_cast<int>(stars), fmt::format("the optical depths of {} stars", stars));
-  } catch (const Error& e) {
-    throw Error(std::string(e.what()) + "; light-density's march reads none of them");
-  }
+  requireSlabsFit(voxelsZ, static_cast<int>(stars), fmt::format("the optical depths of {} stars", stars));
 }
 
 void requireMomentsFit(std::size_t count, std::string_view what, int card, std::size_t pixels) {

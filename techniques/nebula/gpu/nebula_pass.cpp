@@ -35,7 +35,12 @@ void requireStarDepthsFit(const Scene& scene, bool referenceMode) {
   try {
     requireGpuFits(section.density->size().z, section.model.stars.size());
   } catch (const Error& e) {
-    throw Error(fmt::format("{}: /nebula/stars: {}", scene.file.string(), e.what()));
+    // What reads them, and how none would be read.
+    const char* remedy = referenceMode ? "; the reference mode's march reads them"
+                         : section.renderSettings().method == Method::LightDensity
+                             ? "; the stars light surfaces, which reads them (\"light_surfaces\": false reads none)"
+                             : "; \"method\": \"light-density\" with \"light_surfaces\": false reads none of them";
+    throw Error(fmt::format("{}: /nebula/stars: {}{}", scene.file.string(), e.what(), remedy));
   }
 }
 

@@ -360,7 +360,10 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
   Result camera = run("render " + scenes + "/spheres_led.json -o " + (dir / "cam.exr").string() +
                       " --width 64 --height 36 --camera nikon_d850");
   ASSERT_EQ(camera.exitCode, 0) << camera.err;
-  EXPECT_EQ(prism::imaging::readExr(dir / "cam.exr").colour, prism::imaging::ColourMeaning::CameraRgb);
+  const prism::imaging::ExrImage cam = prism::imaging::readExr(dir / "cam.exr");
+  EXPECT_EQ(cam.colour, prism::imaging::ColourMeaning::CameraRgb);
+  ASSERT_TRUE(cam.camera);
+  EXPECT_EQ(cam.camera->name, "nikon_d850");
   Result display = run("render " + scenes + "/spheres_led.json -o " + (dir / "wb.png").string() +
                        " --width 64 --height 36 --camera nikon_d850 --white-balance led-globe-a19"
                        " --tonemap reinhard --display rec2020");
@@ -504,8 +507,8 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   const std::string a = (dir / "a.exr").string();
   expectOneLineError("compare " + a + " " + (dir / "nope.exr").string(), "nope.exr");
   expectOneLineError("compare " + a + " " + (dir / "b.exr").string(), "reference 4 × 3, test 5 × 3");
-  expectOneLineError("compare " + a + " " + (dir / "cam.exr").string(), "camera-rgb values; compare takes CIE 1931 XYZ or "
-                     "linear sRGB (a camera's raw RGB: render it without --camera)");
+  expectOneLineError("compare " + a + " " + (dir / "cam.exr").string(), "cam.exr: a camera's raw RGB that does not say "
+                     "which camera and matrix (prism:camera, prism:cameraToXyz): render it again with this Prism");
   // Each refusal says what would be taken: a nebula's palette and a variance were told to render
   // with an --observer neither has.
   prism::imaging::writeExr(dir / "palette.exr", small, {.colour = prism::imaging::ColourMeaning::OtherRgb});
@@ -563,18 +566,39 @@ TEST(Cli, ReferenceWritesWhatCompareReads) {
   Result png = run("reference " + scene + " -o " + (dir / "ref.png").string() +
                    " --width 48 --height 27 --spp 2 --transport global --max-depth 3");
   ASSERT_EQ(png.exitCode, 0) << png.err;
-  // A camera's PNG: `reference` fits its matrix under the scene's light; merged parts, which do not
-  // record the light, say that theirs is D65's.
+  // A camera's PNG: `reference` fits its matrix under the scene's light, and so do merged parts,
+  // which record it (merge fitted D65's and warned).
   const std::string blue = scenes + "/spheres_blue_led.json", tiny = " --width 16 --height 9 --camera nikon_d850";
   Result cameraPng = run("reference " + blue + " -o " + (dir / "cam.png").string() + tiny + " --spp 2");
   ASSERT_EQ(cameraPng.exitCode, 0) << cameraPng.err;
   EXPECT_EQ(cameraPng.err.find("warning"), std::string::npos) << cameraPng.err;
   Result cameraPart = run("reference " + blue + " -o " + (dir / "cam_part.exr").string() + tiny + " --spp 2 --samples 0:2");
   ASSERT_EQ(cameraPart.exitCode, 0) << cameraPart.err;
-  Result merged = run("merge " + (dir / "cam_part.exr").string() + " -o " + (dir / "cam_merged.png").string());
-  ASSERT_EQ(merged.exitCode, 0) << merged.err;
-  EXPECT_NE(merged.err.find("cam_merged.png: the camera's matrix is fitted under D65, not the scene's light"),
-            std::string::npos) << merged.err;
+  for (const char* merge : {"cam_merged.png", "cam_merged.exr"}) {
+    Result merged = run("merge " + (dir / "cam_part.exr").string() + " -o " + (dir / merge).string());
+    ASSERT_EQ(merged.exitCode, 0) << merged.err;
+    EXPECT_EQ(merged.err.find("warning"), std::string::npos) << merged.err;
+  }
+  EXPECT_EQ(slurp(dir / "cam_merged.png"), slurp(dir / "cam.png"));
+  // The camera's real-time frame against its reference, in XYZ through the matrix both record (raw
+  // RGB was refused); another camera's frame, XYZ, or a frame of another light's is refused by name.
+  Result cameraRaster = run("render " + blue + " -o " + (dir / "cam_raster.exr").string() + tiny);
+  ASSERT_EQ(cameraRaster.exitCode, 0) << cameraRaster.err;
+  Result cameraCmp = run("compare " + (dir / "cam_merged.exr").string() + " " + (dir / "cam_raster.exr").string());
+  ASSERT_EQ(cameraCmp.exitCode, 0) << cameraCmp.err;
+  EXPECT_NE(cameraCmp.out.find("nikon_d850's raw RGB, compared in CIE 1931 XYZ through its matrix"), std::string::npos)
+      << cameraCmp.out;
+  Result canon = run("render " + blue + " -o " + (dir / "canon.exr").string() + " --width 16 --height 9 --camera canon_eos_5d");
+  ASSERT_EQ(canon.exitCode, 0) << canon.err;
+  expectOneLineError("compare " + (dir / "cam_raster.exr").string() + " " + (dir / "canon.exr").string(),
+                     "cam_raster.exr holds nikon_d850's raw RGB and " + (dir / "canon.exr").string() +
+                     " canon_eos_5d's raw RGB: compare a camera's frames with the same camera's");
+  expectOneLineError("compare " + (dir / "ref.exr").string() + " " + (dir / "cam_raster.exr").string(),
+                     "ref.exr holds xyz values and " + (dir / "cam_raster.exr").string() + " nikon_d850's raw RGB");
+  Result d65 = run("render " + scene + " -o " + (dir / "cam_d65.exr").string() + tiny);
+  ASSERT_EQ(d65.exitCode, 0) << d65.err;
+  expectOneLineError("compare " + (dir / "cam_raster.exr").string() + " " + (dir / "cam_d65.exr").string(),
+                     "nikon_d850's frames shown through different matrices (its fits under different lights)");
 
   Result raster = run("render " + scene + " -o " + (dir / "raster.exr").string() + " --width 48 --height 27");
   ASSERT_EQ(raster.exitCode, 0) << raster.err;

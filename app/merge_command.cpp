@@ -51,7 +51,8 @@ void runMerge(const MergeOptions& o) {
   requireWritable(o.output);
   if (!o.variance.empty()) requireWritable(o.variance);
   batch::MergedReference merged = batch::mergeReferenceParts(o.parts);
-  writeReferenceImage(merged.image, merged.header.observer, merged.header.ev100, o.output, o.variance, nullptr);
+  writeReferenceImage(merged.image, merged.header.observer, merged.header.ev100, o.output, o.variance,
+                      merged.header.cameraToXyz);
   fmt::print("merged {} parts into {} ({}x{}, {} paths per pixel)\n", o.parts.size(), o.output.string(),
              merged.header.width, merged.header.height, merged.header.samplesPerPixel);
 }

@@ -25,6 +25,16 @@
 namespace prism::app {
 namespace {
 
+// What a camera's reference image is shown through: its matrix under the scene's light, as the
+// renderer's frame of the scene is (render::FrameContext).
+std::optional<Eigen::Matrix3d> sceneCameraToXyz(const Scene& scene, const RgbToSpectrumTable& table,
+                                                const std::string& observerName) {
+  const Observer& camera = observer(observerName);
+  if (!camera.isCamera) return std::nullopt;
+  const Spectrum light = sceneEmission(scene, colourSpace(scene.colourSpace), table);
+  return render::cameraToXyz(camera, &light);
+}
+
 // The rows and paths the options ask for: all, or a part's.
 reference::ReferenceRegion region(const ReferenceOptions& o, const reference::ReferenceSettings& s) {
   reference::ReferenceRegion r = reference::ReferenceRegion::whole(s);
@@ -55,7 +65,7 @@ void runReferencePart(const ReferenceOptions& o, const Scene& scene, const refer
   }
   if (!o.variance.empty()) throw Error("--variance: a part holds its variance; name the file to `prism merge`");
   const reference::ReferenceRegion r = region(o, settings);
-  const batch::ReferencePartHeader header = batch::partHeader(o.scene, o.sets, scene, settings, r, ev100);
+  batch::ReferencePartHeader header = batch::partHeader(o.scene, o.sets, scene, settings, r, ev100);
   const std::string what = fmt::format("rows {}–{}, samples {}:{} of {}", r.rowBegin, r.rowEnd - 1, r.sampleBegin,
                                        r.sampleEnd, settings.samplesPerPixel);
   std::error_code ec;
@@ -78,6 +88,7 @@ void runReferencePart(const ReferenceOptions& o, const Scene& scene, const refer
   reference::ReferenceImage image = reference::renderReference(
       scene, table, settings, r, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
   imaging::requireFiniteOutput(image.tristimulus, o.output.string());
+  header.cameraToXyz = sceneCameraToXyz(scene, table, settings.observer);
   batch::writeReferencePart(o.output, header, image);
   fmt::print("wrote {} ({})\n", o.output.string(), what);
 }
@@ -124,21 +135,18 @@ void checkReferenceOutputs(const std::filesystem::path& output, const std::files
 
 void writeReferenceImage(const reference::ReferenceImage& image, const std::string& observerName, float ev100,
                          const std::filesystem::path& output, const std::filesystem::path& variance,
-                         const Spectrum* cameraLight) {
-  imaging::ExrWriteOptions exr{imaging::tristimulusMeaning(observer(observerName)),
-                               imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour,
-                               render::displayWhiteLuminance(ev100)};
+                         const std::optional<Eigen::Matrix3d>& cameraToXyz) {
+  const Observer& tristimulusObserver = observer(observerName);
+  PRISM_CHECK(!tristimulusObserver.isCamera || cameraToXyz);
   imaging::requireFiniteOutput(image.tristimulus, output.string());
   if (lowercaseExtension(output) == ".exr") {
-    imaging::writeExr(output, image.tristimulus, exr);
+    imaging::writeExr(output, image.tristimulus,
+                      imaging::tristimulusExr(tristimulusObserver, render::displayWhiteLuminance(ev100),
+                                              cameraToXyz.value_or(Eigen::Matrix3d::Identity())));
   } else {
     render::DisplaySettings display;
     display.ev100 = ev100;
-    if (observer(observerName).isCamera && !cameraLight)
-      fmt::print(stderr, "prism: warning: {}: the camera's matrix is fitted under D65, not the scene's light, which "
-                         "the parts do not record (`prism reference` fits it under the light; the EXR is the camera's "
-                         "RGB, untouched)\n", output.string());
-    harness::displayImage(image.tristimulus, display, observer(observerName), ev100, cameraLight).write(output);
+    harness::displayImage(image.tristimulus, display, tristimulusObserver, ev100, cameraToXyz).write(output);
   }
   // The variance is in squared units and no colour: not something compare should take for one.
   if (!variance.empty()) imaging::writeExr(variance, image.variance, {.colour = imaging::ColourMeaning::OtherRgb});
@@ -166,8 +174,8 @@ void runReference(const ReferenceOptions& o) {
   harness::ProgressBar bar("tracing " + o.output.filename().string());
   reference::ReferenceImage image = reference::renderReference(
       scene, table, settings, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
-  const Spectrum light = sceneEmission(scene, colourSpace(scene.colourSpace), table);
-  writeReferenceImage(image, settings.observer, ev100, o.output, o.variance, &light);
+  writeReferenceImage(image, settings.observer, ev100, o.output, o.variance,
+                      sceneCameraToXyz(scene, table, settings.observer));
   fmt::print("wrote {} ({}x{}, {} paths per pixel, {} lighting)\n", o.output.string(), settings.width,
              settings.height, settings.samplesPerPixel, o.transport);
 }

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "reference/path_tracer.h"
 
 namespace prism::app {
@@ -43,12 +45,12 @@ void runReference(const ReferenceOptions& options);
 void checkReferenceOutputs(const std::filesystem::path& output, const std::filesystem::path& variance);
 
 // A whole reference image as `prism reference` writes it (and `prism merge`, the same bytes):
-// OUT.exr of tristimulus for `observerName` with the display white of `ev100`, or OUT.png after
-// the display transform — a camera's matrix fitted under `cameraLight`, the scene's light (D65
-// without one: `merge`'s parts do not record it, and it says so); the variance EXR when
-// `variance` is not empty. Refuses non-finite pixels.
+// OUT.exr of tristimulus for `observerName` with the display white of `ev100` (and for a camera
+// its name and `cameraToXyz`, its matrix under the scene's light), or OUT.png after the display
+// transform through that matrix; the variance EXR when `variance` is not empty. Refuses non-finite
+// pixels. PRISM_CHECKs that a camera has its matrix.
 void writeReferenceImage(const reference::ReferenceImage& image, const std::string& observerName, float ev100,
                          const std::filesystem::path& output, const std::filesystem::path& variance,
-                         const Spectrum* cameraLight);
+                         const std::optional<Eigen::Matrix3d>& cameraToXyz);
 
 }  // namespace prism::app

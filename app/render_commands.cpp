@@ -66,10 +66,11 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
     harness::displayPng(renderer).write(output);
     return;
   }
+  const render::FrameContext& frame = renderer.context();
   imaging::writeExr(output, image,
-                    {imaging::tristimulusMeaning(*renderer.context().tristimulusObserver),
-                     imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour,
-                     render::displayWhiteLuminance(settings.display.ev100.value_or(scene.camera.ev100))});
+                    imaging::tristimulusExr(*frame.tristimulusObserver,
+                                            render::displayWhiteLuminance(settings.display.ev100.value_or(scene.camera.ev100)),
+                                            frame.display.tristimulusToXyz));
 }
 
 namespace {

@@ -60,6 +60,11 @@ void checkParts(const std::vector<std::filesystem::path>& files, const std::vect
                                 files.front().string(), excerpt(identity[k].second)));
       }
     }
+    // Decided by the scene and the camera, so equal in parts of one render (but for another
+    // build's fit, or an edited file).
+    if (headers[i].cameraToXyz != headers.front().cameraToXyz)
+      throw Error(fmt::format("merge: {}: its camera matrix is not {}'s (the parts of one render share it)",
+                              files[i].string(), files.front().string()));
   }
   std::set<int> bounds{0, headers.front().height};
   for (const ReferencePartHeader& h : headers) bounds.insert({h.region.rowBegin, h.region.rowEnd});

@@ -203,6 +203,34 @@ TEST_F(ReferenceParts, PartsOfAnotherRenderAreRefused) {
   EXPECT_NE(mergeError({a, d}).find("its scene: "), std::string::npos);
 }
 
+TEST_F(ReferenceParts, ACamerasPartsCarryItsMatrixIntoTheMerge) {
+  reference::ReferenceSettings s = settings();
+  s.observer = "nikon_d850";
+  Eigen::Matrix3d m;
+  m << 0.61, 0.27, 0.08, 0.23, 0.94, -0.17, 0.01, -0.12, 1.0 / 3.0;
+  auto write = [&](const std::string& name, const reference::ReferenceRegion& region, const Eigen::Matrix3d& matrix) {
+    ReferencePartHeader h = partHeader(kScene, {}, *sScene, s, region, 9.0f);
+    h.cameraToXyz = matrix;
+    const std::filesystem::path file = mRoot / (name + ".exr");
+    writeReferencePart(file, h, reference::renderReference(*sScene, rendererRgbToSpectrumTable("srgb"), s, region));
+    return file;
+  };
+  const std::filesystem::path top = write("top", {0, 8, 0, 12}, m), bottom = write("bottom", {8, 16, 0, 12}, m);
+  EXPECT_EQ(readReferencePartHeader(top).cameraToXyz, m);  // every digit of every double
+  EXPECT_EQ(mergeReferenceParts({top, bottom}).header.cameraToXyz, m);
+  const std::filesystem::path other = write("other", {8, 16, 0, 12}, 2.0 * m);
+  EXPECT_EQ(mergeError({top, other}),
+            "merge: " + other.string() + ": its camera matrix is not " + top.string() + "'s (the parts of one render share it)");
+  // A camera's part without its matrix says so (one written before parts recorded it).
+  imaging::ExrBand band = imaging::readExrBand(top, true);
+  band.attributes.erase("prism:cameraToXyz");
+  imaging::writeExrBand(other, band);
+  EXPECT_EQ(mergeError({other}), other.string() + ": not a part of a reference render (no prism:cameraToXyz)");
+  band.attributes["prism:cameraToXyz"] = "1 0 0 0 1 0 0 0";
+  imaging::writeExrBand(other, band);
+  EXPECT_EQ(mergeError({other}), other.string() + ": not a part of a reference render (prism:cameraToXyz holds 8 numbers, not 9)");
+}
+
 TEST_F(ReferenceParts, AFileThatIsNotAWholePartIsRefused) {
   std::filesystem::path a = part("a", {0, 16, 0, 12});
   std::filesystem::resize_file(a, std::filesystem::file_size(a) - 100);

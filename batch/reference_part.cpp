@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <span>
 #include <sstream>
@@ -23,6 +24,7 @@ namespace prism::batch {
 namespace {
 
 constexpr const char* kPartKind = "reference 1";
+constexpr const char* kCameraToXyz = "prism:cameraToXyz";
 
 // The colour channels' names and meaning, as `prism reference` writes a whole image.
 bool isCamera(const std::string& observerName) { return observer(observerName).isCamera; }
@@ -45,7 +47,22 @@ class Attributes {
   }
   template <typename T>
   T number(const std::string& name) const {
-    const std::string& t = text(name);
+    return parse<T>(name, text(name));
+  }
+  // Nine finite numbers, row by row, separated by spaces.
+  Eigen::Matrix3d matrix(const std::string& name) const {
+    std::istringstream words(text(name));
+    std::vector<std::string> values{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+    if (values.size() != 9) fail(fmt::format("{} holds {} numbers, not 9", name, values.size()));
+    Eigen::Matrix3d m;
+    for (int i = 0; i < 9; ++i) m(i / 3, i % 3) = parse<double>(name, values[static_cast<std::size_t>(i)]);
+    if (!m.allFinite()) fail(name + " holds a value that is not finite");
+    return m;
+  }
+
+ private:
+  template <typename T>
+  T parse(const std::string& name, const std::string& t) const {
     T value{};
     auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
     if (!t.empty() && ec == std::errc::result_out_of_range && end == t.data() + t.size())
@@ -54,7 +71,6 @@ class Attributes {
     return value;
   }
 
- private:
   const std::filesystem::path& mPath;
   const std::map<std::string, std::string>& mAttributes;
 };
@@ -87,6 +103,7 @@ ReferencePartHeader parseHeader(const std::filesystem::path& path, const imaging
   } catch (const Error& e) {
     a.fail(e.what());
   }
+  if (isCamera(h.observer)) h.cameraToXyz = a.matrix(kCameraToXyz);
   return h;
 }
 
@@ -144,7 +161,7 @@ ReferencePartHeader partHeader(const std::filesystem::path& scene, const std::ve
                                const Scene& loaded, const reference::ReferenceSettings& settings,
                                const reference::ReferenceRegion& region, float ev100) {
   return {scene.string(), sceneHash(scene, sets, loaded), settingsText(settings), settings.seed, settings.width,
-          settings.height, settings.samplesPerPixel, settings.observer, ev100, region};
+          settings.height, settings.samplesPerPixel, settings.observer, ev100, region, std::nullopt};
 }
 
 void writeReferencePart(const std::filesystem::path& path, const ReferencePartHeader& h,
@@ -168,6 +185,13 @@ void writeReferencePart(const std::filesystem::path& path, const ReferencePartHe
       {"prism:sampleCount", std::to_string(h.region.samples())},
       {"prism:colour", std::string(imaging::colourMeaningName(imaging::tristimulusMeaning(observer(h.observer))))},
   };
+  PRISM_CHECK(h.cameraToXyz.has_value() == isCamera(h.observer));
+  if (h.cameraToXyz) {
+    const Eigen::Matrix3d& m = *h.cameraToXyz;
+    band.attributes[kCameraToXyz] = fmt::format("{:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}",
+                                                m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0),
+                                                m(2, 1), m(2, 2));
+  }
   const std::vector<std::string> names = colourNames(h.observer);
   auto addPlanes = [&](const imaging::FloatImage& planes, const std::string& prefix) {
     for (int c = 0; c < 3; ++c) {

@@ -15,13 +15,17 @@
 //   prism:samples       "A:B", the path indices of every pixel in the part
 //   prism:sampleCount   B − A: how many paths each pixel's mean and variance are over
 //   prism:colour        what X, Y, Z / R, G, B mean, as readExr takes it
+//   prism:cameraToXyz   a camera's only: its matrix, nine numbers row by row
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "reference/path_tracer.h"
 
@@ -36,6 +40,10 @@ struct ReferencePartHeader {
   std::string observer;    // an observer or a camera (what the channels mean)
   float ev100 = 0.0f;      // the exposure of the merged image's display white and PNG
   reference::ReferenceRegion region;
+  // A camera's matrix under the scene's light (render::cameraToXyz), which its merged image is
+  // shown and compared through; none for the CIE observers. Set before writing: the scene and the
+  // observer, which the identity holds, decide it.
+  std::optional<Eigen::Matrix3d> cameraToXyz;
 
   // What must be equal for two parts to be of one render: (name, value) pairs, in the order a
   // mismatch is reported.

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
+#include <Eigen/Core>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -27,6 +29,7 @@ struct Loaded {
   imaging::PngImage png;
   imaging::ExrImage exr;
   bool linear = false;
+  std::optional<imaging::ExrCamera> camera;  // a camera's raw RGB, now in `exr` as XYZ through its matrix
   imaging::DifferenceInput input() const {
     return linear ? imaging::linearInput(exr.image, exr.colour, exr.displayWhite.value_or(1.0))
                   : imaging::png8Input(png);
@@ -37,7 +40,7 @@ struct Loaded {
 std::string_view colourRemedy(imaging::ColourMeaning colour) {
   switch (colour) {
     case imaging::ColourMeaning::Xyz1964: return "render it with --observer cie1931";
-    case imaging::ColourMeaning::CameraRgb: return "a camera's raw RGB: render it without --camera";
+    case imaging::ColourMeaning::CameraRgb:  // taken with its camera (convertCamera)
     case imaging::ColourMeaning::OtherRgb:
       return "RGB of primaries Prism does not know: a nebula's filter palette (nebula render --filters cie1931 "
              "writes XYZ), a reference's --variance (squared units, no colour) or a foreign EXR";
@@ -48,13 +51,45 @@ std::string_view colourRemedy(imaging::ColourMeaning colour) {
   return "";
 }
 
+// A camera's raw RGB into CIE 1931 XYZ through the matrix its frame is shown through, which the
+// file records: the camera's ColorChecker fit under the scene's light (render::cameraToXyz).
+void convertCamera(const std::filesystem::path& path, Loaded& l) {
+  if (!l.exr.camera)
+    throw Error(fmt::format("{}: a camera's raw RGB that does not say which camera and matrix ({}, {}): render it "
+                            "again with this Prism", path.string(), imaging::kCameraAttribute,
+                            imaging::kCameraToXyzAttribute));
+  imaging::cameraRgbToXyz(l.exr.image, l.exr.camera->toXyz);
+  l.exr.colour = imaging::ColourMeaning::Xyz;
+  l.camera = l.exr.camera;
+}
+
+// Two cameras' frames are compared in one camera's terms: both sides that camera's RGB, through
+// one matrix (a frame of another scene's light has another), or neither.
+void requireOneCamera(const CompareOptions& o, const Loaded& reference, const Loaded& test) {
+  const std::optional<imaging::ExrCamera>& a = reference.camera;
+  const std::optional<imaging::ExrCamera>& b = test.camera;
+  if (!a && !b) return;
+  const auto what = [](const Loaded& l) {
+    return l.camera ? l.camera->name + "'s raw RGB"
+                    : !l.linear ? std::string("a display image")
+                                : std::string(imaging::colourMeaningName(l.exr.colour)) + " values";
+  };
+  if (!a || !b || a->name != b->name)
+    throw Error(fmt::format("{} holds {} and {} {}: compare a camera's frames with the same camera's",
+                            o.reference.string(), what(reference), o.test.string(), what(test)));
+  if (!a->toXyz.isApprox(b->toXyz, 1e-9))
+    throw Error(fmt::format("{} and {}: {}'s frames shown through different matrices (its fits under different "
+                            "lights): frames of one scene compare", o.reference.string(), o.test.string(), a->name));
+}
+
 Loaded load(const std::filesystem::path& path, const std::optional<double>& white) {
   Loaded l;
   std::string extension = lowercaseExtension(path);
   if (extension == ".exr") {
     l.linear = true;
     l.exr = imaging::readExr(path);
-    if (l.exr.colour != imaging::ColourMeaning::Xyz && l.exr.colour != imaging::ColourMeaning::LinearSrgb) {
+    if (l.exr.colour != imaging::ColourMeaning::Xyz && l.exr.colour != imaging::ColourMeaning::LinearSrgb &&
+        l.exr.colour != imaging::ColourMeaning::CameraRgb) {
       throw Error(fmt::format("{}: holds {} values; compare takes CIE 1931 XYZ or linear sRGB ({})", path.string(),
                               imaging::colourMeaningName(l.exr.colour), colourRemedy(l.exr.colour)));
     }
@@ -76,6 +111,7 @@ Loaded load(const std::filesystem::path& path, const std::optional<double>& whit
       throw Error(fmt::format("{}: pixel ({}, {}) holds {}: compare takes finite images", path.string(), bad.firstX,
                               bad.firstY, bad.firstValue));
     }
+    if (l.exr.colour == imaging::ColourMeaning::CameraRgb) convertCamera(path, l);
   } else {
     l.png = imaging::readPng8(path);
   }
@@ -112,6 +148,7 @@ void runCompare(const CompareOptions& o) {
                             o.reference.string(), reference.linear ? "an EXR" : "a PNG", o.test.string(),
                             test.linear ? "an EXR" : "a PNG"));
   if (o.white && !reference.linear) throw Error("--white: only for EXRs; a PNG's white is the display's");
+  requireOneCamera(o, reference, test);
   // Both linear sides must be put into CIELAB against one white: the one they agree on, the one
   // only one of them records, or --white.
   if (reference.linear && test.linear && !o.white) {
@@ -150,10 +187,14 @@ void runCompare(const CompareOptions& o) {
                         {"p99_delta_e", s.p99DeltaE},     {"max_delta_e", s.maxDeltaE},
                         {"threshold_delta_e", s.thresholdDeltaE}, {"fraction_above", s.fractionAbove},
                         {"mae_8bit", s.mae8},             {"relative_error", s.relativeError}};
+    if (reference.camera) j["camera"] = reference.camera->name;
     fmt::print("{}\n", j.dump(2));
     return;
   }
   fmt::print("{} vs {} ({} pixels)\n", o.reference.string(), o.test.string(), s.pixelCount);  // as given, as errors say
+  if (reference.camera)
+    fmt::print("{}'s raw RGB, compared in CIE 1931 XYZ through its matrix ({})\n", reference.camera->name,
+               imaging::kCameraToXyzAttribute);
   fmt::print("CIEDE2000  mean {:.4f}  median {:.4f}  p95 {:.4f}  p99 {:.4f}  max {:.4f}\n", s.meanDeltaE,
              s.medianDeltaE, s.p95DeltaE, s.p99DeltaE, s.maxDeltaE);
   fmt::print("pixels above ΔE00 {:g}: {:.2f} %\n", s.thresholdDeltaE, 100.0 * s.fractionAbove);

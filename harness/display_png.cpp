@@ -21,9 +21,11 @@ imaging::PngImage displayPng(const render::Renderer& renderer) {
 }
 
 imaging::PngImage displayImage(const imaging::FloatImage& tristimulus, const render::DisplaySettings& settings,
-                               const Observer& tristimulusObserver, float sceneEv100, const Spectrum* cameraLight) {
-  render::DisplayTransform transform =
-      render::displayTransform(settings, render::resolveDisplay(settings, tristimulusObserver, cameraLight), sceneEv100);
+                               const Observer& tristimulusObserver, float sceneEv100,
+                               const std::optional<Eigen::Matrix3d>& cameraToXyz) {
+  render::DisplayInputs inputs = render::resolveDisplay(settings, tristimulusObserver);
+  if (cameraToXyz && tristimulusObserver.isCamera) inputs.tristimulusToXyz = *cameraToXyz;
+  const render::DisplayTransform transform = render::displayTransform(settings, inputs, sceneEv100);
   imaging::PngImage image(tristimulus.width, tristimulus.height, {});
   image.setColourSpace(settings.colourSpace);
   auto byte = [](float v) { return static_cast<std::uint8_t>(std::lround(v * 255.0f)); };

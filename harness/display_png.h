@@ -5,6 +5,10 @@
 // a reference image.
 #pragma once
 
+#include <optional>
+
+#include <Eigen/Core>
+
 #include "imaging/float_image.h"
 #include "imaging/png_file.h"
 #include "render/frame_settings.h"
@@ -15,10 +19,10 @@ namespace prism::harness {
 
 imaging::PngImage displayPng(const render::Renderer& renderer);
 
-// `cameraLight`: the scene's light, which a camera's matrix is fitted under (render::resolveDisplay;
-// D65 without one).
+// `cameraToXyz`: a camera's matrix (render::cameraToXyz under the scene's light; its D65 fit
+// without one).
 imaging::PngImage displayImage(const imaging::FloatImage& tristimulus, const render::DisplaySettings& settings,
                                const Observer& tristimulusObserver, float sceneEv100,
-                               const Spectrum* cameraLight = nullptr);
+                               const std::optional<Eigen::Matrix3d>& cameraToXyz = std::nullopt);
 
 }  // namespace prism::harness

@@ -10,6 +10,7 @@
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfFloatAttribute.h>
+#include <OpenEXR/ImfMatrixAttribute.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
 #include <algorithm>
@@ -22,6 +23,8 @@
 #include <string_view>
 #include <utility>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -74,6 +77,28 @@ std::optional<std::int64_t> fixedExrAttributeSize(std::string_view type) {
   return std::nullopt;
 }
 
+// The camera a camera-RGB image records: both attributes or neither, a finite matrix, and only on
+// camera RGB (elsewhere the channels are not the camera's).
+std::optional<ExrCamera> readCamera(const std::filesystem::path& path, const Imf::Header& header,
+                                    ColourMeaning colour) {
+  const auto* name = header.findTypedAttribute<Imf::StringAttribute>(kCameraAttribute);
+  const auto* matrix = header.findTypedAttribute<Imf::M33dAttribute>(kCameraToXyzAttribute);
+  if (!name && !matrix) return std::nullopt;
+  if (!name || !matrix)
+    throw Error(fmt::format("{}: {} without {} (a string and an m33d, written together)", path.string(),
+                            name ? kCameraAttribute : kCameraToXyzAttribute,
+                            name ? kCameraToXyzAttribute : kCameraAttribute));
+  if (colour != ColourMeaning::CameraRgb)
+    throw Error(fmt::format("{}: {} on {} values, which are no camera's", path.string(), kCameraAttribute,
+                            colourMeaningName(colour)));
+  ExrCamera camera{name->value(), Eigen::Matrix3d()};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) camera.toXyz(r, c) = matrix->value()[r][c];
+  if (!camera.toXyz.allFinite())
+    throw Error(fmt::format("{}: {}: holds a value that is not finite", path.string(), kCameraToXyzAttribute));
+  return camera;
+}
+
 }  // namespace
 
 void writeExr(const std::filesystem::path& path, const FloatImage& image, const ExrWriteOptions& options) {
@@ -105,6 +130,14 @@ void writeExr(const std::filesystem::path& path, const FloatImage& image, const 
   if (options.displayWhite) {
     header.insert(kDisplayWhiteAttribute, Imf::FloatAttribute(static_cast<float>(*options.displayWhite)));
   }
+  if (options.camera) {
+    PRISM_CHECK(options.colour == ColourMeaning::CameraRgb && options.camera->toXyz.allFinite());
+    header.insert(kCameraAttribute, Imf::StringAttribute(options.camera->name));
+    Imath::M33d m;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) m[r][c] = options.camera->toXyz(r, c);
+    header.insert(kCameraToXyzAttribute, Imf::M33dAttribute(m));
+  }
 
   // OutputFile does not convert pixel types (InputFile does), so half gets its own copy,
   // rounded to nearest by Imath::half.
@@ -128,6 +161,12 @@ void writeExr(const std::filesystem::path& path, const FloatImage& image, const 
     throw Error(path.string() + ": cannot encode EXR: " + openExrMessage(e.what()));
   }
   writeFileAtomically(path, stream.str());
+}
+
+ExrWriteOptions tristimulusExr(const Observer& observer, double displayWhite, const Eigen::Matrix3d& cameraToXyz) {
+  ExrWriteOptions options{.colour = tristimulusMeaning(observer), .displayWhite = displayWhite};
+  if (observer.isCamera) options.camera = ExrCamera{observer.name, cameraToXyz};
+  return options;
 }
 
 void checkExrHeaderSizes(const std::filesystem::path& path) {
@@ -300,6 +339,7 @@ ExrImage readExr(const std::filesystem::path& path) {
       }
       out.displayWhite = white->value();
     }
+    out.camera = readCamera(path, header, out.colour);
     return out;
   } catch (const Error&) {
     throw;

@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 
+#include <Eigen/Core>
+
 #include "imaging/float_image.h"
 
 namespace prism::imaging {
@@ -28,12 +30,23 @@ enum class ExrChannelNames {
 inline constexpr const char* kDisplayWhiteAttribute = "prism:displayWhite";
 // "prism:part" (string): what a part of a split render says it is (batch/reference_part.h).
 inline constexpr const char* kPartAttribute = "prism:part";
+// "prism:camera" (string) and "prism:cameraToXyz" (m33d, row-major): a camera's raw RGB says which
+// camera it is and the matrix its frame is shown through (the camera's ColorChecker fit under the
+// scene's light), which makes it colorimetric: what compare measures two camera frames in.
+inline constexpr const char* kCameraAttribute = "prism:camera";
+inline constexpr const char* kCameraToXyzAttribute = "prism:cameraToXyz";
+
+struct ExrCamera {
+  std::string name;       // as `prism colour list cameras` names it
+  Eigen::Matrix3d toXyz;  // camera RGB → CIE 1931 XYZ, on the image's scale
+};
 
 struct ExrWriteOptions {
   ColourMeaning colour = ColourMeaning::LinearSrgb;
   ExrPrecision precision = ExrPrecision::Float;
   ExrChannelNames names = ExrChannelNames::FromColour;  // a 1-channel image is always "Y"
   std::optional<double> displayWhite = std::nullopt;  // written as kDisplayWhiteAttribute when set
+  std::optional<ExrCamera> camera = std::nullopt;     // with ColourMeaning::CameraRgb only
 };
 
 // ZIP-compressed scan lines, written to memory and then to `path` atomically: a reader never
@@ -42,10 +55,16 @@ struct ExrWriteOptions {
 void writeExr(const std::filesystem::path& path, const FloatImage& image,
               const ExrWriteOptions& options = {});
 
+// How a render's tristimulus under `observer` is written: its meaning (tristimulusMeaning), float,
+// the display white, and for a camera its name and `cameraToXyz`, the matrix its frame is shown
+// through (render::DisplayInputs::tristimulusToXyz; ignored for the CIE observers).
+ExrWriteOptions tristimulusExr(const Observer& observer, double displayWhite, const Eigen::Matrix3d& cameraToXyz);
+
 struct ExrImage {
   FloatImage image;
   ColourMeaning colour = ColourMeaning::LinearSrgb;
   std::optional<double> displayWhite;  // kDisplayWhiteAttribute, when the file has it
+  std::optional<ExrCamera> camera;     // kCameraAttribute and kCameraToXyzAttribute, when it has them
   // Its data window (what `image` holds) is its display window; false for a crop, an overscan, or a
   // band of a split render (a reference part's rows).
   bool wholeImage = true;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "imaging/exr_band.h"
 #include "spectral/observer.h"
 
 namespace prism::imaging {
@@ -93,6 +94,34 @@ TEST_F(Exr, TheDisplayWhiteTravelsWithTheImage) {
   EXPECT_NEAR(*white, 3932.16, 1e-3);
   writeExr(dir / "plain.exr", image);
   EXPECT_FALSE(readExr(dir / "plain.exr").displayWhite);
+}
+
+TEST_F(Exr, ACamerasRgbCarriesItsCameraAndMatrix) {
+  std::filesystem::path dir = freshDir("camera");
+  FloatImage image = ramp(3, 2, 3);
+  Eigen::Matrix3d toXyz;
+  toXyz << 0.61, 0.27, 0.08, 0.23, 0.94, -0.17, 0.01, -0.12, 1.3333333333333333;
+  writeExr(dir / "cam.exr", image, {.colour = ColourMeaning::CameraRgb, .camera = ExrCamera{"nikon_d850", toXyz}});
+  ExrImage back = readExr(dir / "cam.exr");
+  ASSERT_TRUE(back.camera);
+  EXPECT_EQ(back.camera->name, "nikon_d850");
+  EXPECT_EQ(back.camera->toXyz, toXyz);  // doubles, exactly
+  writeExr(dir / "plain.exr", image, {.colour = ColourMeaning::CameraRgb});
+  EXPECT_FALSE(readExr(dir / "plain.exr").camera);
+  // The name without its matrix (here a string where an m33d belongs) is refused, not half read.
+  ExrBand band{.width = 1, .height = 1, .rowBegin = 0, .rows = 1,
+               .attributes = {{"prism:colour", "camera-rgb"}, {kCameraAttribute, "nikon_d850"},
+                              {kCameraToXyzAttribute, "1 0 0 0 1 0 0 0 1"}},
+               .channels = {"R", "G", "B"}, .planes = {{0.5f}, {0.5f}, {0.5f}}};
+  writeExrBand(dir / "half_said.exr", band);
+  try {
+    readExr(dir / "half_said.exr");
+    FAIL() << "expected an Error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), (dir / "half_said.exr").string() +
+                                         ": prism:camera without prism:cameraToXyz (a string and an m33d, written "
+                                         "together)");
+  }
 }
 
 TEST_F(Exr, ChannelNamesAndMeaningsRoundTrip) {

@@ -1,5 +1,6 @@
 #include "render/display_transform.h"
 
+#include "core/error.h"
 #include "render/shared_shading.h"
 #include "spectral/camera_matrix.h"
 #include "spectral/colour_space.h"
@@ -17,13 +18,16 @@ glm::mat3 toGlm(const Eigen::Matrix3d& m) {
   return g;
 }
 
-// A camera's RGB → XYZ for images lit by `light`: fitted on the ColorChecker under it and scaled to
-// keep its luminance — the fit normalises camera RGB and XYZ each by its own white's green and Y,
+}  // namespace
+
+// Fitted on the ColorChecker under the light and scaled to keep its luminance — the fit normalises camera RGB and XYZ each by its own white's green and Y,
 // while the renderer scales camera RGB to match XYZ under D65 (absoluteTristimulusScale), so the
 // ratio of the two normalisations (1 under D65). A light the eye or the camera's green does not
 // see (a 790 nm LED) fits nothing: D65's matrix then, which shows the next to nothing the camera
 // sees of it as such.
-Eigen::Matrix3d cameraMatrixUnder(const Observer& camera, const Spectrum& light) {
+Eigen::Matrix3d cameraToXyz(const Observer& camera, const Spectrum* lightOrNull) {
+  PRISM_CHECK(camera.isCamera);
+  const Spectrum& light = lightOrNull ? *lightOrNull : illuminant("D65");
   const Observer& cie = cie1931Observer();
   const Spectrum& d65 = illuminant("D65");
   auto greenOverY = [&](const Spectrum& s) { return camera.integrate(s).y() / cie.integrate(s).y(); };
@@ -35,14 +39,12 @@ Eigen::Matrix3d cameraMatrixUnder(const Observer& camera, const Spectrum& light)
   return fitted(d65);
 }
 
-}  // namespace
-
 DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tristimulusObserver,
                              const Spectrum* cameraLight) {
   DisplayInputs inputs;
   inputs.colourSpace = &colourSpace(settings.colourSpace);
   if (tristimulusObserver.isCamera) {
-    inputs.tristimulusToXyz = cameraMatrixUnder(tristimulusObserver, cameraLight ? *cameraLight : illuminant("D65"));
+    inputs.tristimulusToXyz = cameraToXyz(tristimulusObserver, cameraLight);
   }
   if (settings.whiteBalance != "none") {
     // The white a surface lit by the illuminant shows: its tristimulus under this observer, or for
@@ -51,7 +53,7 @@ DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tr
     // image's matrix for another white: fitted under a narrow LED it gave D65 a negative Y.)
     const Spectrum& wb = illuminant(settings.whiteBalance);
     Eigen::Vector3d white = tristimulusObserver.integrate(wb);
-    if (tristimulusObserver.isCamera) white = cameraMatrixUnder(tristimulusObserver, wb) * white;
+    if (tristimulusObserver.isCamera) white = cameraToXyz(tristimulusObserver, &wb) * white;
     inputs.whiteBalanceXyz = white / white.y();
   }
   return inputs;
@@ -59,8 +61,7 @@ DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tr
 
 DisplayTransform displayTransform(const DisplaySettings& settings, const DisplayInputs& inputs, float sceneEv100) {
   const RgbColourSpace& display = *inputs.colourSpace;
-  const Eigen::Matrix3d& cameraToXyz = inputs.tristimulusToXyz;
-  Eigen::Matrix3d m = cameraToXyz;
+  Eigen::Matrix3d m = inputs.tristimulusToXyz;
   if (inputs.whiteBalanceXyz) {
     m = chromaticAdaptation(settings.adaptation, *inputs.whiteBalanceXyz, display.whiteXyz()) * m;
   }
@@ -70,7 +71,7 @@ DisplayTransform displayTransform(const DisplaySettings& settings, const Display
   t.displayToXyz = toGlm(display.rgbToXyz);
   t.xyzToDisplay = toGlm(display.xyzToRgb);
   t.transfer = display.transfer == Transfer::Bt2020 ? 1 : 0;
-  t.toXyz = toGlm(cameraToXyz);
+  t.toXyz = toGlm(inputs.tristimulusToXyz);
   return t;
 }
 

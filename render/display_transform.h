@@ -26,6 +26,11 @@ struct DisplayInputs {
   Eigen::Matrix3d tristimulusToXyz = Eigen::Matrix3d::Identity();  // a camera's fitted matrix, or identity
 };
 
+// A camera's raw RGB → CIE 1931 XYZ for images lit by `light` (D65 when null): its ColorChecker
+// fit under the light, scaled to keep the luminance Prism's camera RGB carries (DisplayInputs'
+// tristimulusToXyz for a camera; what its EXRs record, imaging::ExrCamera). PRISM_CHECKs isCamera.
+Eigen::Matrix3d cameraToXyz(const Observer& camera, const Spectrum* light);
+
 // `tristimulusObserver` is whose tristimulus is shown: XYZ (a CIE observer), or a camera's raw RGB,
 // which goes through its matrix fitted on the ColorChecker under `cameraLight` — the scene's light
 // (sceneEmission), D65 when none is given or it is dark. A matrix fitted under D65 turned a blue

@@ -9,7 +9,7 @@
 # - a point light's shadows and position, set by the script (the lights panel's controls),
 #   change the view;
 # - a screenshot or settings file over a file the scene reads or over the script is refused;
-# - a heat map that cannot be computed says why.
+# - a heat map that cannot be computed says why, and one camera on both sides is compared.
 # Usage: viewer_window_test.sh PRISM SCENES_DIR SCRATCH_DIR
 set -euo pipefail
 prism=$1 scenes=$2 scratch=$3
@@ -159,6 +159,11 @@ set right.observer cie1964
 set heat-map on
 frames 16
 heat-map-stats" "script.json:7: no heat map: the heat map compares CIE 1931 XYZ"
+# One camera on both sides is compared through its matrix, as `prism compare` takes two of its
+# frames (a camera's RGB was refused).
+camera=$(view "$scratch/own/textured_gltf.json" --width 64 --height 48 --script <(printf '%s\n' "set observer nikon_d850" \
+  "set split on" "set right.mode jakob-hanika" "set right.observer nikon_d850" "set right.strategy uniform" "set heat-map on" frames\ 16 heat-map-stats))
+grep -q '^heat map: mean' <<<"$camera" || { echo "one camera's heat map: $camera" >&2; exit 1; }
 # A settings file the script saves before loading it is taken as it, not refused as missing.
 view "$scratch/own/textured_gltf.json" --width 64 --height 48 --script <(printf 'save-settings %s\nload-settings %s\n' \
   "$scratch/own/saved.json" "$scratch/own/saved.json") >/dev/null

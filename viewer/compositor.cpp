@@ -94,16 +94,26 @@ void Compositor::updateHeatMap(const Camera& camera) {
   mFramesSinceHeatMap = 0;
   const render::FrameSettings& s = mLeft->settings();
   const render::FrameSettings& t = mRight->settings();
-  const auto xyz = [](const render::Renderer& r) {
-    return imaging::tristimulusMeaning(*r.context().tristimulusObserver) == imaging::ColourMeaning::Xyz;
+  // CIE 1931 XYZ on both sides, or one camera's RGB through its matrix (as `prism compare` takes it).
+  const render::FrameContext& left = mLeft->context();
+  const render::FrameContext& right = mRight->context();
+  const auto xyz = [](const render::FrameContext& c) {
+    return imaging::tristimulusMeaning(*c.tristimulusObserver) == imaging::ColourMeaning::Xyz;
   };
-  if (!xyz(*mLeft) || !xyz(*mRight)) {
-    throw Error("the heat map compares CIE 1931 XYZ: choose cie1931 on both sides (a camera's RGB or CIE 1964's "
-                "X10Y10Z10 is not it)");
+  const bool oneCamera = left.tristimulusObserver->isCamera &&
+                         left.tristimulusObserver->name == right.tristimulusObserver->name &&
+                         left.display.tristimulusToXyz.isApprox(right.display.tristimulusToXyz, 1e-9);
+  if (!(xyz(left) && xyz(right)) && !oneCamera) {
+    throw Error("the heat map compares CIE 1931 XYZ, or one camera's RGB: choose cie1931 or the same camera on both "
+                "sides (CIE 1964's X10Y10Z10 is neither)");
   }
   imaging::FloatImage a(s.width, s.height, 3), b(t.width, t.height, 3);
   a.pixels = mLeft->readMeanTristimulus();
   b.pixels = mRight->readMeanTristimulus();
+  if (oneCamera) {
+    imaging::cameraRgbToXyz(a, left.display.tristimulusToXyz);
+    imaging::cameraRgbToXyz(b, right.display.tristimulusToXyz);
+  }
   imaging::DifferenceOptions options;
   options.keepMap = true;
   imaging::ImageDifference d =
@@ -126,9 +136,9 @@ void Compositor::writeLeftExr(const std::filesystem::path& path, const Camera& c
   const render::FrameSettings& s = mLeft->settings();
   imaging::FloatImage image(s.width, s.height, 3);
   image.pixels = mLeft->readMeanTristimulus();
-  imaging::writeExr(path, image,
-                    {imaging::tristimulusMeaning(*mLeft->context().tristimulusObserver),
-                     imaging::ExrPrecision::Float, imaging::ExrChannelNames::FromColour, whiteLuminance(s, camera)});
+  const render::FrameContext& frame = mLeft->context();
+  imaging::writeExr(path, image, imaging::tristimulusExr(*frame.tristimulusObserver, whiteLuminance(s, camera),
+                                                         frame.display.tristimulusToXyz));
 }
 
 void Compositor::reloadShaders() {

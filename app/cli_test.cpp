@@ -163,6 +163,18 @@ TEST(Cli, ConvertSrgbToRec2020) {
   EXPECT_TRUE(j["inGamut"].get<bool>());
   Result back = run("colour convert --from rec2020 --to srgb --linear 0,1,0 --json");
   EXPECT_FALSE(nlohmann::json::parse(back.out)["inGamut"].get<bool>());
+  // Into ACEScg (white near D60): adapted, D65's white is ACEScg's; with none, as `chart` takes it,
+  // it stays D65's (bluer than D60: more B than R), and the XYZ is the same.
+  Result adapted = run("colour convert --from srgb --to acescg --linear 1,1,1 --json");
+  Result none = run("colour convert --from srgb --to acescg --linear 1,1,1 --json --adaptation none");
+  ASSERT_EQ(none.exitCode, 0) << none.err;
+  const nlohmann::json a = nlohmann::json::parse(adapted.out)["value"], n = nlohmann::json::parse(none.out)["value"];
+  EXPECT_NEAR(a[0].get<double>(), 1.0, 1e-6);
+  EXPECT_NEAR(a[2].get<double>(), 1.0, 1e-6);
+  EXPECT_GT(n[2].get<double>(), n[0].get<double>() + 0.05);
+  Result xyz = run("colour convert --from acescg --to xyz --linear " + std::to_string(n[0].get<double>()) + "," +
+                   std::to_string(n[1].get<double>()) + "," + std::to_string(n[2].get<double>()) + " --json");
+  EXPECT_NEAR(nlohmann::json::parse(xyz.out)["value"][0].get<double>(), 0.95047, 1e-4);  // D65's X, Y = 1
 }
 
 TEST(Cli, CctWritesACsvSpectrumAtomically) {

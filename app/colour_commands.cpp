@@ -202,7 +202,10 @@ void colourCct(const CctOptions& o) {
 void colourConvert(const ConvertOptions& o) {
   requireThree(o.values, "colour convert");
   Eigen::Vector3d in(o.values[0], o.values[1], o.values[2]);
-  Adaptation adaptation = fromOption("--adaptation", [&] { return adaptationFromName(o.adaptation); });
+  // "none", as `chart` takes it: the same XYZ in the other space, its white left as it was.
+  const std::optional<Adaptation> adaptation =
+      o.adaptation == "none" ? std::nullopt
+                             : std::optional(fromOption("--adaptation", [&] { return adaptationFromName(o.adaptation); }));
   // xyz or an RGB space; an unknown name's error lists xyz too, which colourSpace's cannot know.
   auto space = [](const std::string& name, const char* option) -> const RgbColourSpace* {
     if (name == "xyz") return nullptr;
@@ -216,7 +219,7 @@ void colourConvert(const ConvertOptions& o) {
   const RgbColourSpace* to = space(o.to, "--to");
   // XYZ carries no white: adaptation happens only between two RGB spaces' whites.
   Eigen::Matrix3d m = Eigen::Matrix3d::Identity();
-  if (from && to) m = rgbToRgb(*from, *to, adaptation);
+  if (from && to) m = adaptation ? rgbToRgb(*from, *to, *adaptation) : Eigen::Matrix3d(to->xyzToRgb * from->rgbToXyz);
   else if (from) m = from->rgbToXyz;
   else if (to) m = to->xyzToRgb;
   // The transfer functions mirrored about 0, as extended-range sRGB does: a negative or over-range

@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
   convCmd->add_option("--from", conv.from, "srgb, display-p3, rec2020, acescg, aces2065-1, xyz")->required();
   convCmd->add_option("--to", conv.to, "same choices as --from")->required();
   convCmd->add_option("values", convText, "r,g,b (encoded unless --linear) or X,Y,Z")->required();
-  convCmd->add_option("--adaptation", conv.adaptation, "bradford, cat02, von-kries: between two RGB spaces' whites (XYZ has none: a conversion to or from xyz adapts nothing)")->capture_default_str();
+  convCmd->add_option("--adaptation", conv.adaptation, "bradford, cat02, von-kries or none: between two RGB spaces' whites (XYZ has none: a conversion to or from xyz adapts nothing)")->capture_default_str();
   convCmd->add_flag("--linear", conv.linear, "values are linear, not transfer-encoded");
   convCmd->add_flag("--json", conv.json, "JSON output");
 

@@ -389,6 +389,7 @@ class Converter {
         out.vertices.push_back(v);
       }
       out.indices = std::move(idx);
+      computeZeroNormals(out);  // a zero NORMAL (the spec's are unit) from the faces around it
     }
     if (normals.empty() || tangents.empty()) computeTangents(out);
     transformMesh(out, mPlacement.transform * world);

@@ -110,6 +110,23 @@ TEST(GltfLoader, MissingNormalsAreFlatAndMissingMaterialIsTheDefault) {
   EXPECT_EQ(scene.materials[1].roughness, 1.0f);
 }
 
+// A zero NORMAL (a broken exporter's; the spec's are unit) is the faces' smooth normal: it was
+// kept, and PRT's transfer, turned about no axis, drew the lower half of a sphere black.
+TEST(GltfLoader, AZeroNormalIsTheFacesNormal) {
+  const fs::path zero = editedQuad("zero_normal", [](nlohmann::json& g) {
+    g["buffers"].push_back({{"byteLength", 48},
+                            {"uri", "data:application/octet-stream;base64,"
+                                    "AAAAAAAAAAAAAAAAAAAAAAAAAAAAAIA/AAAAAAAAAAAAAIA/AAAAAAAAAAAAAIA/"}});  // 0, +z, +z, +z
+    g["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 0}, {"byteLength", 48}});
+    g["accessors"].push_back({{"bufferView", g["bufferViews"].size() - 1}, {"componentType", 5126}, {"count", 4},
+                              {"type", "VEC3"}});
+    g["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = g["accessors"].size() - 1;
+  });
+  Scene scene;
+  appendGltf(zero, zero.parent_path(), {}, scene);
+  for (const Vertex& v : scene.meshes[0].vertices) expectNear(v.normal, {1.0f, 0.0f, 0.0f});  // +z turned by R_y(90°)
+}
+
 TEST(GltfLoader, MaterialFactorsAndTextures) {
   Scene scene;
   scene.textures.resize(1);  // indices are offset past what the scene already holds

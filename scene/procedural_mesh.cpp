@@ -209,7 +209,11 @@ void transformMesh(Mesh& mesh, const glm::mat4& m) {
     for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
 }
 
-void computeNormals(Mesh& mesh) {
+namespace {
+
+// The smooth normals of computeNormals, written to the vertices `which` picks.
+template <typename Which>
+void smoothNormals(Mesh& mesh, Which which) {
   std::vector<glm::vec3> sums(mesh.vertices.size(), glm::vec3(0.0f));
   for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
     std::uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
@@ -220,9 +224,20 @@ void computeNormals(Mesh& mesh) {
     sums[c] += face;
   }
   for (std::size_t i = 0; i < sums.size(); ++i) {
+    if (!which(mesh.vertices[i])) continue;
     float len = glm::length(sums[i]);
     mesh.vertices[i].normal = len > 0.0f ? sums[i] / len : glm::vec3(0.0f, 1.0f, 0.0f);
   }
+}
+
+}  // namespace
+
+void computeNormals(Mesh& mesh) {
+  smoothNormals(mesh, [](const Vertex&) { return true; });
+}
+
+void computeZeroNormals(Mesh& mesh) {
+  smoothNormals(mesh, [](const Vertex& v) { return v.normal == glm::vec3(0.0f); });
 }
 
 void computeTangents(Mesh& mesh) {

@@ -57,6 +57,9 @@ void transformMesh(Mesh& mesh, const glm::mat4& m);
 // Smooth vertex normals: the sum of the adjacent triangles' cross products (area-weighted),
 // normalised; +y where that sum is zero.
 void computeNormals(Mesh& mesh);
+// computeNormals' normal for the vertices whose normal is zero (a glTF exporter's broken NORMAL:
+// PRT's transfer turned its hemisphere about no axis, black below), the others kept.
+void computeZeroNormals(Mesh& mesh);
 
 // Tangents from positions, normals and uvs by per-triangle accumulation (Lengyel 2001,
 // "Computing Tangent Space Basis Vectors for an Arbitrary Mesh"): ∂p/∂u summed over the

@@ -2,7 +2,10 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -39,6 +42,27 @@ void requireCreatableFrom(const std::filesystem::path& path, std::filesystem::pa
   std::filesystem::remove(probe, ec);
 }
 
+// The temporaries of earlier writes of `path` that were killed between write and rename (SIGKILL:
+// an out-of-memory kill, a batch system's): "NAME.tmpPID" beside it, untouched for an hour — a
+// live writer's is minutes old at most, whichever machine of a cluster writes it (its PID is not
+// this machine's to ask). Best effort: what cannot be listed or removed is left.
+void removeStaleTemporaries(const std::filesystem::path& path) {
+  const std::string prefix = path.filename().string() + ".tmp";
+  const auto hourAgo = std::filesystem::file_time_type::clock::now() - std::chrono::hours(1);
+  std::error_code ec;
+  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+    if (!std::all_of(name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(),
+                     [](unsigned char c) { return std::isdigit(c) != 0; }))
+      continue;
+    std::error_code age;
+    if (entry.is_regular_file(age) && entry.last_write_time(age) < hourAgo && !age)
+      std::filesystem::remove(entry.path(), age);
+  }
+}
+
 }  // namespace
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
@@ -60,6 +84,7 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
     std::filesystem::remove(temp, ec);
     throw Error(path.string() + ": cannot write: " + why);
   }
+  removeStaleTemporaries(path);
 }
 
 void requireWritable(const std::filesystem::path& path) {

@@ -9,7 +9,8 @@ namespace prism {
 
 // Creates missing parent folders. Error naming the path when anything fails, when a folder,
 // device, pipe or socket is there (never replaced), or when the path has no file name (empty, or
-// ending in a separator); the temporary file is removed then.
+// ending in a separator); the temporary file is removed then. A write that succeeds removes the
+// temporaries of earlier writes of the path killed before their rename, an hour old or more.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
 // Before long work whose result goes to `path` (a table, a render): Error "PATH: cannot write:

@@ -4,9 +4,13 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "core/error_test_support.h"
@@ -30,6 +34,26 @@ TEST(AtomicFile, WritesReplacesAndLeavesNoTemporary) {
   int files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) files += entry.is_regular_file();
   EXPECT_EQ(files, 1);
+}
+
+// A write killed between its temporary and the rename (SIGKILL) left "NAME.tmpPID" for good: a
+// later write of the name removes those an hour old, never a fresh one (a live writer's, maybe on
+// another machine of a cluster) or another file's.
+TEST(AtomicFile, AWriteRemovesTheStaleTemporariesOfItsName) {
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "atomic_stale";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto twoHoursAgo = std::filesystem::file_time_type::clock::now() - std::chrono::hours(2);
+  for (const char* name : {"a.bin.tmp123", "a.bin.tmp456", "a.bin.tmpx", "b.bin.tmp123"}) {
+    std::ofstream(dir / name) << "left";
+    std::filesystem::last_write_time(dir / name, twoHoursAgo);
+  }
+  std::ofstream(dir / "a.bin.tmp789") << "being written";
+  writeFileAtomically(dir / "a.bin", "whole");
+  std::vector<std::string> left;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) left.push_back(entry.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"a.bin", "a.bin.tmp789", "a.bin.tmpx", "b.bin.tmp123"}));
 }
 
 TEST(AtomicFile, UnwritablePlaceIsAnErrorAndTargetIsUntouched) {

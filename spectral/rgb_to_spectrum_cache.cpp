@@ -11,6 +11,7 @@
 #include "shared_cpp.h"
 #include "spectral/colour_space.h"
 #include "core/atomic_file.h"
+#include "core/cache_folder.h"
 #include "core/error.h"
 #include "spectral/observer.h"
 #include "spectral/rgb_to_spectrum_optimiser.h"
@@ -97,8 +98,7 @@ RgbToSpectrumTable cachedRgbToSpectrumTable(
     const std::string& gamut, int resolution,
     const std::function<void(std::size_t, std::size_t)>& progress) {
   std::filesystem::path path = rgbToSpectrumCachePath(gamut, resolution);
-  if (std::filesystem::is_directory(path))  // never replaced: writeFileAtomically refuses folders
-    throw Error(path.string() + ": is a folder where the cache keeps the upsampling table; remove it");
+  requireNoFolderAtEntry(path, "the upsampling table");
   if (std::filesystem::exists(path)) {
     // A damaged entry is said so, in one line, and rebuilt below; never trusted.
     std::string damage;

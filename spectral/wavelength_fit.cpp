@@ -15,6 +15,7 @@
 #include <Eigen/Cholesky>
 
 #include "core/atomic_file.h"
+#include "core/cache_folder.h"
 #include "core/error.h"
 #include "core/fnv1a.h"
 #include "core/parallel_for.h"
@@ -417,8 +418,7 @@ FittedWavelengths cachedFitWavelengths(const WavelengthFitProblem& problem, cons
   const std::uint64_t key = fitKey(problem, obs);
   const std::filesystem::path path = cacheDirectory() / "wavelengths" / (std::to_string(key) + ".txt");
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))  // reading it would throw from the stream, not an Error
-    throw Error(path.string() + ": is a folder where the cache keeps a wavelength set; remove it");
+  requireNoFolderAtEntry(path, "a wavelength set");  // reading it would throw from the stream, not an Error
   if (std::filesystem::exists(path, ec)) {
     if (std::optional<FittedWavelengths> set = parse(path, key, problem.count, problem.minNm, problem.maxNm)) return *set;
     std::fprintf(stderr, "prism: cache entry %s is damaged (not a wavelength set of this key): refitting\n",

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -13,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/atomic_file.h"
+#include "core/cache_folder.h"
 #include "core/binary_fields.h"
 #include "core/data_files.h"
 #include "core/fnv1a.h"
@@ -71,18 +73,6 @@ std::optional<SkyRadianceGrid> parse(const std::string& bytes, std::uint64_t key
   return grid;
 }
 
-// Removes the oldest entries (by modification time) beyond kMostEntries; errors are ignored (another
-// process may be pruning too).
-void prune(const std::filesystem::path& folder) {
-  std::error_code ec;
-  std::vector<std::pair<std::filesystem::file_time_type, std::filesystem::path>> entries;
-  for (const auto& e : std::filesystem::directory_iterator(folder, ec))
-    if (e.path().extension() == ".bin") entries.emplace_back(e.last_write_time(ec), e.path());
-  if (entries.size() <= kMostEntries) return;
-  std::sort(entries.begin(), entries.end());
-  for (std::size_t i = 0; i + kMostEntries < entries.size(); ++i) std::filesystem::remove(entries[i].second, ec);
-}
-
 }  // namespace
 
 std::uint64_t skyCacheKey(const PrtSky& sky, int width, int height) {
@@ -102,6 +92,7 @@ SkyRadianceGrid cachedSky(const PrtSky& sky, int width, int height) {
   const std::uint64_t key = skyCacheKey(sky, width, height);
   const std::filesystem::path path = cacheDirectory() / "prt_sky" / fmt::format("{:016x}.bin", key);
   std::error_code ec;
+  requireNoFolderAtEntry(path, "a PRT sky");
   if (std::filesystem::exists(path, ec)) {
     if (std::optional<SkyRadianceGrid> grid = parse(readBytes(path), key, width, height)) return *grid;
     std::fprintf(stderr, "prism: cache entry %s is damaged (not a sky grid of this key): tabulating it again\n",
@@ -111,7 +102,7 @@ SkyRadianceGrid cachedSky(const PrtSky& sky, int width, int height) {
   requireWritable(path);  // before the work, not after
   SkyRadianceGrid grid = tabulateSky(sky, width, height);
   writeFileAtomically(path, serialise(grid, key));
-  prune(path.parent_path());
+  pruneCacheFolder(path.parent_path(), ".bin", kMostEntries, std::numeric_limits<std::uintmax_t>::max());
   return grid;
 }
 

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "core/atomic_file.h"
+#include "core/cache_folder.h"
 #include "core/error.h"
 #include "core/fnv1a.h"
 #include "core/parallel_for.h"
@@ -19,6 +20,11 @@
 
 namespace prism::prt {
 namespace {
+
+// The transfer cache's bound, the oldest entries going first: each bake of an edited mesh adds an
+// entry (10 MB at 100 000 vertices), which piled up for good.
+constexpr std::size_t kMostTransfers = 256;
+constexpr std::uintmax_t kMostTransferBytes = std::uintmax_t{1} << 30;
 
 constexpr char kMagic[8] = {'P', 'R', 'I', 'S', 'M', 'P', 'R', 'T'};
 constexpr std::uint32_t kVersion = 1;
@@ -190,6 +196,7 @@ CachedTransfer cachedTransfer(const PrtMesh& mesh, const BakeSettings& settings,
   std::uint64_t key = transferKey(mesh, settings);
   CachedTransfer result;
   result.file = transferCacheFile(cacheDir, key);
+  requireNoFolderAtEntry(result.file, "a PRT transfer");  // said so once, not "rebuilding" and then refused
   if (std::filesystem::exists(result.file)) {
     try {
       result.transfer = readTransferFile(result.file, key);
@@ -205,6 +212,7 @@ CachedTransfer cachedTransfer(const PrtMesh& mesh, const BakeSettings& settings,
   requireWritable(result.file);  // before the bake, not after
   result.transfer = bakeTransfer(mesh, settings, progress, threads);
   writeTransferFile(result.file, key, settings.samples, result.transfer);
+  pruneCacheFolder(result.file.parent_path(), ".bin", kMostTransfers, kMostTransferBytes);
   return result;
 }
 

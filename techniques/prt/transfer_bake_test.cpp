@@ -1,10 +1,13 @@
 // The transfer bake: against Ramamoorthi & Hanrahan's closed form on a convex object, its
 // self-shadowing, its determinism, and its cache.
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -168,6 +171,41 @@ TEST(TransferCache, AnUnwritableCacheIsRefusedBeforeTheBake) {
   bool baked = false;
   EXPECT_THROW(cachedTransfer(icosphere(1), {8, true}, dir, [&baked](std::size_t, std::size_t) { baked = true; }), Error);
   EXPECT_FALSE(baked);
+  // A folder where the entry goes is said once, before the bake: it was noted "rebuilding", then
+  // refused as "is a folder" when the bake was done.
+  std::filesystem::remove(dir / "prt");
+  std::filesystem::create_directories(transferCacheFile(dir, transferKey(icosphere(1), {8, true})));
+  std::vector<std::string> notes;
+  try {
+    cachedTransfer(icosphere(1), {8, true}, dir, [&baked](std::size_t, std::size_t) { baked = true; },
+                   [&notes](const std::string& s) { notes.push_back(s); });
+    ADD_FAILURE() << "a folder at the entry was taken";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(": is a folder where the cache keeps a PRT transfer; remove it"),
+              std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(baked);
+  EXPECT_TRUE(notes.empty());
+}
+
+// Bakes of edited meshes piled up in the cache for good: it keeps the newest within its bound.
+TEST(TransferCache, TheCacheKeepsItsNewestEntries) {
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "prt_cache_bounded";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "prt");
+  const auto old = std::filesystem::file_time_type::clock::now() - std::chrono::hours(1);
+  for (int i = 0; i < 300; ++i) {
+    const std::filesystem::path p = dir / "prt" / ("transfer-old" + std::to_string(i) + ".bin");
+    std::ofstream(p) << "an old entry";
+    std::filesystem::last_write_time(p, old + std::chrono::seconds(i));
+  }
+  const CachedTransfer made = cachedTransfer(icosphere(1), {8, true}, dir);
+  std::size_t entries = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir / "prt")) entries += e.path().extension() == ".bin";
+  EXPECT_EQ(entries, 256u);
+  EXPECT_TRUE(std::filesystem::exists(made.file));
+  EXPECT_FALSE(std::filesystem::exists(dir / "prt" / "transfer-old44.bin"));  // the oldest went
+  EXPECT_TRUE(std::filesystem::exists(dir / "prt" / "transfer-old45.bin"));
 }
 
 }  // namespace

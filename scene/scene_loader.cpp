@@ -89,7 +89,16 @@ class SceneParser {
     // read after the objects, so this is checked last).
     for (const auto& [node, key] : mObjectTechniques) {
       const TechniqueSection* section = mScene.techniques.find(key);
-      if (!section) node.fail("the scene has no '" + key + "' section to shade this object");
+      if (!section) {
+        std::string known;  // 'PRT' was told the scene lacked a section it had, as 'prt'
+        bool isTechnique = false;
+        for (const TechniqueSectionParser& technique : techniqueSectionParsers()) {
+          known += (known.empty() ? "" : ", ") + std::string(technique.key);
+          isTechnique = isTechnique || technique.key == key;
+        }
+        if (!isTechnique) node.fail("'" + key + "' is no technique (known: " + known + ")");
+        node.fail("the scene has no '" + key + "' section to shade this object");
+      }
       if (!section->shadesObjects()) node.fail("'" + key + "' does not shade objects");
     }
     applyTechniqueLights(mScene);

@@ -153,6 +153,8 @@ TEST_F(SceneFolder, PrtObjectsNameTheTechniqueAndItsSectionIsChecked) {
             orphan.string() + ": /objects/0/technique: the scene has no 'prt' section to shade this object");
   EXPECT_EQ(errorOf([&] { loadScene(orphan, {"objects.0.technique=water"}); }),
             orphan.string() + ": /objects/0/technique: 'water' does not shade objects");
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(orphan, {"objects.0.technique=PRT"}); }),
+                         orphan.string() + ": /objects/0/technique: 'PRT' is no technique (known: "));
 }
 
 // The viewer's PRT panel switches the spectral sky's sun disc: the sun is the scene's light, so

@@ -586,6 +586,8 @@ TEST(Cli, ReferenceWritesWhatCompareReads) {
   EXPECT_EQ(cameraPng.err.find("warning"), std::string::npos) << cameraPng.err;
   Result cameraPart = run("reference " + blue + " -o " + (dir / "cam_part.exr").string() + tiny + " --spp 2 --samples 0:2");
   ASSERT_EQ(cameraPart.exitCode, 0) << cameraPart.err;
+  Result again = run("reference " + blue + " -o " + (dir / "cam_part.exr").string() + tiny + " --spp 2 --samples 0:2");
+  EXPECT_NE(again.out.find("complete (rows 0–8, samples 0:2 of 2), skipped"), std::string::npos) << again.out;
   for (const char* merge : {"cam_merged.png", "cam_merged.exr"}) {
     Result merged = run("merge " + (dir / "cam_part.exr").string() + " -o " + (dir / merge).string());
     ASSERT_EQ(merged.exitCode, 0) << merged.err;
@@ -600,6 +602,10 @@ TEST(Cli, ReferenceWritesWhatCompareReads) {
   ASSERT_EQ(cameraCmp.exitCode, 0) << cameraCmp.err;
   EXPECT_NE(cameraCmp.out.find("nikon_d850's raw RGB, compared in CIE 1931 XYZ through its matrix"), std::string::npos)
       << cameraCmp.out;
+  Result cameraJson = run("compare " + (dir / "cam_merged.exr").string() + " " + (dir / "cam_raster.exr").string() +
+                          " --json");
+  ASSERT_EQ(cameraJson.exitCode, 0) << cameraJson.err;
+  EXPECT_EQ(nlohmann::json::parse(cameraJson.out)["camera"], "nikon_d850");
   Result canon = run("render " + blue + " -o " + (dir / "canon.exr").string() + " --width 16 --height 9 --camera canon_eos_5d");
   ASSERT_EQ(canon.exitCode, 0) << canon.err;
   expectOneLineError("compare " + (dir / "cam_raster.exr").string() + " " + (dir / "canon.exr").string(),

@@ -203,9 +203,15 @@ void colourConvert(const ConvertOptions& o) {
   requireThree(o.values, "colour convert");
   Eigen::Vector3d in(o.values[0], o.values[1], o.values[2]);
   // "none", as `chart` takes it: the same XYZ in the other space, its white left as it was.
-  const std::optional<Adaptation> adaptation =
-      o.adaptation == "none" ? std::nullopt
-                             : std::optional(fromOption("--adaptation", [&] { return adaptationFromName(o.adaptation); }));
+  std::optional<Adaptation> adaptation;
+  if (o.adaptation != "none") {
+    try {
+      adaptation = adaptationFromName(o.adaptation);
+    } catch (const Error&) {
+      throw Error(fmt::format("--adaptation: unknown chromatic adaptation '{}' (known: bradford, cat02, von-kries, none)",
+                              o.adaptation));
+    }
+  }
   // xyz or an RGB space; an unknown name's error lists xyz too, which colourSpace's cannot know.
   auto space = [](const std::string& name, const char* option) -> const RgbColourSpace* {
     if (name == "xyz") return nullptr;

@@ -65,14 +65,16 @@ void runReferencePart(const ReferenceOptions& o, const Scene& scene, const refer
   }
   if (!o.variance.empty()) throw Error("--variance: a part holds its variance; name the file to `prism merge`");
   const reference::ReferenceRegion r = region(o, settings);
+  const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   batch::ReferencePartHeader header = batch::partHeader(o.scene, o.sets, scene, settings, r, ev100);
+  header.cameraToXyz = sceneCameraToXyz(scene, table, settings.observer);  // a complete part's must be this too
   const std::string what = fmt::format("rows {}–{}, samples {}:{} of {}", r.rowBegin, r.rowEnd - 1, r.sampleBegin,
                                        r.sampleEnd, settings.samplesPerPixel);
   std::error_code ec;
   if (std::filesystem::exists(o.output, ec)) {
     try {
       const batch::ReferencePartHeader existing = batch::readReferencePart(o.output).header;
-      if (existing.identity() == header.identity() && existing.region == r) {
+      if (existing.identity() == header.identity() && existing.region == r && existing.cameraToXyz == header.cameraToXyz) {
         fmt::print("{}: complete ({}), skipped\n", o.output.string(), what);
         return;
       }
@@ -83,12 +85,10 @@ void runReferencePart(const ReferenceOptions& o, const Scene& scene, const refer
   }
   requireWritable(o.output);
   requireNotSceneInput(o.output, scene);
-  const RgbToSpectrumTable& table = harness::upsamplingTable(scene);
   harness::ProgressBar bar("tracing " + o.output.filename().string());
   reference::ReferenceImage image = reference::renderReference(
       scene, table, settings, r, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
   imaging::requireFiniteOutput(image.tristimulus, o.output.string());
-  header.cameraToXyz = sceneCameraToXyz(scene, table, settings.observer);
   batch::writeReferencePart(o.output, header, image);
   fmt::print("wrote {} ({})\n", o.output.string(), what);
 }

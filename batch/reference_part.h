@@ -41,8 +41,9 @@ struct ReferencePartHeader {
   float ev100 = 0.0f;      // the exposure of the merged image's display white and PNG
   reference::ReferenceRegion region;
   // A camera's matrix under the scene's light (render::cameraToXyz), which its merged image is
-  // shown and compared through; none for the CIE observers. Set before writing: the scene and the
-  // observer, which the identity holds, decide it.
+  // shown and compared through; none for the CIE observers. The caller sets it (partHeader does
+  // not: it needs the upsampling table); the scene and the observer, which the identity holds,
+  // decide it.
   std::optional<Eigen::Matrix3d> cameraToXyz;
 
   // What must be equal for two parts to be of one render: (name, value) pairs, in the order a

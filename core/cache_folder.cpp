@@ -1,6 +1,8 @@
 #include "core/cache_folder.h"
 
 #include <algorithm>
+#include <cctype>
+#include <functional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -8,6 +10,16 @@
 #include "core/error.h"
 
 namespace prism {
+namespace {
+
+bool isEntryName(std::string_view name, std::string_view prefix, std::string_view extension) {
+  if (name.size() <= prefix.size() + extension.size() || !name.starts_with(prefix) || !name.ends_with(extension))
+    return false;
+  const std::string_view key = name.substr(prefix.size(), name.size() - prefix.size() - extension.size());
+  return std::all_of(key.begin(), key.end(), [](unsigned char c) { return std::isxdigit(c) != 0; });
+}
+
+}  // namespace
 
 void requireNoFolderAtEntry(const std::filesystem::path& entry, std::string_view what) {
   std::error_code ec;
@@ -15,14 +27,19 @@ void requireNoFolderAtEntry(const std::filesystem::path& entry, std::string_view
     throw Error(entry.string() + ": is a folder where the cache keeps " + std::string(what) + "; remove it");
 }
 
-void pruneCacheFolder(const std::filesystem::path& folder, std::string_view extension, std::size_t maxEntries,
-                      std::uintmax_t maxBytes) {
+void touchCacheEntry(const std::filesystem::path& entry) {
+  std::error_code ec;  // a read-only cache is still read
+  std::filesystem::last_write_time(entry, std::filesystem::file_time_type::clock::now(), ec);
+}
+
+void pruneCacheFolder(const std::filesystem::path& folder, std::string_view prefix, std::string_view extension,
+                      std::size_t maxEntries, std::uintmax_t maxBytes) {
   std::error_code ec;
   std::vector<std::tuple<std::filesystem::file_time_type, std::uintmax_t, std::filesystem::path>> entries;
-  for (const auto& e : std::filesystem::directory_iterator(folder, ec)) {
+  for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
     std::error_code kind;
-    if (e.path().extension() == extension && e.is_regular_file(kind))
-      entries.emplace_back(e.last_write_time(kind), e.file_size(kind), e.path());
+    if (isEntryName(it->path().filename().string(), prefix, extension) && it->is_regular_file(kind))
+      entries.emplace_back(it->last_write_time(kind), it->file_size(kind), it->path());
   }
   std::sort(entries.begin(), entries.end(), std::greater<>());  // newest first
   std::uintmax_t bytes = 0;

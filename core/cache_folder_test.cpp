@@ -27,7 +27,8 @@ std::vector<std::string> names(const std::filesystem::path& dir) {
   return out;
 }
 
-// Entries "e0.bin" (oldest) … of `bytes` each, a minute apart, and one file of another kind.
+// Entries "e0.bin" (oldest) … of `bytes` each, a minute apart, and files the cache did not name:
+// another extension, another prefix, a key that is no hex number.
 void entries(const std::filesystem::path& dir, int count, std::size_t bytes) {
   const auto now = std::filesystem::file_time_type::clock::now();
   for (int i = 0; i < count; ++i) {
@@ -35,19 +36,22 @@ void entries(const std::filesystem::path& dir, int count, std::size_t bytes) {
     std::ofstream(p) << std::string(bytes, 'x');
     std::filesystem::last_write_time(p, now - std::chrono::minutes(count - i));
   }
-  std::ofstream(dir / "old.txt") << "not an entry";
-  std::filesystem::last_write_time(dir / "old.txt", now - std::chrono::hours(9));
+  for (const char* other : {"old.txt", "mine.bin", "ezz.bin"}) {
+    std::ofstream(dir / other) << "not an entry";
+    std::filesystem::last_write_time(dir / other, now - std::chrono::hours(9));
+  }
 }
 
 TEST(CacheFolder, PruningKeepsTheNewestWithinBothBounds) {
   const std::filesystem::path dir = freshFolder("cache_prune");
   entries(dir, 5, 100);
-  pruneCacheFolder(dir, ".bin", 3, 1000);
-  EXPECT_EQ(names(dir), (std::vector<std::string>{"e2.bin", "e3.bin", "e4.bin", "old.txt"}));
-  pruneCacheFolder(dir, ".bin", 10, 250);  // 250 bytes: two of 100
-  EXPECT_EQ(names(dir), (std::vector<std::string>{"e3.bin", "e4.bin", "old.txt"}));
-  pruneCacheFolder(dir, ".bin", 10, 10);  // the newest stays, whatever its size
-  EXPECT_EQ(names(dir), (std::vector<std::string>{"e4.bin", "old.txt"}));
+  pruneCacheFolder(dir, "e", ".bin", 3, 1000);
+  EXPECT_EQ(names(dir), (std::vector<std::string>{"e2.bin", "e3.bin", "e4.bin", "ezz.bin", "mine.bin", "old.txt"}));
+  touchCacheEntry(dir / "e2.bin");  // read: the least recently used is e3 now
+  pruneCacheFolder(dir, "e", ".bin", 10, 250);  // 250 bytes: two of 100
+  EXPECT_EQ(names(dir), (std::vector<std::string>{"e2.bin", "e4.bin", "ezz.bin", "mine.bin", "old.txt"}));
+  pruneCacheFolder(dir, "e", ".bin", 10, 10);  // the newest stays, whatever its size
+  EXPECT_EQ(names(dir), (std::vector<std::string>{"e2.bin", "ezz.bin", "mine.bin", "old.txt"}));
 }
 
 TEST(CacheFolder, AFolderWhereAnEntryGoesIsRefused) {

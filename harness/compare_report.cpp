@@ -29,10 +29,11 @@ struct Loaded {
   imaging::PngImage png;
   imaging::ExrImage exr;
   bool linear = false;
-  std::optional<imaging::ExrCamera> camera;  // a camera's raw RGB, now in `exr` as XYZ through its matrix
   imaging::DifferenceInput input() const {
-    return linear ? imaging::linearInput(exr.image, exr.colour, exr.displayWhite.value_or(1.0))
-                  : imaging::png8Input(png);
+    if (!linear) return imaging::png8Input(png);
+    const double white = exr.displayWhite.value_or(1.0);
+    return exr.camera ? imaging::cameraInput(exr.image, exr.camera->toXyz, white)
+                      : imaging::linearInput(exr.image, exr.colour, white);
   }
 };
 
@@ -40,39 +41,35 @@ struct Loaded {
 std::string_view colourRemedy(imaging::ColourMeaning colour) {
   switch (colour) {
     case imaging::ColourMeaning::Xyz1964: return "render it with --observer cie1931";
-    case imaging::ColourMeaning::CameraRgb:  // taken with its camera (convertCamera)
     case imaging::ColourMeaning::OtherRgb:
       return "RGB of primaries Prism does not know: a nebula's filter palette (nebula render --filters cie1931 "
              "writes XYZ), a reference's --variance (squared units, no colour) or a foreign EXR";
     case imaging::ColourMeaning::Xyz:
-    case imaging::ColourMeaning::LinearSrgb: break;  // taken
+    case imaging::ColourMeaning::LinearSrgb:
+    case imaging::ColourMeaning::CameraRgb: break;  // taken (a camera's with its matrix: requireCamera)
   }
   PRISM_CHECK(false);
   return "";
 }
 
-// A camera's raw RGB into CIE 1931 XYZ through the matrix its frame is shown through, which the
-// file records: the camera's ColorChecker fit under the scene's light (render::cameraToXyz).
-void convertCamera(const std::filesystem::path& path, Loaded& l) {
-  if (!l.exr.camera)
+// A camera's raw RGB is compared in CIE 1931 XYZ through the matrix its frame is shown through,
+// which the file records: the camera's ColorChecker fit under the scene's light.
+void requireCamera(const std::filesystem::path& path, const imaging::ExrImage& exr) {
+  if (!exr.camera)
     throw Error(fmt::format("{}: a camera's raw RGB that does not say which camera and matrix ({}, {}): render it "
                             "again with this Prism", path.string(), imaging::kCameraAttribute,
                             imaging::kCameraToXyzAttribute));
-  imaging::cameraRgbToXyz(l.exr.image, l.exr.camera->toXyz);
-  l.exr.colour = imaging::ColourMeaning::Xyz;
-  l.camera = l.exr.camera;
 }
 
 // Two cameras' frames are compared in one camera's terms: both sides that camera's RGB, through
 // one matrix (a frame of another scene's light has another), or neither.
 void requireOneCamera(const CompareOptions& o, const Loaded& reference, const Loaded& test) {
-  const std::optional<imaging::ExrCamera>& a = reference.camera;
-  const std::optional<imaging::ExrCamera>& b = test.camera;
+  const std::optional<imaging::ExrCamera>& a = reference.exr.camera;
+  const std::optional<imaging::ExrCamera>& b = test.exr.camera;
   if (!a && !b) return;
-  const auto what = [](const Loaded& l) {
-    return l.camera ? l.camera->name + "'s raw RGB"
-                    : !l.linear ? std::string("a display image")
-                                : std::string(imaging::colourMeaningName(l.exr.colour)) + " values";
+  const auto what = [](const Loaded& l) {  // both EXRs: an EXR and a PNG were refused first
+    return l.exr.camera ? l.exr.camera->name + "'s raw RGB"
+                        : std::string(imaging::colourMeaningName(l.exr.colour)) + " values";
   };
   if (!a || !b || a->name != b->name)
     throw Error(fmt::format("{} holds {} and {} {}: compare a camera's frames with the same camera's",
@@ -90,7 +87,7 @@ Loaded load(const std::filesystem::path& path, const std::optional<double>& whit
     l.exr = imaging::readExr(path);
     if (l.exr.colour != imaging::ColourMeaning::Xyz && l.exr.colour != imaging::ColourMeaning::LinearSrgb &&
         l.exr.colour != imaging::ColourMeaning::CameraRgb) {
-      throw Error(fmt::format("{}: holds {} values; compare takes CIE 1931 XYZ or linear sRGB ({})", path.string(),
+      throw Error(fmt::format("{}: holds {} values; compare takes CIE 1931 XYZ, linear sRGB or a camera's RGB ({})", path.string(),
                               imaging::colourMeaningName(l.exr.colour), colourRemedy(l.exr.colour)));
     }
     // A reference render's part: a band of rows (the rest of the image left out), or some of each
@@ -111,7 +108,7 @@ Loaded load(const std::filesystem::path& path, const std::optional<double>& whit
       throw Error(fmt::format("{}: pixel ({}, {}) holds {}: compare takes finite images", path.string(), bad.firstX,
                               bad.firstY, bad.firstValue));
     }
-    if (l.exr.colour == imaging::ColourMeaning::CameraRgb) convertCamera(path, l);
+    if (l.exr.colour == imaging::ColourMeaning::CameraRgb) requireCamera(path, l.exr);
   } else {
     l.png = imaging::readPng8(path);
   }
@@ -187,13 +184,13 @@ void runCompare(const CompareOptions& o) {
                         {"p99_delta_e", s.p99DeltaE},     {"max_delta_e", s.maxDeltaE},
                         {"threshold_delta_e", s.thresholdDeltaE}, {"fraction_above", s.fractionAbove},
                         {"mae_8bit", s.mae8},             {"relative_error", s.relativeError}};
-    if (reference.camera) j["camera"] = reference.camera->name;
+    if (reference.exr.camera) j["camera"] = reference.exr.camera->name;
     fmt::print("{}\n", j.dump(2));
     return;
   }
   fmt::print("{} vs {} ({} pixels)\n", o.reference.string(), o.test.string(), s.pixelCount);  // as given, as errors say
-  if (reference.camera)
-    fmt::print("{}'s raw RGB, compared in CIE 1931 XYZ through its matrix ({})\n", reference.camera->name,
+  if (reference.exr.camera)
+    fmt::print("{}'s raw RGB, compared in CIE 1931 XYZ through its matrix ({})\n", reference.exr.camera->name,
                imaging::kCameraToXyzAttribute);
   fmt::print("CIEDE2000  mean {:.4f}  median {:.4f}  p95 {:.4f}  p99 {:.4f}  max {:.4f}\n", s.meanDeltaE,
              s.medianDeltaE, s.p95DeltaE, s.p99DeltaE, s.maxDeltaE);

@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -83,6 +84,12 @@ std::optional<ExrCamera> readCamera(const std::filesystem::path& path, const Imf
                                     ColourMeaning colour) {
   const auto* name = header.findTypedAttribute<Imf::StringAttribute>(kCameraAttribute);
   const auto* matrix = header.findTypedAttribute<Imf::M33dAttribute>(kCameraToXyzAttribute);
+  for (const auto& [attribute, type, found] : {std::tuple{kCameraAttribute, "string", name != nullptr},
+                                               std::tuple{kCameraToXyzAttribute, "m33d", matrix != nullptr}}) {
+    const Imf::Header::ConstIterator any = header.find(attribute);
+    if (!found && any != header.end())  // a part's string matrix in a whole image, say
+      throw Error(fmt::format("{}: {} is of type {}, not {}", path.string(), attribute, any.attribute().typeName(), type));
+  }
   if (!name && !matrix) return std::nullopt;
   if (!name || !matrix)
     throw Error(fmt::format("{}: {} without {} (a string and an m33d, written together)", path.string(),

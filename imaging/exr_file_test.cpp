@@ -108,19 +108,23 @@ TEST_F(Exr, ACamerasRgbCarriesItsCameraAndMatrix) {
   EXPECT_EQ(back.camera->toXyz, toXyz);  // doubles, exactly
   writeExr(dir / "plain.exr", image, {.colour = ColourMeaning::CameraRgb});
   EXPECT_FALSE(readExr(dir / "plain.exr").camera);
-  // The name without its matrix (here a string where an m33d belongs) is refused, not half read.
+  // A matrix of another type (a part's string), or the name without its matrix, is refused.
   ExrBand band{.width = 1, .height = 1, .rowBegin = 0, .rows = 1,
                .attributes = {{"prism:colour", "camera-rgb"}, {kCameraAttribute, "nikon_d850"},
                               {kCameraToXyzAttribute, "1 0 0 0 1 0 0 0 1"}},
                .channels = {"R", "G", "B"}, .planes = {{0.5f}, {0.5f}, {0.5f}}};
+  writeExrBand(dir / "string.exr", band);
+  band.attributes.erase(kCameraToXyzAttribute);
   writeExrBand(dir / "half_said.exr", band);
-  try {
-    readExr(dir / "half_said.exr");
-    FAIL() << "expected an Error";
-  } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), (dir / "half_said.exr").string() +
-                                         ": prism:camera without prism:cameraToXyz (a string and an m33d, written "
-                                         "together)");
+  for (const auto& [file, message] :
+       {std::pair{"string.exr", ": prism:cameraToXyz is of type string, not m33d"},
+        std::pair{"half_said.exr", ": prism:camera without prism:cameraToXyz (a string and an m33d, written together)"}}) {
+    try {
+      readExr(dir / file);
+      ADD_FAILURE() << file << " was read";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), (dir / file).string() + message);
+    }
   }
 }
 

@@ -48,15 +48,6 @@ FloatImage::FloatImage(int width_, int height_, int channels_, float fill)
   pixels.assign(pixelCount() * static_cast<std::size_t>(channels), fill);
 }
 
-void cameraRgbToXyz(FloatImage& image, const Eigen::Matrix3d& cameraToXyz) {
-  PRISM_CHECK(image.channels >= 3);
-  for (std::size_t p = 0; p < image.pixelCount(); ++p) {
-    float* pixel = &image.pixels[p * static_cast<std::size_t>(image.channels)];
-    const Eigen::Vector3d xyz = cameraToXyz * Eigen::Vector3d(pixel[0], pixel[1], pixel[2]);
-    for (int c = 0; c < 3; ++c) pixel[c] = static_cast<float>(xyz[c]);
-  }
-}
-
 NonFinitePixels nonFinitePixels(const FloatImage& image) {
   NonFinitePixels found;
   const std::size_t channels = static_cast<std::size_t>(image.channels);

@@ -49,11 +49,6 @@ struct FloatImage {
   float at(int x, int y, int c) const { return pixels[index(x, y, c)]; }
 };
 
-// A camera's raw RGB into CIE 1931 XYZ through its matrix (render::cameraToXyz, which its EXRs
-// record), in place, alpha untouched: what `prism compare` and the viewer's heat map measure two
-// frames of one camera in. PRISM_CHECKs 3 or 4 channels.
-void cameraRgbToXyz(FloatImage& image, const Eigen::Matrix3d& cameraToXyz);
-
 // The pixels of an image that hold a NaN or an infinity in any channel: how many, and the first
 // (row-major) with its first such value. What refuses to write a render (app/render_commands.cpp)
 // or to compare an image (harness/compare_report.cpp) that the float pipeline did not carry.

@@ -35,9 +35,10 @@ class PixelReader {
       for (int v = 0; v < 256; ++v) mDecode[v] = mDisplay.decode(Eigen::Vector3d::Constant(v / 255.0)).x();
       return;
     }
-    if (input.colour != ColourMeaning::LinearSrgb && input.colour != ColourMeaning::Xyz)
+    if (input.colour != ColourMeaning::LinearSrgb && input.colour != ColourMeaning::Xyz &&
+        input.colour != ColourMeaning::CameraRgb)
       throw Error("cannot compare a " + std::string(colourMeaningName(input.colour)) +
-                  " image: only linear-srgb and xyz have a colorimetric meaning here");
+                  " image: only linear-srgb, xyz and a camera's RGB with its matrix have a colorimetric meaning here");
     if (input.linear->channels < 3) throw Error("cannot compare a 1-channel image as colour");
     // A caller's image whose pixels do not fill it was read past its end (a mean of 100, no error).
     const FloatImage& image = *input.linear;
@@ -80,9 +81,9 @@ class PixelReader {
     const FloatImage& image = *mInput.linear;
     Eigen::Vector3d value(image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2));
     value /= mInput.whiteLuminance;
-    if (mInput.colour == ColourMeaning::Xyz) {
-      p.xyz = value;
-      p.linear = mSrgb.xyzToRgb * value;
+    if (mInput.colour == ColourMeaning::Xyz || mInput.colour == ColourMeaning::CameraRgb) {
+      p.xyz = mInput.colour == ColourMeaning::Xyz ? value : Eigen::Vector3d(mInput.cameraToXyz * value);
+      p.linear = mSrgb.xyzToRgb * p.xyz;
     } else {
       p.linear = value;
       p.xyz = mSrgb.rgbToXyz * value;

@@ -17,6 +17,8 @@
 #include <cstddef>
 #include <span>
 
+#include <Eigen/Core>
+
 #include "imaging/float_image.h"
 #include "imaging/png_file.h"
 
@@ -27,13 +29,21 @@ namespace prism::imaging {
 struct DifferenceInput {
   const PngImage* srgb8 = nullptr;                   // 8-bit display-encoded (PngImage::colourSpace), or
   const FloatImage* linear = nullptr;                // a linear image with 3 or 4 channels, and then:
-  ColourMeaning colour = ColourMeaning::LinearSrgb;  // LinearSrgb or Xyz (others are an Error)
+  ColourMeaning colour = ColourMeaning::LinearSrgb;  // LinearSrgb, Xyz or CameraRgb (others are an Error)
   double whiteLuminance = 1.0;  // the value of white: Y_white for XYZ (e.g. in cd/m²), R=G=B for sRGB
+  // CameraRgb's into CIE 1931 XYZ (render::cameraToXyz, which its EXRs record: ExrCamera).
+  Eigen::Matrix3d cameraToXyz = Eigen::Matrix3d::Identity();
 };
 inline DifferenceInput png8Input(const PngImage& image) { return {.srgb8 = &image}; }
 inline DifferenceInput linearInput(const FloatImage& image, ColourMeaning colour,
                                    double whiteLuminance = 1.0) {
   return {.linear = &image, .colour = colour, .whiteLuminance = whiteLuminance};
+}
+// A camera's raw RGB, compared in CIE 1931 XYZ through its matrix.
+inline DifferenceInput cameraInput(const FloatImage& image, const Eigen::Matrix3d& cameraToXyz,
+                                   double whiteLuminance = 1.0) {
+  return {.linear = &image, .colour = ColourMeaning::CameraRgb, .whiteLuminance = whiteLuminance,
+          .cameraToXyz = cameraToXyz};
 }
 
 struct DifferenceOptions {

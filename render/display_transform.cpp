@@ -20,11 +20,11 @@ glm::mat3 toGlm(const Eigen::Matrix3d& m) {
 
 }  // namespace
 
-// Fitted on the ColorChecker under the light and scaled to keep its luminance — the fit normalises camera RGB and XYZ each by its own white's green and Y,
-// while the renderer scales camera RGB to match XYZ under D65 (absoluteTristimulusScale), so the
-// ratio of the two normalisations (1 under D65). A light the eye or the camera's green does not
-// see (a 790 nm LED) fits nothing: D65's matrix then, which shows the next to nothing the camera
-// sees of it as such.
+// Fitted on the ColorChecker under the light and scaled to keep its luminance — the fit
+// normalises camera RGB and XYZ each by its own white's green and Y, while the renderer scales
+// camera RGB to match XYZ under D65 (absoluteTristimulusScale), so the ratio of the two
+// normalisations (1 under D65). A light the eye or the camera's green does not see (a 790 nm LED)
+// fits nothing: D65's matrix then, which shows the next to nothing the camera sees of it as such.
 Eigen::Matrix3d cameraToXyz(const Observer& camera, const Spectrum* lightOrNull) {
   PRISM_CHECK(camera.isCamera);
   const Spectrum& light = lightOrNull ? *lightOrNull : illuminant("D65");

@@ -110,15 +110,14 @@ void Compositor::updateHeatMap(const Camera& camera) {
   imaging::FloatImage a(s.width, s.height, 3), b(t.width, t.height, 3);
   a.pixels = mLeft->readMeanTristimulus();
   b.pixels = mRight->readMeanTristimulus();
-  if (oneCamera) {
-    imaging::cameraRgbToXyz(a, left.display.tristimulusToXyz);
-    imaging::cameraRgbToXyz(b, right.display.tristimulusToXyz);
-  }
+  const auto input = [&](const imaging::FloatImage& image, const render::FrameContext& c, double white) {
+    return oneCamera ? imaging::cameraInput(image, c.display.tristimulusToXyz, white)
+                     : imaging::linearInput(image, imaging::ColourMeaning::Xyz, white);
+  };
   imaging::DifferenceOptions options;
   options.keepMap = true;
-  imaging::ImageDifference d =
-      imaging::compareImages(imaging::linearInput(a, imaging::ColourMeaning::Xyz, whiteLuminance(s, camera)),
-                             imaging::linearInput(b, imaging::ColourMeaning::Xyz, whiteLuminance(t, camera)), options);
+  imaging::ImageDifference d = imaging::compareImages(input(a, left, whiteLuminance(s, camera)),
+                                                      input(b, right, whiteLuminance(t, camera)), options);
   mHeatStats = d.stats;
   mHeatError.clear();
   imaging::PngImage heat = imaging::heatMap(d.deltaEMap, {.maxDeltaE = 5.0, .legend = true});

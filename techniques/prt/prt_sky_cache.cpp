@@ -1,14 +1,11 @@
 #include "techniques/prt/prt_sky_cache.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <optional>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include <fmt/format.h>
 
@@ -94,7 +91,10 @@ SkyRadianceGrid cachedSky(const PrtSky& sky, int width, int height) {
   std::error_code ec;
   requireNoFolderAtEntry(path, "a PRT sky");
   if (std::filesystem::exists(path, ec)) {
-    if (std::optional<SkyRadianceGrid> grid = parse(readBytes(path), key, width, height)) return *grid;
+    if (std::optional<SkyRadianceGrid> grid = parse(readBytes(path), key, width, height)) {
+      touchCacheEntry(path);
+      return *grid;
+    }
     std::fprintf(stderr, "prism: cache entry %s is damaged (not a sky grid of this key): tabulating it again\n",
                  path.string().c_str());
   }
@@ -102,7 +102,7 @@ SkyRadianceGrid cachedSky(const PrtSky& sky, int width, int height) {
   requireWritable(path);  // before the work, not after
   SkyRadianceGrid grid = tabulateSky(sky, width, height);
   writeFileAtomically(path, serialise(grid, key));
-  pruneCacheFolder(path.parent_path(), ".bin", kMostEntries, std::numeric_limits<std::uintmax_t>::max());
+  pruneCacheFolder(path.parent_path(), "", ".bin", kMostEntries, std::numeric_limits<std::uintmax_t>::max());
   return grid;
 }
 

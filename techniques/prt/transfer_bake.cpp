@@ -21,10 +21,11 @@
 namespace prism::prt {
 namespace {
 
-// The transfer cache's bound, the oldest entries going first: each bake of an edited mesh adds an
-// entry (10 MB at 100 000 vertices), which piled up for good.
+// The transfer cache's bound, the least recently used entries going first: each bake of an edited
+// mesh adds an entry (10 MB at 100 000 vertices), which piled up for good. A scene whose transfers
+// hold more than this bakes some again at every run.
 constexpr std::size_t kMostTransfers = 256;
-constexpr std::uintmax_t kMostTransferBytes = std::uintmax_t{1} << 30;
+constexpr std::uintmax_t kMostTransferBytes = std::uintmax_t{4} << 30;
 
 constexpr char kMagic[8] = {'P', 'R', 'I', 'S', 'M', 'P', 'R', 'T'};
 constexpr std::uint32_t kVersion = 1;
@@ -202,6 +203,7 @@ CachedTransfer cachedTransfer(const PrtMesh& mesh, const BakeSettings& settings,
       result.transfer = readTransferFile(result.file, key);
       if (result.transfer.size() == mesh.positions.size()) {
         result.fromCache = true;
+        touchCacheEntry(result.file);
         return result;
       }
       if (note) note(result.file.string() + ": vertex count differs from the mesh; rebuilding");
@@ -212,7 +214,7 @@ CachedTransfer cachedTransfer(const PrtMesh& mesh, const BakeSettings& settings,
   requireWritable(result.file);  // before the bake, not after
   result.transfer = bakeTransfer(mesh, settings, progress, threads);
   writeTransferFile(result.file, key, settings.samples, result.transfer);
-  pruneCacheFolder(result.file.parent_path(), ".bin", kMostTransfers, kMostTransferBytes);
+  pruneCacheFolder(result.file.parent_path(), "transfer-", ".bin", kMostTransfers, kMostTransferBytes);
   return result;
 }
 

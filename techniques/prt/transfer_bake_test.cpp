@@ -4,8 +4,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -188,24 +190,32 @@ TEST(TransferCache, AnUnwritableCacheIsRefusedBeforeTheBake) {
   EXPECT_TRUE(notes.empty());
 }
 
-// Bakes of edited meshes piled up in the cache for good: it keeps the newest within its bound.
+// Bakes of edited meshes piled up in the cache for good: it keeps the newest within its bound, and
+// nothing of the user's in a folder of their choosing (--cache DIR).
 TEST(TransferCache, TheCacheKeepsItsNewestEntries) {
   std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "prt_cache_bounded";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir / "prt");
   const auto old = std::filesystem::file_time_type::clock::now() - std::chrono::hours(1);
+  auto entry = [&](int i) {
+    std::ostringstream name;
+    name << "transfer-" << std::hex << std::setw(16) << std::setfill('0') << i << ".bin";
+    return dir / "prt" / name.str();
+  };
   for (int i = 0; i < 300; ++i) {
-    const std::filesystem::path p = dir / "prt" / ("transfer-old" + std::to_string(i) + ".bin");
-    std::ofstream(p) << "an old entry";
-    std::filesystem::last_write_time(p, old + std::chrono::seconds(i));
+    std::ofstream(entry(i)) << "an old entry";
+    std::filesystem::last_write_time(entry(i), old + std::chrono::seconds(i));
   }
+  std::ofstream(dir / "prt" / "mine.bin") << "the user's";
+  std::filesystem::last_write_time(dir / "prt" / "mine.bin", old);
   const CachedTransfer made = cachedTransfer(icosphere(1), {8, true}, dir);
   std::size_t entries = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir / "prt")) entries += e.path().extension() == ".bin";
-  EXPECT_EQ(entries, 256u);
+  EXPECT_EQ(entries, 257u);  // 256 and the user's
   EXPECT_TRUE(std::filesystem::exists(made.file));
-  EXPECT_FALSE(std::filesystem::exists(dir / "prt" / "transfer-old44.bin"));  // the oldest went
-  EXPECT_TRUE(std::filesystem::exists(dir / "prt" / "transfer-old45.bin"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "prt" / "mine.bin"));
+  EXPECT_FALSE(std::filesystem::exists(entry(44)));  // the oldest went
+  EXPECT_TRUE(std::filesystem::exists(entry(45)));
 }
 
 }  // namespace

@@ -527,8 +527,8 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("compare " + a + " " + (dir / "palette.exr").string(), "(nebula render --filters cie1931 writes XYZ)");
   prism::imaging::writeExr(dir / "xyz10.exr", small, {.colour = prism::imaging::ColourMeaning::Xyz1964});
   expectOneLineError("compare " + a + " " + (dir / "xyz10.exr").string(),
-                     "xyz10.exr: holds xyz-1964 values; compare takes CIE 1931 XYZ or linear sRGB (render it with "
-                     "--observer cie1931)");
+                     "xyz10.exr: holds xyz-1964 values; compare takes CIE 1931 XYZ, linear sRGB or a camera's RGB "
+                     "(render it with --observer cie1931)");
   // A lone Y channel is read (the reader's own refusal names it as readable) but is no colour.
   prism::imaging::writeExr(dir / "y.exr", prism::imaging::FloatImage(4, 3, 1, 0.5f),
                            {.colour = prism::imaging::ColourMeaning::Xyz});

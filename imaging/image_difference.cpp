@@ -35,8 +35,8 @@ class PixelReader {
       for (int v = 0; v < 256; ++v) mDecode[v] = mDisplay.decode(Eigen::Vector3d::Constant(v / 255.0)).x();
       return;
     }
-    if (input.colour != ColourMeaning::LinearSrgb && input.colour != ColourMeaning::Xyz &&
-        input.colour != ColourMeaning::CameraRgb)
+    const bool camera = input.colour == ColourMeaning::CameraRgb && input.cameraToXyz;
+    if (input.colour != ColourMeaning::LinearSrgb && input.colour != ColourMeaning::Xyz && !camera)
       throw Error("cannot compare a " + std::string(colourMeaningName(input.colour)) +
                   " image: only linear-srgb, xyz and a camera's RGB with its matrix have a colorimetric meaning here");
     if (input.linear->channels < 3) throw Error("cannot compare a 1-channel image as colour");
@@ -82,7 +82,7 @@ class PixelReader {
     Eigen::Vector3d value(image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2));
     value /= mInput.whiteLuminance;
     if (mInput.colour == ColourMeaning::Xyz || mInput.colour == ColourMeaning::CameraRgb) {
-      p.xyz = mInput.colour == ColourMeaning::Xyz ? value : Eigen::Vector3d(mInput.cameraToXyz * value);
+      p.xyz = mInput.colour == ColourMeaning::Xyz ? value : Eigen::Vector3d(*mInput.cameraToXyz * value);
       p.linear = mSrgb.xyzToRgb * p.xyz;
     } else {
       p.linear = value;

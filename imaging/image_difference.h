@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <span>
 
 #include <Eigen/Core>
@@ -31,8 +32,9 @@ struct DifferenceInput {
   const FloatImage* linear = nullptr;                // a linear image with 3 or 4 channels, and then:
   ColourMeaning colour = ColourMeaning::LinearSrgb;  // LinearSrgb, Xyz or CameraRgb (others are an Error)
   double whiteLuminance = 1.0;  // the value of white: Y_white for XYZ (e.g. in cd/m²), R=G=B for sRGB
-  // CameraRgb's into CIE 1931 XYZ (render::cameraToXyz, which its EXRs record: ExrCamera).
-  Eigen::Matrix3d cameraToXyz = Eigen::Matrix3d::Identity();
+  // CameraRgb's into CIE 1931 XYZ (render::cameraToXyz, which its EXRs record: ExrCamera); a
+  // camera's RGB without it is an Error (make it with cameraInput).
+  std::optional<Eigen::Matrix3d> cameraToXyz = std::nullopt;
 };
 inline DifferenceInput png8Input(const PngImage& image) { return {.srgb8 = &image}; }
 inline DifferenceInput linearInput(const FloatImage& image, ColourMeaning colour,

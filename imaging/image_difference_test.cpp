@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -207,6 +209,26 @@ TEST(ImageDifference, RefusesImagesWithoutColorimetry) {
   FloatImage map(2, 2, 1);
   EXPECT_THROW(compareImages(linearInput(map, ColourMeaning::Xyz), linearInput(f, ColourMeaning::Xyz)),
                Error);
+}
+
+// A camera's RGB is compared in XYZ through its matrix: the raw RGB of an XYZ image (the matrix's
+// inverse applied) compares with it as equal, and through another matrix as different.
+TEST(ImageDifference, ACamerasRgbComparesThroughItsMatrix) {
+  Eigen::Matrix3d toXyz;
+  toXyz << 0.61, 0.27, 0.08, 0.23, 0.94, -0.17, 0.01, -0.12, 1.2;
+  FloatImage xyz(3, 2, 3), camera(3, 2, 3);
+  for (std::size_t p = 0; p < xyz.pixelCount(); ++p) {
+    const Eigen::Vector3d v(0.2 + 0.1 * static_cast<double>(p), 0.3, 0.25 + 0.05 * static_cast<double>(p));
+    const Eigen::Vector3d raw = toXyz.inverse() * v;
+    for (int c = 0; c < 3; ++c) {
+      xyz.pixels[3 * p + static_cast<std::size_t>(c)] = static_cast<float>(v[c]);
+      camera.pixels[3 * p + static_cast<std::size_t>(c)] = static_cast<float>(raw[c]);
+    }
+  }
+  EXPECT_LT(compareImages(cameraInput(camera, toXyz), linearInput(xyz, ColourMeaning::Xyz)).stats.maxDeltaE, 1e-3);
+  EXPECT_GT(compareImages(cameraInput(camera, Eigen::Matrix3d::Identity()), linearInput(xyz, ColourMeaning::Xyz))
+                .stats.meanDeltaE,
+            1.0);
 }
 
 TEST(ImageDifference, ResultDoesNotDependOnThreads) {

@@ -111,21 +111,25 @@ TEST(PrtSky, TheSkyIsBlueAndTheSettingSunRed) {
 TEST(PrtSky, TheCacheHoldsTheTabulatedGridBitForBit) {
   const ScopedCacheDirectory cache("prism_prt_sky_cache");
   const PrtSky sky = skyAt(20.0f, 70.0f, false);  // single scattering: the cheapest to tabulate
-  // 40 older entries of other skies: writing this one prunes them to the 32 newest.
+  // 40 older entries of other skies (named as the cache names them: a key in hex), and a file of
+  // another name: writing this entry prunes the entries to the 32 last used and keeps the file.
   const std::filesystem::path folder = cache.path() / "prt_sky";
   std::filesystem::create_directories(folder);
+  std::ofstream(folder / "notes.bin") << "not an entry";
+  auto old = [&](int i) { return folder / fmt::format("{:016x}.bin", 0xa11ce000 + i); };
   for (int i = 0; i < 40; ++i) {
-    const std::filesystem::path old = folder / ("old" + std::to_string(i) + ".bin");
-    std::ofstream(old) << "another sky";
-    std::filesystem::last_write_time(old, std::filesystem::file_time_type::clock::now() - std::chrono::hours(1) +
-                                              std::chrono::seconds(i));
+    const std::filesystem::path entryOld = old(i);
+    std::ofstream(entryOld) << "another sky";
+    std::filesystem::last_write_time(entryOld, std::filesystem::file_time_type::clock::now() - std::chrono::hours(1) +
+                                                   std::chrono::seconds(i));
   }
   const SkyRadianceGrid tabulated = cachedSky(sky, 8, 4);  // no entry yet: tabulateSky's grid
   const std::filesystem::path entry = folder / fmt::format("{:016x}.bin", skyCacheKey(sky, 8, 4));
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder), {}), 32);
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder), {}), 33);  // 32 and the notes
   EXPECT_TRUE(std::filesystem::exists(entry));
-  EXPECT_FALSE(std::filesystem::exists(folder / "old7.bin"));  // among the oldest
-  EXPECT_TRUE(std::filesystem::exists(folder / "old39.bin"));
+  EXPECT_TRUE(std::filesystem::exists(folder / "notes.bin"));
+  EXPECT_FALSE(std::filesystem::exists(old(7)));  // among the oldest
+  EXPECT_TRUE(std::filesystem::exists(old(39)));
   auto same = [&](const SkyRadianceGrid& g) {
     return g.width == 8 && g.height == 4 && g.radiance == tabulated.radiance &&
            g.sunIrradiance == tabulated.sunIrradiance && g.sunDirection == tabulated.sunDirection;

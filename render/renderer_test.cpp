@@ -126,6 +126,9 @@ INSTANTIATE_TEST_SUITE_P(
                     ParityCase{"textured_gltf.json", RenderMode::JakobHanika},
                     ParityCase{"reef.json", RenderMode::JakobHanika},  // under water
                     ParityCase{"reef.json", RenderMode::Rgb},
+                    // Lamps under water: their in-scattering in every pixel (a fixture).
+                    ParityCase{PRISM_RENDER_TEST_DIR "/water_lamps.json", RenderMode::JakobHanika},
+                    ParityCase{PRISM_RENDER_TEST_DIR "/water_lamps.json", RenderMode::Rgb},
                     ParityCase{"sunset.json", RenderMode::Optimised4},  // under the sky
                     ParityCase{"sunset.json", RenderMode::Rgb},
                     ParityCase{"sunset.json", RenderMode::JakobHanika},

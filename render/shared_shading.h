@@ -14,6 +14,7 @@ namespace prism::shared {
 #include "box_upsampling.glsl"
 #include "brdf.glsl"
 #include "lights.glsl"
+#include "underwater_lamps.glsl"
 #include "shadow_filter.glsl"
 #include "transfer.glsl"
 #include "cielab.glsl"

@@ -24,11 +24,11 @@
 //
 // Under water (PRISM_TECHNIQUE_WATER, underwater.glsl) a directional light is the sun above the
 // surface: its irradiance at a point is attenuated by e^(−Kd·depth), and it single-scatters into
-// every view ray; point and spot lights are under water with the camera and lose e^(−σt·r) over
-// their distance r (and add no in-scattering: the model's is the light from above). A distant
-// environment (PRT's) in-scatters too, as the sun does, with its radiance over the sky in place
-// of the sun's irradiance. What the camera sees at distance S is then surface radiance ·
-// e^(−σt·S) + the in-scattering over S of the sun and the environment.
+// every view ray; point and spot lights lose e^(−σt·r) over the part r of their path under the
+// surface, and scatter into the view ray too (underwater_lamps.glsl: a torch's glow and beam). A
+// distant environment (PRT's) in-scatters too, as the sun does, with its radiance over the sky in
+// place of the sun's irradiance. What the camera sees at distance S is then surface radiance ·
+// e^(−σt·S) + the in-scattering over S of the sun, the environment and the lamps.
 //
 // With a sky (PRISM_TECHNIQUE_ATMOSPHERE, atmosphere_lighting.glsl) the background is the sky-view
 // table and the sun's disc; the light that is the sun is attenuated by the sun's transmittance
@@ -48,7 +48,7 @@
 // lights and batches does not matter). A nebula's stars, of any number, keep only their dimming
 // grid lookup (the costly part) for the first kMaxLights of them; each batch takes every star's
 // incidence and D·G again, and a further star's lookup too.
-// Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl underwater.glsl atmosphere_model.glsl pixel_shading_accessors.glsl atmosphere_luts_accessors.glsl atmosphere_luts.glsl atmosphere_lighting_accessors.glsl atmosphere_lighting.glsl nebula_march.glsl nebula_lighting.glsl nebula_lighting_accessors.glsl
+// Requires: brdf.glsl lights.glsl shadow_filter.glsl frame_layout.glsl sigmoid.glsl box_upsampling.glsl underwater.glsl underwater_lamps.glsl atmosphere_model.glsl pixel_shading_accessors.glsl atmosphere_luts_accessors.glsl atmosphere_luts.glsl atmosphere_lighting_accessors.glsl atmosphere_lighting.glsl nebula_march.glsl nebula_lighting.glsl nebula_lighting_accessors.glsl
 
 // m·(p, 1), summed column by column in this order on both sides: a built-in mat4 × vec4 is
 // free to sum in another order (and to fuse), and shadow-map weights amplify the difference.
@@ -113,18 +113,27 @@ PRISM_INLINE vec4 irradianceAtSurface(IN(FrameConstants) fc, int b) {
 }
 
 // What the water does to radiance leaving a point `distanceM` along the unit view direction
-// `viewDir` from the camera: transmittance, then the in-scattering of the light from above, over
-// the part of that distance below the surface (a ray that looks up leaves the water after
-// depth / viewDir.y).
-PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, IN(vec3) viewDir,
-                               float distanceM) {
+// `viewDir` from the camera: transmittance, then the in-scattering of the light from above and of
+// the lamps, over the part of that distance below the surface (a ray that looks up leaves the
+// water after depth / viewDir.y).
+PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, IN(vec3) cameraPosition,
+                               IN(vec3) viewDir, float distanceM) {
   vec4 sigmaS = frameWaterSpectrum(b, 0);
   vec4 sigmaT = frameWaterSpectrum(b, 1);
   vec4 kd = frameWaterSpectrum(b, 2);
   float inWaterM = viewDir.y > 0.0f ? min(distanceM, frameWater().depthM / viewDir.y) : distanceM;
+  vec4 lamps = vec4(0.0f);
+  for (int l = 0; l < fc.lightCount; ++l) {
+    GpuLight light = frameLight(l);
+    if (light.type == kLightDirectional) continue;
+    lamps += lampInScattering(sigmaS, sigmaT, cameraPosition, viewDir, inWaterM, light.type, light.positionW,
+                              light.direction, light.intensity, light.cosInner, light.cosOuter, frameWater().surfaceY) *
+             frameLightSpectrum(l, b);
+  }
   return radiance * waterTransmittance(sigmaT, inWaterM) +
          waterInScattering(sigmaS, sigmaT, kd, frameWater().depthM, -viewDir.y, inWaterM) *
-             irradianceAtSurface(fc, b);
+             irradianceAtSurface(fc, b) +
+         lamps;
 }
 #endif
 
@@ -192,7 +201,7 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
   for (int b = 0; b < fc.batchCount; ++b) {
     vec4 radiance = frameLightSpectrum(fc.lightCount, b);
 #ifdef PRISM_TECHNIQUE_WATER
-    radiance = throughWater(fc, b, radiance, viewDir, distanceM);
+    radiance = throughWater(fc, b, radiance, cameraPosition, viewDir, distanceM);
 #endif
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
     radiance = skyBackground(frameAtmosphere(b), b, cameraKm, viewDir, toSun, sunCover);
@@ -341,7 +350,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 #ifdef PRISM_TECHNIQUE_WATER
     PRISM_PRECISE vec3 fromCamera = s.position - cameraPosition;
     float distanceM = length(fromCamera);
-    radiance = throughWater(fc, b, radiance, fromCamera / distanceM, distanceM);
+    radiance = throughWater(fc, b, radiance, cameraPosition, fromCamera / distanceM, distanceM);
 #endif
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
     if (kind != kMaterialConductor && !s.techniqueShaded) {  // a technique brings its own sky

@@ -1,0 +1,125 @@
+// A lamp's light that the water scatters once into a view ray: the glow around a diver's torch
+// and the shaft of its beam, which the closed form of underwater.glsl (light from above the
+// surface) does not hold. A point or spot lamp of radiant intensity I(ω) at L lights a point p of
+// the ray, s metres from the camera along d, with I/|L − p|² through e^(−σt·r_w), r_w the part of
+// |L − p| under the surface (shareBelowSurface), and p sends σs/(4π) of it towards the camera,
+// which it reaches through e^(−σt·s):
+//   L_lamp = σs/(4π) ∫ I(p)/|L − p|² · e^(−σt·(s + r_w(s))) ds   over the ray's part in the water
+// (isotropic scattering, as the path tracer's water; no shadows: the lamp lights the whole ray).
+// Equiangular substitution (Kulla & Fajardo 2012): with t_c the ray's closest approach to L and h
+// its distance there, s = t_c + h·tan θ turns ds/|L − p|² into dθ/h, so the integrand left is
+// bounded and smooth; 16 Gauss–Legendre nodes (two halves of 8) over θ. A spot's cone is first
+// intersected with the ray, so that the nodes fall where its beam is.
+// Requires: lights.glsl underwater.glsl
+
+// Node i of 8-point Gauss–Legendre on [0, 1] (x) and its weight (y).
+PRISM_INLINE vec2 gaussLegendre8(int i) {
+  float x = 0.0f;
+  float w = 0.0f;
+  int k = i < 4 ? 3 - i : i - 4;  // outermost pair first
+  if (k == 0) { x = 0.1834346424956498f; w = 0.3626837833783620f; }
+  if (k == 1) { x = 0.5255324099163290f; w = 0.3137066458778873f; }
+  if (k == 2) { x = 0.7966664774136267f; w = 0.2223810344533745f; }
+  if (k == 3) { x = 0.9602898564975363f; w = 0.1012285362903763f; }
+  float node = i < 4 ? -x : x;
+  return vec2(0.5f + 0.5f * node, 0.5f * w);
+}
+
+// Whether the direction q from a spot's apex lies inside its outer cone about `axis` (unit); q is
+// scaled first, so that a point 1e30 m along a ray tests as it should.
+PRISM_INLINE bool insideSpotCone(IN(vec3) q, IN(vec3) axis, float cosOuter) {
+  float scale = max(max(abs(q.x), abs(q.y)), max(abs(q.z), 1e-30f));
+  vec3 u = q / scale;
+  return dot(u, axis) > cosOuter * length(u);
+}
+
+// The span [x, y] of the ray origin + s·dir, s in [0, lengthM], inside a spot's outer cone (its
+// forward nappe, convex for cosOuter > 0: one span, empty where x ≥ y). The cone's surface cuts the
+// ray where A·s² + B·s + C = 0; between those cuts, the ends and the ray's closest approach to the
+// apex, each piece is in or out whole. (A ray through the apex along the axis, a torch seen head
+// on, touches the surface only there: the double root that rounding may lose, which the closest
+// approach stands in for.)
+PRISM_INLINE vec2 spotConeSpan(IN(vec3) origin, IN(vec3) dir, float lengthM, IN(vec3) apex, IN(vec3) axis,
+                               float cosOuter) {
+  if (cosOuter <= 0.0f) return vec2(0.0f, lengthM);
+  vec3 o = origin - apex;
+  // The quadratic in double: a ray nearly along the cone's surface makes it ill-conditioned.
+  dvec3 od = dvec3(o);
+  dvec3 dd = dvec3(dir);
+  dvec3 axisD = dvec3(axis);
+  double a = dot(dd, axisD);
+  double b = dot(od, axisD);
+  double c2 = double(cosOuter) * double(cosOuter);
+  double qa = a * a - c2;
+  double qb = 2.0 * (a * b - c2 * dot(od, dd));
+  double qc = b * b - c2 * dot(od, od);
+  float cuts[5];
+  int n = 0;
+  cuts[n++] = 0.0f;
+  float closest = -dot(o, dir);
+  if (closest > 0.0f && closest < lengthM) cuts[n++] = closest;
+  float roots[2];
+  int rootCount = 0;
+  if (abs(qa) < 1e-15 * max(abs(qb), 1.0)) {
+    if (abs(qb) > 0.0) roots[rootCount++] = float(-qc / qb);
+  } else {
+    double disc = qb * qb - 4.0 * qa * qc;
+    if (disc >= 0.0) {
+      double q = -0.5 * (qb + (qb < 0.0 ? -sqrt(disc) : sqrt(disc)));  // no cancellation
+      roots[rootCount++] = float(q / qa);
+      if (abs(q) > 0.0) roots[rootCount++] = float(qc / q);
+    }
+  }
+  for (int r = 0; r < rootCount; ++r)
+    if (roots[r] > 0.0f && roots[r] < lengthM) cuts[n++] = roots[r];
+  cuts[n++] = lengthM;
+  // Each cut and the next one after it, without sorting (an insertion sort of these five lost
+  // the span on llvmpipe: a torch's beam crossing the view gave nothing there, and 12 % of a pixel
+  // against the CPU twin).
+  vec2 span = vec2(lengthM, 0.0f);
+  for (int i = 0; i < n; ++i) {
+    float next = lengthM;
+    for (int j = 0; j < n; ++j)
+      if (cuts[j] > cuts[i]) next = min(next, cuts[j]);
+    if (next > cuts[i] && insideSpotCone(o + dir * (0.5f * (cuts[i] + next)), axis, cosOuter)) {
+      span.x = min(span.x, cuts[i]);
+      span.y = max(span.y, next);
+    }
+  }
+  return span;
+}
+
+// The radiance a lamp (kLightPoint or kLightSpot, lights.glsl's parameters) scatters into the ray
+// from `origin` along the unit `dir` over its first lengthM metres (all under water), per unit of
+// the lamp's spectrum: multiply by it. surfaceY: the water surface's height.
+PRISM_INLINE vec4 lampInScattering(IN(vec4) sigmaS, IN(vec4) sigmaT, IN(vec3) origin, IN(vec3) dir, float lengthM,
+                                   int type, IN(vec3) lampPosition, IN(vec3) spotAxis, float intensity, float cosInner,
+                                   float cosOuter, float surfaceY) {
+  vec2 span = type == kLightSpot ? spotConeSpan(origin, dir, lengthM, lampPosition, spotAxis, cosOuter)
+                                 : vec2(0.0f, lengthM);
+  if (!(span.y > span.x)) return vec4(0.0f);
+  PRISM_PRECISE vec3 toLamp = lampPosition - origin;
+  float closest = dot(toLamp, dir);
+  float h = max(length(toLamp - dir * closest), 1e-3f);  // a ray through the lamp: 1 mm from it
+  // θ from the closest approach, tan θ = (s − closest)/h, up to 1e15 (float's π/2). The span's
+  // angle from the atan of the tangents' difference, and each node's s from the tangent of a sum:
+  // a narrow beam's few milliradians are not the difference of two angles near π/2, whose digits
+  // a float atan rounds away.
+  float tBegin = clamp((span.x - closest) / h, -1e15f, 1e15f);
+  float tEnd = clamp((span.y - closest) / h, -1e15f, 1e15f);
+  float width = atan(tEnd - tBegin, 1.0f + tBegin * tEnd);
+  vec4 sum = vec4(0.0f);
+  for (int part = 0; part < 2; ++part) {
+    for (int i = 0; i < 8; ++i) {
+      vec2 node = gaussLegendre8(i);
+      float tPhi = tan(width * 0.5f * (float(part) + node.x));
+      float s = closest + h * (tBegin + tPhi) / (1.0f - tBegin * tPhi);
+      PRISM_PRECISE vec3 p = origin + dir * s;
+      LightIncidence li = lightIncidence(type, lampPosition, spotAxis, 1.0f, cosInner, cosOuter, p);
+      float profile = li.irradiance * li.distance * li.distance;  // the spot's falloff; 1 for a point lamp
+      float underM = li.distance * shareBelowSurface(p.y, lampPosition.y, surfaceY);
+      sum += (node.y * 0.5f * profile) * exp(-sigmaT * (s + underM));
+    }
+  }
+  return sigmaS * (intensity * width / (4.0f * kPi * h)) * sum;
+}

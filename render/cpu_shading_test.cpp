@@ -223,6 +223,8 @@ TEST(CpuShading, UnderWaterTheEnvironmentInScattersAsTheSunDoes) {
 // A lamp above the water lights a point below it through the water only on its path's lower part:
 // at 10 m and at 100 m above the surface, its intensity scaled by the squared distance, the same
 // point 2.5 m down shows the same (it was dimmed over the whole distance, e^(−σt·100 m): black).
+// The water absorbs and scatters nothing into the view: the lamp's glow along the view ray, which
+// does depend on its distance, is underwater_lamps_test's.
 TEST(CpuShading, ALampAboveTheWaterIsDimmedOnlyBelowTheSurface) {
   Scene scene;
   scene.file = "test.json";
@@ -237,6 +239,7 @@ TEST(CpuShading, ALampAboveTheWaterIsDimmedOnlyBelowTheSurface) {
   auto water = std::make_unique<underwater::WaterSection>();
   water->type.assign("II");
   water->depthM = 0.5f;  // the camera's: the surface at y = 2.5, the lit point 2.5 m below it
+  water->scatteringScale = 0.0f;
   water->resolve();
   scene.techniques.add(std::move(water));
   auto lit = [&](float heightAboveSurface, bool wet = true) {

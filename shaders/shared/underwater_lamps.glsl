@@ -16,7 +16,7 @@
 PRISM_INLINE vec2 gaussLegendre8(int i) {
   float x = 0.0f;
   float w = 0.0f;
-  int k = i < 4 ? 3 - i : i - 4;  // outermost pair first
+  int k = i < 4 ? 3 - i : i - 4;  // the pair's index from the middle out: nodes ascend with i
   if (k == 0) { x = 0.1834346424956498f; w = 0.3626837833783620f; }
   if (k == 1) { x = 0.5255324099163290f; w = 0.3137066458778873f; }
   if (k == 2) { x = 0.7966664774136267f; w = 0.2223810344533745f; }
@@ -112,8 +112,12 @@ PRISM_INLINE vec4 lampInScattering(IN(vec4) sigmaS, IN(vec4) sigmaT, IN(vec3) or
   for (int part = 0; part < 2; ++part) {
     for (int i = 0; i < 8; ++i) {
       vec2 node = gaussLegendre8(i);
-      float tPhi = tan(width * 0.5f * (float(part) + node.x));
-      float s = closest + h * (tBegin + tPhi) / (1.0f - tBegin * tPhi);
+      // tan(θBegin + φ) = (tBegin·cos φ + sin φ)/(cos φ − tBegin·sin φ), whose denominator,
+      // cos(θBegin + φ)/cos θBegin, stays above 0: tan φ itself is infinite at φ = π/2.
+      float phi = width * 0.5f * (float(part) + node.x);
+      float sinPhi = sin(phi);
+      float cosPhi = cos(phi);
+      float s = closest + h * (tBegin * cosPhi + sinPhi) / (cosPhi - tBegin * sinPhi);
       PRISM_PRECISE vec3 p = origin + dir * s;
       LightIncidence li = lightIncidence(type, lampPosition, spotAxis, 1.0f, cosInner, cosOuter, p);
       float profile = li.irradiance * li.distance * li.distance;  // the spot's falloff; 1 for a point lamp

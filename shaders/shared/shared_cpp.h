@@ -30,7 +30,6 @@ using uint = std::uint32_t;
 using vec2 = glm::vec2;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
-using dvec3 = glm::dvec3;
 using ivec2 = glm::ivec2;
 using mat3 = glm::mat3;
 using mat4 = glm::mat4;
@@ -59,7 +58,6 @@ using glm::radians;
 using glm::sin;
 using glm::smoothstep;
 using glm::sqrt;
-using glm::tan;
 
 #include "constants.glsl"
 }  // namespace prism::shared

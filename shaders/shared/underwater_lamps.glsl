@@ -43,16 +43,12 @@ PRISM_INLINE vec2 spotConeSpan(IN(vec3) origin, IN(vec3) dir, float lengthM, IN(
                                float cosOuter) {
   if (cosOuter <= 0.0f) return vec2(0.0f, lengthM);
   vec3 o = origin - apex;
-  // The quadratic in double: a ray nearly along the cone's surface makes it ill-conditioned.
-  dvec3 od = dvec3(o);
-  dvec3 dd = dvec3(dir);
-  dvec3 axisD = dvec3(axis);
-  double a = dot(dd, axisD);
-  double b = dot(od, axisD);
-  double c2 = double(cosOuter) * double(cosOuter);
-  double qa = a * a - c2;
-  double qb = 2.0 * (a * b - c2 * dot(od, dd));
-  double qc = b * b - c2 * dot(od, od);
+  float a = dot(dir, axis);
+  float b = dot(o, axis);
+  float c2 = cosOuter * cosOuter;
+  float qa = a * a - c2;
+  float qb = 2.0f * (a * b - c2 * dot(o, dir));
+  float qc = b * b - c2 * dot(o, o);
   float cuts[5];
   int n = 0;
   cuts[n++] = 0.0f;
@@ -60,14 +56,14 @@ PRISM_INLINE vec2 spotConeSpan(IN(vec3) origin, IN(vec3) dir, float lengthM, IN(
   if (closest > 0.0f && closest < lengthM) cuts[n++] = closest;
   float roots[2];
   int rootCount = 0;
-  if (abs(qa) < 1e-15 * max(abs(qb), 1.0)) {
-    if (abs(qb) > 0.0) roots[rootCount++] = float(-qc / qb);
+  if (abs(qa) < 1e-7f * max(abs(qb), 1.0f)) {
+    if (abs(qb) > 0.0f) roots[rootCount++] = -qc / qb;
   } else {
-    double disc = qb * qb - 4.0 * qa * qc;
-    if (disc >= 0.0) {
-      double q = -0.5 * (qb + (qb < 0.0 ? -sqrt(disc) : sqrt(disc)));  // no cancellation
-      roots[rootCount++] = float(q / qa);
-      if (abs(q) > 0.0) roots[rootCount++] = float(qc / q);
+    float disc = qb * qb - 4.0f * qa * qc;
+    if (disc >= 0.0f) {
+      float q = -0.5f * (qb + (qb < 0.0f ? -sqrt(disc) : sqrt(disc)));  // no cancellation
+      roots[rootCount++] = q / qa;
+      if (abs(q) > 0.0f) roots[rootCount++] = qc / q;
     }
   }
   for (int r = 0; r < rootCount; ++r)

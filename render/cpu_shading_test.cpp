@@ -46,16 +46,16 @@ Scene oneLightScene(const std::string& spd, float lux) {
   return scene;
 }
 
-// A texel of material 0 at the origin facing up, seen from straight above.
+// A texel of material 0 at the origin facing up, seen from straight above (`height` m up).
 struct UpFacing {
   GBufferTexel texel;
   CameraTransform camera;
-  UpFacing(const glm::vec3& albedo, float metallic, float roughness) {
+  UpFacing(const glm::vec3& albedo, float metallic, float roughness, float height = 2.0f) {
     texel.albedoMetallic = glm::vec4(albedo, metallic);
     texel.normalRoughness = glm::vec4(0.0f, 1.0f, 0.0f, roughness);
     texel.materialId = 1;
     Camera c;
-    c.position = {0.0f, 2.0f, 0.0f};
+    c.position = {0.0f, height, 0.0f};
     c.target = {0.0f, 0.0f, 0.0f};
     c.up = {0.0f, 0.0f, -1.0f};
     camera = cameraTransform(c, 64, 64);
@@ -266,6 +266,56 @@ TEST(CpuShading, ALampAboveTheWaterIsDimmedOnlyBelowTheSurface) {
   const glm::vec3 justAbove = lit(0.01f), justBelow = lit(-0.01f);
   EXPECT_NEAR(justAbove.y, justBelow.y, 0.01f * justBelow.y);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(far[c], near[c], 1e-4f * near[c]) << c;
+}
+
+// The viewer's camera can fly above the water: the air between it and the surface is clear, so
+// the sea floor 2 m down and the open ocean (the background, looking down) look the same from 1 m
+// and 10 m above the surface as from the surface itself, in-scattering of the sun and of a lamp
+// and a spot under water included; just below the surface they look nearly so. (The air was
+// taken for water: from 10 m up, 12 m of it.)
+TEST(CpuShading, ACameraAboveTheWaterSeesThroughClearAir) {
+  Scene scene = oneLightScene("D65", 1000.0f);
+  scene.lights[0].direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+  Light lamp;
+  lamp.type = LightType::Point;
+  lamp.position = {0.5f, 1.0f, 0.3f};
+  lamp.spd = illuminant("A") * (1.0 / luminousIntegral(illuminant("A")));
+  lamp.intensity = 50.0f;
+  lamp.castsShadows = false;
+  scene.lights.push_back(lamp);
+  lamp.type = LightType::Spot;
+  lamp.position = {-1.0f, 1.5f, 0.0f};
+  lamp.direction = glm::normalize(glm::vec3(1.0f, -0.2f, 0.0f));  // its beam across the view
+  lamp.innerConeDeg = 10.0f;
+  lamp.outerConeDeg = 15.0f;
+  scene.lights.push_back(lamp);
+  scene.camera.position = {0.0f, 1.0f, 0.0f};
+  auto water = std::make_unique<underwater::WaterSection>();
+  water->type.assign("II");
+  water->depthM = 1.0f;  // the scene camera's: the surface at y = 2
+  water->resolve();
+  scene.techniques.add(std::move(water));
+  FrameSettings settings;
+  settings.mode = RenderMode::Reference;
+  auto seenFrom = [&](float height) {
+    const UpFacing p(glm::vec3(0.8f), 0.0f, 1.0f, height);
+    FrameData frame = buildFrameData(scene, settings, frameContext(settings, scene, productionTable()),
+                                     productionTable(), {}, 0, p.camera);
+    CpuShading shading(frame, productionTable(), {});
+    return std::pair{shading.shade(p.texel, glm::vec2(0.5f), p.camera),
+                     shading.shade(GBufferTexel{}, glm::vec2(0.5f), p.camera)};
+  };
+  const auto [floor, ocean] = seenFrom(2.0f);
+  for (float height : {3.0f, 12.0f, 1.999f}) {
+    const auto [floorThere, oceanThere] = seenFrom(height);
+    std::printf("from %g m: the floor Y %.6g (%.6g from the surface), the ocean Y %.6g (%.6g)\n", height,
+                floorThere.y, floor.y, oceanThere.y, ocean.y);
+    const float tolerance = height < 2.0f ? 2e-3f : 1e-4f;  // 1 mm of water
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(floorThere[c], floor[c], tolerance * floor[c]) << height << " m, " << c;
+      EXPECT_NEAR(oceanThere[c], ocean[c], tolerance * ocean[c]) << height << " m, " << c;
+    }
+  }
 }
 
 TEST(Brdf, ConductorFresnelAtOneAngleMatchesTheComplexFresnelEquations) {

@@ -51,11 +51,12 @@ struct ParityCase {
   RenderMode mode;
   GBufferAlbedo albedo = GBufferAlbedo::Rgb;
   SamplingStrategy strategy = SamplingStrategy::Uniform;
+  float raiseCameraM = 0.0f;  // the frame's camera above the scene's (the viewer's, flown up)
 };
 // What gtest (and so ctest's test names) shows of a case, instead of its bytes.
 void PrintTo(const ParityCase& c, std::ostream* os) {
   *os << c.scene << " " << renderModeName(c.mode) << (c.albedo == GBufferAlbedo::Coefficients ? " coefficients" : "")
-      << " " << samplingStrategyName(c.strategy);
+      << " " << samplingStrategyName(c.strategy) << (c.raiseCameraM > 0.0f ? " raised" : "");
 }
 
 class GpuCpuParity : public testing::TestWithParam<ParityCase> {};
@@ -77,6 +78,11 @@ TEST_P(GpuCpuParity, ThousandRandomPixelsAgreeWithinOneInTenThousand) {
   settings.gbufferAlbedo = GetParam().albedo;
   settings.sampling.strategy = GetParam().strategy;
   Renderer renderer(scene, cachedTestTable(), settings);
+  if (GetParam().raiseCameraM > 0.0f) {
+    Camera raised = scene.camera;
+    raised.position.y += GetParam().raiseCameraM;
+    renderer.setCamera(raised);
+  }
   renderer.renderFrame();
 
   const int w = settings.width, h = settings.height;
@@ -129,6 +135,9 @@ INSTANTIATE_TEST_SUITE_P(
                     // Lamps under water: their in-scattering in every pixel (a fixture).
                     ParityCase{PRISM_RENDER_TEST_DIR "/water_lamps.json", RenderMode::JakobHanika},
                     ParityCase{PRISM_RENDER_TEST_DIR "/water_lamps.json", RenderMode::Rgb},
+                    // The same seen from 2 m above the water: the view enters it at the surface.
+                    ParityCase{PRISM_RENDER_TEST_DIR "/water_lamps.json", RenderMode::JakobHanika, GBufferAlbedo::Rgb,
+                               SamplingStrategy::Uniform, 8.0f},
                     ParityCase{"sunset.json", RenderMode::Optimised4},  // under the sky
                     ParityCase{"sunset.json", RenderMode::Rgb},
                     ParityCase{"sunset.json", RenderMode::JakobHanika},
@@ -147,7 +156,8 @@ INSTANTIATE_TEST_SUITE_P(
                          (param.param.albedo == GBufferAlbedo::Coefficients ? "_coefficients" : "") +
                          (param.param.strategy == SamplingStrategy::Uniform
                               ? ""
-                              : "_" + std::string(samplingStrategyName(param.param.strategy)));
+                              : "_" + std::string(samplingStrategyName(param.param.strategy))) +
+                         (param.param.raiseCameraM > 0.0f ? "_raised" : "");
       std::replace(name.begin(), name.end(), '-', '_');
       return name;
     });

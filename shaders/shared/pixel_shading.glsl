@@ -115,19 +115,24 @@ PRISM_INLINE vec4 irradianceAtSurface(IN(FrameConstants) fc, int b) {
 // What the water does to radiance leaving a point `distanceM` along the unit view direction
 // `viewDir` from the camera: transmittance, then the in-scattering of the light from above and of
 // the lamps, over the part of that distance below the surface (a ray that looks up leaves the
-// water after depth / viewDir.y).
+// water after depth / viewDir.y; from a camera above the water, which the viewer's can fly to, a
+// ray enters it at the surface looking down and never otherwise: the air is clear).
 PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, IN(vec3) cameraPosition,
                                IN(vec3) viewDir, float distanceM) {
   vec4 sigmaS = frameWaterSpectrum(b, 0);
   vec4 sigmaT = frameWaterSpectrum(b, 1);
   vec4 kd = frameWaterSpectrum(b, 2);
-  float inWaterM = viewDir.y > 0.0f ? min(distanceM, frameWater().depthM / viewDir.y) : distanceM;
+  float heightM = cameraPosition.y - frameWater().surfaceY;  // > 0: the camera is above the water
+  float enterM = heightM <= 0.0f ? 0.0f : viewDir.y < 0.0f ? min(heightM / -viewDir.y, distanceM) : distanceM;
+  float leaveM = viewDir.y > 0.0f ? min(distanceM, frameWater().depthM / viewDir.y) : distanceM;
+  float inWaterM = max(leaveM - enterM, 0.0f);
+  PRISM_PRECISE vec3 entry = cameraPosition + viewDir * enterM;
   vec4 lamps = vec4(0.0f);
   for (int l = 0; l < fc.lightCount; ++l) {
     GpuLight light = frameLight(l);
-    if (light.type == kLightDirectional) continue;
-    lamps += lampInScattering(sigmaS, sigmaT, cameraPosition, viewDir, inWaterM, light.type, light.positionW,
-                              light.direction, light.intensity, light.cosInner, light.cosOuter, frameWater().surfaceY) *
+    if (light.type == kLightDirectional || !(inWaterM > 0.0f)) continue;  // entry: 1e30 m off looking up
+    lamps += lampInScattering(sigmaS, sigmaT, entry, viewDir, inWaterM, light.type, light.positionW, light.direction,
+                              light.intensity, light.cosInner, light.cosOuter, frameWater().surfaceY) *
              frameLightSpectrum(l, b);
   }
   return radiance * waterTransmittance(sigmaT, inWaterM) +

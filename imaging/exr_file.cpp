@@ -346,7 +346,9 @@ ExrImage readExr(const std::filesystem::path& path) {
       }
       out.displayWhite = white->value();
     }
-    out.camera = readCamera(path, header, out.colour);
+    // A part records its camera's matrix as text (ReferencePartHeader reads it); read here as a
+    // whole image's, it was refused for its type before any word that the file is a part.
+    if (!out.part) out.camera = readCamera(path, header, out.colour);
     return out;
   } catch (const Error&) {
     throw;

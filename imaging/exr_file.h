@@ -65,6 +65,7 @@ struct ExrImage {
   ColourMeaning colour = ColourMeaning::LinearSrgb;
   std::optional<double> displayWhite;  // kDisplayWhiteAttribute, when the file has it
   std::optional<ExrCamera> camera;     // kCameraAttribute and kCameraToXyzAttribute, when it has them
+                                       // (a part's are its own header's: batch/reference_part.h)
   // Its data window (what `image` holds) is its display window; false for a crop, an overscan, or a
   // band of a split render (a reference part's rows).
   bool wholeImage = true;

@@ -616,7 +616,8 @@ TEST(Cli, ReferenceWritesWhatCompareReads) {
   Result d65 = run("render " + scene + " -o " + (dir / "cam_d65.exr").string() + tiny);
   ASSERT_EQ(d65.exitCode, 0) << d65.err;
   expectOneLineError("compare " + (dir / "cam_raster.exr").string() + " " + (dir / "cam_d65.exr").string(),
-                     "nikon_d850's frames shown through different matrices (its fits under different lights)");
+                     "nikon_d850's frames under different lights (each holds the camera's matrix fitted under its "
+                     "own scene's light, and these differ)");
 
   Result raster = run("render " + scene + " -o " + (dir / "raster.exr").string() + " --width 48 --height 27");
   ASSERT_EQ(raster.exitCode, 0) << raster.err;

@@ -75,8 +75,9 @@ void requireOneCamera(const CompareOptions& o, const Loaded& reference, const Lo
     throw Error(fmt::format("{} holds {} and {} {}: compare a camera's frames with the same camera's",
                             o.reference.string(), what(reference), o.test.string(), what(test)));
   if (!a->toXyz.isApprox(b->toXyz, 1e-9))
-    throw Error(fmt::format("{} and {}: {}'s frames shown through different matrices (its fits under different "
-                            "lights): frames of one scene compare", o.reference.string(), o.test.string(), a->name));
+    throw Error(fmt::format("{} and {}: {}'s frames under different lights (each holds the camera's matrix fitted "
+                            "under its own scene's light, and these differ): compare takes two frames of one scene",
+                            o.reference.string(), o.test.string(), a->name));
 }
 
 Loaded load(const std::filesystem::path& path, const std::optional<double>& white) {

@@ -17,4 +17,17 @@ const Observer& cameraOption(const std::string& name) {
   return *camera;
 }
 
+CLI::Validator cameraName() {
+  return CLI::Validator(
+      [](std::string& name) {
+        try {
+          cameraOption(name);
+          return std::string();
+        } catch (const Error&) {
+          return fmt::format("\"{}\" is not a camera (see `prism colour list cameras`)", excerpt(name));
+        }
+      },
+      "");
+}
+
 }  // namespace prism::app

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/camera_option.h"
 #include "app/settings_command.h"
 #include "render/setting_keys.h"
 
@@ -39,7 +40,8 @@ class CliSettings {
       option->default_str(key.print(defaults));
       mOptions.emplace_back(key.name, option);
     }
-    CLI::Option* camera = command->add_option("--camera", mCamera, "a camera as the observer (raw camera RGB, fitted matrix for display)");
+    CLI::Option* camera = command->add_option("--camera", mCamera, "a camera as the observer (raw camera RGB, fitted matrix for display)")
+                              ->check(cameraName());
     // One observer: given both, the camera used to replace --observer without a word.
     for (const auto& [name, option] : mOptions)
       if (name == "observer") camera->excludes(option);

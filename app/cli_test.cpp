@@ -138,6 +138,13 @@ TEST(Cli, XyzOfAnRgbAlbedoRoundTripsUnderItsOwnWhite) {
   Result black = run("colour xyz --illuminant D65 --rgb 0,0,0 --json");
   ASSERT_EQ(black.exitCode, 0) << black.err;
   EXPECT_TRUE(nlohmann::json::parse(black.out)["xy"].is_null()) << black.out;
+  // A camera by --camera, as other commands name one, or by --observer: the same raw RGB.
+  Result camera = run("colour xyz --illuminant D65 --rgb 0.2,0.5,0.3 --camera nikon_d850 --json");
+  Result observer = run("colour xyz --illuminant D65 --rgb 0.2,0.5,0.3 --observer nikon_d850 --json");
+  ASSERT_EQ(camera.exitCode, 0) << camera.err;
+  EXPECT_EQ(camera.out, observer.out);
+  expectOneLineError("colour xyz --camera cie1931", "--camera: \"cie1931\" is not a camera");
+  expectOneLineError("colour xyz --camera nikon_d850 --observer cie1964", "excludes");
   // Negative encoded values convert and convert back (they were clamped to 0, "in gamut").
   Result negative = run("colour convert --from srgb --to rec2020 --json -- -0.5,0,0");
   ASSERT_EQ(negative.exitCode, 0) << negative.err;
@@ -211,6 +218,7 @@ TEST(Cli, CameraMatrixAndLists) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_LT(nlohmann::json::parse(r.out)["meanDeltaE2000"].get<double>(), 3.0);
   expectOneLineError("colour camera-matrix --camera cie1931", "not a camera");
+  expectOneLineError("colour camera-matrix --camera ''", "--camera: \"\" is not a camera");
   EXPECT_EQ(nlohmann::json::parse(run("colour list cameras --json").out).size(), 20u);
 }
 
@@ -381,6 +389,8 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
                        " --tonemap reinhard --display rec2020");
   ASSERT_EQ(display.exitCode, 0) << display.err;
   expectOneLineError("render " + scenes + "/spheres_led.json -o x.png --camera cie1964", "not a camera");
+  // Given empty (a script's unset variable), it rendered CIE 1931 XYZ without a word.
+  expectOneLineError("render " + scenes + "/spheres_led.json -o x.png --camera ''", "--camera: \"\" is not a camera");
 
   Result bench = run("bench " + scenes + "/spheres_d65.json --width 64 --height 36 --frames 4 --rounds 2 "
                      "--warmup 1 --wavelengths 4,8,16 --json --plot " + (dir / "plot.svg").string());
@@ -500,6 +510,7 @@ TEST(Cli, ReferenceAndCompareCheckTheirInput) {
   expectOneLineError("reference " + scene + " -o x.exr --transport photons", "unknown light transport \"photons\"");
   expectOneLineError("reference " + scene + " -o x.exr --filter gauss", "unknown pixel filter \"gauss\"");
   expectOneLineError("reference " + scene + " -o x.exr --camera cie1964", "not a camera");
+  expectOneLineError("reference " + scene + " -o x.exr --camera ''", "--camera: \"\" is not a camera");
   expectOneLineError("reference " + scene + " -o x.exr --range 300,700", "360–830");
   expectOneLineError("reference " + scene + " -o x.exr --set lights.0.intensity=-1", "/lights/0/intensity");
   expectOneLineError("reference " + scenes + "/sunset.json -o x.exr", "does not trace the atmosphere");

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/benchmark_command.h"
+#include "app/camera_option.h"
 #include "app/cli_settings.h"
 #include "app/cluster_command.h"
 #include "app/colour_commands.h"
@@ -60,7 +61,9 @@ void addReferenceOptions(CLI::App* command, prism::app::ReferenceOptions& ref, s
   command->add_option("--filter", ref.filter, "box (antialiased) or centre (pixel centres, as a rasteriser)")
       ->capture_default_str();
   CLI::Option* observer = command->add_option("--observer", ref.observer, "cie1931, cie1964 or a camera")->capture_default_str();
-  command->add_option("--camera", ref.camera, "a camera as the observer (raw camera RGB)")->excludes(observer);
+  command->add_option("--camera", ref.camera, "a camera as the observer (raw camera RGB)")
+      ->excludes(observer)
+      ->check(prism::app::cameraName());
   command->add_option("--range", refRange, "MIN,MAX nm of the hero wavelengths (within 360–830)");
   command->add_option("--strategy", ref.strategy,
                            "lights (the scene's emission × the observer's response), importance (the response "
@@ -105,7 +108,13 @@ int main(int argc, char** argv) {
   std::string rgbText;
   auto* xyzCmd = colour->add_subcommand("xyz", "XYZ (or camera RGB) of a reflectance or RGB albedo under an illuminant");
   xyzCmd->add_option("--illuminant", xyz.illuminant, "illuminant name (see `colour list illuminants`) or a spectrum file (.csv)")->capture_default_str();
-  xyzCmd->add_option("--observer", xyz.observer, "cie1931, cie1964 or a camera")->capture_default_str();
+  auto* xyzObserverOpt =
+      xyzCmd->add_option("--observer", xyz.observer, "cie1931, cie1964 or a camera")->capture_default_str();
+  // As render, reference and the other commands name a camera (it failed: "arguments were not expected").
+  std::string xyzCamera;
+  xyzCmd->add_option("--camera", xyzCamera, "a camera as the observer (raw camera RGB)")
+      ->excludes(xyzObserverOpt)
+      ->check(prism::app::cameraName());
   auto* reflOpt = xyzCmd->add_option("--reflectance", xyz.reflectanceFile, "spectral CSV: wavelength_nm,value");
   auto* xyzRgbOpt =
       xyzCmd->add_option("--rgb", rgbText, "r,g,b albedo, upsampled with a Jakob–Hanika fit")->excludes(reflOpt);
@@ -148,7 +157,9 @@ int main(int argc, char** argv) {
 
   CameraMatrixOptions cam;
   auto* camCmd = colour->add_subcommand("camera-matrix", "least-squares camera RGB → XYZ matrix on the ColorChecker");
-  camCmd->add_option("--camera", cam.camera, "camera name (see `colour list cameras`)")->required();
+  camCmd->add_option("--camera", cam.camera, "camera name (see `colour list cameras`)")
+      ->required()
+      ->check(prism::app::cameraName());
   camCmd->add_option("--illuminant", cam.illuminant, "illuminant of the fit (a name or a .csv spectrum)")->capture_default_str();
   camCmd->add_flag("--json", cam.json, "JSON output");
 
@@ -443,6 +454,7 @@ int main(int argc, char** argv) {
     if (*chartCmd) runDemo(demo);
     if (*xyzCmd) {
       if (!rgbText.empty()) xyz.rgb = prism::app::parseNumbers(rgbText, "--rgb");
+      if (!xyzCamera.empty()) xyz.observer = xyzCamera;
       if (!rangeText.empty()) xyz.rangeNm = prism::app::parseNumbers(rangeText, "--range");
       // Any sampling option asks for the sampled estimate (16 wavelengths unless --wavelengths).
       xyz.sample = wavelengthsOpt->count() > 0 || !rangeText.empty() || xyzStrategyOpt->count() > 0 ||

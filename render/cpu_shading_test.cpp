@@ -273,7 +273,9 @@ TEST(CpuShading, ALampAboveTheWaterIsDimmedOnlyBelowTheSurface) {
 // and 10 m above the surface as from the surface itself, in-scattering of the sun and of a lamp
 // and a spot under water included; just below the surface they look nearly so. (The air was
 // taken for water: from 10 m up, 12 m of it.)
-TEST(CpuShading, ACameraAboveTheWaterSeesThroughClearAir) {
+// Jerlov II, its surface at y = 2 (the scene's camera 1 m below it), the sun, and a point lamp and a
+// spot under water beside the origin, the spot's beam across the view from above.
+Scene sunAndLampsUnderWater() {
   Scene scene = oneLightScene("D65", 1000.0f);
   scene.lights[0].direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
   Light lamp;
@@ -295,6 +297,11 @@ TEST(CpuShading, ACameraAboveTheWaterSeesThroughClearAir) {
   water->depthM = 1.0f;  // the scene camera's: the surface at y = 2
   water->resolve();
   scene.techniques.add(std::move(water));
+  return scene;
+}
+
+TEST(CpuShading, ACameraAboveTheWaterSeesThroughClearAir) {
+  const Scene scene = sunAndLampsUnderWater();
   FrameSettings settings;
   settings.mode = RenderMode::Reference;
   auto seenFrom = [&](float height) {
@@ -316,6 +323,35 @@ TEST(CpuShading, ACameraAboveTheWaterSeesThroughClearAir) {
       EXPECT_NEAR(oceanThere[c], ocean[c], tolerance * ocean[c]) << height << " m, " << c;
     }
   }
+}
+
+// The water's lamp_scattering off leaves the lamps' glow and beam out of the view (for speed) and
+// nothing else: the open ocean below the camera shows what it shows without the lamps, and the
+// floor what their light on it alone adds.
+TEST(CpuShading, LampsScatterIntoTheViewUnlessTheWaterSaysNot) {
+  const Scene scene = sunAndLampsUnderWater();
+  FrameSettings settings;
+  settings.mode = RenderMode::Reference;
+  auto seen = [&](const Scene& s) {
+    const UpFacing p(glm::vec3(0.8f), 0.0f, 1.0f, 1.5f);  // half a metre under the surface
+    FrameData frame = buildFrameData(s, settings, frameContext(settings, s, productionTable()), productionTable(), {},
+                                     0, p.camera);
+    CpuShading shading(frame, productionTable(), {});
+    return std::pair{shading.shade(p.texel, glm::vec2(0.5f), p.camera),
+                     shading.shade(GBufferTexel{}, glm::vec2(0.5f), p.camera)};
+  };
+  Scene unscattered = scene, sunOnly = scene;
+  unscattered.techniques.find<underwater::WaterSection>()->lampScattering = false;
+  sunOnly.lights.resize(1);
+  const auto [floor, ocean] = seen(scene);
+  const auto [floorUnscattered, oceanUnscattered] = seen(unscattered);
+  const auto [floorSunOnly, oceanSunOnly] = seen(sunOnly);
+  std::printf("the ocean's Y: %.6g with the lamps' glow, %.6g without, %.6g without the lamps\n", ocean.y,
+              oceanUnscattered.y, oceanSunOnly.y);
+  EXPECT_GT(ocean.y, 1.05f * oceanUnscattered.y);
+  EXPECT_GT(floor.y, floorUnscattered.y);
+  EXPECT_GT(floorUnscattered.y, 1.01f * floorSunOnly.y);  // the lamp 1 m above it adds 2 %
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(oceanUnscattered[c], oceanSunOnly[c], 1e-6f * oceanSunOnly[c]) << c;
 }
 
 TEST(Brdf, ConductorFresnelAtOneAngleMatchesTheComplexFresnelEquations) {

@@ -31,12 +31,16 @@ TEST_F(SceneFolder, WaterIsAJerlovTypeAtADepthWithItsMultipliers) {
   EXPECT_NEAR(w->sigmaS.at(500.0), 2.0 * water.sigmaS.at(500.0), 1e-12);
   EXPECT_NEAR(w->sigmaA.at(500.0), 0.5 * water.sigmaA.at(500.0), 1e-12);
   EXPECT_NEAR(w->kd.at(500.0), 1.5 * water.kd.at(500.0), 1e-12);
+  EXPECT_TRUE(w->lampScattering);
   // The command line changes it like any other value.
   EXPECT_EQ(errorOf([&] { loadScene(f, {"water.type=9C", "water.dataset=williamson2022"}); }),
             f.string() + ": /water/type: unknown water type \"9C\" in the williamson2022 data (known: IB, II, "
                          "III, 1C, 3C, 5C)");
   Scene t = loadScene(f, {"water.type=5C", "water.depth=20", "water.dataset=williamson2022"});
   EXPECT_FLOAT_EQ(t.techniques.find<underwater::WaterSection>()->depthM, 20.0f);
+  EXPECT_FALSE(loadScene(f, {"water.lamp_scattering=false"}).techniques.find<underwater::WaterSection>()->lampScattering);
+  EXPECT_EQ(errorOf([&] { loadScene(f, {"water.lamp_scattering=1"}); }),
+            f.string() + ": /water/lamp_scattering: expected true or false, got 1");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"water.type=IV"}); }),
             f.string() + ": /water/type: unknown water type \"IV\" in the jerlov data (known: I, IA, IB, II, III, "
                          "1C, 3C, 5C, 7C, 9C)");

@@ -112,33 +112,109 @@ PRISM_INLINE vec4 irradianceAtSurface(IN(FrameConstants) fc, int b) {
   return e;
 }
 
-// What the water does to radiance leaving a point `distanceM` along the unit view direction
-// `viewDir` from the camera: transmittance, then the in-scattering of the light from above and of
-// the lamps, over the part of that distance below the surface (a ray that looks up leaves the
-// water after depth / viewDir.y; from a camera above the water, which the viewer's can fly to, a
-// ray enters it at the surface looking down and never otherwise: the air is clear).
-PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, IN(vec3) cameraPosition,
-                               IN(vec3) viewDir, float distanceM) {
-  vec4 sigmaS = frameWaterSpectrum(b, 0);
-  vec4 sigmaT = frameWaterSpectrum(b, 1);
-  vec4 kd = frameWaterSpectrum(b, 2);
+// The part under water of a view ray from the camera along the unit viewDir, distanceM long: it
+// begins enterM metres from the camera and is lengthM long. A ray that looks up leaves the water
+// after depth / viewDir.y; from a camera above the water, which the viewer's can fly to, a ray
+// enters it at the surface looking down and never otherwise: the air is clear.
+struct WaterSpan {
+  float enterM;
+  float lengthM;
+};
+PRISM_INLINE WaterSpan waterSpan(IN(vec3) cameraPosition, IN(vec3) viewDir, float distanceM) {
   float heightM = cameraPosition.y - frameWater().surfaceY;  // > 0: the camera is above the water
   float enterM = heightM <= 0.0f ? 0.0f : viewDir.y < 0.0f ? min(heightM / -viewDir.y, distanceM) : distanceM;
   float leaveM = viewDir.y > 0.0f ? min(distanceM, frameWater().depthM / viewDir.y) : distanceM;
-  float inWaterM = max(leaveM - enterM, 0.0f);
-  PRISM_PRECISE vec3 entry = cameraPosition + viewDir * enterM;
-  vec4 lamps = vec4(0.0f);
+  WaterSpan span;
+  span.enterM = enterM;
+  span.lengthM = max(leaveM - enterM, 0.0f);
+  return span;
+}
+
+// What the water does at batch b to radiance reaching the camera along a view ray (viewDirY: its
+// direction's y): transmittance, then the in-scattering of the light from above, over the ray's
+// part under water.
+PRISM_INLINE vec4 throughWater(IN(FrameConstants) fc, int b, IN(vec4) radiance, IN(WaterSpan) span, float viewDirY) {
+  vec4 sigmaT = frameWaterSpectrum(b, 1);
+  return radiance * waterTransmittance(sigmaT, span.lengthM) +
+         waterInScattering(frameWaterSpectrum(b, 0), sigmaT, frameWaterSpectrum(b, 2), frameWater().depthM, -viewDirY,
+                           span.lengthM) *
+             irradianceAtSurface(fc, b);
+}
+
+// The tristimulus of a lamp's in-scattering at batch b, from its nodes' sum Σ weight·e^(−σt·path)
+// there (times LampRay::scale): the water's σs, the lamp's spectrum and a nebula's dimming in front
+// (nebulaDepthUm: its optical depth there), as the rest of the pixel is dimmed.
+PRISM_INLINE vec3 lampBatch(IN(FrameConstants) fc, int l, int b, IN(vec4) nodeSum, float nebulaDepthUm) {
+  vec4 radiance = frameWaterSpectrum(b, 0) * frameLightSpectrum(l, b) * nodeSum;
+#ifdef PRISM_TECHNIQUE_NEBULA
+  radiance *= nebulaTransmittance4(nebulaDepthUm, fc.mode == kModeRgb ? kNebulaRgbStandInNm : frameBatch(b).lambdaNm);
+#else
+  PRISM_UNUSED(fc);
+  PRISM_UNUSED(nebulaDepthUm);
+#endif
+  return integrateBatch(frameBatch(b), radiance);
+}
+
+// Node n of a lamp's ray from `entry` along viewDir: its weight (x) and its light's path in the
+// water (y).
+PRISM_INLINE vec2 lampNodeSeen(IN(FrameConstants) fc, IN(GpuLight) light, IN(LampRay) r, int n, IN(vec3) entry,
+                               IN(vec3) viewDir) {
+  LampNode node = lampNode(r, n, entry, viewDir, light.type, light.positionW, light.direction, light.cosInner,
+                           light.cosOuter, frameWater().surfaceY);
+  PRISM_UNUSED(fc);
+  return vec2(node.weight, node.pathM);
+}
+
+// The light the lamps (point and spot) scatter into a view ray's part under water, integrated
+// over the frame's wavelengths. A node's geometry does not depend on the wavelength:
+// they are worked out once for four batches at a time, whose σt stay in registers, and once per
+// batch for the rest (an array of the nodes per pixel, which llvmpipe keeps in memory, or
+// branches per batch inside the nodes' loop made RGB frames there 25 % slower).
+PRISM_INLINE vec3 lampsInWater(IN(FrameConstants) fc, IN(vec3) cameraPosition, IN(vec3) viewDir, IN(WaterSpan) span,
+                               float nebulaDepthUm) {
+  vec3 tristimulus = vec3(0.0f);
+  // (A ray looking up from above the water enters none: its entry, 1e30 m off, is no point.)
+  if (!(span.lengthM > 0.0f) || frameWater().lampScattering == 0.0f) return tristimulus;
+  PRISM_PRECISE vec3 entry = cameraPosition + viewDir * span.enterM;
   for (int l = 0; l < fc.lightCount; ++l) {
     GpuLight light = frameLight(l);
-    if (light.type == kLightDirectional || !(inWaterM > 0.0f)) continue;  // entry: 1e30 m off looking up
-    lamps += lampInScattering(sigmaS, sigmaT, entry, viewDir, inWaterM, light.type, light.positionW, light.direction,
-                              light.intensity, light.cosInner, light.cosOuter, frameWater().surfaceY) *
-             frameLightSpectrum(l, b);
+    if (light.type == kLightDirectional) continue;
+    LampRay r = lampRay(entry, viewDir, span.lengthM, light.type, light.positionW, light.direction, light.intensity,
+                        light.cosOuter);
+    if (r.scale == 0.0f) continue;
+    vec3 lamp = vec3(0.0f);
+    int first = 0;
+    for (; first + 4 <= fc.batchCount; first += 4) {
+      vec4 t0 = frameWaterSpectrum(first, 1);
+      vec4 t1 = frameWaterSpectrum(first + 1, 1);
+      vec4 t2 = frameWaterSpectrum(first + 2, 1);
+      vec4 t3 = frameWaterSpectrum(first + 3, 1);
+      vec4 sum0 = vec4(0.0f);
+      vec4 sum1 = vec4(0.0f);
+      vec4 sum2 = vec4(0.0f);
+      vec4 sum3 = vec4(0.0f);
+      for (int n = 0; n < kLampNodeCount; ++n) {
+        vec2 node = lampNodeSeen(fc, light, r, n, entry, viewDir);
+        sum0 += node.x * exp(-t0 * node.y);
+        sum1 += node.x * exp(-t1 * node.y);
+        sum2 += node.x * exp(-t2 * node.y);
+        sum3 += node.x * exp(-t3 * node.y);
+      }
+      lamp += lampBatch(fc, l, first, sum0, nebulaDepthUm) + lampBatch(fc, l, first + 1, sum1, nebulaDepthUm) +
+              lampBatch(fc, l, first + 2, sum2, nebulaDepthUm) + lampBatch(fc, l, first + 3, sum3, nebulaDepthUm);
+    }
+    for (; first < fc.batchCount; ++first) {
+      vec4 t = frameWaterSpectrum(first, 1);
+      vec4 sum = vec4(0.0f);
+      for (int n = 0; n < kLampNodeCount; ++n) {
+        vec2 node = lampNodeSeen(fc, light, r, n, entry, viewDir);
+        sum += node.x * exp(-t * node.y);
+      }
+      lamp += lampBatch(fc, l, first, sum, nebulaDepthUm);
+    }
+    tristimulus += r.scale * lamp;
   }
-  return radiance * waterTransmittance(sigmaT, inWaterM) +
-         waterInScattering(sigmaS, sigmaT, kd, frameWater().depthM, -viewDir.y, inWaterM) *
-             irradianceAtSurface(fc, b) +
-         lamps;
+  return tristimulus;
 }
 #endif
 
@@ -190,7 +266,7 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
   PRISM_UNUSED(cameraPosition);
 #endif
 #ifdef PRISM_TECHNIQUE_WATER
-  float distanceM = 1e30f;  // throughWater stops it at the surface when it looks up
+  WaterSpan water = waterSpan(cameraPosition, viewDir, 1e30f);  // stopped at the surface when it looks up
 #endif
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
   vec3 cameraKm = planetPosition(frameSky().originKm, cameraPosition);
@@ -206,7 +282,7 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
   for (int b = 0; b < fc.batchCount; ++b) {
     vec4 radiance = frameLightSpectrum(fc.lightCount, b);
 #ifdef PRISM_TECHNIQUE_WATER
-    radiance = throughWater(fc, b, radiance, cameraPosition, viewDir, distanceM);
+    radiance = throughWater(fc, b, radiance, water, viewDir.y);
 #endif
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
     radiance = skyBackground(frameAtmosphere(b), b, cameraKm, viewDir, toSun, sunCover);
@@ -216,6 +292,13 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
 #endif
     tristimulus += integrateBatch(frameBatch(b), radiance);
   }
+#ifdef PRISM_TECHNIQUE_WATER
+#ifdef PRISM_TECHNIQUE_NEBULA
+  tristimulus += lampsInWater(fc, cameraPosition, viewDir, water, nebulaDepthUm);
+#else
+  tristimulus += lampsInWater(fc, cameraPosition, viewDir, water, 0.0f);
+#endif
+#endif
   return tristimulus;
 }
 
@@ -293,6 +376,13 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 #endif
   }
 
+#ifdef PRISM_TECHNIQUE_WATER
+  PRISM_PRECISE vec3 fromCamera = s.position - cameraPosition;
+  float distanceM = length(fromCamera);
+  vec3 viewDir = fromCamera / distanceM;
+  WaterSpan water = waterSpan(cameraPosition, viewDir, distanceM);
+#endif
+
   vec3 coefficients = vec3(0.0f);
   if (fc.mode == kModeJakobHanika && kind == kMaterialBaseColour) {
     coefficients = upsamplingCoefficients(s.albedo);  // once per pixel, not per wavelength
@@ -353,9 +443,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
                                      conductorK, metallic, nebulaStarDepthsUm);
 #endif
 #ifdef PRISM_TECHNIQUE_WATER
-    PRISM_PRECISE vec3 fromCamera = s.position - cameraPosition;
-    float distanceM = length(fromCamera);
-    radiance = throughWater(fc, b, radiance, cameraPosition, fromCamera / distanceM, distanceM);
+    radiance = throughWater(fc, b, radiance, water, viewDir.y);
 #endif
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
     if (kind != kMaterialConductor && !s.techniqueShaded) {  // a technique brings its own sky
@@ -369,6 +457,13 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 #endif
     tristimulus += integrateBatch(batch, radiance);
   }
+#ifdef PRISM_TECHNIQUE_WATER
+#ifdef PRISM_TECHNIQUE_NEBULA
+  tristimulus += lampsInWater(fc, cameraPosition, viewDir, water, nebulaDepthUm);
+#else
+  tristimulus += lampsInWater(fc, cameraPosition, viewDir, water, 0.0f);
+#endif
+#endif
   // RGB mode multiplies albedos by lights channel by channel; with a light outside the gamut
   // (negative channels) some albedos come out with a negative tristimulus, which no light has: a
   // green albedo under a 450 nm LED measured Y −8 166 cd/m² (the reference 126). Each component

@@ -32,10 +32,10 @@
 const int kWaterConstantsBinding = 1;
 const int kWaterSpectraBinding = 5;
 struct WaterConstants {
-  float surfaceY;  // world height of the water surface (m)
-  float depthM;    // the camera's depth below it
+  float surfaceY;        // world height of the water surface (m)
+  float depthM;          // the camera's depth below it
+  float lampScattering;  // 1: point and spot lamps scatter into the view (underwater_lamps.glsl); 0: not
   float pad0;
-  float pad1;
 };
 PRISM_INLINE int waterSpectrumIndex(int batch, int j) { return batch * 4 + j; }
 

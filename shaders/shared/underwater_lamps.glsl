@@ -85,41 +85,66 @@ PRISM_INLINE vec2 spotConeSpan(IN(vec3) origin, IN(vec3) dir, float lengthM, IN(
   return span;
 }
 
-// The radiance a lamp (kLightPoint or kLightSpot, lights.glsl's parameters) scatters into the ray
-// from `origin` along the unit `dir` over its first lengthM metres (all under water), per unit of
-// the lamp's spectrum: multiply by it. surfaceY: the water surface's height.
-PRISM_INLINE vec4 lampInScattering(IN(vec4) sigmaS, IN(vec4) sigmaT, IN(vec3) origin, IN(vec3) dir, float lengthM,
-                                   int type, IN(vec3) lampPosition, IN(vec3) spotAxis, float intensity, float cosInner,
-                                   float cosOuter, float surfaceY) {
+// A lamp's in-scattering along a ray is a sum over 16 nodes of weight · e^(−σt·path), times
+// σs·scale: the nodes' weights (the rule's, times the spot's falloff), the paths the light travels
+// in the water to each and on to the ray's origin, and the scale do not depend on the wavelength.
+// lampRay works out what the nodes share, once per pixel and lamp; lampNode each node, once for
+// every batch of wavelengths.
+const int kLampNodeCount = 16;
+struct LampRay {
+  float closest;  // along the ray to its closest approach to the lamp
+  float h;        // the ray's distance from the lamp there
+  float tBegin;   // tan θ at the span's beginning
+  float width;    // the span's angle Δθ
+  float scale;    // I·Δθ/(4π·h); 0 where the ray misses the beam
+};
+
+// The lamp (kLightPoint or kLightSpot, lights.glsl's parameters) seen along the ray from `origin`
+// along the unit `dir` over its first lengthM metres (all under water).
+PRISM_INLINE LampRay lampRay(IN(vec3) origin, IN(vec3) dir, float lengthM, int type, IN(vec3) lampPosition,
+                             IN(vec3) spotAxis, float intensity, float cosOuter) {
+  LampRay r;
+  r.closest = 0.0f;
+  r.h = 1.0f;
+  r.tBegin = 0.0f;
+  r.width = 0.0f;
+  r.scale = 0.0f;
   vec2 span = type == kLightSpot ? spotConeSpan(origin, dir, lengthM, lampPosition, spotAxis, cosOuter)
                                  : vec2(0.0f, lengthM);
-  if (!(span.y > span.x)) return vec4(0.0f);
+  if (!(span.y > span.x)) return r;
   PRISM_PRECISE vec3 toLamp = lampPosition - origin;
-  float closest = dot(toLamp, dir);
-  float h = max(length(toLamp - dir * closest), 1e-3f);  // a ray through the lamp: 1 mm from it
+  r.closest = dot(toLamp, dir);
+  r.h = max(length(toLamp - dir * r.closest), 1e-3f);  // a ray through the lamp: 1 mm from it
   // θ from the closest approach, tan θ = (s − closest)/h, up to 1e15 (float's π/2). The span's
   // angle from the atan of the tangents' difference, and each node's s from the tangent of a sum:
   // a narrow beam's few milliradians are not the difference of two angles near π/2, whose digits
   // a float atan rounds away.
-  float tBegin = clamp((span.x - closest) / h, -1e15f, 1e15f);
-  float tEnd = clamp((span.y - closest) / h, -1e15f, 1e15f);
-  float width = atan(tEnd - tBegin, 1.0f + tBegin * tEnd);
-  vec4 sum = vec4(0.0f);
-  for (int part = 0; part < 2; ++part) {
-    for (int i = 0; i < 8; ++i) {
-      vec2 node = gaussLegendre8(i);
-      // tan(θBegin + φ) = (tBegin·cos φ + sin φ)/(cos φ − tBegin·sin φ), whose denominator,
-      // cos(θBegin + φ)/cos θBegin, stays above 0: tan φ itself is infinite at φ = π/2.
-      float phi = width * 0.5f * (float(part) + node.x);
-      float sinPhi = sin(phi);
-      float cosPhi = cos(phi);
-      float s = closest + h * (tBegin * cosPhi + sinPhi) / (cosPhi - tBegin * sinPhi);
-      PRISM_PRECISE vec3 p = origin + dir * s;
-      LightIncidence li = lightIncidence(type, lampPosition, spotAxis, 1.0f, cosInner, cosOuter, p);
-      float profile = li.irradiance * li.distance * li.distance;  // the spot's falloff; 1 for a point lamp
-      float underM = li.distance * shareBelowSurface(p.y, lampPosition.y, surfaceY);
-      sum += (node.y * 0.5f * profile) * exp(-sigmaT * (s + underM));
-    }
-  }
-  return sigmaS * (intensity * width / (4.0f * kPi * h)) * sum;
+  r.tBegin = clamp((span.x - r.closest) / r.h, -1e15f, 1e15f);
+  float tEnd = clamp((span.y - r.closest) / r.h, -1e15f, 1e15f);
+  r.width = atan(tEnd - r.tBegin, 1.0f + r.tBegin * tEnd);
+  r.scale = intensity * r.width / (4.0f * kPi * r.h);
+  return r;
+}
+
+// Node n (< kLampNodeCount) of the ray's lamp.
+struct LampNode {
+  float weight;
+  float pathM;  // the path its light travels in the water: from the lamp (the part under the surface) and on to the ray's origin
+};
+PRISM_INLINE LampNode lampNode(IN(LampRay) r, int n, IN(vec3) origin, IN(vec3) dir, int type, IN(vec3) lampPosition,
+                               IN(vec3) spotAxis, float cosInner, float cosOuter, float surfaceY) {
+  vec2 node = gaussLegendre8(n % 8);
+  // tan(θBegin + φ) = (tBegin·cos φ + sin φ)/(cos φ − tBegin·sin φ), whose denominator,
+  // cos(θBegin + φ)/cos θBegin, stays above 0: tan φ itself is infinite at φ = π/2.
+  float phi = r.width * 0.5f * (float(n / 8) + node.x);
+  float sinPhi = sin(phi);
+  float cosPhi = cos(phi);
+  float s = r.closest + r.h * (r.tBegin * cosPhi + sinPhi) / (cosPhi - r.tBegin * sinPhi);
+  PRISM_PRECISE vec3 p = origin + dir * s;
+  LightIncidence li = lightIncidence(type, lampPosition, spotAxis, 1.0f, cosInner, cosOuter, p);
+  float profile = li.irradiance * li.distance * li.distance;  // the spot's falloff; 1 for a point lamp
+  LampNode result;
+  result.weight = node.y * 0.5f * profile;
+  result.pathM = s + li.distance * shareBelowSurface(p.y, lampPosition.y, surfaceY);
+  return result;
 }

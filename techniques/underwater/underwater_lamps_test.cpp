@@ -55,9 +55,16 @@ double simpson(double sigmaS, double sigmaT, glm::dvec3 origin, glm::dvec3 dir, 
 
 vec4 gpuSide(const vec4& sigmaS, const vec4& sigmaT, glm::dvec3 origin, glm::dvec3 dir, double length, const Lamp& lamp,
              double surfaceY) {
-  return lampInScattering(sigmaS, sigmaT, vec3(origin), vec3(glm::normalize(dir)), static_cast<float>(length),
-                          lamp.type, vec3(lamp.position), vec3(lamp.axis), 1.0f, static_cast<float>(lamp.cosInner),
-                          static_cast<float>(lamp.cosOuter), static_cast<float>(surfaceY));
+  const vec3 o(origin), d(glm::normalize(dir)), position(lamp.position), axis(lamp.axis);
+  const float cosInner = static_cast<float>(lamp.cosInner), cosOuter = static_cast<float>(lamp.cosOuter);
+  const LampRay r = lampRay(o, d, static_cast<float>(length), lamp.type, position, axis, 1.0f, cosOuter);
+  vec4 sum(0.0f);
+  if (r.scale == 0.0f) return sum;
+  for (int n = 0; n < kLampNodeCount; ++n) {
+    const LampNode node = lampNode(r, n, o, d, lamp.type, position, axis, cosInner, cosOuter, static_cast<float>(surfaceY));
+    sum += node.weight * glm::exp(-sigmaT * node.pathM);
+  }
+  return sigmaS * r.scale * sum;
 }
 
 // Jerlov I to 9C at 440–680 nm span σt of 0.02–2 m⁻¹: four of them in one batch.

@@ -32,6 +32,7 @@ TechniqueBlock WaterSection::pack(const FramePackInput& input) const {
   shared::WaterConstants constants{};
   constants.surfaceY = surfaceY(input.sceneCameraPositionW.y);
   constants.depthM = std::max(constants.surfaceY - input.cameraPositionW.y, 0.0f);
+  constants.lampScattering = lampScattering ? 1.0f : 0.0f;
   block.constantsBinding = shared::kWaterConstantsBinding;
   block.setConstants(constants);
   block.dataBinding = shared::kWaterSpectraBinding;
@@ -48,8 +49,15 @@ TechniqueBlock WaterSection::pack(const FramePackInput& input) const {
 
 TechniqueBench WaterSection::bench() const {
   const std::vector<std::pair<std::string, std::string>> spectral16 = {{"mode", "jakob-hanika"}, {"wavelengths", "16"}};
-  return {{{"rgb dry", {}, true}, {"16 dry", spectral16, true}, {"16 wet", spectral16, false}},
-          {{"rgb_ratio_wet_to_dry", "rgb", "rgb dry"}, {"spectral16_ratio_wet_to_dry", "16 wet", "16 dry"}}};
+  TechniqueBench b{{{"rgb dry", {}, true}, {"16 dry", spectral16, true}, {"16 wet", spectral16, false}},
+                   {{"rgb_ratio_wet_to_dry", "rgb", "rgb dry"}, {"spectral16_ratio_wet_to_dry", "16 wet", "16 dry"}}};
+  if (lampScattering) {
+    auto unscattered = std::make_shared<WaterSection>(*this);
+    unscattered->lampScattering = false;
+    b.configs.push_back({"16 wet, lamps unscattered", spectral16, false, 0, unscattered});
+    b.ratios.push_back({"spectral16_ratio_lamp_scattering", "16 wet", "16 wet, lamps unscattered"});
+  }
+  return b;
 }
 
 std::optional<TechniqueMedium> WaterSection::medium(const glm::vec3& sceneCameraPositionW) const {
@@ -65,7 +73,7 @@ std::optional<TechniqueMedium> WaterSection::medium(const glm::vec3& sceneCamera
 
 std::unique_ptr<TechniqueSection> WaterSection::parse(const schema::Node& n, const TechniqueSections&) {
   using schema::Range;
-  n.expectObject({"type", "dataset", "depth", "scattering_scale", "absorption_scale", "kd_scale"});
+  n.expectObject({"type", "dataset", "depth", "scattering_scale", "absorption_scale", "kd_scale", "lamp_scattering"});
   auto w = std::make_unique<WaterSection>();
   if (auto d = n.optionalChild("dataset")) w->dataset = d->string();
   if (auto t = n.optionalChild("type")) w->type = t->string();
@@ -73,6 +81,7 @@ std::unique_ptr<TechniqueSection> WaterSection::parse(const schema::Node& n, con
   w->scatteringScale = n.numberF("scattering_scale", 1.0f, Range::atLeast(0.0));
   w->absorptionScale = n.numberF("absorption_scale", 1.0f, Range::atLeast(0.0));
   w->kdScale = n.numberF("kd_scale", 1.0f, Range::atLeast(0.0));
+  w->lampScattering = n.boolean("lamp_scattering", true);
   try {
     jerlovDatasetFromName(w->dataset);
   } catch (const Error& e) {

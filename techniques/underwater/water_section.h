@@ -21,6 +21,9 @@ struct WaterSection final : TechniqueSection {
   float scatteringScale = 1.0f;
   float absorptionScale = 1.0f;
   float kdScale = 1.0f;
+  // Point and spot lamps scatter their light into the view (a torch's glow and beam); off, the
+  // rasteriser leaves it out for speed (the reference always traces it).
+  bool lampScattering = true;
   // Resolved from the above, multipliers applied (resolve()): 1/m.
   Spectrum sigmaA;
   Spectrum sigmaS;
@@ -43,7 +46,8 @@ struct WaterSection final : TechniqueSection {
   // Everything below the surface, scattering isotropically as the analytic model assumes, with
   // its Kd (by which PRT's forward pass dims the environment reaching its objects).
   std::optional<TechniqueMedium> medium(const glm::vec3& sceneCameraPositionW) const override;
-  // The water term's cost: the same frames with the water taken out, RGB and 16 wavelengths.
+  // The water term's cost: the same frames with the water taken out, RGB and 16 wavelengths; and
+  // the lamps' in-scattering's, 16 wavelengths with it left out (where lampScattering is on).
   TechniqueBench bench() const override;
 
   static std::unique_ptr<TechniqueSection> parse(const schema::Node& node, const TechniqueSections& earlier);

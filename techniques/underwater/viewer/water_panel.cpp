@@ -1,5 +1,6 @@
 // The water panel (techniques/underwater): the Jerlov water type and its data set, the camera's
-// depth and the multipliers of each coefficient. Sees only the PanelContext.
+// depth, the multipliers of each coefficient and whether lamps scatter into the view. Sees only
+// the PanelContext.
 #include <imgui.h>
 
 #include "core/error.h"
@@ -28,6 +29,7 @@ class WaterPanel final : public Panel {
     changed |= ImGui::SliderFloat("scattering x", &w.scatteringScale, 0.0f, 4.0f);
     changed |= ImGui::SliderFloat("absorption x", &w.absorptionScale, 0.0f, 4.0f);
     changed |= ImGui::SliderFloat("Kd x", &w.kdScale, 0.0f, 4.0f);
+    changed |= ImGui::Checkbox("lamps scatter into the view", &w.lampScattering);
     if (changed) apply(context);
   }
 

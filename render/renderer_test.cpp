@@ -135,6 +135,8 @@ INSTANTIATE_TEST_SUITE_P(
                     // Lamps under water: their in-scattering in every pixel (a fixture).
                     ParityCase{PRISM_RENDER_TEST_DIR "/water_lamps.json", RenderMode::JakobHanika},
                     ParityCase{PRISM_RENDER_TEST_DIR "/water_lamps.json", RenderMode::Rgb},
+                    // A beam that a wall shadows: the lamp's shadow map looked up along the view.
+                    ParityCase{PRISM_RENDER_TEST_DIR "/water_beam.json", RenderMode::JakobHanika},
                     // The same seen from 2 m above the water: the view enters it at the surface.
                     ParityCase{PRISM_RENDER_TEST_DIR "/water_lamps.json", RenderMode::JakobHanika, GBufferAlbedo::Rgb,
                                SamplingStrategy::Uniform, 8.0f},

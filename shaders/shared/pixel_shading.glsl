@@ -64,21 +64,33 @@ PRISM_INLINE vec3 worldFromDepth(IN(mat4) inverseViewProjection, IN(vec2) uv, fl
   return vec3(p.x, p.y, p.z) / p.w;
 }
 
-// Fraction of the PCF footprint that sees the light (1 for lights without a shadow map).
-PRISM_INLINE float shadowVisibility(IN(GpuLight) light, IN(vec3) position, IN(vec3) normal,
-                                    int size) {
-  int layer = light.shadowLayer;
-  if (layer < 0) return 1.0f;
-  PRISM_PRECISE vec3 offsetPosition = position + normal * light.shadowNormalOffsetM;
+// Where a point is looked up in a light's shadow map: its layer (a point light's face) and the
+// point in that layer's clip space.
+struct ShadowLookup {
+  int layer;
+  vec4 clip;
+};
+PRISM_INLINE ShadowLookup shadowLookup(IN(GpuLight) light, IN(vec3) position) {
+  ShadowLookup lookup;
+  lookup.layer = light.shadowLayer;
   mat4 fromWorld = light.shadowFromWorld;
   if (light.type == kLightPoint) {
-    int face = pointShadowFace(offsetPosition - light.positionW);
-    layer += face;
+    int face = pointShadowFace(position - light.positionW);
+    lookup.layer += face;
     fromWorld = pointShadowFromWorld(light.positionW, face,
                                      vec3(light.shadowFaceScale, light.shadowDepthA, light.shadowDepthB));
   }
-  vec4 clip = transformPoint(fromWorld, offsetPosition);
-  ShadowFootprint f = shadowFootprint(clip, size);
+  lookup.clip = transformPoint(fromWorld, position);
+  return lookup;
+}
+
+// Fraction of the PCF footprint that sees the light (1 for lights without a shadow map).
+PRISM_INLINE float shadowVisibility(IN(GpuLight) light, IN(vec3) position, IN(vec3) normal,
+                                    int size) {
+  if (light.shadowLayer < 0) return 1.0f;
+  PRISM_PRECISE vec3 offsetPosition = position + normal * light.shadowNormalOffsetM;
+  ShadowLookup lookup = shadowLookup(light, offsetPosition);
+  ShadowFootprint f = shadowFootprint(lookup.clip, size);
   if (!f.inside) return 1.0f;
   float visible = 0.0f;
   for (int j = 0; j < 4; ++j) {
@@ -87,7 +99,31 @@ PRISM_INLINE float shadowVisibility(IN(GpuLight) light, IN(vec3) position, IN(ve
     for (int i = 0; i < 4; ++i) {
       int x = clamp(f.x0 + i, 0, size - 1);
       visible += wy * shadowTapWeight(i, f.frac.x) *
-                 shadowTest(shadowDepthAt(layer, x, y), f.depth, light.shadowDepthBias);
+                 shadowTest(shadowDepthAt(lookup.layer, x, y), f.depth, light.shadowDepthBias);
+    }
+  }
+  return visible;
+}
+
+// The same for a point in a medium (no surface, so no normal offset), by one bilinear comparison
+// of the 2 × 2 texels around it: a lamp's in-scattering looks up 16 points along each view ray,
+// where the surfaces' 4 × 4 footprint would take 256 fetches. A point beyond the map's far plane
+// (which the scene's bounds set) is behind whatever the map holds there: compared at that plane,
+// not taken as lit (a torch's beam went on 2 m behind a wall).
+PRISM_INLINE float shadowVisibilityInMedium(IN(GpuLight) light, IN(vec3) position, int size) {
+  if (light.shadowLayer < 0) return 1.0f;
+  ShadowLookup lookup = shadowLookup(light, position);
+  lookup.clip.z = min(lookup.clip.z, lookup.clip.w);
+  ShadowFootprint f = shadowFootprint(lookup.clip, size);
+  if (!f.inside) return 1.0f;
+  float visible = 0.0f;
+  for (int j = 1; j < 3; ++j) {
+    int y = clamp(f.y0 + j, 0, size - 1);
+    float wy = j == 1 ? 1.0f - f.frac.y : f.frac.y;
+    for (int i = 1; i < 3; ++i) {
+      int x = clamp(f.x0 + i, 0, size - 1);
+      visible += wy * (i == 1 ? 1.0f - f.frac.x : f.frac.x) *
+                 shadowTest(shadowDepthAt(lookup.layer, x, y), f.depth, light.shadowDepthBias);
     }
   }
   return visible;
@@ -155,18 +191,17 @@ PRISM_INLINE vec3 lampBatch(IN(FrameConstants) fc, int l, int b, IN(vec4) nodeSu
   return integrateBatch(frameBatch(b), radiance);
 }
 
-// Node n of a lamp's ray from `entry` along viewDir: its weight (x) and its light's path in the
-// water (y).
+// Node n of a lamp's ray from `entry` along viewDir: its weight, dimmed by the lamp's shadow there
+// (x), and its light's path in the water (y).
 PRISM_INLINE vec2 lampNodeSeen(IN(FrameConstants) fc, IN(GpuLight) light, IN(LampRay) r, int n, IN(vec3) entry,
                                IN(vec3) viewDir) {
   LampNode node = lampNode(r, n, entry, viewDir, light.type, light.positionW, light.direction, light.cosInner,
                            light.cosOuter, frameWater().surfaceY);
-  PRISM_UNUSED(fc);
-  return vec2(node.weight, node.pathM);
+  return vec2(node.weight * shadowVisibilityInMedium(light, node.position, fc.shadowMapSize), node.pathM);
 }
 
 // The light the lamps (point and spot) scatter into a view ray's part under water, integrated
-// over the frame's wavelengths. A node's geometry does not depend on the wavelength:
+// over the frame's wavelengths. A node's geometry and shadow do not depend on the wavelength:
 // they are worked out once for four batches at a time, whose σt stay in registers, and once per
 // batch for the rest (an array of the nodes per pixel, which llvmpipe keeps in memory, or
 // branches per batch inside the nodes' loop made RGB frames there 25 % slower).

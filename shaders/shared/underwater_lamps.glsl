@@ -5,7 +5,8 @@
 // |L − p| under the surface (shareBelowSurface), and p sends σs/(4π) of it towards the camera,
 // which it reaches through e^(−σt·s):
 //   L_lamp = σs/(4π) ∫ I(p)/|L − p|² · e^(−σt·(s + r_w(s))) ds   over the ray's part in the water
-// (isotropic scattering, as the path tracer's water; no shadows: the lamp lights the whole ray).
+// (isotropic scattering, as the path tracer's water; the lamp's shadow map, where it has one,
+// dims each node: pixel_shading.glsl's lampsInWater).
 // Equiangular substitution (Kulla & Fajardo 2012): with t_c the ray's closest approach to L and h
 // its distance there, s = t_c + h·tan θ turns ds/|L − p|² into dθ/h, so the integrand left is
 // bounded and smooth; 16 Gauss–Legendre nodes (two halves of 8) over θ. A spot's cone is first
@@ -129,7 +130,8 @@ PRISM_INLINE LampRay lampRay(IN(vec3) origin, IN(vec3) dir, float lengthM, int t
 // Node n (< kLampNodeCount) of the ray's lamp.
 struct LampNode {
   float weight;
-  float pathM;  // the path its light travels in the water: from the lamp (the part under the surface) and on to the ray's origin
+  float pathM;    // the path its light travels in the water: from the lamp (the part under the surface) and on to the ray's origin
+  vec3 position;  // where it lies (the lamp's shadow is looked up there)
 };
 PRISM_INLINE LampNode lampNode(IN(LampRay) r, int n, IN(vec3) origin, IN(vec3) dir, int type, IN(vec3) lampPosition,
                                IN(vec3) spotAxis, float cosInner, float cosOuter, float surfaceY) {
@@ -146,5 +148,6 @@ PRISM_INLINE LampNode lampNode(IN(LampRay) r, int n, IN(vec3) origin, IN(vec3) d
   LampNode result;
   result.weight = node.y * 0.5f * profile;
   result.pathM = s + li.distance * shareBelowSurface(p.y, lampPosition.y, surfaceY);
+  result.position = p;
   return result;
 }

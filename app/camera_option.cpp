@@ -20,12 +20,7 @@ const Observer& cameraOption(const std::string& name) {
 CLI::Validator cameraName() {
   return CLI::Validator(
       [](std::string& name) {
-        try {
-          cameraOption(name);
-          return std::string();
-        } catch (const Error&) {
-          return fmt::format("\"{}\" is not a camera (see `prism colour list cameras`)", excerpt(name));
-        }
+        return name.empty() ? std::string("\"\" is not a camera (see `prism colour list cameras`)") : std::string();
       },
       "");
 }

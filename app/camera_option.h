@@ -15,8 +15,9 @@ namespace prism::app {
 // observer", pointing at the observers' list).
 const Observer& cameraOption(const std::string& name);
 
-// CLI11's check of a --camera value, as it is parsed: a camera's name (given empty, it was taken
-// for no camera, and a script's unset variable rendered CIE 1931 XYZ without a word).
+// CLI11's check of a --camera value, as it is parsed: not empty (given empty, it was taken for no
+// camera, and a script's unset variable rendered CIE 1931 XYZ without a word). A malformed command
+// line, exit 2; a name that is no camera's is bad input, cameraOption's, exit 1.
 CLI::Validator cameraName();
 
 }  // namespace prism::app

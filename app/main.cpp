@@ -454,7 +454,10 @@ int main(int argc, char** argv) {
     if (*chartCmd) runDemo(demo);
     if (*xyzCmd) {
       if (!rgbText.empty()) xyz.rgb = prism::app::parseNumbers(rgbText, "--rgb");
-      if (!xyzCamera.empty()) xyz.observer = xyzCamera;
+      if (!xyzCamera.empty()) {
+        prism::app::cameraOption(xyzCamera);  // a camera, not a CIE observer by another name
+        xyz.observer = xyzCamera;
+      }
       if (!rangeText.empty()) xyz.rangeNm = prism::app::parseNumbers(rangeText, "--range");
       // Any sampling option asks for the sampled estimate (16 wavelengths unless --wavelengths).
       xyz.sample = wavelengthsOpt->count() > 0 || !rangeText.empty() || xyzStrategyOpt->count() > 0 ||

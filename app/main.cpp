@@ -1,6 +1,6 @@
 // The prism command line: one subcommand per job, each in its own file. CLI11's headers cost ~15 s
-// per file on 2 cores, so few files include them (this one, cli_settings.h, nebula_command_line.cpp
-// and parse_error_hint.cpp).
+// per file on 2 cores, so few files include them (this one, cli_settings.h, colour_command_line.cpp,
+// nebula_command_line.cpp and parse_error_hint.cpp).
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -17,7 +17,7 @@
 #include "app/camera_option.h"
 #include "app/cli_settings.h"
 #include "app/cluster_command.h"
-#include "app/colour_commands.h"
+#include "app/colour_command_line.h"
 #include "app/merge_command.h"
 #include "app/nebula_command_line.h"
 #include "app/option_lists.h"
@@ -101,92 +101,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   chartCmd->add_flag("--json", demo.json, "print the patch values as JSON");
 
-  auto* colour = app.add_subcommand("colour", "Colorimetry: XYZ of spectra, colour differences, conversions");
-  colour->require_subcommand(1);
-
-  XyzOptions xyz;
-  std::string rgbText;
-  auto* xyzCmd = colour->add_subcommand("xyz", "XYZ (or camera RGB) of a reflectance or RGB albedo under an illuminant");
-  xyzCmd->add_option("--illuminant", xyz.illuminant, "illuminant name (see `colour list illuminants`) or a spectrum file (.csv)")->capture_default_str();
-  auto* xyzObserverOpt =
-      xyzCmd->add_option("--observer", xyz.observer, "cie1931, cie1964 or a camera")->capture_default_str();
-  // As render, reference and the other commands name a camera (it failed: "arguments were not expected").
-  std::string xyzCamera;
-  xyzCmd->add_option("--camera", xyzCamera, "a camera as the observer (raw camera RGB)")
-      ->excludes(xyzObserverOpt)
-      ->check(prism::app::cameraName());
-  auto* reflOpt = xyzCmd->add_option("--reflectance", xyz.reflectanceFile, "spectral CSV: wavelength_nm,value");
-  auto* xyzRgbOpt =
-      xyzCmd->add_option("--rgb", rgbText, "r,g,b albedo, upsampled with a Jakob–Hanika fit")->excludes(reflOpt);
-  // --gamut and --encoded describe --rgb: without it they were ignored.
-  xyzCmd->add_option("--gamut", xyz.gamut, "colour space of --rgb")->capture_default_str()->needs(xyzRgbOpt);
-  xyzCmd->add_flag("--encoded", xyz.encoded, "--rgb is transfer-encoded (e.g. 8-bit sRGB / 255), not linear")
-      ->needs(xyzRgbOpt);
-  std::string rangeText;
-  auto* wavelengthsOpt = xyzCmd->add_option("--wavelengths", xyz.wavelengthCount,
-                     "also estimate from N sampled wavelengths (a multiple of 4, 4–1000)");
-  xyzCmd->add_option("--range", rangeText, "MIN,MAX nm of the sampled wavelengths (within 360–830)");
-  auto* xyzStrategyOpt = xyzCmd->add_option("--strategy", xyz.strategy,
-                     "uniform, stratified, rotated, importance (the observer's response), lights (the "
-                     "illuminant × that response) or optimised (fitted for the illuminant)")->capture_default_str();
-  auto* xyzSeedOpt = xyzCmd->add_option("--seed", xyz.seed, "seed of stratified, rotated, importance and lights sampling");
-  xyzCmd->add_flag("--json", xyz.json, "JSON output");
-
-  DeltaEOptions de;
-  std::vector<std::string> labTexts;
-  auto* deCmd = colour->add_subcommand("delta-e", "colour difference of two CIELAB colours");
-  deCmd->add_option("--lab", labTexts, "L,a,b (give twice)")->required();
-  deCmd->add_option("--formula", de.formula, "2000, 94 or 76")->capture_default_str();
-  deCmd->add_flag("--json", de.json, "JSON output");
-
-  CctOptions cct;
-  auto* cctCmd = colour->add_subcommand("cct", "CIE daylight SPD at a correlated colour temperature, as CSV");
-  cctCmd->add_option("kelvin", cct.cctK, "4000–25000 K")->required();
-  cctCmd->add_option("--step", cct.stepNm, "wavelength step in nm (1–10)")->capture_default_str();
-  cctCmd->add_option("-o,--output", cct.output, "CSV file to write (default: stdout)");
-
-  ConvertOptions conv;
-  std::string convText;
-  auto* convCmd = colour->add_subcommand("convert", "convert a colour between RGB spaces (or xyz)");
-  convCmd->add_option("--from", conv.from, "srgb, display-p3, rec2020, acescg, aces2065-1, xyz")->required();
-  convCmd->add_option("--to", conv.to, "same choices as --from")->required();
-  convCmd->add_option("values", convText, "r,g,b (encoded unless --linear) or X,Y,Z")->required();
-  convCmd->add_option("--adaptation", conv.adaptation, "bradford, cat02, von-kries or none: between two RGB spaces' whites (XYZ has none: a conversion to or from xyz adapts nothing)")->capture_default_str();
-  convCmd->add_flag("--linear", conv.linear, "values are linear, not transfer-encoded");
-  convCmd->add_flag("--json", conv.json, "JSON output");
-
-  CameraMatrixOptions cam;
-  auto* camCmd = colour->add_subcommand("camera-matrix", "least-squares camera RGB → XYZ matrix on the ColorChecker");
-  camCmd->add_option("--camera", cam.camera, "camera name (see `colour list cameras`)")
-      ->required()
-      ->check(prism::app::cameraName());
-  camCmd->add_option("--illuminant", cam.illuminant, "illuminant of the fit (a name or a .csv spectrum)")->capture_default_str();
-  camCmd->add_flag("--json", cam.json, "JSON output");
-
-  std::string listWhat;
-  bool listJson = false;
-  auto* listCmd = colour->add_subcommand("list", "list known names");
-  // Not required by CLI11, whose "what is required" names no list: colourList says which there are.
-  listCmd->add_option("what", listWhat, "illuminants, observers, cameras or spaces");
-  listCmd->add_flag("--json", listJson, "JSON output");
-
-  MetamerOptions metamer;
-  auto* metamerCmd = colour->add_subcommand("metamer", "a metamer: the same colour under one illuminant, as different as possible under another");
-  metamerCmd->add_option("--reflectance", metamer.reflectance, "a ColorChecker patch name or a spectral CSV")->required();
-  metamerCmd->add_option("--match", metamer.match, "illuminant under which the colours match (a name or a .csv spectrum)")->capture_default_str();
-  metamerCmd->add_option("--target", metamer.target, "illuminant under which they differ most (a name or a .csv spectrum)")->capture_default_str();
-  std::string metamerUnder = fmt::format("{}", fmt::join(metamer.under, ","));
-  auto* metamerUnderOpt = metamerCmd->add_option("--under", metamerUnder, "illuminants to report ΔE00 under, comma-separated (names or .csv spectra)")
-                              ->capture_default_str();
-  metamerCmd->add_option("--observer", metamer.observer, "cie1931 or cie1964")->capture_default_str();
-  metamerCmd->add_option("-o,--output", metamer.output, "CSV of the metamer to write");
-  metamerCmd->add_flag("--json", metamer.json, "JSON output");
-
-  SpectralTextureOptions spectralTexture;
-  auto* spectralTextureCmd = colour->add_subcommand("spectral-texture", "the ColorChecker as a spectral texture (docs/spectral-texture.md)");
-  spectralTextureCmd->add_option("output", spectralTexture.output, "the .exr to write")->required();
-  spectralTextureCmd->add_option("--cell", spectralTexture.cell, "texels per patch side")->capture_default_str();
-  spectralTextureCmd->add_option("--basis", spectralTexture.basis, "0: samples at 5 nm; k: k SVD basis functions")->capture_default_str();
+  prism::app::addColourCommands(app);
 
   auto* prtCmd = app.add_subcommand("prt", "spectral precomputed radiance transfer (SH-5 × SVD basis)");
   prtCmd->require_subcommand(1);
@@ -452,39 +367,6 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
     if (*demoCmd) runGallery(gallery);
     if (*chartCmd) runDemo(demo);
-    if (*xyzCmd) {
-      if (!rgbText.empty()) xyz.rgb = prism::app::parseNumbers(rgbText, "--rgb");
-      if (!xyzCamera.empty()) {
-        prism::app::cameraOption(xyzCamera);  // a camera, not a CIE observer by another name
-        xyz.observer = xyzCamera;
-      }
-      if (!rangeText.empty()) xyz.rangeNm = prism::app::parseNumbers(rangeText, "--range");
-      // Any sampling option asks for the sampled estimate (16 wavelengths unless --wavelengths).
-      xyz.sample = wavelengthsOpt->count() > 0 || !rangeText.empty() || xyzStrategyOpt->count() > 0 ||
-                   xyzSeedOpt->count() > 0;
-      if (xyzSeedOpt->count() > 0 && (xyz.strategy == "uniform" || xyz.strategy == "optimised"))
-        throw prism::Error(fmt::format("--seed: the {} strategy draws no random numbers (stratified, rotated, "
-                                       "importance and lights do)", xyz.strategy));
-      colourXyz(xyz);
-    }
-    if (*deCmd) {
-      // A malformed command line (exit 2), as a missing --lab is.
-      if (labTexts.size() != 2) throw CLI::ValidationError("--lab", "give it exactly twice, one colour each");
-      for (const std::string& t : labTexts) de.labs.push_back(prism::app::parseNumbers(t, "--lab"));
-      colourDeltaE(de);
-    }
-    if (*cctCmd) colourCct(cct);
-    if (*convCmd) {
-      conv.values = prism::app::parseNumbers(convText, "colour convert");
-      colourConvert(conv);
-    }
-    if (*camCmd) colourCameraMatrix(cam);
-    if (*listCmd) colourList(listWhat, listJson);
-    if (*metamerCmd) {
-      if (metamerUnderOpt->count() > 0) metamer.under = prism::app::parseNames(metamerUnder, "--under");
-      colourMetamer(metamer);
-    }
-    if (*spectralTextureCmd) colourSpectralTexture(spectralTexture);
     if (*prtBakeCmd) runPrtBake(prtBake);
     if (*prtReportCmd) {
       if (!prtRotate.empty()) prtReport.rotate = prism::app::parseNumbers(prtRotate, "--rotate");

@@ -144,7 +144,6 @@ TEST(UnderwaterLamps, ASpotsBeamIsFoundWhereItCrossesTheRay) {
   EXPECT_EQ(gpuSide(kSigmaS, kSigmaT, camera, {0.0, 0.0, -1.0}, 1e30, spot, 0.0), vec4(0.0f));
 }
 
-// A lamp above the surface reaches the ray through water only over its path's lower part.
 // Rays nearly along the cone's surface, where its quadratic is ill-conditioned (A = (d·axis)² −
 // cos²θ near 0): from 30 cm in front of the lamp on its axis, and parallel to the cone's side
 // 1 cm inside and outside it, at angles to the axis either side of the cone's 12°.
@@ -167,8 +166,21 @@ TEST(UnderwaterLamps, ARayAlongTheConesSideFindsItsBeam) {
   for (double offset : {-0.01, 0.01})
     for (double length : {3.0, 1e30})
       expectMatches(spot.position + 0.5 * generator + offset * inward, generator, length, spot, 0.0, kTolerance);
+  // An endless ray 1e-7 rad from the cone's angle that enters the beam 3.1 m along and leaves it
+  // 580 km on: in float the quadratic's A rounded to 0, the far cut was lost, and the piece from
+  // the near one on, tested at its middle 5e29 m away, where only its direction counts, was taken
+  // as outside: the beam gave nothing.
+  Lamp grazed;
+  grazed.type = kLightSpot;
+  grazed.position = {1.2314552, -3.78960805, 1.51261163};
+  grazed.axis = {-0.967272146, 0.250492297, -0.0404747352};
+  grazed.cosOuter = 0.931072831;
+  grazed.cosInner = std::cos(std::acos(grazed.cosOuter) - glm::radians(3.0));
+  expectMatches({4.19281885, -3.79949907, 0.725780606}, {-0.969358633, 0.0134411582, 0.24528183}, 1e30, grazed, 0.0,
+                kTolerance);
 }
 
+// A lamp above the surface reaches the ray through water only over its path's lower part.
 TEST(UnderwaterLamps, ALampAboveTheWaterIsDimmedOnlyBelowTheSurface) {
   Lamp lamp;
   lamp.position = {0.0, 3.0, -5.0};

@@ -108,12 +108,13 @@ PRISM_INLINE float shadowVisibility(IN(GpuLight) light, IN(vec3) position, IN(ve
 // The same for a point in a medium (no surface, so no normal offset), by one bilinear comparison
 // of the 2 × 2 texels around it: a lamp's in-scattering looks up 16 points along each view ray,
 // where the surfaces' 4 × 4 footprint would take 256 fetches. A point beyond the map's far plane
-// (which the scene's bounds set) is behind whatever the map holds there: compared at that plane,
-// not taken as lit (a torch's beam went on 2 m behind a wall).
+// (which the scene's bounds set) is behind whatever the map holds there: compared just before that
+// plane, not taken as lit (a torch's beam went on behind a wall). Just before: 1e-6 of clip w,
+// 16 float steps below 1, which a GPU's division, 2.5 steps off, cannot round past.
 PRISM_INLINE float shadowVisibilityInMedium(IN(GpuLight) light, IN(vec3) position, int size) {
   if (light.shadowLayer < 0) return 1.0f;
   ShadowLookup lookup = shadowLookup(light, position);
-  lookup.clip.z = min(lookup.clip.z, lookup.clip.w);
+  lookup.clip.z = min(lookup.clip.z, (1.0f - 1e-6f) * lookup.clip.w);
   ShadowFootprint f = shadowFootprint(lookup.clip, size);
   if (!f.inside) return 1.0f;
   float visible = 0.0f;

@@ -38,7 +38,7 @@ struct WaterSection final : TechniqueSection {
   std::string_view key() const override { return kKey; }
   std::string_view shaderDefine() const override { return "PRISM_TECHNIQUE_WATER"; }
   std::unique_ptr<TechniqueSection> clone() const override { return std::make_unique<WaterSection>(*this); }
-  // WaterConstants (the surface and the camera's depth below it) and, per batch, σs, σt = σa + σs
+  // WaterConstants (the surface, the camera's depth below it, whether lamps scatter) and, per batch, σs, σt = σa + σs
   // and Kd at its wavelengths (in RGB mode at 680, 550 and 440 nm, the wavelengths RGB renderers
   // commonly stand R, G and B for), then the environment's light from above as the frame gives it
   // (FramePackInput::environmentFromAbove; 0 without): underwater.glsl's layout.

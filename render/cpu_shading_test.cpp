@@ -354,6 +354,40 @@ TEST(CpuShading, LampsScatterIntoTheViewUnlessTheWaterSaysNot) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(oceanUnscattered[c], oceanSunOnly[c], 1e-6f * oceanSunOnly[c]) << c;
 }
 
+// The lamps' glow is worked out for four batches of wavelengths at a time, the rest one by one
+// (lampsInWater): over 360–830 nm it must be the sum of the glows of the same wavelengths taken
+// four at a time in their own frames, one batch each (16 wavelengths in one group of four; 20 in a
+// group and one more; 32 in two groups), whatever slip the grouping made in both twins alike.
+TEST(CpuShading, TheLampsGlowIsTheSumOfItsBatches) {
+  const Scene scene = sunAndLampsUnderWater();
+  Scene unscattered = scene;
+  unscattered.techniques.find<underwater::WaterSection>()->lampScattering = false;
+  const UpFacing p(glm::vec3(0.8f), 0.0f, 1.0f, 1.5f);
+  auto glow = [&](int count, double minNm, double maxNm) {
+    FrameSettings settings;
+    settings.mode = RenderMode::JakobHanika;
+    settings.sampling.count = count;
+    settings.sampling.minNm = minNm;
+    settings.sampling.maxNm = maxNm;
+    settings.sampling.strategy = SamplingStrategy::Uniform;
+    auto background = [&](const Scene& s) {
+      FrameData frame = buildFrameData(s, settings, frameContext(settings, s, productionTable()), productionTable(),
+                                       {}, 0, p.camera);
+      return glm::dvec3(CpuShading(frame, productionTable(), {}).shade(GBufferTexel{}, glm::vec2(0.5f), p.camera));
+    };
+    return background(scene) - background(unscattered);
+  };
+  for (int count : {16, 20, 32}) {
+    const glm::dvec3 whole = glow(count, 360.0, 830.0);
+    glm::dvec3 parts(0.0);
+    const double step = 470.0 / count * 4.0;
+    for (int k = 0; k < count / 4; ++k) parts += glow(4, 360.0 + k * step, 360.0 + (k + 1) * step);
+    std::printf("%d wavelengths: the glow's Y %.6g, its batches' %.6g\n", count, whole.y, parts.y);
+    ASSERT_GT(whole.y, 0.0);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(whole[c], parts[c], 1e-5 * whole.y) << count << " wavelengths, " << c;
+  }
+}
+
 TEST(Brdf, ConductorFresnelAtOneAngleMatchesTheComplexFresnelEquations) {
   // Rs and Rp from the complex index η = n + ik in double precision (Born & Wolf), at 0°, 45°,
   // 60° and 85°: the closed form in brdf.glsl must agree, oblique angles included (at normal

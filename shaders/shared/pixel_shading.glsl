@@ -205,12 +205,19 @@ PRISM_INLINE vec2 lampNodeSeen(IN(FrameConstants) fc, IN(GpuLight) light, IN(Lam
 // over the frame's wavelengths. A node's geometry and shadow do not depend on the wavelength:
 // they are worked out once for four batches at a time, whose σt stay in registers, and once per
 // batch for the rest (an array of the nodes per pixel, which llvmpipe keeps in memory, or
-// branches per batch inside the nodes' loop made RGB frames there 25 % slower).
+// branches per batch inside the nodes' loop made RGB frames there 25 % slower). A nebula in front
+// dims it at the pixel's centre uv, as it dims the rest of the pixel.
 PRISM_INLINE vec3 lampsInWater(IN(FrameConstants) fc, IN(vec3) cameraPosition, IN(vec3) viewDir, IN(WaterSpan) span,
-                               float nebulaDepthUm) {
+                               IN(vec2) uv) {
   vec3 tristimulus = vec3(0.0f);
   // (A ray looking up from above the water enters none: its entry, 1e30 m off, is no point.)
   if (!(span.lengthM > 0.0f) || frameWater().lampScattering == 0.0f) return tristimulus;
+#ifdef PRISM_TECHNIQUE_NEBULA
+  float nebulaDepthUm = nebulaOpticalDepthAt(uv);
+#else
+  PRISM_UNUSED(uv);
+  float nebulaDepthUm = 0.0f;
+#endif
   PRISM_PRECISE vec3 entry = cameraPosition + viewDir * span.enterM;
   for (int l = 0; l < fc.lightCount; ++l) {
     GpuLight light = frameLight(l);
@@ -329,11 +336,7 @@ PRISM_INLINE vec3 shadeBackground(IN(FrameConstants) fc, IN(vec3) farPoint, IN(v
     tristimulus += integrateBatch(frameBatch(b), radiance);
   }
 #ifdef PRISM_TECHNIQUE_WATER
-#ifdef PRISM_TECHNIQUE_NEBULA
-  tristimulus += lampsInWater(fc, cameraPosition, viewDir, water, nebulaDepthUm);
-#else
-  tristimulus += lampsInWater(fc, cameraPosition, viewDir, water, 0.0f);
-#endif
+  tristimulus += lampsInWater(fc, cameraPosition, viewDir, water, uv);
 #endif
   return tristimulus;
 }
@@ -494,11 +497,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
     tristimulus += integrateBatch(batch, radiance);
   }
 #ifdef PRISM_TECHNIQUE_WATER
-#ifdef PRISM_TECHNIQUE_NEBULA
-  tristimulus += lampsInWater(fc, cameraPosition, viewDir, water, nebulaDepthUm);
-#else
-  tristimulus += lampsInWater(fc, cameraPosition, viewDir, water, 0.0f);
-#endif
+  tristimulus += lampsInWater(fc, cameraPosition, viewDir, water, uv);
 #endif
   // RGB mode multiplies albedos by lights channel by channel; with a light outside the gamut
   // (negative channels) some albedos come out with a negative tristimulus, which no light has: a

@@ -17,12 +17,4 @@ const Observer& cameraOption(const std::string& name) {
   return *camera;
 }
 
-CLI::Validator cameraName() {
-  return CLI::Validator(
-      [](std::string& name) {
-        return name.empty() ? std::string("\"\" is not a camera (see `prism colour list cameras`)") : std::string();
-      },
-      "");
-}
-
 }  // namespace prism::app

@@ -24,6 +24,18 @@ inline const char* settingTypeName(render::SettingType type) {
 
 // The frame keys of render/setting_keys.h as options of a command: names, help and defaults come
 // from the table; what was given is handed on as text, parsed by the table (frameSettings).
+// CLI11's check of a --camera value, as it is parsed: not empty (given empty, it was taken for no
+// camera, and a script's unset variable rendered CIE 1931 XYZ without a word). A malformed command
+// line, exit 2; a name that is no camera's is bad input, cameraOption's, exit 1. (Here, not in
+// camera_option.h, which files without CLI11 include: its headers cost ~15 s a unit.)
+inline CLI::Validator cameraName() {
+  return CLI::Validator(
+      [](std::string& name) {
+        return name.empty() ? std::string("\"\" is not a camera (see `prism colour list cameras`)") : std::string();
+      },
+      "");
+}
+
 class CliSettings {
  public:
   // The keys `takes` accepts (default: every one; a command leaves out those it gives another

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/camera_option.h"
+#include "app/cli_settings.h"
 #include "app/colour_commands.h"
 #include "app/option_lists.h"
 #include "core/error.h"

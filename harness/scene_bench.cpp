@@ -235,8 +235,10 @@ void runSceneBench(const SceneBenchOptions& options) {
   std::vector<std::unique_ptr<render::Renderer>> renderersWithout;
   std::deque<Scene> scenesWithout;  // the renderers' scenes (without a technique, or with another
                                     // version of its section): references stay valid as it grows
+  const auto lamps = static_cast<std::size_t>(
+      std::ranges::count_if(scene.lights, [](const Light& l) { return l.type != LightType::Directional; }));
   for (const auto& section : scene.techniques.all()) {
-    TechniqueBench bench = section->bench();
+    TechniqueBench bench = section->bench(lamps);
     if (bench.configs.empty()) continue;
     TechniqueRun& run = techniqueRuns.emplace_back();
     run.key = section->key();

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "core/error_test_support.h"
@@ -41,6 +42,14 @@ TEST_F(SceneFolder, WaterIsAJerlovTypeAtADepthWithItsMultipliers) {
   EXPECT_FALSE(loadScene(f, {"water.lamp_scattering=false"}).techniques.find<underwater::WaterSection>()->lampScattering);
   EXPECT_EQ(errorOf([&] { loadScene(f, {"water.lamp_scattering=1"}); }),
             f.string() + ": /water/lamp_scattering: expected true or false, got 1");
+  // The bench times the lamps' in-scattering only where there are lamps and it is on.
+  auto timesUnscattered = [](const TechniqueBench& b) {
+    return std::ranges::any_of(b.configs, [](const TechniqueBenchConfig& c) { return c.label == "16 wet, lamps unscattered"; });
+  };
+  EXPECT_TRUE(timesUnscattered(w->bench(1)));
+  EXPECT_FALSE(timesUnscattered(w->bench(0)));
+  EXPECT_FALSE(timesUnscattered(
+      loadScene(f, {"water.lamp_scattering=false"}).techniques.find<underwater::WaterSection>()->bench(1)));
   EXPECT_EQ(errorOf([&] { loadScene(f, {"water.type=IV"}); }),
             f.string() + ": /water/type: unknown water type \"IV\" in the jerlov data (known: I, IA, IB, II, III, "
                          "1C, 3C, 5C, 7C, 9C)");

@@ -217,8 +217,9 @@ class TechniqueSection {
   // The files besides the scene file it read (an environment map), so that a command's output is
   // never one of them (requireNotSceneInput, scene/scene.h).
   virtual std::vector<std::filesystem::path> inputFiles() const { return {}; }
-  // What the scene bench measures of its cost besides the run's own configurations.
-  virtual TechniqueBench bench() const { return {}; }
+  // What the scene bench measures of its cost besides the run's own configurations, in a scene
+  // with that many point and spot lights (water's lamp in-scattering is measured only with some).
+  virtual TechniqueBench bench(std::size_t /*pointAndSpotLights*/) const { return {}; }
   // Its own optimised wavelengths, if it has them (scenes with such a technique are compared in
   // optimised4 mode against the reference in the gallery).
   virtual std::optional<TechniqueWavelengths> optimisedWavelengths() const { return std::nullopt; }

@@ -109,7 +109,7 @@ std::unique_ptr<TechniqueSection> AtmosphereSection::parse(const schema::Node& n
   return a;
 }
 
-TechniqueBench AtmosphereSection::bench() const {
+TechniqueBench AtmosphereSection::bench(std::size_t /*pointAndSpotLights*/) const {
   return {{{"optimised4", {{"mode", "optimised4"}}}, {"reference", {{"mode", "reference"}}, false, 1}},
           {{"ratio_optimised4_to_rgb3", "optimised4", "rgb"}, {"ratio_reference_to_optimised4", "reference", "optimised4"}}};
 }

@@ -45,7 +45,7 @@ struct AtmosphereSection final : TechniqueSection, AtmosphereSky {
   // García Liñán's four optimised wavelengths against RGB-3 (the run's RGB frames) and against the
   // reference (472 wavelengths, 118 batches of tables a frame: one frame a round), every table
   // recomputed every frame.
-  TechniqueBench bench() const override;
+  TechniqueBench bench(std::size_t pointAndSpotLights) const override;
   // García Liñán's four for its atmosphere (data/atmosphere_wavelengths.json: with aerosols or
   // Rayleigh and ozone alone).
   std::optional<TechniqueWavelengths> optimisedWavelengths() const override;

@@ -81,7 +81,7 @@ std::string_view NebulaSection::notTracedBecause() const {
          "prism nebula render --method reference)";
 }
 
-TechniqueBench NebulaSection::bench() const {
+TechniqueBench NebulaSection::bench(std::size_t /*pointAndSpotLights*/) const {
   auto projection = std::make_shared<NebulaSection>(*this);
   projection->method = Method::Projection;
   auto light = std::make_shared<NebulaSection>(*this);

@@ -72,7 +72,7 @@ struct NebulaSection final : TechniqueSection {
   // marching every frame: the reference at the paper's settings (100 steps, 21 wavelengths a step)
   // over projection and over light–density (prism bench's ratios); and, the camera held so that
   // the march runs once, the stars lighting the surfaces over not.
-  TechniqueBench bench() const override;
+  TechniqueBench bench(std::size_t pointAndSpotLights) const override;
 
   // The model with the density (generated now if it was not), as a NebulaRenderer takes it.
   NebulaModel fullModel() const;

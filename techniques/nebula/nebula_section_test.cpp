@@ -127,7 +127,7 @@ TEST(NebulaSection, CopiesShareTheDensityAndTheKeyFollowsTheModel) {
 
 TEST(NebulaSection, TheBenchTimesThePapersBaselineAgainstEachMethodAndTheStarLight) {
   auto parsed = parseSection("{" + kNoise + "}");
-  TechniqueBench b = parsed->bench();
+  TechniqueBench b = parsed->bench(0);
   ASSERT_EQ(b.configs.size(), 5u);
   const auto& reference = dynamic_cast<const NebulaSection&>(*b.configs[2].section);
   EXPECT_EQ(reference.method, Method::Reference);

@@ -140,7 +140,7 @@ std::optional<TechniqueLight> PrtSection::light() const {
   return sun;
 }
 
-TechniqueBench PrtSection::bench() const {
+TechniqueBench PrtSection::bench(std::size_t /*pointAndSpotLights*/) const {
   auto spectral8 = std::make_shared<PrtSection>(*this);
   spectral8->mode = PrtMode::Spectral;
   spectral8->basis = 8;

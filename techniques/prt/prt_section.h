@@ -65,7 +65,7 @@ struct PrtSection final : TechniqueSection {
   std::vector<std::filesystem::path> inputFiles() const override;  // the map's, when there is one
   // Spectral PRT with m = 8 against RGB-PRT, both on this scene in a frame of 16 wavelengths, the
   // PRT pass timed in each.
-  TechniqueBench bench() const override;
+  TechniqueBench bench(std::size_t pointAndSpotLights) const override;
   bool shadesObjects() const override { return true; }
   // RGB-PRT's under any observer but CIE 1931 (requireRgbPrtObserver); the reference mode's frame
   // draws the 5 nm reference whatever the mode.

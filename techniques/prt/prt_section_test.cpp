@@ -117,7 +117,7 @@ TEST(PrtSection, TheBenchTimesSpectralAgainstRgbPrtInOneSpectralFrame) {
   // An RGB frame draws RGB-PRT whatever the section's mode: timed there, both configurations drew
   // RGB-PRT (the first H200 run: 2.083 / 2.083 ms).
   PrtSection section;
-  const TechniqueBench b = section.bench();
+  const TechniqueBench b = section.bench(0);
   ASSERT_EQ(b.configs.size(), 2u);
   const auto& spectral = dynamic_cast<const PrtSection&>(*b.configs[0].section);
   const auto& rgb = dynamic_cast<const PrtSection&>(*b.configs[1].section);

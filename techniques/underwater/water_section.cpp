@@ -47,11 +47,11 @@ TechniqueBlock WaterSection::pack(const FramePackInput& input) const {
   return block;
 }
 
-TechniqueBench WaterSection::bench() const {
+TechniqueBench WaterSection::bench(std::size_t pointAndSpotLights) const {
   const std::vector<std::pair<std::string, std::string>> spectral16 = {{"mode", "jakob-hanika"}, {"wavelengths", "16"}};
   TechniqueBench b{{{"rgb dry", {}, true}, {"16 dry", spectral16, true}, {"16 wet", spectral16, false}},
                    {{"rgb_ratio_wet_to_dry", "rgb", "rgb dry"}, {"spectral16_ratio_wet_to_dry", "16 wet", "16 dry"}}};
-  if (lampScattering) {
+  if (lampScattering && pointAndSpotLights > 0) {
     auto unscattered = std::make_shared<WaterSection>(*this);
     unscattered->lampScattering = false;
     b.configs.push_back({"16 wet, lamps unscattered", spectral16, false, 0, unscattered});

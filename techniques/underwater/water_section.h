@@ -48,7 +48,7 @@ struct WaterSection final : TechniqueSection {
   std::optional<TechniqueMedium> medium(const glm::vec3& sceneCameraPositionW) const override;
   // The water term's cost: the same frames with the water taken out, RGB and 16 wavelengths; and
   // the lamps' in-scattering's, 16 wavelengths with it left out (where lampScattering is on).
-  TechniqueBench bench() const override;
+  TechniqueBench bench(std::size_t pointAndSpotLights) const override;
 
   static std::unique_ptr<TechniqueSection> parse(const schema::Node& node, const TechniqueSections& earlier);
 };

@@ -1,5 +1,11 @@
 #include "imaging/exr_file.h"
 
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfMatrixAttribute.h>
+#include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -7,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include "core/error.h"
@@ -119,6 +126,46 @@ TEST_F(Exr, ACamerasRgbCarriesItsCameraAndMatrix) {
   for (const auto& [file, message] :
        {std::pair{"string.exr", ": prism:cameraToXyz is of type string, not m33d"},
         std::pair{"half_said.exr", ": prism:camera without prism:cameraToXyz (a string and an m33d, written together)"}}) {
+    try {
+      readExr(dir / file);
+      ADD_FAILURE() << file << " was read";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), (dir / file).string() + message);
+    }
+  }
+}
+
+// A one-pixel R, G, B file of the given colour meaning naming the camera nikon_d850 with `toXyz`:
+// what writeExr never writes (it checks both), as another program could.
+void writeCameraAttributes(const std::filesystem::path& path, const char* colour, const Imath::M33d& toXyz) {
+  Imf::Header header(1, 1);
+  header.insert("prism:colour", Imf::StringAttribute(colour));
+  header.insert(kCameraAttribute, Imf::StringAttribute("nikon_d850"));
+  header.insert(kCameraToXyzAttribute, Imf::M33dAttribute(toXyz));
+  float pixel[3] = {0.5f, 0.5f, 0.5f};
+  Imf::FrameBuffer frame;
+  for (int c = 0; c < 3; ++c) {
+    const char* name = c == 0 ? "R" : c == 1 ? "G" : "B";
+    header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    frame.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(&pixel[c]), sizeof(float), sizeof(float)));
+  }
+  Imf::OutputFile file(path.c_str(), header);
+  file.setFrameBuffer(frame);
+  file.writePixels(1);
+}
+
+TEST_F(Exr, ACameraNamedOnOtherValuesOrWithoutAFiniteMatrixIsRefused) {
+  std::filesystem::path dir = freshDir("camera_refused");
+  const Imath::M33d identity;
+  writeCameraAttributes(dir / "linear.exr", "linear-srgb", identity);
+  writeCameraAttributes(dir / "camera.exr", "camera-rgb", identity);
+  Imath::M33d infinite = identity;
+  infinite[1][2] = std::numeric_limits<double>::infinity();
+  writeCameraAttributes(dir / "infinite.exr", "camera-rgb", infinite);
+  ASSERT_TRUE(readExr(dir / "camera.exr").camera);  // what the other two differ from is all they say
+  for (const auto& [file, message] :
+       {std::pair{"linear.exr", ": prism:camera on linear-srgb values, which are no camera's"},
+        std::pair{"infinite.exr", ": prism:cameraToXyz: holds a value that is not finite"}}) {
     try {
       readExr(dir / file);
       ADD_FAILURE() << file << " was read";

@@ -9,7 +9,8 @@
 # - a point light's shadows and position, set by the script (the lights panel's controls),
 #   change the view;
 # - a screenshot or settings file over a file the scene reads or over the script is refused;
-# - a heat map that cannot be computed says why, and one camera on both sides is compared.
+# - a heat map that cannot be computed says why; one camera on both sides, or a camera against
+#   the eye, is compared.
 # Usage: viewer_window_test.sh PRISM SCENES_DIR SCRATCH_DIR
 set -euo pipefail
 prism=$1 scenes=$2 scratch=$3
@@ -164,6 +165,14 @@ heat-map-stats" "script.json:7: no heat map: the heat map compares CIE 1931 XYZ"
 camera=$(view "$scratch/own/textured_gltf.json" --width 64 --height 48 --script <(printf '%s\n' "set observer nikon_d850" \
   "set split on" "set right.mode jakob-hanika" "set right.observer nikon_d850" "set right.strategy uniform" "set heat-map on" frames\ 16 heat-map-stats))
 grep -q '^heat map: mean' <<<"$camera" || { echo "one camera's heat map: $camera" >&2; exit 1; }
+# A camera against the eye, all else the same: each side through its own matrix (CIE 1931 has none),
+# which maps the camera's own colour error — under 5 ΔE00 (1.8 measured) and not 0 (one camera's
+# RGB taken as XYZ read 26.6 against the eye on the D65 spheres). It was refused.
+eye=$(view "$scratch/own/textured_gltf.json" --width 64 --height 48 --script <(printf '%s\n' "set observer nikon_d850" \
+  "set strategy uniform" "set split on" "set right.mode jakob-hanika" "set right.observer cie1931" \
+  "set right.strategy uniform" "set heat-map on" frames\ 16 heat-map-stats))
+mean=$(sed -n 's/^heat map: mean \([0-9.]*\) .*/\1/p' <<<"$eye")
+awk -v m="$mean" 'BEGIN { exit !(m > 0.2 && m < 5) }' || { echo "a camera against the eye: $eye" >&2; exit 1; }
 # A settings file the script saves before loading it is taken as it, not refused as missing.
 view "$scratch/own/textured_gltf.json" --width 64 --height 48 --script <(printf 'save-settings %s\nload-settings %s\n' \
   "$scratch/own/saved.json" "$scratch/own/saved.json") >/dev/null

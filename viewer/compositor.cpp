@@ -94,25 +94,21 @@ void Compositor::updateHeatMap(const Camera& camera) {
   mFramesSinceHeatMap = 0;
   const render::FrameSettings& s = mLeft->settings();
   const render::FrameSettings& t = mRight->settings();
-  // CIE 1931 XYZ on both sides, or one camera's RGB through its matrix (as `prism compare` takes it).
+  // CIE 1931 XYZ, or a camera's RGB through its matrix, on each side (as `prism compare` takes
+  // them): one camera against the eye shows the camera's own colour error.
   const render::FrameContext& left = mLeft->context();
   const render::FrameContext& right = mRight->context();
-  const auto xyz = [](const render::FrameContext& c) {
-    return imaging::tristimulusMeaning(*c.tristimulusObserver) == imaging::ColourMeaning::Xyz;
-  };
-  const bool oneCamera = left.tristimulusObserver->isCamera &&
-                         left.tristimulusObserver->name == right.tristimulusObserver->name &&
-                         left.display.tristimulusToXyz.isApprox(right.display.tristimulusToXyz, 1e-9);
-  if (!(xyz(left) && xyz(right)) && !oneCamera) {
-    throw Error("the heat map compares CIE 1931 XYZ, or one camera's RGB: choose cie1931 or the same camera on both "
-                "sides (CIE 1964's X10Y10Z10 is neither)");
-  }
+  for (const render::FrameContext* c : {&left, &right})
+    if (!c->tristimulusObserver->isCamera &&
+        imaging::tristimulusMeaning(*c->tristimulusObserver) != imaging::ColourMeaning::Xyz)
+      throw Error("the heat map compares CIE 1931 XYZ, or a camera's RGB through its matrix: choose cie1931 or a "
+                  "camera on both sides (CIE 1964's X10Y10Z10 is neither)");
   imaging::FloatImage a(s.width, s.height, 3), b(t.width, t.height, 3);
   a.pixels = mLeft->readMeanTristimulus();
   b.pixels = mRight->readMeanTristimulus();
   const auto input = [&](const imaging::FloatImage& image, const render::FrameContext& c, double white) {
-    return oneCamera ? imaging::cameraInput(image, c.display.tristimulusToXyz, white)
-                     : imaging::linearInput(image, imaging::ColourMeaning::Xyz, white);
+    return c.tristimulusObserver->isCamera ? imaging::cameraInput(image, c.display.tristimulusToXyz, white)
+                                           : imaging::linearInput(image, imaging::ColourMeaning::Xyz, white);
   };
   imaging::DifferenceOptions options;
   options.keepMap = true;

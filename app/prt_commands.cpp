@@ -261,7 +261,7 @@ prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtI
   }
   const std::string shape = o.environment.value_or("sky");
   const std::string name = o.illuminant.value_or("F4");
-  auto light = [&] { return fromOption("--illuminant", [&] { return illuminant(name); }); };
+  auto light = [&] { return fromOption("--illuminant", [&] { return prt::environmentIlluminant(name); }); };
   if (shape == "sky") return prt::skyGradientEnvironment(name + " sky", light());
   if (shape == "uniform") return prt::uniformEnvironment(name + " uniform", light());
   if (shape != "atmosphere") throw Error("--environment: '" + shape + "' is not sky, uniform or atmosphere");
@@ -378,10 +378,10 @@ void runPrtMetamers(const PrtMetamersOptions& o) {
   Spectrum original = patchOrFileReflectance(o.reflectance, "--reflectance");
   std::vector<prt::SpectralEnvironment> skies;
   for (const std::string& name : o.under)
-    skies.push_back(prt::skyGradientEnvironment(name, fromOption("--under", [&] { return illuminant(name); })));
+    skies.push_back(prt::skyGradientEnvironment(name, fromOption("--under", [&] { return prt::environmentIlluminant(name); })));
   const Observer& obs = cie1931Observer();
-  prt::Metamer metamer = prt::findMetamer(original, fromOption("--match", [&] { return illuminant(o.match); }),
-                                          fromOption("--target", [&] { return illuminant(o.target); }), obs);
+  prt::Metamer metamer = prt::findMetamer(original, fromOption("--match", [&] { return prt::environmentIlluminant(o.match); }),
+                                          fromOption("--target", [&] { return prt::environmentIlluminant(o.target); }), obs);
   prt::PrtObject object = prt::makeColourCheckerObject(o.patchVertices);
   prt::CachedTransfer transfer = transferFor(object.mesh, {o.samples, true}, "");
   std::vector<prt::DeltaEStatistics> halves =

@@ -966,6 +966,18 @@ TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
   const nlohmann::json ownJson = nlohmann::json::parse(ownReport.out);
   EXPECT_EQ(ownJson["environment"].get<std::string>().rfind("the scene's (", 0), 0u) << ownReport.out;
   EXPECT_EQ(ownJson["samples"], 8);
+  // A scene under the spectral sky as a section of its own, not PRT's, is under that sky too, its
+  // sun taken in; --environment atmosphere starts from it. It was the F4 sky, and the defaults'
+  // sun at 30° elevation and 180° azimuth.
+  const std::string sunset = std::string(PRISM_SCENES_DIR) + "/sunset.json";
+  Result sky = run("prt report " + sunset + " --samples 8 --json");
+  ASSERT_EQ(sky.exitCode, 0) << sky.err;
+  EXPECT_EQ(nlohmann::json::parse(sky.out)["environment"],
+            "the scene's (spectral sky, sun at 3° elevation, 4° azimuth, its disc on SH-5)");
+  Result moved = run("prt report " + sunset + " --samples 8 --environment atmosphere --sun-elevation 10 --json");
+  ASSERT_EQ(moved.exitCode, 0) << moved.err;
+  EXPECT_EQ(nlohmann::json::parse(moved.out)["environment"],
+            "the scene's spectral sky, sun at 10° elevation, 4° azimuth, its disc on SH-5");
 
   std::filesystem::path ply = std::filesystem::path(::testing::TempDir()) / "prt" / "checker.ply";
   std::filesystem::path svg = std::filesystem::path(::testing::TempDir()) / "prt" / "sweep.svg";

@@ -27,6 +27,7 @@
 #include "spectral/illuminant.h"
 #include "spectral/rgb_intent.h"
 #include "spectral/rgb_to_spectrum_cache.h"
+#include "techniques/atmosphere/atmosphere_section.h"
 #include "techniques/prt/gpu/prt_scene_mesh.h"
 #include "techniques/prt/metamer.h"
 #include "techniques/prt/prt_evaluation.h"
@@ -238,6 +239,15 @@ prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtI
   if (o.environment == "atmosphere" && o.illuminant)
     throw Error("--illuminant: the atmosphere is lit by its sun, not by an illuminant");
   const prt::PrtSection* section = input ? input->section() : nullptr;
+  // A scene with the spectral sky as its own section and no PRT section (sunset.json) is under
+  // that sky as a PRT section's sky would be: the report took the F4 sky, and `--environment
+  // atmosphere` the defaults' sun at 30°, where the scene's is at 3°.
+  prt::PrtSection atmosphereSky;
+  if (const auto* atmosphere = input ? input->scene.techniques.find<atmosphere::AtmosphereSection>() : nullptr;
+      atmosphere && !section) {
+    atmosphereSky.sky = prt::PrtSky{.atmosphere = *atmosphere, .sunDisc = true};
+    section = &atmosphereSky;
+  }
   if (section && o.exr.empty() && !o.environment && !o.illuminant) {
     // The report has no lights: the spectral sky's sun, the renderer's light, is projected with it.
     prt::SpectralEnvironment environment = prt::sectionEnvironment(*section, rendererRgbToSpectrumTable("srgb"), true);

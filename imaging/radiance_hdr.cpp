@@ -68,7 +68,8 @@ void checkHeader(const std::string& name, const std::string& bytes) {
     const bool marked = width >= 8 && at + 4 <= bytes.size() && byteAt(at) == 2 && byteAt(at + 1) == 2 &&
                         (byteAt(at + 2) & 0x80) == 0;
     if (!marked) {
-      if (bytes.size() - at < 4 * w * static_cast<std::size_t>(height - y)) throw truncated(y);
+      if (bytes.size() - at < 4 * w * static_cast<std::size_t>(height - y))  // flat: the lines that are whole
+        throw truncated(y + static_cast<long long>((bytes.size() - at) / (4 * w)));
       return;
     }
     if ((static_cast<std::size_t>(byteAt(at + 2)) << 8 | byteAt(at + 3)) != w)

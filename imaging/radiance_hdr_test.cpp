@@ -80,7 +80,11 @@ TEST(RadianceHdr, BadFilesAreOneLineErrors) {
       {"huge.hdr", header + "-Y 20000 +X 4\n", ": an image of 4 × 20000 pixels; Prism reads 1 to 16384 on each side"},
       {"short.hdr", header + "-Y 100 +X 1000\n" + std::string("\x02\x02\x03\xe8\x80\x01", 6),
        ": truncated: the data ends in scan line 0 of 100 (1000 × 100)"},
+      // Flat (uncompressed) lines of 12 bytes: the first whole, the data ends in the second (it
+      // said the first whatever the length).
       {"flat_short.hdr", header + "-Y 2 +X 3\n" + std::string(20, 'a'),
+       ": truncated: the data ends in scan line 1 of 2 (3 × 2)"},
+      {"flat_shorter.hdr", header + "-Y 2 +X 3\n" + std::string(11, 'a'),
        ": truncated: the data ends in scan line 0 of 2 (3 × 2)"},
       {"zero_run.hdr", header + "-Y 1 +X 8\n" + std::string("\x02\x02\x00\x08\x00", 5),
        ": scan line 0: a run of 0 pixels where 8 are left"},

@@ -90,8 +90,8 @@ std::string basisCoverageWarning(const BasisCoverage& coverage, const RenderSett
   const std::string remedy = depth <= kMaxBasisDepthUm
                                  ? fmt::format(fmt::runtime(deeperBasisFormat), depth) + " fits deeper, method analytic integrates exactly"
                                  : fmt::format("no basis is fitted deeper than {:g} µm: method analytic integrates exactly", kMaxBasisDepthUm);
-  return fmt::format("up to {:.0f} % of a pixel's star light reaches the camera through more dust than the basis is "
-                     "fitted for (99 % of it within an optical depth of {:.1f} µm, the basis {:g} µm): the {} method's "
+  return fmt::format("up to {:.3g} % of a pixel's star light reaches the camera through more dust than the basis is "
+                     "fitted for (99 % of it within an optical depth of {:.3g} µm, the basis {:g} µm): the {} method's "
                      "error there can exceed 2 % by far; {}",
                      100.0 * coverage.worstShare, coverage.lightDepthUm, s.basisMaxDepthUm, methodName(s.method), remedy);
 }

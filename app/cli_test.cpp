@@ -732,6 +732,14 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   EXPECT_NE(away.err.find("prism: warning: the nebula gives no light, it only dims what lies behind it (its own image "
                           "is black): no star of luminosity above 0 to scatter the light of, and emission 0"),
             std::string::npos) << away.err;
+  // Measured against that black reference, no pixel is compared: said, not a perfect 0.
+  Result awayCompare = run("nebula render " + (dir / "away.json").string() + " --compare -o " + (dir / "away.exr").string());
+  ASSERT_EQ(awayCompare.exitCode, 0) << awayCompare.err;
+  EXPECT_NE(awayCompare.out.find("maximum): none: the reference is black, no pixel holds light"), std::string::npos)
+      << awayCompare.out;
+  Result awaySweep = run("nebula sweep " + (dir / "away.json").string() + " --max-basis 2 --json");
+  ASSERT_EQ(awaySweep.exitCode, 0) << awaySweep.err;
+  EXPECT_EQ(nlohmann::json::parse(awaySweep.out)["max_relative_error"], nlohmann::json::parse("[null, null]"));
   // A scene's passband edit that --filters' other set cannot take: said before the work, naming both.
   std::ofstream(dir / "edited.json") << R"({"nebula": {"density": {"noise": {"resolution": 8}}, "stars": [],
     "filters": "cie1931", "passbands": [{"shift_nm": 120}, {}, {}]}})";

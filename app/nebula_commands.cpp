@@ -158,6 +158,13 @@ void printWarnings(const nebula::NebulaRenderer& renderer, const nebula::BasisCo
     if (!warning.empty()) fmt::print(stderr, "prism: warning: {}\n", warning);
 }
 
+// Whether any pixel holds light: against a black reference no pixel is compared, and the largest
+// error over none, 0, read as a perfect match (a camera looking away, an empty grid).
+bool holdsLight(const nebula::NebulaImage& image) {
+  return std::ranges::any_of(image.pixels, [](const glm::vec3& p) { return p.x > 0.0f || p.y > 0.0f || p.z > 0.0f; });
+}
+constexpr std::string_view kBlackReference = "none: the reference is black, no pixel holds light";
+
 }  // namespace
 
 void runNebulaSweep(const NebulaSweepOptions& o) {
@@ -205,7 +212,9 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
         before += rows;
       }
       s.method = nebula::Method::Projection;
-      errors.push_back(nebula::maxRelativeError(renderer.render(s, progress), reference));
+      const nebula::NebulaImage image = renderer.render(s, progress);
+      errors.push_back(holdsLight(reference) ? nebula::maxRelativeError(image, reference)
+                                             : std::numeric_limits<double>::quiet_NaN());  // JSON's null
       before += rows;
     }
   }
@@ -222,7 +231,9 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
     fmt::print("projection (CPU, float) against the reference: {}, {}x{}, {} steps, {} star(s)\n", filters,
                camera.width, camera.height, s.steps, scene.model.stars.size());
     fmt::print("{:>8} {:>26}\n", "elements", "max relative error per pixel");
-    for (std::size_t k = 0; k < errors.size(); ++k) fmt::print("{:>8} {:>25.4g}%\n", k + 1, 100.0 * errors[k]);
+    for (std::size_t k = 0; k < errors.size(); ++k)
+      if (std::isnan(errors[k])) fmt::print("{:>8} {}\n", k + 1, kBlackReference);
+      else fmt::print("{:>8} {:>25.4g}%\n", k + 1, 100.0 * errors[k]);
   }
   if (!o.plotFile.empty()) {
     harness::LogPlot plot;
@@ -233,7 +244,7 @@ void runNebulaSweep(const NebulaSweepOptions& o) {
     harness::LogPlotLine line{"projection, float", "#d62728", {}};
     for (std::size_t k = 0; k < errors.size(); ++k) {
       plot.xTicks.push_back(static_cast<double>(k + 1));
-      line.points.emplace_back(static_cast<double>(k + 1), errors[k]);
+      if (!std::isnan(errors[k])) line.points.emplace_back(static_cast<double>(k + 1), errors[k]);
     }
     plot.lines.push_back(std::move(line));
     plot.levels.push_back({"the issue's bound, 2 %", "#888", 0.02, /*dashed=*/false, /*thick=*/true});
@@ -366,8 +377,9 @@ void runNebulaRender(const NebulaRenderOptions& o) {
     harness::ProgressBar referenceBar("nebula: " + against + ", to compare with");
     nebula::NebulaImage reference =
         renderer.render(r, [&referenceBar](std::size_t d, std::size_t n) { referenceBar.update(d, n); });
-    fmt::print("max relative error per pixel against {} (pixels ≥ 1 % of their channel's maximum): {:.4g}\n", against,
-               nebula::maxRelativeError(image, reference));
+    const std::string error =
+        holdsLight(reference) ? fmt::format("{:.4g}", nebula::maxRelativeError(image, reference)) : std::string(kBlackReference);
+    fmt::print("max relative error per pixel against {} (pixels ≥ 1 % of their channel's maximum): {}\n", against, error);
   }
   writeImage(image, filters, o.output);
   fmt::print("wrote {}\n", o.output.string());

@@ -688,6 +688,13 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   ASSERT_EQ(render.exitCode, 0) << render.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "tiny.png"));
   EXPECT_EQ(render.err.find("warning"), std::string::npos) << render.err;  // its star lights the cloud from within
+  // --size scales the scene's camera, as sweep's and bench's do (the scene had to be edited).
+  Result sized = run("nebula render " + tiny + " --steps 20 --size 5 -o " + (dir / "sized.exr").string());
+  ASSERT_EQ(sized.exitCode, 0) << sized.err;
+  const prism::imaging::ExrImage sizedExr = prism::imaging::readExr(dir / "sized.exr");
+  EXPECT_EQ(sizedExr.image.width, 5);
+  EXPECT_EQ(sizedExr.image.height, 5);
+  expectOneLineError("nebula render " + tiny + " --size 0 -o x.exr", "--size");
   // A grid coarser than 16 voxels an axis is said to make an image of its own (the stars' optical
   // depths are kept per voxel of it).
   std::ofstream(dir / "coarse.json") << R"({"nebula": {"density": {"noise": {"resolution": 4}},

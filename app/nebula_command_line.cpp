@@ -42,7 +42,7 @@ void addNebulaCommands(CLI::App& app) {
   nebSweepCmd->add_option("--steps", o->sweep.steps, "ray steps (default: the scene's)");
   nebSweepCmd->add_option("--max-basis", o->sweep.maxBasis, "largest basis (1..6)")->capture_default_str();
   nebSweepCmd->add_option("--basis-depth", o->sweep.basisDepthUm,
-                          "the optical depth (µm) the basis is fitted up to (0..16, default 2)");
+                          "the optical depth (µm) the basis is fitted up to (within (0, 16], default 2)");
   nebSweepCmd->add_option("--size", o->sweep.size, "the camera's longer side in pixels (default: the scene's)");
   nebSweepCmd->add_flag("--no-lines", o->sweep.noLines, "leave out the emission lines");
   nebSweepCmd->add_flag("--json", o->sweep.json, "JSON output");
@@ -53,11 +53,12 @@ void addNebulaCommands(CLI::App& app) {
   nebRenderCmd->add_option("-o,--output", o->render.output, "OUT.exr or OUT.png")->required();
   nebRenderCmd->add_option("--method", o->render.method, "reference, analytic, projection, light-density or pre-integration")->capture_default_str();
   nebRenderCmd->add_option("--steps", o->render.steps, "ray steps (default: the scene's)");
+  nebRenderCmd->add_option("--size", o->render.size, "the camera's longer side in pixels (default: the scene's)");
   nebRenderCmd->add_option("--filters", o->render.filters, "hubble or cie1931 (default: the scene's)");
   nebRenderCmd->add_option("--basis", o->render.basisSize,
                            "projection, light-density: elements of the exp(-a/λ) basis (1..6, default 4; more: more accurate, a moment more per pixel and star)");
   nebRenderCmd->add_option("--basis-depth", o->render.basisDepthUm,
-                           "projection, light-density: the optical depth (µm) the basis is fitted up to (0..16, default 2)");
+                           "projection, light-density: the optical depth (µm) the basis is fitted up to (within (0, 16], default 2)");
   nebRenderCmd->add_option("--light-basis", o->render.lightBasisSize, "light-density: elements of the 2D light basis (1..16, default 8)");
   nebRenderCmd->add_option("--reference-intervals", o->render.referenceIntervals,
                            "reference, --compare: Simpson intervals per filter piece (even, default 16)");

@@ -280,6 +280,7 @@ void runNebulaRender(const NebulaRenderOptions& o) {
     throw Error(fmt::format("{}: the output must be .exr or .png", o.output.string()));
   nebula::Method method = nebula::methodFromName(o.method);
   requireWithin("--steps", o.steps, 1, nebula::kMaxSteps);
+  requireWithin("--size", o.size, 1, 4096);
   requireWithin("--basis", o.basisSize, 1, nebula::kMaxBasisSize);
   requireBasisDepth(o.basisDepthUm);
   requireWithin("--light-basis", o.lightBasisSize, 1, nebula::kMaxLightBasisSize);
@@ -321,6 +322,7 @@ void runNebulaRender(const NebulaRenderOptions& o) {
   requireFilterSet(o.filters);
   nebula::NebulaSceneFile file = nebula::readNebulaScene(o.scene);
   requireOtherFile(o.output, file.source.file, "the scene's density file");
+  if (o.size) nebula::scaleImage(file.scene.model.camera, *o.size);
   std::unique_ptr<gpu::HeadlessContext> context;
   if (o.gpu) {
     context = std::make_unique<gpu::HeadlessContext>();

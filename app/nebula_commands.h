@@ -46,6 +46,7 @@ struct NebulaRenderOptions {
   std::string method = "projection";
   std::string filters;           // empty: the scene's ("hubble" or "cie1931")
   std::optional<int> steps;      // unset: the scene's
+  std::optional<int> size;       // the camera's longer side in pixels; unset: the scene's
   // Each method's own options, unset: RenderSettings' defaults; given to a method that has no use
   // for it, refused.
   std::optional<int> basisSize;           // projection, light-density

@@ -64,13 +64,17 @@ void checkHeader(const std::string& name, const std::string& bytes) {
   const auto w = static_cast<std::size_t>(width);
   for (long long y = 0; y < height; ++y) {
     // Narrow images, and any scan line without the run-length marker, make stb read the whole
-    // image flat, 4 bytes a pixel, from where the pixels begin.
+    // image flat, 4 bytes a pixel, from that line's first byte on (from line 0 again, over what
+    // the compressed lines before it gave).
     const bool marked = width >= 8 && at + 4 <= bytes.size() && byteAt(at) == 2 && byteAt(at + 1) == 2 &&
                         (byteAt(at + 2) & 0x80) == 0;
     if (!marked) {
-      if (bytes.size() - at < 4 * w * static_cast<std::size_t>(height - y))  // flat: the lines that are whole
-        throw truncated(y + static_cast<long long>((bytes.size() - at) / (4 * w)));
-      return;
+      const std::size_t whole = (bytes.size() - at) / (4 * w);  // flat lines
+      if (whole >= static_cast<std::size_t>(height)) return;
+      if (y == 0) throw truncated(static_cast<long long>(whole));
+      throw Error(name + ": truncated: scan line " + std::to_string(y) + " has no run-length marker, so the whole image "
+                  "is read flat from it, and that data ends in its scan line " + std::to_string(whole) + " of " +
+                  std::to_string(height) + " (" + std::to_string(width) + " × " + std::to_string(height) + ")");
     }
     if ((static_cast<std::size_t>(byteAt(at + 2)) << 8 | byteAt(at + 3)) != w)
       throw Error(name + ": scan line " + std::to_string(y) + " claims another width than " + std::to_string(width));

@@ -86,6 +86,14 @@ TEST(RadianceHdr, BadFilesAreOneLineErrors) {
        ": truncated: the data ends in scan line 1 of 2 (3 × 2)"},
       {"flat_shorter.hdr", header + "-Y 2 +X 3\n" + std::string(11, 'a'),
        ": truncated: the data ends in scan line 0 of 2 (3 × 2)"},
+      // A compressed line (8 pixels, each component one run), then a flat one: stb reads the whole
+      // image flat from there, 64 bytes where 32 are left (it was taken as one line short of whole,
+      // and stb read past the end).
+      {"flat_after_compressed.hdr",
+       header + "-Y 2 +X 8\n" + std::string("\x02\x02\x00\x08\x88\x01\x88\x01\x88\x01\x88\x80", 12) +
+           std::string(32, 'a'),
+       ": truncated: scan line 1 has no run-length marker, so the whole image is read flat from it, and that data "
+       "ends in its scan line 1 of 2 (8 × 2)"},
       {"zero_run.hdr", header + "-Y 1 +X 8\n" + std::string("\x02\x02\x00\x08\x00", 5),
        ": scan line 0: a run of 0 pixels where 8 are left"},
       {"long_run.hdr", header + "-Y 1 +X 8\n" + std::string("\x02\x02\x00\x08\xff\x01", 6),

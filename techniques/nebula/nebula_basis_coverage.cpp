@@ -84,6 +84,18 @@ std::string outOfViewWarning(const BasisCoverage& coverage) {
                      coverage.rays);
 }
 
+namespace {
+
+// `v` rounded up at three significant figures: a depth just past the basis's, rounded to nearest,
+// was printed as the basis's own ("99 % of it within 2 µm, the basis 2 µm").
+double upAtThreeFigures(double v) {
+  if (!(v > 0.0)) return v;
+  const double unit = std::pow(10.0, std::floor(std::log10(v)) - 2.0);
+  return std::ceil(v / unit - 1e-9) * unit;
+}
+
+}  // namespace
+
 std::string basisCoverageWarning(const BasisCoverage& coverage, const RenderSettings& s, std::string_view deeperBasisFormat) {
   if (coverage.worstShare <= 0.01) return "";
   const double depth = std::ceil(coverage.lightDepthUm);
@@ -93,7 +105,8 @@ std::string basisCoverageWarning(const BasisCoverage& coverage, const RenderSett
   return fmt::format("up to {:.3g} % of a pixel's star light reaches the camera through more dust than the basis is "
                      "fitted for (99 % of it within an optical depth of {:.3g} µm, the basis {:g} µm): the {} method's "
                      "error there can exceed 2 % by far; {}",
-                     100.0 * coverage.worstShare, coverage.lightDepthUm, s.basisMaxDepthUm, methodName(s.method), remedy);
+                     100.0 * coverage.worstShare, upAtThreeFigures(coverage.lightDepthUm), s.basisMaxDepthUm,
+                     methodName(s.method), remedy);
 }
 
 std::string stepThicknessWarning(const BasisCoverage& coverage, const RenderSettings& s, std::string_view moreStepsFormat) {

@@ -33,6 +33,19 @@ double errorAgainstTheReference(const NebulaRenderer& renderer, const RenderSett
   return maxRelativeError(renderer.render(s), renderer.render(r));
 }
 
+// Just past the basis's depth, the warning's figures do not contradict it: it read "up to 1 % …
+// (99 % of it within an optical depth of 2.0 µm, the basis 2 µm)".
+TEST(NebulaBasisCoverage, TheWarningsFiguresSayTheLightLiesBeyondTheBasis) {
+  const RenderSettings s = projection(4, 2.0);
+  const std::string warning = basisCoverageWarning({.worstShare = 0.012, .lightDepthUm = 2.001}, s, "--basis-depth {:.0f}");
+  EXPECT_NE(warning.find("up to 1.2 % of a pixel's star light"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("within an optical depth of 2.01 µm, the basis 2 µm"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("--basis-depth 3 fits deeper"), std::string::npos) << warning;
+  EXPECT_NE(basisCoverageWarning({.worstShare = 0.5, .lightDepthUm = 2.04}, s, "").find("within an optical depth of 2.04 µm"),
+            std::string::npos);
+  EXPECT_EQ(basisCoverageWarning({.worstShare = 0.01, .lightDepthUm = 2.5}, s, ""), "");  // 1 % beyond: nothing said
+}
+
 TEST(NebulaBasisCoverage, AStarInsideTheCloudStaysWithinTheBasis) {
   NebulaModel m = smallCloud("cie1931", 1);
   const RenderSettings s = projection(4, 2.0);

@@ -567,6 +567,7 @@ NebulaImage NebulaRenderer::render(const RenderSettings& s,
 double maxRelativeError(const NebulaImage& image, const NebulaImage& reference, double floorOfMax) {
   PRISM_CHECK(image.pixels.size() == reference.pixels.size());
   double worst = 0.0;
+  bool compared = false;
   for (int c = 0; c < 3; ++c) {
     double peak = 0.0;
     for (const auto& p : reference.pixels) peak = std::max(peak, static_cast<double>(p[c]));
@@ -575,9 +576,10 @@ double maxRelativeError(const NebulaImage& image, const NebulaImage& reference, 
       if (!std::isfinite(r) || !std::isfinite(image.pixels[i][c])) return std::numeric_limits<double>::infinity();
       if (r <= 0.0 || r < floorOfMax * peak) continue;
       worst = worstOf(worst, std::abs(image.pixels[i][c] - r) / r);
+      compared = true;
     }
   }
-  return worst;
+  return compared ? worst : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace prism::nebula

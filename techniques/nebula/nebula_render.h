@@ -177,7 +177,8 @@ class NebulaRenderer {
 
 // Per channel, over pixels whose reference value is at least `floorOfMax` × that channel's
 // maximum: the largest |image − reference| / reference; infinite where either image has a pixel
-// that is not finite (anywhere, not only over the floor).
+// that is not finite (anywhere, not only over the floor); NaN where no pixel is compared, the
+// reference being black (0 read as a perfect match: a camera looking away, a nebula without light).
 double maxRelativeError(const NebulaImage& image, const NebulaImage& reference, double floorOfMax = 0.01);
 
 }  // namespace prism::nebula

@@ -87,9 +87,8 @@ Errors measure(const std::string& filters, int stars, bool doublePrecision = fal
   return e;
 }
 
-// The table of projection coefficients against the same coefficients made in double at each
-// depth: Catmull–Rom within float's storage everywhere, the first interval included (there it
-// was 1e-3 off while the entry before 0 mirrored the one after, a slope of 0 at the cloud's front).
+// The measure every method is held by: a non-finite pixel is infinitely wrong, and against a
+// black reference, where no pixel is compared, it is NaN rather than a perfect 0.
 TEST(NebulaRender, TheRelativeErrorOfANonFinitePixelIsInfinite) {
   const NebulaImage reference{2, 1, {glm::vec3(1.0f), glm::vec3(0.0f)}};
   EXPECT_NEAR(maxRelativeError({2, 1, {glm::vec3(1.5f), glm::vec3(0.0f)}}, reference), 0.5, 1e-12);
@@ -99,6 +98,9 @@ TEST(NebulaRender, TheRelativeErrorOfANonFinitePixelIsInfinite) {
     EXPECT_EQ(maxRelativeError({2, 1, {glm::vec3(1.0f), bad}}, reference), std::numeric_limits<double>::infinity());
     EXPECT_EQ(maxRelativeError({2, 1, {bad, glm::vec3(0.0f)}}, reference), std::numeric_limits<double>::infinity());
   }
+  const NebulaImage black{2, 1, {glm::vec3(0.0f), glm::vec3(0.0f)}};
+  EXPECT_TRUE(std::isnan(maxRelativeError(reference, black)));
+  EXPECT_EQ(maxRelativeError({2, 1, {glm::vec3(nan), glm::vec3(0.0f)}}, black), std::numeric_limits<double>::infinity());
 }
 
 TEST(NebulaRender, TheCoefficientTableHoldsFromTheFirstInterval) {

@@ -808,7 +808,7 @@ TEST(Cli, NebulaBasisRenderAndTheirErrors) {
   expectOneLineError("nebula basis --domain 1e-30,1e-29", "only 1 of 6 elements found");
   std::filesystem::create_directories(dir / "folder.svg");
   expectOneLineError("nebula sweep " + tiny + " --plot " + (dir / "folder.svg").string(), "is a folder");
-  expectOneLineError("nebula sweep " + tiny + " --size 0", "--size: 0 is not within 1..4096");
+  expectOneLineError("nebula sweep " + tiny + " --size 0", "--size: 0 is not within 1..8192");
   // More stars than the GPU's 3D textures hold (llvmpipe's 2 048 texels deep, the largest GPUs'
   // 16 384), said before the precomputation of their optical depths (it came after it).
   std::string many = R"({"nebula": {"density": {"noise": {"resolution": 24}}, "stars": [)";

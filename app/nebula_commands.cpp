@@ -165,7 +165,7 @@ constexpr std::string_view kBlackReference = "none: the reference is black, no p
 
 void runNebulaSweep(const NebulaSweepOptions& o) {
   requireWithin("--max-basis", o.maxBasis, 1, nebula::kMaxBasisSize);
-  requireWithin("--size", o.size, 1, 4096);
+  requireWithin("--size", o.size, 1, nebula::kMaxImageSide);
   requireWithin("--steps", o.steps, 1, nebula::kMaxSteps);
   requirePlotFile(o.plotFile);
   requireOtherFile(o.plotFile, o.scene, "the scene file");
@@ -274,7 +274,7 @@ void runNebulaRender(const NebulaRenderOptions& o) {
     throw Error(fmt::format("{}: the output must be .exr or .png", o.output.string()));
   nebula::Method method = nebula::methodFromName(o.method);
   requireWithin("--steps", o.steps, 1, nebula::kMaxSteps);
-  requireWithin("--size", o.size, 1, 4096);
+  requireWithin("--size", o.size, 1, nebula::kMaxImageSide);
   requireWithin("--basis", o.basisSize, 1, nebula::kMaxBasisSize);
   requireBasisDepth(o.basisDepthUm);
   requireWithin("--light-basis", o.lightBasisSize, 1, nebula::kMaxLightBasisSize);
@@ -464,7 +464,8 @@ double medianGpuMs(gpu::GpuTimer& timer, int repeats, nebula::NebulaGpuMarcher& 
 void runNebulaBench(const NebulaBenchOptions& o) {
   const int repeats = o.repeats;
   if (repeats < 1 || repeats > 1000) throw Error("nebula bench: --repeats must be 1 to 1000");
-  if (o.size < 1 || o.size > 8192) throw Error("nebula bench: --size must be 1 to 8192 pixels");
+  if (o.size < 1 || o.size > nebula::kMaxImageSide)
+    throw Error(fmt::format("nebula bench: --size must be 1 to {} pixels", nebula::kMaxImageSide));
   gpu::HeadlessContext context;
   gpu::GpuTimer timer;
   fmt::print("nebula bench: {0}x{0}, 100 steps, 32^3 cloud, Hubble palette, no lines; median of {1} runs (ms); "

@@ -41,6 +41,9 @@ struct NebulaStar {
   double luminosity = 1.0;
 };
 
+// The largest side of a nebula's image, in pixels: a scene's camera, and every command's --size.
+inline constexpr int kMaxImageSide = 8192;
+
 struct NebulaCamera {
   glm::dvec3 position{0.5, 0.5, -1.0};
   glm::dvec3 target{0.5, 0.5, 0.5};

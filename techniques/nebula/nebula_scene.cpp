@@ -164,8 +164,8 @@ NebulaSceneFile readNebulaScene(const std::filesystem::path& path) {
     if (cam->has("position")) m.camera.position = dvec3(cam->child("position"), schema::Range::closed(-100.0, 100.0));
     if (cam->has("target")) m.camera.target = dvec3(cam->child("target"), schema::Range::closed(-100.0, 100.0));
     m.camera.fovYDeg = cam->number("fov", m.camera.fovYDeg, schema::Range::open(0.0, 180.0));
-    if (cam->has("width")) m.camera.width = cam->child("width").integer(schema::Range::closed(1, 8192));
-    if (cam->has("height")) m.camera.height = cam->child("height").integer(schema::Range::closed(1, 8192));
+    if (cam->has("width")) m.camera.width = cam->child("width").integer(schema::Range::closed(1, kMaxImageSide));
+    if (cam->has("height")) m.camera.height = cam->child("height").integer(schema::Range::closed(1, kMaxImageSide));
     if (glm::length(m.camera.target - m.camera.position) <= 0.0) cam->fail("position and target must differ");
   }
   return file;

@@ -417,6 +417,16 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
                        "--wavelengths 4 " + observer);
     EXPECT_EQ(other.exitCode, 0) << observer << ": " << other.err;
   }
+  // Water's lamp in-scattering is timed where a point or spot lamp scatters, not in the reef, lit
+  // by the sun alone (a ratio of 1 for nothing: the bench counts the scene's lamps, not its lights).
+  for (const auto& [scene, lamps] : {std::pair{scenes + "/reef.json", false},
+                                     std::pair{scenes + "/../render/tests/water_lamps.json", true}}) {
+    Result water = run("bench " + scene + " --width 16 --height 9 --frames 1 --rounds 1 --warmup 0 --wavelengths 16 --json");
+    ASSERT_EQ(water.exitCode, 0) << scene << ": " << water.err;
+    const nlohmann::json t = nlohmann::json::parse(water.out)["techniques"]["water"];
+    EXPECT_TRUE(t.contains("spectral16_ratio_wet_to_dry")) << scene;
+    EXPECT_EQ(t.contains("spectral16_ratio_lamp_scattering"), lamps) << scene;
+  }
 
   Result demo = run("demo -o " + (dir / "gallery").string() + " --width 64 --height 36");
   ASSERT_EQ(demo.exitCode, 0) << demo.err;

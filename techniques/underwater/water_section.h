@@ -47,7 +47,8 @@ struct WaterSection final : TechniqueSection {
   // its Kd (by which PRT's forward pass dims the environment reaching its objects).
   std::optional<TechniqueMedium> medium(const glm::vec3& sceneCameraPositionW) const override;
   // The water term's cost: the same frames with the water taken out, RGB and 16 wavelengths; and
-  // the lamps' in-scattering's, 16 wavelengths with it left out (where lampScattering is on).
+  // the lamps' in-scattering's, 16 wavelengths with it left out (where lampScattering is on and
+  // the scene has a point or spot lamp).
   TechniqueBench bench(std::size_t pointAndSpotLights) const override;
 
   static std::unique_ptr<TechniqueSection> parse(const schema::Node& node, const TechniqueSections& earlier);

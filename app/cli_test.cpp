@@ -1009,6 +1009,20 @@ TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
   Result report = run("prt report --patch-vertices 4 --samples 32 --json --colours " + ply.string() + " --plot " + svg.string(),
                       cache);
   ASSERT_EQ(report.exitCode, 0) << report.err;
+  // With a PRT section of another environment, that is the default, and the sky --environment
+  // atmosphere's start (it took the defaults' sun at 30° and 180°).
+  std::filesystem::path both = writeTemp("prt_and_sky.json", R"({"camera": {"position": [0, 1, 3], "target": [0, 0, 0]},
+    "materials": {"m": {"base_colour": [0.6, 0.3, 0.2]}},
+    "objects": [{"sphere": {"centre": [0, 0, 0], "radius": 0.5, "segments": 8}, "material": "m", "technique": "prt"}],
+    "prt": {"environment": {"illuminant": "A", "shape": "uniform", "luminance": 100}, "samples": 8, "shadows": false},
+    "atmosphere": {"sun": {"elevation": 12, "azimuth": 40}}})");
+  Result bothDefault = run("prt report " + both.string() + " --json");
+  ASSERT_EQ(bothDefault.exitCode, 0) << bothDefault.err;
+  EXPECT_EQ(nlohmann::json::parse(bothDefault.out)["environment"], "the scene's (A uniform)");
+  Result bothSky = run("prt report " + both.string() + " --environment atmosphere --json");
+  ASSERT_EQ(bothSky.exitCode, 0) << bothSky.err;
+  EXPECT_EQ(nlohmann::json::parse(bothSky.out)["environment"],
+            "the scene's spectral sky, sun at 12° elevation, 40° azimuth, its disc on SH-5");
   auto json = nlohmann::json::parse(report.out);
   EXPECT_EQ(json["spectral"].size(), 16u);
   EXPECT_GT(json["rgb_prt"]["mean_de94"].get<double>(), 0.0);

@@ -120,8 +120,8 @@ int main(int argc, char** argv) {
   prtReportCmd->add_option("input", prtReport.input, "a scene (.json) or glTF model instead of the ColorChecker height field");
   prtReportCmd->add_option("--illuminant", prtReport.illuminant, "illuminant of a sky or uniform environment (default: F4)");
   prtReportCmd->add_option("--environment", prtReport.environment, "sky (overcast gradient; the default, unless a scene brings its own), uniform, or atmosphere (Prism's spectral sky and sun)");
-  prtReportCmd->add_option("--sun-elevation", prtReport.sunElevationDeg, "the atmosphere's sun, degrees above the horizon (default: 30)");
-  prtReportCmd->add_option("--sun-azimuth", prtReport.sunAzimuthDeg, "the atmosphere's sun, degrees (0: towards -z, 90: +x; default: 180)");
+  prtReportCmd->add_option("--sun-elevation", prtReport.sunElevationDeg, "the atmosphere's sun, degrees above the horizon (default: the scene's sky's, else 30)");
+  prtReportCmd->add_option("--sun-azimuth", prtReport.sunAzimuthDeg, "the atmosphere's sun, degrees (0: towards -z, 90: +x; default: the scene's sky's, else 180)");
   prtReportCmd->add_option("--map,--exr", prtReport.exr, "an equirectangular map instead, row 0 at the zenith: linear-sRGB EXR or Radiance .hdr");
   std::string prtRotate;
   prtReportCmd->add_option("--rotate", prtRotate, "X,Y,Z,DEGREES: turn the environment (SH rotation, no re-projection)");

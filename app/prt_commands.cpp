@@ -239,15 +239,19 @@ prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtI
   if (o.environment == "atmosphere" && o.illuminant)
     throw Error("--illuminant: the atmosphere is lit by its sun, not by an illuminant");
   const prt::PrtSection* section = input ? input->section() : nullptr;
-  // A scene with the spectral sky as its own section and no PRT section (sunset.json) is under
-  // that sky as a PRT section's sky would be: the report took the F4 sky, and `--environment
-  // atmosphere` the defaults' sun at 30°, where the scene's is at 3°.
+  // The scene's spectral sky: its PRT section's, else its own atmosphere section's, as a PRT
+  // section's sky (sunset.json: the report took the F4 sky, and `--environment atmosphere` the
+  // defaults' sun at 30°, where the scene's is at 3°); the default environment too where the
+  // scene has no PRT section.
   prt::PrtSection atmosphereSky;
+  const prt::PrtSection* sceneSky = section && section->sky ? section : nullptr;
   if (const auto* atmosphere = input ? input->scene.techniques.find<atmosphere::AtmosphereSection>() : nullptr;
-      atmosphere && !section) {
-    atmosphereSky.sky = prt::PrtSky{.atmosphere = *atmosphere, .sunDisc = true};
-    section = &atmosphereSky;
+      atmosphere && !sceneSky) {
+    atmosphereSky.sky = prt::PrtSky{.atmosphere = static_cast<const atmosphere::AtmosphereSky&>(*atmosphere),
+                                    .sunDisc = true};
+    sceneSky = &atmosphereSky;
   }
+  if (!section) section = sceneSky;
   if (section && o.exr.empty() && !o.environment && !o.illuminant) {
     // The report has no lights: the spectral sky's sun, the renderer's light, is projected with it.
     prt::SpectralEnvironment environment = prt::sectionEnvironment(*section, rendererRgbToSpectrumTable("srgb"), true);
@@ -278,13 +282,13 @@ prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtI
   // The scene's own sky, when it has one, with the sun moved as asked (its disc, its other keys and
   // the section's rotation kept): the defaults' sky stood in for it, a report at --sun-elevation 15
   // on prt_sky.json putting the sun at 180°, not the scene's 120°, under the same header.
-  const bool own = section && section->sky;
-  const double elevation = o.sunElevationDeg.value_or(own ? section->sky->atmosphere.sunElevationDeg : 30.0);
-  const double azimuth = o.sunAzimuthDeg.value_or(own ? section->sky->atmosphere.sunAzimuthDeg : 180.0);
+  const bool own = sceneSky != nullptr;
+  const double elevation = o.sunElevationDeg.value_or(own ? sceneSky->sky->atmosphere.sunElevationDeg : 30.0);
+  const double azimuth = o.sunAzimuthDeg.value_or(own ? sceneSky->sky->atmosphere.sunAzimuthDeg : 180.0);
   if (!(std::abs(elevation) <= 90.0)) throw Error(fmt::format("--sun-elevation: {} is not within -90..90", elevation));
   if (!(std::abs(azimuth) <= 360.0)) throw Error(fmt::format("--sun-azimuth: {} is not within -360..360", azimuth));
   if (own) {
-    prt::PrtSection moved = *section;
+    prt::PrtSection moved = *sceneSky;
     moved.sky->atmosphere.sunElevationDeg = static_cast<float>(elevation);
     moved.sky->atmosphere.sunAzimuthDeg = static_cast<float>(azimuth);
     prt::SpectralEnvironment environment = prt::sectionEnvironment(moved, rendererRgbToSpectrumTable("srgb"), true);

@@ -38,9 +38,10 @@ PrtBakeTarget prtBakeTarget(const PrtBakeOptions& options);
 
 struct PrtReportOptions {
   std::string input;                // a scene or glTF model; empty: the ColorChecker height field
-  // One environment: a scene's own (`input` with a prt section, none of the below given), a map,
-  // or `environment` (default sky) under `illuminant` (default F4) or, for atmosphere, its sun
-  // (default 30° up, azimuth 180°). Options of another environment than the one used are refused.
+  // One environment: a scene's own (`input` with a prt section or the spectral sky, none of the
+  // below given), a map, or `environment` (default sky) under `illuminant` (default F4) or, for
+  // atmosphere, the scene's spectral sky if it has one, else Prism's, with its sun (default the
+  // scene's, else 30° up, azimuth 180°). Options of another environment than the one used are refused.
   std::optional<std::string> illuminant;
   std::optional<std::string> environment;  // sky | uniform | atmosphere (Prism's spectral sky, its sun below)
   std::optional<double> sunElevationDeg;

@@ -647,6 +647,12 @@ TEST(Cli, ReferenceWritesWhatCompareReads) {
   EXPECT_EQ(camerasJson["reference_camera"], "nikon_d850");
   EXPECT_EQ(camerasJson["test_camera"], "canon_eos_5d");
   EXPECT_LT(camerasJson["mean_delta_e"].get<double>(), 1.0);  // a near-monochromatic light: both near exact
+  // Under D65 each camera's colour error shows, each through its own matrix: the D850 against the
+  // EOS 5D 0.23 mean ΔE00; the EOS 5D's RGB through the D850's matrix read 4.8.
+  ASSERT_EQ(run("render " + scene + " -o " + (dir / "canon_d65.exr").string() + d65Tiny + " --camera canon_eos_5d").exitCode, 0);
+  Result d65Cameras = run("compare " + (dir / "cam_d65.exr").string() + " " + (dir / "canon_d65.exr").string() + " --json");
+  ASSERT_EQ(d65Cameras.exitCode, 0) << d65Cameras.err;
+  EXPECT_LT(nlohmann::json::parse(d65Cameras.out)["mean_delta_e"].get<double>(), 1.0);
   Result lights = run("compare " + (dir / "cam_raster.exr").string() + " " + (dir / "cam_d65.exr").string() +
                       " --white 5000");
   ASSERT_EQ(lights.exitCode, 0) << lights.err;
@@ -1003,12 +1009,6 @@ TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
   ASSERT_EQ(moved.exitCode, 0) << moved.err;
   EXPECT_EQ(nlohmann::json::parse(moved.out)["environment"],
             "the scene's spectral sky, sun at 10° elevation, 4° azimuth, its disc on SH-5");
-
-  std::filesystem::path ply = std::filesystem::path(::testing::TempDir()) / "prt" / "checker.ply";
-  std::filesystem::path svg = std::filesystem::path(::testing::TempDir()) / "prt" / "sweep.svg";
-  Result report = run("prt report --patch-vertices 4 --samples 32 --json --colours " + ply.string() + " --plot " + svg.string(),
-                      cache);
-  ASSERT_EQ(report.exitCode, 0) << report.err;
   // With a PRT section of another environment, that is the default, and the sky --environment
   // atmosphere's start (it took the defaults' sun at 30° and 180°).
   std::filesystem::path both = writeTemp("prt_and_sky.json", R"({"camera": {"position": [0, 1, 3], "target": [0, 0, 0]},
@@ -1023,6 +1023,12 @@ TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
   ASSERT_EQ(bothSky.exitCode, 0) << bothSky.err;
   EXPECT_EQ(nlohmann::json::parse(bothSky.out)["environment"],
             "the scene's spectral sky, sun at 12° elevation, 40° azimuth, its disc on SH-5");
+
+  std::filesystem::path ply = std::filesystem::path(::testing::TempDir()) / "prt" / "checker.ply";
+  std::filesystem::path svg = std::filesystem::path(::testing::TempDir()) / "prt" / "sweep.svg";
+  Result report = run("prt report --patch-vertices 4 --samples 32 --json --colours " + ply.string() + " --plot " + svg.string(),
+                      cache);
+  ASSERT_EQ(report.exitCode, 0) << report.err;
   auto json = nlohmann::json::parse(report.out);
   EXPECT_EQ(json["spectral"].size(), 16u);
   EXPECT_GT(json["rgb_prt"]["mean_de94"].get<double>(), 0.0);

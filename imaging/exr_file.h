@@ -32,7 +32,7 @@ inline constexpr const char* kDisplayWhiteAttribute = "prism:displayWhite";
 inline constexpr const char* kPartAttribute = "prism:part";
 // "prism:camera" (string) and "prism:cameraToXyz" (m33d, row-major): a camera's raw RGB says which
 // camera it is and the matrix its frame is shown through (the camera's ColorChecker fit under the
-// scene's light), which makes it colorimetric: what compare measures two camera frames in.
+// scene's light), which makes it colorimetric: compare takes a camera's frame into CIE 1931 XYZ by it.
 inline constexpr const char* kCameraAttribute = "prism:camera";
 inline constexpr const char* kCameraToXyzAttribute = "prism:cameraToXyz";
 

@@ -102,7 +102,7 @@ void Compositor::updateHeatMap(const Camera& camera) {
     if (!c->tristimulusObserver->isCamera &&
         imaging::tristimulusMeaning(*c->tristimulusObserver) != imaging::ColourMeaning::Xyz)
       throw Error("the heat map compares CIE 1931 XYZ, or a camera's RGB through its matrix: choose cie1931 or a "
-                  "camera on both sides (CIE 1964's X10Y10Z10 is neither)");
+                  "camera on each side (CIE 1964's X10Y10Z10 is neither)");
   imaging::FloatImage a(s.width, s.height, 3), b(t.width, t.height, 3);
   a.pixels = mLeft->readMeanTristimulus();
   b.pixels = mRight->readMeanTristimulus();

@@ -49,11 +49,20 @@ void requireThree(const std::vector<double>& v, const std::string& what) {
     if (!std::isfinite(x)) throw Error(what + ": values must be finite");
 }
 
+// A camera's values are normalised to its G of the light's white: under a light it does not see
+// (led:830:1, past its curves) every value was NaN, printed with exit 0.
+void requireCameraSees(const Observer& camera, const Spectrum& light, const std::string& lightName) {
+  if (camera.isCamera && !((light * camera.curves[1]).integral() > 0.0))
+    throw Error(fmt::format("--illuminant: {} does not see {} (its G of the light is 0): no white to normalise to",
+                            camera.name, lightName));
+}
+
 }  // namespace
 
 void colourXyz(const XyzOptions& o) {
   Spectrum light = fromOption("--illuminant", [&] { return lampSpectrum(o.illuminant); });
   const Observer& obs = *fromOption("--observer", [&] { return &observer(o.observer); });
+  requireCameraSees(obs, light, o.illuminant);
   if (!o.reflectanceFile.empty() && !o.rgb.empty())
     throw Error("colour xyz: give --reflectance or --rgb, not both");
   json out = {{"illuminant", o.illuminant}, {"observer", o.observer}};
@@ -252,20 +261,26 @@ void colourConvert(const ConvertOptions& o) {
 
 void colourCameraMatrix(const CameraMatrixOptions& o) {
   const Observer& camera = cameraOption(o.camera);
-  CameraMatrixFit fit =
-      fitCameraToXyz(camera, fromOption("--illuminant", [&] { return lampSpectrum(o.illuminant); }), observer("cie1931"));
+  const Spectrum light = fromOption("--illuminant", [&] { return lampSpectrum(o.illuminant); });
+  requireCameraSees(camera, light, o.illuminant);
+  CameraMatrixFit fit = fitCameraToXyz(camera, light, observer("cie1931"));
+  if (fit.chartConditioning < kIllPosedCameraFit)
+    fmt::print(stderr, "prism: warning: under {} the ColorChecker's colours through {} barely span three dimensions "
+                       "(smallest / largest singular value {:.2g}): the matrix is one of many that fit the chart, and "
+                       "maps light of another spectrum arbitrarily\n", o.illuminant, o.camera, fit.chartConditioning);
   if (o.json) {
     fmt::print("{}\n", json{{"camera", o.camera}, {"illuminant", o.illuminant},
                             {"cameraToXyz", toJson(fit.cameraToXyz)},
-                            {"meanDeltaE2000", fit.meanDeltaE2000}, {"maxDeltaE2000", fit.maxDeltaE2000}}
+                            {"meanDeltaE2000", fit.meanDeltaE2000}, {"maxDeltaE2000", fit.maxDeltaE2000},
+                            {"chartConditioning", fit.chartConditioning}}
                            .dump(2));
     return;
   }
   for (int r = 0; r < 3; ++r)
     fmt::print("{:10.6f} {:10.6f} {:10.6f}\n", fit.cameraToXyz(r, 0), fit.cameraToXyz(r, 1),
                fit.cameraToXyz(r, 2));
-  fmt::print("ColorChecker under {}: mean ΔE00 {:.3f}, max {:.3f}\n", o.illuminant,
-             fit.meanDeltaE2000, fit.maxDeltaE2000);
+  fmt::print("ColorChecker under {}: mean ΔE00 {:.3f}, max {:.3f}; conditioning {:.2g} (smallest / largest singular "
+             "value of its camera colours)\n", o.illuminant, fit.meanDeltaE2000, fit.maxDeltaE2000, fit.chartConditioning);
 }
 
 void colourList(const std::string& what, bool jsonOut) {

@@ -1,6 +1,7 @@
 #include "spectral/camera_matrix.h"
 
 #include <Eigen/QR>
+#include <Eigen/SVD>
 #include <algorithm>
 
 #include "spectral/colour_checker.h"
@@ -21,6 +22,8 @@ CameraMatrixFit fitCameraToXyz(const Observer& camera, const Spectrum& illuminan
   // min ‖cameraRgb·Mᵀ − xyz‖²: one least-squares problem per XYZ channel.
   CameraMatrixFit fit;
   fit.cameraToXyz = cameraRgb.colPivHouseholderQr().solve(xyz).transpose();
+  const Eigen::Vector3d singular = Eigen::JacobiSVD<Eigen::MatrixX3d>(cameraRgb).singularValues();
+  fit.chartConditioning = singular[0] > 0.0 ? singular[2] / singular[0] : 0.0;
   Eigen::Vector3d white = whiteTristimulus(target, illuminant);
   double sum = 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {

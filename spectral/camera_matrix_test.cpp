@@ -32,7 +32,18 @@ TEST(CameraMatrix, RealCamerasFitTheChartClosely) {
     CameraMatrixFit fit = fitCameraToXyz(observer(name), d65, observer("cie1931"));
     EXPECT_LT(fit.meanDeltaE2000, 3.0) << name;
     EXPECT_GT(fit.meanDeltaE2000, 0.0) << name;  // real sensors are not colorimetric
+    EXPECT_GT(fit.chartConditioning, kIllPosedCameraFit) << name;
   }
+}
+
+// Under a narrow LED the chart's camera colours nearly share one direction: the fit says so.
+TEST(CameraMatrix, ANarrowLightMakesTheFitIllPosed) {
+  for (const char* light : {"led:450:20", "led:790:5"}) {
+    CameraMatrixFit fit = fitCameraToXyz(observer("nikon_d850"), illuminant(light), observer("cie1931"));
+    EXPECT_LT(fit.chartConditioning, kIllPosedCameraFit) << light;
+  }
+  EXPECT_GT(fitCameraToXyz(observer("nikon_d850"), illuminant("A"), observer("cie1931")).chartConditioning,
+            kIllPosedCameraFit);
 }
 
 }  // namespace

@@ -180,7 +180,8 @@ void printValidateClusterScript(const ClusterOptions& o) {
   s.array.memoryMiB = 512;
   s.finish.name = "prism-validate-collect";
   s.finish.memoryMiB = 256;
-  s.finish.command = shellQuote(prismExecutable()) + " validate --collect" + common;
+  // Its own split's parts: an earlier sweep into the same folder with another task count left its.
+  s.finish.command = shellQuote(prismExecutable()) + fmt::format(" validate --collect --tasks {}", o.tasks) + common;
   printScript(s);
 }
 

@@ -294,8 +294,11 @@ int main(int argc, char** argv) {
   validateCmd->add_flag("--json", val.json, "JSON output");
   validateCmd->add_option("--task", val.task,
                           "I/N, I from 0: only task I of N's share of the experiments, as a part in OUT/parts (a Slurm array task)");
-  validateCmd->add_flag("--collect", val.collect, "the report from the parts in OUT/parts (after every --task)")
-      ->excludes("--task");
+  auto* collectFlag = validateCmd->add_flag("--collect", val.collect, "the report from the parts in OUT/parts (after every --task)")
+                          ->excludes("--task");
+  validateCmd->add_option("--tasks", val.tasks, "with --collect: only the parts of a split into N tasks (task-*-of-N.json)")
+      ->needs(collectFlag)
+      ->check(CLI::Range(1, 1 << 20));
   std::string validateOnly;
   auto* validateOnlyOpt = validateCmd->add_option(
       "--only", validateOnly, "only these experiments (names as in results.json, e.g. spheres_d65,reef_5m)");

@@ -525,7 +525,7 @@ int runValidate(const ValidateOptions& o) {
 
   if (o.collect) {
     std::vector<Result> results;
-    for (const nlohmann::json& row : collectValidateParts(o.output, identity, names)) results.push_back(resultFromJson(row));
+    for (const nlohmann::json& row : collectValidateParts(o.output, identity, names, o.tasks)) results.push_back(resultFromJson(row));
     return report(o, sizes, results);
   }
   setAllThreads(o.threads);  // every pass's "all threads": the images do not depend on it

@@ -31,6 +31,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,7 @@ struct ValidateOptions {
   bool json = false;             // print results.json instead of the table
   std::string task;              // "I/N": only task I of N's experiments, into DIR/parts (skipped when there)
   bool collect = false;          // the report from DIR/parts instead of running experiments
+  std::optional<int> tasks;      // with collect: only the parts of a split into this many tasks
   std::vector<std::string> only;  // experiment names, in any order; empty: every one
   unsigned threads = 0;           // the CPU's share of every experiment (0: all hardware threads)
 };

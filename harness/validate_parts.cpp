@@ -1,7 +1,9 @@
 #include "harness/validate_parts.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
+#include <set>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -15,6 +17,17 @@ namespace prism::harness {
 namespace {
 
 constexpr const char* kFormat = "prism-validate-part 1";
+
+// N of a part's file name, task-I-of-N.json (validatePartPath); 0 for another name.
+int splitOf(const std::filesystem::path& file) {
+  int index = 0, count = 0;
+  char end = 0;
+  const std::string name = file.filename().string();
+  if (std::sscanf(name.c_str(), "task-%d-of-%d.jso%c", &index, &count, &end) == 3 && end == 'n' &&
+      name == fmt::format("task-{}-of-{}.json", index, count))
+    return count;
+  return 0;
+}
 
 }  // namespace
 
@@ -69,17 +82,26 @@ ValidatePart readValidatePart(const std::filesystem::path& path) {
 }
 
 nlohmann::json collectValidateParts(const std::filesystem::path& dir, const nlohmann::json& identity,
-                                    const std::vector<std::string>& experiments) {
+                                    const std::vector<std::string>& experiments, std::optional<int> tasks) {
   const std::filesystem::path folder = dir / "parts";
   std::vector<std::filesystem::path> files;
+  std::set<int> splits;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
-    if (lowercaseExtension(entry.path()) == ".json") files.push_back(entry.path());
+    if (lowercaseExtension(entry.path()) != ".json" || (tasks && splitOf(entry.path()) != *tasks)) continue;
+    files.push_back(entry.path());
+    if (const int n = splitOf(entry.path()); n > 0) splits.insert(n);
   }
   std::sort(files.begin(), files.end());
   if (files.empty()) {
-    throw Error(fmt::format("validate --collect: {} holds no parts (`prism validate --task I/N -o {}` writes them)",
-                            folder.string(), dir.string()));
+    throw Error(fmt::format("validate --collect: {} holds no parts{} (`prism validate --task I/{} -o {}` writes them)",
+                            folder.string(), tasks ? fmt::format(" of a split into {} tasks", *tasks) : "",
+                            tasks ? std::to_string(*tasks) : "N", dir.string()));
+  }
+  if (splits.size() > 1) {
+    throw Error(fmt::format("validate --collect: {} holds parts of splits into {} tasks: --tasks N collects those of "
+                            "one (the cluster script's job gives its own)",
+                            folder.string(), fmt::join(splits, ", ")));
   }
   std::map<std::string, std::pair<std::filesystem::path, nlohmann::json>> found;  // experiment → part, its rows
   for (const std::filesystem::path& file : files) {

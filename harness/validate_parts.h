@@ -8,6 +8,7 @@
 
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,10 +38,12 @@ void writeValidatePart(const std::filesystem::path& path, const ValidatePart& pa
 // scene (one the part names), its mode and its statistics.
 ValidatePart readValidatePart(const std::filesystem::path& path);
 
-// Every part in DIR/parts, checked to agree on `identity` and to hold each of `experiments`
-// exactly once: their rows in the order of `experiments`. Error "validate --collect: …" naming
-// the experiment missing, the two parts that both hold one, or the part of another sweep.
+// Every part in DIR/parts of a split into `tasks` (task-*-of-N.json; unset: the one split the
+// folder holds), checked to agree on `identity` and to hold each of `experiments` exactly once:
+// their rows in the order of `experiments`. Error "validate --collect: …" naming the experiment
+// missing, the two parts that both hold one, the part of another sweep, or, unset, the splits
+// the folder holds parts of (a sweep run again into it with another task count left its parts).
 nlohmann::json collectValidateParts(const std::filesystem::path& dir, const nlohmann::json& identity,
-                                    const std::vector<std::string>& experiments);
+                                    const std::vector<std::string>& experiments, std::optional<int> tasks = std::nullopt);
 
 }  // namespace prism::harness

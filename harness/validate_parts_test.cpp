@@ -61,16 +61,37 @@ TEST_F(ValidateParts, CollectsEveryExperimentsRowsInOrder) {
   EXPECT_EQ(readValidatePart(validatePartPath(mRoot, {0, 2})).experiments, (std::vector<std::string>{"a", "b"}));
 }
 
+// A sweep run again into the same folder with another task count: its parts stand beside the
+// earlier ones, and the collect job, which knew no N, failed on an experiment in both.
+TEST_F(ValidateParts, CollectsTheSplitItIsGivenAndNamesTheSplitsOtherwise) {
+  part({0, 3}, {"a"});
+  part({1, 3}, {"b"});
+  part({0, 2}, {"a", "b"});
+  part({1, 2}, {"c"});
+  EXPECT_EQ(collectError(), "validate --collect: " + (mRoot / "parts").string() +
+                                " holds parts of splits into 2, 3 tasks: --tasks N collects those of one (the cluster "
+                                "script's job gives its own)");
+  EXPECT_EQ(collectValidateParts(mRoot, kIdentity, kExperiments, 2).size(), 4u);
+  EXPECT_EQ(collectValidateParts(mRoot, kIdentity, {"a", "b"}, 3).size(), 3u);
+  try {
+    collectValidateParts(mRoot, kIdentity, kExperiments, 5);
+    ADD_FAILURE() << "collected a split with no parts";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("holds no parts of a split into 5 tasks (`prism validate --task I/5 -o"),
+              std::string::npos) << e.what();
+  }
+}
+
 TEST_F(ValidateParts, RefusesAMissingExperimentATwiceRunOneAndAnotherSweep) {
   EXPECT_NE(collectError().find("parts holds no parts (`prism validate --task I/N -o"), std::string::npos) << collectError();
   part({0, 2}, {"a", "b"});
   EXPECT_EQ(collectError(), "validate --collect: experiment c is missing (no part in " + (mRoot / "parts").string() +
                                 " holds it)");
-  part({1, 3}, {"b", "c"});
+  part({1, 2}, {"b", "c"});
   EXPECT_EQ(collectError(), "validate --collect: experiment b is in both " +
                                 validatePartPath(mRoot, {0, 2}).string() + " and " +
-                                validatePartPath(mRoot, {1, 3}).string());
-  std::filesystem::remove(validatePartPath(mRoot, {1, 3}));
+                                validatePartPath(mRoot, {1, 2}).string());
+  std::filesystem::remove(validatePartPath(mRoot, {1, 2}));
   part({1, 2}, {"c"}, {{"sizes", 2}});
   EXPECT_NE(collectError().find("is a part of another sweep"), std::string::npos) << collectError();
   std::ofstream(validatePartPath(mRoot, {1, 2})) << "{\"format\": \"prism-validate-part 1\", \"experi";

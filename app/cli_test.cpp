@@ -170,6 +170,17 @@ TEST(Cli, ConvertSrgbToRec2020) {
   EXPECT_TRUE(j["inGamut"].get<bool>());
   Result back = run("colour convert --from rec2020 --to srgb --linear 0,1,0 --json");
   EXPECT_FALSE(nlohmann::json::parse(back.out)["inGamut"].get<bool>());
+  // D65's white as `colour xyz` prints it, to six places, is sRGB's white (it read 1.000071, out of
+  // gamut); scene-linear ACES takes light above 1, a display space does not.
+  auto inGamut = [](const std::string& args) {
+    Result r = run("colour convert " + args + " --json");
+    EXPECT_EQ(r.exitCode, 0) << args << ": " << r.err;
+    return nlohmann::json::parse(r.out)["inGamut"].get<bool>();
+  };
+  EXPECT_TRUE(inGamut("--from xyz --to srgb 0.950470,1.000000,1.088827"));
+  EXPECT_TRUE(inGamut("--from acescg --to aces2065-1 2,2,2"));
+  EXPECT_FALSE(inGamut("--from acescg --to srgb --linear 2,2,2"));
+  EXPECT_FALSE(inGamut("--from xyz --to srgb 0.950470,1.01,1.088827"));
   // Into ACEScg (white near D60): adapted, D65's white is ACEScg's; with none, as `chart` takes it,
   // it stays D65's (bluer than D60: more B than R), and the XYZ is the same.
   Result adapted = run("colour convert --from srgb --to acescg --linear 1,1,1 --json");

@@ -248,7 +248,14 @@ void colourConvert(const ConvertOptions& o) {
       from && !o.linear ? mirrored(in, [from](const Eigen::Vector3d& x) { return from->decode(x); }) : in;
   Eigen::Vector3d linear = m * decoded;
   Eigen::Vector3d value = to && !o.linear ? mirrored(linear, [to](const Eigen::Vector3d& x) { return to->encode(x); }) : linear;
-  bool inGamut = !to || ((linear.array() >= -1e-9).all() && (linear.array() <= 1.0 + 1e-9).all());
+  // Out of gamut: a component below 0, outside the primaries' triangle, and for a display space (a
+  // transfer curve: srgb, display-p3, rec2020) one above 1 too, past what it shows; scene-linear
+  // ACES takes any light. Within 1e-3 of the value's scale, a tenth of a per cent: D65's white as
+  // the CIE tables integrate it (x, y 0.31272, 0.32903, not sRGB's 0.3127, 0.3290) read linear
+  // 1.00016 in sRGB, said out of gamut.
+  const double tolerance = 1e-3 * std::max(1.0, linear.cwiseAbs().maxCoeff());
+  const bool inGamut = !to || ((linear.array() >= -tolerance).all() &&
+                               (to->transfer == Transfer::Linear || (linear.array() <= 1.0 + tolerance).all()));
   if (o.json) {
     fmt::print("{}\n", json{{"from", o.from}, {"to", o.to}, {"linear", toJson(linear)},
                             {"value", toJson(value)}, {"inGamut", inGamut}}

@@ -202,6 +202,11 @@ TEST(Cli, CctWritesACsvSpectrumAtomically) {
   std::string csv = slurp(out);
   EXPECT_EQ(csv.rfind("wavelength_nm,value\n360,", 0), 0u);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 95);
+  EXPECT_EQ(r.out, "wrote " + out.string() + "\n");
+  // A step that does not reach 830 nm ends there all the same (7 nm ended at 829).
+  const std::string seven = run("colour cct 6504 --step 7").out;
+  EXPECT_NE(seven.find("\n829,"), std::string::npos);
+  EXPECT_EQ(seven.substr(seven.rfind('\n', seven.size() - 2) + 1, 4), "830,") << seven;
 }
 
 // A lamp of one's own, as a scene's {"csv": …} light: the same colours as the lamp by its name.

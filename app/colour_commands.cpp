@@ -200,12 +200,17 @@ void colourCct(const CctOptions& o) {
   Spectrum s = daylight(o.cctK);
   std::ostringstream csv;
   csv << "wavelength_nm,value\n";
-  for (int l = kLambdaMinNm; l <= kLambdaMaxNm; l += o.stepNm)
-    csv << l << ',' << fmt::format("{:.6g}", s.at(l)) << '\n';
-  if (o.output.empty())
+  // The range's end too, where the step does not reach it (7 nm ended at 829).
+  for (int l = kLambdaMinNm; l < kLambdaMaxNm + o.stepNm; l += o.stepNm) {
+    const int at = std::min(l, kLambdaMaxNm);
+    csv << at << ',' << fmt::format("{:.6g}", s.at(at)) << '\n';
+  }
+  if (o.output.empty()) {
     fmt::print("{}", csv.str());
-  else
+  } else {
     writeFileAtomically(o.output, csv.str());
+    fmt::print("wrote {}\n", o.output);
+  }
 }
 
 void colourConvert(const ConvertOptions& o) {

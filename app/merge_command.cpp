@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
+#include <map>
+
 #include "app/reference_commands.h"
 #include "batch/reference_merge.h"
 #include "core/atomic_file.h"
@@ -19,6 +22,17 @@ void runMerge(const MergeOptions& o) {
     if (!std::filesystem::exists(part)) throw Error(part.string() + ": cannot open: no such file");
     requireOtherFile(o.output, part, "a part it merges");
     requireOtherFile(o.variance, part, "a part it merges");
+  }
+  // One file given twice, by the same name or another, was said to hold the same rows "in both
+  // PART and PART".
+  std::map<std::filesystem::path, const std::filesystem::path*> seen;
+  for (const std::filesystem::path& part : o.parts) {
+    std::error_code ec;
+    const std::filesystem::path canonical = std::filesystem::canonical(part, ec);
+    if (ec) continue;  // read, and refused, below
+    if (auto [it, added] = seen.try_emplace(canonical, &part); !added)
+      throw Error(*it->second == part ? fmt::format("merge: {} is given twice", part.string())
+                                      : fmt::format("merge: {} and {} are the same file", it->second->string(), part.string()));
   }
   if (!o.parts.empty() && isTablePart(o.parts.front())) {
     if (!o.variance.empty()) throw Error("--variance: parts of an upsampling table have none");

@@ -1068,6 +1068,10 @@ TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
 
 TEST(Cli, ColourMetamerMatchesUnderD65AndNotUnderA) {
   Result r = run("colour metamer --reflectance 'dark skin' --under D65,A,F2 --json");
+  // A patch's name as a user types it is the patch (refused, listing no name).
+  Result loose = run("colour metamer --reflectance Dark_Skin --under D65,A,F2 --json");
+  ASSERT_EQ(loose.exitCode, 0) << loose.err;
+  EXPECT_EQ(nlohmann::json::parse(loose.out)["metamer_5nm"], nlohmann::json::parse(r.out)["metamer_5nm"]);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   auto json = nlohmann::json::parse(r.out);
   EXPECT_LE(json["delta_e2000"]["D65"].get<double>(), 0.5);

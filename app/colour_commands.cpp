@@ -1,8 +1,10 @@
 #include "app/colour_commands.h"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <Eigen/Core>
+#include <cctype>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <filesystem>
@@ -324,9 +326,19 @@ void colourList(const std::string& what, bool jsonOut) {
 Spectrum patchOrFileReflectance(const std::string& text, const std::string& option) {
   for (const ColourCheckerPatch& p : colourChecker())
     if (p.name == text) return p.reflectance;
-  if (!std::filesystem::is_regular_file(text))
-    throw Error(option + ": '" + text + "' is neither a ColorChecker patch name nor a file");
-  return readSpectrumCsv(text, Extrapolation::Clamp, 0.0, 1.0).toDense();
+  if (std::filesystem::is_regular_file(text)) return readSpectrumCsv(text, Extrapolation::Clamp, 0.0, 1.0).toDense();
+  // A name as a user types it: 'Dark Skin', light_skin (refused, listing nothing).
+  auto loose = [](std::string name) {
+    for (char& c : name) c = c == '_' || c == '-' ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return name;
+  };
+  std::vector<std::string> names;
+  for (const ColourCheckerPatch& p : colourChecker()) {
+    if (loose(p.name) == loose(text)) return p.reflectance;
+    names.push_back(p.name);
+  }
+  throw Error(fmt::format("{}: '{}' is neither a ColorChecker patch name nor a file (patches: {})", option, text,
+                          fmt::join(names, ", ")));
 }
 
 void colourSpectralTexture(const SpectralTextureOptions& o) {

@@ -107,8 +107,13 @@ nlohmann::json collectValidateParts(const std::filesystem::path& dir, const nloh
   for (const std::filesystem::path& file : files) {
     ValidatePart part = readValidatePart(file);
     if (part.identity != identity) {
-      throw Error(fmt::format("validate --collect: {} is a part of another sweep ({}; this one is {})", file.string(),
-                              excerpt(part.identity.dump(), 120), excerpt(identity.dump(), 120)));
+      // Where they differ first: the two whole identities, cut at 120 characters, showed the same
+      // beginning and hid it (--quick's sizes against a full run's).
+      const nlohmann::json::json_pointer where(nlohmann::json::diff(part.identity, identity).front()["path"].get<std::string>());
+      auto at = [&where](const nlohmann::json& j) { return j.contains(where) ? excerpt(j.at(where).dump(), 120) : "none"; };
+      throw Error(fmt::format("validate --collect: {} is a part of another sweep (its {}: {}; this one's: {})",
+                              file.string(), where.empty() ? "identity" : where.to_string(), at(part.identity),
+                              at(identity)));
     }
     for (const std::string& name : part.experiments) {
       if (std::find(experiments.begin(), experiments.end(), name) == experiments.end())

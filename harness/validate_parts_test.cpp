@@ -93,7 +93,8 @@ TEST_F(ValidateParts, RefusesAMissingExperimentATwiceRunOneAndAnotherSweep) {
                                 validatePartPath(mRoot, {1, 2}).string());
   std::filesystem::remove(validatePartPath(mRoot, {1, 2}));
   part({1, 2}, {"c"}, {{"sizes", 2}});
-  EXPECT_NE(collectError().find("is a part of another sweep"), std::string::npos) << collectError();
+  EXPECT_EQ(collectError(), "validate --collect: " + validatePartPath(mRoot, {1, 2}).string() +
+                                " is a part of another sweep (its /sizes: 2; this one's: 1)");
   std::ofstream(validatePartPath(mRoot, {1, 2})) << "{\"format\": \"prism-validate-part 1\", \"experi";
   EXPECT_NE(collectError().find("not a part of `prism validate --task` (not JSON)"), std::string::npos);
   // A part naming an experiment with no row of it (it reported a report without that experiment,

@@ -109,6 +109,7 @@ void colourXyz(const XyzOptions& o) {
     if (o.rangeNm.size() != 2) throw Error("--range: expected MIN,MAX in nm");
     SamplingSettings settings{o.wavelengthCount, o.rangeNm[0], o.rangeNm[1],
                               fromOption("--strategy", [&] { return samplingStrategyFromName(o.strategy); })};
+    fromOption("--wavelengths", [&] { validateWavelengthCount(settings.count); });
     validate(settings);
     // Lights follows the illuminant, the only light here; Optimised is fitted under it alone, on
     // the standard training set (sRGB's gamut), with a progress bar when not cached.

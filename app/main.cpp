@@ -20,6 +20,7 @@
 #include "app/colour_command_line.h"
 #include "app/merge_command.h"
 #include "app/nebula_command_line.h"
+#include "app/option_error.h"
 #include "app/option_lists.h"
 #include "app/parse_error_hint.h"
 #include "app/prt_commands.h"
@@ -39,6 +40,7 @@
 #include "core/error.h"
 #include "core/parallel_for.h"
 #include "render/setting_keys.h"
+#include "spectral/sampling.h"
 #include "viewer/viewer.h"
 
 namespace {
@@ -440,6 +442,7 @@ int main(int argc, char** argv) {
             throw prism::Error(fmt::format("--wavelengths: {:g} is not a whole number of wavelengths", n));
           if (std::ranges::count(sceneBench.wavelengths, static_cast<int>(n)) > 0)
             throw prism::Error(fmt::format("--wavelengths: {:g} is given twice", n));
+          prism::app::fromOption("--wavelengths", [n] { prism::validateWavelengthCount(static_cast<int>(n)); });
           sceneBench.wavelengths.push_back(static_cast<int>(n));
         }
       } else if (sceneBench.settings.sampling.strategy == prism::SamplingStrategy::Optimised) {

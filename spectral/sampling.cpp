@@ -38,10 +38,13 @@ std::string_view samplingStrategyName(SamplingStrategy strategy) {
   return "?";
 }
 
+void validateWavelengthCount(int count) {
+  if (count < 4 || count > 1000 || count % 4 != 0)
+    throw Error("wavelength count must be a multiple of 4 within 4–1000, got " + std::to_string(count));
+}
+
 void validate(const SamplingSettings& s) {
-  if (s.count < 4 || s.count > 1000 || s.count % 4 != 0)
-    throw Error("wavelength count must be a multiple of 4 within 4–1000, got " +
-                std::to_string(s.count));
+  validateWavelengthCount(s.count);
   if (!(s.minNm >= kLambdaMinNm && s.maxNm <= kLambdaMaxNm && s.minNm < s.maxNm)) {
     std::ostringstream range;  // as given: 500, not 500.000000
     range << s.minNm << "–" << s.maxNm;

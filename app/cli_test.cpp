@@ -181,6 +181,7 @@ TEST(Cli, ConvertSrgbToRec2020) {
   EXPECT_TRUE(inGamut("--from acescg --to aces2065-1 2,2,2"));
   EXPECT_FALSE(inGamut("--from acescg --to srgb --linear 2,2,2"));
   EXPECT_FALSE(inGamut("--from xyz --to srgb 0.950470,1.01,1.088827"));
+  EXPECT_FALSE(inGamut("--from xyz --to srgb 0,0,0.0009"));  // dark, and no colour at all: Z alone
   // Into ACEScg (white near D60): adapted, D65's white is ACEScg's; with none, as `chart` takes it,
   // it stays D65's (bluer than D60: more B than R), and the XYZ is the same.
   Result adapted = run("colour convert --from srgb --to acescg --linear 1,1,1 --json");

@@ -258,12 +258,13 @@ void colourConvert(const ConvertOptions& o) {
   Eigen::Vector3d value = to && !o.linear ? mirrored(linear, [to](const Eigen::Vector3d& x) { return to->encode(x); }) : linear;
   // Out of gamut: a component below 0, outside the primaries' triangle, and for a display space (a
   // transfer curve: srgb, display-p3, rec2020) one above 1 too, past what it shows; scene-linear
-  // ACES takes any light. Within 1e-3 of the value's scale, a tenth of a per cent: D65's white as
-  // the CIE tables integrate it (x, y 0.31272, 0.32903, not sRGB's 0.3127, 0.3290) read linear
-  // 1.00016 in sRGB, said out of gamut.
-  const double tolerance = 1e-3 * std::max(1.0, linear.cwiseAbs().maxCoeff());
-  const bool inGamut = !to || ((linear.array() >= -tolerance).all() &&
-                               (to->transfer == Transfer::Linear || (linear.array() <= 1.0 + tolerance).all()));
+  // ACES takes any light. Within a tenth of a per cent, of the colour's own scale below 0 (a hue
+  // does not depend on how bright it is) and of 1 above: D65's white as the CIE tables integrate
+  // it (x, y 0.31272, 0.32903, not sRGB's 0.3127, 0.3290) read linear 1.00016 in sRGB, said out
+  // of gamut.
+  constexpr double kTolerance = 1e-3;
+  const bool inGamut = !to || ((linear.array() >= -kTolerance * linear.cwiseAbs().maxCoeff()).all() &&
+                               (to->transfer == Transfer::Linear || (linear.array() <= 1.0 + kTolerance).all()));
   if (o.json) {
     fmt::print("{}\n", json{{"from", o.from}, {"to", o.to}, {"linear", toJson(linear)},
                             {"value", toJson(value)}, {"inGamut", inGamut}}

@@ -54,9 +54,9 @@ void requireThree(const std::vector<double>& v, const std::string& what) {
 // A camera's values are normalised to its G of the light's white: under a light it does not see
 // (led:830:1, past its curves) every value was NaN, printed with exit 0.
 void requireCameraSees(const Observer& camera, const Spectrum& light, const std::string& lightName) {
-  if (camera.isCamera && !((light * camera.curves[1]).integral() > 0.0))
-    throw Error(fmt::format("--illuminant: {} does not see {} (its G of the light is 0): no white to normalise to",
-                            camera.name, lightName));
+  if (camera.isCamera && !cameraSees(camera, light))
+    throw Error(fmt::format("--illuminant: {} does not see {} (its G of the light is below 1e-6 of D65's, for the "
+                            "same luminance): no white to normalise to", camera.name, lightName));
 }
 
 }  // namespace

@@ -34,7 +34,7 @@ Eigen::Matrix3d cameraToXyz(const Observer& camera, const Spectrum* lightOrNull)
   auto fitted = [&](const Spectrum& s) {
     return Eigen::Matrix3d(fitCameraToXyz(camera, s, cie).cameraToXyz * (greenOverY(d65) / greenOverY(s)));
   };
-  if (cie.integrate(light).y() > 0.0 && camera.integrate(light).y() > 0.0)
+  if (cameraSees(camera, light))
     if (const Eigen::Matrix3d m = fitted(light); m.allFinite()) return m;
   return fitted(d65);
 }

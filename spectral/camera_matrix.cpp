@@ -6,8 +6,16 @@
 
 #include "spectral/colour_checker.h"
 #include "spectral/colour_difference.h"
+#include "spectral/illuminant.h"
 
 namespace prism {
+
+bool cameraSees(const Observer& camera, const Spectrum& light) {
+  const Observer& cie = cie1931Observer();
+  const Spectrum& d65 = illuminant("D65");
+  const double y = cie.integrate(light).y();
+  return y > 0.0 && camera.integrate(light).y() / y >= 1e-6 * camera.integrate(d65).y() / cie.integrate(d65).y();
+}
 
 CameraMatrixFit fitCameraToXyz(const Observer& camera, const Spectrum& illuminant,
                                const Observer& target) {

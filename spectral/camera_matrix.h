@@ -23,6 +23,12 @@ struct CameraMatrixFit {
 // LED lamp, led-globe-a19, 0.0026; a 20 nm LED, led:450:20, 5e-5).
 inline constexpr double kIllPosedCameraFit = 1e-3;
 
+// Whether the camera sees the light, so that its frames have a white to normalise to and a chart
+// to fit: its G of the light over CIE 1931 Y of it at least 1e-6 of the same for D65. Under
+// led:790:5, past the D850's curves (they end at 720 nm), G was 1e-89: taken as seen, the fit
+// scaled by 1e84; led:790:2 underflowed to 0 and was refused.
+bool cameraSees(const Observer& camera, const Spectrum& light);
+
 CameraMatrixFit fitCameraToXyz(const Observer& camera, const Spectrum& illuminant,
                                const Observer& target);
 

@@ -36,6 +36,14 @@ TEST(CameraMatrix, RealCamerasFitTheChartClosely) {
   }
 }
 
+// A camera sees what its curves reach: not an LED past them, though a tail of it (1e-86 of its peak
+// at 720 nm, where the D850's curves end) made its G 1e-89 rather than 0.
+TEST(CameraMatrix, ACameraSeesWhatItsCurvesReach) {
+  const Observer& d850 = observer("nikon_d850");
+  for (const char* light : {"D65", "A", "led:450:20", "led:700:10"}) EXPECT_TRUE(cameraSees(d850, illuminant(light))) << light;
+  for (const char* light : {"led:790:5", "led:830:1"}) EXPECT_FALSE(cameraSees(d850, illuminant(light))) << light;
+}
+
 // Under a narrow LED the chart's camera colours nearly share one direction: the fit says so.
 TEST(CameraMatrix, ANarrowLightMakesTheFitIllPosed) {
   for (const char* light : {"led:450:20", "led:790:5"}) {

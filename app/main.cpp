@@ -39,6 +39,7 @@
 #include "harness/validate.h"
 #include "core/error.h"
 #include "core/parallel_for.h"
+#include "core/task_split.h"
 #include "render/setting_keys.h"
 #include "spectral/sampling.h"
 #include "viewer/viewer.h"
@@ -300,7 +301,7 @@ int main(int argc, char** argv) {
                           ->excludes("--task");
   validateCmd->add_option("--tasks", val.tasks, "with --collect: only the parts of a split into N tasks (task-*-of-N.json)")
       ->needs(collectFlag)
-      ->check(CLI::Range(1, 1 << 20));
+      ->check(CLI::Range(1, prism::kMaxTasks));
   std::string validateOnly;
   auto* validateOnlyOpt = validateCmd->add_option(
       "--only", validateOnly, "only these experiments (names as in results.json, e.g. spheres_d65,reef_5m)");

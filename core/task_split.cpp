@@ -25,8 +25,8 @@ bool parseWhole(std::string_view text, long long max, int& value) {
 TaskIndex parseTaskIndex(std::string_view text, std::string_view option) {
   const std::size_t slash = text.find('/');
   TaskIndex task;
-  if (slash == std::string_view::npos || !parseWhole(text.substr(0, slash), 999'999, task.index) ||
-      !parseWhole(text.substr(slash + 1), 1'000'000, task.count) || task.count < 1 || task.index >= task.count) {
+  if (slash == std::string_view::npos || !parseWhole(text.substr(0, slash), kMaxTasks - 1, task.index) ||
+      !parseWhole(text.substr(slash + 1), kMaxTasks, task.count) || task.count < 1 || task.index >= task.count) {
     throw Error(std::string(option) + ": expected I/N with 0 ≤ I < N (task I of N), got \"" + excerpt(text) + "\"");
   }
   return task;

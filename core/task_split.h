@@ -10,6 +10,9 @@
 
 namespace prism {
 
+// The most tasks a piece of work is split into.
+inline constexpr int kMaxTasks = 1'000'000;
+
 struct TaskIndex {
   int index = 0;  // 0 ≤ index < count
   int count = 1;

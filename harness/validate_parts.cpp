@@ -1,7 +1,6 @@
 #include "harness/validate_parts.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <map>
 #include <set>
 
@@ -18,15 +17,21 @@ namespace {
 
 constexpr const char* kFormat = "prism-validate-part 1";
 
-// N of a part's file name, task-I-of-N.json (validatePartPath); 0 for another name.
+}  // namespace
+
+namespace {
+
+// N of a part's file name, task-I-of-N.json as validatePartPath writes it; 0 for another name.
 int splitOf(const std::filesystem::path& file) {
-  int index = 0, count = 0;
-  char end = 0;
   const std::string name = file.filename().string();
-  if (std::sscanf(name.c_str(), "task-%d-of-%d.jso%c", &index, &count, &end) == 3 && end == 'n' &&
-      name == fmt::format("task-{}-of-{}.json", index, count))
-    return count;
-  return 0;
+  const std::size_t of = name.find("-of-");
+  if (!name.starts_with("task-") || !name.ends_with(".json") || of == std::string::npos) return 0;
+  try {
+    const TaskIndex task = parseTaskIndex(name.substr(5, of - 5) + "/" + name.substr(of + 4, name.size() - 5 - (of + 4)), "");
+    return validatePartPath({}, task).filename() == name ? task.count : 0;
+  } catch (const Error&) {
+    return 0;
+  }
 }
 
 }  // namespace
@@ -109,7 +114,8 @@ nlohmann::json collectValidateParts(const std::filesystem::path& dir, const nloh
     if (part.identity != identity) {
       // Where they differ first: the two whole identities, cut at 120 characters, showed the same
       // beginning and hid it (--quick's sizes against a full run's).
-      const nlohmann::json::json_pointer where(nlohmann::json::diff(part.identity, identity).front()["path"].get<std::string>());
+      nlohmann::json::json_pointer where(nlohmann::json::diff(part.identity, identity).front()["path"].get<std::string>());
+      if (!where.empty() && where.back() == "-") where = where.parent_pointer();  // an array's end: the array
       auto at = [&where](const nlohmann::json& j) { return j.contains(where) ? excerpt(j.at(where).dump(), 120) : "none"; };
       throw Error(fmt::format("validate --collect: {} is a part of another sweep (its {}: {}; this one's: {})",
                               file.string(), where.empty() ? "identity" : where.to_string(), at(part.identity),

@@ -53,9 +53,7 @@ SkyStrategy referenceStrategy(double stepNm) {
 }
 
 SkyStrategy uniformStrategy(int count) {
-  if (count < 4 || count % 4 != 0 || count > 1000) {
-    throw Error(fmt::format("uniform wavelength count {} must be a multiple of 4 within 4..1000", count));
-  }
+  validateWavelengthCount(count);
   std::vector<double> lambdas, weights;
   double h = double(kLambdaMaxNm - kLambdaMinNm) / count;
   for (int i = 0; i < count; ++i) {

@@ -77,7 +77,7 @@ void addColourCommands(CLI::App& app) {
   convCmd->add_option("--from", o->conv.from, "srgb, display-p3, rec2020, acescg, aces2065-1, xyz")->required();
   convCmd->add_option("--to", o->conv.to, "same choices as --from")->required();
   convCmd->add_option("values", o->convText, "r,g,b (encoded unless --linear) or X,Y,Z")->required();
-  auto* adaptationOpt = convCmd->add_option("--adaptation", o->conv.adaptation, "bradford, cat02, von-kries or none: between two RGB spaces' whites (XYZ has none: a conversion to or from xyz adapts nothing)")->capture_default_str();
+  convCmd->add_option("--adaptation", o->conv.adaptation, "bradford (the default), cat02, von-kries or none: between two RGB spaces' whites (XYZ has none: refused with xyz, which it would not adapt)");
   convCmd->add_flag("--linear", o->conv.linear, "values are linear, not transfer-encoded");
   convCmd->add_flag("--json", o->conv.json, "JSON output");
 
@@ -133,11 +133,7 @@ void addColourCommands(CLI::App& app) {
     colourDeltaE(o->de);
   });
   cctCmd->callback([o] { colourCct(o->cct); });
-  convCmd->callback([o, adaptationOpt] {
-    // Refused as --seed is under a strategy that draws nothing: it was taken and did nothing.
-    if (adaptationOpt->count() > 0 && (o->conv.from == "xyz" || o->conv.to == "xyz"))
-      throw Error("--adaptation: a conversion to or from xyz adapts nothing (XYZ carries no white); give it between "
-                  "two RGB spaces");
+  convCmd->callback([o] {
     o->conv.values = parseNumbers(o->convText, "colour convert");
     colourConvert(o->conv);
   });

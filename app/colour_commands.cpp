@@ -220,13 +220,14 @@ void colourConvert(const ConvertOptions& o) {
   requireThree(o.values, "colour convert");
   Eigen::Vector3d in(o.values[0], o.values[1], o.values[2]);
   // "none", as `chart` takes it: the same XYZ in the other space, its white left as it was.
+  const std::string adaptationName = o.adaptation.value_or("bradford");
   std::optional<Adaptation> adaptation;
-  if (o.adaptation != "none") {
+  if (adaptationName != "none") {
     try {
-      adaptation = adaptationFromName(o.adaptation);
+      adaptation = adaptationFromName(adaptationName);
     } catch (const Error&) {
       throw Error(fmt::format("--adaptation: unknown chromatic adaptation '{}' (known: bradford, cat02, von-kries, none)",
-                              o.adaptation));
+                              adaptationName));
     }
   }
   // xyz or an RGB space; an unknown name's error lists xyz too, which colourSpace's cannot know.
@@ -240,6 +241,10 @@ void colourConvert(const ConvertOptions& o) {
   };
   const RgbColourSpace* from = space(o.from, "--from");
   const RgbColourSpace* to = space(o.to, "--to");
+  // Refused as --seed is under a strategy that draws nothing: it was taken and did nothing.
+  if (o.adaptation && !(from && to))
+    throw Error("--adaptation: a conversion to or from xyz adapts nothing (XYZ carries no white); give it between "
+                "two RGB spaces");
   // XYZ carries no white: adaptation happens only between two RGB spaces' whites.
   Eigen::Matrix3d m = Eigen::Matrix3d::Identity();
   if (from && to) m = adaptation ? rgbToRgb(*from, *to, *adaptation) : Eigen::Matrix3d(to->xyzToRgb * from->rgbToXyz);

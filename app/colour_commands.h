@@ -46,7 +46,7 @@ struct ConvertOptions {
   std::string from = "srgb";
   std::string to = "srgb";
   std::vector<double> values;
-  std::string adaptation = "bradford";
+  std::optional<std::string> adaptation;  // unset: bradford between two RGB spaces; given with xyz, refused
   bool linear = false;
   bool json = false;
 };

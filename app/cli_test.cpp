@@ -1075,6 +1075,7 @@ TEST(Cli, ColourMetamerMatchesUnderD65AndNotUnderA) {
   Result loose = run("colour metamer --reflectance Dark_Skin --under D65,A,F2 --json");
   ASSERT_EQ(loose.exitCode, 0) << loose.err;
   EXPECT_EQ(nlohmann::json::parse(loose.out)["metamer_5nm"], nlohmann::json::parse(r.out)["metamer_5nm"]);
+  EXPECT_EQ(run("colour metamer --reflectance neutral_5 --json").exitCode, 0);  // 'neutral 5 (.70 D)'
   ASSERT_EQ(r.exitCode, 0) << r.err;
   auto json = nlohmann::json::parse(r.out);
   EXPECT_LE(json["delta_e2000"]["D65"].get<double>(), 0.5);

@@ -341,7 +341,8 @@ Spectrum patchOrFileReflectance(const std::string& text, const std::string& opti
   };
   std::vector<std::string> names;
   for (const ColourCheckerPatch& p : colourChecker()) {
-    if (loose(p.name) == loose(text)) return p.reflectance;
+    const std::string name = loose(p.name);  // 'white 9.5 (.05 D)' also as white_9.5
+    if (name == loose(text) || name.substr(0, name.find(" (")) == loose(text)) return p.reflectance;
     names.push_back(p.name);
   }
   throw Error(fmt::format("{}: '{}' is neither a ColorChecker patch name nor a file (patches: {})", option, text,

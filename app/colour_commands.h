@@ -72,7 +72,9 @@ struct MetamerOptions {
   bool json = false;
 };
 void colourMetamer(const MetamerOptions& options);
-// A ColorChecker patch by name, else a spectral CSV (Error naming `option` when neither).
+// A ColorChecker patch by name, else a spectral CSV, else a patch by its name as a user types it
+// (any case, '_' or '-' for spaces, a grey's density left out: Dark_Skin, white_9.5); Error naming
+// `option` and listing the patches when none.
 Spectrum patchOrFileReflectance(const std::string& text, const std::string& option);
 
 // The ColorChecker's 24 patches as a spectral texture (docs/spectral-texture.md): 6 × 4 cells of

@@ -100,6 +100,11 @@ echo "== 3. validate --quick --only (two experiments) as 2 tasks, then --collect
 V=(validate --quick --only spheres_d65,nebula_natural)
 "$prism" "${V[@]}" -o "$T/validated" >"$T/validated.log" 2>&1 || { tail -n 5 "$T/validated.log"; fail "prism ${V[*]} failed"; }
 "$prism" cluster script "${V[@]}" --tasks 2 -o "$T/validate" >"$T/validate.sh"
+# A part an earlier sweep into the same folder left, split otherwise: the collect job takes its own
+# split's (it failed on an experiment in both).
+mkdir -p "$T/validate/parts"
+printf '{"format": "prism-validate-part 1", "identity": {}, "experiments": ["spheres_d65"], "results": []}\n' \
+  >"$T/validate/parts/task-0-of-3.json"
 submit "$T/validate.sh"
 expect_completed "$finish" "validate --collect after 2 tasks"
 for file in results.json index.html; do

@@ -41,6 +41,15 @@ class Exr : public ::testing::Test {
     std::filesystem::create_directories(mRoot / name);
     return mRoot / name;
   }
+  // The Error reading `path` gives ("read" when it reads).
+  static std::string readError(const std::filesystem::path& path) {
+    try {
+      readExr(path);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "read";
+  }
 
   std::filesystem::path mRoot;
 };
@@ -126,12 +135,7 @@ TEST_F(Exr, ACamerasRgbCarriesItsCameraAndMatrix) {
   for (const auto& [file, message] :
        {std::pair{"string.exr", ": prism:cameraToXyz is of type string, not m33d"},
         std::pair{"half_said.exr", ": prism:camera without prism:cameraToXyz (a string and an m33d, written together)"}}) {
-    try {
-      readExr(dir / file);
-      ADD_FAILURE() << file << " was read";
-    } catch (const Error& e) {
-      EXPECT_EQ(std::string(e.what()), (dir / file).string() + message);
-    }
+    EXPECT_EQ(readError(dir / file), (dir / file).string() + message);
   }
 }
 
@@ -166,12 +170,7 @@ TEST_F(Exr, ACameraNamedOnOtherValuesOrWithoutAFiniteMatrixIsRefused) {
   for (const auto& [file, message] :
        {std::pair{"linear.exr", ": prism:camera on linear-srgb values, which are no camera's"},
         std::pair{"infinite.exr", ": prism:cameraToXyz: holds a value that is not finite"}}) {
-    try {
-      readExr(dir / file);
-      ADD_FAILURE() << file << " was read";
-    } catch (const Error& e) {
-      EXPECT_EQ(std::string(e.what()), (dir / file).string() + message);
-    }
+    EXPECT_EQ(readError(dir / file), (dir / file).string() + message);
   }
 }
 

@@ -17,10 +17,6 @@ namespace {
 
 constexpr const char* kFormat = "prism-validate-part 1";
 
-}  // namespace
-
-namespace {
-
 // N of a part's file name, task-I-of-N.json as validatePartPath writes it; 0 for another name.
 int splitOf(const std::filesystem::path& file) {
   const std::string name = file.filename().string();

@@ -188,9 +188,9 @@ void printValidateClusterScript(const ClusterOptions& o) {
 void printLutClusterScript(const ClusterOptions& o) {
   const LutOptions& l = o.lut;
   const std::string gamut = colourSpace(l.gamut).name;
-  requireBuildableResolution(l.resolution);
+  fromOption("--res", [&] { requireBuildableResolution(l.resolution); });
   if (o.tasks > tableColumns(l.resolution)) {
-    throw Error(fmt::format("--tasks {}: a {}³ table has {} columns, at most {} tasks", o.tasks, l.resolution,
+    throw Error(fmt::format("--tasks {}: the {}³ table has {} columns, at most {} tasks", o.tasks, l.resolution,
                             tableColumns(l.resolution), tableColumns(l.resolution)));
   }
   if (l.output.empty()) throw Error("lut: give the output file with -o");

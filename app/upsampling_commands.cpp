@@ -47,11 +47,10 @@ void printError(const char* what, const UpsamplingError& e) {
 // Task I of N's columns of the table, as a part for `prism merge`.
 void runLutPart(const LutOptions& o, const std::string& gamut) {
   if (o.report || o.json) throw Error("--report, --json: measure the merged table (prism lut --part writes a part)");
-  requireBuildableResolution(o.resolution);
   const TaskIndex task = parseTaskIndex(o.part, "--part");
   const int columns = tableColumns(o.resolution);
   if (task.count > columns) {
-    throw Error(fmt::format("--part {}: a {}³ table has {} columns, at most {} tasks", o.part, o.resolution, columns,
+    throw Error(fmt::format("--part {}: the {}³ table has {} columns, at most {} tasks", o.part, o.resolution, columns,
                             columns));
   }
   const IndexRange share = shareOf(task, columns);
@@ -79,6 +78,7 @@ void runLutPart(const LutOptions& o, const std::string& gamut) {
 
 void runLut(const LutOptions& o) {
   const std::string gamut = fromOption("--gamut", [&] { return colourSpace(o.gamut).name; });  // before any work
+  fromOption("--res", [&] { requireBuildableResolution(o.resolution); });
   if (o.output.empty()) throw Error("lut: give the output file with -o");
   refuseImageExtension(o.output, "-o", o.part.empty() ? "upsampling table" : "part of an upsampling table");
   if (!o.part.empty()) {
@@ -131,6 +131,7 @@ void runUpsample(const UpsampleOptions& o) {
   if (o.intent == "unbounded" && path != "manual")
     throw Error("--path " + path + ": the unbounded intent looks its scaled albedo up the manual way only");
   const std::string gamut = fromOption("--gamut", [&] { return colourSpace(o.gamut.value_or("srgb")).name; });
+  if (o.resolution) fromOption("--res", [&] { requireBuildableResolution(*o.resolution); });
   glm::vec3 rgb(static_cast<float>(o.rgb[0]), static_cast<float>(o.rgb[1]), static_cast<float>(o.rgb[2]));
   glm::vec3 coeffs(0.0f);
   float scale = 1.0f;

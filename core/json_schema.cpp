@@ -187,9 +187,16 @@ std::string Range::text() const {
 Node::Node(const nlohmann::json& value, std::string pointer, const Document& document)
     : mValue(&value), mPointer(std::move(pointer)), mDocument(&document) {}
 
+bool Document::isSetOnCommandLine(const std::string& pointer) const {
+  for (const std::string& set : setOnCommandLine)
+    if (pointer == set || (pointer.starts_with(set) && pointer[set.size()] == '/')) return true;
+  return false;
+}
+
 void Node::fail(const std::string& what) const {
   // A pointer quotes the document's keys, which may be megabytes long.
-  throw Error(mDocument->name + ": " + (mPointer.empty() ? "/" : excerpt(mPointer, 160)) + ": " + what);
+  throw Error(mDocument->name + ": " + (mPointer.empty() ? "/" : excerpt(mPointer, 160)) +
+              (mDocument->isSetOnCommandLine(mPointer) ? " (set on the command line)" : "") + ": " + what);
 }
 
 void Node::expectObject(std::initializer_list<std::string_view> allowed) const {
@@ -202,10 +209,7 @@ void Node::expectObject(const std::vector<std::string_view>& allowed) const {
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     std::string list;
     for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-    Node at(value, mPointer + "/" + pointerToken(key), *mDocument);
-    bool fromOverride = mDocument->addedByOverride.count(at.pointer()) > 0;
-    at.fail(std::string("unknown key") + (fromOverride ? " (set on the command line)" : "") +
-            " (allowed: " + list + ")");
+    Node(value, mPointer + "/" + pointerToken(key), *mDocument).fail("unknown key (allowed: " + list + ")");
   }
 }
 

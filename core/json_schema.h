@@ -44,8 +44,10 @@ nlohmann::json parseJson(std::string_view text, const std::string& name);
 // The document errors are reported against.
 struct Document {
   std::string name;  // shown first in every message: the file as the user named it
-  // Pointers of the keys that command-line overrides added (their messages say so).
-  std::set<std::string> addedByOverride;
+  // Pointers of the values command-line overrides set (`--set`): a message about one of them, or
+  // about anything inside one, says so, lest the user search the file for a value it lacks.
+  std::set<std::string> setOnCommandLine;
+  bool isSetOnCommandLine(const std::string& pointer) const;
 };
 
 // Allowed ranges of a number; the message names them ("> 0", "in [0, 1]", "in (0, 90)").
@@ -86,7 +88,8 @@ class Node {
   const nlohmann::json& json() const { return *mValue; }
   const std::string& pointer() const { return mPointer; }
   const Document& document() const { return *mDocument; }
-  // Throws Error("<document>: <pointer>: <what>").
+  // Throws Error("<document>: <pointer>: <what>"), "<pointer> (set on the command line)" where an
+  // override set it.
   [[noreturn]] void fail(const std::string& what) const;
 
   // Objects. `expectObject` checks the type and that every key is one of `allowed`.

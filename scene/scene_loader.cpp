@@ -483,7 +483,7 @@ void applyOverride(json& root, const std::string& set, schema::Document& documen
           failAt(child, "no such key (here: " + (keys.empty() ? std::string("none") : joined(keys)) + ")");
         }
         (*at)[step] = value;
-        document.addedByOverride.insert(child);
+        document.setOnCommandLine.insert(child);
         return;
       }
       at = &(*at)[step];
@@ -499,6 +499,7 @@ void applyOverride(json& root, const std::string& set, schema::Document& documen
     }
   }
   *at = value;
+  document.setOnCommandLine.insert(pointer);
 }
 
 }  // namespace

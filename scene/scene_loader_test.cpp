@@ -143,9 +143,9 @@ TEST(SceneLoader, OverridesApplyBeforeValidation) {
 TEST(SceneLoader, AnEmptyNameIsSaidOnceAtItsKey) {
   fs::path f = kFixtures / "basic.json";
   EXPECT_EQ(errorOf([&] { loadScene(f, {"colour_space=\"\""}); }),
-            f.string() + ": /colour_space: expected a non-empty string, got \"\"");
+            f.string() + ": /colour_space (set on the command line): expected a non-empty string, got \"\"");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"materials.gold.conductor=\"\""}); }),
-            f.string() + ": /materials/gold/conductor: expected a non-empty string, got \"\"");
+            f.string() + ": /materials/gold/conductor (set on the command line): expected a non-empty string, got \"\"");
 }
 
 TEST(SceneLoader, OverrideOfAnUnknownPathFails) {
@@ -155,14 +155,15 @@ TEST(SceneLoader, OverrideOfAnUnknownPathFails) {
   EXPECT_EQ(errorOf([&] { loadScene(f, {"materials.blue.roughness=0.3"}); }),
             f.string() + ": /materials/blue: --set materials.blue.roughness=0.3: no such key "
                          "(here: gold, grey_srgb, paint, red, tiled)");
-  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"camera.evv100=2"}); }), f.string() + ": /camera/evv100: unknown key (set on the command line) (allowed: "));
+  EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"camera.evv100=2"}); }), f.string() + ": /camera/evv100 (set on the command line): unknown key (allowed: "));
   EXPECT_EQ(errorOf([&] { loadScene(f, {"camera.ev100.x=2"}); }),
             f.string() + ": /camera/ev100: --set camera.ev100.x=2: cannot look up 'x' in 12");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"camera"}); }),
             f.string() + ": /: --set camera: expected PATH=VALUE, e.g. camera.ev100=2");
-  // A value that is valid JSON but the wrong type is caught by validation.
+  // A value that is valid JSON but the wrong type is caught by validation, and the message says
+  // where it came from: the file has no "bright" to find.
   EXPECT_EQ(errorOf([&] { loadScene(f, {"lights.0.intensity=bright"}); }),
-            f.string() + ": /lights/0/intensity: expected a number in (0, 1e+12], got \"bright\"");
+            f.string() + ": /lights/0/intensity (set on the command line): expected a number in (0, 1e+12], got \"bright\"");
 }
 
 TEST_F(SceneFolder, MalformedJsonReportsLineAndColumn) {
@@ -229,16 +230,16 @@ TEST_F(SceneFolder, NumbersBeyondFloatsReachAndDeepNestingAreRefused) {
             f.string() + ": /lights/0/position/1: expected a number in [-1e+12, 1e+12], got 1e+39");
   f = sceneWithLight("");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"camera.position=[1e39, 0, 0]"}); }),
-            f.string() + ": /camera/position/0: expected a number in [-1e+12, 1e+12], got 1e+39");
+            f.string() + ": /camera/position/0 (set on the command line): expected a number in [-1e+12, 1e+12], got 1e+39");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"camera.fov_deg=1e-30"}); }),
-            f.string() + ": /camera/fov_deg: expected a number in [0.001, 180), got 1e-30");
+            f.string() + ": /camera/fov_deg (set on the command line): expected a number in [0.001, 180), got 1e-30");
   // A near plane so close that depth cannot place surfaces (far 200 / 1e-5: the image went black).
   EXPECT_EQ(errorOf([&] { loadScene(f, {"camera.near=1e-5"}); }),
-            f.string() + ": /camera/near: far / near = 2e+07 is past 200000, where depth loses the precision lighting "
+            f.string() + ": /camera/near (set on the command line): far / near = 2e+07 is past 200000, where depth loses the precision lighting "
                          "needs: raise near or lower far");
   EXPECT_NO_THROW(loadScene(f, {"camera.near=0.001"}));  // 200 000
   EXPECT_EQ(errorOf([&] { loadScene(f, {"background={\"colour\": [1, 1, 1], \"luminance\": 1e39}"}); }),
-            f.string() + ": /background/luminance: expected a number in [0, 1e+12], got 1e+39");
+            f.string() + ": /background/luminance (set on the command line): expected a number in [0, 1e+12], got 1e+39");
 
   // 100 000 nested arrays: refused at the 64th level, naming where (at most 80 characters of it).
   std::string deep = std::string(100000, '[') + std::string(100000, ']');

@@ -35,13 +35,13 @@ TEST_F(SceneFolder, WaterIsAJerlovTypeAtADepthWithItsMultipliers) {
   EXPECT_TRUE(w->lampScattering);
   // The command line changes it like any other value.
   EXPECT_EQ(errorOf([&] { loadScene(f, {"water.type=9C", "water.dataset=williamson2022"}); }),
-            f.string() + ": /water/type: unknown water type \"9C\" in the williamson2022 data (known: IB, II, "
+            f.string() + ": /water/type (set on the command line): unknown water type \"9C\" in the williamson2022 data (known: IB, II, "
                          "III, 1C, 3C, 5C)");
   Scene t = loadScene(f, {"water.type=5C", "water.depth=20", "water.dataset=williamson2022"});
   EXPECT_FLOAT_EQ(t.techniques.find<underwater::WaterSection>()->depthM, 20.0f);
   EXPECT_FALSE(loadScene(f, {"water.lamp_scattering=false"}).techniques.find<underwater::WaterSection>()->lampScattering);
   EXPECT_EQ(errorOf([&] { loadScene(f, {"water.lamp_scattering=1"}); }),
-            f.string() + ": /water/lamp_scattering: expected true or false, got 1");
+            f.string() + ": /water/lamp_scattering (set on the command line): expected true or false, got 1");
   // The bench times the lamps' in-scattering only where there are lamps and it is on.
   auto timesUnscattered = [](const TechniqueBench& b) {
     return std::ranges::any_of(b.configs, [](const TechniqueBenchConfig& c) { return c.label == "16 wet, lamps unscattered"; });
@@ -51,12 +51,12 @@ TEST_F(SceneFolder, WaterIsAJerlovTypeAtADepthWithItsMultipliers) {
   EXPECT_FALSE(timesUnscattered(
       loadScene(f, {"water.lamp_scattering=false"}).techniques.find<underwater::WaterSection>()->bench(1)));
   EXPECT_EQ(errorOf([&] { loadScene(f, {"water.type=IV"}); }),
-            f.string() + ": /water/type: unknown water type \"IV\" in the jerlov data (known: I, IA, IB, II, III, "
+            f.string() + ": /water/type (set on the command line): unknown water type \"IV\" in the jerlov data (known: I, IA, IB, II, III, "
                          "1C, 3C, 5C, 7C, 9C)");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"water.depth=-1"}); }),
-            f.string() + ": /water/depth: expected a number in [0, 1e+12], got -1");
+            f.string() + ": /water/depth (set on the command line): expected a number in [0, 1e+12], got -1");
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"water.salinity=35"}); }),
-                         f.string() + ": /water/salinity: unknown key (set on the command line) (allowed: "));
+                         f.string() + ": /water/salinity (set on the command line): unknown key (allowed: "));
 }
 
 TEST_F(SceneFolder, AtmosphereAddsTheSunAsALightAndChecksItsParameters) {
@@ -87,19 +87,19 @@ TEST_F(SceneFolder, AtmosphereAddsTheSunAsALightAndChecksItsParameters) {
   EXPECT_NEAR(s.lights[0].direction.y, -1.0f, 1e-6);
 
   EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.sun.elevation=95"}); }),
-            f.string() + ": /atmosphere/sun/elevation: expected a number in [-90, 90], got 95");
+            f.string() + ": /atmosphere/sun/elevation (set on the command line): expected a number in [-90, 90], got 95");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.mie_g=1"}); }),
-            f.string() + ": /atmosphere/mie_g: expected a number in (-1, 1), got 1");
+            f.string() + ": /atmosphere/mie_g (set on the command line): expected a number in (-1, 1), got 1");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.atmosphere_height=40", "atmosphere.ground_altitude=45000"}); }),
-            f.string() + ": /atmosphere/ground_altitude: 45000 m must be below the top of the atmosphere (40 km)");
+            f.string() + ": /atmosphere/ground_altitude (set on the command line): 45000 m must be below the top of the atmosphere (40 km)");
   // The height must hold the ozone layer and the scale heights, said at the key (it named the
   // ozone layer's parameters, which a scene cannot set, at /atmosphere).
   EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.atmosphere_height=20"}); }),
-            f.string() + ": /atmosphere/atmosphere_height: 20 km is below the ozone layer (peak at 25 km, half-width 15 km): at least 25");
+            f.string() + ": /atmosphere/atmosphere_height (set on the command line): 20 km is below the ozone layer (peak at 25 km, half-width 15 km): at least 25");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"atmosphere.rayleigh_scale_height=80"}); }),
-            f.string() + ": /atmosphere/rayleigh_scale_height: 80 km is above the atmosphere's height (60 km)");
+            f.string() + ": /atmosphere/rayleigh_scale_height (set on the command line): 80 km is above the atmosphere's height (60 km)");
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"atmosphere.humidity=3"}); }),
-                         f.string() + ": /atmosphere/humidity: unknown key (set on the command line) (allowed: "));
+                         f.string() + ": /atmosphere/humidity (set on the command line): unknown key (allowed: "));
   // A radius alone keeps the height of the defaults `a` holds, whatever radius they had (it was
   // their top less Earth's 6360 km: a Mars-sized default would have lost its atmosphere).
   atmosphere::AtmosphereSky mars;
@@ -144,20 +144,20 @@ TEST_F(SceneFolder, PrtObjectsNameTheTechniqueAndItsSectionIsChecked) {
   EXPECT_EQ(defaults->mode, prt::PrtMode::Spectral);
 
   EXPECT_EQ(errorOf([&] { loadScene(f, {"prt.basis=17"}); }),
-            f.string() + ": /prt/basis: expected an integer in [1, 16], got 17");
+            f.string() + ": /prt/basis (set on the command line): expected an integer in [1, 16], got 17");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"prt.mode=rgb"}); }),
-            f.string() + ": /prt/mode: expected \"spectral\", \"rgb-prt\" or \"reference-5nm\", got \"rgb\"");
+            f.string() + ": /prt/mode (set on the command line): expected \"spectral\", \"rgb-prt\" or \"reference-5nm\", got \"rgb\"");
   EXPECT_EQ(errorOf([&] { loadScene(f, {"prt.environment.shape=dome"}); }),
-            f.string() + ": /prt/environment/shape: expected \"sky\" or \"uniform\", got \"dome\"");
+            f.string() + ": /prt/environment/shape (set on the command line): expected \"sky\" or \"uniform\", got \"dome\"");
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment.illuminant=F99"}); }),
-                         f.string() + ": /prt/environment/illuminant: "));
+                         f.string() + ": /prt/environment/illuminant (set on the command line): "));
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment.map=sky.exr"}); }),
                          f.string() + ": /prt/environment/illuminant: give one of a map, an atmosphere, or an illuminant and shape"));
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment={\"map\": \"missing.exr\"}"}); }),
-                         f.string() + ": /prt/environment/map: "));
+                         f.string() + ": /prt/environment/map (set on the command line): "));
   write("bad.exr", "not an exr");
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(f, {"prt.environment={\"map\": \"bad.exr\"}"}); }),
-                         f.string() + ": /prt/environment/map: "));
+                         f.string() + ": /prt/environment/map (set on the command line): "));
   // An object naming a technique the scene lacks, or one that does not shade objects.
   fs::path orphan = write("orphan.json", R"({"camera": {"position": [0, 1, 5], "target": [0, 1, 0]},
     "materials": {"m": {}}, "water": {},
@@ -165,9 +165,9 @@ TEST_F(SceneFolder, PrtObjectsNameTheTechniqueAndItsSectionIsChecked) {
   EXPECT_EQ(errorOf([&] { loadScene(orphan); }),
             orphan.string() + ": /objects/0/technique: the scene has no 'prt' section to shade this object");
   EXPECT_EQ(errorOf([&] { loadScene(orphan, {"objects.0.technique=water"}); }),
-            orphan.string() + ": /objects/0/technique: 'water' does not shade objects");
+            orphan.string() + ": /objects/0/technique (set on the command line): 'water' does not shade objects");
   EXPECT_TRUE(startsWith(errorOf([&] { loadScene(orphan, {"objects.0.technique=PRT"}); }),
-                         orphan.string() + ": /objects/0/technique: 'PRT' is no technique (known: "));
+                         orphan.string() + ": /objects/0/technique (set on the command line): 'PRT' is no technique (known: "));
 }
 
 // The viewer's PRT panel switches the spectral sky's sun disc: the sun is the scene's light, so

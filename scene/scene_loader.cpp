@@ -324,6 +324,15 @@ class SceneParser {
         c->fail(e.what());
       }
     }
+    // Lambertian is all of the light diffused: a metal has none to diffuse (the surface came out
+    // black, or darkened by 1 − metallic, with no word).
+    if (m.lambertian) {
+      if (m.metallic > 0.0f) n.child("metallic").fail("a lambertian material diffuses all of the light: metallic must be 0, or drop lambertian");
+      for (const char* other : {"conductor", "metallic_roughness_texture"})
+        if (n.has(other))
+          n.child(other).fail(std::string("a lambertian material diffuses all of the light: give ") + other +
+                              " or lambertian, not both");
+    }
     if (auto t = n.optionalChild("base_colour_texture")) m.baseColourTexture = texture(*t, true);
     if (auto t = n.optionalChild("metallic_roughness_texture")) m.metallicRoughnessTexture = texture(*t, false);
     if (auto t = n.optionalChild("normal_texture")) m.normalTexture = texture(*t, false);

@@ -28,6 +28,20 @@ void requireNoOtherKindOfFile(const std::filesystem::path& path) {
     throw Error(path.string() + ": is not a plain file (a device, pipe or socket); Prism writes only plain files");
 }
 
+// Where `path` leads through symbolic links: the file a write must replace. Renamed over, the link
+// itself became a plain file and its target kept the old bytes; `cp` and `>` write the target.
+std::filesystem::path throughLinks(const std::filesystem::path& path) {
+  std::filesystem::path at = path;
+  std::error_code ec;
+  for (int hops = 0; std::filesystem::is_symlink(std::filesystem::symlink_status(at, ec)); ++hops) {
+    if (hops == 40) throw Error(path.string() + ": cannot write: too many levels of symbolic links");
+    const std::filesystem::path target = std::filesystem::read_symlink(at, ec);
+    if (ec) throw Error(path.string() + ": cannot write: " + ec.message());
+    at = target.is_absolute() ? target : at.parent_path() / target;
+  }
+  return at;
+}
+
 // Error "PATH: cannot write: …" unless the nearest existing folder at or above `start` is a folder
 // in which a file can be created (a probe, removed again).
 void requireCreatableFrom(const std::filesystem::path& path, std::filesystem::path start) {
@@ -68,10 +82,11 @@ void removeStaleTemporaries(const std::filesystem::path& path) {
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
   requireNoOtherKindOfFile(path);
+  const std::filesystem::path file = throughLinks(path);
   std::error_code ec;
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
   if (ec) throw Error(path.string() + ": cannot create folder: " + ec.message());
-  std::filesystem::path temp = path;
+  std::filesystem::path temp = file;
   temp += ".tmp" + std::to_string(::getpid());
   std::FILE* f = std::fopen(temp.c_str(), "wb");
   if (!f) throw Error(path.string() + ": cannot write: " + std::strerror(errno));
@@ -79,19 +94,19 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
   ok = (std::fflush(f) == 0) && ok;
   ok = (::fsync(::fileno(f)) == 0) && ok;
   ok = (std::fclose(f) == 0) && ok;
-  if (ok) std::filesystem::rename(temp, path, ec);
+  if (ok) std::filesystem::rename(temp, file, ec);
   if (!ok || ec) {
     std::string why = ec ? ec.message() : std::strerror(errno);
     std::filesystem::remove(temp, ec);
     throw Error(path.string() + ": cannot write: " + why);
   }
-  removeStaleTemporaries(path);
+  removeStaleTemporaries(file);
 }
 
 void requireWritable(const std::filesystem::path& path) {
   requireNoOtherKindOfFile(path);
   std::error_code ec;
-  requireCreatableFrom(path, std::filesystem::absolute(path, ec).parent_path());
+  requireCreatableFrom(path, std::filesystem::absolute(throughLinks(path), ec).parent_path());
 }
 
 void requireWritableFolder(const std::filesystem::path& folder) {

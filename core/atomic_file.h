@@ -7,7 +7,8 @@
 
 namespace prism {
 
-// Creates missing parent folders. Error naming the path when anything fails, when a folder,
+// Through a symbolic link, the link's target is written and the link kept. Creates missing parent
+// folders. Error naming the path when anything fails, when a folder,
 // device, pipe or socket is there (never replaced), or when the path has no file name (empty, or
 // ending in a separator); the temporary file is removed then. A write that succeeds removes the
 // temporaries of earlier writes of the path killed before their rename, an hour old or more.

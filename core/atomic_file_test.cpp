@@ -36,6 +36,30 @@ TEST(AtomicFile, WritesReplacesAndLeavesNoTemporary) {
   EXPECT_EQ(files, 1);
 }
 
+// An output named through a symbolic link writes the link's target, as `cp` and `>` do: the rename
+// replaced the link with a plain file and left its target's old bytes (a dangling link's target
+// is made).
+TEST(AtomicFile, ThroughASymbolicLinkItsTargetIsWrittenAndTheLinkKept) {
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "atomic_link";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "shared");
+  writeFileAtomically(dir / "shared" / "result.txt", "old");
+  std::filesystem::create_symlink("shared/result.txt", dir / "link.txt");
+  std::filesystem::create_symlink("link.txt", dir / "link_to_link.txt");
+  writeFileAtomically(dir / "link_to_link.txt", "new");
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.txt"));
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "link_to_link.txt"));
+  EXPECT_EQ(slurp(dir / "shared" / "result.txt"), "new");
+  std::filesystem::create_symlink(dir / "shared" / "later.txt", dir / "dangling.txt");
+  writeFileAtomically(dir / "dangling.txt", "made");
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "dangling.txt"));
+  EXPECT_EQ(slurp(dir / "shared" / "later.txt"), "made");
+  std::filesystem::create_symlink("loop_b.txt", dir / "loop_a.txt");
+  std::filesystem::create_symlink("loop_a.txt", dir / "loop_b.txt");
+  EXPECT_EQ(errorOf([&] { writeFileAtomically(dir / "loop_a.txt", "x"); }),
+            (dir / "loop_a.txt").string() + ": cannot write: too many levels of symbolic links");
+}
+
 // A write killed between its temporary and the rename (SIGKILL) left "NAME.tmpPID" for good: a
 // later write of the name removes those an hour old, never a fresh one (a live writer's, maybe on
 // another machine of a cluster) or another file's.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/camera_option.h"
+#include "app/parse_error_hint.h"
 #include "app/settings_command.h"
 #include "render/setting_keys.h"
 
@@ -50,6 +51,10 @@ class CliSettings {
                                 ? command->add_flag("--" + key.name + "{on}", text, help + " (--" + key.name + " is on)")
                                 : command->add_option("--" + key.name, text, help)->type_name(settingTypeName(key.type));
       option->default_str(key.print(defaults));
+      // A number written otherwise is a malformed command line (exit 2), as for every other
+      // number option: "--width 0x40" was bad input, exit 1, where "--frames 0x20" was exit 2.
+      if (key.type == render::SettingType::Integer) option->check(decimalWholeNumber());
+      if (key.type == render::SettingType::Number) option->check(decimalNumber(true));
       mOptions.emplace_back(key.name, option);
     }
     CLI::Option* camera = command->add_option("--camera", mCamera, "a camera as the observer (raw camera RGB, fitted matrix for display)")

@@ -54,19 +54,23 @@ std::string_view unsigned_(const std::string& text) {
 
 }  // namespace
 
-void requireDecimalNumbers(CLI::App& app, const std::function<bool(const CLI::Option*)>& parsedByPrism) {
-  const CLI::Validator decimal(
-      [](std::string& text) -> std::string {
+CLI::Validator decimalNumber(bool numberLike) {
+  return CLI::Validator(
+      [numberLike](std::string& text) -> std::string {
         const std::string_view digits = unsigned_(text);
+        if (numberLike && !digits.empty() && std::string_view("0123456789.-").find(digits.front()) == std::string_view::npos)
+          return "";  // a word: the option's own to take or refuse
         double value = 0.0;
         const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-        // inf and nan pass to the option's own range, which names what it takes.
         if (!digits.empty() && ec == std::errc() && end == digits.data() + digits.size()) return "";
         return fmt::format("'{}' is not a decimal number (such as 6500, -2.5 or 1e-3)", text);
       },
       "");
-  // Whole numbers in base 10: CLI11 read "0x40" as 64 and "0b11" as 3 (its range errors still apply).
-  const CLI::Validator whole(
+}
+
+// Whole numbers in base 10: CLI11 read "0x40" as 64 and "0b11" as 3 (its range errors still apply).
+CLI::Validator decimalWholeNumber() {
+  return CLI::Validator(
       [](std::string& text) -> std::string {
         const std::string_view digits = unsigned_(text);
         long long value = 0;
@@ -75,6 +79,11 @@ void requireDecimalNumbers(CLI::App& app, const std::function<bool(const CLI::Op
         return fmt::format("'{}' is not a whole number written out in decimal (such as 1000)", text);
       },
       "");
+}
+
+void requireDecimalNumbers(CLI::App& app, const std::function<bool(const CLI::Option*)>& parsedByPrism) {
+  const CLI::Validator decimal = decimalNumber();
+  const CLI::Validator whole = decimalWholeNumber();
   for (CLI::Option* option : app.get_options()) {
     if (parsedByPrism(option)) continue;
     const std::string type = option->get_type_name();

@@ -23,6 +23,13 @@ std::string subcommandHint(const CLI::App& app);
 // does not say (a whole number written out, within its type's range); otherwise nothing.
 std::string conversionHint(const CLI::App& app, const std::string& message);
 
+// CLI11 checks that a text is a number written in decimal ("6500", "-2.5", "1e-3"; inf and nan
+// pass, to the option's own range, which names what it takes), or a whole number so written.
+// numberLike: only text that starts as a number does ("0x5"), a word being the option's own to
+// refuse or take (--ev scene).
+CLI::Validator decimalNumber(bool numberLike = false);
+CLI::Validator decimalWholeNumber();
+
 // Gives every number option and positional of `app` and its subcommands (those added so far) a
 // check that its text is a number written in decimal ("6500", "-2.5", "1e-3"; whole numbers for
 // integers): CLI11 read "0x1964" and "0x1.964p12" as 6500, "0b11" as 3 and "" as 0, where every

@@ -100,20 +100,21 @@ reference::ReferenceSettings referenceSettings(const ReferenceOptions& o) {
   s.width = o.width;
   s.height = o.height;
   s.samplesPerPixel = o.samplesPerPixel;
-  s.transport = reference::lightTransportFromName(o.transport);
+  s.transport = fromOption("--transport", [&] { return reference::lightTransportFromName(o.transport); });
   if (o.maxDepth) {
     if (s.transport != reference::LightTransport::Global)
       throw Error(fmt::format("--max-depth {}: only with --transport global (direct light ends each path at its first "
                               "surface)", *o.maxDepth));
     s.maxDepth = *o.maxDepth;
   }
-  s.filter = reference::pixelFilterFromName(o.filter);
+  s.filter = fromOption("--filter", [&] { return reference::pixelFilterFromName(o.filter); });
   s.observer = o.camera.empty() ? o.observer : o.camera;
   if (!o.camera.empty()) cameraOption(o.camera);
   if (!o.range.empty()) {
     if (o.range.size() != 2) throw Error("--range: expected MIN,MAX in nm");
     s.wavelengths.minNm = o.range[0];
     s.wavelengths.maxNm = o.range[1];
+    fromOption("--range", [&] { validateWavelengthRange(o.range[0], o.range[1]); });
   }
   s.wavelengths.strategy = samplingStrategyFromName(o.strategy);
   s.seed = o.seed;

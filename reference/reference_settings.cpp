@@ -21,7 +21,7 @@ PixelFilter pixelFilterFromName(std::string_view name) {
 
 void validate(const ReferenceSettings& s) {
   if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384) {
-    throw Error(fmt::format("image size must be 1–16384 on each side, got {}x{}", s.width, s.height));
+    throw Error(fmt::format("--width {} --height {}: each side of the image must be within 1–16384", s.width, s.height));
   }
   if (s.samplesPerPixel < 1 || s.samplesPerPixel > (1 << 20)) {
     throw Error(fmt::format("--spp must be within 1–1048576, got {}", s.samplesPerPixel));

@@ -135,6 +135,11 @@ SettingKey rangeKey() {
     } catch (const Error&) {
       fail(k, v);
     }
+    try {  // here, where the key is known: the frame's check said no option
+      validateWavelengthRange(s.sampling.minNm, s.sampling.maxNm);
+    } catch (const Error& e) {
+      throw Error(k.name + ": " + e.what());
+    }
   };
   k.print = [](const FrameSettings& s) { return fmt::format("{},{}", s.sampling.minNm, s.sampling.maxNm); };
   return k;

@@ -43,13 +43,17 @@ void validateWavelengthCount(int count) {
     throw Error("wavelength count must be a multiple of 4 within 4–1000, got " + std::to_string(count));
 }
 
-void validate(const SamplingSettings& s) {
-  validateWavelengthCount(s.count);
-  if (!(s.minNm >= kLambdaMinNm && s.maxNm <= kLambdaMaxNm && s.minNm < s.maxNm)) {
+void validateWavelengthRange(double minNm, double maxNm) {
+  if (!(minNm >= kLambdaMinNm && maxNm <= kLambdaMaxNm && minNm < maxNm)) {
     std::ostringstream range;  // as given: 500, not 500.000000
-    range << s.minNm << "–" << s.maxNm;
+    range << minNm << "–" << maxNm;
     throw Error("wavelength range must lie within 360–830 nm with min < max, got " + range.str() + " nm");
   }
+}
+
+void validate(const SamplingSettings& s) {
+  validateWavelengthCount(s.count);
+  validateWavelengthRange(s.minNm, s.maxNm);
   if (s.strategy == SamplingStrategy::Optimised && s.count > kMaxFittedWavelengths)
     throw Error("the optimised strategy fits 4–" + std::to_string(kMaxFittedWavelengths) + " wavelengths, got " +
                 std::to_string(s.count) + " (uniform, rotated or lights take more)");

@@ -75,8 +75,10 @@ inline bool holdsWholeNanometres(double minNm, double maxNm, int count) {
 // Error naming the setting when count or range is invalid (Optimised: count ≤ kMaxFittedWavelengths
 // and a range that holdsWholeNanometres).
 void validate(const SamplingSettings& settings);
-// Its first check alone, for a command line to say with its option: a multiple of 4 within 4–1000.
+// Its first two checks alone, for a command line to say with its option: a multiple of 4 within
+// 4–1000; a range within 360–830 nm with min < max.
 void validateWavelengthCount(int count);
+void validateWavelengthRange(double minNm, double maxNm);
 
 // The batches for one pixel and frame (seed unused by Uniform). `importance` is the observer
 // whose response Importance follows. Not for Lights or Optimised, which need the lights (Error):

@@ -472,7 +472,7 @@ int main(int argc, char** argv) {
     else if (dynamic_cast<const CLI::RequiredError*>(&e) && std::string_view(e.what()) == "A subcommand is required")
       fmt::print(stderr, "prism: error: {}{}\n", e.what(), prism::app::subcommandHint(app));
     else if (dynamic_cast<const CLI::ExtrasError*>(&e))
-      fmt::print(stderr, "prism: error: {}{}\n", e.what(), prism::app::switchValueHint(argc, argv, rest));
+      fmt::print(stderr, "prism: error: {}\n", prism::app::unexpectedArgumentsMessage(app, argc, argv, rest));
     else if (dynamic_cast<const CLI::ConversionError*>(&e))
       fmt::print(stderr, "prism: error: {}{}\n", e.what(), prism::app::conversionHint(app, e.what()));
     else

@@ -11,9 +11,11 @@
 
 namespace prism::app {
 
-// For a word CLI11 did not expect: when it is on or off right after a switch (`--gizmos on`),
-// the hint that a switch takes its value after '='; otherwise nothing.
-std::string switchValueHint(int argc, char** argv, const std::vector<std::string>& extras);
+// For the words CLI11 did not expect, the whole message: an option the command does not have
+// named with the nearest it has ("unknown option --widht for prism render (did you mean
+// --width?)"); on or off right after a switch (`--gizmos on`) with the hint that a switch takes
+// its value after '='; other words in the order they were given (CLI11 listed "64 --widht").
+std::string unexpectedArgumentsMessage(const CLI::App& app, int argc, char** argv, const std::vector<std::string>& extras);
 
 // For "A subcommand is required": the subcommands of the deepest command given, which CLI11's
 // message does not name ("prism atmosphere" takes evaluate or optimise).

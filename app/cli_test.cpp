@@ -230,6 +230,33 @@ TEST(Cli, ColourCommandsTakeALampFromASpectrumFile) {
   expectOneLineError("colour xyz --illuminant " + dark.string(), dark.string() + ": the lamp has no luminous power");
 }
 
+// A scene lit by a lamp of one's own is balanced to that lamp's file as to a named one (only
+// names were taken); a name off by letter case is refused with the spelling it most likely meant.
+TEST(Cli, RenderBalancesTheWhiteOfALampFile) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "white_balance_file";
+  const std::filesystem::path lamp = dir / "daylight_5000.csv";
+  ASSERT_EQ(run("colour cct 5000 --step 1 -o " + lamp.string()).exitCode, 0);
+  const std::string render = "render " + std::string(PRISM_SCENES_DIR) + "/spheres_d65.json --width 32 --height 18 ";
+  auto balanced = [&](const std::string& wb, const std::string& name) {
+    Result r = run(render + "--white-balance " + wb + " -o " + (dir / name).string());
+    EXPECT_EQ(r.exitCode, 0) << wb << ": " << r.err;
+    return prism::imaging::readPng8(dir / name);
+  };
+  const prism::imaging::PngImage byName = balanced("daylight:5000", "by_name.png");
+  const prism::imaging::PngImage byFile = balanced(lamp.string(), "by_file.png");
+  const prism::imaging::PngImage unbalanced = balanced("none", "none.png");
+  int worst = 0, moved = 0;
+  for (std::size_t i = 0; i < byName.rgba().size(); ++i) {
+    worst = std::max(worst, std::abs(int(byName.rgba()[i]) - int(byFile.rgba()[i])));
+    moved = std::max(moved, std::abs(int(byName.rgba()[i]) - int(unbalanced.rgba()[i])));
+  }
+  EXPECT_LE(worst, 1);
+  EXPECT_GT(moved, 10);  // the balance did something
+  expectOneLineError(render + "-o x.png --white-balance d65", "white-balance: unknown illuminant 'd65' (did you mean 'D65'?)");
+  expectOneLineError(render + "-o x.png --white-balance blackbody:100",
+                     "white-balance: blackbody: temperature must be within 500–1000000 K, got 100");
+}
+
 TEST(Cli, CameraMatrixAndLists) {
   Result r = run("colour camera-matrix --camera nikon_d850 --json");
   ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -51,7 +51,7 @@ DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tr
     // a camera its raw white through the matrix fitted under that illuminant — the image's own
     // matrix when it is the scene's light, so that the light's grey shows exactly neutral. (The
     // image's matrix for another white: fitted under a narrow LED it gave D65 a negative Y.)
-    const Spectrum& wb = illuminant(settings.whiteBalance);
+    const Spectrum wb = lampSpectrum(settings.whiteBalance);
     Eigen::Vector3d white = tristimulusObserver.integrate(wb);
     if (tristimulusObserver.isCamera) white = cameraToXyz(tristimulusObserver, &wb) * white;
     inputs.whiteBalanceXyz = white / white.y();

@@ -74,7 +74,7 @@ void validateEv100(float ev100) {
 }
 
 void validate(const DisplaySettings& settings) {
-  if (settings.whiteBalance != "none") illuminant(settings.whiteBalance);  // Error when unknown
+  if (settings.whiteBalance != "none") lampSpectrum(settings.whiteBalance);  // Error when unknown
   if (settings.ev100) validateEv100(*settings.ev100);
   if (settings.colourSpace != "srgb" && settings.colourSpace != "display-p3" &&
       settings.colourSpace != "p3" && settings.colourSpace != "rec2020") {

@@ -102,8 +102,8 @@ SettingKey nameKey(std::string name, std::string help, std::string example, std:
   k.parse = [k, check, field](FrameSettings& s, std::string_view v) {
     try {
       check(v);
-    } catch (const Error&) {
-      fail(k, v);
+    } catch (const Error& e) {  // its own words: "blackbody: temperature must be within …", "did you mean 'D65'?"
+      throw Error(fmt::format("{}: {}", k.name, e.what()));
     }
     field(s) = std::string(v);
   };
@@ -202,9 +202,9 @@ std::vector<SettingKey> makeKeys() {
                            [](S s) -> bool& { return s.lightGizmos; }));
   keys.push_back(exposureKey());
   keys.push_back(nameKey("white-balance", "adapt this illuminant's white to the display white", "A",
-                         "none or an illuminant (see `prism colour list illuminants`)",
+                         "none, an illuminant (see `prism colour list illuminants`) or a lamp's .csv",
                          [](std::string_view n) {
-                           if (n != "none") illuminant(n);
+                           if (n != "none") lampSpectrum(std::string(n));
                          },
                          [](S s) -> std::string& { return s.display.whiteBalance; }));
   keys.push_back(choiceKey<Adaptation>("adaptation", "the white balance's chromatic adaptation", "cat02",

@@ -7,6 +7,7 @@
 #include "core/data_files.h"
 #include "core/error.h"
 #include "core/file_extension.h"
+#include "core/name_case.h"
 
 namespace prism {
 namespace {
@@ -116,7 +117,10 @@ Spectrum illuminant(std::string_view name) {
       throw Error("illuminant '" + excerpt(name) + "': expected led:<peak nm>:<width nm>");
     return narrowbandLed(parameter(name, led.substr(0, colon)), parameter(name, led.substr(colon + 1)));
   }
-  throw Error("unknown illuminant '" + excerpt(name) + "' (see `prism colour list illuminants`)");
+  std::vector<std::string> names;
+  for (const IlluminantInfo& info : listIlluminants()) names.push_back(info.name);
+  throw Error("unknown illuminant '" + excerpt(name) + "'" + caseHint(name, names) +
+              " (see `prism colour list illuminants`)");
 }
 
 std::vector<IlluminantInfo> listIlluminants() {

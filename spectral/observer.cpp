@@ -6,6 +6,7 @@
 #include "spectral/spectrum_csv.h"
 #include "core/data_files.h"
 #include "core/error.h"
+#include "core/name_case.h"
 #include "shared_cpp.h"
 #include "spectral/illuminant.h"
 
@@ -79,7 +80,10 @@ const Observer& observer(std::string_view name) {
   if (name == "cie1931") return r.cie1931;
   if (name == "cie1964") return r.cie1964;
   if (auto it = r.cameras.find(name); it != r.cameras.end()) return it->second;
-  throw Error("unknown observer '" + std::string(name) + "' (see `prism colour list observers`)");
+  std::vector<std::string> names{"cie1931", "cie1964"};
+  for (const auto& [camera, curves] : r.cameras) names.push_back(camera);
+  throw Error("unknown observer '" + std::string(name) + "'" + caseHint(name, names) +
+              " (see `prism colour list observers`)");
 }
 
 const Observer& cie1931Observer() { return registry().cie1931; }

@@ -42,8 +42,8 @@ TEST(ViewerSettings, BadValuesAreOneLineNamingTheKeyAndWhatItExpects) {
   EXPECT_EQ(message("mode", "sepia"), "mode: expected rgb, naive, jakob-hanika, reference or optimised4, got \"sepia\"");
   EXPECT_EQ(message("gizmos", "yes"), "gizmos: expected on or off, got \"yes\"");
   EXPECT_EQ(message("shadow-map-size", "8"), "shadow-map-size: expected a whole number within 16–8192, got \"8\"");
-  EXPECT_EQ(message("observer", "cie1932"),
-            "observer: expected cie1931, cie1964 or a camera (see `prism colour list cameras`), got \"cie1932\"");
+  EXPECT_EQ(message("observer", "cie1932"), "observer: unknown observer 'cie1932' (see `prism colour list observers`)");
+  EXPECT_EQ(message("white-balance", "f11"), "white-balance: unknown illuminant 'f11' (did you mean 'F11'?) (see `prism colour list illuminants`)");
   EXPECT_EQ(render::frameSettingValues(s), render::frameSettingValues(render::FrameSettings{})) << "nothing changed";
 }
 

@@ -206,6 +206,20 @@ void checkPngBeforeDecoding(const std::string& name, std::span<const std::uint8_
   }
 }
 
+std::string stbDecodeFailure() {
+  const char* reason = stbi_failure_reason();
+  if (!reason) return "stb gave no reason";
+  const std::string_view r(reason);
+  // stb's reason may quote the file's bytes (an unknown chunk's type).
+  if (r == "outofdata" || r == "no IDAT" || r == "bad EOF") return "its data ends early (truncated; stb: " + excerpt(reason) + ")";
+  if (r.starts_with("bad huffman") || r.starts_with("bad zlib") || r.starts_with("bad codelengths") || r.starts_with("bad dist") ||
+      r.starts_with("read past buffer") || r == "not enough pixels" || r == "Corrupt PNG")
+    return "a damaged compressed stream (stb: " + excerpt(reason) + ")";
+  // A chunk type stb does not know, or part of one where the file ends inside it ("IDA").
+  if (r.ends_with("PNG chunk not known") || r.size() < 4) return "a damaged or truncated chunk (stb: " + excerpt(reason) + ")";
+  return "stb: " + excerpt(reason);
+}
+
 PngImage readPng8(const std::filesystem::path& path) {
   const std::string bytes = readImageFileBytes(path);
   checkPngBeforeDecoding(path.string(), {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
@@ -213,7 +227,7 @@ PngImage readPng8(const std::filesystem::path& path) {
   stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                                           static_cast<int>(bytes.size()), &width, &height, &fileChannels, 4);
   // stb's reason may quote the file's bytes (an unknown chunk's type).
-  if (!pixels) throw Error(path.string() + ": not a readable image: " + excerpt(stbi_failure_reason()));
+  if (!pixels) throw Error(path.string() + ": cannot decode the PNG: " + stbDecodeFailure());
   const std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> owned(pixels, &stbi_image_free);
   PngImage image;
   image.mColourSpace = cicpColourSpace(path, {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});

@@ -83,4 +83,12 @@ void checkPngBeforeDecoding(const std::string& name, std::span<const std::uint8_
 // decoder, which would allocate its 17 GB of RGBA before anything looked at its size.
 void checkJpegBeforeDecoding(const std::string& name, std::span<const std::uint8_t> bytes);
 
+// Why stb_image's last decode on this thread failed, in words: "its data ends early (truncated)"
+// for stb's "outofdata", "a damaged compressed stream (stb: bad huffman code)" for zlib's
+// errors, "a damaged or truncated chunk" for a chunk type it does not know (or the few letters
+// of one where the file ends), "stb: REASON" otherwise. Every decode goes through stb, tinygltf's too, whose own
+// message ("Unknown image format. STB cannot decode image data for image[0] name = \"\"") named a
+// PNG's truncation as an unknown format.
+std::string stbDecodeFailure();
+
 }  // namespace prism::imaging

@@ -58,6 +58,12 @@ void checkSizeBeforeDecoding(std::span<const std::uint8_t> bytes, const std::str
   if (kind == ImageKind::Jpeg) imaging::checkJpegBeforeDecoding(name.empty() ? "the JPEG" : name, bytes);
 }
 
+// After stb failed on a PNG or JPEG: which, and why in words.
+std::string undecodable(std::span<const std::uint8_t> bytes) {
+  return std::string("cannot decode the ") + (sniffImage(bytes) == ImageKind::Jpeg ? "JPEG" : "PNG") + ": " +
+         imaging::stbDecodeFailure();
+}
+
 std::string oneLine(std::string text) {
   while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
   for (char& c : text)
@@ -134,7 +140,10 @@ bool guardedImageLoader(tinygltf::Image* image, const int index, std::string* er
     if (err) *err += why;
     return false;
   }
-  return tinygltf::LoadImageData(image, index, err, warn, width, height, bytes, size, nullptr);
+  if (tinygltf::LoadImageData(image, index, err, warn, width, height, bytes, size, nullptr)) return true;
+  guard->imageIndex = index;
+  guard->imageError = undecodable(file);
+  return false;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -370,6 +379,10 @@ std::string_view glbJson(const std::vector<unsigned char>& bytes, const std::str
   };
   if (bytes.size() < 20) throw Error(name + ": truncated binary glTF (" + std::to_string(bytes.size()) + " bytes)");
   if (u32(4) != 2) throw Error(name + ": binary glTF version " + std::to_string(u32(4)) + ", expected 2");
+  // The header's length is the file's: tinygltf said only "Invalid glTF binary." of a cut file.
+  if (u32(8) != bytes.size())
+    throw Error(name + ": " + (u32(8) > bytes.size() ? "truncated: " : "") + "its header says " + std::to_string(u32(8)) +
+                " bytes, the file has " + std::to_string(bytes.size()));
   std::uint32_t length = u32(12);
   if (u32(16) != 0x4E4F534Au || 20 + static_cast<std::size_t>(length) > bytes.size())
     throw Error(name + ": binary glTF without a valid JSON chunk");
@@ -409,7 +422,7 @@ Image decodeImage(std::span<const std::uint8_t> bytes, bool srgb, std::string so
   tinygltf::Image decoded;
   std::string err, warn;
   if (!tinygltf::LoadImageData(&decoded, 0, &err, &warn, 0, 0, bytes.data(), static_cast<int>(bytes.size()), nullptr))
-    throw Error("cannot decode the image (" + oneLine(err) + ")");
+    throw Error(undecodable(bytes));
   return toImage(decoded, srgb, std::move(source));
 }
 

@@ -26,7 +26,8 @@ namespace {
 constexpr const char* kPartKind = "reference 1";
 constexpr const char* kCameraToXyz = "prism:cameraToXyz";
 
-// The colour channels' names and meaning, as `prism reference` writes a whole image.
+// A part's colour channels (its own layout, read by merge alone: a whole image stores XYZ in R, G,
+// B, imaging/exr_file.h).
 bool isCamera(const std::string& observerName) { return observer(observerName).isCamera; }
 std::vector<std::string> colourNames(const std::string& observerName) {
   return isCamera(observerName) ? std::vector<std::string>{"R", "G", "B"} : std::vector<std::string>{"X", "Y", "Z"};

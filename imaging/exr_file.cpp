@@ -54,13 +54,13 @@ bool sameChromaticities(const Imf::Chromaticities& a, const Imf::Chromaticities&
   return near(a.red, b.red) && near(a.green, b.green) && near(a.blue, b.blue) && near(a.white, b.white);
 }
 
-std::vector<std::string> channelNamesToWrite(const FloatImage& image, const ExrWriteOptions& options) {
+// R, G, B (+ A) whatever they hold, "Y" alone: CIE XYZ too, OpenEXR's convention ("Technical
+// Introduction", "CIE XYZ Color": X, Y, Z in R, G, B with xyzChromaticities), which other tools
+// read as colour. Prism wrote channels X, Y, Z beside those chromaticities, which apply to R, G, B:
+// a tool took the lone Y for luminance and dropped X and Z. (Such files are still read.)
+std::vector<std::string> channelNamesToWrite(const FloatImage& image) {
   if (image.channels == 1) return {"Y"};
-  bool xyz = options.names == ExrChannelNames::Xyz ||
-             (options.names == ExrChannelNames::FromColour &&
-              (options.colour == ColourMeaning::Xyz || options.colour == ColourMeaning::Xyz1964));
-  std::vector<std::string> names =
-      xyz ? std::vector<std::string>{"X", "Y", "Z"} : std::vector<std::string>{"R", "G", "B"};
+  std::vector<std::string> names{"R", "G", "B"};
   if (image.channels == 4) names.push_back("A");
   return names;
 }
@@ -126,13 +126,15 @@ void writeExr(const std::filesystem::path& path, const FloatImage& image, const 
   Imf::Header header(image.width, image.height);
   header.compression() = Imf::ZIP_COMPRESSION;
   Imf::PixelType fileType = half ? Imf::HALF : Imf::FLOAT;
-  std::vector<std::string> names = channelNamesToWrite(image, options);
+  std::vector<std::string> names = channelNamesToWrite(image);
   for (const std::string& name : names) header.channels().insert(name, Imf::Channel(fileType));
   if (image.channels != 1) {
     header.insert(kColourAttribute, Imf::StringAttribute(std::string(colourMeaningName(options.colour))));
     // Imf::Chromaticities() is Rec. 709 primaries with D65, i.e. linear sRGB.
     if (options.colour == ColourMeaning::LinearSrgb) Imf::addChromaticities(header, Imf::Chromaticities());
-    if (options.colour == ColourMeaning::Xyz) Imf::addChromaticities(header, xyzChromaticities());
+    // CIE 1964's X₁₀Y₁₀Z₁₀ too: the nearest a tool that knows only 1931's xy can take them for.
+    if (options.colour == ColourMeaning::Xyz || options.colour == ColourMeaning::Xyz1964)
+      Imf::addChromaticities(header, xyzChromaticities());
   }
   if (options.displayWhite) {
     header.insert(kDisplayWhiteAttribute, Imf::FloatAttribute(static_cast<float>(*options.displayWhite)));

@@ -19,12 +19,6 @@ enum class ExrPrecision {
   Half,   // 16-bit: relative precision 2⁻¹¹, |values| ≤ 65504 (larger is an Error, not an ∞)
 };
 
-enum class ExrChannelNames {
-  FromColour,  // X, Y, Z for ColourMeaning::Xyz, R, G, B otherwise
-  Rgb,         // R, G, B (+ A)
-  Xyz,         // X, Y, Z (+ A)
-};
-
 // "prism:displayWhite" (float): the luminance, in the image's units (cd/m² for Prism's renders),
 // that the exposure maps to display white. Comparisons read it as the white of CIELAB.
 inline constexpr const char* kDisplayWhiteAttribute = "prism:displayWhite";
@@ -44,7 +38,6 @@ struct ExrCamera {
 struct ExrWriteOptions {
   ColourMeaning colour = ColourMeaning::LinearSrgb;
   ExrPrecision precision = ExrPrecision::Float;
-  ExrChannelNames names = ExrChannelNames::FromColour;  // a 1-channel image is always "Y"
   std::optional<double> displayWhite = std::nullopt;  // written as kDisplayWhiteAttribute when set
   std::optional<ExrCamera> camera = std::nullopt;     // with ColourMeaning::CameraRgb only
 };

@@ -3,8 +3,10 @@
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfInputFile.h>
 #include <ImfMatrixAttribute.h>
 #include <ImfOutputFile.h>
+#include <ImfStandardAttributes.h>
 #include <ImfStringAttribute.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -180,13 +182,38 @@ TEST_F(Exr, ChannelNamesAndMeaningsRoundTrip) {
   for (ColourMeaning colour :
        {ColourMeaning::LinearSrgb, ColourMeaning::Xyz, ColourMeaning::Xyz1964, ColourMeaning::CameraRgb}) {
     std::filesystem::path p = dir / (std::string(colourMeaningName(colour)) + ".exr");
-    writeExr(p, image, {.colour = colour, .names = ExrChannelNames::Rgb});
+    writeExr(p, image, {.colour = colour});
     EXPECT_EQ(readExr(p).colour, colour) << colourMeaningName(colour);
+    // In R, G, B whatever they hold, as OpenEXR has CIE XYZ stored (with XYZ's chromaticities):
+    // channels named X, Y, Z were read by other tools as a luminance Y, X and Z dropped.
+    const Imf::InputFile file(p.c_str());
+    EXPECT_NE(file.header().channels().findChannel("R"), nullptr) << colourMeaningName(colour);
+    EXPECT_EQ(file.header().channels().findChannel("X"), nullptr) << colourMeaningName(colour);
+    if (colour == ColourMeaning::Xyz || colour == ColourMeaning::Xyz1964) {
+      ASSERT_TRUE(Imf::hasChromaticities(file.header()));
+      EXPECT_EQ(Imf::chromaticities(file.header()).red, Imath::V2f(1.0f, 0.0f));
+      EXPECT_EQ(Imf::chromaticities(file.header()).blue, Imath::V2f(0.0f, 0.0f));
+    }
   }
-  // CIE 1964's tristimulus is named X, Y, Z like 1931's and told apart by its meaning; each
-  // observer's images say which they hold (a 1964 render was written as "xyz").
-  writeExr(dir / "xyz10.exr", image, {.colour = ColourMeaning::Xyz1964});
-  EXPECT_EQ(readExr(dir / "xyz10.exr").colour, ColourMeaning::Xyz1964);
+  // Prism's older renders, channels X, Y, Z and no attribute, are still read as CIE XYZ.
+  {
+    Imf::Header header(1, 1);
+    float pixel[3] = {0.2f, 0.5f, 0.7f};
+    Imf::FrameBuffer frame;
+    for (int c = 0; c < 3; ++c) {
+      const char* name = c == 0 ? "X" : c == 1 ? "Y" : "Z";
+      header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+      frame.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(&pixel[c]), sizeof(float), sizeof(float)));
+    }
+    Imf::OutputFile file((dir / "old_xyz.exr").c_str(), header);
+    file.setFrameBuffer(frame);
+    file.writePixels(1);
+  }
+  const ExrImage old = readExr(dir / "old_xyz.exr");
+  EXPECT_EQ(old.colour, ColourMeaning::Xyz);
+  EXPECT_EQ(old.image.pixels, (std::vector<float>{0.2f, 0.5f, 0.7f}));
+  // CIE 1964's tristimulus is stored like 1931's and told apart by its meaning; each observer's
+  // images say which they hold (a 1964 render was written as "xyz").
   EXPECT_EQ(tristimulusMeaning(observer("cie1931")), ColourMeaning::Xyz);
   EXPECT_EQ(tristimulusMeaning(observer("cie1964")), ColourMeaning::Xyz1964);
   EXPECT_EQ(tristimulusMeaning(observer("nikon_d850")), ColourMeaning::CameraRgb);

@@ -77,6 +77,8 @@ std::string unexpectedArgumentsMessage(const CLI::App& app, int argc, char** arg
     if (!word.starts_with("--") || word.size() == 2) continue;
     const std::string option = word.substr(0, word.find('='));
     const std::string nearest = nearestOption(*command, option);
+    // Its own option, given before the command's name (`prism --width 64 render …`).
+    if (nearest == option) return fmt::format("{} is an option of {}: give it after `{}`", option, name, command->get_name());
     return fmt::format("unknown option {} for {} ({})", option, name,
                        nearest.empty() ? fmt::format("see {} --help", name) : fmt::format("did you mean {}?", nearest));
   }
@@ -112,7 +114,6 @@ std::string conversionHint(const CLI::App& app, const std::string& message) {
   if (type == "UINT") return fmt::format(" ({} takes a whole number from 0 to 4294967295, written out)", name);
   return "";
 }
-
 
 CLI::Validator decimalNumber(bool numberLike) {
   return CLI::Validator(

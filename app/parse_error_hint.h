@@ -1,6 +1,7 @@
 // What prism adds to CLI11's parsing, whose own words leave the user guessing: the subcommands a
-// command takes, how to give a switch its value, what an integer option takes, and decimal
-// numbers only where a number is read.
+// command takes, an unknown option's nearest, how to give a switch its value, what an integer
+// option takes, and decimal numbers only where a number is read (the checks exported for the
+// frame settings' options, which CliSettings adds).
 #pragma once
 
 #include <functional>
@@ -36,7 +37,7 @@ CLI::Validator decimalWholeNumber();
 // check that its text is a number written in decimal ("6500", "-2.5", "1e-3"; whole numbers for
 // integers): CLI11 read "0x1964" and "0x1.964p12" as 6500, "0b11" as 3 and "" as 0, where every
 // other number Prism reads refuses them. Options that `parsedByPrism` names (text handed to
-// Prism's own parser, such as the frame settings) are left to it.
+// Prism's own parser, such as the frame settings, which CliSettings checks itself) are skipped.
 void requireDecimalNumbers(CLI::App& app, const std::function<bool(const CLI::Option*)>& parsedByPrism);
 
 }  // namespace prism::app

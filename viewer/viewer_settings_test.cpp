@@ -27,6 +27,13 @@ TEST(ViewerSettings, EveryFrameKeyReadsBackWhatItWrote) {
   EXPECT_FLOAT_EQ(*again.display.ev100, 9.5f);
   EXPECT_THROW(render::applyFrameSetting(s, "wavelengths", "many"), Error);
   EXPECT_THROW(render::applyFrameSetting(s, "mode", "sepia"), Error);
+  // A leading '+', which the command line's decimal check lets through, as every other number
+  // option takes it (--width +64 was refused where --frames +64 was read).
+  ASSERT_TRUE(render::applyFrameSetting(again, "width", "+64"));
+  EXPECT_EQ(again.width, 64);
+  ASSERT_TRUE(render::applyFrameSetting(again, "ev", "+2.5"));
+  EXPECT_FLOAT_EQ(*again.display.ev100, 2.5f);
+  EXPECT_THROW(render::applyFrameSetting(again, "width", "+"), Error);
 }
 
 TEST(ViewerSettings, BadValuesAreOneLineNamingTheKeyAndWhatItExpects) {

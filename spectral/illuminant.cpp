@@ -103,9 +103,12 @@ Spectrum illuminant(std::string_view name) {
     return name.substr(0, prefix.size()) == prefix ? name.substr(prefix.size()) : std::string_view{};
   };
   if (std::string_view lamp = suffix("nist:"); !lamp.empty()) {
-    if (!t.nist.contains(lamp))
-      throw Error("unknown illuminant '" + excerpt(name) +
-                  "' (no such lamp in the NIST set; see `prism colour list illuminants`)");
+    if (!t.nist.contains(lamp)) {
+      std::vector<std::string> lamps;
+      for (const std::string& n : t.nist.names()) lamps.push_back("nist:" + n);
+      throw Error("unknown illuminant '" + excerpt(name) + "'" + caseHint(name, lamps) +
+                  " (no such lamp in the NIST set; see `prism colour list illuminants`)");
+    }
     return t.nist.spectrum(lamp, Extrapolation::Zero).toDense();
   }
   if (std::string_view k = suffix("daylight:"); !k.empty()) return daylight(parameter(name, k));

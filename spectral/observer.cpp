@@ -82,7 +82,7 @@ const Observer& observer(std::string_view name) {
   if (auto it = r.cameras.find(name); it != r.cameras.end()) return it->second;
   std::vector<std::string> names{"cie1931", "cie1964"};
   for (const auto& [camera, curves] : r.cameras) names.push_back(camera);
-  throw Error("unknown observer '" + std::string(name) + "'" + caseHint(name, names) +
+  throw Error("unknown observer '" + excerpt(name) + "'" + caseHint(name, names) +
               " (see `prism colour list observers`)");
 }
 

@@ -1,6 +1,6 @@
 // What a scene's numbers read as float (Node::numberF, vec2, vec3) must hold as floats, and what
-// its integers (Node::integer) must hold as ints, said in the error; and where a file that leaves
-// its root is said to go (confinedFile).
+// its integers (Node::integer) must hold as ints, said in the error; where a file that leaves its
+// root is said to go (confinedFile); and which values a message says `--set` put there.
 #include "core/json_schema.h"
 
 #include <gtest/gtest.h>
@@ -39,6 +39,21 @@ std::string integerErrorOf(const nlohmann::json& value, const Range& range) {
     return std::to_string(Node(value, "/x", document).integer(range));
   } catch (const Error& e) {
     return e.what();
+  }
+}
+
+// At the pointer --set named and anywhere inside it; not at a key whose name it only begins.
+TEST(Document, SaysWhatTheCommandLineSet) {
+  Document document{"scene.json", {"/lights/1"}};
+  EXPECT_TRUE(document.isSetOnCommandLine("/lights/1"));
+  EXPECT_TRUE(document.isSetOnCommandLine("/lights/1/intensity"));
+  EXPECT_FALSE(document.isSetOnCommandLine("/lights/10"));
+  EXPECT_FALSE(document.isSetOnCommandLine("/lights"));
+  try {
+    Node(nlohmann::json("bright"), "/lights/1/intensity", document).number();
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "scene.json: /lights/1/intensity (set on the command line): expected a finite number, got \"bright\"");
   }
 }
 

@@ -502,7 +502,7 @@ void applyOverride(json& root, const std::string& set, schema::Document& documen
       if (!digits || step.size() > 9 || std::stoul(step) >= at->size())
         failAt(pointer + "/" + step, "no element " + step + " (the array has " + std::to_string(at->size()) + ")");
       at = &(*at)[std::stoul(step)];
-      pointer += "/" + step;
+      pointer += "/" + std::to_string(std::stoul(step));  // as the loader names it: "01" is /1
     } else {
       failAt(pointer, "cannot look up '" + step + "' in " + schema::describe(*at));
     }

@@ -379,10 +379,11 @@ std::string_view glbJson(const std::vector<unsigned char>& bytes, const std::str
   };
   if (bytes.size() < 20) throw Error(name + ": truncated binary glTF (" + std::to_string(bytes.size()) + " bytes)");
   if (u32(4) != 2) throw Error(name + ": binary glTF version " + std::to_string(u32(4)) + ", expected 2");
-  // The header's length is the file's: tinygltf said only "Invalid glTF binary." of a cut file.
-  if (u32(8) != bytes.size())
-    throw Error(name + ": " + (u32(8) > bytes.size() ? "truncated: " : "") + "its header says " + std::to_string(u32(8)) +
-                " bytes, the file has " + std::to_string(bytes.size()));
+  // A cut file: tinygltf said only "Invalid glTF binary." (bytes past the header's length it
+  // ignores, and so does Prism).
+  if (u32(8) > bytes.size())
+    throw Error(name + ": truncated: its header says " + std::to_string(u32(8)) + " bytes, the file has " +
+                std::to_string(bytes.size()));
   std::uint32_t length = u32(12);
   if (u32(16) != 0x4E4F534Au || 20 + static_cast<std::size_t>(length) > bytes.size())
     throw Error(name + ": binary glTF without a valid JSON chunk");

@@ -42,6 +42,11 @@ std::filesystem::path throughLinks(const std::filesystem::path& path) {
   return at;
 }
 
+// Through a link, the file that failed is named too: "LINK (→ TARGET)".
+std::string shownWithTarget(const std::filesystem::path& path, const std::filesystem::path& file) {
+  return file == path ? path.string() : path.string() + " (→ " + file.string() + ")";
+}
+
 // Error "PATH: cannot write: …" unless the nearest existing folder at or above `start` is a folder
 // in which a file can be created (a probe, removed again).
 void requireCreatableFrom(const std::filesystem::path& path, std::filesystem::path start) {
@@ -83,13 +88,14 @@ void removeStaleTemporaries(const std::filesystem::path& path) {
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
   requireNoOtherKindOfFile(path);
   const std::filesystem::path file = throughLinks(path);
+  const std::string shown = shownWithTarget(path, file);
   std::error_code ec;
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
-  if (ec) throw Error(path.string() + ": cannot create folder: " + ec.message());
+  if (ec) throw Error(shown + ": cannot create folder: " + ec.message());
   std::filesystem::path temp = file;
   temp += ".tmp" + std::to_string(::getpid());
   std::FILE* f = std::fopen(temp.c_str(), "wb");
-  if (!f) throw Error(path.string() + ": cannot write: " + std::strerror(errno));
+  if (!f) throw Error(shown + ": cannot write: " + std::strerror(errno));
   bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
   ok = (std::fflush(f) == 0) && ok;
   ok = (::fsync(::fileno(f)) == 0) && ok;
@@ -98,7 +104,7 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
   if (!ok || ec) {
     std::string why = ec ? ec.message() : std::strerror(errno);
     std::filesystem::remove(temp, ec);
-    throw Error(path.string() + ": cannot write: " + why);
+    throw Error(shown + ": cannot write: " + why);
   }
   removeStaleTemporaries(file);
 }
@@ -106,7 +112,8 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
 void requireWritable(const std::filesystem::path& path) {
   requireNoOtherKindOfFile(path);
   std::error_code ec;
-  requireCreatableFrom(path, std::filesystem::absolute(throughLinks(path), ec).parent_path());
+  const std::filesystem::path file = throughLinks(path);
+  requireCreatableFrom(shownWithTarget(path, file), std::filesystem::absolute(file, ec).parent_path());
 }
 
 void requireWritableFolder(const std::filesystem::path& folder) {

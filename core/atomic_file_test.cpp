@@ -54,6 +54,10 @@ TEST(AtomicFile, ThroughASymbolicLinkItsTargetIsWrittenAndTheLinkKept) {
   writeFileAtomically(dir / "dangling.txt", "made");
   EXPECT_TRUE(std::filesystem::is_symlink(dir / "dangling.txt"));
   EXPECT_EQ(slurp(dir / "shared" / "later.txt"), "made");
+  // A link to where nothing can be written names both.
+  std::filesystem::create_symlink("/proc/prism/nowhere.txt", dir / "nowhere.txt");
+  EXPECT_EQ(errorOf([&] { requireWritable(dir / "nowhere.txt"); }),
+            (dir / "nowhere.txt").string() + " (→ /proc/prism/nowhere.txt): cannot write: No such file or directory");
   std::filesystem::create_symlink("loop_b.txt", dir / "loop_a.txt");
   std::filesystem::create_symlink("loop_a.txt", dir / "loop_b.txt");
   EXPECT_EQ(errorOf([&] { writeFileAtomically(dir / "loop_a.txt", "x"); }),

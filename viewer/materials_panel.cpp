@@ -41,7 +41,9 @@ class MaterialsPanel final : public Panel {
     }
     ImGui::EndDisabled();
     changed |= ImGui::SliderFloat("roughness", &m.roughness, 0.0f, 1.0f);
-    ImGui::BeginDisabled(m.conductor.has_value());
+    // A lambertian material diffuses all of the light: the loader refuses a metal there, and so
+    // does the panel (it rendered black).
+    ImGui::BeginDisabled(m.conductor.has_value() || m.lambertian);
     changed |= ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f);
     ImGui::EndDisabled();
     std::vector<std::string> conductors{"none"};
@@ -51,7 +53,7 @@ class MaterialsPanel final : public Panel {
     const bool onPrt = std::any_of(context.scene.meshes.begin(), context.scene.meshes.end(), [&](const Mesh& mesh) {
       return static_cast<std::size_t>(mesh.material) == mMaterial && mesh.technique == "prt";
     });
-    ImGui::BeginDisabled(onPrt && !m.conductor);
+    ImGui::BeginDisabled((onPrt || m.lambertian) && !m.conductor);
     if (stringCombo("conductor", conductor, conductors)) {
       if (conductor == "none") m.conductor.reset();
       else m.conductor = conductorIor(conductor);
@@ -59,6 +61,7 @@ class MaterialsPanel final : public Panel {
     }
     ImGui::EndDisabled();
     if (onPrt && !m.conductor) ImGui::TextDisabled("(PRT objects use it: they are diffuse)");
+    else if (m.lambertian) ImGui::TextDisabled("(lambertian: all of the light diffused)");
     reflectancePlot(m, context.table);
   }
 

@@ -61,6 +61,9 @@ void setMaterialKey(Scene& scene, const std::string& key, const std::vector<std:
   if (it->conductor && (parts[2] == "base-colour" || parts[2] == "metallic"))
     throw Error(fmt::format("{}: {} is a conductor, whose colour and metalness are its measured n and k", excerpt(key),
                             excerpt(parts[1])));
+  if (it->lambertian && parts[2] == "metallic" && render::parseFloatWithin(key, value, 0.0f, 1.0f) > 0.0f)
+    throw Error(fmt::format("{}: {} is lambertian, which diffuses all of the light: metallic must be 0", excerpt(key),
+                            excerpt(parts[1])));
   if (parts[2] == "base-colour") {
     const glm::vec3 c = parseVec3(key, value);
     if (glm::any(glm::lessThan(c, glm::vec3(0.0f))) || glm::any(glm::greaterThan(c, glm::vec3(1.0f))))

@@ -84,6 +84,12 @@ TEST(SceneSettings, BadValuesAreOneLineErrorsNamingTheKey) {
   EXPECT_EQ(error(scene, "material.floor.base-colour", "0.5,2,0"),
             "material.floor.base-colour: expected R,G,B within 0–1, got \"0.5,2,0\"");
   EXPECT_EQ(scene.lights[1].position, glm::vec3(0.0f, 2.0f, 0.0f));  // nothing half-set
+  // A lambertian material takes no metal, as the scene loader says too (it rendered black).
+  scene.materials[0].lambertian = true;
+  EXPECT_EQ(error(scene, "material.floor.metallic", "0.5"),
+            "material.floor.metallic: floor is lambertian, which diffuses all of the light: metallic must be 0");
+  EXPECT_EQ(error(scene, "material.floor.metallic", "0"), "");
+  scene.materials[0].lambertian = false;
   // A conductor's colour and metalness are its n and k, as the scene loader says too.
   scene.materials[0].conductor = conductorIor("Au");
   EXPECT_EQ(error(scene, "material.floor.metallic", "0"),

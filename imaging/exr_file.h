@@ -42,9 +42,11 @@ struct ExrWriteOptions {
   std::optional<ExrCamera> camera = std::nullopt;     // with ColourMeaning::CameraRgb only
 };
 
-// ZIP-compressed scan lines, written to memory and then to `path` atomically: a reader never
-// sees half a file, and a failure leaves nothing behind (core/atomic_file.h). Creates
-// missing folders. Error naming the path when it fails.
+// Channels R, G, B (+ A) whatever they hold, CIE XYZ in them with OpenEXR's XYZ chromaticities
+// (its convention for XYZ files), "Y" for one channel. ZIP-compressed scan lines, written to
+// memory and then to `path` atomically: a reader never sees half a file, and a failure leaves
+// nothing behind (core/atomic_file.h). Creates missing folders. Error naming the path when it
+// fails.
 void writeExr(const std::filesystem::path& path, const FloatImage& image,
               const ExrWriteOptions& options = {});
 

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -141,23 +142,28 @@ TEST_F(Exr, ACamerasRgbCarriesItsCameraAndMatrix) {
   }
 }
 
+// A one-pixel file of three float channels with `header`'s attributes, as another program
+// could write it.
+void writeOnePixel(const std::filesystem::path& path, Imf::Header header, const std::array<const char*, 3>& names,
+                   std::array<float, 3> pixel) {
+  Imf::FrameBuffer frame;
+  for (int c = 0; c < 3; ++c) {
+    header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+    frame.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(&pixel[c]), sizeof(float), sizeof(float)));
+  }
+  Imf::OutputFile file(path.c_str(), header);
+  file.setFrameBuffer(frame);
+  file.writePixels(1);
+}
+
 // A one-pixel R, G, B file of the given colour meaning naming the camera nikon_d850 with `toXyz`:
-// what writeExr never writes (it checks both), as another program could.
+// what writeExr never writes (it checks both).
 void writeCameraAttributes(const std::filesystem::path& path, const char* colour, const Imath::M33d& toXyz) {
   Imf::Header header(1, 1);
   header.insert("prism:colour", Imf::StringAttribute(colour));
   header.insert(kCameraAttribute, Imf::StringAttribute("nikon_d850"));
   header.insert(kCameraToXyzAttribute, Imf::M33dAttribute(toXyz));
-  float pixel[3] = {0.5f, 0.5f, 0.5f};
-  Imf::FrameBuffer frame;
-  for (int c = 0; c < 3; ++c) {
-    const char* name = c == 0 ? "R" : c == 1 ? "G" : "B";
-    header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-    frame.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(&pixel[c]), sizeof(float), sizeof(float)));
-  }
-  Imf::OutputFile file(path.c_str(), header);
-  file.setFrameBuffer(frame);
-  file.writePixels(1);
+  writeOnePixel(path, header, {"R", "G", "B"}, {0.5f, 0.5f, 0.5f});
 }
 
 TEST_F(Exr, ACameraNamedOnOtherValuesOrWithoutAFiniteMatrixIsRefused) {
@@ -196,19 +202,7 @@ TEST_F(Exr, ChannelNamesAndMeaningsRoundTrip) {
     }
   }
   // Prism's older renders, channels X, Y, Z and no attribute, are still read as CIE XYZ.
-  {
-    Imf::Header header(1, 1);
-    float pixel[3] = {0.2f, 0.5f, 0.7f};
-    Imf::FrameBuffer frame;
-    for (int c = 0; c < 3; ++c) {
-      const char* name = c == 0 ? "X" : c == 1 ? "Y" : "Z";
-      header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-      frame.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(&pixel[c]), sizeof(float), sizeof(float)));
-    }
-    Imf::OutputFile file((dir / "old_xyz.exr").c_str(), header);
-    file.setFrameBuffer(frame);
-    file.writePixels(1);
-  }
+  writeOnePixel(dir / "old_xyz.exr", Imf::Header(1, 1), {"X", "Y", "Z"}, {0.2f, 0.5f, 0.7f});
   const ExrImage old = readExr(dir / "old_xyz.exr");
   EXPECT_EQ(old.colour, ColourMeaning::Xyz);
   EXPECT_EQ(old.image.pixels, (std::vector<float>{0.2f, 0.5f, 0.7f}));

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
+
 #include "core/error.h"
 
 namespace prism::app {
@@ -15,6 +17,13 @@ const Observer& cameraOption(const std::string& name) {
   if (!camera || !camera->isCamera)
     throw Error(fmt::format("--camera: \"{}\" is not a camera (see `prism colour list cameras`)", excerpt(name)));
   return *camera;
+}
+
+void warnIfIllPosed(const CameraMatrixFit& fit, std::string_view light, std::string_view camera) {
+  if (fit.chartConditioning < kIllPosedCameraFit)
+    fmt::print(stderr, "prism: warning: under {} the ColorChecker's colours through {} barely span three dimensions "
+                       "(smallest / largest singular value {:.2g}): the matrix is one of many that fit the chart, and "
+                       "maps light of another spectrum arbitrarily\n", light, camera, fit.chartConditioning);
 }
 
 }  // namespace prism::app

@@ -285,10 +285,7 @@ void colourCameraMatrix(const CameraMatrixOptions& o) {
   const Spectrum light = fromOption("--illuminant", [&] { return lampSpectrum(o.illuminant); });
   requireCameraSees(camera, light, o.illuminant);
   CameraMatrixFit fit = fitCameraToXyz(camera, light, observer("cie1931"));
-  if (fit.chartConditioning < kIllPosedCameraFit)
-    fmt::print(stderr, "prism: warning: under {} the ColorChecker's colours through {} barely span three dimensions "
-                       "(smallest / largest singular value {:.2g}): the matrix is one of many that fit the chart, and "
-                       "maps light of another spectrum arbitrarily\n", o.illuminant, o.camera, fit.chartConditioning);
+  warnIfIllPosed(fit, o.illuminant, o.camera);
   if (o.json) {
     fmt::print("{}\n", json{{"camera", o.camera}, {"illuminant", o.illuminant},
                             {"cameraToXyz", toJson(fit.cameraToXyz)},

@@ -1074,6 +1074,14 @@ TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
   ASSERT_EQ(moved.exitCode, 0) << moved.err;
   EXPECT_EQ(nlohmann::json::parse(moved.out)["environment"],
             "the scene's spectral sky, sun at 10° elevation, 4° azimuth, its disc on SH-5");
+  EXPECT_EQ(moved.err.find("warning"), std::string::npos) << moved.err;
+  // Past the last sunlit air in view (−15.7°) the report says what its sky is (its errors went
+  // erratic, m = 16 max ΔE00 1.7 at −27° against 0.02 at −26°, without a word).
+  Result night = run("prt report " + sunset + " --samples 8 --environment atmosphere --sun-elevation -20 --json");
+  ASSERT_EQ(night.exitCode, 0) << night.err;
+  EXPECT_NE(night.err.find("prism: warning: the sun is 20° below the horizon, past the 15.7° where the last sunlit air "
+                           "leaves the sky"),
+            std::string::npos) << night.err;
   // With a PRT section of another environment, that is the default, and the sky --environment
   // atmosphere's start (it took the defaults' sun at 30° and 180°).
   std::filesystem::path both = writeTemp("prt_and_sky.json", R"({"camera": {"position": [0, 1, 3], "target": [0, 0, 0]},

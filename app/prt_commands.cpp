@@ -229,6 +229,16 @@ void checkReportOutputs(const PrtReportOptions& o) {
   if (o.coloursM && o.coloursFile.empty()) throw Error("--colours-m: only with --colours (the basis size of its colours)");
 }
 
+// A spectral sky whose sun is past the last sunlit air (prt::sunlitAirLimitDeg): said, since the
+// report compares PRT under it all the same.
+void warnIfNoSunlitAir(const atmosphere::AtmosphereSky& sky) {
+  const double limit = prt::sunlitAirLimitDeg(sky);
+  if (sky.sunElevationDeg < limit)
+    fmt::print(stderr, "prism: warning: the sun is {:g}° below the horizon, past the {:.1f}° where the last sunlit air "
+                       "leaves the sky: what light is left is the extrapolated tail of the atmosphere's multiple "
+                       "scattering, which its model does not hold\n", -sky.sunElevationDeg, -limit);
+}
+
 // The report's environment (PrtReportOptions says which); flags of another one are refused.
 prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtInput* input) {
   const bool sun = o.sunElevationDeg || o.sunAzimuthDeg;
@@ -253,6 +263,7 @@ prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtI
   }
   if (!section) section = sceneSky;
   if (section && o.exr.empty() && !o.environment && !o.illuminant) {
+    if (section->sky) warnIfNoSunlitAir(section->sky->atmosphere);
     // The report has no lights: the spectral sky's sun, the renderer's light, is projected with it.
     prt::SpectralEnvironment environment = prt::sectionEnvironment(*section, rendererRgbToSpectrumTable("srgb"), true);
     environment.name = "the scene's (" + environment.name + ")";
@@ -291,6 +302,7 @@ prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtI
     prt::PrtSection moved = *sceneSky;
     moved.sky->atmosphere.sunElevationDeg = static_cast<float>(elevation);
     moved.sky->atmosphere.sunAzimuthDeg = static_cast<float>(azimuth);
+    warnIfNoSunlitAir(moved.sky->atmosphere);
     prt::SpectralEnvironment environment = prt::sectionEnvironment(moved, rendererRgbToSpectrumTable("srgb"), true);
     environment.name = "the scene's " + environment.name;
     return environment;
@@ -298,6 +310,7 @@ prt::SpectralEnvironment reportEnvironment(const PrtReportOptions& o, const PrtI
   prt::PrtSky sky;
   sky.atmosphere.sunElevationDeg = static_cast<float>(elevation);
   sky.atmosphere.sunAzimuthDeg = static_cast<float>(azimuth);
+  warnIfNoSunlitAir(sky.atmosphere);
   return prt::skyEnvironment(fmt::format("Prism's spectral sky, sun at {:g}° elevation, {:g}° azimuth", elevation, azimuth),
                              prt::tabulateSky(sky), true, 1.0);
 }

@@ -25,6 +25,11 @@ glm::dvec3 prtSunDirection(const atmosphere::AtmosphereSky& atmosphere) {
   return glm::normalize(glm::dvec3(w.x, -w.z, w.y));  // x→x, y→z, z→−y (prt_scene_mesh.h)
 }
 
+double sunlitAirLimitDeg(const atmosphere::AtmosphereSky& atmosphere) {
+  const double bottom = atmosphere.parameters.bottomRadiusKm, top = atmosphere.parameters.topRadiusKm;
+  return -glm::degrees(std::acos(bottom / atmosphere.originKm()) + 2.0 * std::acos(bottom / top));
+}
+
 double SkyRadianceGrid::radianceAt(const glm::dvec3& direction, double lambdaNm) const {
   const glm::ivec2 t = equirectangularTexelOf(direction, width, height);
   const std::size_t texel = static_cast<std::size_t>(t.y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(t.x);

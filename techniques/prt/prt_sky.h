@@ -47,4 +47,12 @@ SpectralEnvironment skyEnvironment(std::string name, const SkyRadianceGrid& grid
 // The sun's direction in PRT's frame (z up) for the atmosphere's elevation and azimuth.
 glm::dvec3 prtSunDirection(const atmosphere::AtmosphereSky& atmosphere);
 
+// The sun's elevation (degrees, negative) below which no sunlit air is in view from the ground:
+// the planet's shadow covers all the atmosphere the eye can reach, the horizon's ray grazing the
+// ground included (−(acos(Rb/r) + 2·acos(Rb/Rt)): −15.7° for Earth's 6360 and 6420 km at the
+// ground). Below it the sky holds only the extrapolated tail of the multiple-scattering table,
+// which Hillaire's model is not made for: white Y 1.9e-11 at −24° and 4.5e-17 at −27° against 82
+// at 30°, 99.9 % of the grid exactly 0 at −27°, and the PRT report's errors erratic there.
+double sunlitAirLimitDeg(const atmosphere::AtmosphereSky& atmosphere);
+
 }  // namespace prism::prt

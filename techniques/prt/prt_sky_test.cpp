@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -101,6 +102,24 @@ TEST(PrtSky, TheSkyIsBlueAndTheSettingSunRed) {
   EXPECT_LT(zenith.x, 0.30);
   EXPECT_LT(zenith.y, 0.31);
   EXPECT_GT(sunLow.x, sunHigh.x + 0.05);
+}
+
+// Past the last sunlit air in view the planet's shadow holds every point the eye reaches: without
+// multiple scattering (whose table's tail is all that lights such a sky) every texel is exactly 0.
+// A mountain sees further: its limit lies deeper.
+TEST(PrtSky, NoSunlitAirIsInViewPastItsLimit) {
+  const PrtSky ground = skyAt(0.0f, 0.0f);
+  const double limit = sunlitAirLimitDeg(ground.atmosphere);
+  EXPECT_NEAR(limit, -2.0 * glm::degrees(std::acos(6360.0 / 6420.0)), 1e-9);
+  EXPECT_NEAR(limit, -15.68, 0.01);
+  PrtSky mountain = ground;
+  mountain.atmosphere.groundAltitudeM = 4000.0f;
+  EXPECT_LT(sunlitAirLimitDeg(mountain.atmosphere), limit - 1.0);
+  const SkyRadianceGrid past = tabulateSky(skyAt(static_cast<float>(limit) - 0.5f, 0.0f, false), 4, 64);
+  EXPECT_EQ(*std::max_element(past.radiance.begin(), past.radiance.end()), 0.0f);
+  // Before it the same grid sees the last light low in the sky (single scattering alone).
+  const SkyRadianceGrid before = tabulateSky(skyAt(-10.5f, 0.0f, false), 4, 64);
+  EXPECT_GT(*std::max_element(before.radiance.begin(), before.radiance.end()), 0.0f);
 }
 
 // The sky's cache (prt_sky_cache.h): the first call tabulates and writes the entry, keeping the 32

@@ -19,11 +19,11 @@ const Observer& cameraOption(const std::string& name) {
   return *camera;
 }
 
-void warnIfIllPosed(const CameraMatrixFit& fit, std::string_view light, std::string_view camera) {
-  if (fit.chartConditioning < kIllPosedCameraFit)
+void warnIfIllPosed(double chartConditioning, std::string_view light, std::string_view camera) {
+  if (chartConditioning < kIllPosedCameraFit)
     fmt::print(stderr, "prism: warning: under {} the ColorChecker's colours through {} barely span three dimensions "
                        "(smallest / largest singular value {:.2g}): the matrix is one of many that fit the chart, and "
-                       "maps light of another spectrum arbitrarily\n", light, camera, fit.chartConditioning);
+                       "maps light of another spectrum arbitrarily\n", light, camera, chartConditioning);
 }
 
 }  // namespace prism::app

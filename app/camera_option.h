@@ -18,6 +18,6 @@ const Observer& cameraOption(const std::string& name);
 // The warning, on stderr, that a camera matrix fitted under `light` is one of many that fit the
 // chart (chartConditioning below kIllPosedCameraFit): what `colour camera-matrix` prints, and
 // `render` for the matrix its images go through (a narrow LED's).
-void warnIfIllPosed(const CameraMatrixFit& fit, std::string_view light, std::string_view camera);
+void warnIfIllPosed(double chartConditioning, std::string_view light, std::string_view camera);
 
 }  // namespace prism::app

@@ -285,7 +285,7 @@ void colourCameraMatrix(const CameraMatrixOptions& o) {
   const Spectrum light = fromOption("--illuminant", [&] { return lampSpectrum(o.illuminant); });
   requireCameraSees(camera, light, o.illuminant);
   CameraMatrixFit fit = fitCameraToXyz(camera, light, observer("cie1931"));
-  warnIfIllPosed(fit, o.illuminant, o.camera);
+  warnIfIllPosed(fit.chartConditioning, o.illuminant, o.camera);
   if (o.json) {
     fmt::print("{}\n", json{{"camera", o.camera}, {"illuminant", o.illuminant},
                             {"cameraToXyz", toJson(fit.cameraToXyz)},

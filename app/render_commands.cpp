@@ -14,12 +14,10 @@
 #include "render/frame_data.h"
 #include "render/renderer.h"
 #include "render/setting_keys.h"
-#include "scene/scene_emission.h"
 #include "scene/scene_loader.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/file_extension.h"
-#include "spectral/colour_space.h"
 #include "spectral/observer.h"
 #include "techniques/technique_pass.h"
 
@@ -56,10 +54,8 @@ void renderToFile(const Scene& scene, const render::FrameSettings& settings, int
   harness::precomputeTechniques(scene);
   render::Renderer renderer(scene, table, settings);
   // The matrix a camera's image goes through is fitted under the scene's light (display_transform.h).
-  if (const Observer& shown = *renderer.context().tristimulusObserver; shown.isCamera) {
-    const Spectrum light = sceneEmission(scene, colourSpace(scene.colourSpace), table);
-    if (cameraSees(shown, light)) warnIfIllPosed(fitCameraToXyz(shown, light, cie1931Observer()), "the scene's light", settings.observer);
-  }
+  if (const std::optional<double> c = renderer.context().display.cameraChartConditioning)
+    warnIfIllPosed(*c, "the scene's light", settings.observer);
   std::optional<harness::ProgressBar> bar;
   if (progress && frames > 1) bar.emplace("rendering " + output.filename().string());
   for (int f = 0; f < frames; ++f) {

@@ -18,25 +18,31 @@ glm::mat3 toGlm(const Eigen::Matrix3d& m) {
   return g;
 }
 
-}  // namespace
-
 // Fitted on the ColorChecker under the light and scaled to keep its luminance — the fit
 // normalises camera RGB and XYZ each by its own white's green and Y, while the renderer scales
 // camera RGB to match XYZ under D65 (absoluteTristimulusScale), so the ratio of the two
 // normalisations (1 under D65). A light the eye or the camera's green does not see (a 790 nm LED)
 // fits nothing: D65's matrix then, which shows the next to nothing the camera sees of it as such.
-Eigen::Matrix3d cameraToXyz(const Observer& camera, const Spectrum* lightOrNull) {
+CameraMatrixFit sceneCameraFit(const Observer& camera, const Spectrum* lightOrNull) {
   PRISM_CHECK(camera.isCamera);
   const Spectrum& light = lightOrNull ? *lightOrNull : illuminant("D65");
   const Observer& cie = cie1931Observer();
   const Spectrum& d65 = illuminant("D65");
   auto greenOverY = [&](const Spectrum& s) { return camera.integrate(s).y() / cie.integrate(s).y(); };
   auto fitted = [&](const Spectrum& s) {
-    return Eigen::Matrix3d(fitCameraToXyz(camera, s, cie).cameraToXyz * (greenOverY(d65) / greenOverY(s)));
+    CameraMatrixFit fit = fitCameraToXyz(camera, s, cie);
+    fit.cameraToXyz *= greenOverY(d65) / greenOverY(s);
+    return fit;
   };
   if (cameraSees(camera, light))
-    if (const Eigen::Matrix3d m = fitted(light); m.allFinite()) return m;
+    if (CameraMatrixFit fit = fitted(light); fit.cameraToXyz.allFinite()) return fit;
   return fitted(d65);
+}
+
+}  // namespace
+
+Eigen::Matrix3d cameraToXyz(const Observer& camera, const Spectrum* light) {
+  return sceneCameraFit(camera, light).cameraToXyz;
 }
 
 DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tristimulusObserver,
@@ -44,7 +50,9 @@ DisplayInputs resolveDisplay(const DisplaySettings& settings, const Observer& tr
   DisplayInputs inputs;
   inputs.colourSpace = &colourSpace(settings.colourSpace);
   if (tristimulusObserver.isCamera) {
-    inputs.tristimulusToXyz = cameraToXyz(tristimulusObserver, cameraLight);
+    const CameraMatrixFit fit = sceneCameraFit(tristimulusObserver, cameraLight);
+    inputs.tristimulusToXyz = fit.cameraToXyz;
+    inputs.cameraChartConditioning = fit.chartConditioning;
   }
   if (settings.whiteBalance != "none") {
     // The white a surface lit by the illuminant shows: its tristimulus under this observer, or for

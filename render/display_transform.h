@@ -24,6 +24,8 @@ struct DisplayInputs {
   // CIE 1931 and cameras; Y = 1); none: no balance.
   std::optional<Eigen::Vector3d> whiteBalanceXyz;
   Eigen::Matrix3d tristimulusToXyz = Eigen::Matrix3d::Identity();  // a camera's fitted matrix, or identity
+  // How well the chart pins that matrix down (CameraMatrixFit::chartConditioning); none for the eye.
+  std::optional<double> cameraChartConditioning;
 };
 
 // A camera's raw RGB → CIE 1931 XYZ for images lit by `light` (D65 when null): its ColorChecker

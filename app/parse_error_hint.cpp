@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "render/setting_keys.h"
+
 namespace prism::app {
 
 namespace {
@@ -53,11 +55,6 @@ std::string nearestOption(const CLI::App& command, std::string_view given) {
     }
   }
   return best;
-}
-
-// The text without one leading '+', as from_chars reads no sign but '-'.
-std::string_view unsigned_(const std::string& text) {
-  return text.starts_with('+') ? std::string_view(text).substr(1) : std::string_view(text);
 }
 
 }  // namespace
@@ -118,7 +115,7 @@ std::string conversionHint(const CLI::App& app, const std::string& message) {
 CLI::Validator decimalNumber(bool numberLike) {
   return CLI::Validator(
       [numberLike](std::string& text) -> std::string {
-        const std::string_view digits = unsigned_(text);
+        const std::string_view digits = render::withoutPlusSign(text);
         if (numberLike && !digits.empty() && std::string_view("0123456789.-").find(digits.front()) == std::string_view::npos)
           return "";  // a word: the option's own to take or refuse
         double value = 0.0;
@@ -133,7 +130,7 @@ CLI::Validator decimalNumber(bool numberLike) {
 CLI::Validator decimalWholeNumber() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        const std::string_view digits = unsigned_(text);
+        const std::string_view digits = render::withoutPlusSign(text);
         long long value = 0;
         const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
         if (!digits.empty() && ec != std::errc::invalid_argument && end == digits.data() + digits.size()) return "";

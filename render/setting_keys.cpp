@@ -221,9 +221,6 @@ std::vector<SettingKey> makeKeys() {
   return keys;
 }
 
-// One leading '+', which from_chars does not read, as the command line's check lets it through.
-std::string_view unsigned_(std::string_view text) { return text.starts_with('+') ? text.substr(1) : text; }
-
 }  // namespace
 
 const std::vector<SettingKey>& frameSettingKeys() {
@@ -253,7 +250,7 @@ std::vector<std::pair<std::string, std::string>> frameSettingValues(const FrameS
 
 double parseNumber(std::string_view what, std::string_view text) {
   double v = 0.0;
-  const std::string_view digits = unsigned_(text);
+  const std::string_view digits = withoutPlusSign(text);
   auto r = std::from_chars(digits.data(), digits.data() + digits.size(), v);
   if (digits.empty() || r.ec != std::errc() || r.ptr != digits.data() + digits.size() || !std::isfinite(v)) {
     throw Error(fmt::format("{}: expected a number, got \"{}\"", what, excerpt(text)));
@@ -263,7 +260,7 @@ double parseNumber(std::string_view what, std::string_view text) {
 
 long parseInteger(std::string_view what, std::string_view text, long min, long max) {
   long v = 0;
-  const std::string_view digits = unsigned_(text);
+  const std::string_view digits = withoutPlusSign(text);
   auto r = std::from_chars(digits.data(), digits.data() + digits.size(), v);
   if (digits.empty() || r.ec != std::errc() || r.ptr != digits.data() + digits.size() || v < min || v > max) {
     throw Error(fmt::format("{}: expected a whole number within {}–{}, got \"{}\"", what, min, max, excerpt(text)));

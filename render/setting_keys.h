@@ -49,6 +49,10 @@ bool applyFrameSetting(FrameSettings& settings, std::string_view key, std::strin
 // Every key with its printed value, in table order.
 std::vector<std::pair<std::string, std::string>> frameSettingValues(const FrameSettings& settings);
 
+// The text without one leading '+', which from_chars does not read (a sign it reads is '-'): the
+// key table's numbers and the command line's decimal checks take "+64" alike.
+inline std::string_view withoutPlusSign(std::string_view text) { return text.starts_with('+') ? text.substr(1) : text; }
+
 // The numbers of settings and script commands: a finite number, or a whole one within [min, max];
 // Error "WHAT: expected …, got "TEXT"" otherwise.
 double parseNumber(std::string_view what, std::string_view text);

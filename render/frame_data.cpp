@@ -148,15 +148,22 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
     g.cosOuter = std::cos(glm::radians(light.outerConeDeg));
     g.shadowLayer = -1;
     g.shadowFromWorld = glm::mat4(1.0f);
+    g.shadowCascades[0] = glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);
+    g.shadowCascadeCount = 1;
     for (const ShadowView& view : shadows) {
-      if (view.lightIndex != static_cast<int>(i) || g.shadowLayer >= 0) continue;  // a point light's first face
+      if (view.lightIndex != static_cast<int>(i)) continue;
+      if (g.shadowLayer >= 0) {  // a directional light's next cascade, or a point light's next face
+        if (light.type == LightType::Directional) g.shadowCascades[g.shadowCascadeCount++] = view.cascadeWindow;
+        continue;
+      }
       g.shadowLayer = view.layer;
       g.shadowFaceScale = view.pointProjection.x;
       g.shadowDepthA = view.pointProjection.y;
       g.shadowDepthB = view.pointProjection.z;
       g.shadowNormalOffsetM = view.normalOffsetM;
       g.shadowDepthBias = view.depthBias;
-      g.shadowFromWorld = view.viewProjection;
+      g.shadowFromWorld = view.lightFromWorld;
+      g.shadowCascades[0] = view.cascadeWindow;
     }
     frame.lights.push_back(g);
     if (rgbMode) {

@@ -64,6 +64,9 @@ void validate(const FrameSettings& settings) {
   if (settings.shadowMapSize < 16 || settings.shadowMapSize > 8192) {
     throw Error(fmt::format("shadow map size {} must be within 16..8192", settings.shadowMapSize));
   }
+  if (settings.shadowCascades < 1 || settings.shadowCascades > kShadowCascadesMax) {
+    throw Error(fmt::format("shadow cascades {} must be within 1..{}", settings.shadowCascades, kShadowCascadesMax));
+  }
   validate(settings.display);
 }
 

@@ -60,9 +60,14 @@ struct FrameSettings {
   UpsamplingLookup lookup = UpsamplingLookup::Filtered;
   GBufferAlbedo gbufferAlbedo = GBufferAlbedo::Rgb;
   int shadowMapSize = 2048;
+  // A directional light's shadow maps: 1 covers the whole scene; more are fitted to the camera's
+  // view, finest near it (render/shadow_views.h), up to kShadowCascadesMax.
+  int shadowCascades = 1;
   bool lightGizmos = false;  // forward pass: an emissive marker at each point and spot light
   DisplaySettings display;
 };
+
+constexpr int kShadowCascadesMax = 4;  // shared::kMaxShadowCascades, the GPU's light record's room
 
 // Error naming the setting for sizes, counts and names out of range.
 void validate(const FrameSettings& settings);

@@ -107,7 +107,7 @@ Renderer::Renderer(const Scene& scene, const RgbToSpectrumTable& table,
   mLightingPrograms.emplace(lightingVariant(scene), lightingProgram(scene));
   mContext = frameContext(mSettings, mScene, mTable);
   mDisplayTransform = displayTransform(mSettings.display, mContext.display, mCamera.ev100);
-  mShadows = makeShadows(mScene, mSettings.shadowMapSize);
+  mShadows = makeShadows(mScene, mSettings.shadowMapSize, shadowCascading(mSettings, mCamera));
   mTargets = makeTargets(mSettings.width, mSettings.height, mSettings.gbufferAlbedo);
 }
 
@@ -122,8 +122,8 @@ void Renderer::setSettings(const FrameSettings& settings) {
   bool resized = settings.width != mSettings.width || settings.height != mSettings.height ||
                  settings.gbufferAlbedo != mSettings.gbufferAlbedo;
   std::optional<Shadows> shadows;
-  if (settings.shadowMapSize != mSettings.shadowMapSize) {
-    shadows = makeShadows(mScene, settings.shadowMapSize);
+  if (settings.shadowMapSize != mSettings.shadowMapSize || settings.shadowCascades != mSettings.shadowCascades) {
+    shadows = makeShadows(mScene, settings.shadowMapSize, shadowCascading(settings, mCamera));
   }
   std::optional<Targets> targets;
   if (resized) targets = makeTargets(settings.width, settings.height, settings.gbufferAlbedo);
@@ -148,13 +148,7 @@ void Renderer::sceneChanged() {
   requireTechniquesShow(mScene, mSettings);
   // The wavelengths' pdf follows the lights (Lights strategy); made before anything changes.
   FrameContext context = frameContext(mSettings, mScene, mTable);
-  // The views follow the lights; the maps are made again only when their number changes.
-  std::vector<ShadowView> views = planShadowViews(mScene, mSettings.shadowMapSize);
-  if (views.size() == mShadows.views.size()) {
-    mShadows.views = std::move(views);
-  } else {
-    mShadows = makeShadows(mScene, mSettings.shadowMapSize);
-  }
+  planShadows();  // the views follow the lights
   mContext = std::move(context);
   // A camera's matrix is fitted under the lights (resolveDisplay): the display follows them too.
   mDisplayTransform = displayTransform(mSettings.display, mContext.display, mCamera.ev100);
@@ -190,9 +184,22 @@ void Renderer::setCamera(const Camera& camera) {
   mAccumulated = 0;
 }
 
-Renderer::Shadows Renderer::makeShadows(const Scene& scene, int mapSize) {
+ShadowCascading Renderer::shadowCascading(const FrameSettings& settings, const Camera& camera) {
+  return {settings.shadowCascades, camera, static_cast<float>(settings.width) / static_cast<float>(settings.height)};
+}
+
+void Renderer::planShadows() {
+  std::vector<ShadowView> views = planShadowViews(mScene, mSettings.shadowMapSize, shadowCascading(mSettings, mCamera));
+  if (views.size() == mShadows.views.size()) {
+    mShadows.views = std::move(views);
+  } else {
+    mShadows = makeShadows(mScene, mSettings.shadowMapSize, shadowCascading(mSettings, mCamera));
+  }
+}
+
+Renderer::Shadows Renderer::makeShadows(const Scene& scene, int mapSize, const ShadowCascading& cascading) {
   Shadows s;
-  s.views = planShadowViews(scene, mapSize);
+  s.views = planShadowViews(scene, mapSize, cascading);
   gpu::Texture2DArrayDesc desc;
   desc.width = desc.height = mapSize;
   desc.layers = std::max<GLsizei>(1, static_cast<GLsizei>(s.views.size()));
@@ -266,6 +273,8 @@ void setOpaqueState() {
 
 void Renderer::renderFrame() {
   mCameraTransform = prism::cameraTransform(mCamera, mSettings.width, mSettings.height);
+  // A directional light's cascades follow the camera: planned with the maps they are drawn into.
+  if (mAccumulated == 0) planShadows();
   // A new set of wavelengths every frame (every strategy but Uniform moves between frames).
   mFrame = buildFrameData(mScene, mSettings, mContext, mTable, mShadows.views, mFrameIndex++, mCameraTransform);
   uploadFrameData();

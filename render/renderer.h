@@ -114,7 +114,10 @@ class Renderer {
     std::vector<gpu::Framebuffer> framebuffers;  // one per view
   };
   static Targets makeTargets(int width, int height, GBufferAlbedo albedo);
-  static Shadows makeShadows(const Scene& scene, int mapSize);
+  static ShadowCascading shadowCascading(const FrameSettings& settings, const Camera& camera);
+  static Shadows makeShadows(const Scene& scene, int mapSize, const ShadowCascading& cascading);
+  // Plans the views again (the lights, the camera), the maps made again only when their number changes.
+  void planShadows();
   void hook(std::string_view pass) const;
   void shadowPass();
   void gbufferPass();

@@ -5,9 +5,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/frame_settings.h"
 #include "render/shared_shading.h"
 
 namespace prism::render {
+static_assert(kShadowCascadesMax == shared::kMaxShadowCascades);
+
 namespace {
 
 // An up vector not parallel to the view direction.
@@ -31,9 +34,48 @@ DepthRange depthRange(float distance, float radius) {
 
 constexpr float kPerspectiveDepthBias = 5e-5f;  // in the map's [0, 1] depth
 
+// The windows of a directional light's cascades over its whole-scene map (`wholeScene`, whose
+// x, y span the scene's bounding sphere, radius `radius` around `centre`): the camera's view
+// between its nearest and farthest sight of the sphere split into `count` slices, nearer ones
+// thinner (Zhang et al. 2006's practical split, three quarters logarithmic); each of the first
+// count − 1 is a square around the slice's bounding sphere, its centre moved in whole texels of its
+// own (a still light's texels then stay put as the camera moves); the last window is the whole
+// map. A window no smaller than the whole map is the whole map.
+std::vector<glm::vec4> cascadeWindows(const glm::mat4& wholeScene, const glm::vec3& centre, float radius,
+                                      const ShadowCascading& cascading, int mapSize) {
+  const Camera& camera = cascading.camera;
+  const int count = cascading.count;
+  std::vector<glm::vec4> windows(static_cast<std::size_t>(count), glm::vec4(0.0f, 0.0f, 1.0f, 0.0f));
+  glm::vec3 forward = camera.target - camera.position;
+  if (!(glm::length(forward) > 0.0f)) return windows;
+  forward = glm::normalize(forward);
+  const float toCentre = glm::length(centre - camera.position);
+  const float nearM = std::max(camera.nearPlane, toCentre - radius);
+  const float farM = std::max(std::min(camera.farPlane, toCentre + radius), 1.001f * nearM);
+  const float slope = std::tan(0.5f * glm::radians(camera.verticalFovDeg)) *
+                      std::sqrt(1.0f + cascading.aspect * cascading.aspect);  // a slice's half-diagonal over its distance
+  auto split = [&](int i) {
+    const float t = static_cast<float>(i) / static_cast<float>(count);
+    return 0.75f * nearM * std::pow(farM / nearM, t) + 0.25f * (nearM + (farM - nearM) * t);
+  };
+  for (int i = 0; i + 1 < count; ++i) {
+    const float d0 = split(i), d1 = split(i + 1);
+    // The sphere through the slice's eight corners, its centre on the view's axis.
+    const float along = std::min(0.5f * (d0 + d1) * (1.0f + slope * slope), d1);
+    const float sliceRadius = std::max(std::hypot(along - d0, slope * d0), std::hypot(d1 - along, slope * d1));
+    const float scale = radius / sliceRadius;
+    if (!(scale > 1.0f)) break;  // this slice and those beyond it need no finer map than the whole
+    const glm::vec4 clip = wholeScene * glm::vec4(camera.position + forward * along, 1.0f);
+    const float texel = 2.0f / (scale * static_cast<float>(mapSize));  // the window's texel in the whole map's clip units
+    windows[static_cast<std::size_t>(i)] =
+        glm::vec4(std::round(clip.x / texel) * texel, std::round(clip.y / texel) * texel, scale, 0.0f);
+  }
+  return windows;
+}
+
 }  // namespace
 
-std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize) {
+std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize, const ShadowCascading& cascading) {
   Bounds bounds = sceneBounds(scene);
   glm::vec3 centre = 0.5f * (bounds.min + bounds.max);
   float radius = std::max(0.5f * glm::length(bounds.max - bounds.min), 1e-3f);
@@ -58,6 +100,7 @@ std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize) {
         view.normalOffsetM = 1.5f * texelM;
         view.depthBias = kPerspectiveDepthBias;
         view.pointProjection = projection;
+        view.lightFromWorld = view.viewProjection;
         views.push_back(view);
       }
       continue;
@@ -70,22 +113,28 @@ std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize) {
       glm::vec3 eye = centre - direction * (2.0f * radius);
       glm::mat4 lightView = glm::lookAt(eye, centre, upFor(direction));
       glm::mat4 projection = glm::ortho(-radius, radius, -radius, radius, radius, 3.0f * radius);
-      view.viewProjection = projection * lightView;
+      view.lightFromWorld = projection * lightView;
       float texelM = 2.0f * radius / size;
       view.normalOffsetM = 1.5f * texelM;
       view.depthBias = 1.0f / size;  // one texel's width of depth: the range is 2·radius deep
-    } else {
-      float distance = glm::length(centre - light.position);
-      const DepthRange range = depthRange(distance, radius);
-      glm::mat4 lightView =
-          glm::lookAt(light.position, light.position + direction, upFor(direction));
-      float fov = 2.0f * glm::radians(std::min(light.outerConeDeg + 2.0f, 89.0f));
-      glm::mat4 projection = glm::perspective(fov, 1.0f, range.nearM, range.farM);
-      view.viewProjection = projection * lightView;
-      float texelM = 2.0f * distance * std::tan(0.5f * fov) / size;
-      view.normalOffsetM = 1.5f * texelM;
-      view.depthBias = kPerspectiveDepthBias;
+      for (const glm::vec4& window : cascadeWindows(view.lightFromWorld, centre, radius, cascading, mapSize)) {
+        view.layer = static_cast<int>(views.size());
+        view.cascadeWindow = window;
+        view.viewProjection = shared::shadowCascadeFromWorld(view.lightFromWorld, window);
+        views.push_back(view);
+      }
+      continue;
     }
+    float distance = glm::length(centre - light.position);
+    const DepthRange range = depthRange(distance, radius);
+    glm::mat4 lightView = glm::lookAt(light.position, light.position + direction, upFor(direction));
+    float fov = 2.0f * glm::radians(std::min(light.outerConeDeg + 2.0f, 89.0f));
+    glm::mat4 projection = glm::perspective(fov, 1.0f, range.nearM, range.farM);
+    view.viewProjection = projection * lightView;
+    view.lightFromWorld = view.viewProjection;
+    float texelM = 2.0f * distance * std::tan(0.5f * fov) / size;
+    view.normalOffsetM = 1.5f * texelM;
+    view.depthBias = kPerspectiveDepthBias;
     views.push_back(view);
   }
   return views;

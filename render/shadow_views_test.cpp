@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -125,6 +126,63 @@ TEST(ShadowViews, AScenesShadowsDoNotDependOnItsUnitOfLength) {
     EXPECT_NEAR(centimetres[i].normalOffsetM, 0.01f * metres[i].normalOffsetM, 1e-4f * metres[i].normalOffsetM);
   }
   EXPECT_EQ(seen, 2);  // the point light's face towards it, and the spot
+}
+
+// A sun over a ground 2 km wide: four layers in order, the last the whole scene's map; each
+// drawn with the matrix the lighting pass looks it up with; the nearest fitted to the view near the
+// camera (texels under 2 cm where the whole map's are 2.8 m), moved in whole texels of its own;
+// the ground the camera sees within 8 m inside it with the PCF footprint's room. One cascade is
+// the whole map alone.
+TEST(ShadowViews, ADirectionalLightsCascadesAreFittedToTheViewFinestNearTheCamera) {
+  Scene scene;
+  scene.meshes.push_back(makePlane(glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec2(2000.0f)));
+  scene.meshes.push_back(makeSphere({0.0f, 0.5f, 0.0f}, 0.5f));
+  Light sun;
+  sun.direction = glm::normalize(glm::vec3(0.45f, -0.6f, -0.66f));
+  scene.lights = {sun};
+  ShadowCascading cascading;
+  cascading.count = 4;
+  cascading.camera.position = {0.0f, 2.5f, 6.0f};
+  cascading.camera.target = {0.0f, 0.0f, 0.0f};
+  cascading.camera.verticalFovDeg = 50.0f;
+  cascading.camera.nearPlane = 0.1f;
+  cascading.camera.farPlane = 200.0f;
+  const int size = 1024;
+  const std::vector<ShadowView> views = planShadowViews(scene, size, cascading);
+  ASSERT_EQ(views.size(), 4u);
+  for (std::size_t c = 0; c < views.size(); ++c) {
+    const ShadowView& v = views[c];
+    EXPECT_EQ(v.layer, static_cast<int>(c));
+    EXPECT_EQ(v.lightFromWorld, views[0].lightFromWorld);
+    EXPECT_EQ(v.viewProjection, shared::shadowCascadeFromWorld(v.lightFromWorld, v.cascadeWindow));
+    if (c > 0) EXPECT_LT(v.cascadeWindow.z, views[c - 1].cascadeWindow.z) << "cascade " << c;
+    const float texel = 2.0f / (v.cascadeWindow.z * static_cast<float>(size));
+    for (int k = 0; k < 2; ++k) {
+      const float inTexels = v.cascadeWindow[k] / texel;
+      EXPECT_NEAR(inTexels, std::round(inTexels), 1e-3f * std::max(1.0f, std::abs(inTexels))) << "cascade " << c;
+    }
+  }
+  EXPECT_EQ(views[3].cascadeWindow, glm::vec4(0.0f, 0.0f, 1.0f, 0.0f));
+  EXPECT_EQ(views[3].viewProjection, views[3].lightFromWorld);
+  const float wholeTexelM = 2.0f * 1000.0f * std::sqrt(2.0f) / static_cast<float>(size);
+  EXPECT_LT(wholeTexelM / views[0].cascadeWindow.z, 0.02f);
+  EXPECT_GT(wholeTexelM, 2.7f);
+  // The ground in view up to 8 m away: inside the nearest cascade, no tap of its footprint clamped.
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> across(-1.0f, 1.0f), distance(1.0f, 8.0f);
+  int inside = 0;
+  for (int n = 0; n < 2000; ++n) {
+    const glm::vec3 p(std::clamp(across(rng) * distance(rng), -3.0f, 3.0f), 0.0f, 6.0f - distance(rng));
+    const shared::ShadowFootprint f = shared::shadowFootprint(views[0].viewProjection * glm::vec4(p, 1.0f), size);
+    ASSERT_TRUE(f.inside) << p.x << " " << p.z;
+    inside += f.x0 >= 0 && f.y0 >= 0 && f.x0 + 3 < size && f.y0 + 3 < size;
+  }
+  EXPECT_EQ(inside, 2000);
+  cascading.count = 1;
+  const std::vector<ShadowView> one = planShadowViews(scene, size, cascading);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].viewProjection, views[3].lightFromWorld);
+  EXPECT_EQ(one[0].normalOffsetM, views[0].normalOffsetM);  // the whole map's: a cascade's is this / window.z
 }
 
 }  // namespace

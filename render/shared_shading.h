@@ -24,8 +24,9 @@ namespace prism::shared {
 // std430 (storage buffers) and std140 (the constants' block) sizes and offsets: a vec3 takes 12
 // bytes and the scalar after it the last 4 of its 16, as glm lays them out in C++.
 static_assert(sizeof(GpuBatch) == 64 && offsetof(GpuBatch, toZ) == 48);
-static_assert(sizeof(GpuLight) == 128 && offsetof(GpuLight, type) == 12 && offsetof(GpuLight, intensity) == 28 &&
-              offsetof(GpuLight, shadowLayer) == 40 && offsetof(GpuLight, shadowFromWorld) == 64);
+static_assert(sizeof(GpuLight) == 208 && offsetof(GpuLight, type) == 12 && offsetof(GpuLight, intensity) == 28 &&
+              offsetof(GpuLight, shadowLayer) == 40 && offsetof(GpuLight, shadowFromWorld) == 64 &&
+              offsetof(GpuLight, shadowCascades) == 128 && offsetof(GpuLight, shadowCascadeCount) == 192);
 static_assert(sizeof(GpuMaterial) == 32 && offsetof(GpuMaterial, metallic) == 12 &&
               offsetof(GpuMaterial, lambertian) == 28);
 static_assert(sizeof(FrameConstants) == 112 && offsetof(FrameConstants, cameraPositionW) == 64 &&

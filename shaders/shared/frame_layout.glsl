@@ -42,6 +42,8 @@ struct GpuBatch {
   vec4 toZ;
 };
 
+const int kMaxShadowCascades = 4;  // a directional light's shadow-map layers at most
+
 struct GpuLight {
   vec3 positionW;          // point, spot
   int type;                // kLight* (lights.glsl)
@@ -55,7 +57,15 @@ struct GpuLight {
   float shadowFaceScale;   // point: its six faces' pointShadowProjection, x, y, z
   float shadowDepthA;
   float shadowDepthB;
-  mat4 shadowFromWorld;    // world → the light's clip space (directional, spot)
+  mat4 shadowFromWorld;    // world → the light's clip space (directional: its whole-scene map's; spot)
+  // Directional: its cascades' windows over shadowFromWorld's clip x, y (shadowCascadeFromWorld),
+  // finest first, one layer each from shadowLayer; the last is the whole scene's, (0, 0, 1).
+  // Other lights: one window, (0, 0, 1).
+  vec4 shadowCascades[kMaxShadowCascades];
+  int shadowCascadeCount;
+  int pad0;
+  int pad1;
+  int pad2;
 };
 
 struct GpuMaterial {

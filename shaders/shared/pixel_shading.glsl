@@ -64,13 +64,29 @@ PRISM_INLINE vec3 worldFromDepth(IN(mat4) inverseViewProjection, IN(vec2) uv, fl
   return vec3(p.x, p.y, p.z) / p.w;
 }
 
-// Where a point is looked up in a light's shadow map: its layer (a point light's face) and the
-// point in that layer's clip space.
+// The cascade a point is looked up in: a directional light's finest whose window holds the
+// point's PCF footprint and normal offset, five of its texels to spare (the last, the whole
+// scene's, when none does); 0 for other lights. The normal offset and depth bias are the whole
+// map's scaled by its texel, 1 / window.z.
+PRISM_INLINE int shadowCascade(IN(GpuLight) light, IN(vec3) position, int size) {
+  if (light.type != kLightDirectional) return 0;
+  PRISM_PRECISE vec4 clip = transformPoint(light.shadowFromWorld, position);
+  float reach = 1.0f - 10.0f / float(size);
+  int last = light.shadowCascadeCount - 1;
+  for (int c = 0; c < last; ++c) {
+    vec4 window = light.shadowCascades[c];
+    if (abs(clip.x - window.x) * window.z <= reach && abs(clip.y - window.y) * window.z <= reach) return c;
+  }
+  return last;
+}
+
+// Where a point is looked up in a light's shadow map: its layer (a point light's face, a
+// directional light's cascade) and the point in that layer's clip space.
 struct ShadowLookup {
   int layer;
   vec4 clip;
 };
-PRISM_INLINE ShadowLookup shadowLookup(IN(GpuLight) light, IN(vec3) position) {
+PRISM_INLINE ShadowLookup shadowLookup(IN(GpuLight) light, IN(vec3) position, int cascade) {
   ShadowLookup lookup;
   lookup.layer = light.shadowLayer;
   mat4 fromWorld = light.shadowFromWorld;
@@ -79,6 +95,9 @@ PRISM_INLINE ShadowLookup shadowLookup(IN(GpuLight) light, IN(vec3) position) {
     lookup.layer += face;
     fromWorld = pointShadowFromWorld(light.positionW, face,
                                      vec3(light.shadowFaceScale, light.shadowDepthA, light.shadowDepthB));
+  } else if (light.type == kLightDirectional) {
+    lookup.layer += cascade;
+    fromWorld = shadowCascadeFromWorld(fromWorld, light.shadowCascades[cascade]);
   }
   lookup.clip = transformPoint(fromWorld, position);
   return lookup;
@@ -88,8 +107,10 @@ PRISM_INLINE ShadowLookup shadowLookup(IN(GpuLight) light, IN(vec3) position) {
 PRISM_INLINE float shadowVisibility(IN(GpuLight) light, IN(vec3) position, IN(vec3) normal,
                                     int size) {
   if (light.shadowLayer < 0) return 1.0f;
-  PRISM_PRECISE vec3 offsetPosition = position + normal * light.shadowNormalOffsetM;
-  ShadowLookup lookup = shadowLookup(light, offsetPosition);
+  int cascade = shadowCascade(light, position, size);
+  float texelScale = 1.0f / light.shadowCascades[cascade].z;
+  PRISM_PRECISE vec3 offsetPosition = position + normal * (light.shadowNormalOffsetM * texelScale);
+  ShadowLookup lookup = shadowLookup(light, offsetPosition, cascade);
   ShadowFootprint f = shadowFootprint(lookup.clip, size);
   if (!f.inside) return 1.0f;
   float visible = 0.0f;
@@ -99,7 +120,7 @@ PRISM_INLINE float shadowVisibility(IN(GpuLight) light, IN(vec3) position, IN(ve
     for (int i = 0; i < 4; ++i) {
       int x = clamp(f.x0 + i, 0, size - 1);
       visible += wy * shadowTapWeight(i, f.frac.x) *
-                 shadowTest(shadowDepthAt(lookup.layer, x, y), f.depth, light.shadowDepthBias);
+                 shadowTest(shadowDepthAt(lookup.layer, x, y), f.depth, light.shadowDepthBias * texelScale);
     }
   }
   return visible;
@@ -113,7 +134,9 @@ PRISM_INLINE float shadowVisibility(IN(GpuLight) light, IN(vec3) position, IN(ve
 // 16 float steps below 1, which a GPU's division, 2.5 steps off, cannot round past.
 PRISM_INLINE float shadowVisibilityInMedium(IN(GpuLight) light, IN(vec3) position, int size) {
   if (light.shadowLayer < 0) return 1.0f;
-  ShadowLookup lookup = shadowLookup(light, position);
+  int cascade = shadowCascade(light, position, size);
+  float texelScale = 1.0f / light.shadowCascades[cascade].z;
+  ShadowLookup lookup = shadowLookup(light, position, cascade);
   lookup.clip.z = min(lookup.clip.z, (1.0f - 1e-6f) * lookup.clip.w);
   ShadowFootprint f = shadowFootprint(lookup.clip, size);
   if (!f.inside) return 1.0f;
@@ -124,7 +147,7 @@ PRISM_INLINE float shadowVisibilityInMedium(IN(GpuLight) light, IN(vec3) positio
     for (int i = 1; i < 3; ++i) {
       int x = clamp(f.x0 + i, 0, size - 1);
       visible += wy * (i == 1 ? 1.0f - f.frac.x : f.frac.x) *
-                 shadowTest(shadowDepthAt(lookup.layer, x, y), f.depth, light.shadowDepthBias);
+                 shadowTest(shadowDepthAt(lookup.layer, x, y), f.depth, light.shadowDepthBias * texelScale);
     }
   }
   return visible;

@@ -72,6 +72,19 @@ PRISM_INLINE mat4 pointShadowFromWorld(IN(vec3) lightPosition, int face, IN(vec3
               vec4(-scale * dot(r, lightPosition), -scale * dot(u, lightPosition), tz, -dot(forward, lightPosition)));
 }
 
+// A directional light's cascades (parallel-split shadow maps, Zhang et al. 2006): layers fitted to
+// slices of the camera's view, finest first, the last the whole scene's map. A window (x, y, s)
+// maps the whole-scene map's clip x, y to its cascade's, (x − window.x, y − window.y)·s: world →
+// the cascade's clip space. The shadow pass renders with these very matrices.
+PRISM_INLINE mat4 shadowCascadeFromWorld(IN(mat4) wholeScene, IN(vec4) window) {
+  mat4 m = wholeScene;
+  for (int j = 0; j < 4; ++j) {
+    m[j].x = window.z * (wholeScene[j].x - window.x * wholeScene[j].w);
+    m[j].y = window.z * (wholeScene[j].y - window.y * wholeScene[j].w);
+  }
+  return m;
+}
+
 // 1 when the receiver (with its bias) is no farther from the light than the stored occluder.
 PRISM_INLINE float shadowTest(float storedDepth, float receiverDepth, float bias) {
   return receiverDepth - bias <= storedDepth ? 1.0f : 0.0f;

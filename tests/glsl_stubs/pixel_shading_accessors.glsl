@@ -2,7 +2,8 @@
 // so that the compile test can validate the file alone (shaders/lighting.frag has the real ones).
 GpuBatch frameBatch(int b) { return GpuBatch(vec4(b), vec4(0.0), vec4(0.0), vec4(0.0)); }
 GpuLight frameLight(int l) {
-  return GpuLight(vec3(l), 0, vec3(0.0), 0.0, 0.0, 0.0, -1, 0.0, 0.0, 0.0, 0.0, 0.0, mat4(1.0));
+  return GpuLight(vec3(l), 0, vec3(0.0), 0.0, 0.0, 0.0, -1, 0.0, 0.0, 0.0, 0.0, 0.0, mat4(1.0),
+                  vec4[kMaxShadowCascades](vec4(0.0, 0.0, 1.0, 0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 1, 0, 0, 0);
 }
 GpuMaterial frameMaterial(int id) { return GpuMaterial(vec3(id), 0.0, 0.0, 0, 0, 0); }
 vec4 frameLightSpectrum(int l, int b) { return vec4(l + b); }

@@ -52,13 +52,13 @@ struct ParityCase {
   GBufferAlbedo albedo = GBufferAlbedo::Rgb;
   SamplingStrategy strategy = SamplingStrategy::Uniform;
   float raiseCameraM = 0.0f;  // the frame's camera above the scene's (the viewer's, flown up)
-  int shadowCascades = 1;
+  int shadowCascades = FrameSettings{}.shadowCascades;
 };
 // What gtest (and so ctest's test names) shows of a case, instead of its bytes.
 void PrintTo(const ParityCase& c, std::ostream* os) {
   *os << c.scene << " " << renderModeName(c.mode) << (c.albedo == GBufferAlbedo::Coefficients ? " coefficients" : "")
       << " " << samplingStrategyName(c.strategy) << (c.raiseCameraM > 0.0f ? " raised" : "")
-      << (c.shadowCascades > 1 ? " cascades " + std::to_string(c.shadowCascades) : "");
+      << (c.shadowCascades != FrameSettings{}.shadowCascades ? " cascades " + std::to_string(c.shadowCascades) : "");
 }
 
 class GpuCpuParity : public testing::TestWithParam<ParityCase> {};
@@ -131,12 +131,11 @@ INSTANTIATE_TEST_SUITE_P(
                     ParityCase{"conductors_f11.json", RenderMode::JakobHanika},
                     // A point light's six shadow faces (render/tests: a fixture, not an example).
                     ParityCase{PRISM_RENDER_TEST_DIR "/point_lamp.json", RenderMode::JakobHanika},
-                    // A directional light's four cascades, chosen per pixel (render/tests: a fixture),
-                    // and the sun's cascades beside lamps' in-scattering under water.
-                    ParityCase{PRISM_RENDER_TEST_DIR "/sun_wide_ground.json", RenderMode::JakobHanika,
-                               GBufferAlbedo::Rgb, SamplingStrategy::Uniform, 0.0f, 4},
-                    ParityCase{PRISM_RENDER_TEST_DIR "/water_lamps.json", RenderMode::JakobHanika,
-                               GBufferAlbedo::Rgb, SamplingStrategy::Uniform, 0.0f, 4},
+                    // A directional light's cascades, chosen per pixel on a wide ground (render/tests:
+                    // a fixture), and one map over the whole scene.
+                    ParityCase{PRISM_RENDER_TEST_DIR "/sun_wide_ground.json", RenderMode::JakobHanika},
+                    ParityCase{"spheres_d65.json", RenderMode::JakobHanika, GBufferAlbedo::Rgb,
+                               SamplingStrategy::Uniform, 0.0f, 1},
                     ParityCase{"cook_torrance_sweep.json", RenderMode::JakobHanika},
                     ParityCase{"textured_gltf.json", RenderMode::JakobHanika},
                     ParityCase{"reef.json", RenderMode::JakobHanika},  // under water
@@ -169,7 +168,9 @@ INSTANTIATE_TEST_SUITE_P(
                               ? ""
                               : "_" + std::string(samplingStrategyName(param.param.strategy))) +
                          (param.param.raiseCameraM > 0.0f ? "_raised" : "") +
-                         (param.param.shadowCascades > 1 ? "_cascades" + std::to_string(param.param.shadowCascades) : "");
+                         (param.param.shadowCascades != FrameSettings{}.shadowCascades
+                              ? "_cascades" + std::to_string(param.param.shadowCascades)
+                              : "");
       std::replace(name.begin(), name.end(), '-', '_');
       return name;
     });

@@ -201,7 +201,7 @@ std::vector<SettingKey> makeKeys() {
   keys.push_back(integerKey("shadow-cascades",
                             "a directional light's shadow maps: 1 covers the whole scene, more are fitted to the "
                             "camera's view, finest near it",
-                            "4", 1, kShadowCascadesMax, [](S s) -> int& { return s.shadowCascades; }));
+                            "2", 1, kShadowCascadesMax, [](S s) -> int& { return s.shadowCascades; }));
   keys.push_back(switchKey("gizmos", "draw point and spot lights as glowing markers (forward pass)", "on",
                            [](S s) -> bool& { return s.lightGizmos; }));
   keys.push_back(exposureKey());

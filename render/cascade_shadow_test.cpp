@@ -11,6 +11,7 @@
 #include "gpu/headless_context.h"
 #include "render/gbuffer_readback_test_support.h"
 #include "render/renderer.h"
+#include "render/shared_shading.h"
 #include "scene/scene_loader.h"
 #include "spectral/table_test_support.h"
 
@@ -24,8 +25,8 @@ struct Ball {
 };
 // render/tests/sun_wide_ground.json's balls.
 const std::array<Ball, 3> kBalls{{{{-1.2f, 0.5f, 0.0f}, 0.5f}, {{0.6f, 0.3f, 1.2f}, 0.3f}, {{1.0f, 0.5f, -2.0f}, 0.5f}}};
-// Clearly, across the ray: beyond the nearest cascade's PCF reach (2 texels of 1.8 cm here: a
-// slice 9.3 m in radius over 1024 texels), its normal offset (1.5 texels) and the balls'
+// Clearly, across the ray: beyond the nearest cascade's PCF reach (2 texels of 1.9 cm here: a
+// slice 9.5 m in radius over 1024 texels), its normal offset (1.5 texels) and the balls'
 // tessellation, with room.
 constexpr float kMarginM = 0.08f;
 
@@ -58,6 +59,18 @@ Counts countGround(int cascades) {
     s.lights[0].castsShadows = shadows;
     Renderer renderer(s, cachedTestTable(), settings);
     renderer.renderFrame();
+    if (shadows) {
+      // The lighting pass's record of the sun: its first layer and a window per layer drawn.
+      const shared::GpuLight& sun = renderer.frameData().lights.at(0);
+      const std::vector<ShadowView>& views = renderer.shadowViews();
+      EXPECT_EQ(views.size(), static_cast<std::size_t>(cascades));
+      EXPECT_EQ(sun.shadowLayer, views.at(0).layer);
+      EXPECT_EQ(sun.shadowCascadeCount, cascades);
+      for (int c = 0; c < sun.shadowCascadeCount; ++c) {
+        EXPECT_TRUE(views.at(static_cast<std::size_t>(c)).drawn);
+        EXPECT_EQ(sun.shadowCascades[c], views.at(static_cast<std::size_t>(c)).cascadeWindow) << "cascade " << c;
+      }
+    }
     return std::pair{GBufferReadback(renderer), renderer.frameData().constants.inverseViewProjection};
   };
   const auto [shadowed, inverseViewProjection] = render(true);

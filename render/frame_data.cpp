@@ -153,7 +153,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
     for (const ShadowView& view : shadows) {
       if (view.lightIndex != static_cast<int>(i)) continue;
       if (g.shadowLayer >= 0) {  // a directional light's next cascade, or a point light's next face
-        if (light.type == LightType::Directional) g.shadowCascades[g.shadowCascadeCount++] = view.cascadeWindow;
+        if (light.type == LightType::Directional && view.drawn) g.shadowCascades[g.shadowCascadeCount++] = view.cascadeWindow;
         continue;
       }
       g.shadowLayer = view.layer;

@@ -189,7 +189,8 @@ ShadowCascading Renderer::shadowCascading(const FrameSettings& settings, const C
 }
 
 void Renderer::planShadows() {
-  std::vector<ShadowView> views = planShadowViews(mScene, mSettings.shadowMapSize, shadowCascading(mSettings, mCamera));
+  std::vector<ShadowView> views =
+      planShadowViews(mScene, mBounds, mSettings.shadowMapSize, shadowCascading(mSettings, mCamera));
   if (views.size() == mShadows.views.size()) {
     mShadows.views = std::move(views);
   } else {
@@ -318,6 +319,7 @@ void Renderer::shadowPass() {
   setOpaqueState();
   mShadowProgram.use();
   for (std::size_t i = 0; i < mShadows.views.size(); ++i) {
+    if (!mShadows.views[i].drawn) continue;
     const gpu::Framebuffer& fb = mShadows.framebuffers[i];
     fb.bind();
     fb.clearDepth(1.0f);

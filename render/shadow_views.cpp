@@ -36,11 +36,14 @@ constexpr float kPerspectiveDepthBias = 5e-5f;  // in the map's [0, 1] depth
 
 // The windows of a directional light's cascades over its whole-scene map (`wholeScene`, whose
 // x, y span the scene's bounding sphere, radius `radius` around `centre`): the camera's view
-// between its nearest and farthest sight of the sphere split into `count` slices, nearer ones
-// thinner (Zhang et al. 2006's practical split, three quarters logarithmic); each of the first
-// count − 1 is a square around the slice's bounding sphere, its centre moved in whole texels of its
-// own (a still light's texels then stay put as the camera moves); the last window is the whole
-// map. A window no smaller than the whole map is the whole map.
+// between the depths of its nearest and farthest sight of the sphere split into `count` slices,
+// nearer ones thinner (Zhang et al. 2006's practical split, three quarters logarithmic); each of
+// the first count − 1 is a square around the slice's bounding sphere, its radius rounded up to a
+// power of 2^(1/8) and its centre moved in whole texels of its own, so that the texels stay put
+// while the camera moves within a step; the last window is the whole map. A slice no smaller
+// than the whole map takes the whole map, and so do those beyond it. A window's scale is at most
+// 2²¹ / mapSize: its depth bias, one of its texels in the whole scene's depth range, stays eight
+// float steps below 1 or more.
 std::vector<glm::vec4> cascadeWindows(const glm::mat4& wholeScene, const glm::vec3& centre, float radius,
                                       const ShadowCascading& cascading, int mapSize) {
   const Camera& camera = cascading.camera;
@@ -49,11 +52,13 @@ std::vector<glm::vec4> cascadeWindows(const glm::mat4& wholeScene, const glm::ve
   glm::vec3 forward = camera.target - camera.position;
   if (!(glm::length(forward) > 0.0f)) return windows;
   forward = glm::normalize(forward);
-  const float toCentre = glm::length(centre - camera.position);
-  const float nearM = std::max(camera.nearPlane, toCentre - radius);
-  const float farM = std::max(std::min(camera.farPlane, toCentre + radius), 1.001f * nearM);
   const float slope = std::tan(0.5f * glm::radians(camera.verticalFovDeg)) *
-                      std::sqrt(1.0f + cascading.aspect * cascading.aspect);  // a slice's half-diagonal over its distance
+                      std::sqrt(1.0f + cascading.aspect * cascading.aspect);  // a slice's half-diagonal over its depth
+  // A point at distance d in view lies at a depth from d / √(1 + slope²) (in a corner) to d.
+  const float toCentre = glm::length(centre - camera.position);
+  const float nearM = std::max(camera.nearPlane, (toCentre - radius) / std::sqrt(1.0f + slope * slope));
+  const float farM = std::max(std::min(camera.farPlane, toCentre + radius), 1.001f * nearM);
+  const float maxScale = std::ldexp(1.0f, 21) / static_cast<float>(mapSize);
   auto split = [&](int i) {
     const float t = static_cast<float>(i) / static_cast<float>(count);
     return 0.75f * nearM * std::pow(farM / nearM, t) + 0.25f * (nearM + (farM - nearM) * t);
@@ -62,8 +67,10 @@ std::vector<glm::vec4> cascadeWindows(const glm::mat4& wholeScene, const glm::ve
     const float d0 = split(i), d1 = split(i + 1);
     // The sphere through the slice's eight corners, its centre on the view's axis.
     const float along = std::min(0.5f * (d0 + d1) * (1.0f + slope * slope), d1);
-    const float sliceRadius = std::max(std::hypot(along - d0, slope * d0), std::hypot(d1 - along, slope * d1));
-    const float scale = radius / sliceRadius;
+    const float sliceRadius = std::exp2(
+        std::ceil(8.0f * std::log2(std::max(std::hypot(along - d0, slope * d0), std::hypot(d1 - along, slope * d1)))) /
+        8.0f);
+    const float scale = std::min(radius / sliceRadius, maxScale);
     if (!(scale > 1.0f)) break;  // this slice and those beyond it need no finer map than the whole
     const glm::vec4 clip = wholeScene * glm::vec4(camera.position + forward * along, 1.0f);
     const float texel = 2.0f / (scale * static_cast<float>(mapSize));  // the window's texel in the whole map's clip units
@@ -76,7 +83,11 @@ std::vector<glm::vec4> cascadeWindows(const glm::mat4& wholeScene, const glm::ve
 }  // namespace
 
 std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize, const ShadowCascading& cascading) {
-  Bounds bounds = sceneBounds(scene);
+  return planShadowViews(scene, sceneBounds(scene), mapSize, cascading);
+}
+
+std::vector<ShadowView> planShadowViews(const Scene& scene, const Bounds& bounds, int mapSize,
+                                        const ShadowCascading& cascading) {
   glm::vec3 centre = 0.5f * (bounds.min + bounds.max);
   float radius = std::max(0.5f * glm::length(bounds.max - bounds.min), 1e-3f);
   float size = static_cast<float>(mapSize);
@@ -117,10 +128,14 @@ std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize, const S
       float texelM = 2.0f * radius / size;
       view.normalOffsetM = 1.5f * texelM;
       view.depthBias = 1.0f / size;  // one texel's width of depth: the range is 2·radius deep
+      bool wholeMapDrawn = false;
       for (const glm::vec4& window : cascadeWindows(view.lightFromWorld, centre, radius, cascading, mapSize)) {
         view.layer = static_cast<int>(views.size());
         view.cascadeWindow = window;
         view.viewProjection = shared::shadowCascadeFromWorld(view.lightFromWorld, window);
+        const bool wholeMap = window == glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);
+        view.drawn = !(wholeMap && wholeMapDrawn);
+        wholeMapDrawn = wholeMapDrawn || wholeMap;
         views.push_back(view);
       }
       continue;

@@ -26,6 +26,9 @@ struct ShadowView {
   glm::vec3 pointProjection{0.0f};  // point lights: shared::pointShadowProjection of the faces
   glm::mat4 lightFromWorld{1.0f};   // GpuLight::shadowFromWorld: directional, the whole-scene map's; spot, viewProjection
   glm::vec4 cascadeWindow{0.0f, 0.0f, 1.0f, 0.0f};  // directional: shared::shadowCascadeFromWorld's window
+  // False for a directional light's cascade that collapsed onto the whole map an earlier layer
+  // holds (the view's slices no smaller than the scene): its layer is kept, not drawn, not looked up.
+  bool drawn = true;
 };
 
 // How many layers a directional light's shadow takes (1: the whole scene's map alone; up to
@@ -38,5 +41,8 @@ struct ShadowCascading {
 };
 
 std::vector<ShadowView> planShadowViews(const Scene& scene, int mapSize, const ShadowCascading& cascading = {});
+// The same with the scene's bounds (sceneBounds) given, as a renderer keeps them.
+std::vector<ShadowView> planShadowViews(const Scene& scene, const Bounds& bounds, int mapSize,
+                                        const ShadowCascading& cascading);
 
 }  // namespace prism::render

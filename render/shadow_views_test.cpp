@@ -164,9 +164,10 @@ TEST(ShadowViews, ADirectionalLightsCascadesAreFittedToTheViewFinestNearTheCamer
   }
   EXPECT_EQ(views[3].cascadeWindow, glm::vec4(0.0f, 0.0f, 1.0f, 0.0f));
   EXPECT_EQ(views[3].viewProjection, views[3].lightFromWorld);
-  const float wholeTexelM = 2.0f * 1000.0f * std::sqrt(2.0f) / static_cast<float>(size);
-  EXPECT_LT(wholeTexelM / views[0].cascadeWindow.z, 0.02f);
+  const float wholeTexelM = views[0].normalOffsetM / 1.5f;  // the whole map's texel
   EXPECT_GT(wholeTexelM, 2.7f);
+  EXPECT_LT(wholeTexelM / views[0].cascadeWindow.z, 0.02f);
+  for (const ShadowView& v : views) EXPECT_TRUE(v.drawn) << "layer " << v.layer;
   // The ground in view up to 8 m away: inside the nearest cascade, no tap of its footprint clamped.
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> across(-1.0f, 1.0f), distance(1.0f, 8.0f);
@@ -183,6 +184,45 @@ TEST(ShadowViews, ADirectionalLightsCascadesAreFittedToTheViewFinestNearTheCamer
   ASSERT_EQ(one.size(), 1u);
   EXPECT_EQ(one[0].viewProjection, views[3].lightFromWorld);
   EXPECT_EQ(one[0].normalOffsetM, views[0].normalOffsetM);  // the whole map's: a cascade's is this / window.z
+}
+
+// A small scene seen from far away: every slice of the view is larger than the scene, so the
+// cascades collapse onto the whole map, drawn once; lights of every kind keep their layers in
+// light order, a point light's six, a directional light's four, a spot's one.
+TEST(ShadowViews, CascadesCollapseOntoTheWholeMapDrawnOnce) {
+  Scene scene;
+  scene.meshes.push_back(makeSphere({0.0f, 0.5f, 0.0f}, 0.5f));
+  scene.meshes.push_back(makePlane(glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec2(2.0f)));
+  Light point;
+  point.type = LightType::Point;
+  point.position = {1.0f, 2.0f, 1.0f};
+  Light sun;
+  sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.2f));
+  Light spot;
+  spot.type = LightType::Spot;
+  spot.position = {0.0f, 3.0f, 0.0f};
+  spot.direction = {0.0f, -1.0f, 0.0f};
+  scene.lights = {point, sun, spot};
+  ShadowCascading cascading;
+  cascading.count = 4;
+  cascading.camera.position = {0.0f, 20.0f, 60.0f};
+  cascading.camera.target = {0.0f, 0.0f, 0.0f};
+  cascading.camera.verticalFovDeg = 40.0f;
+  cascading.aspect = 16.0f / 9.0f;
+  const std::vector<ShadowView> views = planShadowViews(scene, 512, cascading);
+  ASSERT_EQ(views.size(), 11u);
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    EXPECT_EQ(views[i].layer, static_cast<int>(i));
+    EXPECT_EQ(views[i].lightIndex, i < 6 ? 0 : i < 10 ? 1 : 2);
+    EXPECT_EQ(views[i].drawn, i < 7 || i == 10) << "layer " << i;
+  }
+  for (std::size_t i = 6; i < 10; ++i) EXPECT_EQ(views[i].cascadeWindow, glm::vec4(0.0f, 0.0f, 1.0f, 0.0f));
+  // Near enough, the first slices are finer than the scene again: drawn, fitted.
+  cascading.camera.position = {0.0f, 1.0f, 2.5f};
+  const std::vector<ShadowView> near = planShadowViews(scene, 512, cascading);
+  ASSERT_EQ(near.size(), 11u);
+  EXPECT_GT(near[6].cascadeWindow.z, 1.0f);
+  EXPECT_TRUE(near[6].drawn);
 }
 
 }  // namespace

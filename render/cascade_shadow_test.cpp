@@ -79,10 +79,7 @@ Counts countGround(int cascades) {
   for (int y = 0; y < settings.height; ++y) {
     for (int x = 0; x < settings.width; ++x) {
       const auto i = static_cast<std::size_t>(y * settings.width + x);
-      const glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(settings.width),
-                         (static_cast<float>(y) + 0.5f) / static_cast<float>(settings.height));
-      const glm::vec4 h = inverseViewProjection * glm::vec4(2.0f * uv - 1.0f, 2.0f * shadowed.depth[i] - 1.0f, 1.0f);
-      const glm::vec3 p = glm::vec3(h) / h.w;
+      const glm::vec3 p = shadowed.worldPosition(x, y, settings.width, settings.height, inverseViewProjection);
       if (shadowed.ids[i] == 0 || std::abs(p.y) > 1e-3f) continue;  // the ground only
       const float lit = shadowed.accumulated(i).y, all = open.accumulated(i).y;
       if (!(all > 0.0f)) {

@@ -36,6 +36,15 @@ struct GBufferReadback {
   }
   // Pixel i's accumulated tristimulus.
   glm::vec3 accumulated(std::size_t i) const { return {lit[4 * i], lit[4 * i + 1], lit[4 * i + 2]}; }
+  // Pixel (x, y)'s point in the world (GL rows), from its depth through the frame's inverse
+  // view-projection.
+  glm::vec3 worldPosition(int x, int y, int width, int height, const glm::mat4& inverseViewProjection) const {
+    const glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(width),
+                       (static_cast<float>(y) + 0.5f) / static_cast<float>(height));
+    const float d = depth[static_cast<std::size_t>(y * width + x)];
+    const glm::vec4 h = inverseViewProjection * glm::vec4(2.0f * uv - 1.0f, 2.0f * d - 1.0f, 1.0f);
+    return glm::vec3(h) / h.w;
+  }
 
   std::vector<float> albedo, normal;
   std::vector<std::uint32_t> ids;

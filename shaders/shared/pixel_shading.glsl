@@ -66,8 +66,8 @@ PRISM_INLINE vec3 worldFromDepth(IN(mat4) inverseViewProjection, IN(vec2) uv, fl
 
 // The cascade a point is looked up in: a directional light's finest whose window holds the
 // point with five of its texels to spare, the PCF footprint's 2.5 and the normal offset's 1.5
-// and one more (the last, the whole scene's, when none does); 0 for other lights. The normal offset and depth bias are the whole
-// map's scaled by its texel, 1 / window.z.
+// and one more (the last, the whole scene's, when none does); 0 for other lights. The normal
+// offset and depth bias are the whole map's scaled by its texel, 1 / window.z.
 PRISM_INLINE int shadowCascade(IN(GpuLight) light, IN(vec3) position, int size) {
   if (light.type != kLightDirectional) return 0;
   PRISM_PRECISE vec4 clip = transformPoint(light.shadowFromWorld, position);

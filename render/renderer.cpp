@@ -175,6 +175,11 @@ void Renderer::reloadShaders() {
   mForwardProgram = std::move(forward);
   mPostProgram = std::move(post);
   mTechniquePasses = std::move(passes);
+  resetAccumulation();  // the shadow pass's own shaders may have changed: every map drawn again
+}
+
+void Renderer::resetAccumulation() {
+  std::fill(mShadows.drawnFrom.begin(), mShadows.drawnFrom.end(), std::nullopt);
   mAccumulated = 0;
 }
 
@@ -215,6 +220,7 @@ Renderer::Shadows Renderer::makeShadows(const Scene& scene, int mapSize, const S
     fb.label = "shadow map";
     s.framebuffers.emplace_back(fb);
   }
+  s.drawnFrom.resize(s.views.size());
   return s;
 }
 
@@ -280,6 +286,7 @@ void Renderer::renderFrame() {
   mFrame = buildFrameData(mScene, mSettings, mContext, mTable, mShadows.views, mFrameIndex++, mCameraTransform);
   uploadFrameData();
   setOpaqueState();  // every frame, for the passes after these two as well
+  mShadowLayersDrawn = 0;
   if (mAccumulated == 0) {  // what the last frames drew there holds while they accumulate
     hook("shadow");
     shadowPass();
@@ -319,12 +326,15 @@ void Renderer::shadowPass() {
   setOpaqueState();
   mShadowProgram.use();
   for (std::size_t i = 0; i < mShadows.views.size(); ++i) {
-    if (!mShadows.views[i].drawn) continue;
+    const ShadowView& view = mShadows.views[i];
+    if (!view.drawn || mShadows.drawnFrom[i] == view.viewProjection) continue;
     const gpu::Framebuffer& fb = mShadows.framebuffers[i];
     fb.bind();
     fb.clearDepth(1.0f);
-    mShadowProgram.setUniform("uLightViewProjection", mShadows.views[i].viewProjection);
+    mShadowProgram.setUniform("uLightViewProjection", view.viewProjection);
     for (const GpuMesh& mesh : mGpuScene.meshes()) mesh.vertexArray.draw();
+    mShadows.drawnFrom[i] = view.viewProjection;
+    ++mShadowLayersDrawn;
   }
 }
 

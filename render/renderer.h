@@ -14,6 +14,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -58,8 +59,10 @@ class Renderer {
   // gpu::GpuError with the first error as FILE:LINE and keeps the programs it had.
   void reloadShaders();
   const Camera& camera() const { return mCamera; }
-  // The next frame starts a new accumulation and draws the shadow maps and the G-buffer again.
-  void resetAccumulation() { mAccumulated = 0; }
+  // The next frame starts a new accumulation and draws the G-buffer and every shadow map again,
+  // as if every light had moved (a bench's worst case; the other restarts redraw a shadow map
+  // only where its view moved).
+  void resetAccumulation();
 
   // Pass boundaries for timing (e.g. gpu timer scopes): called with "shadow", "gbuffer",
   // "atmosphere" (scenes with a sky), "lighting", "prt" (the forward pass of scenes with PRT
@@ -69,9 +72,11 @@ class Renderer {
   void setPassHook(PassHook hook) { mPassHook = std::move(hook); }
 
   // Renders one frame into the accumulation and display targets (the shadow maps and the
-  // G-buffer only when accumulation restarts: "shadow" and "gbuffer" are then not hooked).
+  // G-buffer only when accumulation restarts: "shadow" and "gbuffer" are then not hooked; of the
+  // shadow maps, only those whose view moved since they were drawn).
   void renderFrame();
   int accumulatedFrames() const { return mAccumulated; }
+  int shadowLayersDrawn() const { return mShadowLayersDrawn; }  // by the last frame
 
   // Read-backs (they stall; not for a frame loop). Rows top first.
   std::vector<std::uint8_t> readDisplayRgba8() const;
@@ -112,6 +117,9 @@ class Renderer {
     std::vector<ShadowView> views;
     gpu::Texture2DArray maps;
     std::vector<gpu::Framebuffer> framebuffers;  // one per view
+    // Per layer, the view its depths were drawn from (none: not drawn since made or invalidated).
+    // The meshes are the renderer's for life, so a layer whose view is unchanged is not drawn again.
+    std::vector<std::optional<glm::mat4>> drawnFrom;
   };
   static Targets makeTargets(int width, int height, GBufferAlbedo albedo);
   static ShadowCascading shadowCascading(const FrameSettings& settings, const Camera& camera);
@@ -141,6 +149,7 @@ class Renderer {
   DisplayTransform mDisplayTransform;  // of mSettings and the camera's exposure
   FrameData mFrame;
   int mAccumulated = 0;
+  int mShadowLayersDrawn = 0;
   float mGizmoSum = 0.0f;  // the light markers' scale summed in the accumulation (forwardPass)
   std::uint32_t mFrameIndex = 0;
   PassHook mPassHook;

@@ -522,6 +522,59 @@ TEST(Renderer, OnlyARestartDrawsTheShadowMapsAndTheGBuffer) {
   EXPECT_NE(renderer.readMeanTristimulus(), before);
 }
 
+// A restart draws again only the shadow maps whose view moved: none for new settings or the same
+// camera; the sun's cascades, not its whole-scene map nor the spot's, for a moved camera; the
+// sun's for a turned sun; all of them after resetAccumulation. Each frame is, bit for bit, the
+// one a new renderer, which draws every map, makes there.
+TEST(Renderer, AShadowMapIsDrawnAgainOnlyWhenItsViewMoves) {
+  gpu::HeadlessContext context;
+  Scene scene = loadScene(kScenes / "textured_gltf.json");  // a spot, then the sun
+  ASSERT_EQ(scene.lights.at(1).type, LightType::Directional);
+  FrameSettings settings = smallFrame(RenderMode::JakobHanika);
+  settings.sampling.strategy = SamplingStrategy::Uniform;
+  Renderer renderer(scene, cachedTestTable(), settings);
+  auto drawnLayers = [&](int light) {
+    return static_cast<int>(std::count_if(renderer.shadowViews().begin(), renderer.shadowViews().end(), [&](const ShadowView& v) {
+      return v.drawn && (light < 0 || v.lightIndex == light);
+    }));
+  };
+  auto framed = [&] {
+    renderer.renderFrame();
+    return renderer.shadowLayersDrawn();
+  };
+  auto asNew = [&](const char* what) {
+    Renderer fresh(scene, cachedTestTable(), settings);
+    fresh.setCamera(renderer.camera());
+    fresh.renderFrame();
+    EXPECT_EQ(fresh.shadowLayersDrawn(), drawnLayers(-1)) << what;
+    EXPECT_EQ(renderer.readMeanTristimulus(), fresh.readMeanTristimulus()) << what;
+  };
+  EXPECT_EQ(framed(), drawnLayers(-1));
+  ASSERT_GE(drawnLayers(1), 3);  // the spot's map and the sun's cascades, none collapsed
+  EXPECT_EQ(framed(), 0);        // accumulating
+  settings.sampling.count = 8;
+  renderer.setSettings(settings);
+  EXPECT_EQ(framed(), 0);
+  renderer.setCamera(renderer.camera());
+  EXPECT_EQ(framed(), 0);
+
+  Camera moved = renderer.camera();
+  moved.position += glm::vec3(0.3f, 0.2f, -0.4f);
+  renderer.setCamera(moved);
+  const int afterMove = framed();
+  EXPECT_GT(afterMove, 0);
+  EXPECT_LE(afterMove, drawnLayers(1) - 1);  // neither the spot's map nor the sun's whole-scene one
+  asNew("moved camera");
+
+  scene.lights[1].direction = glm::normalize(glm::vec3(-0.3f, -1.0f, 0.1f));
+  renderer.sceneChanged();
+  EXPECT_EQ(framed(), drawnLayers(1));
+  asNew("turned sun");
+
+  renderer.resetAccumulation();
+  EXPECT_EQ(framed(), drawnLayers(-1));
+}
+
 // Coefficients stored in the G-buffer give the image the RGB albedo gives (the same lookup, per
 // fragment instead of per pixel; only the albedo's 16-bit storage differs), switched live.
 TEST(Renderer, GpuMemoryCountsWhatItHolds) {

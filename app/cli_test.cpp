@@ -476,6 +476,13 @@ TEST(Cli, RenderBenchAndDemoWriteTheirOutputs) {
   // The renderer's own count: at least the 64³ RGB32F upsampling table (9 MB).
   EXPECT_GT(j["gpu_memory_mb"]["rgb"].get<double>(), 9.0);
   EXPECT_GT(j["still_camera_16"]["ratio_to_moving"].get<double>(), 0.0);
+  // The orbiting camera draws the sun's finer cascades again where they moved, never its
+  // whole-scene layer (at 256², a finer cascade's texel sometimes holds it still for a frame).
+  const nlohmann::json& orbiting = j["orbiting_camera_16"];
+  EXPECT_EQ(orbiting["every_shadow_map_per_frame"].get<double>(), 4.0);
+  EXPECT_GT(orbiting["shadow_maps_per_frame"].get<double>(), 0.0);
+  EXPECT_LE(orbiting["shadow_maps_per_frame"].get<double>(), 3.0);
+  EXPECT_GT(orbiting["ratio_to_every_shadow_map"].get<double>(), 0.0);
   EXPECT_NE(slurp(dir / "plot.svg").find("<svg"), std::string::npos);
   // Under a camera or CIE 1964 the spectral configurations take it and the RGB ones CIE 1931:
   // the bench refused both, checking them against its RGB configuration.

@@ -1,9 +1,10 @@
 // `prism bench SCENE.json`: GPU time per pass from timer queries, RGB mode beside spectral modes
 // at several wavelength counts; the linear fit t(n) = a·n + b of frame time against the
 // wavelength count, spectral/RGB ratios, the GPU memory the renderer holds in each mode, and a
-// plot of frame time against n. Each timed frame is a moving camera's (accumulation restarts, so
-// the shadow maps and the G-buffer are drawn), but for one configuration, a still camera's frame
-// at 16 wavelengths, which accumulates and draws from the lighting pass on.
+// plot of frame time against n. Each timed frame restarts as if camera and lights had moved (the
+// G-buffer and every shadow map drawn), but for two configurations at 16 wavelengths: a still
+// camera's frame, which accumulates and draws from the lighting pass on, and a camera orbiting
+// under still lights, whose frames draw the shadow maps whose view it moves.
 //
 // The configurations are measured round by round (RGB, 4, 8, … λ, the G-buffer, water and sky
 // variants, then again), not each in one block: on a shared machine the load drifts during a run

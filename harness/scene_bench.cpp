@@ -235,7 +235,8 @@ void runSceneBench(const SceneBenchOptions& options) {
       settings.gbufferAlbedo == render::GBufferAlbedo::Coefficients ? coefficients16 : rgbAlbedo16;
   // A camera orbiting under still lights, against the same frame with every shadow map drawn
   // again (moving16): what keeping the maps whose view did not move saves.
-  const std::size_t orbiting16 = add("16 orbiting", renderer, configs[moving16].settings);
+  const render::FrameSettings movingSettings = configs[moving16].settings;  // add() grows configs
+  const std::size_t orbiting16 = add("16 orbiting", renderer, movingSettings);
   configs[orbiting16].orbit = true;
 
   // What each wavelength strategy costs a frame at 16 wavelengths (issue 16): the GPU draws 16

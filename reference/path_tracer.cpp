@@ -277,6 +277,15 @@ class PathTracer {
     }
   }
 
+  // The surface's emitted radiance at the path's wavelengths (0 where its material emits none).
+  vec4 emittedAt(const SurfaceHit& hit, const vec4& lambdaNm) const {
+    const Material& m = *mMaterials[static_cast<std::size_t>(hit.material)].material;
+    vec4 e(0.0f);
+    if (m.emission)
+      for (int j = 0; j < 4; ++j) e[j] = static_cast<float>(m.emission->at(lambdaNm[j]));
+    return e;
+  }
+
   // BRDF·cos for light arriving from l (unit), the rasteriser's model.
   vec4 reflection(const SurfaceHit& hit, const vec3& v, const vec3& l, const vec4& albedoOrN,
                   const vec4& k) const {
@@ -465,6 +474,9 @@ class PathTracer {
         vec3 v = -direction;
         vec4 albedoOrN, k;
         surfaceSpectra(hit, lambdaNm, albedoOrN, k);
+        // What the surface emits: seen from the camera, as the rasteriser shows it, and under
+        // global transport wherever a path meets it (so it lights the scene; no light is aimed at it).
+        if (depth == 0 || global) radiance += throughput * emittedAt(hit, lambdaNm);
         radiance += throughput * surfaceDirectLight(hit, v, lambdaNm, albedoOrN, k, medium);
         if (!global && mEnvironment) radiance += throughput * surfaceEnvironmentLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
         if (!global || depth + 1 >= mSettings.maxDepth) break;

@@ -256,6 +256,77 @@ TEST(PathTracer, WhiteFurnaceReturnsTheSurroundingRadianceEverywhere) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c] / expected[c], 1.0, 3e-3) << "channel " << c;
 }
 
+// The white furnace with an emitting sphere: under global transport every path that meets it
+// gathers its emission and then the background (albedo 1), so each pixel of it is L_e + L_b and
+// every other pixel L_b; under direct transport, with no background, it is L_e alone.
+TEST(PathTracer, AnEmittingSurfaceAddsItsRadianceToWhatItReflects) {
+  Scene scene;
+  scene.camera.position = {0.0f, 0.0f, 3.0f};
+  scene.camera.target = {0.0f, 0.0f, 0.0f};
+  Material emitter = constantReflectance(1.0);
+  Spectrum d65 = illuminant("D65");
+  emitter.emission = d65 * (50.0 / luminousIntegral(d65));
+  scene.materials.push_back(emitter);
+  scene.meshes.push_back(makeSphere({0.0f, 0.0f, 0.0f}, 1.0f, 64));
+  scene.background = glm::vec3(1.0f);  // D65 in sRGB: the emission's chromaticity
+  for (const bool global : {true, false}) {
+    scene.backgroundLuminance = global ? 100.0f : 0.0f;
+    ReferenceSettings settings = small(16);
+    settings.transport = global ? LightTransport::Global : LightTransport::Direct;
+    ReferenceImage image = renderReference(scene, srgbTable(), settings);
+    const double background = scene.backgroundLuminance, sphere = background + 50.0;
+    // Each pixel's Y against its closed form, in units of its own standard error (the variance
+    // image), and the sphere's mean.
+    int onSphere = 0;
+    double worstZ = 0.0, sphereMean = 0.0;
+    for (std::size_t i = 0; i < image.tristimulus.pixelCount(); ++i) {
+      const double y = image.tristimulus.pixels[3 * i + 1];
+      const bool hit = y > background + 25.0;
+      const double expected = hit ? sphere : background;
+      const double sigma = std::max(std::sqrt(static_cast<double>(image.variance.pixels[3 * i + 1])), 1e-6 * sphere);
+      worstZ = std::max(worstZ, std::abs(y - expected) / sigma);
+      onSphere += hit ? 1 : 0;
+      sphereMean += hit ? y : 0.0;
+    }
+    sphereMean /= onSphere;
+    std::printf("%s: %d of %zu pixels on the sphere, mean Y %.3f (expected %.0f), worst |z| %.2f\n",
+                global ? "global" : "direct", onSphere, image.tristimulus.pixelCount(), sphereMean, sphere, worstZ);
+    EXPECT_GT(onSphere, 200) << global;
+    EXPECT_NEAR(sphereMean / sphere, 1.0, 3e-3) << global;  // as the white furnace's mean
+    EXPECT_LT(worstZ, 5.0) << global;
+  }
+}
+
+// An emitter lights what sees it under global transport: a floor of albedo ρ inside a black
+// sphere that emits L_e all round sees L_e over its whole sky, irradiance π·L_e, so its radiance
+// is ρ·L_e; under direct transport, which aims only at the lights (none here), it is black.
+TEST(PathTracer, UnderGlobalTransportAnEmitterLightsWhatSeesIt) {
+  Scene scene;
+  scene.camera.position = {0.0f, 3.0f, 0.0f};
+  scene.camera.target = {0.0f, 0.0f, 0.0f};
+  scene.camera.up = {0.0f, 0.0f, -1.0f};
+  scene.camera.verticalFovDeg = 30.0f;
+  scene.camera.farPlane = 500.0f;
+  Material sky = constantReflectance(0.0);
+  Spectrum d65 = illuminant("D65");
+  sky.emission = d65 * (40.0 / luminousIntegral(d65));
+  scene.materials.push_back(constantReflectance(0.5));
+  scene.materials.push_back(sky);
+  scene.meshes.push_back(makePlane({0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {20.0f, 20.0f}));
+  scene.meshes.push_back(makeSphere({0.0f, 0.0f, 0.0f}, 100.0f, 64));
+  scene.meshes.back().material = 1;
+  for (const bool global : {true, false}) {
+    ReferenceSettings settings = small(64);
+    settings.transport = global ? LightTransport::Global : LightTransport::Direct;
+    const Eigen::Vector3d expected = (global ? 0.5 * 40.0 : 0.0) * perLuminance();
+    PlaneCheck check = checkPlane(renderReference(scene, srgbTable(), settings), expected);
+    std::printf("%s: floor mean Y %.4f (expected %.1f), worst |z| %.2f\n", global ? "global" : "direct", check.mean.y(),
+                expected.y(), check.worstZ);
+    EXPECT_NEAR(check.mean.y(), expected.y(), 3e-3 * 20.0) << global;
+    if (global) EXPECT_LT(check.worstZ, 5.0);  // as in the plane under a directional light
+  }
+}
+
 TEST(PathTracer, ErrorFallsAtLeastAsOneOverRootSamples) {
   Scene scene = litPlane(0.5, 1000.0f);
   const double expectedY = 0.5 * 1000.0 * 0.6 / kPi;

@@ -198,6 +198,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
              : m.reflectance ? shared::kMaterialMeasured
                              : shared::kMaterialBaseColour;
     g.lambertian = m.lambertian ? 1 : 0;
+    g.emission = shared::kNoEmission;
     if (g.kind != shared::kMaterialBaseColour) {
       g.spectra = spectraCount++;
       for (const shared::GpuBatch& batch : frame.batches) {
@@ -214,9 +215,20 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
         }
       }
     }
+    if (m.emission) {
+      g.emission = spectraCount++;
+      for (const shared::GpuBatch& batch : frame.batches) {
+        frame.materialSpectra.push_back(rgbMode ? emissionRgb(*m.emission, space) : at4(*m.emission, batch.lambdaNm));
+        frame.materialSpectra.push_back(glm::vec4(0.0f));
+      }
+    }
     frame.materials.push_back(g);
   }
-  if (frame.materials.empty()) frame.materials.push_back(shared::GpuMaterial{});
+  if (frame.materials.empty()) {
+    shared::GpuMaterial none{};
+    none.emission = shared::kNoEmission;
+    frame.materials.push_back(none);
+  }
   if (frame.materialSpectra.empty()) frame.materialSpectra.push_back(glm::vec4(0.0f));
 
   // The environment's light from above, in the lights' units (RGB mode: as a light's colour).

@@ -137,6 +137,10 @@ INSTANTIATE_TEST_SUITE_P(
                     ParityCase{"spheres_d65.json", RenderMode::JakobHanika, GBufferAlbedo::Rgb,
                                SamplingStrategy::Uniform, 0.0f, 1},
                     ParityCase{"cook_torrance_sweep.json", RenderMode::JakobHanika},
+                    // Emitting materials (a fixture), spectral and RGB.
+                    ParityCase{PRISM_RENDER_TEST_DIR "/emitters.json", RenderMode::JakobHanika, GBufferAlbedo::Rgb,
+                               SamplingStrategy::Lights},
+                    ParityCase{PRISM_RENDER_TEST_DIR "/emitters.json", RenderMode::Rgb},
                     ParityCase{"textured_gltf.json", RenderMode::JakobHanika},
                     ParityCase{"reef.json", RenderMode::JakobHanika},  // under water
                     ParityCase{"reef.json", RenderMode::Rgb},

@@ -27,8 +27,8 @@ static_assert(sizeof(GpuBatch) == 64 && offsetof(GpuBatch, toZ) == 48);
 static_assert(sizeof(GpuLight) == 208 && offsetof(GpuLight, type) == 12 && offsetof(GpuLight, intensity) == 28 &&
               offsetof(GpuLight, shadowLayer) == 40 && offsetof(GpuLight, shadowFromWorld) == 64 &&
               offsetof(GpuLight, shadowCascades) == 128 && offsetof(GpuLight, shadowCascadeCount) == 192);
-static_assert(sizeof(GpuMaterial) == 32 && offsetof(GpuMaterial, metallic) == 12 &&
-              offsetof(GpuMaterial, lambertian) == 28);
+static_assert(sizeof(GpuMaterial) == 48 && offsetof(GpuMaterial, metallic) == 12 &&
+              offsetof(GpuMaterial, lambertian) == 28 && offsetof(GpuMaterial, emission) == 32);
 static_assert(sizeof(FrameConstants) == 112 && offsetof(FrameConstants, cameraPositionW) == 64 &&
               offsetof(FrameConstants, mode) == 76 && offsetof(FrameConstants, viewportSize) == 80 &&
               offsetof(FrameConstants, batchCount) == 88 && offsetof(FrameConstants, filteredLookup) == 108);

@@ -91,6 +91,11 @@ struct Material {
   // base colour, texture and reflectance. Only PRT objects shade it (the loader refuses others),
   // and only by their environment (kSpectralTextureUnderLights).
   std::shared_ptr<const SpectralTexture> spectralTexture;
+  // Optional emitted radiance, the same from both faces and every direction: a photometrically
+  // normalised SPD times its luminance, so 683 lm/W · ∫ L(λ) ȳ(λ) dλ is the surface's luminance in
+  // cd/m². The rasteriser shows it where the surface is seen; it lights nothing else (the path
+  // tracer's global transport lets it light the scene).
+  std::optional<Spectrum> emission;
   int baseColourTexture = -1;         // index into Scene::textures, sRGB-encoded
   int metallicRoughnessTexture = -1;  // glTF: metallic in B, roughness in G, linear
   int normalTexture = -1;             // tangent-space normal map, linear

@@ -12,6 +12,8 @@ Spectrum sceneEmission(const Scene& scene, const RgbColourSpace& space, const Rg
   Spectrum emission;
   for (const Light& light : scene.lights) emission += light.spd * static_cast<double>(light.intensity);
   if (scene.backgroundLuminance > 0.0f) emission += std::numbers::pi * backgroundRadiance(scene, space, table).toDense();
+  for (const Material& m : scene.materials)
+    if (m.emission) emission += std::numbers::pi * *m.emission;
   return emission;
 }
 
@@ -28,6 +30,8 @@ WavelengthFitProblem sceneWavelengthFitProblem(const SamplingSettings& settings,
   };
   for (const Light& light : scene.lights) addLight(light.spd);
   if (scene.backgroundLuminance > 0.0f) addLight(std::numbers::pi * backgroundRadiance(scene, space, table).toDense());
+  for (const Material& m : scene.materials)  // an emitter seen is its spectrum on a white
+    if (m.emission) addLight(std::numbers::pi * *m.emission);
   // Nothing the frame's wavelengths would see (a scene lit only by a technique's own pass, or
   // dark): fitted under equal energy, so that the default strategy renders every scene.
   if (problem.lights.empty()) problem.lights.push_back(Spectrum::constant(1.0));

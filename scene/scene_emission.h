@@ -2,12 +2,12 @@
 // (spectral/sampling.h, spectral/wavelength_pdf.h), for the rasteriser's frames and the reference's
 // hero wavelengths alike, so that both sample the same pdf.
 //
-//   E(λ) = Σ_lights intensity·SPD(λ) + π·L_background(λ)
+//   E(λ) = Σ_lights intensity·SPD(λ) + π·L_background(λ) + Σ_emitting materials π·L_e(λ)
 //
 // Each light's SPD is normalised photometrically (scene.h), so intensity·SPD is the spectral
 // illuminance it gives a surface facing it (directional: lux) or at 1 m (point, spot: candela):
 // lights are weighed without their distance, which the scene does not fix per pixel. π·L is the
-// illuminance a uniform surround of radiance L gives. A technique's own light is a scene light
+// illuminance a uniform surround of radiance L gives, and an emitting material is weighed as one. A technique's own light is a scene light
 // (the sky's sun, at the top of the atmosphere); what a technique scatters (the sky's blue) has
 // no spectrum of its own here — the pdf's defensive share covers it.
 #pragma once
@@ -24,7 +24,8 @@ namespace prism {
 Spectrum sceneEmission(const Scene& scene, const RgbColourSpace& space, const RgbToSpectrumTable& table);
 
 // What the Optimised strategy fits for this scene (spectral/wavelength_fit.h): its lights, each
-// alone (distinct spectra once), and the background's π·L (equal energy when it has neither);
+// alone (distinct spectra once), the background's π·L and each emitting material's π·L_e, as a
+// light seen on the training reflectances (equal energy when it has none of them);
 // the standard training reflectances
 // plus the scene's own (materials' upsampled base colours, measured reflectances, conductors at
 // normal incidence); the settings' count and range.

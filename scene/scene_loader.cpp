@@ -277,12 +277,14 @@ class SceneParser {
     if (m.spectralTexture) mSpectrallyTextured.emplace_back(o, m.name);
     if (m.conductor && technique == "prt")
       o.fail("material '" + m.name + "' is a conductor, which PRT objects (diffuse by definition) cannot shade");
+    if (m.emission && technique == "prt")
+      o.fail("material '" + m.name + "' emits light, which PRT objects (lit by their transfer alone) do not show");
   }
 
   Material material(const Node& n, const std::string& name) {
     n.expectObject({"base_colour", "base_colour_srgb", "metallic", "roughness", "lambertian",
                     "reflectance", "conductor", "base_colour_texture", "metallic_roughness_texture", "normal_texture",
-                    "spectral_texture"});
+                    "spectral_texture", "emission"});
     Material m;
     m.name = name;
     if (n.has("base_colour") && n.has("base_colour_srgb"))
@@ -332,6 +334,13 @@ class SceneParser {
         if (n.has(other))
           n.child(other).fail(std::string("a lambertian material diffuses all of the light: give ") + other +
                               " or lambertian, not both");
+    }
+    if (auto e = n.optionalChild("emission")) {
+      // As a light's: its spectrum (any of a light's "spd" forms), normalised, times its luminance.
+      e->expectObject({"spd", "luminance"});
+      std::string label;
+      const Spectrum spectrum = spd(e->child("spd"), label);
+      m.emission = spectrum * static_cast<double>(e->child("luminance").numberF(Range::above(0.0)));
     }
     if (auto t = n.optionalChild("base_colour_texture")) m.baseColourTexture = texture(*t, true);
     if (auto t = n.optionalChild("metallic_roughness_texture")) m.metallicRoughnessTexture = texture(*t, false);

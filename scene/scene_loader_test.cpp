@@ -12,6 +12,7 @@
 #include "spectral/colour_space.h"
 #include "core/error.h"
 #include "core/error_test_support.h"
+#include "spectral/illuminant.h"
 #include "spectral/observer.h"
 #include "scene/scene_folder_test_support.h"
 
@@ -183,7 +184,18 @@ TEST_F(SceneFolder, UnknownKeyListsTheAllowedOnes) {
   EXPECT_EQ(errorOf([&] { loadScene(f); }),
             f.string() + ": /materials/m/base_color: unknown key (allowed: base_colour, base_colour_srgb, "
                          "metallic, roughness, lambertian, reflectance, conductor, base_colour_texture, "
-                         "metallic_roughness_texture, normal_texture, spectral_texture)");
+                         "metallic_roughness_texture, normal_texture, spectral_texture, emission)");
+}
+
+// An emitting material: a light's spectrum, normalised, times the luminance the file gives.
+TEST_F(SceneFolder, AnEmissionIsItsSpectrumAtItsLuminance) {
+  fs::path f = sceneWithMaterial(R"({"emission": {"spd": "blackbody:2700", "luminance": 250}})");
+  const Scene scene = loadScene(f);
+  ASSERT_TRUE(scene.materials.at(0).emission);
+  EXPECT_NEAR(luminousIntegral(*scene.materials.at(0).emission), 250.0, 250.0 * 1e-12);
+  Spectrum planck = illuminant("blackbody:2700");
+  const Spectrum& e = *scene.materials.at(0).emission;
+  EXPECT_NEAR(e.at(500.0) / e.at(600.0), planck.at(500.0) / planck.at(600.0), 1e-12);
 }
 
 TEST_F(SceneFolder, WrongTypesAndRangesNameThePlace) {

@@ -12,7 +12,8 @@
 //
 // Spectra. Flat arrays of vec4 (one batch each), indexed by the helpers below, which both sides
 // call: a light's normalised SPD (the light after the last, lightCount, is the background's
-// radiance); a material's measured reflectance (j = 0) or its conductor n (j = 0) and k (j = 1).
+// radiance); a material's measured reflectance (j = 0) or its conductor n (j = 0) and k (j = 1),
+// and, under its own index, its emitted radiance (j = 0).
 //
 // Techniques. Each technique declares its own block (constants and per-batch data) in its own
 // shared header (underwater.glsl, atmosphere_model.glsl) and packs it on the CPU
@@ -75,7 +76,14 @@ struct GpuMaterial {
   int kind;         // kMaterial*
   int spectra;      // index of its spectra (measured and conductor kinds)
   int lambertian;   // 1: the diffuse lobe alone
+  // Index of its emitted radiance's spectra (j = 0 of materialSpectrumIndex; RGB mode: its colour
+  // in cd/m²), or kNoEmission.
+  int emission;
+  int pad0;
+  int pad1;
+  int pad2;
 };
+const int kNoEmission = -1;
 
 // The lighting pass's per-frame constants: one std140 uniform block on the GPU (binding
 // kFrameConstantsBinding), the same struct on the CPU.

@@ -499,6 +499,7 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
 #endif
       radiance += reflection * arriving;
     }
+    if (material.emission != kNoEmission) radiance += frameMaterialSpectrum(material.emission, b, 0);
 #ifdef PRISM_TECHNIQUE_NEBULA
     vec4 nebulaLambdaNm = fc.mode == kModeRgb ? kNebulaRgbStandInNm : batch.lambdaNm;
     radiance += nebulaStarsReflected(fc, nebula, s, v, lambertian, b, nebulaLambdaNm, albedo, spectralConductor,

@@ -5,7 +5,7 @@ GpuLight frameLight(int l) {
   return GpuLight(vec3(l), 0, vec3(0.0), 0.0, 0.0, 0.0, -1, 0.0, 0.0, 0.0, 0.0, 0.0, mat4(1.0),
                   vec4[kMaxShadowCascades](vec4(0.0, 0.0, 1.0, 0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 1, 0, 0, 0);
 }
-GpuMaterial frameMaterial(int id) { return GpuMaterial(vec3(id), 0.0, 0.0, 0, 0, 0); }
+GpuMaterial frameMaterial(int id) { return GpuMaterial(vec3(id), 0.0, 0.0, 0, 0, 0, kNoEmission, 0, 0, 0); }
 vec4 frameLightSpectrum(int l, int b) { return vec4(l + b); }
 vec4 frameMaterialSpectrum(int s, int b, int j) { return vec4(s + b + j); }
 float shadowDepthAt(int layer, int x, int y) { return float(layer + x + y); }

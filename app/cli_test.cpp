@@ -1054,6 +1054,14 @@ TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
   Result sceneReport = run("prt report " + scene + " --samples 16 --json");
   ASSERT_EQ(sceneReport.exitCode, 0) << sceneReport.err;
   EXPECT_FALSE(nlohmann::json::parse(sceneReport.out)["spectral"].empty());
+  // An emitter's mesh baked as PRT reflects only: the report says so (its light was dropped unsaid).
+  std::filesystem::path glowing = writeTemp("prt_glowing.json", R"({"camera": {"position": [0, 1, 3], "target": [0, 0, 0]},
+    "materials": {"lamp": {"base_colour": [0.6, 0.3, 0.2], "emission": {"spd": "A", "luminance": 50}}},
+    "objects": [{"sphere": {"centre": [0, 0, 0], "radius": 0.5, "segments": 8}, "material": "lamp"}]})");
+  Result glowingReport = run("prt report " + glowing.string() + " --samples 16 --json");
+  ASSERT_EQ(glowingReport.exitCode, 0) << glowingReport.err;
+  EXPECT_NE(glowingReport.err.find("material 'lamp' emits light, which PRT's transfer does not carry"), std::string::npos)
+      << glowingReport.err;
   expectOneLineError("prt report --patch-vertices 4 --samples 16 --colours-m 99 --colours x.ply", "--colours-m", cache);
 
   // A scene's own PRT section: `prt bake` makes the bake its renderer reads (the section's

@@ -79,6 +79,9 @@ PrtInput loadPrtInput(const std::filesystem::path& input, bool withReflectances)
         fmt::print(stderr, "prism: warning: {}: material '{}' has a texture, which the report does not read: it takes "
                            "its {}\n", input.string(), material.name,
                    material.reflectance ? "measured reflectance" : "base colour");
+      if (used && material.emission)
+        fmt::print(stderr, "prism: warning: {}: material '{}' emits light, which PRT's transfer does not carry: the "
+                           "report takes its reflectance alone\n", input.string(), material.name);
       if (material.reflectance) {
         object.reflectances.push_back(*material.reflectance);
       } else {

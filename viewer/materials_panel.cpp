@@ -1,11 +1,13 @@
 // The materials panel: one material at a time, its base colour (edited in sRGB), roughness,
-// metalness and conductor, and a plot of its reflectance: measured, or upsampled from its colour.
+// metalness, conductor and an emitter's luminance, and a plot of its reflectance: measured, or
+// upsampled from its colour.
 #include <imgui.h>
 
 #include <algorithm>
 
 #include "render/shared_shading.h"
 #include "scene/conductors.h"
+#include "spectral/observer.h"
 #include "spectral/rgb_intent.h"
 #include "viewer/panel_widgets.h"
 #include "viewer/panels.h"
@@ -62,6 +64,14 @@ class MaterialsPanel final : public Panel {
     ImGui::EndDisabled();
     if (onPrt && !m.conductor) ImGui::TextDisabled("(PRT objects use it: they are diffuse)");
     else if (m.lambertian) ImGui::TextDisabled("(lambertian: all of the light diffused)");
+    if (m.emission) {  // its luminance, the spectrum's shape kept (the scene file gives the spectrum)
+      float luminance = static_cast<float>(luminousIntegral(*m.emission));
+      if (ImGui::SliderFloat("emission cd/m2", &luminance, 0.01f, 1e5f, "%.3g", ImGuiSliderFlags_Logarithmic) &&
+          luminance > 0.0f) {
+        *m.emission = *m.emission * (static_cast<double>(luminance) / luminousIntegral(*m.emission));
+        changed = true;
+      }
+    }
     reflectancePlot(m, context.table);
   }
 

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/json_schema.h"
 #include "render/setting_keys.h"
+#include "spectral/observer.h"
 #include "viewer/light_spectrum.h"
 
 namespace prism::viewer {
@@ -52,7 +53,19 @@ void setLightKey(Scene& scene, const std::string& key, const std::vector<std::st
   }
 }
 
-// material.NAME.base-colour R,G,B, material.NAME.roughness X, material.NAME.metallic X.
+// An emitting material's luminance, its spectrum's shape kept; refused where it emits nothing (the
+// scene file gives the spectrum) and at 0 or less (the scene file's bound).
+void setEmissionLuminance(Material& m, const std::string& key, const std::string& value) {
+  if (!m.emission)
+    throw Error(fmt::format("{}: {} emits no light (its emission's spectrum is the scene file's)", excerpt(key),
+                            excerpt(m.name)));
+  const float luminance = render::parseFloatWithin(key, value, 0.0f, static_cast<float>(schema::kFloatInputLimit));
+  if (!(luminance > 0.0f)) throw Error(fmt::format("{}: expected a luminance above 0, got \"{}\"", excerpt(key), excerpt(value)));
+  *m.emission = *m.emission * (static_cast<double>(luminance) / luminousIntegral(*m.emission));
+}
+
+// material.NAME.base-colour R,G,B, material.NAME.roughness X, material.NAME.metallic X,
+// material.NAME.emission-luminance X (cd/m², an emitting material's: its spectrum's shape kept).
 void setMaterialKey(Scene& scene, const std::string& key, const std::vector<std::string>& parts,
                     const std::string& value) {
   auto it = std::find_if(scene.materials.begin(), scene.materials.end(),
@@ -71,7 +84,10 @@ void setMaterialKey(Scene& scene, const std::string& key, const std::vector<std:
     it->baseColour = c;
   } else if (parts[2] == "roughness") it->roughness = render::parseFloatWithin(key, value, 0.0f, 1.0f);
   else if (parts[2] == "metallic") it->metallic = render::parseFloatWithin(key, value, 0.0f, 1.0f);
-  else throw Error(fmt::format("unknown setting \"{}\" (material.NAME.base-colour, roughness, metallic)", excerpt(key)));
+  else if (parts[2] == "emission-luminance") setEmissionLuminance(*it, key, value);
+  else
+    throw Error(fmt::format("unknown setting \"{}\" (material.NAME.base-colour, roughness, metallic, emission-luminance)",
+                            excerpt(key)));
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 
 #include "core/error.h"
 #include "scene/conductors.h"
+#include "spectral/illuminant.h"
+#include "spectral/observer.h"
 
 namespace prism::viewer {
 namespace {
@@ -48,6 +50,22 @@ TEST(SceneSettings, MovesAPointLightAndTurnsItsShadowsOnAndOff) {
   EXPECT_EQ(scene.lights[0].intensity, 250.0f);
   EXPECT_TRUE(applySceneSetting(scene, "material.floor.roughness", "0.3"));
   EXPECT_EQ(scene.materials[0].roughness, 0.3f);
+}
+
+// An emitter's luminance, its spectrum's shape kept; a material that emits nothing is refused.
+TEST(SceneSettings, AnEmittersLuminanceKeepsItsSpectrum) {
+  Scene scene = twoLights();
+  EXPECT_EQ(error(scene, "material.floor.emission-luminance", "10"),
+            "material.floor.emission-luminance: floor emits no light (its emission's spectrum is the scene file's)");
+  const Spectrum a = illuminant("A");
+  scene.materials[0].emission = a * (5.0 / luminousIntegral(a));
+  EXPECT_TRUE(applySceneSetting(scene, "material.floor.emission-luminance", "80"));
+  EXPECT_NEAR(luminousIntegral(*scene.materials[0].emission), 80.0, 80.0 * 1e-6);
+  EXPECT_NEAR(scene.materials[0].emission->at(450.0) / scene.materials[0].emission->at(650.0), a.at(450.0) / a.at(650.0),
+              1e-12);
+  EXPECT_EQ(error(scene, "material.floor.emission-luminance", "0"),
+            "material.floor.emission-luminance: expected a luminance above 0, got \"0\"");
+  EXPECT_NEAR(luminousIntegral(*scene.materials[0].emission), 80.0, 80.0 * 1e-6);  // nothing half-set
 }
 
 TEST(SceneSettings, ALightsSpdComesFromACsvFileAsThePanelsDoes) {

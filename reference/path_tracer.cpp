@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "reference/path_medium.h"
 #include "reference/ray_scene.h"
 #include "reference/surface_hit.h"
 #include "scene/camera_transform.h"
@@ -76,76 +77,8 @@ vec3 offsetOrigin(const vec3& p, const vec3& geometricNormal) {
   return p + geometricNormal * (1e-4f * scale);
 }
 
-// An orthonormal frame around unit n (Duff et al. 2017, "Building an Orthonormal Basis, Revisited").
-void frame(const vec3& n, vec3& t, vec3& b) {
-  float sign = std::copysign(1.0f, n.z);
-  float a = -1.0f / (sign + n.z);
-  float c = n.x * n.y * a;
-  t = vec3(1.0f + sign * n.x * n.x * a, sign * c, -sign * n.x);
-  b = vec3(c, sign + n.y * n.y * a, -n.y);
-}
-
-// The medium's coefficients at a path's four wavelengths.
-struct MediumAt {
-  vec4 sigmaS{0.0f};
-  vec4 sigmaT{0.0f};
-};
-
-// The part of the ray [tMin, tMax] inside the medium's region (slab test); empty when
-// tEnter >= tExit.
-void mediumInterval(const HomogeneousMedium& medium, const vec3& origin, const vec3& direction,
-                    float tMin, float tMax, float& tEnter, float& tExit) {
-  tEnter = tMin;
-  tExit = tMax;
-  if (!medium.region) return;
-  for (int a = 0; a < 3; ++a) {
-    float inverse = 1.0f / direction[a];
-    float t0 = (medium.region->min[a] - origin[a]) * inverse;
-    float t1 = (medium.region->max[a] - origin[a]) * inverse;
-    if (t0 > t1) std::swap(t0, t1);
-    if (std::isnan(t0) || std::isnan(t1)) {  // parallel to the slab, on its boundary plane
-      if (origin[a] < medium.region->min[a] || origin[a] > medium.region->max[a]) tExit = tEnter;
-      continue;
-    }
-    tEnter = std::max(tEnter, t0);
-    tExit = std::min(tExit, t1);
-  }
-}
-
-// Henyey & Greenstein 1941's phase function of the angle between the light's direction of travel
-// before and after scattering, per steradian.
-float henyeyGreenstein(float cosTheta, float g) {
-  float d = 1.0f + g * g - 2.0f * g * cosTheta;
-  return (1.0f - g * g) / (4.0f * kPi * d * std::sqrt(d));
-}
-
-// A direction of travel after scattering, drawn from the phase function itself (its inverse CDF,
-// pbrt-v3 §15.2.3), so that the path's weight does not change.
-vec3 sampleHenyeyGreenstein(const vec3& travel, float g, float u1, float u2) {
-  float cosTheta;
-  if (std::abs(g) < 1e-3f) {
-    cosTheta = 1.0f - 2.0f * u1;
-  } else {
-    float q = (1.0f - g * g) / (1.0f - g + 2.0f * g * u1);
-    cosTheta = std::clamp((1.0f + g * g - q * q) / (2.0f * g), -1.0f, 1.0f);
-  }
-  float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
-  float phi = 2.0f * kPi * u2;
-  vec3 t, b;
-  frame(travel, t, b);
-  return glm::normalize(t * (sinTheta * std::cos(phi)) + b * (sinTheta * std::sin(phi)) + travel * cosTheta);
-}
-
 vec4 exp4(const vec4& v) { return vec4(std::exp(v.x), std::exp(v.y), std::exp(v.z), std::exp(v.w)); }
 float mean4(const vec4& v) { return 0.25f * (v.x + v.y + v.z + v.w); }
-
-// The medium the paths cross: a technique's (the water's: everything below its surface), else
-// the scene's, if any.
-std::optional<HomogeneousMedium> effectiveMedium(const Scene& scene) {
-  if (std::optional<TechniqueMedium> m = scene.techniques.medium(scene.camera.position))
-    return HomogeneousMedium{m->sigmaA, m->sigmaS, m->g, Bounds{m->regionMin, m->regionMax}};
-  return scene.medium;
-}
 
 class PathTracer {
  public:
@@ -359,7 +292,7 @@ class PathTracer {
     float r = std::max(hit.roughness, 0.02f);  // as microfacetTerms clamps it
     float alpha = r * r;
     vec3 t, b;
-    frame(n, t, b);
+    orthonormalFrame(n, t, b);
     float u1 = random.next(), u2 = random.next();
     if (random.next() < specularShare) {
       // GGX normal distribution D(h)·(n·h) (Walter et al. 2007, Eq. 35–36), then reflect.

@@ -30,8 +30,11 @@ WavelengthFitProblem sceneWavelengthFitProblem(const SamplingSettings& settings,
   };
   for (const Light& light : scene.lights) addLight(light.spd);
   if (scene.backgroundLuminance > 0.0f) addLight(std::numbers::pi * backgroundRadiance(scene, space, table).toDense());
-  for (const Material& m : scene.materials)  // an emitter seen is its spectrum on a white
-    if (m.emission) addLight(std::numbers::pi * *m.emission);
+  // An emitter seen is its spectrum on a white. Each light is fitted under its own white, so its
+  // level does not matter: normalised, as the lights' SPDs are, so that an edit of its luminance
+  // (the viewer's slider) finds the cached fit rather than fitting again.
+  for (const Material& m : scene.materials)
+    if (m.emission) addLight(*m.emission * (1.0 / luminousIntegral(*m.emission)));
   // Nothing the frame's wavelengths would see (a scene lit only by a technique's own pass, or
   // dark): fitted under equal energy, so that the default strategy renders every scene.
   if (problem.lights.empty()) problem.lights.push_back(Spectrum::constant(1.0));

@@ -24,8 +24,9 @@ namespace prism {
 Spectrum sceneEmission(const Scene& scene, const RgbColourSpace& space, const RgbToSpectrumTable& table);
 
 // What the Optimised strategy fits for this scene (spectral/wavelength_fit.h): its lights, each
-// alone (distinct spectra once), the background's π·L and each emitting material's π·L_e, as a
-// light seen on the training reflectances (equal energy when it has none of them);
+// alone (distinct spectra once), the background's π·L and each emitting material's spectrum
+// (normalised: its luminance changes no fit), as a light seen on the training reflectances (equal
+// energy when it has none of them);
 // the standard training reflectances
 // plus the scene's own (materials' upsampled base colours, measured reflectances, conductors at
 // normal incidence); the settings' count and range.

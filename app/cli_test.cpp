@@ -1054,7 +1054,8 @@ TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
   Result sceneReport = run("prt report " + scene + " --samples 16 --json");
   ASSERT_EQ(sceneReport.exitCode, 0) << sceneReport.err;
   EXPECT_FALSE(nlohmann::json::parse(sceneReport.out)["spectral"].empty());
-  // An emitter's mesh baked as PRT reflects only: the report says so (its light was dropped unsaid).
+  // An emitter's mesh baked as PRT reflects only: the report says so, as the bake does (its light
+  // was dropped unsaid).
   std::filesystem::path glowing = writeTemp("prt_glowing.json", R"({"camera": {"position": [0, 1, 3], "target": [0, 0, 0]},
     "materials": {"lamp": {"base_colour": [0.6, 0.3, 0.2], "emission": {"spd": "A", "luminance": 50}}},
     "objects": [{"sphere": {"centre": [0, 0, 0], "radius": 0.5, "segments": 8}, "material": "lamp"}]})");
@@ -1062,6 +1063,10 @@ TEST(Cli, PrtBakeCachesAndReportSweepsTheBasis) {
   ASSERT_EQ(glowingReport.exitCode, 0) << glowingReport.err;
   EXPECT_NE(glowingReport.err.find("material 'lamp' emits light, which PRT's transfer does not carry"), std::string::npos)
       << glowingReport.err;
+  Result glowingBake = run("prt bake " + glowing.string() + " --samples 16", cache);
+  ASSERT_EQ(glowingBake.exitCode, 0) << glowingBake.err;
+  EXPECT_NE(glowingBake.err.find("material 'lamp' emits light, which PRT's transfer does not carry"), std::string::npos)
+      << glowingBake.err;
   expectOneLineError("prt report --patch-vertices 4 --samples 16 --colours-m 99 --colours x.ply", "--colours-m", cache);
 
   // A scene's own PRT section: `prt bake` makes the bake its renderer reads (the section's

@@ -69,6 +69,11 @@ PrtInput loadPrtInput(const std::filesystem::path& input, bool withReflectances)
   object.vertexMaterial = std::move(gathered.vertexMaterial);
   const prt::PrtMesh& mesh = object.mesh;
   if (mesh.indices.empty()) throw Error(input.string() + ": no triangles to bake");
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    if (scene.materials[i].emission && std::ranges::find(object.vertexMaterial, static_cast<int>(i)) != object.vertexMaterial.end())
+      fmt::print(stderr, "prism: warning: {}: material '{}' emits light, which PRT's transfer does not carry: PRT shades "
+                         "it by its reflectance alone\n", input.string(), scene.materials[i].name);
+  }
   if (withReflectances) {
     const RgbToSpectrumTable* table = nullptr;
     for (const Material& material : scene.materials) {
@@ -79,9 +84,6 @@ PrtInput loadPrtInput(const std::filesystem::path& input, bool withReflectances)
         fmt::print(stderr, "prism: warning: {}: material '{}' has a texture, which the report does not read: it takes "
                            "its {}\n", input.string(), material.name,
                    material.reflectance ? "measured reflectance" : "base colour");
-      if (used && material.emission)
-        fmt::print(stderr, "prism: warning: {}: material '{}' emits light, which PRT's transfer does not carry: the "
-                           "report takes its reflectance alone\n", input.string(), material.name);
       if (material.reflectance) {
         object.reflectances.push_back(*material.reflectance);
       } else {

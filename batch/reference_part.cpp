@@ -145,7 +145,7 @@ std::string sceneHash(const std::filesystem::path& scene, const std::vector<std:
       values(material.conductor->n.values());
       values(material.conductor->k.values());
     }
-    if (material.emission) values(material.emission->values());
+    if (material.emission) values(material.emission->radiance().values());
   }
   for (const Light& light : loaded.lights) values(light.spd.values());
   for (const auto& section : loaded.techniques.all()) hash = section->hashLoadedData(hash);

@@ -215,7 +215,7 @@ class PathTracer {
     const Material& m = *mMaterials[static_cast<std::size_t>(hit.material)].material;
     vec4 e(0.0f);
     if (m.emission)
-      for (int j = 0; j < 4; ++j) e[j] = static_cast<float>(m.emission->at(lambdaNm[j]));
+      for (int j = 0; j < 4; ++j) e[j] = static_cast<float>(m.emission->spd.at(lambdaNm[j])) * m.emission->luminance;
     return e;
   }
 

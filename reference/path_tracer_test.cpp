@@ -265,7 +265,7 @@ TEST(PathTracer, AnEmittingSurfaceAddsItsRadianceToWhatItReflects) {
   scene.camera.target = {0.0f, 0.0f, 0.0f};
   Material emitter = constantReflectance(1.0);
   Spectrum d65 = illuminant("D65");
-  emitter.emission = d65 * (50.0 / luminousIntegral(d65));
+  emitter.emission = Emission{d65 * (1.0 / luminousIntegral(d65)), 50.0f};
   scene.materials.push_back(emitter);
   scene.meshes.push_back(makeSphere({0.0f, 0.0f, 0.0f}, 1.0f, 64));
   scene.background = glm::vec3(1.0f);  // D65 in sRGB: the emission's chromaticity
@@ -309,7 +309,7 @@ TEST(PathTracer, UnderGlobalTransportAnEmitterLightsWhatSeesIt) {
   scene.camera.farPlane = 500.0f;
   Material sky = constantReflectance(0.0);
   Spectrum d65 = illuminant("D65");
-  sky.emission = d65 * (40.0 / luminousIntegral(d65));
+  sky.emission = Emission{d65 * (1.0 / luminousIntegral(d65)), 40.0f};
   scene.materials.push_back(constantReflectance(0.5));
   scene.materials.push_back(sky);
   scene.meshes.push_back(makePlane({0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {20.0f, 20.0f}));

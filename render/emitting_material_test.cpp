@@ -37,7 +37,7 @@ Worst worstEmitterPixel(const Scene& scene, const FrameSettings& settings, int f
     if (frame.ids[i] == 0) continue;  // the background
     const Material& m = scene.materials.at(frame.ids[i] - 1);
     if (!m.emission || !m.lambertian || m.baseColour != glm::vec3(0.0f)) continue;
-    const Eigen::Vector3d truth = luminousTristimulus(*m.emission);
+    const Eigen::Vector3d truth = luminousTristimulus(m.emission->radiance());
     const glm::dvec3 expected(truth.x(), truth.y(), truth.z());
     const glm::dvec3 shown = glm::dvec3(frame.accumulated(i)) / static_cast<double>(frame.lit[4 * i + 3]);
     worst.luminance = std::max(worst.luminance, std::abs(shown.y / expected.y - 1.0));
@@ -53,7 +53,7 @@ TEST(EmittingMaterials, ShowTheirOwnLuminanceAndChromaticity) {
   const Scene scene = loadScene(std::filesystem::path(PRISM_RENDER_TEST_DIR) / "emitters.json");
   const auto tube = std::ranges::find(scene.materials, "tube", &Material::name);
   ASSERT_NE(tube, scene.materials.end());
-  EXPECT_NEAR(luminousIntegral(*tube->emission), 400.0, 400.0 * 1e-12);  // as the file says
+  EXPECT_NEAR(luminousIntegral(tube->emission->radiance()), 400.0, 400.0 * 1e-12);  // as the file says
   FrameSettings settings;
   settings.width = 160;
   settings.height = 90;
@@ -91,7 +91,7 @@ TEST(EmittingMaterials, AddTheirEmissionToWhatTheyReflect) {
   Scene dark = scene;
   const auto flame = std::ranges::find(dark.materials, "flame", &Material::name);
   ASSERT_NE(flame, dark.materials.end());
-  const Spectrum emission = *flame->emission;
+  const Spectrum emission = flame->emission->radiance();
   flame->emission.reset();
   FrameSettings settings;
   settings.width = 160;

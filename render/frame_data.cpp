@@ -218,7 +218,8 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
     if (m.emission) {
       g.emission = spectraCount++;
       for (const shared::GpuBatch& batch : frame.batches) {
-        frame.materialSpectra.push_back(rgbMode ? emissionRgb(*m.emission, space) : at4(*m.emission, batch.lambdaNm));
+        frame.materialSpectra.push_back(rgbMode ? emissionRgb(m.emission->spd, space) * m.emission->luminance
+                                                : at4(m.emission->spd, batch.lambdaNm, m.emission->luminance));
         frame.materialSpectra.push_back(glm::vec4(0.0f));
       }
     }

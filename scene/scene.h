@@ -76,6 +76,15 @@ struct ConductorIor {
   Spectrum k;
 };
 
+// A surface's emitted radiance: its spectrum's shape, normalised photometrically as a light's
+// (683 lm/W · ∫ S ȳ dλ = 1), and its luminance in cd/m², kept apart so that an edit of the
+// luminance leaves the shape, and what is fitted to it, bit for bit.
+struct Emission {
+  Spectrum spd;
+  float luminance = 0.0f;
+  Spectrum radiance() const { return spd * static_cast<double>(luminance); }
+};
+
 struct Material {
   std::string name;
   glm::vec3 baseColour{0.8f};  // linear RGB albedo in [0, 1] (multiplies the texture)
@@ -91,11 +100,10 @@ struct Material {
   // base colour, texture and reflectance. Only PRT objects shade it (the loader refuses others),
   // and only by their environment (kSpectralTextureUnderLights).
   std::shared_ptr<const SpectralTexture> spectralTexture;
-  // Optional emitted radiance, the same from both faces and every direction: a photometrically
-  // normalised SPD times its luminance, so 683 lm/W · ∫ L(λ) ȳ(λ) dλ is the surface's luminance in
-  // cd/m². The rasteriser shows it where the surface is seen; it lights nothing else (the path
-  // tracer's global transport lets it light the scene).
-  std::optional<Spectrum> emission;
+  // Optional emitted radiance, the same from both faces and every direction (see Emission). The
+  // rasteriser shows it where the surface is seen; it lights nothing else (the path tracer's
+  // global transport lets it light the scene).
+  std::optional<Emission> emission;
   int baseColourTexture = -1;         // index into Scene::textures, sRGB-encoded
   int metallicRoughnessTexture = -1;  // glTF: metallic in B, roughness in G, linear
   int normalTexture = -1;             // tangent-space normal map, linear

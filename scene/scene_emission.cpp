@@ -1,19 +1,35 @@
 #include "scene/scene_emission.h"
 
+#include <algorithm>
 #include <numbers>
+#include <vector>
 
 #include "scene/scene_spectra.h"
 #include "spectral/rgb_intent.h"
 #include "spectral/wavelength_fit.h"
 
 namespace prism {
+namespace {
+
+// The emitting materials some mesh shows (one defined but used by none emits nothing).
+std::vector<const Emission*> shownEmissions(const Scene& scene) {
+  std::vector<const Emission*> out;
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const bool shown = std::ranges::any_of(scene.meshes, [&](const Mesh& mesh) {
+      return static_cast<std::size_t>(mesh.material) == i;
+    });
+    if (shown && scene.materials[i].emission) out.push_back(&*scene.materials[i].emission);
+  }
+  return out;
+}
+
+}  // namespace
 
 Spectrum sceneEmission(const Scene& scene, const RgbColourSpace& space, const RgbToSpectrumTable& table) {
   Spectrum emission;
   for (const Light& light : scene.lights) emission += light.spd * static_cast<double>(light.intensity);
   if (scene.backgroundLuminance > 0.0f) emission += std::numbers::pi * backgroundRadiance(scene, space, table).toDense();
-  for (const Material& m : scene.materials)
-    if (m.emission) emission += std::numbers::pi * *m.emission;
+  for (const Emission* e : shownEmissions(scene)) emission += std::numbers::pi * e->radiance();
   return emission;
 }
 
@@ -31,10 +47,9 @@ WavelengthFitProblem sceneWavelengthFitProblem(const SamplingSettings& settings,
   for (const Light& light : scene.lights) addLight(light.spd);
   if (scene.backgroundLuminance > 0.0f) addLight(std::numbers::pi * backgroundRadiance(scene, space, table).toDense());
   // An emitter seen is its spectrum on a white. Each light is fitted under its own white, so its
-  // level does not matter: normalised, as the lights' SPDs are, so that an edit of its luminance
-  // (the viewer's slider) finds the cached fit rather than fitting again.
-  for (const Material& m : scene.materials)
-    if (m.emission) addLight(*m.emission * (1.0 / luminousIntegral(*m.emission)));
+  // level does not matter: its normalised SPD, as a light's, so that an edit of its luminance (the
+  // viewer's slider) finds the cached fit rather than fitting again.
+  for (const Emission* e : shownEmissions(scene)) addLight(e->spd);
   // Nothing the frame's wavelengths would see (a scene lit only by a technique's own pass, or
   // dark): fitted under equal energy, so that the default strategy renders every scene.
   if (problem.lights.empty()) problem.lights.push_back(Spectrum::constant(1.0));

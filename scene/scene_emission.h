@@ -7,7 +7,8 @@
 // Each light's SPD is normalised photometrically (scene.h), so intensity·SPD is the spectral
 // illuminance it gives a surface facing it (directional: lux) or at 1 m (point, spot: candela):
 // lights are weighed without their distance, which the scene does not fix per pixel. π·L is the
-// illuminance a uniform surround of radiance L gives, and an emitting material is weighed as one. A technique's own light is a scene light
+// illuminance a uniform surround of radiance L gives, and an emitting material is weighed as one
+// (a material no mesh shows emits nothing). A technique's own light is a scene light
 // (the sky's sun, at the top of the atmosphere); what a technique scatters (the sky's blue) has
 // no spectrum of its own here — the pdf's defensive share covers it.
 #pragma once

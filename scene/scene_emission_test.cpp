@@ -34,6 +34,27 @@ TEST(SceneEmission, SumsTheLightsByIntensityAndTheBackgroundAsTheIlluminanceItGi
   EXPECT_NEAR(luminousIntegral(sceneEmission(scene, colourSpace("srgb"), cachedTestTable())) / (1050.0 + 100.0 * std::numbers::pi), 1.0, 1e-3);
 }
 
+// An emitting material is weighed as a background of its radiance, once a mesh shows it; the fit
+// takes its spectrum as one more light, whatever its luminance.
+TEST(SceneEmission, AnEmitterCountsWhereAMeshShowsIt) {
+  Scene scene;
+  scene.lights.push_back(light(LightType::Directional, "D65", 1000.0f));
+  Material tube;
+  tube.emission = Emission{normalisedLightSpectrum(illuminant("F11")), 40.0f};
+  scene.materials.push_back(tube);
+  const SamplingSettings settings;
+  EXPECT_NEAR(luminousIntegral(sceneEmission(scene, colourSpace("srgb"), cachedTestTable())), 1000.0, 1e-6);
+  EXPECT_EQ(sceneWavelengthFitProblem(settings, scene, colourSpace("srgb"), cachedTestTable()).lights.size(), 1u);
+  scene.meshes.emplace_back();  // material 0
+  EXPECT_NEAR(luminousIntegral(sceneEmission(scene, colourSpace("srgb"), cachedTestTable())) /
+                  (1000.0 + 40.0 * std::numbers::pi), 1.0, 1e-9);
+  const WavelengthFitProblem problem = sceneWavelengthFitProblem(settings, scene, colourSpace("srgb"), cachedTestTable());
+  ASSERT_EQ(problem.lights.size(), 2u);
+  EXPECT_NEAR(luminousIntegral(problem.lights[1]), 1.0, 1e-9);
+  scene.materials[0].emission->luminance = 400.0f;
+  EXPECT_EQ(sceneWavelengthFitProblem(settings, scene, colourSpace("srgb"), cachedTestTable()).lights[1], problem.lights[1]);
+}
+
 // The Optimised strategy's training set: each distinct light SPD once (two D65 lights are one),
 // the standard reflectances plus one per material; equal energy when nothing emits.
 TEST(SceneEmission, TheWavelengthFitTrainsOnTheDistinctLightsAndTheScenesSurfaces) {

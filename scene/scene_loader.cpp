@@ -339,8 +339,10 @@ class SceneParser {
       // As a light's: its spectrum (any of a light's "spd" forms), normalised, times its luminance.
       e->expectObject({"spd", "luminance"});
       std::string label;
-      const Spectrum spectrum = spd(e->child("spd"), label);
-      m.emission = spectrum * static_cast<double>(e->child("luminance").numberF(Range::above(0.0)));
+      Emission emission;
+      emission.spd = spd(e->child("spd"), label);
+      emission.luminance = e->child("luminance").numberF(Range::above(0.0));
+      m.emission = std::move(emission);
     }
     if (auto t = n.optionalChild("base_colour_texture")) m.baseColourTexture = texture(*t, true);
     if (auto t = n.optionalChild("metallic_roughness_texture")) m.metallicRoughnessTexture = texture(*t, false);

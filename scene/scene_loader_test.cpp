@@ -192,9 +192,10 @@ TEST_F(SceneFolder, AnEmissionIsItsSpectrumAtItsLuminance) {
   fs::path f = sceneWithMaterial(R"({"emission": {"spd": "blackbody:2700", "luminance": 250}})");
   const Scene scene = loadScene(f);
   ASSERT_TRUE(scene.materials.at(0).emission);
-  EXPECT_NEAR(luminousIntegral(*scene.materials.at(0).emission), 250.0, 250.0 * 1e-12);
+  EXPECT_EQ(scene.materials.at(0).emission->luminance, 250.0f);
+  EXPECT_NEAR(luminousIntegral(scene.materials.at(0).emission->radiance()), 250.0, 250.0 * 1e-12);
   Spectrum planck = illuminant("blackbody:2700");
-  const Spectrum& e = *scene.materials.at(0).emission;
+  const Spectrum& e = scene.materials.at(0).emission->spd;
   EXPECT_NEAR(e.at(500.0) / e.at(600.0), planck.at(500.0) / planck.at(600.0), 1e-12);
 }
 

@@ -7,7 +7,6 @@
 
 #include "render/shared_shading.h"
 #include "scene/conductors.h"
-#include "spectral/observer.h"
 #include "spectral/rgb_intent.h"
 #include "viewer/panel_widgets.h"
 #include "viewer/panels.h"
@@ -65,10 +64,10 @@ class MaterialsPanel final : public Panel {
     if (onPrt && !m.conductor) ImGui::TextDisabled("(PRT objects use it: they are diffuse)");
     else if (m.lambertian) ImGui::TextDisabled("(lambertian: all of the light diffused)");
     if (m.emission) {  // its luminance, the spectrum's shape kept (the scene file gives the spectrum)
-      float luminance = static_cast<float>(luminousIntegral(*m.emission));
+      float luminance = m.emission->luminance;
       if (ImGui::SliderFloat("emission cd/m2", &luminance, 0.01f, 1e5f, "%.3g", ImGuiSliderFlags_Logarithmic) &&
           luminance > 0.0f) {
-        *m.emission = *m.emission * (static_cast<double>(luminance) / luminousIntegral(*m.emission));
+        m.emission->luminance = luminance;
         changed = true;
       }
     }

@@ -9,7 +9,6 @@
 #include "core/error.h"
 #include "core/json_schema.h"
 #include "render/setting_keys.h"
-#include "spectral/observer.h"
 #include "viewer/light_spectrum.h"
 
 namespace prism::viewer {
@@ -61,7 +60,7 @@ void setEmissionLuminance(Material& m, const std::string& key, const std::string
                             excerpt(m.name)));
   const float luminance = render::parseFloatWithin(key, value, 0.0f, static_cast<float>(schema::kFloatInputLimit));
   if (!(luminance > 0.0f)) throw Error(fmt::format("{}: expected a luminance above 0, got \"{}\"", excerpt(key), excerpt(value)));
-  *m.emission = *m.emission * (static_cast<double>(luminance) / luminousIntegral(*m.emission));
+  m.emission->luminance = luminance;
 }
 
 // material.NAME.base-colour R,G,B, material.NAME.roughness X, material.NAME.metallic X,

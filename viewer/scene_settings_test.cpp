@@ -58,14 +58,14 @@ TEST(SceneSettings, AnEmittersLuminanceKeepsItsSpectrum) {
   EXPECT_EQ(error(scene, "material.floor.emission-luminance", "10"),
             "material.floor.emission-luminance: floor emits no light (its emission's spectrum is the scene file's)");
   const Spectrum a = illuminant("A");
-  scene.materials[0].emission = a * (5.0 / luminousIntegral(a));
+  scene.materials[0].emission = Emission{a * (1.0 / luminousIntegral(a)), 5.0f};
   EXPECT_TRUE(applySceneSetting(scene, "material.floor.emission-luminance", "80"));
-  EXPECT_NEAR(luminousIntegral(*scene.materials[0].emission), 80.0, 80.0 * 1e-6);
-  EXPECT_NEAR(scene.materials[0].emission->at(450.0) / scene.materials[0].emission->at(650.0), a.at(450.0) / a.at(650.0),
-              1e-12);
+  EXPECT_NEAR(luminousIntegral(scene.materials[0].emission->radiance()), 80.0, 80.0 * 1e-6);
+  EXPECT_NEAR(scene.materials[0].emission->spd.at(450.0) / scene.materials[0].emission->spd.at(650.0),
+              a.at(450.0) / a.at(650.0), 1e-12);
   EXPECT_EQ(error(scene, "material.floor.emission-luminance", "0"),
             "material.floor.emission-luminance: expected a luminance above 0, got \"0\"");
-  EXPECT_NEAR(luminousIntegral(*scene.materials[0].emission), 80.0, 80.0 * 1e-6);  // nothing half-set
+  EXPECT_EQ(scene.materials[0].emission->luminance, 80.0f);  // nothing half-set
 }
 
 TEST(SceneSettings, ALightsSpdComesFromACsvFileAsThePanelsDoes) {

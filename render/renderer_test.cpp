@@ -528,7 +528,8 @@ TEST(Renderer, OnlyARestartDrawsTheShadowMapsAndTheGBuffer) {
 
 // A restart draws again only the shadow maps whose view moved: none for new settings or the same
 // camera; the sun's cascades, not its whole-scene map nor the spot's, for a moved camera; the
-// sun's for a turned sun; all of them after resetAccumulation. Each frame is, bit for bit, the
+// sun's for a turned sun; all of them when the layers change in number and after
+// resetAccumulation. Each frame is, bit for bit, the
 // one a new renderer, which draws every map, makes there.
 TEST(Renderer, AShadowMapIsDrawnAgainOnlyWhenItsViewMoves) {
   gpu::HeadlessContext context;
@@ -574,6 +575,16 @@ TEST(Renderer, AShadowMapIsDrawnAgainOnlyWhenItsViewMoves) {
   renderer.sceneChanged();
   EXPECT_EQ(framed(), drawnLayers(1));
   asNew("turned sun");
+
+  // Fewer layers (the sun's cascades, the spot's map gone) are maps made again: all drawn.
+  settings.shadowCascades = 2;
+  renderer.setSettings(settings);
+  EXPECT_EQ(framed(), drawnLayers(-1));
+  asNew("two cascades");
+  scene.lights[0].castsShadows = false;
+  renderer.sceneChanged();
+  EXPECT_EQ(framed(), drawnLayers(-1));
+  asNew("a spot without shadows");
 
   renderer.resetAccumulation();
   EXPECT_EQ(framed(), drawnLayers(-1));

@@ -407,9 +407,10 @@ class PathTracer {
         vec3 v = -direction;
         vec4 albedoOrN, k;
         surfaceSpectra(hit, lambdaNm, albedoOrN, k);
-        // What the surface emits: seen from the camera, as the rasteriser shows it, and under
-        // global transport wherever a path meets it (so it lights the scene; no light is aimed at it).
-        if (depth == 0 || global) radiance += throughput * emittedAt(hit, lambdaNm);
+        // What the surface emits, at every hit: direct transport's paths end at their first, what
+        // the camera sees (as the rasteriser shows it); global transport's go on, so an emitter
+        // lights the scene (no light is aimed at it).
+        radiance += throughput * emittedAt(hit, lambdaNm);
         radiance += throughput * surfaceDirectLight(hit, v, lambdaNm, albedoOrN, k, medium);
         if (!global && mEnvironment) radiance += throughput * surfaceEnvironmentLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
         if (!global || depth + 1 >= mSettings.maxDepth) break;

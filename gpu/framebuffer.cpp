@@ -127,6 +127,7 @@ Framebuffer::Framebuffer(Framebuffer&& other) noexcept
       mWidth(std::exchange(other.mWidth, 0)),
       mHeight(std::exchange(other.mHeight, 0)),
       mColourCount(std::exchange(other.mColourCount, 0)),
+      mUndrawn(std::exchange(other.mUndrawn, 0u)),
       mHasDepth(std::exchange(other.mHasDepth, false)) {}
 
 Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
@@ -136,6 +137,7 @@ Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
     mWidth = std::exchange(other.mWidth, 0);
     mHeight = std::exchange(other.mHeight, 0);
     mColourCount = std::exchange(other.mColourCount, 0);
+    mUndrawn = std::exchange(other.mUndrawn, 0u);
     mHasDepth = std::exchange(other.mHasDepth, false);
   }
   return *this;
@@ -150,6 +152,18 @@ void Framebuffer::checkColourIndex(int index) const {
   if (index < 0 || static_cast<std::size_t>(index) >= mColourCount)
     throw std::out_of_range("Framebuffer: colour attachment " + std::to_string(index) + " of " +
                             std::to_string(mColourCount));
+}
+
+void Framebuffer::setColourDrawn(int index, bool drawn) {
+  checkColourIndex(index);
+  const std::uint32_t bit = 1u << index;
+  const std::uint32_t undrawn = drawn ? mUndrawn & ~bit : mUndrawn | bit;
+  if (undrawn == mUndrawn) return;
+  mUndrawn = undrawn;
+  std::vector<GLenum> buffers(mColourCount);
+  for (std::size_t i = 0; i < mColourCount; ++i)
+    buffers[i] = (mUndrawn >> i) & 1u ? GL_NONE : static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + i);
+  glNamedFramebufferDrawBuffers(mId, static_cast<GLsizei>(buffers.size()), buffers.data());
 }
 
 void Framebuffer::clearColour(int index, const glm::vec4& value) const {

@@ -1,6 +1,7 @@
 // A framebuffer object over direct state access: colour attachments in order (attachment i is
-// GL_COLOR_ATTACHMENTi and fragment output location i, all of them drawn to), an optional depth
-// attachment that is either a Texture2D or one layer of a Texture2DArray (a shadow cascade).
+// GL_COLOR_ATTACHMENTi and fragment output location i, all of them drawn to unless
+// setColourDrawn says not), an optional depth attachment that is either a Texture2D or one layer
+// of a Texture2DArray (a shadow cascade).
 // Completeness is checked at construction: an incomplete one throws GpuError(
 // FramebufferIncomplete) naming the GL status, rather than rendering nothing later.
 //
@@ -59,6 +60,10 @@ class Framebuffer {
   GLsizei width() const { return mWidth; }
   GLsizei height() const { return mHeight; }
   std::size_t colourCount() const { return mColourCount; }
+  // Whether colour attachment `index` is drawn to (every one is, from construction): a pass that
+  // has nothing for one leaves it as it is and spares its memory traffic. An undrawn attachment's
+  // clears do nothing either (they go through its draw buffer).
+  void setColourDrawn(int index, bool drawn);
 
   // glBindFramebuffer(GL_FRAMEBUFFER) and a viewport covering the whole framebuffer.
   void bind() const;
@@ -84,6 +89,7 @@ class Framebuffer {
   GLuint mId = 0;
   GLsizei mWidth = 0, mHeight = 0;
   std::size_t mColourCount = 0;
+  std::uint32_t mUndrawn = 0;  // bit i: attachment i not drawn
   bool mHasDepth = false;
 };
 

@@ -50,6 +50,33 @@ TEST_F(GpuTest, FullScreenTriangleFillsBothAttachments) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+// An attachment set undrawn keeps what it held through a draw (and a clear); drawn again, it
+// takes the draw.
+TEST_F(GpuTest, AnUndrawnAttachmentKeepsWhatItHeld) {
+  const GLsizei w = 3, h = 2;
+  Texture2D colour({w, h, GL_RGBA32F, 1, {}, {}, "colour"});
+  Texture2D ids({w, h, GL_R32UI, 1, {}, {}, "pixel ids"});
+  Framebuffer fb({{{&colour, 0}, {&ids, 0}}, {}, "two targets"});
+  Program program = testing::drawProgram("fullscreen.vert", "two_targets.frag");
+  program.setUniform("uColour", glm::vec4(0.25f, -1.5f, 8.0f, 1.0f));
+  program.setUniform("uIdOffset", 7u);
+  VertexArray empty = VertexArray::attributeless("full-screen triangle");
+  fb.bind();
+  fb.clearColour(0, glm::vec4(3.0f));
+  fb.clearColourUint(1, {0u, 0u, 0u, 0u});
+  fb.setColourDrawn(0, false);
+  fb.clearColour(0, glm::vec4(9.0f));
+  program.use();
+  empty.draw(3);
+  EXPECT_EQ(readTexture2DFloat(colour, 4), std::vector<float>(4 * w * h, 3.0f));
+  EXPECT_EQ(readTexture2DUint(ids)[0], 7u);  // the other attachment is drawn as before
+  fb.setColourDrawn(0, true);
+  empty.draw(3);
+  EXPECT_EQ(readTexture2DFloat(colour, 4)[0], 0.25f);
+  EXPECT_THROW(fb.setColourDrawn(2, false), std::out_of_range);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 TEST_F(GpuTest, BindSetsTheViewportAndClearsObeyTheIndex) {
   Texture2D a({4, 2, GL_RGBA8, 1, {}, {}, {}});
   Texture2D b({4, 2, GL_RGBA8, 1, {}, {}, {}});

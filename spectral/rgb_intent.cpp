@@ -19,7 +19,7 @@ namespace prism {
 namespace {
 
 // pbrt-v4's rule for an unbounded colour: its usable channels (negative, NaN and infinite read
-// as 0) and scale = 2·max of them, capped at the largest float so that a huge channel stays finite.
+// as 0) and their scale (sigmoid.glsl's unboundedScale), capped at the largest float so that a huge channel stays finite.
 struct UnboundedSplit {
   glm::vec3 rgb;
   float scale;
@@ -28,8 +28,7 @@ struct UnboundedSplit {
 UnboundedSplit unboundedSplit(const glm::vec3& rgb) {
   glm::vec3 c;
   for (int i = 0; i < 3; ++i) c[i] = std::isfinite(rgb[i]) ? std::max(rgb[i], 0.0f) : 0.0f;
-  float m = std::max({c.x, c.y, c.z});
-  return {c, std::min(2.0f * m, std::numeric_limits<float>::max())};
+  return {c, std::min(shared::unboundedScale(c), std::numeric_limits<float>::max())};
 }
 
 }  // namespace
@@ -62,11 +61,14 @@ Spectrum RgbUnboundedSpectrum::toDense() const {
   return upsampledReflectanceSpectrum(mCoeffs) * static_cast<double>(mScale);
 }
 
+Spectrum scaledWhiteIlluminant(const RgbColourSpace& space, double luminance) {
+  Spectrum white = gamutWhiteIlluminant(space);
+  return white * (luminance / luminousIntegral(white));
+}
+
 RgbIlluminantSpectrum::RgbIlluminantSpectrum(const RgbColourSpace& space, const RgbUnboundedSpectrum& unbounded,
                                              double whiteLuminance)
-    : mWhite(gamutWhiteIlluminant(space)), mUnbounded(unbounded) {
-  mWhite *= whiteLuminance / luminousIntegral(mWhite);
-}
+    : mWhite(scaledWhiteIlluminant(space, whiteLuminance)), mUnbounded(unbounded) {}
 
 RgbIlluminantSpectrum::RgbIlluminantSpectrum(const RgbToSpectrumTable& table, const RgbColourSpace& space,
                                              const glm::vec3& rgb, double whiteLuminance)

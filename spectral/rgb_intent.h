@@ -58,6 +58,10 @@ class RgbUnboundedSpectrum {
   float mScale;
 };
 
+// The colour space's white illuminant (D65, or D60 for ACES): what RgbIlluminantSpectrum's
+// (1, 1, 1) is, scaled to a luminous integral (observer.h) of `luminance`.
+Spectrum scaledWhiteIlluminant(const RgbColourSpace& space, double luminance);
+
 class RgbIlluminantSpectrum {
  public:
   // whiteLuminance: the luminous integral (observer.h) of the colour (1, 1, 1), in cd/m² when

@@ -40,6 +40,11 @@ PRISM_INLINE vec4 upsampledReflectance4(IN(vec3) coeffs, IN(vec4) lambdaNm) {
   return sigmoidSpectrum4(coeffs, clamp(lambdaNm, vec4(kReflectanceMinNm), vec4(kReflectanceMaxNm)));
 }
 
+// pbrt-v4's scale of an unbounded colour (emission, values above 1; spectral/rgb_intent.h's
+// RgbUnboundedSpectrum): 2·max of its channels, so that the reflectance fitted to rgb / scale has
+// its largest channel ½, clear of the unreachable pure white. Channels finite and ≥ 0.
+PRISM_INLINE float unboundedScale(IN(vec3) rgb) { return 2.0f * max(max(rgb.x, rgb.y), rgb.z); }
+
 // dS/dx = 1 / (2·(1 + x²)^(3/2)), for optimisers that fit the coefficients.
 PRISM_INLINE float sigmoidDerivative(float x) {
   if (isinf(x)) return 0.0f;

@@ -59,7 +59,10 @@ PrtInput loadPrtInput(const std::filesystem::path& input, bool withReflectances)
   if (ext == ".json") {
     scene = loadScene(input);
   } else if (ext == ".gltf" || ext == ".glb") {
-    appendGltf(input, input.parent_path(), {}, scene);
+    // Its emission, if any, is dropped below with a warning: any unit will do.
+    GltfPlacement placement;
+    placement.emissionLuminance = 1.0f;
+    appendGltf(input, input.parent_path(), placement, scene);
   } else {
     throw Error(input.string() + ": expected a scene (.json) or a glTF model (.gltf, .glb)");
   }
@@ -70,7 +73,7 @@ PrtInput loadPrtInput(const std::filesystem::path& input, bool withReflectances)
   const prt::PrtMesh& mesh = object.mesh;
   if (mesh.indices.empty()) throw Error(input.string() + ": no triangles to bake");
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-    if (scene.materials[i].emission && std::ranges::find(object.vertexMaterial, static_cast<int>(i)) != object.vertexMaterial.end())
+    if ((scene.materials[i].emission || scene.materials[i].emitsRgb()) && std::ranges::find(object.vertexMaterial, static_cast<int>(i)) != object.vertexMaterial.end())
       fmt::print(stderr, "prism: warning: {}: material '{}' emits light, which PRT's transfer does not carry: PRT shades "
                          "it by its reflectance alone\n", input.string(), scene.materials[i].name);
   }

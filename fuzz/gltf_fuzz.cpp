@@ -20,7 +20,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::filesystem::path file = prism::fuzz::inputFile({data, size}, binary ? "input.glb" : "input.gltf");
   prism::fuzz::expectOnlyInputErrors([&] {
     prism::Scene scene;
-    prism::appendGltf(file, prism::fuzz::scratchFolder(), {}, scene);
+    prism::GltfPlacement placement;
+    placement.emissionLuminance = 100.0f;  // so that an emitting file reaches its emission's reading
+    prism::appendGltf(file, prism::fuzz::scratchFolder(), placement, scene);
   });
   return 0;
 }

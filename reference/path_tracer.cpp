@@ -94,7 +94,8 @@ class PathTracer {
         mBackground(backgroundRadiance(scene, colourSpace(scene.colourSpace), table)),
         mCamera(cameraTransform(scene.camera, settings.width, settings.height)),
         mMedium(effectiveMedium(scene)),
-        mEnvironment(scene.techniques.environment(table)) {
+        mEnvironment(scene.techniques.environment(table)),
+        mEmissionWhite(scaledWhiteIlluminant(colourSpace(scene.colourSpace), 1.0)) {
     for (const Light& light : scene.lights) {
       int type = light.type == LightType::Directional ? shared::kLightDirectional
                  : light.type == LightType::Point     ? shared::kLightPoint
@@ -210,12 +211,18 @@ class PathTracer {
     }
   }
 
-  // The surface's emitted radiance at the path's wavelengths (0 where its material emits none).
+  // The surface's emitted radiance at the path's wavelengths (0 where its material emits none):
+  // its own spectrum, or glTF's colour as a light's (RgbIlluminantSpectrum, the white shared).
   vec4 emittedAt(const SurfaceHit& hit, const vec4& lambdaNm) const {
     const Material& m = *mMaterials[static_cast<std::size_t>(hit.material)].material;
     vec4 e(0.0f);
     if (m.emission)
       for (int j = 0; j < 4; ++j) e[j] = static_cast<float>(m.emission->spd.at(lambdaNm[j])) * m.emission->luminance;
+    if (m.emitsRgb()) {
+      const RgbUnboundedSpectrum colour(mTable, hit.emission);
+      for (int j = 0; j < 4; ++j)
+        e[j] = colour.at(lambdaNm[j]) * static_cast<float>(mEmissionWhite.at(lambdaNm[j])) * m.emissiveLuminance;
+    }
     return e;
   }
 
@@ -445,6 +452,7 @@ class PathTracer {
   std::vector<MaterialInput> mMaterials;
   std::optional<HomogeneousMedium> mMedium;
   std::shared_ptr<const TechniqueEnvironment> mEnvironment;
+  Spectrum mEmissionWhite;  // the colour space's white of luminance 1, glTF's emission's
 };
 
 }  // namespace

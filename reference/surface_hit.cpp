@@ -83,13 +83,19 @@ SurfaceHit surfaceHit(const Scene& scene, const rays::TriangleHit& hit, const gl
     textures |= shared::kTextureNormal;
     normalTexel = glm::vec3(sampleTexture(image(material.normalTexture), uv));
   }
+  glm::vec3 emissiveTexel(1.0f);
+  if (material.emissiveTexture >= 0) {
+    textures |= shared::kTextureEmission;
+    emissiveTexel = glm::vec3(sampleTexture(image(material.emissiveTexture), uv));
+  }
   shared::SurfaceInputs inputs =
-      shared::surfaceInputs(material.baseColour, material.metallic, material.roughness, n, tangent,
-                            textures, baseColourTexel, metallicRoughnessTexel, normalTexel);
+      shared::surfaceInputs(material.baseColour, material.metallic, material.roughness, n, tangent, textures,
+                            baseColourTexel, metallicRoughnessTexel, normalTexel, material.emissiveFactor, emissiveTexel);
   s.albedo = inputs.albedo;
   s.metallic = inputs.metallic;
   s.roughness = inputs.roughness;
   s.normalW = inputs.normal;
+  s.emission = inputs.emission;
   return s;
 }
 

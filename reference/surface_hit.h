@@ -18,6 +18,7 @@ struct SurfaceHit {
   float roughness = 0.0f;
   glm::vec3 normalW{0.0f};           // shading normal, unit, turned like the G-buffer's
   glm::vec2 uv{0.0f};                // interpolated texture coordinates
+  glm::vec3 emission{0.0f};          // glTF's emissive colour (SurfaceInputs::emission)
   int material = 0;                  // index into Scene::materials
   // Diffuse lobe only (albedo/π): the material says so (the thesis's spheres), or a technique
   // shades the object itself (PRT's objects, diffuse by definition, lit by its environment).

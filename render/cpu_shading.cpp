@@ -42,6 +42,7 @@ class CpuShadingCore {
   vec3 upsamplingCoefficients(vec3 rgb) const {
     return mIn.frame.constants.gbufferCoefficients != 0 ? mTexelCoefficients : mIn.table.lookup(rgb);
   }
+  vec3 emissionCoefficients(vec3 rgb) const { return mIn.table.lookup(rgb); }
   // What the twin of the technique `key` is made from.
   TechniqueTwinInput twinInput(std::string_view key) const {
     auto texels = mIn.texels.find(key);
@@ -66,6 +67,7 @@ class CpuShadingCore {
     s.position = worldFromDepth(camera.inverseViewProjection, uv, texel.depth);                    \
     s.normal = normalize(vec3(texel.normalRoughness));                                             \
     s.albedo = vec3(texel.albedoMetallic);                                                         \
+    s.emission = texel.emission;                                                                   \
     s.metallic = texel.albedoMetallic.w;                                                           \
     s.roughness = texel.normalRoughness.w;                                                         \
     s.material = static_cast<int>(texel.materialId & ~kTechniqueShadedBit) - 1;                    \
@@ -73,7 +75,9 @@ class CpuShadingCore {
     mTexelCoefficients = texel.coefficients;                                                       \
     return shadeSurface(mIn.frame.constants, s, camera.position, uv);                              \
   }
+#define PRISM_RGB_EMISSION  // glTF's emission: a run-time test here, a variant on the GPU
 #include "cpu_shading_variants.h"
+#undef PRISM_RGB_EMISSION
 #undef PRISM_CPU_SHADING_SHADE
 
 namespace prism::render {

@@ -24,6 +24,7 @@ struct GBufferTexel {
   std::uint32_t materialId = 0;  // material index + 1; 0 where no geometry is
   float depth = 1.0f;
   glm::vec3 coefficients{0.0f};  // Jakob–Hanika coefficients, when the G-buffer holds them
+  glm::vec3 emission{0.0f};      // glTF's emissive colour
 };
 
 class CpuShading {

@@ -187,8 +187,21 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
     }
   }
 
-  // Materials and their spectra.
+  // Materials and their spectra. glTF's emission is a light's colour, upsampled per pixel on the
+  // colour space's white (RgbIlluminantSpectrum): that white, of luminance 1, is one spectrum that
+  // every material emitting so shares.
   int spectraCount = 0;
+  int rgbEmissionWhite = shared::kNoEmission;
+  if (anyMaterialEmitsRgb(scene)) {
+    rgbEmissionWhite = spectraCount++;
+    const Spectrum white = scaledWhiteIlluminant(space, 1.0);
+    for (const shared::GpuBatch& batch : frame.batches) {
+      // RGB mode: (1, 1, 1) itself, so that the colour is shown as it is (the white's spectrum, through
+      // its 1 nm table, lands 1e-4 off the space's nominal white).
+      frame.materialSpectra.push_back(rgbMode ? glm::vec4(1.0f, 1.0f, 1.0f, 0.0f) : at4(white, batch.lambdaNm));
+      frame.materialSpectra.push_back(glm::vec4(0.0f));
+    }
+  }
   for (const Material& m : scene.materials) {
     shared::GpuMaterial g{};
     g.baseColour = m.baseColour;
@@ -199,6 +212,8 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
                              : shared::kMaterialBaseColour;
     g.lambertian = m.lambertian ? 1 : 0;
     g.emission = shared::kNoEmission;
+    g.rgbEmissionWhite = m.emitsRgb() ? rgbEmissionWhite : shared::kNoEmission;
+    g.rgbEmissionLuminance = m.emitsRgb() ? m.emissiveLuminance : 0.0f;
     if (g.kind != shared::kMaterialBaseColour) {
       g.spectra = spectraCount++;
       for (const shared::GpuBatch& batch : frame.batches) {
@@ -228,6 +243,7 @@ FrameData buildFrameData(const Scene& scene, const FrameSettings& settings, cons
   if (frame.materials.empty()) {
     shared::GpuMaterial none{};
     none.emission = shared::kNoEmission;
+    none.rgbEmissionWhite = shared::kNoEmission;
     frame.materials.push_back(none);
   }
   if (frame.materialSpectra.empty()) frame.materialSpectra.push_back(glm::vec4(0.0f));

@@ -18,6 +18,7 @@ struct GBufferReadback {
         normal(gpu::readTexture2DFloat(renderer.normalRoughness(), 4)),
         ids(gpu::readTexture2DUint(renderer.materialId(), 1)),
         depth(gpu::readTexture2DFloat(renderer.depth(), 1)),
+        emission(gpu::readTexture2DFloat(renderer.emission(), 4)),
         stored(coefficients ? gpu::readTexture2DFloat(renderer.coefficients(), 4) : std::vector<float>()),
         lit(gpu::readTexture2DFloat(renderer.accumulation(), 4)) {
     for (const ShadowView& view : renderer.shadowViews())
@@ -31,6 +32,7 @@ struct GBufferReadback {
     t.normalRoughness = glm::vec4(normal[4 * i], normal[4 * i + 1], normal[4 * i + 2], normal[4 * i + 3]);
     t.materialId = ids[i];
     t.depth = depth[i];
+    t.emission = glm::vec3(emission[4 * i], emission[4 * i + 1], emission[4 * i + 2]);
     if (!stored.empty()) t.coefficients = glm::vec3(stored[4 * i], stored[4 * i + 1], stored[4 * i + 2]);
     return t;
   }
@@ -48,7 +50,7 @@ struct GBufferReadback {
 
   std::vector<float> albedo, normal;
   std::vector<std::uint32_t> ids;
-  std::vector<float> depth, stored, lit;
+  std::vector<float> depth, emission, stored, lit;
   std::vector<std::vector<float>> shadowLayers;
 };
 

@@ -49,16 +49,19 @@ void upload(gpu::Buffer& buffer, const std::vector<T>& values, const char* label
   buffer.upload(0, std::as_bytes(std::span<const T>(values)));
 }
 
-// The scene's techniques as the lighting pass's #define variant, e.g. "PRISM_TECHNIQUE_WATER".
-std::vector<gpu::ShaderDefine> techniqueDefines(const Scene& scene) {
+// The lighting pass's #define variant: the scene's techniques (e.g. "PRISM_TECHNIQUE_WATER") and
+// PRISM_RGB_EMISSION where a material emits glTF's way (its upsampling, under llvmpipe's
+// masked branches, cost every pixel of every scene up to 23 % of the lighting pass).
+std::vector<gpu::ShaderDefine> lightingDefines(const Scene& scene) {
   std::vector<gpu::ShaderDefine> defines;
   for (const auto& section : scene.techniques.all()) defines.push_back({std::string(section->shaderDefine()), ""});
+  if (anyMaterialEmitsRgb(scene)) defines.push_back({"PRISM_RGB_EMISSION", ""});
   return defines;
 }
 
 std::string lightingVariant(const Scene& scene) {
   std::string key;
-  for (const gpu::ShaderDefine& d : techniqueDefines(scene)) key += (key.empty() ? "" : " ") + d.name;
+  for (const gpu::ShaderDefine& d : lightingDefines(scene)) key += (key.empty() ? "" : " ") + d.name;
   return key;
 }
 
@@ -66,7 +69,7 @@ gpu::Program lightingProgram(const Scene& scene) {
   std::string variant = lightingVariant(scene);
   return passProgram("fullscreen.vert", "lighting.frag",
                      variant.empty() ? "lighting pass" : ("lighting pass (" + variant + ")").c_str(),
-                     techniqueDefines(scene));
+                     lightingDefines(scene));
 }
 
 // Rows top first from GL's bottom-first read-back.
@@ -234,7 +237,9 @@ Renderer::Targets Renderer::makeTargets(int w, int h, GBufferAlbedo albedo) {
   t.forwardDepth = target(w, h, GL_DEPTH_COMPONENT32F, "forward depth (copied)");
   t.display = target(w, h, GL_RGBA8, "display");
   gpu::FramebufferDesc g;
-  g.colour = {{&t.albedoMetallic, 0}, {&t.normalRoughness, 0}, {&t.materialId, 0}};
+  // glTF's emissive colour (factor × texture, in [0, 1] but for a texture's rounding).
+  t.emission = target(w, h, GL_RGBA16F, "g-buffer emission");
+  g.colour = {{&t.albedoMetallic, 0}, {&t.normalRoughness, 0}, {&t.materialId, 0}, {&t.emission, 0}};
   if (albedo == GBufferAlbedo::Coefficients) {
     // Coefficients reach ±150 (saturated colours) and cancel each other: 16-bit floats would not do.
     t.coefficients = target(w, h, GL_RGBA32F, "g-buffer Jakob–Hanika coefficients");
@@ -344,13 +349,16 @@ void Renderer::gbufferPass() {
   mTargets.gbuffer.clearColour(0, glm::vec4(0.0f));
   mTargets.gbuffer.clearColour(1, glm::vec4(0.0f));
   mTargets.gbuffer.clearColourUint(2, {0, 0, 0, 0});
+  // glTF's emission: drawn where a material emits so, as the lighting pass then alone reads it.
+  mTargets.gbuffer.setColourDrawn(3, anyMaterialEmitsRgb(mScene));
+  mTargets.gbuffer.clearColour(3, glm::vec4(0.0f));
   mTargets.gbuffer.clearDepth(1.0f);
   const bool coefficients = mSettings.gbufferAlbedo == GBufferAlbedo::Coefficients;
   const gpu::Program& program = coefficients ? mGBufferCoefficientsProgram : mGBufferProgram;
   program.use();
   program.setUniform("uViewProjection", mCameraTransform.viewProjection);
   if (coefficients) {
-    mTargets.gbuffer.clearColour(3, glm::vec4(0.0f));
+    mTargets.gbuffer.clearColour(4, glm::vec4(0.0f));
     mUpsamplingTable.bind(3);
     program.setUniform("uUpsamplingResolution", mTable.resolution());
     program.setUniform("uFilteredLookup", mSettings.lookup == UpsamplingLookup::Filtered ? 1 : 0);
@@ -371,9 +379,14 @@ void Renderer::gbufferPass() {
       mGpuScene.texture(m.normalTexture).bind(2);
       textures |= shared::kTextureNormal;
     }
+    if (m.emissiveTexture >= 0) {
+      mGpuScene.texture(m.emissiveTexture).bind(4);
+      textures |= shared::kTextureEmission;
+    }
     program.setUniform("uBaseColour", m.baseColour);
     program.setUniform("uMetallic", m.metallic);
     program.setUniform("uRoughness", m.roughness);
+    program.setUniform("uEmissiveFactor", m.emitsRgb() ? m.emissiveFactor : glm::vec3(0.0f));
     // A technique's object is marked: the lighting pass lights it by the scene's lights alone, its
     // technique adds the rest (forwardTechniques).
     program.setUniform("uMaterialId", static_cast<GLuint>(mesh.material + 1) |
@@ -456,6 +469,7 @@ void Renderer::lightingPass() {
   mShadows.maps.bind(4);
   mUpsamplingTable.bind(5);
   if (mSettings.gbufferAlbedo == GBufferAlbedo::Coefficients) mTargets.coefficients.bind(6);
+  mTargets.emission.bind(13);  // past the techniques' units (7–12)
   for (const TechniqueBlock& block : mFrame.techniques) {
     if (const TechniquePass* pass = techniquePass(block.key)) pass->bindForLighting();
   }
@@ -556,7 +570,7 @@ std::size_t Renderer::gpuMemoryBytes() const {
   std::size_t bytes = mGpuScene.gpuMemoryBytes() + mUpsamplingTable.sizeBytes() + mShadows.maps.sizeBytes() +
                       mGizmo.vertices.sizeBytes() + mGizmo.indices.sizeBytes();
   for (const gpu::Texture2D* t : {&mTargets.albedoMetallic, &mTargets.normalRoughness, &mTargets.materialId,
-                                  &mTargets.depth, &mTargets.coefficients, &mTargets.accumulation,
+                                  &mTargets.depth, &mTargets.emission, &mTargets.coefficients, &mTargets.accumulation,
                                   &mTargets.forwardDepth, &mTargets.display}) {
     bytes += t->sizeBytes();
   }

@@ -97,6 +97,7 @@ class Renderer {
   const gpu::Texture2D& materialId() const { return mTargets.materialId; }
   const gpu::Texture2D& depth() const { return mTargets.depth; }
   const gpu::Texture2D& coefficients() const { return mTargets.coefficients; }  // when the G-buffer has them
+  const gpu::Texture2D& emission() const { return mTargets.emission; }  // glTF's emissive colour
   const gpu::Texture2DArray& shadowMaps() const { return mShadows.maps; }
   const gpu::Texture2D& accumulation() const { return mTargets.accumulation; }
   const gpu::Framebuffer& displayFramebuffer() const { return mTargets.displayTarget; }
@@ -107,7 +108,7 @@ class Renderer {
  private:
   // Everything sized by the image: built whole, then swapped in.
   struct Targets {
-    gpu::Texture2D albedoMetallic, normalRoughness, materialId, depth;
+    gpu::Texture2D albedoMetallic, normalRoughness, materialId, depth, emission;
     gpu::Texture2D coefficients;  // GBufferAlbedo::Coefficients only
     gpu::Texture2D accumulation, forwardDepth, display;
     gpu::Framebuffer gbuffer, accumulationTarget, forwardTarget, displayTarget;

@@ -141,6 +141,10 @@ INSTANTIATE_TEST_SUITE_P(
                     ParityCase{PRISM_RENDER_TEST_DIR "/emitters.json", RenderMode::JakobHanika, GBufferAlbedo::Rgb,
                                SamplingStrategy::Lights},
                     ParityCase{PRISM_RENDER_TEST_DIR "/emitters.json", RenderMode::Rgb},
+                    // glTF's emission, a texture's among it: upsampled per pixel as a light's colour.
+                    ParityCase{PRISM_RENDER_TEST_DIR "/emissive_gltf.json", RenderMode::JakobHanika},
+                    ParityCase{PRISM_RENDER_TEST_DIR "/emissive_gltf.json", RenderMode::Naive},
+                    ParityCase{PRISM_RENDER_TEST_DIR "/emissive_gltf.json", RenderMode::Rgb},
                     ParityCase{"textured_gltf.json", RenderMode::JakobHanika},
                     ParityCase{"reef.json", RenderMode::JakobHanika},  // under water
                     ParityCase{"reef.json", RenderMode::Rgb},

@@ -28,7 +28,8 @@ static_assert(sizeof(GpuLight) == 208 && offsetof(GpuLight, type) == 12 && offse
               offsetof(GpuLight, shadowLayer) == 40 && offsetof(GpuLight, shadowFromWorld) == 64 &&
               offsetof(GpuLight, shadowCascades) == 128 && offsetof(GpuLight, shadowCascadeCount) == 192);
 static_assert(sizeof(GpuMaterial) == 48 && offsetof(GpuMaterial, metallic) == 12 &&
-              offsetof(GpuMaterial, lambertian) == 28 && offsetof(GpuMaterial, emission) == 32);
+              offsetof(GpuMaterial, lambertian) == 28 && offsetof(GpuMaterial, emission) == 32 &&
+              offsetof(GpuMaterial, rgbEmissionWhite) == 36 && offsetof(GpuMaterial, rgbEmissionLuminance) == 40);
 static_assert(sizeof(FrameConstants) == 112 && offsetof(FrameConstants, cameraPositionW) == 64 &&
               offsetof(FrameConstants, mode) == 76 && offsetof(FrameConstants, viewportSize) == 80 &&
               offsetof(FrameConstants, batchCount) == 88 && offsetof(FrameConstants, filteredLookup) == 108);

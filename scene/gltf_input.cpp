@@ -272,6 +272,12 @@ void checkMaterialsAndNodes(const Node& top) {
       if (m.has("occlusionTexture")) textureInfo(m.child("occlusionTexture"), "strength");
       if (m.has("emissiveTexture")) textureInfo(m.child("emissiveTexture"), "");
       if (m.has("emissiveFactor")) m.child("emissiveFactor").numbers(3);
+      if (auto ext = m.optionalChild("extensions")) {
+        if (auto strength = ext->optionalChild("KHR_materials_emissive_strength")) {
+          strength->expectObject({"emissiveStrength", "extensions", "extras"});
+          if (strength->has("emissiveStrength")) strength->child("emissiveStrength").number(schema::Range::atLeast(0.0));
+        }
+      }
       if (m.has("alphaMode")) {
         const Node mode = m.child("alphaMode");
         const std::string name = mode.string();
@@ -364,6 +370,7 @@ void checkUris(const Node& top, const fs::path& root, const fs::path& base) {
   if (auto required = top.optionalChild("extensionsRequired")) {
     for (std::size_t i = 0; i < required->arraySize(); ++i) {
       Node e = required->element(i);
+      if (e.json() == "KHR_materials_emissive_strength") continue;  // read (gltf_loader.cpp)
       e.fail("the file requires extension " + schema::describe(e.json()) + ", which Prism does not support");
     }
   }

@@ -108,8 +108,41 @@ class Converter {
     out.baseColourTexture = texture(p.baseColorTexture, pbr + "/baseColorTexture", true);
     out.metallicRoughnessTexture = texture(p.metallicRoughnessTexture, pbr + "/metallicRoughnessTexture", false);
     out.normalTexture = texture(m.normalTexture, at + "/normalTexture", false);
+    emission(m, at, out);
     mScene.materials.push_back(std::move(out));
     return static_cast<int>(mScene.materials.size()) - 1;
+  }
+
+  // emissiveFactor × emissiveTexture at the placement's luminance times
+  // KHR_materials_emissive_strength. glTF gives emission no unit, so a material that emits needs
+  // the scene to give one: without it the file is refused rather than drawn dark without a word.
+  void emission(const tinygltf::Material& m, const std::string& at, Material& out) {
+    if (m.emissiveFactor.size() != 3)
+      fail(at + "/emissiveFactor", "expected 3 numbers, got " + str(m.emissiveFactor.size()));
+    for (int c = 0; c < 3; ++c)
+      out.emissiveFactor[c] = static_cast<float>(
+          factor(m.emissiveFactor[static_cast<std::size_t>(c)], at + "/emissiveFactor/" + std::to_string(c)));
+    double strength = 1.0;
+    if (auto it = m.extensions.find("KHR_materials_emissive_strength"); it != m.extensions.end()) {
+      std::string pointer = at + "/extensions/KHR_materials_emissive_strength/emissiveStrength";
+      const tinygltf::Value& e = it->second;
+      if (e.Has("emissiveStrength")) strength = e.Get("emissiveStrength").GetNumberAsDouble();
+      if (!std::isfinite(strength) || strength < 0.0 || strength > schema::kFloatInputLimit)
+        fail(pointer, "expected a number in [0, 1e+12], got " + schema::describe(strength));
+    }
+    bool emits = strength > 0.0 && std::max({out.emissiveFactor.r, out.emissiveFactor.g, out.emissiveFactor.b}) > 0.0f;
+    if (!emits) return;
+    if (!mPlacement.emissionLuminance)
+      fail(at + "/emissiveFactor",
+           "the material emits light, and glTF gives emission no unit: give the scene's object \"emission_luminance\" "
+           "(cd/m² of emissive white; 0 leaves it dark)");
+    const double luminance = static_cast<double>(*mPlacement.emissionLuminance) * strength;
+    if (!(luminance <= schema::kFloatInputLimit))
+      fail(at + "/extensions/KHR_materials_emissive_strength/emissiveStrength",
+           "times the object's emission_luminance gives " + schema::describe(luminance) + " cd/m²: past 1e+12");
+    if (!(luminance > 0.0)) return;  // dark on purpose: its texture is not read
+    out.emissiveLuminance = static_cast<float>(luminance);
+    out.emissiveTexture = texture(m.emissiveTexture, at + "/emissiveTexture", true);
   }
 
   // glTF 2.0 §3.9.1: a primitive without a material gets the default one (white, fully
@@ -359,7 +392,8 @@ class Converter {
     }
     if (uvs.empty()) {  // a texture at one uv shows one texel's colour over the whole primitive
       const Material& m = mScene.materials.at(static_cast<std::size_t>(out.material));
-      if (m.baseColourTexture >= 0 || m.metallicRoughnessTexture >= 0 || m.normalTexture >= 0 || m.spectralTexture)
+      if (m.baseColourTexture >= 0 || m.metallicRoughnessTexture >= 0 || m.normalTexture >= 0 ||
+          m.emissiveTexture >= 0 || m.spectralTexture)
         fail(at + "/attributes", "no TEXCOORD_0, which material '" + m.name + "' needs for its textures");
     }
     auto vertex = [&](std::uint32_t i) {

@@ -3,11 +3,12 @@
 // What is read: every mesh primitive of the default scene's node tree (mode TRIANGLES only),
 // placed by the nodes' transforms (matrix or TRS) and then by the caller's; POSITION, NORMAL,
 // TANGENT and TEXCOORD_0; indices of any component type; metallic-roughness materials
-// (baseColorFactor, metallicFactor, roughnessFactor and their three textures). Normals missing
+// (baseColorFactor, metallicFactor, roughnessFactor and their three textures) and emission
+// (emissiveFactor, emissiveTexture, KHR_materials_emissive_strength; Material::emissiveFactor). Normals missing
 // from a primitive are made flat (glTF 2.0 §3.7.2.1: "client implementations MUST calculate
 // flat normals", provided tangents then ignored); missing tangents are computed
 // (procedural_mesh.h, computeTangents). Ignored: cameras, lights, animation, skins, morph
-// targets, COLOR_0, occlusion and emissive, baseColorFactor's alpha, samplers, the normal
+// targets, COLOR_0, occlusion, baseColorFactor's alpha, samplers, the normal
 // texture's scale. Files that require an extension are refused.
 //
 // Confinement: a buffer or image URI must be a data: URI or a relative path without ".." that
@@ -23,6 +24,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -35,6 +37,9 @@ namespace prism {
 struct GltfPlacement {
   glm::mat4 transform{1.0f};  // model → world, applied after the file's own node transforms
   int materialOverride = -1;  // index into Scene::materials for every primitive; -1: the file's
+  // cd/m² of glTF's emissive (1, 1, 1) (Material::emissiveLuminance); a file whose materials emit
+  // is refused without it.
+  std::optional<float> emissionLuminance;
 };
 
 // Appends the file's meshes, materials (named "<file name>/<material name or index>") and

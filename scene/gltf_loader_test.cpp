@@ -152,7 +152,7 @@ TEST(GltfLoader, MaterialFactorsAndTextures) {
 TEST(GltfLoader, BinaryGltfWithMatrixNode) {
   Scene scene;
   scene.materials.resize(3);
-  appendGltf(kGltfFixtures / "triangle.glb", kGltfFixtures, {glm::mat4(1.0f), 2}, scene);
+  appendGltf(kGltfFixtures / "triangle.glb", kGltfFixtures, {glm::mat4(1.0f), 2, std::nullopt}, scene);
   ASSERT_EQ(scene.meshes.size(), 1u);
   EXPECT_EQ(scene.meshes[0].material, 2);
   EXPECT_EQ(scene.materials.size(), 3u);  // overridden: none added
@@ -224,6 +224,52 @@ TEST(GltfLoader, ATexturedMaterialNeedsTexCoords) {
   // Untextured, no uv is needed: the file's second primitive has none.
   placed.materials[0].baseColourTexture = -1;
   EXPECT_NO_THROW(appendGltf(file, file.parent_path(), placement, placed));
+}
+
+// glTF's emission: emissiveFactor × emissiveTexture (sRGB) at the object's luminance times
+// KHR_materials_emissive_strength (read, so a file may require it). glTF gives emission no unit:
+// a file that emits, placed without one, is refused at its factor (it drew dark without a word);
+// 0 leaves it dark on purpose.
+TEST(GltfLoader, EmissionTakesItsFactorTextureAndStrengthAtTheObjectsLuminance) {
+  auto emissive = [](double strength) {
+    return [strength](nlohmann::json& g) {
+      g["materials"][0]["emissiveFactor"] = {1.0, 0.5, 0.25};
+      g["materials"][0]["emissiveTexture"] = {{"index", 0}};
+      g["materials"][0]["extensions"]["KHR_materials_emissive_strength"] = {{"emissiveStrength", strength}};
+      g["extensionsRequired"] = {"KHR_materials_emissive_strength"};  // read, so not refused
+    };
+  };
+  const fs::path file = editedQuad("gltf_emissive", emissive(4.0));
+  GltfPlacement placement;
+  placement.emissionLuminance = 100.0f;
+  Scene scene;
+  appendGltf(file, file.parent_path(), placement, scene);
+  const Material& m = scene.materials.at(0);
+  EXPECT_EQ(m.emissiveFactor, glm::vec3(1.0f, 0.5f, 0.25f));
+  EXPECT_EQ(m.emissiveLuminance, 400.0f);
+  EXPECT_EQ(m.emissiveTexture, m.baseColourTexture);  // the same image, sRGB: one texture
+  EXPECT_TRUE(m.emitsRgb());
+
+  EXPECT_EQ(loadError(file), file.string() + ": /materials/0/emissiveFactor: the material emits light, and glTF gives "
+                                             "emission no unit: give the scene's object \"emission_luminance\" (cd/m² "
+                                             "of emissive white; 0 leaves it dark)");
+  placement.emissionLuminance = 0.0f;
+  Scene dark;
+  appendGltf(file, file.parent_path(), placement, dark);
+  EXPECT_FALSE(dark.materials.at(0).emitsRgb());
+  EXPECT_EQ(dark.materials.at(0).emissiveTexture, -1);  // not read
+  // A strength of 0, or glTF's default factor (black) under a texture, emits nothing: no unit needed.
+  const fs::path off = editedQuad("gltf_emissive_off", emissive(0.0));
+  EXPECT_NO_THROW(appendGltf(off, off.parent_path(), {}, scene));
+  const fs::path black = editedQuad("gltf_emissive_black", [](nlohmann::json& g) {
+    g["materials"][0]["emissiveTexture"] = {{"index", 0}};
+  });
+  EXPECT_NO_THROW(appendGltf(black, black.parent_path(), {}, scene));
+  EXPECT_EQ(scene.materials.back().emissiveTexture, -1);
+
+  EXPECT_EQ(loadError(editedQuad("gltf_emissive_negative", emissive(-1.0)), placement),
+            (fs::path(::testing::TempDir()) / "gltf_emissive_negative" / "quad.gltf").string() +
+                ": /materials/0/extensions/KHR_materials_emissive_strength/emissiveStrength: expected a number >= 0, got -1.0");
 }
 
 // A texture without a source (glTF allows it, for extensions Prism does not read) is said so; it

@@ -10,6 +10,7 @@
 // Colours are linear RGB in the scene's colour space (sRGB primaries unless stated).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -104,6 +105,17 @@ struct Material {
   // rasteriser shows it where the surface is seen; it lights nothing else (the path tracer's
   // global transport lets it light the scene).
   std::optional<Emission> emission;
+  // glTF's emission (glTF 2.0 §3.9.5): emissiveFactor × emissiveTexture, a light's colour in the
+  // scene's colour space ((1, 1, 1) its white illuminant, upsampled per pixel as an illuminant),
+  // emitted from both faces at emissiveLuminance cd/m² for (1, 1, 1): the scene object's
+  // "emission_luminance" times KHR_materials_emissive_strength (glTF gives emission no unit).
+  // Shown and gathered as `emission` is; a material has one or the other.
+  glm::vec3 emissiveFactor{0.0f};  // linear, [0, 1]
+  float emissiveLuminance = 0.0f;
+  int emissiveTexture = -1;  // index into Scene::textures, sRGB-encoded
+  bool emitsRgb() const {
+    return emissiveLuminance > 0.0f && std::max({emissiveFactor.r, emissiveFactor.g, emissiveFactor.b}) > 0.0f;
+  }
   int baseColourTexture = -1;         // index into Scene::textures, sRGB-encoded
   int metallicRoughnessTexture = -1;  // glTF: metallic in B, roughness in G, linear
   int normalTexture = -1;             // tangent-space normal map, linear
@@ -184,6 +196,12 @@ struct Scene {
 Bounds sceneBounds(const Scene& scene);
 
 // Error "OUTPUT: is also a file the scene reads; …" (core/atomic_file.h's requireOtherFile) when
+// Whether some material emits glTF's way (Material::emitsRgb): the renderer draws and reads its
+// emission then alone.
+inline bool anyMaterialEmitsRgb(const Scene& scene) {
+  return std::ranges::any_of(scene.materials, [](const Material& m) { return m.emitsRgb(); });
+}
+
 // `output` is the scene file, one of `files` or a section's inputFiles(): `render -o
 // models/tiles_base_colour.png` replaced the scene's texture with the render.
 void requireNotSceneInput(const std::filesystem::path& output, const Scene& scene);

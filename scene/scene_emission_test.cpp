@@ -6,6 +6,7 @@
 
 #include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
+#include "spectral/rgb_intent.h"
 #include "spectral/table_test_support.h"
 
 namespace prism {
@@ -53,6 +54,32 @@ TEST(SceneEmission, AnEmitterCountsWhereAMeshShowsIt) {
   EXPECT_NEAR(luminousIntegral(problem.lights[1]), 1.0, 1e-9);
   scene.materials[0].emission->luminance = 400.0f;
   EXPECT_EQ(sceneWavelengthFitProblem(settings, scene, colourSpace("srgb"), cachedTestTable()).lights[1], problem.lights[1]);
+}
+
+// glTF's emission counts as its colour upsampled as a light's at π·L (its factor's, or under a
+// texture, which may take it to any colour within the factor's channels, the white at the
+// factor's largest); the fit takes that spectrum at a luminance of its own, so that an edit of
+// the luminance finds the cached fit.
+TEST(SceneEmission, GltfEmissionCountsAsItsColourOrUnderATextureAsWhite) {
+  Scene scene;
+  Material panel;
+  panel.emissiveFactor = glm::vec3(0.2f, 0.5f, 1.0f);
+  panel.emissiveLuminance = 30.0f;
+  scene.materials.push_back(panel);
+  scene.meshes.emplace_back();  // material 0
+  const RgbColourSpace& srgb = colourSpace("srgb");
+  const SamplingSettings settings;
+  const Spectrum flat = RgbIlluminantSpectrum(cachedTestTable(), srgb, panel.emissiveFactor, 30.0).toDense();
+  EXPECT_TRUE(sceneEmission(scene, srgb, cachedTestTable()) == std::numbers::pi * flat);
+  const WavelengthFitProblem problem = sceneWavelengthFitProblem(settings, scene, srgb, cachedTestTable());
+  ASSERT_EQ(problem.lights.size(), 1u);
+  scene.materials[0].emissiveLuminance = 300.0f;
+  EXPECT_TRUE(sceneWavelengthFitProblem(settings, scene, srgb, cachedTestTable()).lights[0] == problem.lights[0]);
+  scene.materials[0].emissiveTexture = 0;
+  const Spectrum white = RgbIlluminantSpectrum(cachedTestTable(), srgb, glm::vec3(1.0f), 300.0).toDense();
+  EXPECT_TRUE(sceneEmission(scene, srgb, cachedTestTable()) == std::numbers::pi * white);
+  scene.materials[0].emissiveLuminance = 0.0f;  // dark: nothing to count
+  EXPECT_TRUE(sceneEmission(scene, srgb, cachedTestTable()) == Spectrum());
 }
 
 // The Optimised strategy's training set: each distinct light SPD once (two D65 lights are one),

@@ -393,11 +393,15 @@ class SceneParser {
     }
 
     if (kind == "gltf") {
-      o.expectObject({"gltf", "transform", "material", "name", "technique"});
+      o.expectObject({"gltf", "transform", "material", "emission_luminance", "name", "technique"});
       Node g = o.child("gltf");
       fs::path path = file(g);
       GltfPlacement placement;
       if (auto t = o.optionalChild("transform")) placement.transform = transform(*t);
+      if (auto l = o.optionalChild("emission_luminance")) {
+        if (o.has("material")) l->fail("the object's \"material\" replaces the file's, whose emission this would set");
+        placement.emissionLuminance = l->numberF(Range::atLeast(0.0));
+      }
       if (auto m = o.optionalChild("material")) {
         placement.materialOverride = materialReference(*m);
         checkTechniqueMaterial(o, placement.materialOverride, technique);
@@ -409,6 +413,11 @@ class SceneParser {
       } catch (const Error& e) {
         g.fail(e.what());
       }
+      if (technique == "prt")
+        for (std::size_t i = first; i < mScene.meshes.size(); ++i)
+          if (const Material& m = mScene.materials.at(static_cast<std::size_t>(mScene.meshes[i].material)); m.emitsRgb())
+            o.child("emission_luminance")
+                .fail("material '" + m.name + "' emits light, which PRT objects (lit by their transfer alone) do not show");
       // The nodes' transforms times the object's: a vertex must land within the scene's ±1e12.
       for (std::size_t i = first; i < mScene.meshes.size(); ++i)
         for (const Vertex& v : mScene.meshes[i].vertices)

@@ -63,11 +63,12 @@ class MaterialsPanel final : public Panel {
     ImGui::EndDisabled();
     if (onPrt && !m.conductor) ImGui::TextDisabled("(PRT objects use it: they are diffuse)");
     else if (m.lambertian) ImGui::TextDisabled("(lambertian: all of the light diffused)");
-    if (m.emission) {  // its luminance, the spectrum's shape kept (the scene file gives the spectrum)
-      float luminance = m.emission->luminance;
-      if (ImGui::SliderFloat("emission cd/m2", &luminance, 0.01f, 1e5f, "%.3g", ImGuiSliderFlags_Logarithmic) &&
-          luminance > 0.0f) {
-        m.emission->luminance = luminance;
+    if (m.emission || m.emitsRgb()) {  // its luminance, the spectrum's shape kept (the file gives it)
+      float& luminance = m.emission ? m.emission->luminance : m.emissiveLuminance;
+      float edited = luminance;
+      if (ImGui::SliderFloat("emission cd/m2", &edited, 0.01f, 1e5f, "%.3g", ImGuiSliderFlags_Logarithmic) &&
+          edited > 0.0f) {
+        luminance = edited;
         changed = true;
       }
     }

@@ -52,15 +52,16 @@ void setLightKey(Scene& scene, const std::string& key, const std::vector<std::st
   }
 }
 
-// An emitting material's luminance, its spectrum's shape kept; refused where it emits nothing (the
-// scene file gives the spectrum) and at 0 or less (the scene file's bound).
+// An emitting material's luminance, its spectrum's shape kept (glTF's: the cd/m² of its emissive
+// white); refused where it emits nothing (the scene file or the glTF gives the spectrum) and at 0
+// or less (the scene file's bound).
 void setEmissionLuminance(Material& m, const std::string& key, const std::string& value) {
-  if (!m.emission)
-    throw Error(fmt::format("{}: {} emits no light (its emission's spectrum is the scene file's)", excerpt(key),
+  if (!m.emission && !m.emitsRgb())
+    throw Error(fmt::format("{}: {} emits no light (what it emits is the scene file's or its glTF's)", excerpt(key),
                             excerpt(m.name)));
   const float luminance = render::parseFloatWithin(key, value, 0.0f, static_cast<float>(schema::kFloatInputLimit));
   if (!(luminance > 0.0f)) throw Error(fmt::format("{}: expected a luminance above 0, got \"{}\"", excerpt(key), excerpt(value)));
-  m.emission->luminance = luminance;
+  (m.emission ? m.emission->luminance : m.emissiveLuminance) = luminance;
 }
 
 // material.NAME.base-colour R,G,B, material.NAME.roughness X, material.NAME.metallic X,

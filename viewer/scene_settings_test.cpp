@@ -56,7 +56,7 @@ TEST(SceneSettings, MovesAPointLightAndTurnsItsShadowsOnAndOff) {
 TEST(SceneSettings, AnEmittersLuminanceKeepsItsSpectrum) {
   Scene scene = twoLights();
   EXPECT_EQ(error(scene, "material.floor.emission-luminance", "10"),
-            "material.floor.emission-luminance: floor emits no light (its emission's spectrum is the scene file's)");
+            "material.floor.emission-luminance: floor emits no light (what it emits is the scene file's or its glTF's)");
   const Spectrum a = illuminant("A");
   scene.materials[0].emission = Emission{a * (1.0 / luminousIntegral(a)), 5.0f};
   EXPECT_TRUE(applySceneSetting(scene, "material.floor.emission-luminance", "80"));
@@ -66,6 +66,12 @@ TEST(SceneSettings, AnEmittersLuminanceKeepsItsSpectrum) {
   EXPECT_EQ(error(scene, "material.floor.emission-luminance", "0"),
             "material.floor.emission-luminance: expected a luminance above 0, got \"0\"");
   EXPECT_EQ(scene.materials[0].emission->luminance, 80.0f);  // nothing half-set
+  // glTF's emission: the cd/m² of its emissive white.
+  scene.materials[0].emission.reset();
+  scene.materials[0].emissiveFactor = glm::vec3(1.0f, 0.5f, 0.2f);
+  scene.materials[0].emissiveLuminance = 5.0f;
+  EXPECT_TRUE(applySceneSetting(scene, "material.floor.emission-luminance", "40"));
+  EXPECT_EQ(scene.materials[0].emissiveLuminance, 40.0f);
 }
 
 TEST(SceneSettings, ALightsSpdComesFromACsvFileAsThePanelsDoes) {

@@ -28,6 +28,7 @@ layout(binding = 3) uniform sampler2D gDepth;
 layout(binding = 4) uniform sampler2DArray uShadowMaps;
 layout(binding = 5) uniform sampler3D uUpsamplingTable;
 layout(binding = 6) uniform sampler2D gCoefficients;  // read when frame.gbufferCoefficients != 0
+layout(binding = 13) uniform sampler2D gEmission;  // 7–12: the techniques' (sky, nebula)
 
 layout(location = 0) out vec4 oTristimulus;
 
@@ -59,6 +60,9 @@ vec3 upsamplingCoefficients(vec3 rgb) {
              ? upsamplingCoefficientsFiltered(uUpsamplingTable, frame.upsamplingResolution, rgb)
              : upsamplingCoefficientsManual(uUpsamplingTable, frame.upsamplingResolution, rgb);
 }
+vec3 emissionCoefficients(vec3 rgb) {
+  return upsamplingCoefficientsManual(uUpsamplingTable, frame.upsamplingResolution, rgb);
+}
 
 #include "shared/pixel_shading.glsl"
 
@@ -78,6 +82,7 @@ void main() {
                               texelFetch(gDepth, p, 0).r);
   s.normal = normalize(nr.xyz);
   s.albedo = am.rgb;
+  s.emission = texelFetch(gEmission, p, 0).rgb;
   s.metallic = am.a;
   s.roughness = nr.a;
   s.material = int(id & ~kTechniqueShadedBit) - 1;

@@ -79,9 +79,12 @@ struct GpuMaterial {
   // Index of its emitted radiance's spectra (j = 0 of materialSpectrumIndex; RGB mode: its colour
   // in cd/m²), or kNoEmission.
   int emission;
+  // glTF's emission (the G-buffer's emissive colour, SurfaceSample::emission): the index of the
+  // colour space's white of luminance 1 (RGB mode: (1, 1, 1)), or kNoEmission; and the cd/m² of
+  // the colour (1, 1, 1).
+  int rgbEmissionWhite;
+  float rgbEmissionLuminance;
   int pad0;
-  int pad1;
-  int pad2;
 };
 const int kNoEmission = -1;
 
@@ -114,6 +117,7 @@ struct SurfaceSample {
   vec3 position;   // world
   vec3 normal;     // world, unit
   vec3 albedo;     // linear RGB (texture × factor)
+  vec3 emission;   // glTF's emissive colour, linear RGB (GpuMaterial::rgbEmissionWhite)
   float metallic;
   float roughness;
   int material;    // index into the material table

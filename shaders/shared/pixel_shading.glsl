@@ -7,7 +7,10 @@
 //   GpuMaterial frameMaterial(int id);    vec4 frameLightSpectrum(int l, int b);
 //   vec4 frameMaterialSpectrum(int s, int b, int j);
 //   float shadowDepthAt(int layer, int x, int y);    (x, y already clamped to the map)
-//   vec3 upsamplingCoefficients(vec3 rgb);           (Jakob–Hanika table lookup)
+//   vec3 upsamplingCoefficients(vec3 rgb);           (the albedo's Jakob–Hanika coefficients:
+//     the table's, or the G-buffer's when it stores them)
+//   vec3 emissionCoefficients(vec3 rgb);             (a light colour's: the table's exact lookup,
+//     never the filtered one, whose 8-bit weights miss the CPU's by up to 4e-3 in reflectance)
 //   WaterConstants frameWater();  vec4 frameWaterSpectrum(int b, int j);   (variants with water:
 //     its block, underwater.glsl)
 //   SkyConstants frameSky();  GpuAtmosphere frameAtmosphere(int b);        (variants with a sky:
@@ -20,7 +23,7 @@
 // Techniques specialise the file at compile time, never by a run-time test per pixel: the
 // includer defines PRISM_TECHNIQUE_<NAME> for each technique of the scene (the renderer compiles
 // and caches one lighting program per combination; the CPU twin compiles every combination).
-// Variants: PRISM_TECHNIQUE_WATER PRISM_TECHNIQUE_ATMOSPHERE PRISM_TECHNIQUE_NEBULA
+// Variants: PRISM_TECHNIQUE_WATER PRISM_TECHNIQUE_ATMOSPHERE PRISM_TECHNIQUE_NEBULA PRISM_RGB_EMISSION
 //
 // Under water (PRISM_TECHNIQUE_WATER, underwater.glsl) a directional light is the sun above the
 // surface: its irradiance at a point is attenuated by e^(−Kd·depth), and it single-scatters into
@@ -41,6 +44,11 @@
 // front of it (nebulaOpticalDepthAt(uv), from the nebula's march); the nebula's own light its
 // pass adds after this one. Its stars light surfaces as point lights of their own, dimmed by the
 // dust between (nebulaStarsReflected).
+//
+// A glTF material's emission (SurfaceSample::emission, a light's colour) is upsampled once per
+// pixel as an illuminant, times the material's luminance, in the variant PRISM_RGB_EMISSION
+// (a scene with such a material; the CPU twin always); a scene material's own emitted spectrum
+// comes per batch from the material spectra.
 //
 // Loop order: per light, the wavelength-independent terms (incidence, shadow, D·G) once; then
 // per batch the albedo spectrum once and every light's contribution, accumulated straight into
@@ -449,6 +457,15 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
   if (fc.mode == kModeJakobHanika && kind == kMaterialBaseColour) {
     coefficients = upsamplingCoefficients(s.albedo);  // once per pixel, not per wavelength
   }
+#ifdef PRISM_RGB_EMISSION
+  // glTF's emission, a light's colour upsampled as RgbIlluminantSpectrum does: its scale times the
+  // reflectance of colour / scale, times the colour space's white.
+  float emissionScale = unboundedScale(s.emission);
+  bool rgbEmits = material.rgbEmissionWhite != kNoEmission && emissionScale > 0.0f;
+  vec3 emissionAlbedo = rgbEmits ? s.emission / emissionScale : vec3(0.0f);
+  vec3 emissionCoeffs = vec3(0.0f);
+  if (rgbEmits && fc.mode == kModeJakobHanika) emissionCoeffs = emissionCoefficients(emissionAlbedo);
+#endif
 
 #ifdef PRISM_TECHNIQUE_ATMOSPHERE
   // The sky's per-pixel geometry, once for every batch.
@@ -500,6 +517,19 @@ PRISM_INLINE vec3 shadeSurface(IN(FrameConstants) fc, IN(SurfaceSample) s,
       radiance += reflection * arriving;
     }
     if (material.emission != kNoEmission) radiance += frameMaterialSpectrum(material.emission, b, 0);
+#ifdef PRISM_RGB_EMISSION
+    if (rgbEmits) {
+      vec4 colour;
+      if (fc.mode == kModeRgb) {
+        colour = vec4(s.emission.x, s.emission.y, s.emission.z, 0.0f);
+      } else if (fc.mode == kModeNaive) {
+        colour = boxReflectance4(emissionAlbedo, batch.lambdaNm) * emissionScale;
+      } else {
+        colour = upsampledReflectance4(emissionCoeffs, batch.lambdaNm) * emissionScale;
+      }
+      radiance += colour * (frameMaterialSpectrum(material.rgbEmissionWhite, b, 0) * material.rgbEmissionLuminance);
+    }
+#endif
 #ifdef PRISM_TECHNIQUE_NEBULA
     vec4 nebulaLambdaNm = fc.mode == kModeRgb ? kNebulaRgbStandInNm : batch.lambdaNm;
     radiance += nebulaStarsReflected(fc, nebula, s, v, lambertian, b, nebulaLambdaNm, albedo, spectralConductor,

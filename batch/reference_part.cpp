@@ -146,6 +146,14 @@ std::string sceneHash(const std::filesystem::path& scene, const std::vector<std:
       values(material.conductor->k.values());
     }
     if (material.emission) values(material.emission->radiance().values());
+    // What a glTF file's materials say (the file's bytes are not hashed, its meshes and images are).
+    const float inputs[] = {material.baseColour.r,     material.baseColour.g,     material.baseColour.b,
+                            material.metallic,         material.roughness,        material.emissiveFactor.r,
+                            material.emissiveFactor.g, material.emissiveFactor.b, material.emissiveLuminance};
+    const std::int32_t textures[] = {material.baseColourTexture, material.metallicRoughnessTexture,
+                                     material.normalTexture, material.emissiveTexture};
+    hash = fnv1a(inputs, sizeof inputs, hash);
+    hash = fnv1a(textures, sizeof textures, hash);
   }
   for (const Light& light : loaded.lights) values(light.spd.values());
   for (const auto& section : loaded.techniques.all()) hash = section->hashLoadedData(hash);

@@ -18,27 +18,41 @@ namespace {
 
 using testing::GpuTest;
 
+// A colour and an id target, and a program that draws (0.25, -1.5, 8, 1) into the first and
+// 7 + x + 1000·y into the second over a full-screen triangle; bound and cleared to 0.
+struct TwoTargets {
+  TwoTargets(GLsizei w, GLsizei h)
+      : colour({w, h, GL_RGBA32F, 1, {}, {}, "colour"}),
+        ids({w, h, GL_R32UI, 1, {}, {}, "pixel ids"}),
+        fb({{{&colour, 0}, {&ids, 0}}, {}, "two targets"}),
+        program(testing::drawProgram("fullscreen.vert", "two_targets.frag")),
+        triangle(VertexArray::attributeless("full-screen triangle")) {
+    program.setUniform("uColour", glm::vec4(0.25f, -1.5f, 8.0f, 1.0f));
+    program.setUniform("uIdOffset", 7u);
+    fb.bind();
+    fb.clearColour(0, glm::vec4(0.0f));
+    fb.clearColourUint(1, {0u, 0u, 0u, 0u});
+  }
+  void draw() const {
+    program.use();
+    triangle.draw(3);
+  }
+  Texture2D colour, ids;
+  Framebuffer fb;
+  Program program;
+  VertexArray triangle;
+};
+
 TEST_F(GpuTest, FullScreenTriangleFillsBothAttachments) {
   const GLsizei w = 7, h = 5;  // not square, so that swapped axes show
-  Texture2D colour({w, h, GL_RGBA32F, 1, {}, {}, "colour"});
-  Texture2D ids({w, h, GL_R32UI, 1, {}, {}, "pixel ids"});
-  Framebuffer fb({{{&colour, 0}, {&ids, 0}}, {}, "two targets"});
-  EXPECT_EQ(fb.width(), w);
-  EXPECT_EQ(fb.height(), h);
-  EXPECT_EQ(fb.colourCount(), 2u);
+  TwoTargets t(w, h);
+  EXPECT_EQ(t.fb.width(), w);
+  EXPECT_EQ(t.fb.height(), h);
+  EXPECT_EQ(t.fb.colourCount(), 2u);
+  t.draw();
 
-  Program program = testing::drawProgram("fullscreen.vert", "two_targets.frag");
-  program.setUniform("uColour", glm::vec4(0.25f, -1.5f, 8.0f, 1.0f));
-  program.setUniform("uIdOffset", 7u);
-  VertexArray empty = VertexArray::attributeless("full-screen triangle");
-  fb.bind();
-  fb.clearColour(0, glm::vec4(0.0f));
-  fb.clearColourUint(1, {0u, 0u, 0u, 0u});
-  program.use();
-  empty.draw(3);
-
-  std::vector<float> rgba = readTexture2DFloat(colour, 4);
-  std::vector<std::uint32_t> id = readTexture2DUint(ids);
+  std::vector<float> rgba = readTexture2DFloat(t.colour, 4);
+  std::vector<std::uint32_t> id = readTexture2DUint(t.ids);
   for (GLsizei y = 0; y < h; ++y)
     for (GLsizei x = 0; x < w; ++x) {
       auto i = static_cast<std::size_t>(y * w + x);
@@ -54,26 +68,17 @@ TEST_F(GpuTest, FullScreenTriangleFillsBothAttachments) {
 // takes the draw.
 TEST_F(GpuTest, AnUndrawnAttachmentKeepsWhatItHeld) {
   const GLsizei w = 3, h = 2;
-  Texture2D colour({w, h, GL_RGBA32F, 1, {}, {}, "colour"});
-  Texture2D ids({w, h, GL_R32UI, 1, {}, {}, "pixel ids"});
-  Framebuffer fb({{{&colour, 0}, {&ids, 0}}, {}, "two targets"});
-  Program program = testing::drawProgram("fullscreen.vert", "two_targets.frag");
-  program.setUniform("uColour", glm::vec4(0.25f, -1.5f, 8.0f, 1.0f));
-  program.setUniform("uIdOffset", 7u);
-  VertexArray empty = VertexArray::attributeless("full-screen triangle");
-  fb.bind();
-  fb.clearColour(0, glm::vec4(3.0f));
-  fb.clearColourUint(1, {0u, 0u, 0u, 0u});
-  fb.setColourDrawn(0, false);
-  fb.clearColour(0, glm::vec4(9.0f));
-  program.use();
-  empty.draw(3);
-  EXPECT_EQ(readTexture2DFloat(colour, 4), std::vector<float>(4 * w * h, 3.0f));
-  EXPECT_EQ(readTexture2DUint(ids)[0], 7u);  // the other attachment is drawn as before
-  fb.setColourDrawn(0, true);
-  empty.draw(3);
-  EXPECT_EQ(readTexture2DFloat(colour, 4)[0], 0.25f);
-  EXPECT_THROW(fb.setColourDrawn(2, false), std::out_of_range);
+  TwoTargets t(w, h);
+  t.fb.clearColour(0, glm::vec4(3.0f));
+  t.fb.setColourDrawn(0, false);
+  t.fb.clearColour(0, glm::vec4(9.0f));
+  t.draw();
+  EXPECT_EQ(readTexture2DFloat(t.colour, 4), std::vector<float>(4 * w * h, 3.0f));
+  EXPECT_EQ(readTexture2DUint(t.ids)[0], 7u);  // the other attachment is drawn as before
+  t.fb.setColourDrawn(0, true);
+  t.draw();
+  EXPECT_EQ(readTexture2DFloat(t.colour, 4)[0], 0.25f);
+  EXPECT_THROW(t.fb.setColourDrawn(2, false), std::out_of_range);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -30,6 +30,29 @@ struct Worst {
   int pixels = 0;
 };
 
+// A frame's settings and the bounds its emitters' pixels are held to.
+struct Case {
+  const char* what;
+  RenderMode mode;
+  SamplingStrategy strategy;
+  int frames;
+  double luminance, chromaticity;  // the bounds: relative, Δxy
+};
+
+// RGB mode carries an emission's own tristimulus (float rounding); the reference mode's 472
+// wavelengths are the 1 nm grid's midpoints.
+const Case kRgbCase{"rgb", RenderMode::Rgb, SamplingStrategy::Uniform, 1, 1e-5, 1e-6};
+const Case kReferenceCase{"reference", RenderMode::Reference, SamplingStrategy::Uniform, 1, 5e-3, 1e-3};
+
+// The fixtures' frame: 160 × 90 (an emitter a few hundred pixels or more), small shadow maps.
+FrameSettings smallFrame() {
+  FrameSettings settings;
+  settings.width = 160;
+  settings.height = 90;
+  settings.shadowMapSize = 256;
+  return settings;
+}
+
 // Over the pixels of each black Lambertian emitter, the largest errors against its spectrum.
 Worst worstEmitterPixel(const Scene& scene, const FrameSettings& settings, int frames) {
   Renderer renderer(scene, cachedTestTable(), settings);
@@ -57,23 +80,11 @@ TEST(EmittingMaterials, ShowTheirOwnLuminanceAndChromaticity) {
   const auto tube = std::ranges::find(scene.materials, "tube", &Material::name);
   ASSERT_NE(tube, scene.materials.end());
   EXPECT_NEAR(luminousIntegral(tube->emission->radiance()), 400.0, 400.0 * 1e-12);  // as the file says
-  FrameSettings settings;
-  settings.width = 160;
-  settings.height = 90;
-  settings.shadowMapSize = 256;
-  struct Case {
-    const char* what;
-    RenderMode mode;
-    SamplingStrategy strategy;
-    int frames;
-    double luminance, chromaticity;  // the bounds
-  };
-  // RGB mode carries the emission's own tristimulus (float rounding); the reference's 472
-  // wavelengths are the 1 nm grid's midpoints; 16 wavelengths a frame (the default count) drawn
-  // by the lights' pdf, which follows the emitters too, converge on the F11 tube's lines as frames
-  // accumulate (as issue 16 holds lamps: within 1 % in luminance and Δxy 1e-3 after 32 frames).
-  for (const Case& c : {Case{"rgb", RenderMode::Rgb, SamplingStrategy::Uniform, 1, 1e-5, 1e-6},
-                        Case{"reference", RenderMode::Reference, SamplingStrategy::Uniform, 1, 5e-3, 1e-3},
+  FrameSettings settings = smallFrame();
+  // 16 wavelengths a frame (the default count) drawn by the lights' pdf, which follows the
+  // emitters too, converge on the F11 tube's lines as frames accumulate (as issue 16 holds lamps:
+  // within 1 % in luminance and Δxy 1e-3 after 32 frames).
+  for (const Case& c : {kRgbCase, kReferenceCase,
                         Case{"16 lights", RenderMode::JakobHanika, SamplingStrategy::Lights, 32, 0.01, 1e-3}}) {
     settings.mode = c.mode;
     settings.sampling.strategy = c.strategy;
@@ -95,10 +106,7 @@ TEST(EmittingMaterials, AddTheirEmissionToWhatTheyReflect) {
   ASSERT_NE(flame, dark.materials.end());
   const Spectrum emission = flame->emission->radiance();
   flame->emission.reset();
-  FrameSettings settings;
-  settings.width = 160;
-  settings.height = 90;
-  settings.shadowMapSize = 256;
+  FrameSettings settings = smallFrame();
   settings.mode = RenderMode::Rgb;
   auto frame = [&](const Scene& s) {
     Renderer renderer(s, cachedTestTable(), settings);
@@ -137,18 +145,8 @@ TEST(EmittingMaterials, GltfEmissionShowsItsColourAsALight) {
   const auto glow = std::ranges::find(scene.materials, "emissive_panels.gltf/glow", &Material::name);
   ASSERT_NE(glow, scene.materials.end());
   EXPECT_EQ(glow->emissiveLuminance, 100.0f);  // the object's 50 cd/m² times the file's strength 2
-  FrameSettings settings;
-  settings.width = 160;
-  settings.height = 90;
-  struct Case {
-    const char* what;
-    RenderMode mode;
-    SamplingStrategy strategy;
-    int frames;
-    double luminance, chromaticity;  // the bounds, as for the scene's own emitters above
-  };
-  for (const Case& c : {Case{"rgb", RenderMode::Rgb, SamplingStrategy::Uniform, 1, 1e-5, 1e-6},
-                        Case{"reference", RenderMode::Reference, SamplingStrategy::Uniform, 1, 5e-3, 1e-3},
+  FrameSettings settings = smallFrame();  // no lights: the shadow maps' size does not matter
+  for (const Case& c : {kRgbCase, kReferenceCase,  // the bounds as for the scene's own emitters above
                         Case{"16 rotated", RenderMode::JakobHanika, SamplingStrategy::Rotated, 32, 0.01, 1e-3}}) {
     settings.mode = c.mode;
     settings.sampling.strategy = c.strategy;

@@ -28,7 +28,7 @@ layout(binding = 3) uniform sampler2D gDepth;
 layout(binding = 4) uniform sampler2DArray uShadowMaps;
 layout(binding = 5) uniform sampler3D uUpsamplingTable;
 layout(binding = 6) uniform sampler2D gCoefficients;  // read when frame.gbufferCoefficients != 0
-layout(binding = 13) uniform sampler2D gEmission;  // 7–12: the techniques' (sky, nebula)
+layout(binding = 13) uniform sampler2D gEmission;  // PRISM_RGB_EMISSION; 7–12 are the techniques'
 
 layout(location = 0) out vec4 oTristimulus;
 
@@ -82,7 +82,11 @@ void main() {
                               texelFetch(gDepth, p, 0).r);
   s.normal = normalize(nr.xyz);
   s.albedo = am.rgb;
+#ifdef PRISM_RGB_EMISSION
   s.emission = texelFetch(gEmission, p, 0).rgb;
+#else
+  s.emission = vec3(0.0);  // the target is not drawn: what it holds is another scene's
+#endif
   s.metallic = am.a;
   s.roughness = nr.a;
   s.material = int(id & ~kTechniqueShadedBit) - 1;

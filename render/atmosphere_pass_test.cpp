@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <cstdio>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -135,6 +136,54 @@ TEST(AtmospherePass, MultipleScatteringMatchesItsCpuTwin) {
   }
   std::printf("multiple scattering, GPU vs CPU twin: max relative %.3g (floored at 1e-3 of each channel's peak)\n", worst);
   EXPECT_LE(worst, 1e-4);
+}
+
+// Several batches of one atmosphere, whose transmittance tables are combined from one
+// integration of the constituents' densities: each layer is, bit for bit, the table a pass of its
+// batch alone makes, and its multiple scattering over it; and both against the CPU twin of that
+// batch on the first test's texels, within its bounds.
+TEST(AtmospherePass, EveryBatchHasItsOwnTablesFromOneIntegration) {
+  gpu::HeadlessContext context;
+  AtmosphereParameters p;
+  p.multipleScattering = true;
+  const std::vector<shared::GpuAtmosphere> batches{packAtmosphere(p, glm::vec4(360.0f, 440.0f, 550.0f, 680.0f)),
+                                                   packAtmosphere(p, glm::vec4(600.0f, 620.0f, 700.0f, 830.0f)),
+                                                   packAtmosphere(p, glm::vec4(400.0f, 410.0f, 420.0f, 430.0f))};
+  atmosphere::AtmospherePass pass;
+  atmosphere::AtmosphereView view;
+  view.originKm = float(p.bottomRadiusKm) + 0.2f;
+  pass.update(batches, view);
+  const AtmosphereTexels gpuTables = readTexels(pass);
+  const std::vector<glm::vec4> densities = transmittanceDensities(batches[0]);
+  for (std::size_t b = 0; b < batches.size(); ++b) {
+    atmosphere::AtmospherePass alone;
+    alone.update({batches[b]}, view);
+    const AtmosphereTexels own = readTexels(alone);
+    EXPECT_EQ(gpuTables.transmittance[b], own.transmittance[0]) << "batch " << b;
+    EXPECT_EQ(gpuTables.multipleScattering[b], own.multipleScattering[0]) << "batch " << b;
+
+    const AtmosphereTables cpu = computeTables(batches[b], densities);
+    double worstDepth = 0.0, worstMs = 0.0;
+    for (int y = 0; y < shared::kTransmittanceLutHeight; y += 3) {
+      for (int x = 0; x < shared::kTransmittanceLutWidth; x += 5) {
+        const auto i = static_cast<std::size_t>(y * shared::kTransmittanceLutWidth + x);
+        for (int j = 0; j < 4; ++j)
+          worstDepth = worstOf(worstDepth, std::abs(double(gpuTables.transmittance[b][i][j]) - double(cpu.transmittance[i][j])) /
+                                               std::max(double(cpu.transmittance[i][j]), 1e-30));
+      }
+    }
+    for (int j = 0; j < 4; ++j) {
+      double peak = 0.0;
+      for (const glm::vec4& c : cpu.multipleScattering) peak = std::max(peak, double(c[j]));
+      for (std::size_t i = 0; i < cpu.multipleScattering.size(); ++i)
+        worstMs = worstOf(worstMs, std::abs(double(gpuTables.multipleScattering[b][i][j]) - double(cpu.multipleScattering[i][j])) /
+                                       std::max(double(cpu.multipleScattering[i][j]), 1e-3 * peak));
+    }
+    std::printf("batch %zu, GPU vs CPU twin: optical depth max relative %.3g, multiple scattering %.3g\n", b,
+                worstDepth, worstMs);
+    EXPECT_LE(worstDepth, 5e-4) << "batch " << b;
+    EXPECT_LE(worstMs, 1e-4) << "batch " << b;
+  }
 }
 
 // The sky's irradiance coefficients (a compute pass over 192 × 216 cells of the sky-view table's

@@ -163,6 +163,22 @@ PRISM_INLINE vec4 transmittanceLutValue(IN(GpuAtmosphere) a, int x, int y) {
   return opticalDepthToTop(a, rc.r, rc.mu);
 }
 
+// The transmittance table without its wavelengths: `a` with unit coefficients, one constituent
+// per channel (x Rayleigh, y Mie extinction, z ozone, w none), whose table holds each
+// constituent's optical depth. Optical depth is linear in the coefficients, so every batch of an
+// atmosphere of that shape combines its table from that one (transmittanceFromDensities): one
+// integration for any number of batches, equal to each batch's own up to float reassociation.
+PRISM_INLINE GpuAtmosphere unitCoefficientAtmosphere(IN(GpuAtmosphere) a) {
+  GpuAtmosphere u = a;
+  u.rayleighScattering = vec4(1.0f, 0.0f, 0.0f, 0.0f);
+  u.mieExtinction = vec4(0.0f, 1.0f, 0.0f, 0.0f);
+  u.ozoneAbsorption = vec4(0.0f, 0.0f, 1.0f, 0.0f);
+  return u;
+}
+PRISM_INLINE vec4 transmittanceFromDensities(IN(GpuAtmosphere) a, IN(vec4) densities) {
+  return a.rayleighScattering * densities.x + a.mieExtinction * densities.y + a.ozoneAbsorption * densities.z;
+}
+
 // --- Multiple-scattering table texel (Hillaire 2020, §5.5) ---------------------------------
 // Second-order radiance L₂ and transfer f_ms over 64 directions (a spherical Fibonacci set),
 // isotropic phase, from a point at radius r under a sun of zenith cosine μ_s:

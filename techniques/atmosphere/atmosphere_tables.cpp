@@ -74,22 +74,18 @@ AtmosphereTables computeTables(const shared::GpuAtmosphere& atmosphere, unsigned
 }
 
 std::vector<glm::vec4> transmittanceDensities(const shared::GpuAtmosphere& atmosphere, unsigned threads) {
-  shared::GpuAtmosphere unit = atmosphere;
-  unit.rayleighScattering = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
-  unit.mieExtinction = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
-  unit.ozoneAbsorption = glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);
-  return transmittanceTexels(unit, threads);
+  AtmosphereTables none;
+  return transmittanceTexels(AtmosphereTablesKernel(none).unitCoefficientAtmosphere(atmosphere), threads);
 }
 
 AtmosphereTables computeTables(const shared::GpuAtmosphere& atmosphere, const std::vector<glm::vec4>& densities,
                                unsigned threads) {
   AtmosphereTables tables;
   tables.atmosphere = atmosphere;
+  AtmosphereTablesKernel kernel(tables);
   tables.transmittance.resize(densities.size());
-  for (std::size_t i = 0; i < densities.size(); ++i) {
-    const glm::vec4& d = densities[i];
-    tables.transmittance[i] = atmosphere.rayleighScattering * d.x + atmosphere.mieExtinction * d.y + atmosphere.ozoneAbsorption * d.z;
-  }
+  for (std::size_t i = 0; i < densities.size(); ++i)
+    tables.transmittance[i] = kernel.transmittanceFromDensities(atmosphere, densities[i]);
   computeMultipleScattering(tables, threads);
   return tables;
 }

@@ -27,6 +27,8 @@ AtmosphereTables computeTables(const shared::GpuAtmosphere& atmosphere, unsigned
 // every batch's table of one atmosphere is their combination: computed once, it spares each
 // further batch the table's integration (~90 % of a batch's time on the CPU; what tabulating many
 // wavelengths, as PRT's spectral sky does, spends). Any batch of the atmosphere gives its shape.
+// The shared unitCoefficientAtmosphere and transmittanceFromDensities (atmosphere_luts.glsl), as
+// the GPU's pass combines its tables.
 std::vector<glm::vec4> transmittanceDensities(const shared::GpuAtmosphere& atmosphere, unsigned threads = 0);
 // computeTables with the transmittance table combined from those densities (equal to the direct
 // integration up to float reassociation, ~1e-7 relative).

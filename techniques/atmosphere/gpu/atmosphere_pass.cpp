@@ -7,6 +7,7 @@
 #include "techniques/atmosphere/atmosphere_section.h"
 #include "techniques/atmosphere/atmosphere_texels.h"
 #include "core/data_files.h"
+#include "core/error.h"
 
 namespace prism::atmosphere {
 namespace {
@@ -47,7 +48,9 @@ GLuint groups(int size) { return static_cast<GLuint>((size + 7) / 8); }
 }  // namespace
 
 AtmospherePass::AtmospherePass()
-    : mTransmittanceProgram(computeProgram("atmosphere_transmittance.comp", "atmosphere transmittance")),
+    : mDensitiesProgram(
+          computeProgram("atmosphere_transmittance_densities.comp", "atmosphere transmittance densities")),
+      mTransmittanceProgram(computeProgram("atmosphere_transmittance.comp", "atmosphere transmittance")),
       mMultipleScatteringProgram(
           computeProgram("atmosphere_multiple_scattering.comp", "atmosphere multiple scattering")),
       mSkyViewProgram(computeProgram("atmosphere_sky_view.comp", "atmosphere sky view")),
@@ -61,7 +64,14 @@ float AtmosphereView::cameraRadiusKm() const {
 
 void AtmospherePass::update(const std::vector<shared::GpuAtmosphere>& batches, const AtmosphereView& view) {
   const int n = static_cast<int>(batches.size());
+  PRISM_CHECK(n > 0);
+  // The densities are integrated over the first batch's shape: the others must share it.
+  for (const shared::GpuAtmosphere& b : batches)
+    PRISM_CHECK(b.shape == batches[0].shape && b.ozoneMie.x == batches[0].ozoneMie.x &&
+                b.ozoneMie.y == batches[0].ozoneMie.y);
   if (n != mBatches) {
+    mDensities = table(shared::kTransmittanceLutWidth, shared::kTransmittanceLutHeight, 1,
+                       "atmosphere transmittance densities");
     mTransmittance = table(shared::kTransmittanceLutWidth, shared::kTransmittanceLutHeight, n,
                            "atmosphere transmittance");
     mMultipleScattering = table(shared::kMultipleScatteringLutSize, shared::kMultipleScatteringLutSize,
@@ -82,7 +92,11 @@ void AtmospherePass::update(const std::vector<shared::GpuAtmosphere>& batches, c
                               GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
   const GLuint layers = static_cast<GLuint>(n);
 
+  mDensities.bindImage(0, GL_WRITE_ONLY);
+  gpu::runCompute(mDensitiesProgram,
+                  {groups(shared::kTransmittanceLutWidth), groups(shared::kTransmittanceLutHeight), 1}, barriers);
   mTransmittance.bindImage(0, GL_WRITE_ONLY);
+  mDensities.bindImage(1, GL_READ_ONLY);
   gpu::runCompute(mTransmittanceProgram,
                   {groups(shared::kTransmittanceLutWidth), groups(shared::kTransmittanceLutHeight), layers},
                   barriers);
@@ -151,7 +165,7 @@ std::shared_ptr<const TechniqueTexels> AtmospherePass::readTexels() const {
 
 std::size_t AtmospherePass::gpuMemoryBytes() const {
   std::size_t bytes = mSkyIrradiance.sizeBytes() + mAtmospheres.sizeBytes();
-  for (const gpu::Texture2DArray* t : {&mTransmittance, &mMultipleScattering, &mSkyView, &mAerialPerspective}) {
+  for (const gpu::Texture2DArray* t : {&mDensities, &mTransmittance, &mMultipleScattering, &mSkyView, &mAerialPerspective}) {
     bytes += t->sizeBytes();
   }
   return bytes;

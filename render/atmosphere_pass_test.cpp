@@ -154,6 +154,8 @@ TEST(AtmospherePass, EveryBatchHasItsOwnTablesFromOneIntegration) {
   view.originKm = float(p.bottomRadiusKm) + 0.2f;
   pass.update(batches, view);
   const AtmosphereTexels gpuTables = readTexels(pass);
+  ASSERT_EQ(gpuTables.transmittance.size(), batches.size());
+  ASSERT_EQ(gpuTables.multipleScattering.size(), batches.size());
   const std::vector<glm::vec4> densities = transmittanceDensities(batches[0]);
   for (std::size_t b = 0; b < batches.size(); ++b) {
     atmosphere::AtmospherePass alone;

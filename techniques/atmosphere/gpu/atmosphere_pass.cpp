@@ -56,7 +56,9 @@ AtmospherePass::AtmospherePass()
       mSkyViewProgram(computeProgram("atmosphere_sky_view.comp", "atmosphere sky view")),
       mSkyIrradianceProgram(computeProgram("atmosphere_sky_irradiance.comp", "atmosphere sky irradiance")),
       mAerialPerspectiveProgram(
-          computeProgram("atmosphere_aerial_perspective.comp", "atmosphere aerial perspective")) {}
+          computeProgram("atmosphere_aerial_perspective.comp", "atmosphere aerial perspective")),
+      mDensities(table(shared::kTransmittanceLutWidth, shared::kTransmittanceLutHeight, 1,
+                       "atmosphere transmittance densities")) {}
 
 float AtmosphereView::cameraRadiusKm() const {
   return glm::length(glm::vec3(cameraWorldM.x * 1e-3f, originKm + cameraWorldM.y * 1e-3f, cameraWorldM.z * 1e-3f));
@@ -70,8 +72,6 @@ void AtmospherePass::update(const std::vector<shared::GpuAtmosphere>& batches, c
     PRISM_CHECK(b.shape == batches[0].shape && b.ozoneMie.x == batches[0].ozoneMie.x &&
                 b.ozoneMie.y == batches[0].ozoneMie.y);
   if (n != mBatches) {
-    mDensities = table(shared::kTransmittanceLutWidth, shared::kTransmittanceLutHeight, 1,
-                       "atmosphere transmittance densities");
     mTransmittance = table(shared::kTransmittanceLutWidth, shared::kTransmittanceLutHeight, n,
                            "atmosphere transmittance");
     mMultipleScattering = table(shared::kMultipleScatteringLutSize, shared::kMultipleScatteringLutSize,

@@ -3,13 +3,13 @@
 // the multiple-scattering table and the sky-view table seen from the camera, each a layer of a
 // texture array, then the sky's irradiance (four spherical-harmonic coefficients per batch, a
 // storage buffer) and the aerial-perspective volume (one array: batches side by side in x, layer
-// j·32 + slice, j 0 in-scattering, 1 transmittance). The transmittance tables are combined from
-// one integration of the constituents' optical depths (the densities table): the integration,
-// 42 M samples, was most of a batch's work, and the reference's 118 batches repeated it 118 times.
-// All batches of an update are one atmosphere's (same shape; checked),
-// by the compute passes shaders/passes/atmosphere_*.comp over the same shaders/shared/atmosphere_*.glsl
-// the CPU twin (techniques/atmosphere/atmosphere_tables.h) runs. Tests hold the tables to the
-// double-precision reference.
+// j·32 + slice, j 0 in-scattering, 1 transmittance), by the compute passes
+// shaders/passes/atmosphere_*.comp over the same shaders/shared/atmosphere_*.glsl the CPU twin
+// (techniques/atmosphere/atmosphere_tables.h) runs. The transmittance tables are combined from one
+// integration of the constituents' optical depths (the densities table): the integration, about
+// 30 M samples, was most of a batch's work, and the reference's 118 batches repeated it 118 times.
+// All batches of an update are one atmosphere's (the same shape; checked). Tests hold the tables
+// to the double-precision reference.
 #pragma once
 
 #include <memory>

@@ -33,6 +33,13 @@ class Converter {
       : mModel(model), mName(std::move(name)), mPlacement(placement), mScene(scene) {}
 
   void run() {
+    // Materials no primitive names (a file's leftovers) are checked as the others, but an unused
+    // one that emits needs no unit and shows nothing: the file loads without one.
+    mUsedMaterials.assign(mModel.materials.size(), false);
+    for (const tinygltf::Mesh& mesh : mModel.meshes)
+      for (const tinygltf::Primitive& primitive : mesh.primitives)
+        if (primitive.material >= 0 && static_cast<std::size_t>(primitive.material) < mUsedMaterials.size())
+          mUsedMaterials[static_cast<std::size_t>(primitive.material)] = true;
     if (mPlacement.materialOverride < 0)
       for (std::size_t i = 0; i < mModel.materials.size(); ++i) mMaterials.push_back(material(static_cast<int>(i)));
     for (const auto& [root, pointer] : roots()) visit(root, glm::mat4(1.0f), pointer);
@@ -108,7 +115,7 @@ class Converter {
     out.baseColourTexture = texture(p.baseColorTexture, pbr + "/baseColorTexture", true);
     out.metallicRoughnessTexture = texture(p.metallicRoughnessTexture, pbr + "/metallicRoughnessTexture", false);
     out.normalTexture = texture(m.normalTexture, at + "/normalTexture", false);
-    emission(m, at, out);
+    emission(m, index, at, out);
     mScene.materials.push_back(std::move(out));
     return static_cast<int>(mScene.materials.size()) - 1;
   }
@@ -116,7 +123,7 @@ class Converter {
   // emissiveFactor × emissiveTexture at the placement's luminance times
   // KHR_materials_emissive_strength. glTF gives emission no unit, so a material that emits needs
   // the scene to give one: without it the file is refused rather than drawn dark without a word.
-  void emission(const tinygltf::Material& m, const std::string& at, Material& out) {
+  void emission(const tinygltf::Material& m, int index, const std::string& at, Material& out) {
     if (m.emissiveFactor.size() != 3)
       fail(at + "/emissiveFactor", "expected 3 numbers, got " + str(m.emissiveFactor.size()));
     for (int c = 0; c < 3; ++c)
@@ -131,7 +138,7 @@ class Converter {
         fail(pointer, "expected a number in [0, 1e+12], got " + schema::describe(strength));
     }
     bool emits = strength > 0.0 && std::max({out.emissiveFactor.r, out.emissiveFactor.g, out.emissiveFactor.b}) > 0.0f;
-    if (!emits) return;
+    if (!emits || !mUsedMaterials[static_cast<std::size_t>(index)]) return;
     if (!mPlacement.emissionLuminance)
       fail(at + "/emissiveFactor",
            "the material emits light, and glTF gives emission no unit: give the scene's object \"emission_luminance\" "
@@ -435,6 +442,7 @@ class Converter {
   const GltfPlacement& mPlacement;
   Scene& mScene;
   std::vector<int> mMaterials;                     // glTF material → Scene::materials
+  std::vector<bool> mUsedMaterials;                // per glTF material: named by a primitive
   std::map<std::pair<int, bool>, int> mTextures;  // (glTF image, sRGB) → Scene::textures
   int mDefaultMaterial = -1;
   std::vector<bool> mOnPath;

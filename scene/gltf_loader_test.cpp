@@ -267,6 +267,22 @@ TEST(GltfLoader, EmissionTakesItsFactorTextureAndStrengthAtTheObjectsLuminance) 
   EXPECT_NO_THROW(appendGltf(black, black.parent_path(), {}, scene));
   EXPECT_EQ(scene.materials.back().emissiveTexture, -1);
 
+  // A second material that emits, which no primitive names, needs no unit and shows nothing (the
+  // file was refused); its values are still checked.
+  auto unusedEmitter = [](double red) {
+    return [red](nlohmann::json& g) {
+      g["materials"][1] = {{"name", "spare lamp"}, {"emissiveFactor", {red, 0.5, 0.25}}};
+    };
+  };
+  Scene spare;
+  const fs::path withSpare = editedQuad("gltf_emissive_unused", unusedEmitter(1.0));
+  ASSERT_NO_THROW(appendGltf(withSpare, withSpare.parent_path(), {}, spare));
+  ASSERT_EQ(spare.materials.at(1).name, "quad.gltf/spare lamp");
+  EXPECT_FALSE(spare.materials.at(1).emitsRgb());
+  EXPECT_EQ(loadError(editedQuad("gltf_emissive_unused_bad", unusedEmitter(2.0))),
+            (fs::path(::testing::TempDir()) / "gltf_emissive_unused_bad" / "quad.gltf").string() +
+                ": /materials/1/emissiveFactor/0: expected a number in [0, 1], got 2.0");
+
   EXPECT_EQ(loadError(editedQuad("gltf_emissive_negative", emissive(-1.0)), placement),
             (fs::path(::testing::TempDir()) / "gltf_emissive_negative" / "quad.gltf").string() +
                 ": /materials/0/extensions/KHR_materials_emissive_strength/emissiveStrength: expected a number >= 0, got -1.0");

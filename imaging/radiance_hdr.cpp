@@ -25,7 +25,8 @@ namespace {
 // in Greg Ward's "Real Pixels"); only the standard orientation, which stb decodes, is accepted.
 // A line is read up to its first NUL byte, as stb reads it. Then every scan line is walked as
 // stb_image decodes it, so that what it is given holds the whole image: stb reads a missing byte
-// as 0 (a zero-length run would never end) and a flat file's missing pixels as garbage.
+// as 0 (a zero-length run would never end) and a flat file's missing pixels as garbage, and
+// ignores bytes after the image.
 void checkHeader(const std::string& name, const std::string& bytes) {
   if (!bytes.starts_with("#?RADIANCE\n") && !bytes.starts_with("#?RGBE\n"))
     throw Error(name + ": not a Radiance .hdr file (no #?RADIANCE signature)");
@@ -62,6 +63,13 @@ void checkHeader(const std::string& name, const std::string& bytes) {
                  std::to_string(height) + " (" + std::to_string(width) + " × " + std::to_string(height) + ")");
   };
   const auto w = static_cast<std::size_t>(width);
+  // stb ignores what follows the image; a file with more (two images joined, a botched copy) is
+  // refused, as density files are.
+  auto checkNothingAfter = [&](std::size_t end) {
+    if (const std::size_t extra = bytes.size() - std::min(end, bytes.size()); extra > 0)
+      throw Error(name + ": " + std::to_string(extra) + (extra == 1 ? " byte" : " bytes") + " after the image's last scan line (" +
+                  std::to_string(width) + " × " + std::to_string(height) + ")");
+  };
   for (long long y = 0; y < height; ++y) {
     // Narrow images, and any scan line without the run-length marker, make stb read the whole
     // image flat, 4 bytes a pixel, from that line's first byte on (from line 0 again, over what
@@ -70,7 +78,10 @@ void checkHeader(const std::string& name, const std::string& bytes) {
                         (byteAt(at + 2) & 0x80) == 0;
     if (!marked) {
       const std::size_t whole = (bytes.size() - at) / (4 * w);  // flat lines
-      if (whole >= static_cast<std::size_t>(height)) return;
+      if (whole >= static_cast<std::size_t>(height)) {
+        checkNothingAfter(at + static_cast<std::size_t>(height) * 4 * w);
+        return;
+      }
       if (y == 0) throw truncated(static_cast<long long>(whole));
       throw Error(name + ": truncated: scan line " + std::to_string(y) + " has no run-length marker, so the whole image "
                   "is read flat from it, and that data ends in its scan line " + std::to_string(whole) + " of " +
@@ -94,6 +105,7 @@ void checkHeader(const std::string& name, const std::string& bytes) {
       }
     }
   }
+  checkNothingAfter(at);
 }
 
 }  // namespace

@@ -94,6 +94,11 @@ TEST(RadianceHdr, BadFilesAreOneLineErrors) {
            std::string(32, 'a'),
        ": truncated: scan line 1 has no run-length marker, so the whole image is read flat from it, and that data "
        "ends in its scan line 1 of 2 (8 × 2)"},
+      {"flat_trailing.hdr", header + "-Y 2 +X 3\n" + std::string(29, 'a'),
+       ": 5 bytes after the image's last scan line (3 × 2)"},
+      {"compressed_trailing.hdr",
+       header + "-Y 1 +X 8\n" + std::string("\x02\x02\x00\x08\x88\x01\x88\x01\x88\x01\x88\x80\n", 13),
+       ": 1 byte after the image's last scan line (8 × 1)"},
       {"zero_run.hdr", header + "-Y 1 +X 8\n" + std::string("\x02\x02\x00\x08\x00", 5),
        ": scan line 0: a run of 0 pixels where 8 are left"},
       {"long_run.hdr", header + "-Y 1 +X 8\n" + std::string("\x02\x02\x00\x08\xff\x01", 6),

@@ -2,8 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <map>
+#include <string>
+#include <string_view>
 
 #include "app/reference_commands.h"
 #include "batch/reference_merge.h"
@@ -15,6 +19,18 @@
 #include "techniques/prt/transfer_part.h"
 
 namespace prism::app {
+namespace {
+
+// transfer-KEY.bin, KEY 16 hex digits: the name of a PRT bake in the cache (prt::transferCacheFile).
+bool isTransferCacheName(const std::string& name) {
+  constexpr std::string_view prefix = "transfer-", suffix = ".bin";
+  if (name.size() != prefix.size() + 16 + suffix.size() || !name.starts_with(prefix) || !name.ends_with(suffix))
+    return false;
+  return std::all_of(name.begin() + prefix.size(), name.end() - suffix.size(),
+                     [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; });
+}
+
+}  // namespace
 
 void runMerge(const MergeOptions& o) {
   for (const std::filesystem::path& part : o.parts) {
@@ -49,9 +65,18 @@ void runMerge(const MergeOptions& o) {
     refuseImageExtension(o.output, "-o", "PRT transfer");
     requireWritable(o.output);
     prt::TransferPart whole = prt::mergeTransferParts(o.parts);
+    // The renderer finds a bake by its name alone: one named for another key (another sample
+    // count, say) was read, refused and baked again without a word.
+    const std::string cacheName = prt::transferCacheFile({}, whole.key).filename().string();
+    if (const std::string name = o.output.filename().string(); name != cacheName && isTransferCacheName(name))
+      throw Error(fmt::format("{}: named for another bake; these parts are the bake of key {:016x}, which the renderer "
+                              "reads as {}",
+                              o.output.string(), whole.key, cacheName));
     prt::writeTransferFile(o.output, whole.key, whole.samples, whole.transfer);
     fmt::print("merged {} parts into {} (PRT transfer of {} vertices, {} directions each, key {:016x})\n",
                o.parts.size(), o.output.string(), whole.vertexCount, whole.samples, whole.key);
+    if (o.output.filename() != cacheName)
+      fmt::print("the renderer reads it as {} in its cache's prt folder (PRISM_CACHE_DIR)\n", cacheName);
     return;
   }
   // Neither a table's part nor a bake's: a reference render's (an EXR), merged into an image. A

@@ -40,7 +40,8 @@ inline CLI::Validator cameraName() {
 class CliSettings {
  public:
   // The keys `takes` accepts (default: every one; a command leaves out those it gives another
-  // meaning or has no use for, rather than take them and do nothing), and --camera.
+  // meaning or has no use for, rather than take them and do nothing), and --camera where it takes
+  // the observer (the camera is one).
   void addTo(CLI::App* command, const std::function<bool(std::string_view key)>& takes = {}) {
     const render::FrameSettings defaults;
     for (const render::SettingKey& key : render::frameSettingKeys()) {
@@ -57,6 +58,7 @@ class CliSettings {
       if (key.type == render::SettingType::Number) option->check(decimalNumber(true));
       mOptions.emplace_back(key.name, option);
     }
+    if (takes && !takes("observer")) return;
     CLI::Option* camera = command->add_option("--camera", mCamera, "a camera as the observer (raw camera RGB, fitted matrix for display)")
                               ->check(cameraName());
     // One observer: given both, the camera used to replace --observer without a word.

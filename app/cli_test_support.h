@@ -1,5 +1,6 @@
 // The prism executable run from a test: `run("ARGS")` gives its exit code, stdout and stderr.
-// Shared by the CLI tests (cli_test.cpp, merge_test.cpp, settings_parity_test.cpp).
+// Shared by the CLI tests (cli_test.cpp, merge_test.cpp, reference_display_test.cpp,
+// settings_parity_test.cpp).
 #pragma once
 
 #include <gtest/gtest.h>

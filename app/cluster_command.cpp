@@ -90,6 +90,7 @@ std::string joined(const std::vector<double>& values) {
 void printReferenceClusterScript(const ClusterOptions& o) {
   const ReferenceOptions& r = o.reference;
   checkReferenceOutputs(r.output, r.variance);
+  referenceDisplay(r.display, r.output);  // the merge job's, checked here
   if (o.split != "rows" && o.split != "samples") throw Error(fmt::format("--split: expected rows or samples, got \"{}\"", excerpt(o.split)));
   const bool rows = o.split == "rows";
   if (r.ev100) fromOption("--ev", [&] { render::validateEv100(*r.ev100); });
@@ -151,6 +152,7 @@ void printReferenceClusterScript(const ClusterOptions& o) {
   s.finish.command = shellQuote(prismExecutable()) + " merge " + shellQuote(s.logs.string()) +
                      fmt::format("/part-*-of-{}.exr", o.tasks) + " -o " + shellQuote(output.string());
   if (!r.variance.empty()) s.finish.command += " --variance " + shellQuote(std::filesystem::absolute(r.variance).string());
+  for (const auto& [key, value] : r.display.values) s.finish.command += " --" + key + " " + shellQuote(value);
   printScript(s);
 }
 

@@ -50,7 +50,8 @@ using prism::app::CliSettings;
 
 // The options of `prism reference` that shape one render, also taken by `prism cluster script
 // reference` to write the tasks' command lines.
-void addReferenceOptions(CLI::App* command, prism::app::ReferenceOptions& ref, std::string& refRange, std::string& refEv) {
+void addReferenceOptions(CLI::App* command, prism::app::ReferenceOptions& ref, std::string& refRange, std::string& refEv,
+                         prism::app::CliSettings& display) {
   command->add_option("scene", ref.scene, "scene file (JSON, see docs/scene-format.md)")->required();
   command->add_option("-o,--output", ref.output, "OUT.exr or OUT.png")->required();
   command->add_option("--variance", ref.variance, "also write the per-pixel variance of the mean (EXR)");
@@ -75,6 +76,7 @@ void addReferenceOptions(CLI::App* command, prism::app::ReferenceOptions& ref, s
   command->add_option("--seed", ref.seed, "random seed (the image depends on it alone)")->capture_default_str();
   command->add_option("--threads", ref.threads, "worker threads (0: all)")->check(CLI::Range(0u, prism::kMaxThreads));
   command->add_option("--ev", refEv, "exposure EV100 for the PNG and the display white (default: the scene camera's)");
+  display.addTo(command, prism::app::isReferenceDisplayKey);
 }
 
 }  // namespace
@@ -206,10 +208,11 @@ int main(int argc, char** argv) {
 
   ReferenceOptions ref;
   std::string refRange, refEv;
+  CliSettings refDisplay;
   auto* referenceCmd = app.add_subcommand(
       "reference", "the ground truth: a CPU spectral path tracer (hero wavelengths, Embree) to an EXR "
                    "(linear XYZ in cd/m²) or a PNG");
-  addReferenceOptions(referenceCmd, ref, refRange, refEv);
+  addReferenceOptions(referenceCmd, ref, refRange, refEv, refDisplay);
   referenceCmd->add_option("--tile", ref.tile,
                            "I/N, I from 0: only rows ⌊I·height/N⌋ to ⌊(I+1)·height/N⌋, as a part for `prism merge` (.exr)");
   referenceCmd->add_option("--samples", ref.samples,
@@ -223,9 +226,12 @@ int main(int argc, char** argv) {
   mergeCmd->add_option("parts", merge.parts, "the part files (.exr, a table's or a bake's)")->required();
   mergeCmd->add_option("-o,--output", merge.output, "OUT.exr or OUT.png (a table, a bake: its file)")->required();
   mergeCmd->add_option("--variance", merge.variance, "also write the per-pixel variance of the mean (EXR)");
+  CliSettings mergeDisplay;
+  mergeDisplay.addTo(mergeCmd, isReferenceDisplayKey);
 
   ClusterOptions cluster;
   std::string clusterRange, clusterEv;
+  CliSettings clusterDisplay;
   auto* clusterCmd = app.add_subcommand("cluster", "Prism's batch work on a Slurm cluster");
   clusterCmd->require_subcommand(1);
   auto* scriptCmd = clusterCmd->add_subcommand(
@@ -242,7 +248,7 @@ int main(int argc, char** argv) {
   };
   auto* scriptReferenceCmd = scriptCmd->add_subcommand(
       "reference", "`prism reference` split by --split rows (bit-identical) or samples, then `prism merge`");
-  addReferenceOptions(scriptReferenceCmd, cluster.reference, clusterRange, clusterEv);
+  addReferenceOptions(scriptReferenceCmd, cluster.reference, clusterRange, clusterEv, clusterDisplay);
   addClusterOptions(scriptReferenceCmd);
   scriptReferenceCmd->add_option("--split", cluster.split, "rows (--tile I/N) or samples (--samples A:B)")
       ->capture_default_str();
@@ -400,12 +406,17 @@ int main(int argc, char** argv) {
     if (*referenceCmd) {
       if (!refRange.empty()) ref.range = prism::app::parseNumbers(refRange, "--range");
       if (!refEv.empty()) ref.ev100 = static_cast<float>(prism::app::parseNumber(refEv, "--ev"));
+      ref.display = refDisplay.given();
       runReference(ref);
     }
-    if (*mergeCmd) runMerge(merge);
+    if (*mergeCmd) {
+      merge.display = mergeDisplay.given();
+      runMerge(merge);
+    }
     if (*scriptReferenceCmd) {
       if (!clusterRange.empty()) cluster.reference.range = prism::app::parseNumbers(clusterRange, "--range");
       if (!clusterEv.empty()) cluster.reference.ev100 = static_cast<float>(prism::app::parseNumber(clusterEv, "--ev"));
+      cluster.reference.display = clusterDisplay.given();
       printReferenceClusterScript(cluster);
     }
     if (*scriptValidateCmd) {

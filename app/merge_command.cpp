@@ -22,6 +22,12 @@ namespace prism::app {
 namespace {
 
 // transfer-KEY.bin, KEY 16 hex digits: the name of a PRT bake in the cache (prt::transferCacheFile).
+// Parts of a table or a bake make no image: a display option given is refused, not ignored.
+void refuseDisplay(const SettingsOptions& display, const char* parts) {
+  if (!display.values.empty())
+    throw Error(fmt::format("--{}: parts of {} make no image to display", display.values.front().first, parts));
+}
+
 bool isTransferCacheName(const std::string& name) {
   constexpr std::string_view prefix = "transfer-", suffix = ".bin";
   if (name.size() != prefix.size() + 16 + suffix.size() || !name.starts_with(prefix) || !name.ends_with(suffix))
@@ -52,6 +58,7 @@ void runMerge(const MergeOptions& o) {
   }
   if (!o.parts.empty() && isTablePart(o.parts.front())) {
     if (!o.variance.empty()) throw Error("--variance: parts of an upsampling table have none");
+    refuseDisplay(o.display, "an upsampling table");
     refuseImageExtension(o.output, "-o", "upsampling table");
     requireWritable(o.output);
     RgbToSpectrumTable table = mergeTableParts(o.parts);
@@ -62,6 +69,7 @@ void runMerge(const MergeOptions& o) {
   }
   if (!o.parts.empty() && prt::isTransferPart(o.parts.front())) {
     if (!o.variance.empty()) throw Error("--variance: parts of a PRT bake have none");
+    refuseDisplay(o.display, "a PRT bake");
     refuseImageExtension(o.output, "-o", "PRT transfer");
     requireWritable(o.output);
     prt::TransferPart whole = prt::mergeTransferParts(o.parts);
@@ -87,10 +95,11 @@ void runMerge(const MergeOptions& o) {
                             "reference render's parts are merged into)",
                             o.parts.front().string(), o.output.string()));
   checkReferenceOutputs(o.output, o.variance);
+  const render::DisplaySettings display = referenceDisplay(o.display, o.output);
   requireWritable(o.output);
   if (!o.variance.empty()) requireWritable(o.variance);
   batch::MergedReference merged = batch::mergeReferenceParts(o.parts);
-  writeReferenceImage(merged.image, merged.header.observer, merged.header.ev100, o.output, o.variance,
+  writeReferenceImage(merged.image, merged.header.observer, merged.header.ev100, display, o.output, o.variance,
                       merged.header.cameraToXyz);
   fmt::print("merged {} parts into {} ({}x{}, {} paths per pixel)\n", o.parts.size(), o.output.string(),
              merged.header.width, merged.header.height, merged.header.samplesPerPixel);

@@ -12,12 +12,15 @@
 #include <filesystem>
 #include <vector>
 
+#include "app/render_commands.h"
+
 namespace prism::app {
 
 struct MergeOptions {
   std::vector<std::filesystem::path> parts;
   std::filesystem::path output;    // .exr or .png, as `prism reference -o`
   std::filesystem::path variance;  // optional .exr of the per-pixel variance of the mean
+  SettingsOptions display;         // a reference render's PNG: its display transform, as `prism reference`'s
 };
 void runMerge(const MergeOptions& options);
 

@@ -49,6 +49,10 @@ TEST(Merge, APrtBakeIsNamedForItsOwnKey) {
   EXPECT_EQ(wrong.err, "prism: error: " + (dir / other).string() + ": named for another bake; these parts are the bake of key " + key[1].str() +
                            ", which the renderer reads as " + cacheName + "\n");
   EXPECT_FALSE(std::filesystem::exists(dir / other));
+  // A bake is no image: a display option is refused, not ignored.
+  Result shown = run("merge" + parts + " --tonemap reinhard -o " + (dir / "shown.bin").string());
+  EXPECT_EQ(shown.exitCode, 1);
+  EXPECT_EQ(shown.err, "prism: error: --tonemap: parts of a PRT bake make no image to display\n");
 }
 
 }  // namespace

@@ -134,9 +134,17 @@ void checkReferenceOutputs(const std::filesystem::path& output, const std::files
   requireOtherFile(variance, output, "the image (-o)");
 }
 
+bool isReferenceDisplayKey(std::string_view key) { return isDisplayKey(key) && key != "dither"; }
+
+render::DisplaySettings referenceDisplay(const SettingsOptions& display, const std::filesystem::path& output) {
+  for (const auto& [key, value] : display.values) PRISM_CHECK(isReferenceDisplayKey(key));
+  refuseDisplayOptionsOnExr(display, output);
+  return frameSettings(display).display;
+}
+
 void writeReferenceImage(const reference::ReferenceImage& image, const std::string& observerName, float ev100,
-                         const std::filesystem::path& output, const std::filesystem::path& variance,
-                         const std::optional<Eigen::Matrix3d>& cameraToXyz) {
+                         const render::DisplaySettings& display, const std::filesystem::path& output,
+                         const std::filesystem::path& variance, const std::optional<Eigen::Matrix3d>& cameraToXyz) {
   const Observer& tristimulusObserver = observer(observerName);
   PRISM_CHECK(!tristimulusObserver.isCamera || cameraToXyz);
   imaging::requireFiniteOutput(image.tristimulus, output.string());
@@ -145,9 +153,9 @@ void writeReferenceImage(const reference::ReferenceImage& image, const std::stri
                       imaging::tristimulusExr(tristimulusObserver, render::displayWhiteLuminance(ev100),
                                               cameraToXyz.value_or(Eigen::Matrix3d::Identity())));
   } else {
-    render::DisplaySettings display;
-    display.ev100 = ev100;
-    harness::displayImage(image.tristimulus, display, tristimulusObserver, ev100, cameraToXyz).write(output);
+    render::DisplaySettings shown = display;
+    shown.ev100 = ev100;
+    harness::displayImage(image.tristimulus, shown, tristimulusObserver, ev100, cameraToXyz).write(output);
   }
   // The variance is in squared units and no colour: not something compare should take for one.
   if (!variance.empty()) imaging::writeExr(variance, image.variance, {.colour = imaging::ColourMeaning::OtherRgb});
@@ -157,6 +165,7 @@ void runReference(const ReferenceOptions& o) {
   setAllThreads(o.threads);  // Embree's BVH build too, not only the paths
   if (o.ev100) fromOption("--ev", [&] { render::validateEv100(*o.ev100); });
   if (o.tile.empty() && o.samples.empty()) checkReferenceOutputs(o.output, o.variance);
+  const render::DisplaySettings display = referenceDisplay(o.display, o.output);
   Scene scene = loadScene(o.scene, o.sets);
   reference::requireTraceable(scene);  // before the upsampling table, which a cold cache builds first
   reference::ReferenceSettings settings = referenceSettings(o);
@@ -175,7 +184,7 @@ void runReference(const ReferenceOptions& o) {
   harness::ProgressBar bar("tracing " + o.output.filename().string());
   reference::ReferenceImage image = reference::renderReference(
       scene, table, settings, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
-  writeReferenceImage(image, settings.observer, ev100, o.output, o.variance,
+  writeReferenceImage(image, settings.observer, ev100, display, o.output, o.variance,
                       sceneCameraToXyz(scene, table, settings.observer));
   fmt::print("wrote {} ({}x{}, {} paths per pixel, {} lighting)\n", o.output.string(), settings.width,
              settings.height, settings.samplesPerPixel, o.transport);

@@ -36,6 +36,18 @@ render::FrameSettings frameSettings(const SettingsOptions& o) {
   return s;
 }
 
+bool isDisplayKey(std::string_view key) {
+  return key == "white-balance" || key == "adaptation" || key == "tonemap" || key == "display" || key == "dither";
+}
+
+void refuseDisplayOptionsOnExr(const SettingsOptions& options, const std::filesystem::path& output) {
+  if (lowercaseExtension(output) != ".exr") return;
+  for (const auto& [key, value] : options.values)
+    if (isDisplayKey(key))
+      throw Error(fmt::format("--{} {}: an EXR holds linear tristimulus, before the display transform this shapes "
+                              "(write a .png for it)", key, value));
+}
+
 void renderToFile(const Scene& scene, const render::FrameSettings& settings, int frames,
                   const std::filesystem::path& output, bool progress) {
   requireWritable(output);  // first, so that an empty name is said to be one
@@ -93,11 +105,8 @@ std::string_view ownWavelengths(render::RenderMode mode) {
 void refuseUnusedOptions(const SettingsOptions& options, const render::FrameSettings& settings,
                          const std::filesystem::path& output) {
   const bool upsamples = settings.mode != render::RenderMode::Rgb && settings.mode != render::RenderMode::Naive;
-  const bool exr = lowercaseExtension(output) == ".exr";
+  refuseDisplayOptionsOnExr(options, output);
   for (const auto& [key, value] : options.values) {
-    if (exr && (key == "white-balance" || key == "adaptation" || key == "tonemap" || key == "display" || key == "dither"))
-      throw Error(fmt::format("--{} {}: an EXR holds linear tristimulus, before the display transform this shapes "
-                              "(write a .png for it)", key, value));
     if (!render::usesSampling(settings.mode) && (key == "wavelengths" || key == "range" || key == "strategy"))
       throw Error(fmt::format("--{} {}: mode {} {}, so it has no use for it (naive and jakob-hanika do)", key, value,
                               render::renderModeName(settings.mode), ownWavelengths(settings.mode)));

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,12 @@ struct SettingsOptions {
 };
 // The table's parse of each value over the defaults, then validate(); Error naming the key.
 render::FrameSettings frameSettings(const SettingsOptions& options);
+
+// Whether `key` shapes the display transform (white balance, adaptation, tone map, display,
+// dither): what a PNG shows, nothing of an EXR's linear tristimulus.
+bool isDisplayKey(std::string_view key);
+// Error naming the first display key `options` give when `output` is an EXR.
+void refuseDisplayOptionsOnExr(const SettingsOptions& options, const std::filesystem::path& output);
 
 struct RenderOptions {
   std::filesystem::path scene;

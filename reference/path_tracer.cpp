@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "reference/emitter_sampler.h"
 #include "reference/path_medium.h"
 #include "reference/ray_scene.h"
 #include "reference/surface_hit.h"
@@ -78,6 +79,13 @@ vec3 offsetOrigin(const vec3& p, const vec3& geometricNormal) {
 }
 
 vec4 exp4(const vec4& v) { return vec4(std::exp(v.x), std::exp(v.y), std::exp(v.z), std::exp(v.w)); }
+
+// The power heuristic (Veach 1997, β = 2): the weight of a sample drawn with density `chosen`
+// where another strategy would have drawn it with density `other`.
+float powerHeuristic(float chosen, float other) {
+  const float a = chosen * chosen, b = other * other;
+  return a + b > 0.0f ? a / (a + b) : 0.0f;
+}
 float mean4(const vec4& v) { return 0.25f * (v.x + v.y + v.z + v.w); }
 
 class PathTracer {
@@ -95,7 +103,8 @@ class PathTracer {
         mCamera(cameraTransform(scene.camera, settings.width, settings.height)),
         mMedium(effectiveMedium(scene)),
         mEnvironment(scene.techniques.environment(table)),
-        mEmissionWhite(scaledWhiteIlluminant(colourSpace(scene.colourSpace), 1.0)) {
+        mEmissionWhite(scaledWhiteIlluminant(colourSpace(scene.colourSpace), 1.0)),
+        mEmitters(scene) {
     for (const Light& light : scene.lights) {
       int type = light.type == LightType::Directional ? shared::kLightDirectional
                  : light.type == LightType::Point     ? shared::kLightPoint
@@ -172,7 +181,8 @@ class PathTracer {
                                const vec4& k, const MediumAt& medium, PathRandom& random) const {
     vec3 l;
     vec4 weight(1.0f);
-    if (!sampleBrdf(hit, v, albedoOrN, k, random, l, weight)) return vec4(0.0f);
+    float pdf = 0.0f;
+    if (!sampleBrdf(hit, v, albedoOrN, k, random, l, weight, pdf)) return vec4(0.0f);
     const vec3 origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
     if (mRays.occluded(origin, l, 0.0f, kInfinity)) return vec4(0.0f);
     return weight * escapedAt(1, l, lambdaNm) * transmittance(origin, l, kInfinity, medium);
@@ -287,17 +297,74 @@ class PathTracer {
                        });
   }
 
-  // Samples a direction from the BRDF's lobes; false when the path ends here. throughput
-  // is multiplied by BRDF·cos / pdf.
-  bool sampleBrdf(const SurfaceHit& hit, const vec3& v, const vec4& albedoOrN, const vec4& k,
-                  PathRandom& random, vec3& l, vec4& throughput) const {
+  // The specular lobe's share of sampleBrdf's directions: all of a conductor's, none of a
+  // Lambertian's, and for the metallic–roughness model from ¼ (dielectric) to all (metal).
+  float specularShare(const SurfaceHit& hit) const {
     const Material& m = *mMaterials[static_cast<std::size_t>(hit.material)].material;
-    const vec3& n = hit.normalW;
-    // The specular lobe's share: all of a conductor's, none of a Lambertian's, and for the
-    // metallic–roughness model from ¼ (dielectric) to all (metal).
-    float specularShare = hit.lambertian ? 0.0f : m.conductor ? 1.0f : 0.25f + 0.75f * hit.metallic;
+    return hit.lambertian ? 0.0f : m.conductor ? 1.0f : 0.25f + 0.75f * hit.metallic;
+  }
+  static float ggxAlpha(const SurfaceHit& hit) {
     float r = std::max(hit.roughness, 0.02f);  // as microfacetTerms clamps it
-    float alpha = r * r;
+    return r * r;
+  }
+
+  // The density per steradian with which sampleBrdf draws the unit direction l (above the
+  // surface): its lobes' mixture.
+  float brdfPdf(const SurfaceHit& hit, const vec3& v, const vec3& l) const {
+    const vec3& n = hit.normalW;
+    const float share = specularShare(hit);
+    vec3 h = glm::normalize(v + l);
+    float nDotH = std::max(glm::dot(n, h), 0.0f);
+    vec3 nCrossH = glm::cross(n, h);
+    float vDotH = std::max(glm::dot(v, h), 1e-6f);
+    float pdfSpecular = shared::ggxDistribution(nDotH, glm::dot(nCrossH, nCrossH), ggxAlpha(hit)) * nDotH / (4.0f * vDotH);
+    float pdfDiffuse = std::max(glm::dot(n, l), 0.0f) / kPi;
+    return share * pdfSpecular + (1.0f - share) * pdfDiffuse;
+  }
+
+  // Global transport's next-event estimation of the emitting surfaces at a surface point: a point
+  // drawn on them (EmitterSampler), its emission through BRDF·cos where nothing is in the way,
+  // weighted against the BRDF's own chance of meeting it (the power heuristic; a path that meets
+  // an emitter after a BRDF sample takes the other weight, emissionWeight).
+  vec4 emitterLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm, const vec4& albedoOrN, const vec4& k,
+                    const MediumAt& medium, PathRandom& random) const {
+    const float u0 = random.next(), u1 = random.next(), u2 = random.next();
+    const EmitterPoint e = mEmitters.sample(u0, u1, u2);
+    const vec3 origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
+    const vec3 toEmitter = e.position - origin;
+    const float distance = glm::length(toEmitter);
+    if (!(distance > 0.0f)) return vec4(0.0f);
+    const vec3 l = toEmitter / distance;
+    const float cosEmitter = std::abs(glm::dot(e.normal, l));
+    if (glm::dot(l, hit.geometricNormalW) <= 0.0f || glm::dot(l, hit.normalW) <= 0.0f || !(cosEmitter > 0.0f))
+      return vec4(0.0f);
+    if (mRays.occluded(origin, l, 0.0f, distance * (1.0f - 1e-4f))) return vec4(0.0f);
+    rays::TriangleHit at = e.at;
+    at.distance = distance;
+    const vec4 emitted = emittedAt(surfaceHit(mScene, at, origin, l), lambdaNm);
+    const float pdfLight = e.pdfArea * distance * distance / cosEmitter;  // per steradian
+    return reflection(hit, v, l, albedoOrN, k) * emitted * transmittance(origin, l, distance, medium) *
+           (powerHeuristic(pdfLight, brdfPdf(hit, v, l)) / pdfLight);
+  }
+
+  // The share of an emitter's light met by a BRDF sample drawn with density `bouncePdf` at
+  // `distance` (emitterLight drew the rest): 1 where no emitter was aimed at (the camera's ray, a
+  // scattering in the medium, direct transport: bouncePdf 0).
+  float emissionWeight(const SurfaceHit& hit, std::uint32_t geometry, float distance, const vec3& direction,
+                       float bouncePdf) const {
+    if (!(bouncePdf > 0.0f)) return 1.0f;
+    const float cosEmitter = std::abs(glm::dot(hit.geometricNormalW, direction));
+    if (!(cosEmitter > 0.0f)) return 1.0f;
+    return powerHeuristic(bouncePdf, mEmitters.pdfArea(geometry) * distance * distance / cosEmitter);
+  }
+
+  // Samples a direction from the BRDF's lobes; false when the path ends here. throughput
+  // is multiplied by BRDF·cos / pdf, and pdf is the direction's density (brdfPdf).
+  bool sampleBrdf(const SurfaceHit& hit, const vec3& v, const vec4& albedoOrN, const vec4& k,
+                  PathRandom& random, vec3& l, vec4& throughput, float& pdf) const {
+    const vec3& n = hit.normalW;
+    float specularShare = this->specularShare(hit);
+    float alpha = ggxAlpha(hit);
     vec3 t, b;
     orthonormalFrame(n, t, b);
     float u1 = random.next(), u2 = random.next();
@@ -317,13 +384,7 @@ class PathTracer {
     float nDotL = glm::dot(n, l);
     if (nDotL <= 0.0f || glm::dot(l, hit.geometricNormalW) <= 0.0f) return false;
     l = glm::normalize(l);
-    vec3 h = glm::normalize(v + l);
-    float nDotH = std::max(glm::dot(n, h), 0.0f);
-    vec3 nCrossH = glm::cross(n, h);
-    float vDotH = std::max(glm::dot(v, h), 1e-6f);
-    float pdfSpecular = shared::ggxDistribution(nDotH, glm::dot(nCrossH, nCrossH), alpha) * nDotH / (4.0f * vDotH);
-    float pdfDiffuse = nDotL / kPi;
-    float pdf = specularShare * pdfSpecular + (1.0f - specularShare) * pdfDiffuse;
+    pdf = brdfPdf(hit, v, l);
     if (!(pdf > 0.0f)) return false;
     throughput *= reflection(hit, v, l, albedoOrN, k) / pdf;
     return true;
@@ -340,6 +401,7 @@ class PathTracer {
              PathRandom& random) const {
     const bool global = mSettings.transport == LightTransport::Global;
     vec4 radiance(0.0f), throughput(1.0f);
+    float bouncePdf = 0.0f;  // the last BRDF sample's density; 0 where none led here
     for (int depth = 0;; ++depth) {
       std::optional<rays::TriangleHit> found = mRays.intersect(origin, direction, 0.0f, kInfinity);
       const float tSurface = found ? found->distance : kInfinity;
@@ -388,6 +450,7 @@ class PathTracer {
                         });
             scattered = true;
             if (!global || depth + 1 >= mSettings.maxDepth) break;
+            bouncePdf = 0.0f;  // the phase function's direction: no emitter was aimed at from here
             origin = point;
             direction = sampleHenyeyGreenstein(direction, mMedium->g, random.next(), random.next());
           } else if (std::isinf(tExit)) {
@@ -416,13 +479,15 @@ class PathTracer {
         surfaceSpectra(hit, lambdaNm, albedoOrN, k);
         // What the surface emits, at every hit: direct transport's paths end at their first, what
         // the camera sees (as the rasteriser shows it); global transport's go on, so an emitter
-        // lights the scene (no light is aimed at it).
-        radiance += throughput * emittedAt(hit, lambdaNm);
+        // lights the scene, met by BRDF samples and aimed at (emitterLight), the two weighed.
+        radiance += throughput * emittedAt(hit, lambdaNm) *
+                    emissionWeight(hit, found->geometry, found->distance, direction, bouncePdf);
         radiance += throughput * surfaceDirectLight(hit, v, lambdaNm, albedoOrN, k, medium);
         if (!global && mEnvironment) radiance += throughput * surfaceEnvironmentLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
         if (!global || depth + 1 >= mSettings.maxDepth) break;
+        if (!mEmitters.empty()) radiance += throughput * emitterLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
         vec3 l;
-        if (!sampleBrdf(hit, v, albedoOrN, k, random, l, throughput)) break;
+        if (!sampleBrdf(hit, v, albedoOrN, k, random, l, throughput, bouncePdf)) break;
         origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
         direction = l;
       }
@@ -453,6 +518,7 @@ class PathTracer {
   std::optional<HomogeneousMedium> mMedium;
   std::shared_ptr<const TechniqueEnvironment> mEnvironment;
   Spectrum mEmissionWhite;  // the colour space's white of luminance 1, glTF's emission's
+  EmitterSampler mEmitters;
 };
 
 }  // namespace

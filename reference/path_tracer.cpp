@@ -322,34 +322,55 @@ class PathTracer {
     return share * pdfSpecular + (1.0f - share) * pdfDiffuse;
   }
 
-  // Global transport's next-event estimation of the emitting surfaces at a surface point: a point
-  // drawn on them (EmitterSampler), its emission through BRDF·cos where nothing is in the way,
-  // weighted against the BRDF's own chance of meeting it (the power heuristic; a path that meets
-  // an emitter after a BRDF sample takes the other weight, emissionWeight).
-  vec4 emitterLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm, const vec4& albedoOrN, const vec4& k,
-                    const MediumAt& medium, PathRandom& random) const {
+  // Global transport's next-event estimation of the emitting surfaces from `origin`: a point
+  // drawn on them (EmitterSampler), its emission through `response` (BRDF·cos at a surface, the
+  // phase function in the medium; 0 where it takes no light from that direction) where nothing is
+  // in the way, weighted against the chance `density` (per steradian) that the path's own next
+  // direction meets it (the power heuristic; a path that meets an emitter so takes the other
+  // weight, emissionWeight).
+  template <typename Response, typename Density>
+  vec4 emitterLight(const vec3& origin, const vec4& lambdaNm, const MediumAt& medium, PathRandom& random,
+                    Response&& response, Density&& density) const {
     const float u0 = random.next(), u1 = random.next(), u2 = random.next();
     const EmitterPoint e = mEmitters.sample(u0, u1, u2);
-    const vec3 origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
     const vec3 toEmitter = e.position - origin;
     const float distance = glm::length(toEmitter);
     if (!(distance > 0.0f)) return vec4(0.0f);
     const vec3 l = toEmitter / distance;
     const float cosEmitter = std::abs(glm::dot(e.normal, l));
-    if (glm::dot(l, hit.geometricNormalW) <= 0.0f || glm::dot(l, hit.normalW) <= 0.0f || !(cosEmitter > 0.0f))
-      return vec4(0.0f);
+    if (!(cosEmitter > 0.0f)) return vec4(0.0f);
+    const vec4 f = response(l);
+    if (!(f.x > 0.0f || f.y > 0.0f || f.z > 0.0f || f.w > 0.0f)) return vec4(0.0f);
     if (mRays.occluded(origin, l, 0.0f, distance * (1.0f - 1e-4f))) return vec4(0.0f);
     rays::TriangleHit at = e.at;
     at.distance = distance;
     const vec4 emitted = emittedAt(surfaceHit(mScene, at, origin, l), lambdaNm);
     const float pdfLight = e.pdfArea * distance * distance / cosEmitter;  // per steradian
-    return reflection(hit, v, l, albedoOrN, k) * emitted * transmittance(origin, l, distance, medium) *
-           (powerHeuristic(pdfLight, brdfPdf(hit, v, l)) / pdfLight);
+    return f * emitted * transmittance(origin, l, distance, medium) * (powerHeuristic(pdfLight, density(l)) / pdfLight);
   }
 
-  // The share of an emitter's light met by a BRDF sample drawn with density `bouncePdf` at
-  // `distance` (emitterLight drew the rest): 1 where no emitter was aimed at (the camera's ray, a
-  // scattering in the medium, direct transport: bouncePdf 0).
+  vec4 surfaceEmitterLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm, const vec4& albedoOrN,
+                           const vec4& k, const MediumAt& medium, PathRandom& random) const {
+    return emitterLight(
+        offsetOrigin(hit.positionW, hit.geometricNormalW), lambdaNm, medium, random,
+        [&](const vec3& l) {
+          if (glm::dot(l, hit.geometricNormalW) <= 0.0f || glm::dot(l, hit.normalW) <= 0.0f) return vec4(0.0f);
+          return reflection(hit, v, l, albedoOrN, k);
+        },
+        [&](const vec3& l) { return brdfPdf(hit, v, l); });
+  }
+
+  // At a scattering point in the medium, the path having travelled along `direction`: the phase
+  // function is both the response and the density its next direction is drawn with.
+  vec4 mediumEmitterLight(const vec3& point, const vec3& direction, const vec4& lambdaNm, const MediumAt& medium,
+                          PathRandom& random) const {
+    auto phase = [&](const vec3& l) { return henyeyGreenstein(glm::dot(l, direction), mMedium->g); };
+    return emitterLight(point, lambdaNm, medium, random, [&](const vec3& l) { return vec4(phase(l)); }, phase);
+  }
+
+  // The share of an emitter's light met by a direction drawn with density `bouncePdf` (a BRDF's
+  // or the phase function's) at `distance` (emitterLight drew the rest): 1 where no emitter was
+  // aimed at (the camera's ray, direct transport: bouncePdf 0).
   float emissionWeight(const SurfaceHit& hit, std::uint32_t geometry, float distance, const vec3& direction,
                        float bouncePdf) const {
     if (!(bouncePdf > 0.0f)) return 1.0f;
@@ -401,7 +422,7 @@ class PathTracer {
              PathRandom& random) const {
     const bool global = mSettings.transport == LightTransport::Global;
     vec4 radiance(0.0f), throughput(1.0f);
-    float bouncePdf = 0.0f;  // the last BRDF sample's density; 0 where none led here
+    float bouncePdf = 0.0f;  // the density of the direction that led here; 0 for the camera's
     for (int depth = 0;; ++depth) {
       std::optional<rays::TriangleHit> found = mRays.intersect(origin, direction, 0.0f, kInfinity);
       const float tSurface = found ? found->distance : kInfinity;
@@ -450,9 +471,11 @@ class PathTracer {
                         });
             scattered = true;
             if (!global || depth + 1 >= mSettings.maxDepth) break;
-            bouncePdf = 0.0f;  // the phase function's direction: no emitter was aimed at from here
+            if (!mEmitters.empty()) radiance += throughput * mediumEmitterLight(point, direction, lambdaNm, medium, random);
             origin = point;
+            const vec3 travelled = direction;
             direction = sampleHenyeyGreenstein(direction, mMedium->g, random.next(), random.next());
+            bouncePdf = henyeyGreenstein(glm::dot(direction, travelled), mMedium->g);
           } else if (std::isinf(tExit)) {
             // Through an unbounded medium to infinity: only wavelengths the medium neither
             // absorbs nor scatters arrive, and only heroes that do not scatter get there.
@@ -485,7 +508,7 @@ class PathTracer {
         radiance += throughput * surfaceDirectLight(hit, v, lambdaNm, albedoOrN, k, medium);
         if (!global && mEnvironment) radiance += throughput * surfaceEnvironmentLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
         if (!global || depth + 1 >= mSettings.maxDepth) break;
-        if (!mEmitters.empty()) radiance += throughput * emitterLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
+        if (!mEmitters.empty()) radiance += throughput * surfaceEmitterLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
         vec3 l;
         if (!sampleBrdf(hit, v, albedoOrN, k, random, l, throughput, bouncePdf)) break;
         origin = offsetOrigin(hit.positionW, hit.geometricNormalW);

@@ -134,6 +134,67 @@ TEST(PathTracerEmitters, AGlossyFloorInsideAnEmittingSphereIsTheFloorUnderASkyOf
   }
 }
 
+// The same in a body of fog over the floor (its region a box the camera looks into from above):
+// emitters are aimed at from the medium's scattering points too, weighed against the phase
+// function's own direction, through single and multiple scattering.
+TEST(PathTracerEmitters, AFloorUnderFogInsideAnEmittingSphereIsTheFloorUnderASkyOfItsLuminance) {
+  const float luminance = 40.0f;
+  const Spectrum d65 = illuminant("D65");
+  Scene scene;
+  scene.camera.position = {0.0f, 3.0f, 0.0f};
+  scene.camera.target = {0.0f, 0.0f, 0.0f};
+  scene.camera.up = {0.0f, 0.0f, -1.0f};
+  scene.camera.verticalFovDeg = 30.0f;
+  scene.camera.farPlane = 500.0f;
+  Material floor;
+  floor.lambertian = true;
+  floor.reflectance = Spectrum::constant(0.6);
+  scene.materials.push_back(floor);
+  scene.meshes.push_back(makePlane({0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {20.0f, 20.0f}));
+  scene.background = glm::vec3(1.0f);
+  HomogeneousMedium fog;
+  fog.sigmaA = Spectrum::constant(0.1);
+  fog.sigmaS = Spectrum::constant(0.4);
+  fog.g = 0.6f;
+  fog.region = Bounds{{-10.0f, -1.0f, -10.0f}, {10.0f, 2.0f, 10.0f}};
+  scene.medium = fog;
+
+  ReferenceSettings settings;
+  settings.width = 24;
+  settings.height = 16;
+  settings.samplesPerPixel = 256;
+  settings.filter = PixelFilter::Centre;
+  settings.transport = LightTransport::Global;
+  Scene sky = scene;
+  sky.backgroundLuminance = luminance;
+  Scene inside = scene;
+  Material lamp;
+  lamp.lambertian = true;
+  lamp.reflectance = Spectrum::constant(0.0);
+  lamp.emission = Emission{d65 * (1.0 / luminousIntegral(d65)), luminance};
+  inside.materials.push_back(lamp);
+  inside.meshes.push_back(makeSphere({0.0f, 0.0f, 0.0f}, 100.0f, 64));
+  inside.meshes.back().material = 1;
+  const RgbToSpectrumTable& table = rendererRgbToSpectrumTable("srgb");
+  const ReferenceImage underSky = renderReference(sky, table, settings);
+  const ReferenceImage underSphere = renderReference(inside, table, settings);
+  double sum[2] = {0.0, 0.0}, variance[2] = {0.0, 0.0};
+  const ReferenceImage* images[2] = {&underSky, &underSphere};
+  const std::size_t n = underSky.tristimulus.pixelCount();
+  for (int i = 0; i < 2; ++i) {
+    for (std::size_t p = 0; p < n; ++p) {
+      sum[i] += images[i]->tristimulus.pixels[3 * p + 1];
+      variance[i] += images[i]->variance.pixels[3 * p + 1];
+    }
+  }
+  const double nd = static_cast<double>(n);
+  const double skyMean = sum[0] / nd, sphereMean = sum[1] / nd, sigma = std::sqrt((variance[0] + variance[1]) / (nd * nd));
+  std::printf("fog: Y under the sky %.4f, inside the sphere %.4f, z %.2f; a pixel's standard error %.4f and %.4f\n",
+              skyMean, sphereMean, (sphereMean - skyMean) / sigma, std::sqrt(variance[0] / nd), std::sqrt(variance[1] / nd));
+  EXPECT_LT(std::abs(sphereMean - skyMean), 5.0 * sigma);
+  EXPECT_NEAR(sphereMean / skyMean, 1.0, 0.01);
+}
+
 // The example room the README measures this with (scenes/reference/lamp_room.json) loads, and its
 // lamp alone lights it: under direct transport, which aims at the lights (none), every pixel but
 // the lamp's own is black; under global transport those pixels are lit.

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "reference/emitter_sampler.h"
+#include "reference/environment_sampler.h"
 #include "reference/path_medium.h"
 #include "reference/ray_scene.h"
 #include "reference/surface_hit.h"
@@ -105,6 +106,10 @@ class PathTracer {
         mEnvironment(scene.techniques.environment(table)),
         mEmissionWhite(scaledWhiteIlluminant(colourSpace(scene.colourSpace), 1.0)),
         mEmitters(scene) {
+    if (mEnvironment) {
+      EnvironmentSampler sampler(*mEnvironment, mObserver, settings.threads);
+      if (!sampler.empty()) mEnvironmentSampler.emplace(std::move(sampler));
+    }
     for (const Light& light : scene.lights) {
       int type = light.type == LightType::Directional ? shared::kLightDirectional
                  : light.type == LightType::Point     ? shared::kLightPoint
@@ -175,28 +180,75 @@ class PathTracer {
     return v;
   }
 
-  // Direct transport's one sample of the environment at a surface point: a direction drawn from
-  // the BRDF, the environment's radiance where nothing (no surface, no medium) is in the way.
+  // Next-event estimation of the technique's environment from `origin`: a direction drawn from
+  // EnvironmentSampler, the environment's radiance through `response` (BRDF·cos, or the phase
+  // function; 0 where it takes no light from there) where nothing (no surface, no medium) is in
+  // the way, weighted against the chance `density` (per steradian) that the path's own direction
+  // takes it (the power heuristic; that direction's share is environmentWeight's).
+  template <typename Response, typename Density>
+  vec4 aimedEnvironmentLight(const vec3& origin, const vec4& lambdaNm, const MediumAt& medium, PathRandom& random,
+                             Response&& response, Density&& density) const {
+    const float u0 = random.next(), u1 = random.next(), u2 = random.next();
+    const EnvironmentSampler::Direction d = mEnvironmentSampler->sample(u0, u1, u2);
+    const vec4 f = response(d.towards);
+    if (!(d.pdf > 0.0f) || !(f.x > 0.0f || f.y > 0.0f || f.z > 0.0f || f.w > 0.0f)) return vec4(0.0f);
+    if (mRays.occluded(origin, d.towards, 0.0f, kInfinity)) return vec4(0.0f);
+    return f * escapedAt(1, d.towards, lambdaNm) * transmittance(origin, d.towards, kInfinity, medium) *
+           (powerHeuristic(d.pdf, density(d.towards)) / d.pdf);
+  }
+
+  // The share of the environment's light that a direction drawn with density `bouncePdf` (a
+  // BRDF's or the phase function's) takes where aimedEnvironmentLight aimed too: 1 where it did
+  // not (no environment to aim at, the camera's ray: bouncePdf 0).
+  float environmentWeight(const vec3& towards, float bouncePdf) const {
+    if (!mEnvironmentSampler || !(bouncePdf > 0.0f)) return 1.0f;
+    return powerHeuristic(bouncePdf, mEnvironmentSampler->pdf(towards));
+  }
+
+  // Direct transport's light from the environment at a surface point: a direction drawn from the
+  // BRDF and one aimed at the environment, weighed, the environment's radiance where nothing (no
+  // surface, no medium) is in the way.
   vec4 surfaceEnvironmentLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm, const vec4& albedoOrN,
                                const vec4& k, const MediumAt& medium, PathRandom& random) const {
+    const vec3 origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
+    vec4 sum(0.0f);
     vec3 l;
     vec4 weight(1.0f);
     float pdf = 0.0f;
-    if (!sampleBrdf(hit, v, albedoOrN, k, random, l, weight, pdf)) return vec4(0.0f);
-    const vec3 origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
-    if (mRays.occluded(origin, l, 0.0f, kInfinity)) return vec4(0.0f);
-    return weight * escapedAt(1, l, lambdaNm) * transmittance(origin, l, kInfinity, medium);
+    if (sampleBrdf(hit, v, albedoOrN, k, random, l, weight, pdf) && !mRays.occluded(origin, l, 0.0f, kInfinity))
+      sum += weight * escapedAt(1, l, lambdaNm) * transmittance(origin, l, kInfinity, medium) * environmentWeight(l, pdf);
+    if (mEnvironmentSampler) sum += surfaceAimedEnvironmentLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
+    return sum;
   }
 
-  // Direct transport's one sample of the environment at a scattering point in the medium: a
-  // direction drawn from the phase function (its weight 1), the environment's radiance where no
-  // surface is in the way, through what is left of the medium (the water's surface, looking up;
-  // nothing through an unbounded medium).
+  vec4 surfaceAimedEnvironmentLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm, const vec4& albedoOrN,
+                                    const vec4& k, const MediumAt& medium, PathRandom& random) const {
+    return aimedEnvironmentLight(
+        offsetOrigin(hit.positionW, hit.geometricNormalW), lambdaNm, medium, random,
+        [&](const vec3& l) { return surfaceResponse(hit, v, l, albedoOrN, k); },
+        [&](const vec3& l) { return brdfPdf(hit, v, l); });
+  }
+
+  // Direct transport's light from the environment at a scattering point in the medium, the path
+  // having travelled along `direction`: a direction drawn from the phase function (its weight 1)
+  // and one aimed at the environment, weighed, the environment's radiance where no surface is in
+  // the way, through what is left of the medium (the water's surface, looking up; nothing through
+  // an unbounded medium).
   vec4 mediumEnvironmentLight(const vec3& point, const vec3& direction, const vec4& lambdaNm, const MediumAt& medium,
                               PathRandom& random) const {
     const vec3 l = sampleHenyeyGreenstein(direction, mMedium->g, random.next(), random.next());
-    if (mRays.occluded(point, l, 0.0f, kInfinity)) return vec4(0.0f);
-    return escapedAt(1, l, lambdaNm) * transmittance(point, l, kInfinity, medium);
+    vec4 sum(0.0f);
+    if (!mRays.occluded(point, l, 0.0f, kInfinity))
+      sum += escapedAt(1, l, lambdaNm) * transmittance(point, l, kInfinity, medium) *
+             environmentWeight(l, henyeyGreenstein(glm::dot(l, direction), mMedium->g));
+    if (mEnvironmentSampler) sum += mediumAimedEnvironmentLight(point, direction, lambdaNm, medium, random);
+    return sum;
+  }
+
+  vec4 mediumAimedEnvironmentLight(const vec3& point, const vec3& direction, const vec4& lambdaNm,
+                                   const MediumAt& medium, PathRandom& random) const {
+    auto phase = [&](const vec3& l) { return henyeyGreenstein(glm::dot(l, direction), mMedium->g); };
+    return aimedEnvironmentLight(point, lambdaNm, medium, random, [&](const vec3& l) { return vec4(phase(l)); }, phase);
   }
 
   // The spectra of a surface at the path's wavelengths: albedo (or n) and conductor k.
@@ -246,6 +298,12 @@ class PathTracer {
     return shared::surfaceReflection(terms, conductor, albedoOrN, k, conductor ? 1.0f : hit.metallic);
   }
 
+  // BRDF·cos for light arriving from l, 0 from below the surface (either normal).
+  vec4 surfaceResponse(const SurfaceHit& hit, const vec3& v, const vec3& l, const vec4& albedoOrN, const vec4& k) const {
+    if (glm::dot(l, hit.geometricNormalW) <= 0.0f || glm::dot(l, hit.normalW) <= 0.0f) return vec4(0.0f);
+    return reflection(hit, v, l, albedoOrN, k);
+  }
+
   // Beer–Lambert transmittance of the medium along origin + t·direction, t ∈ [0, tMax].
   vec4 transmittance(const vec3& origin, const vec3& direction, float tMax, const MediumAt& medium) const {
     if (!mMedium) return vec4(1.0f);
@@ -288,13 +346,7 @@ class PathTracer {
   vec4 surfaceDirectLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm, const vec4& albedoOrN,
                           const vec4& k, const MediumAt& medium) const {
     return directLight(hit.positionW, offsetOrigin(hit.positionW, hit.geometricNormalW), lambdaNm, medium,
-                       [&](const vec3& toLight) {
-                         if (glm::dot(toLight, hit.geometricNormalW) <= 0.0f ||
-                             glm::dot(toLight, hit.normalW) <= 0.0f) {
-                           return vec4(0.0f);
-                         }
-                         return reflection(hit, v, toLight, albedoOrN, k);
-                       });
+                       [&](const vec3& toLight) { return surfaceResponse(hit, v, toLight, albedoOrN, k); });
   }
 
   // The specular lobe's share of sampleBrdf's directions: all of a conductor's, none of a
@@ -353,10 +405,7 @@ class PathTracer {
                            const vec4& k, const MediumAt& medium, PathRandom& random) const {
     return emitterLight(
         offsetOrigin(hit.positionW, hit.geometricNormalW), lambdaNm, medium, random,
-        [&](const vec3& l) {
-          if (glm::dot(l, hit.geometricNormalW) <= 0.0f || glm::dot(l, hit.normalW) <= 0.0f) return vec4(0.0f);
-          return reflection(hit, v, l, albedoOrN, k);
-        },
+        [&](const vec3& l) { return surfaceResponse(hit, v, l, albedoOrN, k); },
         [&](const vec3& l) { return brdfPdf(hit, v, l); });
   }
 
@@ -472,6 +521,8 @@ class PathTracer {
             scattered = true;
             if (!global || depth + 1 >= mSettings.maxDepth) break;
             if (!mEmitters.empty()) radiance += throughput * mediumEmitterLight(point, direction, lambdaNm, medium, random);
+            if (mEnvironmentSampler)
+              radiance += throughput * mediumAimedEnvironmentLight(point, direction, lambdaNm, medium, random);
             origin = point;
             const vec3 travelled = direction;
             direction = sampleHenyeyGreenstein(direction, mMedium->g, random.next(), random.next());
@@ -493,7 +544,9 @@ class PathTracer {
       }
       if (!scattered) {
         if (!found) {
-          if (depth == 0 || global) radiance += throughput * escapedAt(depth, direction, lambdaNm);
+          // After a bounce, the environment's share this direction takes (aimedEnvironmentLight the rest).
+          if (depth == 0 || global)
+            radiance += throughput * escapedAt(depth, direction, lambdaNm) * environmentWeight(direction, bouncePdf);
           break;
         }
         SurfaceHit hit = surfaceHit(mScene, *found, origin, direction);
@@ -509,6 +562,8 @@ class PathTracer {
         if (!global && mEnvironment) radiance += throughput * surfaceEnvironmentLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
         if (!global || depth + 1 >= mSettings.maxDepth) break;
         if (!mEmitters.empty()) radiance += throughput * surfaceEmitterLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
+        if (mEnvironmentSampler)
+          radiance += throughput * surfaceAimedEnvironmentLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
         vec3 l;
         if (!sampleBrdf(hit, v, albedoOrN, k, random, l, throughput, bouncePdf)) break;
         origin = offsetOrigin(hit.positionW, hit.geometricNormalW);
@@ -542,6 +597,7 @@ class PathTracer {
   std::shared_ptr<const TechniqueEnvironment> mEnvironment;
   Spectrum mEmissionWhite;  // the colour space's white of luminance 1, glTF's emission's
   EmitterSampler mEmitters;
+  std::optional<EnvironmentSampler> mEnvironmentSampler;  // where there is an environment with light
 };
 
 }  // namespace

@@ -50,9 +50,9 @@ EmitterSampler::EmitterSampler(const Scene& scene) : mScene(scene), mPdfArea(sce
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) mPdfArea[m] = static_cast<float>(meshLuminance[m] / sum);
 }
 
-EmitterPoint EmitterSampler::sample(float u0, float u1, float u2) const {
+EmitterPoint EmitterSampler::sample(double u0, float u1, float u2) const {
   PRISM_CHECK(!empty());
-  const double target = static_cast<double>(u0) * mCumulative.back();
+  const double target = u0 * mCumulative.back();
   const std::size_t i = std::min<std::size_t>(
       static_cast<std::size_t>(std::upper_bound(mCumulative.begin(), mCumulative.end(), target) - mCumulative.begin()),
       mTriangles.size() - 1);

@@ -28,8 +28,9 @@ class EmitterSampler {
   explicit EmitterSampler(const Scene& scene);
 
   bool empty() const { return mCumulative.empty(); }
-  // A point drawn from three uniform numbers in [0, 1). PRISM_CHECKs !empty().
-  EmitterPoint sample(float u0, float u1, float u2) const;
+  // A point drawn from three uniform numbers in [0, 1): u0 picks the triangle (so a double: a
+  // triangle's share may be far below a float's 2⁻²⁴ step), u1 and u2 the point. PRISM_CHECKs !empty().
+  EmitterPoint sample(double u0, float u1, float u2) const;
   // The density per area with which sample() draws a point of mesh `geometry` (0 where it emits
   // nothing): the same at every point of a mesh.
   float pdfArea(std::uint32_t geometry) const { return mPdfArea[geometry]; }

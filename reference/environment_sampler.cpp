@@ -68,9 +68,9 @@ EnvironmentSampler::EnvironmentSampler(const TechniqueEnvironment& environment, 
     mPdf[static_cast<std::size_t>(cell)] = static_cast<float>(weight[static_cast<std::size_t>(cell)] / (total * cellSolidAngle));
 }
 
-EnvironmentSampler::Direction EnvironmentSampler::sample(float u0, float u1, float u2) const {
+EnvironmentSampler::Direction EnvironmentSampler::sample(double u0, float u1, float u2) const {
   PRISM_CHECK(!empty());
-  const double target = static_cast<double>(u0) * mCumulative.back();
+  const double target = u0 * mCumulative.back();
   std::size_t cell = static_cast<std::size_t>(std::upper_bound(mCumulative.begin(), mCumulative.end(), target) -
                                               mCumulative.begin());
   cell = std::min<std::size_t>(cell, kCells - 1);

@@ -29,8 +29,9 @@ class EnvironmentSampler {
     glm::vec3 towards{0.0f};  // unit, world space, towards where the light comes from
     float pdf = 0.0f;         // per steradian
   };
-  // A direction drawn from three uniform numbers in [0, 1). PRISM_CHECKs !empty().
-  Direction sample(float u0, float u1, float u2) const;
+  // A direction drawn from three uniform numbers in [0, 1): u0 picks the cell (a double, as
+  // EmitterSampler's), u1 and u2 the direction in it. PRISM_CHECKs !empty().
+  Direction sample(double u0, float u1, float u2) const;
   // The density per steradian with which sample() draws unit `towards` (0 when empty()).
   float pdf(const glm::vec3& towards) const;
 

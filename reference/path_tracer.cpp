@@ -52,6 +52,12 @@ class PathRandom {
       : mSeed(shared::pcgHash(pixel ^ shared::pcgHash(sample ^ shared::pcgHash(seed)))) {}
   std::uint32_t seed() const { return mSeed; }
   float next() { return shared::randomFloat(mSeed, mIndex++); }
+  // Uniform in [0, 1) to 2⁻⁴⁸ rather than next()'s 2⁻²⁴: a choice among up to millions of
+  // emitting triangles or environment cells, whose shares can be far below 2⁻²⁴.
+  double nextFine() {
+    const double coarse = next();
+    return coarse + static_cast<double>(next()) * 0x1p-24;
+  }
 
  private:
   std::uint32_t mSeed;
@@ -82,10 +88,12 @@ vec3 offsetOrigin(const vec3& p, const vec3& geometricNormal) {
 vec4 exp4(const vec4& v) { return vec4(std::exp(v.x), std::exp(v.y), std::exp(v.z), std::exp(v.w)); }
 
 // The power heuristic (Veach 1997, β = 2): the weight of a sample drawn with density `chosen`
-// where another strategy would have drawn it with density `other`.
+// where another strategy would have drawn it with density `other`. As 1/(1 + (other/chosen)²),
+// not chosen²/(chosen² + other²): a density past 1e19 (an emitter seen edge-on) squares to ∞.
 float powerHeuristic(float chosen, float other) {
-  const float a = chosen * chosen, b = other * other;
-  return a + b > 0.0f ? a / (a + b) : 0.0f;
+  if (!(chosen > 0.0f)) return 0.0f;
+  const float ratio = other / chosen;
+  return 1.0f / (1.0f + ratio * ratio);
 }
 float mean4(const vec4& v) { return 0.25f * (v.x + v.y + v.z + v.w); }
 
@@ -188,7 +196,8 @@ class PathTracer {
   template <typename Response, typename Density>
   vec4 aimedEnvironmentLight(const vec3& origin, const vec4& lambdaNm, const MediumAt& medium, PathRandom& random,
                              Response&& response, Density&& density) const {
-    const float u0 = random.next(), u1 = random.next(), u2 = random.next();
+    const double u0 = random.nextFine();
+    const float u1 = random.next(), u2 = random.next();
     const EnvironmentSampler::Direction d = mEnvironmentSampler->sample(u0, u1, u2);
     const vec4 f = response(d.towards);
     if (!(d.pdf > 0.0f) || !(f.x > 0.0f || f.y > 0.0f || f.z > 0.0f || f.w > 0.0f)) return vec4(0.0f);
@@ -383,7 +392,8 @@ class PathTracer {
   template <typename Response, typename Density>
   vec4 emitterLight(const vec3& origin, const vec4& lambdaNm, const MediumAt& medium, PathRandom& random,
                     Response&& response, Density&& density) const {
-    const float u0 = random.next(), u1 = random.next(), u2 = random.next();
+    const double u0 = random.nextFine();
+    const float u1 = random.next(), u2 = random.next();
     const EmitterPoint e = mEmitters.sample(u0, u1, u2);
     const vec3 toEmitter = e.position - origin;
     const float distance = glm::length(toEmitter);
@@ -393,7 +403,7 @@ class PathTracer {
     if (!(cosEmitter > 0.0f)) return vec4(0.0f);
     const vec4 f = response(l);
     if (!(f.x > 0.0f || f.y > 0.0f || f.z > 0.0f || f.w > 0.0f)) return vec4(0.0f);
-    if (mRays.occluded(origin, l, 0.0f, distance * (1.0f - 1e-4f))) return vec4(0.0f);
+    if (mRays.occluded(origin, l, 0.0f, distance * (1.0f - 1e-5f))) return vec4(0.0f);  // as the lights' rays
     rays::TriangleHit at = e.at;
     at.distance = distance;
     const vec4 emitted = emittedAt(surfaceHit(mScene, at, origin, l), lambdaNm);

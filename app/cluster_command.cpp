@@ -152,7 +152,12 @@ void printReferenceClusterScript(const ClusterOptions& o) {
   s.finish.command = shellQuote(prismExecutable()) + " merge " + shellQuote(s.logs.string()) +
                      fmt::format("/part-*-of-{}.exr", o.tasks) + " -o " + shellQuote(output.string());
   if (!r.variance.empty()) s.finish.command += " --variance " + shellQuote(std::filesystem::absolute(r.variance).string());
-  for (const auto& [key, value] : r.display.values) s.finish.command += " --" + key + " " + shellQuote(value);
+  // As --KEY=VALUE (a value may start with '-'); a lamp's .csv by its absolute path, as every
+  // other file here: the merge job runs wherever the script is submitted from.
+  for (const auto& [key, value] : r.display.values) {
+    const bool file = key == "white-balance" && std::filesystem::is_regular_file(value);
+    s.finish.command += " " + shellQuote("--" + key + "=" + (file ? std::filesystem::absolute(value).string() : value));
+  }
   printScript(s);
 }
 

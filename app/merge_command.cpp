@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -21,19 +20,20 @@
 namespace prism::app {
 namespace {
 
-// transfer-KEY.bin, KEY 16 hex digits: the name of a PRT bake in the cache (prt::transferCacheFile).
 // Parts of a table or a bake make no image: a display option given is refused, not ignored.
 void refuseDisplay(const SettingsOptions& display, const char* parts) {
   if (!display.values.empty())
     throw Error(fmt::format("--{}: parts of {} make no image to display", display.values.front().first, parts));
 }
 
+// transfer-KEY.bin, KEY 16 lower-case hex digits: the name of a PRT bake in the cache
+// (prt::transferCacheFile; another case is another file to the renderer, and merge says so).
 bool isTransferCacheName(const std::string& name) {
   constexpr std::string_view prefix = "transfer-", suffix = ".bin";
   if (name.size() != prefix.size() + 16 + suffix.size() || !name.starts_with(prefix) || !name.ends_with(suffix))
     return false;
   return std::all_of(name.begin() + prefix.size(), name.end() - suffix.size(),
-                     [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; });
+                     [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); });
 }
 
 }  // namespace

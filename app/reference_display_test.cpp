@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "app/cli_test_support.h"
@@ -55,13 +56,24 @@ TEST(ReferenceDisplay, APngTakesRendersDisplayOptions) {
   ASSERT_EQ(merged.exitCode, 0) << merged.err;
   EXPECT_EQ(slurp(dir / "merged.png"), slurp(dir / "shown.png"));
 
-  // A cluster's merge job is given them.
+  // A cluster's merge job is given them, as --KEY=VALUE, and a lamp's .csv named relative to
+  // where the script was made by its absolute path: the job runs wherever it is submitted from.
   Result script = run("cluster script " + trace + shown + " --tasks 2 -o " + (dir / "cluster.png").string());
   ASSERT_EQ(script.exitCode, 0) << script.err;
   EXPECT_NE(script.out.find("prism merge " + dir.string() + "/cluster.png.parts/part-*-of-2.exr -o " + dir.string() +
-                            "/cluster.png --white-balance A --adaptation cat02 --tonemap reinhard --display display-p3\n"),
+                            "/cluster.png --white-balance=A --adaptation=cat02 --tonemap=reinhard --display=display-p3\n"),
             std::string::npos)
       << script.out;
+  {
+    std::ofstream lamp(dir / "lamp.csv");
+    lamp << "wavelength_nm,value\n";
+    for (int nm = 360; nm <= 830; nm += 10) lamp << nm << "," << 1.0 + nm / 1000.0 << "\n";
+  }
+  Result relative = run("cluster script " + trace + " --white-balance lamp.csv --tasks 2 -o " + (dir / "lamp.png").string(),
+                        "cd " + dir.string() + " &&");
+  ASSERT_EQ(relative.exitCode, 0) << relative.err;
+  EXPECT_NE(relative.out.find(" --white-balance=" + (dir / "lamp.csv").string() + "\n"), std::string::npos)
+      << relative.out;
 
   // An EXR holds linear tristimulus: refused in one line, before the trace, the merge or the script.
   const std::string refused = "prism: error: --tonemap reinhard: an EXR holds linear tristimulus, before the display "

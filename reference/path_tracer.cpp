@@ -214,6 +214,35 @@ class PathTracer {
     return powerHeuristic(bouncePdf, mEnvironmentSampler->pdf(towards));
   }
 
+  // What is aimed at from `origin` with `response` and `density` (emitterLight's and
+  // aimedEnvironmentLight's): the emitters where `atEmitters` (global transport; direct transport
+  // lights nothing with them, as the rasteriser), and the environment.
+  template <typename Response, typename Density>
+  vec4 aimedLight(const vec3& origin, const vec4& lambdaNm, const MediumAt& medium, PathRandom& random, bool atEmitters,
+                  Response&& response, Density&& density) const {
+    vec4 sum(0.0f);
+    if (atEmitters && !mEmitters.empty()) sum += emitterLight(origin, lambdaNm, medium, random, response, density);
+    if (mEnvironmentSampler) sum += aimedEnvironmentLight(origin, lambdaNm, medium, random, response, density);
+    return sum;
+  }
+
+  // aimedLight at a surface point: BRDF·cos, and the density sampleBrdf draws with.
+  vec4 surfaceAimedLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm, const vec4& albedoOrN,
+                         const vec4& k, const MediumAt& medium, PathRandom& random, bool atEmitters) const {
+    return aimedLight(
+        offsetOrigin(hit.positionW, hit.geometricNormalW), lambdaNm, medium, random, atEmitters,
+        [&](const vec3& l) { return surfaceResponse(hit, v, l, albedoOrN, k); },
+        [&](const vec3& l) { return brdfPdf(hit, v, l); });
+  }
+
+  // aimedLight at a scattering point in the medium, the path having travelled along `direction`:
+  // the phase function is both the response and the density its next direction is drawn with.
+  vec4 mediumAimedLight(const vec3& point, const vec3& direction, const vec4& lambdaNm, const MediumAt& medium,
+                        PathRandom& random, bool atEmitters) const {
+    auto phase = [&](const vec3& l) { return henyeyGreenstein(glm::dot(l, direction), mMedium->g); };
+    return aimedLight(point, lambdaNm, medium, random, atEmitters, [&](const vec3& l) { return vec4(phase(l)); }, phase);
+  }
+
   // Direct transport's light from the environment at a surface point: a direction drawn from the
   // BRDF and one aimed at the environment, weighed, the environment's radiance where nothing (no
   // surface, no medium) is in the way.
@@ -226,16 +255,8 @@ class PathTracer {
     float pdf = 0.0f;
     if (sampleBrdf(hit, v, albedoOrN, k, random, l, weight, pdf) && !mRays.occluded(origin, l, 0.0f, kInfinity))
       sum += weight * escapedAt(1, l, lambdaNm) * transmittance(origin, l, kInfinity, medium) * environmentWeight(l, pdf);
-    if (mEnvironmentSampler) sum += surfaceAimedEnvironmentLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
+    sum += surfaceAimedLight(hit, v, lambdaNm, albedoOrN, k, medium, random, false);
     return sum;
-  }
-
-  vec4 surfaceAimedEnvironmentLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm, const vec4& albedoOrN,
-                                    const vec4& k, const MediumAt& medium, PathRandom& random) const {
-    return aimedEnvironmentLight(
-        offsetOrigin(hit.positionW, hit.geometricNormalW), lambdaNm, medium, random,
-        [&](const vec3& l) { return surfaceResponse(hit, v, l, albedoOrN, k); },
-        [&](const vec3& l) { return brdfPdf(hit, v, l); });
   }
 
   // Direct transport's light from the environment at a scattering point in the medium, the path
@@ -250,14 +271,8 @@ class PathTracer {
     if (!mRays.occluded(point, l, 0.0f, kInfinity))
       sum += escapedAt(1, l, lambdaNm) * transmittance(point, l, kInfinity, medium) *
              environmentWeight(l, henyeyGreenstein(glm::dot(l, direction), mMedium->g));
-    if (mEnvironmentSampler) sum += mediumAimedEnvironmentLight(point, direction, lambdaNm, medium, random);
+    sum += mediumAimedLight(point, direction, lambdaNm, medium, random, false);
     return sum;
-  }
-
-  vec4 mediumAimedEnvironmentLight(const vec3& point, const vec3& direction, const vec4& lambdaNm,
-                                   const MediumAt& medium, PathRandom& random) const {
-    auto phase = [&](const vec3& l) { return henyeyGreenstein(glm::dot(l, direction), mMedium->g); };
-    return aimedEnvironmentLight(point, lambdaNm, medium, random, [&](const vec3& l) { return vec4(phase(l)); }, phase);
   }
 
   // The spectra of a surface at the path's wavelengths: albedo (or n) and conductor k.
@@ -411,22 +426,6 @@ class PathTracer {
     return f * emitted * transmittance(origin, l, distance, medium) * (powerHeuristic(pdfLight, density(l)) / pdfLight);
   }
 
-  vec4 surfaceEmitterLight(const SurfaceHit& hit, const vec3& v, const vec4& lambdaNm, const vec4& albedoOrN,
-                           const vec4& k, const MediumAt& medium, PathRandom& random) const {
-    return emitterLight(
-        offsetOrigin(hit.positionW, hit.geometricNormalW), lambdaNm, medium, random,
-        [&](const vec3& l) { return surfaceResponse(hit, v, l, albedoOrN, k); },
-        [&](const vec3& l) { return brdfPdf(hit, v, l); });
-  }
-
-  // At a scattering point in the medium, the path having travelled along `direction`: the phase
-  // function is both the response and the density its next direction is drawn with.
-  vec4 mediumEmitterLight(const vec3& point, const vec3& direction, const vec4& lambdaNm, const MediumAt& medium,
-                          PathRandom& random) const {
-    auto phase = [&](const vec3& l) { return henyeyGreenstein(glm::dot(l, direction), mMedium->g); };
-    return emitterLight(point, lambdaNm, medium, random, [&](const vec3& l) { return vec4(phase(l)); }, phase);
-  }
-
   // The share of an emitter's light met by a direction drawn with density `bouncePdf` (a BRDF's
   // or the phase function's) at `distance` (emitterLight drew the rest): 1 where no emitter was
   // aimed at (the camera's ray, direct transport: bouncePdf 0).
@@ -530,9 +529,7 @@ class PathTracer {
                         });
             scattered = true;
             if (!global || depth + 1 >= mSettings.maxDepth) break;
-            if (!mEmitters.empty()) radiance += throughput * mediumEmitterLight(point, direction, lambdaNm, medium, random);
-            if (mEnvironmentSampler)
-              radiance += throughput * mediumAimedEnvironmentLight(point, direction, lambdaNm, medium, random);
+            radiance += throughput * mediumAimedLight(point, direction, lambdaNm, medium, random, true);
             origin = point;
             const vec3 travelled = direction;
             direction = sampleHenyeyGreenstein(direction, mMedium->g, random.next(), random.next());
@@ -571,9 +568,7 @@ class PathTracer {
         radiance += throughput * surfaceDirectLight(hit, v, lambdaNm, albedoOrN, k, medium);
         if (!global && mEnvironment) radiance += throughput * surfaceEnvironmentLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
         if (!global || depth + 1 >= mSettings.maxDepth) break;
-        if (!mEmitters.empty()) radiance += throughput * surfaceEmitterLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
-        if (mEnvironmentSampler)
-          radiance += throughput * surfaceAimedEnvironmentLight(hit, v, lambdaNm, albedoOrN, k, medium, random);
+        radiance += throughput * surfaceAimedLight(hit, v, lambdaNm, albedoOrN, k, medium, random, true);
         vec3 l;
         if (!sampleBrdf(hit, v, albedoOrN, k, random, l, throughput, bouncePdf)) break;
         origin = offsetOrigin(hit.positionW, hit.geometricNormalW);

@@ -7,8 +7,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "reference/path_tracer.h"
+#include "reference/path_tracer_test_support.h"
 #include "scene/procedural_mesh.h"
 #include "scene/scene_loader.h"
 #include "spectral/illuminant.h"
@@ -30,11 +34,7 @@ TEST(PathTracerEmitters, ASmallLampLightsTheFloorAsItsFormFactorSays) {
   Material floor;
   floor.lambertian = true;
   floor.reflectance = Spectrum::constant(rho);
-  Material lamp = floor;
-  lamp.reflectance = Spectrum::constant(0.0);
-  const Spectrum d65 = illuminant("D65");
-  lamp.emission = Emission{d65 * (1.0 / luminousIntegral(d65)), static_cast<float>(luminance)};
-  scene.materials = {floor, lamp};
+  scene.materials = {floor, test::d65Emitter(static_cast<float>(luminance))};
   scene.meshes.push_back(makePlane({0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {20.0f, 20.0f}));
   scene.meshes.push_back(makePlane({0.0f, static_cast<float>(h), 0.0f}, {0.0f, -1.0f, 0.0f},
                                    {static_cast<float>(2 * a), static_cast<float>(2 * a)}));
@@ -60,9 +60,46 @@ TEST(PathTracerEmitters, ASmallLampLightsTheFloorAsItsFormFactorSays) {
   EXPECT_NEAR(y / expected, 1.0, 0.01);
   EXPECT_LT(pathSpread, 1.0);
   // Its chromaticity is the lamp's (a grey floor).
-  const Eigen::Vector3d xyz = observer("cie1931").integrate(d65);
+  const Eigen::Vector3d xyz = observer("cie1931").integrate(illuminant("D65"));
   EXPECT_NEAR(image.tristimulus.pixels[0] / y, xyz.x() / xyz.y(), 0.01);
   EXPECT_NEAR(image.tristimulus.pixels[2] / y, xyz.z() / xyz.y(), 0.01);
+}
+
+// `scene` (its first mesh a floor seen from above, background white) under global transport twice:
+// under a background of `luminance` cd/m², and inside an emitting sphere of that luminance, 100 m
+// round it, instead. Each channel's mean over pixels is compared, in units of their standard error
+// (the variance images) and relatively; `what` names the case.
+void expectTheSphereIsTheSky(const Scene& scene, float luminance, int samplesPerPixel, const std::string& what) {
+  ReferenceSettings settings;
+  settings.width = 24;
+  settings.height = 16;
+  settings.samplesPerPixel = samplesPerPixel;
+  settings.filter = PixelFilter::Centre;
+  settings.transport = LightTransport::Global;
+  Scene sky = scene;
+  sky.backgroundLuminance = luminance;
+  Scene inside = scene;
+  inside.materials.push_back(test::d65Emitter(luminance));
+  inside.meshes.push_back(makeSphere({0.0f, 0.0f, 0.0f}, 100.0f, 64));
+  inside.meshes.back().material = static_cast<int>(inside.materials.size()) - 1;
+  const RgbToSpectrumTable& table = rendererRgbToSpectrumTable("srgb");
+  const ReferenceImage images[2] = {renderReference(sky, table, settings), renderReference(inside, table, settings)};
+  const std::size_t n = images[0].tristimulus.pixelCount();
+  const double nd = static_cast<double>(n);
+  for (std::size_t channel = 0; channel < 3; ++channel) {
+    double mean[2] = {0.0, 0.0}, variance[2] = {0.0, 0.0};
+    for (int i = 0; i < 2; ++i) {
+      for (std::size_t p = 0; p < n; ++p) {
+        mean[i] += images[i].tristimulus.pixels[3 * p + channel] / nd;
+        variance[i] += images[i].variance.pixels[3 * p + channel] / (nd * nd);
+      }
+    }
+    const double sigma = std::sqrt(variance[0] + variance[1]);
+    std::printf("%s, channel %zu: under the sky %.4f, inside the sphere %.4f, z %.2f\n", what.c_str(), channel, mean[0],
+                mean[1], (mean[1] - mean[0]) / sigma);
+    EXPECT_LT(std::abs(mean[1] - mean[0]), 5.0 * sigma) << what << ", channel " << channel;
+    EXPECT_NEAR(mean[1] / mean[0], 1.0, 0.01) << what << ", channel " << channel;
+  }
 }
 
 // A glossy floor inside an emitting sphere of luminance L sees L over its whole sky, as under a
@@ -71,66 +108,18 @@ TEST(PathTracerEmitters, ASmallLampLightsTheFloorAsItsFormFactorSays) {
 // background, from BRDF samples alone. A weight or a BRDF density (brdfPdf) that did not match
 // what sampleBrdf draws would part them, most on the sharp lobes.
 TEST(PathTracerEmitters, AGlossyFloorInsideAnEmittingSphereIsTheFloorUnderASkyOfItsLuminance) {
-  const float luminance = 40.0f;
-  const Spectrum d65 = illuminant("D65");
   struct Case {
     float metallic, roughness;
   };
   for (const Case c : {Case{0.0f, 0.5f}, Case{0.0f, 0.1f}, Case{1.0f, 0.25f}, Case{1.0f, 0.05f}}) {
-    Scene scene;
-    scene.camera.position = {0.0f, 3.0f, 0.0f};
-    scene.camera.target = {0.0f, 0.0f, 0.0f};
-    scene.camera.up = {0.0f, 0.0f, -1.0f};
-    scene.camera.verticalFovDeg = 30.0f;
-    scene.camera.farPlane = 500.0f;
     Material floor;
     floor.baseColour = glm::vec3(0.7f, 0.5f, 0.3f);
     floor.metallic = c.metallic;
     floor.roughness = c.roughness;
-    scene.materials.push_back(floor);
-    scene.meshes.push_back(makePlane({0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {20.0f, 20.0f}));
+    Scene scene = test::floorSeenFromAbove(floor);
     scene.background = glm::vec3(1.0f);  // D65 in sRGB, the sphere's spectrum
-
-    ReferenceSettings settings;
-    settings.width = 24;
-    settings.height = 16;
-    settings.samplesPerPixel = 256;
-    settings.filter = PixelFilter::Centre;
-    settings.transport = LightTransport::Global;
-    Scene sky = scene;
-    sky.backgroundLuminance = luminance;
-    Scene inside = scene;
-    Material lamp;
-    lamp.lambertian = true;
-    lamp.reflectance = Spectrum::constant(0.0);
-    lamp.emission = Emission{d65 * (1.0 / luminousIntegral(d65)), luminance};
-    inside.materials.push_back(lamp);
-    inside.meshes.push_back(makeSphere({0.0f, 0.0f, 0.0f}, 100.0f, 64));
-    inside.meshes.back().material = 1;
-    const RgbToSpectrumTable& table = rendererRgbToSpectrumTable("srgb");
-    const ReferenceImage underSky = renderReference(sky, table, settings);
-    const ReferenceImage underSphere = renderReference(inside, table, settings);
-
-    // The images' means over pixels, each with its standard error.
-    for (int channel = 0; channel < 3; ++channel) {
-      double sum[2] = {0.0, 0.0}, variance[2] = {0.0, 0.0};
-      const ReferenceImage* images[2] = {&underSky, &underSphere};
-      const std::size_t n = underSky.tristimulus.pixelCount();
-      for (int i = 0; i < 2; ++i) {
-        for (std::size_t p = 0; p < n; ++p) {
-          sum[i] += images[i]->tristimulus.pixels[3 * p + static_cast<std::size_t>(channel)];
-          variance[i] += images[i]->variance.pixels[3 * p + static_cast<std::size_t>(channel)];
-        }
-      }
-      const double nd = static_cast<double>(n);
-      const double skyMean = sum[0] / nd, sphereMean = sum[1] / nd;
-      const double sigma = std::sqrt((variance[0] + variance[1]) / (nd * nd));
-      std::printf("metallic %.0f, roughness %.2f, channel %d: under the sky %.4f, inside the sphere %.4f, z %.2f\n",
-                  static_cast<double>(c.metallic), static_cast<double>(c.roughness), channel, skyMean, sphereMean,
-                  (sphereMean - skyMean) / sigma);
-      EXPECT_LT(std::abs(sphereMean - skyMean), 5.0 * sigma) << c.metallic << " " << c.roughness << " " << channel;
-      EXPECT_NEAR(sphereMean / skyMean, 1.0, 0.01) << c.metallic << " " << c.roughness << " " << channel;
-    }
+    expectTheSphereIsTheSky(scene, 40.0f, 256,
+                            fmt::format("metallic {:.0f}, roughness {:.2f}", c.metallic, c.roughness));
   }
 }
 
@@ -138,19 +127,10 @@ TEST(PathTracerEmitters, AGlossyFloorInsideAnEmittingSphereIsTheFloorUnderASkyOf
 // under global transport: emitters are aimed at from the medium's scattering points too, weighed
 // against the phase function's own direction.
 TEST(PathTracerEmitters, AFloorUnderFogInsideAnEmittingSphereIsTheFloorUnderASkyOfItsLuminance) {
-  const float luminance = 40.0f;
-  const Spectrum d65 = illuminant("D65");
-  Scene scene;
-  scene.camera.position = {0.0f, 3.0f, 0.0f};
-  scene.camera.target = {0.0f, 0.0f, 0.0f};
-  scene.camera.up = {0.0f, 0.0f, -1.0f};
-  scene.camera.verticalFovDeg = 30.0f;
-  scene.camera.farPlane = 500.0f;
   Material floor;
   floor.lambertian = true;
   floor.reflectance = Spectrum::constant(0.6);
-  scene.materials.push_back(floor);
-  scene.meshes.push_back(makePlane({0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {20.0f, 20.0f}));
+  Scene scene = test::floorSeenFromAbove(floor);
   scene.background = glm::vec3(1.0f);
   HomogeneousMedium fog;
   fog.sigmaA = Spectrum::constant(0.1);
@@ -158,41 +138,7 @@ TEST(PathTracerEmitters, AFloorUnderFogInsideAnEmittingSphereIsTheFloorUnderASky
   fog.g = 0.6f;
   fog.region = Bounds{{-10.0f, -1.0f, -10.0f}, {10.0f, 2.0f, 10.0f}};
   scene.medium = fog;
-
-  ReferenceSettings settings;
-  settings.width = 24;
-  settings.height = 16;
-  settings.samplesPerPixel = 1024;  // the image's mean to 0.2 %
-  settings.filter = PixelFilter::Centre;
-  settings.transport = LightTransport::Global;
-  Scene sky = scene;
-  sky.backgroundLuminance = luminance;
-  Scene inside = scene;
-  Material lamp;
-  lamp.lambertian = true;
-  lamp.reflectance = Spectrum::constant(0.0);
-  lamp.emission = Emission{d65 * (1.0 / luminousIntegral(d65)), luminance};
-  inside.materials.push_back(lamp);
-  inside.meshes.push_back(makeSphere({0.0f, 0.0f, 0.0f}, 100.0f, 64));
-  inside.meshes.back().material = 1;
-  const RgbToSpectrumTable& table = rendererRgbToSpectrumTable("srgb");
-  const ReferenceImage underSky = renderReference(sky, table, settings);
-  const ReferenceImage underSphere = renderReference(inside, table, settings);
-  double sum[2] = {0.0, 0.0}, variance[2] = {0.0, 0.0};
-  const ReferenceImage* images[2] = {&underSky, &underSphere};
-  const std::size_t n = underSky.tristimulus.pixelCount();
-  for (int i = 0; i < 2; ++i) {
-    for (std::size_t p = 0; p < n; ++p) {
-      sum[i] += images[i]->tristimulus.pixels[3 * p + 1];
-      variance[i] += images[i]->variance.pixels[3 * p + 1];
-    }
-  }
-  const double nd = static_cast<double>(n);
-  const double skyMean = sum[0] / nd, sphereMean = sum[1] / nd, sigma = std::sqrt((variance[0] + variance[1]) / (nd * nd));
-  std::printf("fog: Y under the sky %.4f, inside the sphere %.4f, z %.2f; a pixel's standard error %.4f and %.4f\n",
-              skyMean, sphereMean, (sphereMean - skyMean) / sigma, std::sqrt(variance[0] / nd), std::sqrt(variance[1] / nd));
-  EXPECT_LT(std::abs(sphereMean - skyMean), 5.0 * sigma);
-  EXPECT_NEAR(sphereMean / skyMean, 1.0, 0.01);
+  expectTheSphereIsTheSky(scene, 40.0f, 1024, "fog");  // 1 024 paths: the image's mean to 0.2 %
 }
 
 // The example room the README measures this with (scenes/reference/lamp_room.json) loads, and its

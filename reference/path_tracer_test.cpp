@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "core/worst_of.h"
+#include "reference/path_tracer_test_support.h"
 #include "scene/camera_transform.h"
 #include "scene/procedural_mesh.h"
 #include "scene/scene_loader.h"
@@ -301,18 +302,8 @@ TEST(PathTracer, AnEmittingSurfaceAddsItsRadianceToWhatItReflects) {
 // sphere that emits L_e all round sees L_e over its whole sky, irradiance π·L_e, so its radiance
 // is ρ·L_e; under direct transport, which aims only at the lights (none here), it is black.
 TEST(PathTracer, UnderGlobalTransportAnEmitterLightsWhatSeesIt) {
-  Scene scene;
-  scene.camera.position = {0.0f, 3.0f, 0.0f};
-  scene.camera.target = {0.0f, 0.0f, 0.0f};
-  scene.camera.up = {0.0f, 0.0f, -1.0f};
-  scene.camera.verticalFovDeg = 30.0f;
-  scene.camera.farPlane = 500.0f;
-  Material sky = constantReflectance(0.0);
-  Spectrum d65 = illuminant("D65");
-  sky.emission = Emission{d65 * (1.0 / luminousIntegral(d65)), 40.0f};
-  scene.materials.push_back(constantReflectance(0.5));
-  scene.materials.push_back(sky);
-  scene.meshes.push_back(makePlane({0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {20.0f, 20.0f}));
+  Scene scene = test::floorSeenFromAbove(constantReflectance(0.5));
+  scene.materials.push_back(test::d65Emitter(40.0f));
   scene.meshes.push_back(makeSphere({0.0f, 0.0f, 0.0f}, 100.0f, 64));
   scene.meshes.back().material = 1;
   for (const bool global : {true, false}) {

@@ -15,8 +15,11 @@
 #include "reference/emitter_sampler.h"
 #include "reference/environment_sampler.h"
 #include "reference/path_medium.h"
+#include "reference/path_sampling.h"
+#include "reference/surface_brdf.h"
 #include "reference/ray_scene.h"
 #include "reference/surface_hit.h"
+#include "reference/surface_spectra.h"
 #include "scene/camera_transform.h"
 #include "scene/scene_emission.h"
 #include "scene/scene_spectra.h"
@@ -28,9 +31,6 @@
 #include "spectral/rgb_intent.h"
 
 namespace prism::shared {
-#include "random.glsl"
-#include "sigmoid.glsl"
-#include "brdf.glsl"
 #include "lights.glsl"
 }  // namespace prism::shared
 
@@ -43,26 +43,6 @@ using glm::vec4;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 using shared::kPi;
 constexpr int kPassSamples = 8;  // samples per pixel per progressive pass
-
-// Independent uniform numbers for one path: the PCG hash of a counter (random.glsl), seeded by
-// pixel, sample and image seed, so that the image does not depend on the thread count.
-class PathRandom {
- public:
-  PathRandom(std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed)
-      : mSeed(shared::pcgHash(pixel ^ shared::pcgHash(sample ^ shared::pcgHash(seed)))) {}
-  std::uint32_t seed() const { return mSeed; }
-  float next() { return shared::randomFloat(mSeed, mIndex++); }
-  // Uniform in [0, 1) to 2⁻⁴⁸ rather than next()'s 2⁻²⁴: a choice among up to millions of
-  // emitting triangles or environment cells, whose shares can be far below 2⁻²⁴.
-  double nextFine() {
-    const double coarse = next();
-    return coarse + static_cast<double>(next()) * 0x1p-24;
-  }
-
- private:
-  std::uint32_t mSeed;
-  std::uint32_t mIndex = 0;
-};
 
 // A light as lightIncidence() takes it.
 struct LightInput {
@@ -87,14 +67,6 @@ vec3 offsetOrigin(const vec3& p, const vec3& geometricNormal) {
 
 vec4 exp4(const vec4& v) { return vec4(std::exp(v.x), std::exp(v.y), std::exp(v.z), std::exp(v.w)); }
 
-// The power heuristic (Veach 1997, β = 2): the weight of a sample drawn with density `chosen`
-// where another strategy would have drawn it with density `other`. As 1/(1 + (other/chosen)²),
-// not chosen²/(chosen² + other²): a density past 1e19 (an emitter seen edge-on) squares to ∞.
-float powerHeuristic(float chosen, float other) {
-  if (!(chosen > 0.0f)) return 0.0f;
-  const float ratio = other / chosen;
-  return 1.0f / (1.0f + ratio * ratio);
-}
 float mean4(const vec4& v) { return 0.25f * (v.x + v.y + v.z + v.w); }
 
 class PathTracer {
@@ -278,54 +250,41 @@ class PathTracer {
   // The spectra of a surface at the path's wavelengths: albedo (or n) and conductor k.
   void surfaceSpectra(const SurfaceHit& hit, const vec4& lambdaNm, vec4& albedoOrN, vec4& k) const {
     const MaterialInput& input = mMaterials[static_cast<std::size_t>(hit.material)];
-    const Material& m = *input.material;
-    k = vec4(0.0f);
-    if (m.conductor) {
-      for (int j = 0; j < 4; ++j) {
-        albedoOrN[j] = static_cast<float>(m.conductor->n.at(lambdaNm[j]));
-        k[j] = static_cast<float>(m.conductor->k.at(lambdaNm[j]));
-      }
-    } else if (m.reflectance) {
-      for (int j = 0; j < 4; ++j) albedoOrN[j] = static_cast<float>(m.reflectance->at(lambdaNm[j]));
-    } else if (m.spectralTexture) {
-      const Eigen::VectorXd c = sampleTexels(*m.spectralTexture, hit.uv);
-      for (int j = 0; j < 4; ++j) albedoOrN[j] = static_cast<float>(reflectanceAt(*m.spectralTexture, c, lambdaNm[j]));
-    } else {
-      vec3 coefficients = m.baseColourTexture >= 0 ? RgbAlbedoSpectrum(mTable, hit.albedo).coefficients()
-                                                   : input.coefficients;
-      albedoOrN = shared::upsampledReflectance4(coefficients, lambdaNm);
-    }
+    const SurfaceSpectra s = reference::surfaceSpectra(hit, *input.material, input.coefficients, mTable, lambdaNm);
+    albedoOrN = s.albedoOrN;
+    k = s.k;
   }
 
-  // The surface's emitted radiance at the path's wavelengths (0 where its material emits none):
-  // its own spectrum, or glTF's colour as a light's (RgbIlluminantSpectrum, the white shared).
+  // The surface's emitted radiance at the path's wavelengths (0 where its material emits none).
   vec4 emittedAt(const SurfaceHit& hit, const vec4& lambdaNm) const {
     const Material& m = *mMaterials[static_cast<std::size_t>(hit.material)].material;
-    vec4 e(0.0f);
-    if (m.emission)
-      for (int j = 0; j < 4; ++j) e[j] = static_cast<float>(m.emission->spd.at(lambdaNm[j])) * m.emission->luminance;
-    if (m.emitsRgb()) {
-      const RgbUnboundedSpectrum colour(mTable, hit.emission);
-      for (int j = 0; j < 4; ++j)
-        e[j] = colour.at(lambdaNm[j]) * static_cast<float>(mEmissionWhite.at(lambdaNm[j])) * m.emissiveLuminance;
-    }
-    return e;
+    return emittedRadiance(hit, m, mTable, mEmissionWhite, lambdaNm);
   }
 
-  // BRDF·cos for light arriving from l (unit), the rasteriser's model.
-  vec4 reflection(const SurfaceHit& hit, const vec3& v, const vec3& l, const vec4& albedoOrN,
-                  const vec4& k) const {
-    const Material& m = *mMaterials[static_cast<std::size_t>(hit.material)].material;
-    shared::MicrofacetTerms terms = shared::microfacetTerms(hit.normalW, v, l, hit.roughness);
-    if (hit.lambertian) terms = shared::lambertianTerms(terms);
-    bool conductor = m.conductor.has_value();
-    return shared::surfaceReflection(terms, conductor, albedoOrN, k, conductor ? 1.0f : hit.metallic);
+  // The BRDF of surface_brdf.h at a hit, its material's conductor or not.
+  bool conductorAt(const SurfaceHit& hit) const {
+    return mMaterials[static_cast<std::size_t>(hit.material)].material->conductor.has_value();
   }
-
-  // BRDF·cos for light arriving from l, 0 from below the surface (either normal).
+  vec4 reflection(const SurfaceHit& hit, const vec3& v, const vec3& l, const vec4& albedoOrN, const vec4& k) const {
+    return brdfCos(hit, conductorAt(hit), v, l, albedoOrN, k);
+  }
   vec4 surfaceResponse(const SurfaceHit& hit, const vec3& v, const vec3& l, const vec4& albedoOrN, const vec4& k) const {
-    if (glm::dot(l, hit.geometricNormalW) <= 0.0f || glm::dot(l, hit.normalW) <= 0.0f) return vec4(0.0f);
-    return reflection(hit, v, l, albedoOrN, k);
+    return reference::surfaceResponse(hit, conductorAt(hit), v, l, albedoOrN, k);
+  }
+  float brdfPdf(const SurfaceHit& hit, const vec3& v, const vec3& l) const {
+    return reference::brdfPdf(hit, conductorAt(hit), v, l);
+  }
+  // A direction from the BRDF's lobes (the path's next three numbers); false when the path ends
+  // here. throughput is multiplied by BRDF·cos / pdf, and pdf is the direction's density.
+  bool sampleBrdf(const SurfaceHit& hit, const vec3& v, const vec4& albedoOrN, const vec4& k, PathRandom& random,
+                  vec3& l, vec4& throughput, float& pdf) const {
+    const float u1 = random.next(), u2 = random.next(), uLobe = random.next();
+    const std::optional<BrdfSample> s = reference::sampleBrdf(hit, conductorAt(hit), v, albedoOrN, k, u1, u2, uLobe);
+    if (!s) return false;
+    l = s->l;
+    throughput *= s->weight;
+    pdf = s->pdf;
+    return true;
   }
 
   // Beer–Lambert transmittance of the medium along origin + t·direction, t ∈ [0, tMax].
@@ -373,31 +332,6 @@ class PathTracer {
                        [&](const vec3& toLight) { return surfaceResponse(hit, v, toLight, albedoOrN, k); });
   }
 
-  // The specular lobe's share of sampleBrdf's directions: all of a conductor's, none of a
-  // Lambertian's, and for the metallic–roughness model from ¼ (dielectric) to all (metal).
-  float specularShare(const SurfaceHit& hit) const {
-    const Material& m = *mMaterials[static_cast<std::size_t>(hit.material)].material;
-    return hit.lambertian ? 0.0f : m.conductor ? 1.0f : 0.25f + 0.75f * hit.metallic;
-  }
-  static float ggxAlpha(const SurfaceHit& hit) {
-    float r = std::max(hit.roughness, 0.02f);  // as microfacetTerms clamps it
-    return r * r;
-  }
-
-  // The density per steradian with which sampleBrdf draws the unit direction l (above the
-  // surface): its lobes' mixture.
-  float brdfPdf(const SurfaceHit& hit, const vec3& v, const vec3& l) const {
-    const vec3& n = hit.normalW;
-    const float share = specularShare(hit);
-    vec3 h = glm::normalize(v + l);
-    float nDotH = std::max(glm::dot(n, h), 0.0f);
-    vec3 nCrossH = glm::cross(n, h);
-    float vDotH = std::max(glm::dot(v, h), 1e-6f);
-    float pdfSpecular = shared::ggxDistribution(nDotH, glm::dot(nCrossH, nCrossH), ggxAlpha(hit)) * nDotH / (4.0f * vDotH);
-    float pdfDiffuse = std::max(glm::dot(n, l), 0.0f) / kPi;
-    return share * pdfSpecular + (1.0f - share) * pdfDiffuse;
-  }
-
   // Global transport's next-event estimation of the emitting surfaces from `origin`: a point
   // drawn on them (EmitterSampler), its emission through `response` (BRDF·cos at a surface, the
   // phase function in the medium; 0 where it takes no light from that direction) where nothing is
@@ -435,38 +369,6 @@ class PathTracer {
     const float cosEmitter = std::abs(glm::dot(hit.geometricNormalW, direction));
     if (!(cosEmitter > 0.0f)) return 1.0f;
     return powerHeuristic(bouncePdf, mEmitters.pdfArea(geometry) * distance * distance / cosEmitter);
-  }
-
-  // Samples a direction from the BRDF's lobes; false when the path ends here. throughput
-  // is multiplied by BRDF·cos / pdf, and pdf is the direction's density (brdfPdf).
-  bool sampleBrdf(const SurfaceHit& hit, const vec3& v, const vec4& albedoOrN, const vec4& k,
-                  PathRandom& random, vec3& l, vec4& throughput, float& pdf) const {
-    const vec3& n = hit.normalW;
-    float specularShare = this->specularShare(hit);
-    float alpha = ggxAlpha(hit);
-    vec3 t, b;
-    orthonormalFrame(n, t, b);
-    float u1 = random.next(), u2 = random.next();
-    if (random.next() < specularShare) {
-      // GGX normal distribution D(h)·(n·h) (Walter et al. 2007, Eq. 35–36), then reflect.
-      float phi = 2.0f * kPi * u1;
-      float cos2 = (1.0f - u2) / (1.0f + (alpha * alpha - 1.0f) * u2);
-      float cosTheta = std::sqrt(cos2), sinTheta = std::sqrt(std::max(0.0f, 1.0f - cos2));
-      vec3 h = t * (sinTheta * std::cos(phi)) + b * (sinTheta * std::sin(phi)) + n * cosTheta;
-      l = 2.0f * glm::dot(v, h) * h - v;
-    } else {
-      // Cosine-weighted hemisphere (Malley's method).
-      float radius = std::sqrt(u1), phi = 2.0f * kPi * u2;
-      l = t * (radius * std::cos(phi)) + b * (radius * std::sin(phi)) +
-          n * std::sqrt(std::max(0.0f, 1.0f - u1));
-    }
-    float nDotL = glm::dot(n, l);
-    if (nDotL <= 0.0f || glm::dot(l, hit.geometricNormalW) <= 0.0f) return false;
-    l = glm::normalize(l);
-    pdf = brdfPdf(hit, v, l);
-    if (!(pdf > 0.0f)) return false;
-    throughput *= reflection(hit, v, l, albedoOrN, k) / pdf;
-    return true;
   }
 
   // In a medium, with global transport, the distance to the next scattering event is drawn from

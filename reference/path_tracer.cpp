@@ -66,7 +66,6 @@ vec3 offsetOrigin(const vec3& p, const vec3& geometricNormal) {
 }
 
 vec4 exp4(const vec4& v) { return vec4(std::exp(v.x), std::exp(v.y), std::exp(v.z), std::exp(v.w)); }
-
 float mean4(const vec4& v) { return 0.25f * (v.x + v.y + v.z + v.w); }
 
 class PathTracer {
@@ -264,9 +263,6 @@ class PathTracer {
   // The BRDF of surface_brdf.h at a hit, its material's conductor or not.
   bool conductorAt(const SurfaceHit& hit) const {
     return mMaterials[static_cast<std::size_t>(hit.material)].material->conductor.has_value();
-  }
-  vec4 reflection(const SurfaceHit& hit, const vec3& v, const vec3& l, const vec4& albedoOrN, const vec4& k) const {
-    return brdfCos(hit, conductorAt(hit), v, l, albedoOrN, k);
   }
   vec4 surfaceResponse(const SurfaceHit& hit, const vec3& v, const vec3& l, const vec4& albedoOrN, const vec4& k) const {
     return reference::surfaceResponse(hit, conductorAt(hit), v, l, albedoOrN, k);
